@@ -1,0 +1,47 @@
+#pragma once
+// Rotations: matrices, quaternions, Euler angles, the exponential map.
+//
+// Conventions (docs/conventions.md): R_AB maps vectors expressed in B into A, v_A = R_AB * v_B,
+// and its columns are B's unit axes expressed in A. Quaternions are Hamilton, scalar first when
+// written as a list [w, x, y, z], and q_AB rotates B into A like R_AB.
+
+#include <string_view>
+
+#include "momenta/math/types.hpp"
+
+namespace momenta {
+
+/// The cross-product matrix: skew(a) * b == a.cross(b).
+Mat3 skew(const Vec3& a);
+
+/// Rotation by `angle` (rad) about the unit axis `axis`. Throws InvalidArgument if the axis is
+/// zero or not finite (it is normalized otherwise).
+Mat3 rotation_from_axis_angle(const Vec3& axis, double angle);
+
+/// Rotation from three Euler angles (rad) applied in the named sequence, SciPy's convention:
+/// upper case ("ZYX", "ZXZ") is intrinsic — R = R_1(a0) R_2(a1) R_3(a2) about the moving axes —
+/// and lower case ("zyx", "zxz") is extrinsic — R = R_3(a2) R_2(a1) R_1(a0) about fixed axes.
+/// All 12 sequences (6 Tait–Bryan, 6 proper Euler) are accepted. Throws InvalidArgument for any
+/// other sequence, naming it.
+Mat3 rotation_from_euler(std::string_view sequence, const Vec3& angles);
+
+/// True when R is orthonormal with determinant +1 to within `tolerance` (max-norm of RᵀR − I).
+bool is_rotation_matrix(const Mat3& R, double tolerance = 1e-9);
+
+/// Throws InvalidArgument naming `what`, the orthonormality error and the determinant if R is not a
+/// rotation matrix to within `tolerance`.
+void check_rotation_matrix(const Mat3& R, std::string_view what, double tolerance = 1e-9);
+
+/// Unit quaternion from a list [w, x, y, z]; throws InvalidArgument naming `what` if its norm is
+/// zero, not finite, or further than `tolerance` from 1 (it is normalized otherwise).
+Quat quaternion_from_wxyz(const Eigen::Vector4d& wxyz, std::string_view what,
+                          double tolerance = 1e-6);
+
+/// The exponential map so(3) -> unit quaternions: the rotation by |phi| about phi/|phi|.
+/// Accurate near phi = 0 (series), so integrators can use it for any step.
+Quat quaternion_exp(const Vec3& phi);
+
+/// The logarithm: the rotation vector phi (|phi| <= pi) with quaternion_exp(phi) == ±q.
+Vec3 quaternion_log(const Quat& q);
+
+}  // namespace momenta

@@ -1,0 +1,17 @@
+#pragma once
+// Short names for the Eigen types momenta uses everywhere. All quantities are SI.
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace momenta {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+using VecX = Eigen::VectorXd;
+using MatX = Eigen::MatrixXd;
+using Quat = Eigen::Quaterniond;
+
+}  // namespace momenta

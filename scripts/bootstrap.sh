@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Installs the Debian packages momenta needs to build, test and benchmark, if any is missing.
+# Needs root (or sudo) only when something must be installed.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build ccache pkg-config
+  libeigen3-dev libfmt-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
+  libassimp-dev libboost-dev libboost-math-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  python3 python3-numpy python3-scipy
+)
+# Optional: the side-by-side benchmarks against MuJoCo (MOMENTA_BENCH_MUJOCO=ON).
+if [[ "${MOMENTA_WITH_MUJOCO:-0}" == 1 ]]; then packages+=(libmujoco-dev); fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then exit 0; fi
+
+echo "momenta: installing ${missing[*]}" >&2
+sudo=""
+if [[ $(id -u) != 0 ]]; then sudo="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Configures and builds momenta. Usage: scripts/build.sh [BUILD_DIR] [extra CMake options...]
+# BUILD_DIR defaults to build/. Uses ccache when present (cache in .cache/ccache unless
+# CCACHE_DIR is set) and all cores.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build_dir=${1:-build}
+shift || true
+export CCACHE_DIR=${CCACHE_DIR:-$PWD/.cache/ccache}
+export CCACHE_MAXSIZE=${CCACHE_MAXSIZE:-2G}
+cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=${BUILD_TYPE:-Release} "$@" >/dev/null
+cmake --build "$build_dir" --parallel "$(nproc)"

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds momenta and runs every test.
+# Usage: scripts/test.sh            — release build in build/
+#        scripts/test.sh --sanitize — AddressSanitizer + UBSan build in build-sanitize/
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/bootstrap.sh
+if [[ "${1:-}" == "--sanitize" ]]; then
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  BUILD_TYPE=RelWithDebInfo scripts/build.sh build-sanitize -DMOMENTA_SANITIZE=ON \
+    -DMOMENTA_BUILD_BENCHMARKS=OFF
+  ctest --test-dir build-sanitize --output-on-failure --parallel "$(nproc)"
+else
+  scripts/build.sh build -DMOMENTA_WARNINGS_AS_ERRORS=ON
+  ctest --test-dir build --output-on-failure --parallel "$(nproc)"
+fi
