@@ -10,6 +10,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
+#include "balance.hpp"
 #include "momenta/common/error.hpp"
 
 namespace momenta::analysis {
@@ -58,14 +59,17 @@ Modes modes(const StateSpace& system) {
   const Eigen::Index n = system.A().rows();
   if (n == 0) return result;
 
-  // Real Schur form → eigenvalues (conjugate pairs exactly conjugate) and eigenvectors.
-  const Eigen::EigenSolver<MatX> solver(system.A(), /*computeEigenvectors=*/true);
+  // Balance (exact power-of-2 similarity D⁻¹ A D), then real Schur form → eigenvalues
+  // (conjugate pairs exactly conjugate) and eigenvectors, mapped back by φ = D φ_balanced.
+  const VecX scale = detail::balancing_scale(system.A());
+  const MatX balanced = scale.cwiseInverse().asDiagonal() * system.A() * scale.asDiagonal();
+  const Eigen::EigenSolver<MatX> solver(balanced, /*computeEigenvectors=*/true);
   if (solver.info() != Eigen::Success) {
     throw NumericalError(fmt::format(
         "modes: the eigenvalue iteration did not converge for the {}×{} matrix A", n, n));
   }
   const VecXc lambda = solver.eigenvalues();
-  const Eigen::MatrixXcd vectors = solver.eigenvectors();
+  const Eigen::MatrixXcd vectors = scale.cast<Complex>().asDiagonal() * solver.eigenvectors();
 
   result.modes.reserve(static_cast<std::size_t>(n));
   for (Eigen::Index i = 0; i < n; ++i) {

@@ -41,7 +41,8 @@ struct Modes {
 };
 
 /// Modes of ẋ = A x (the poles of the system), n of them, each with its shape over the states.
-/// Computed by Eigen's real Schur decomposition (EigenSolver). Throws NumericalError if the
+/// Computed by Eigen's real Schur decomposition (EigenSolver) after an exact power-of-2
+/// balancing of the states (Parlett & Reinsch 1969). Throws NumericalError if the
 /// eigenvalue iteration does not converge.
 Modes modes(const StateSpace& system);
 
