@@ -1,0 +1,73 @@
+#pragma once
+// One-step integrators of a SecondOrderSystem, chosen by name.
+//
+//   rk4              classic fourth-order Runge–Kutta, fixed step (Munthe-Kaas form on rotations)
+//   symplectic_euler semi-implicit Euler: v ← v + h a(q, v); q ← q ⊕ h v. First order, symplectic
+//                    for separable conservative systems
+//   dopri5           Dormand–Prince 5(4), adaptive step with error control and dense output
+//
+// Each integrator is sized once by initialize(); step() then never allocates.
+
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "momenta/integrate/second_order_system.hpp"
+
+namespace momenta::integrate {
+
+/// The state integrators advance.
+struct State {
+  double t = 0.0;
+  VecX q;  ///< configuration, size nq
+  VecX v;  ///< velocity, size nv
+};
+
+/// Counters every integrator keeps.
+struct IntegratorStatistics {
+  long steps = 0;           ///< accepted steps
+  long rejected_steps = 0;  ///< steps retried with a smaller size (adaptive methods)
+  long evaluations = 0;     ///< calls of SecondOrderSystem::acceleration
+};
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+
+  /// The name it is chosen by ("rk4", ...).
+  virtual std::string_view name() const = 0;
+  /// Order of accuracy of the solution it returns.
+  virtual int order() const = 0;
+  /// True when step() chooses its own step size.
+  virtual bool adaptive() const { return false; }
+
+  /// Sizes the workspace for `system` and starts at `state` (allocates; call before stepping).
+  virtual void initialize(SecondOrderSystem& system, const State& state) = 0;
+
+  /// Advances `state` by one step and returns the size taken. Fixed-step methods take exactly
+  /// `h`; adaptive ones take the step their error control accepts, never longer than `h` (so a
+  /// caller can land on output times). Throws NumericalError when it cannot continue (step size
+  /// underflow).
+  virtual double step(SecondOrderSystem& system, State& state, double h) = 0;
+
+  const IntegratorStatistics& statistics() const { return statistics_; }
+
+ protected:
+  IntegratorStatistics statistics_;
+};
+
+/// Tolerances of adaptive methods: per-component error scale atol + rtol·|x|.
+struct Tolerances {
+  double relative = 1e-8;
+  double absolute = 1e-10;
+};
+
+/// The names make_integrator knows, in the order docs list them.
+const std::vector<std::string_view>& integrator_names();
+
+/// A new integrator by name; throws InvalidArgument with a did-you-mean hint for an unknown name,
+/// or when a tolerance is not positive and finite.
+std::unique_ptr<Integrator> make_integrator(std::string_view name,
+                                            const Tolerances& tolerances = {});
+
+}  // namespace momenta::integrate

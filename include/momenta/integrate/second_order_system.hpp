@@ -1,0 +1,42 @@
+#pragma once
+// The interface every integrator advances: a mechanical system with configuration q (size nq,
+// possibly on a Lie group: quaternions of ball and free joints) and velocity v (size nv, in the
+// tangent space), obeying q̇ = "v" and v̇ = a(t, q, v).
+
+#include "momenta/math/types.hpp"
+
+namespace momenta::integrate {
+
+class SecondOrderSystem {
+ public:
+  virtual ~SecondOrderSystem() = default;
+
+  /// Number of configuration coordinates (quaternions count 4).
+  virtual int nq() const = 0;
+  /// Number of velocity coordinates (the tangent-space dimension; rotations count 3).
+  virtual int nv() const = 0;
+
+  /// Writes v̇ = a(t, q, v) into vdot (size nv, already sized). Non-const because implementations
+  /// keep a preallocated workspace; must not allocate.
+  virtual void acceleration(double t, const VecX& q, const VecX& v, VecX& vdot) = 0;
+
+  /// q_out = q ⊕ dq: moves q along the tangent vector dq (size nv) — the exponential map on
+  /// rotation coordinates, plain addition on the others. q_out may not alias q.
+  virtual void integrate(const VecX& q, const VecX& dq, VecX& q_out) const = 0;
+
+  /// Rate of local coordinates δ (size nv) about a base point, q = q0 ⊕ δ, when the velocity is v:
+  /// δ̇ = dexp⁻¹_δ(v). On vector-space coordinates it is v itself (the default); on rotations
+  /// with body-frame angular velocity it is J_r(δ)⁻¹ ω. Runge–Kutta methods need it to keep
+  /// their order on the group (Munthe-Kaas 1998).
+  virtual void local_coordinate_rate(const VecX& delta, const VecX& v, VecX& delta_rate) const {
+    (void)delta;
+    delta_rate = v;
+  }
+
+  /// Magnitude of each tangent coordinate of q (size nv) against which adaptive methods scale
+  /// the relative tolerance: |q_i| on vector-space coordinates (the default only knows those
+  /// when nq == nv), 1 rad on rotations.
+  virtual void configuration_scale(const VecX& q, VecX& scale) const { scale = q.cwiseAbs(); }
+};
+
+}  // namespace momenta::integrate
