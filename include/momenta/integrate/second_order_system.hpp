@@ -3,6 +3,8 @@
 // possibly on a Lie group: quaternions of ball and free joints) and velocity v (size nv, in the
 // tangent space), obeying q̇ = "v" and v̇ = a(t, q, v).
 
+#include <string>
+
 #include "momenta/math/types.hpp"
 
 namespace momenta::integrate {
@@ -37,6 +39,12 @@ class SecondOrderSystem {
   /// the relative tolerance: |q_i| on vector-space coordinates (the default only knows those
   /// when nq == nv), 1 rad on rotations.
   virtual void configuration_scale(const VecX& q, VecX& scale) const { scale = q.cwiseAbs(); }
+
+  /// A name for configuration coordinate i (velocity coordinate i when `velocity`), used in
+  /// error messages: "hinge.q0". The default is "q[i]" / "v[i]".
+  virtual std::string coordinate_name(int i, bool velocity) const {
+    return (velocity ? "v[" : "q[") + std::to_string(i) + "]";
+  }
 };
 
 }  // namespace momenta::integrate

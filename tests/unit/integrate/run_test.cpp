@@ -1,0 +1,86 @@
+#include "momenta/integrate/run.hpp"
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "momenta/common/error.hpp"
+#include "momenta/integrate/runge_kutta.hpp"
+#include "momenta/integrate/symplectic_euler.hpp"
+#include "test_systems.hpp"
+
+namespace momenta::integrate {
+namespace {
+
+TEST(Run, FixedStepsLandOnMultiplesOfTheStep) {
+  test::HarmonicOscillator system(1.0);
+  RungeKutta4 rk4;
+  State state{0.0, VecX::Constant(1, 1.0), VecX::Zero(1)};
+  std::vector<double> times;
+  const RunSummary summary =
+      run(system, rk4, state, {1.0, 0.1, 3}, [&](const State& s) { times.push_back(s.t); });
+  // Start, steps 3, 6, 9, and the last (10): times are k h exactly, not sums of h.
+  ASSERT_EQ(times.size(), 5u);
+  EXPECT_EQ(times[0], 0.0);
+  EXPECT_EQ(times[1], 3 * 0.1);
+  EXPECT_EQ(times[3], 9 * 0.1);
+  EXPECT_EQ(times[4], 1.0);
+  EXPECT_EQ(summary.statistics.steps, 10);
+}
+
+TEST(Run, AdaptiveStepsEndExactlyAtTheFinalTime) {
+  test::HarmonicOscillator system(1.0);
+  DormandPrince5 dopri(Tolerances{1e-9, 1e-9});
+  State state{0.0, VecX::Constant(1, 1.0), VecX::Zero(1)};
+  double last = -1.0;
+  run(system, dopri, state, {7.3, 0.5, 1}, [&](const State& s) { last = s.t; });
+  EXPECT_EQ(last, 7.3);
+  EXPECT_NEAR(state.q[0], std::cos(7.3), 1e-7);
+}
+
+// q̈ = 2 q³ blows up in finite time: q = 1/(1 − t) for q(0) = v(0) = 1.
+class Blowup final : public SecondOrderSystem {
+ public:
+  int nq() const override { return 1; }
+  int nv() const override { return 1; }
+  void acceleration(double, const VecX& q, const VecX&, VecX& vdot) override {
+    vdot[0] = 2.0 * q[0] * q[0] * q[0];
+  }
+  void integrate(const VecX& q, const VecX& dq, VecX& q_out) const override { q_out = q + dq; }
+  std::string coordinate_name(int, bool velocity) const override {
+    return velocity ? "slider.v0" : "slider.q0";
+  }
+};
+
+TEST(Run, NonFiniteStateStopsWithTheTimeAndTheCoordinate) {
+  // q = 1/(1 − t) solves q̈ = 2q³ with q(0) = 1, v(0) = 1: infinite at t = 1.
+  Blowup system;
+  SymplecticEuler euler;
+  State state{0.0, VecX::Constant(1, 1.0), VecX::Constant(1, 1.0)};
+  try {
+    run(system, euler, state, {2.0, 0.05, 1}, [](const State&) {});
+    FAIL() << "no throw";
+  } catch (const NumericalError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("non-finite at t = "), std::string::npos) << message;
+    EXPECT_NE(message.find("slider."), std::string::npos) << message;
+    EXPECT_NE(message.find("smaller --dt"), std::string::npos) << message;
+  }
+}
+
+TEST(Run, RejectsBadOptions) {
+  test::HarmonicOscillator system(1.0);
+  RungeKutta4 rk4;
+  State state{0.0, VecX::Constant(1, 1.0), VecX::Zero(1)};
+  const auto nothing = [](const State&) {};
+  EXPECT_THROW(run(system, rk4, state, {0.0, 0.1, 1}, nothing), InvalidArgument);
+  EXPECT_THROW(run(system, rk4, state, {1.0, -0.1, 1}, nothing), InvalidArgument);
+  EXPECT_THROW(run(system, rk4, state, {1.0, 0.1, 0}, nothing), InvalidArgument);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(run(system, rk4, state, {1.0, nan, 1}, nothing), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace momenta::integrate
