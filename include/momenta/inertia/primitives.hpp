@@ -4,8 +4,9 @@
 // Each shape is described in its own frame S: origin at its centroid, axis of symmetry along z,
 // thin shapes (plates, disks, rings) lying in the xy-plane — except the cone, whose origin is its
 // apex (see solid_cone). Lengths in m. Every function throws InvalidArgument naming the shape and
-// the offending size when a size is not positive and finite (or an inner radius not below the
-// outer), or when the Amount is not positive.
+// the offending size when a size is not positive and finite (or an inner radius negative or not
+// below the outer), or when the Amount is not positive. Solids record their volume (m³) in the
+// result; thin shapes (rods, rings, plates, shells) and point masses record 0.
 
 #include "momenta/inertia/amount.hpp"
 #include "momenta/inertia/mass_properties.hpp"
@@ -24,7 +25,8 @@ MassProperties thin_ring(Amount amount, double radius);
 /// A thin disk of the given radius in the xy-plane (density in kg/m²).
 MassProperties thin_disk(Amount amount, double radius);
 
-/// A thin annulus (washer) between two radii in the xy-plane (density in kg/m²).
+/// A thin annulus (washer) between two radii in the xy-plane (density in kg/m²). inner_radius may
+/// be 0 (a disk).
 MassProperties annulus(Amount amount, double inner_radius, double outer_radius);
 
 /// A solid cylinder along z (density in kg/m³).
@@ -40,7 +42,8 @@ MassProperties cylindrical_shell(Amount amount, double radius, double length);
 /// A solid sphere (density in kg/m³).
 MassProperties solid_sphere(Amount amount, double radius);
 
-/// A thick spherical shell between two radii (density in kg/m³).
+/// A thick spherical shell between two radii (density in kg/m³). inner_radius may be 0; a thin
+/// wall keeps its digits (the differences of powers are factored).
 MassProperties hollow_sphere(Amount amount, double inner_radius, double outer_radius);
 
 /// A thin spherical shell (density in kg/m²): I = 2/3 m r².
