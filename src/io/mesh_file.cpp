@@ -1,0 +1,200 @@
+#include "momenta/io/mesh_file.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <system_error>
+
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <fmt/format.h>
+#include <assimp/Importer.hpp>
+
+#include "momenta/common/error.hpp"
+
+namespace momenta::io {
+namespace {
+
+namespace fs = std::filesystem;
+using inertia::TriangleMesh;
+
+enum class Format { kBinaryStl, kAsciiStl, kObj };
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+// Reads up to `count` bytes from `offset` (fewer at the end of the file).
+std::string read_bytes(const fs::path& path, std::uintmax_t offset, std::size_t count) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FileError(fmt::format("{}: cannot open the file for reading", path.string()));
+  in.seekg(static_cast<std::streamoff>(offset));
+  std::string bytes(count, '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(count));
+  bytes.resize(static_cast<std::size_t>(in.gcount()));
+  return bytes;
+}
+
+// Tells binary from ASCII STL as assimp does (a binary file's size is exactly 84 + 50 n bytes for
+// the n triangles its header declares; many binary files also begin with "solid"), and rejects a
+// binary file whose size disagrees with its triangle count — assimp itself would read a file too
+// long silently.
+Format classify_stl(const fs::path& path, std::uintmax_t size) {
+  const std::string head = read_bytes(path, 0, 512);
+  std::uint64_t declared = 0;
+  if (size >= 84) {
+    std::uint32_t n = 0;
+    std::memcpy(&n, head.data() + 80, 4);  // Little-endian, as the format specifies.
+    declared = n;
+    if (84 + 50 * declared == size) return Format::kBinaryStl;
+  }
+  // ASCII: "solid" after optional white space, and text (no NUL, nothing above 127) thereafter.
+  const auto start = head.find_first_not_of(" \t\r\n");
+  const bool solid = start != std::string::npos && head.compare(start, 5, "solid") == 0;
+  const bool text = std::none_of(head.begin(), head.end(), [](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return u == 0 || u > 127;
+  });
+  if (solid && text) {
+    // A truncated ASCII file loses its closing "endsolid"; assimp would keep what it read.
+    const std::uintmax_t tail_size = std::min<std::uintmax_t>(size, 1024);
+    if (read_bytes(path, size - tail_size, tail_size).find("endsolid") == std::string::npos) {
+      throw ParseError(path.string(), 0, 0,
+                       "ASCII STL file does not end with 'endsolid': it is truncated");
+    }
+    return Format::kAsciiStl;
+  }
+  if (size < 84) {
+    throw ParseError(path.string(), 0, 0,
+                     fmt::format("file of {} bytes is neither ASCII STL (it does not begin with "
+                                 "'solid') nor binary STL (shorter than the 84-byte header)",
+                                 size));
+  }
+  throw ParseError(
+      path.string(), 0, 0,
+      fmt::format("binary STL header declares {} triangles, which take 84 + 50 × {} = {} bytes, "
+                  "but the file has {} bytes ({}); the file is truncated or corrupt",
+                  declared, declared, 84 + 50 * declared, size,
+                  size < 84 + 50 * declared ? "too short" : "too long"));
+}
+
+// Appends the triangles of every mesh under `node`, each vertex moved by the node's transform
+// composed with its parents' (`parent`, row-major 4×4 as assimp stores it).
+void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& parent, double scale,
+             TriangleMesh& out, std::size_t& skipped) {
+  const aiMatrix4x4& t = node.mTransformation;
+  Eigen::Matrix4d local;
+  local << t.a1, t.a2, t.a3, t.a4, t.b1, t.b2, t.b3, t.b4, t.c1, t.c2, t.c3, t.c4, t.d1, t.d2, t.d3,
+      t.d4;
+  const Eigen::Matrix4d world = parent * local;
+  const Mat3 linear = scale * world.topLeftCorner<3, 3>();
+  const Vec3 offset = scale * world.topRightCorner<3, 1>();
+  // A mirroring transform turns an outward mesh inside out: swap the winding back.
+  const bool mirrored = linear.determinant() < 0;
+  for (unsigned m = 0; m < node.mNumMeshes; ++m) {
+    const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
+    const auto base = static_cast<std::int64_t>(out.vertices.size());
+    if (base + mesh.mNumVertices > std::numeric_limits<std::int32_t>::max()) {
+      throw MeshError(fmt::format("mesh has more than {} vertices, beyond 32-bit indices",
+                                  std::numeric_limits<std::int32_t>::max()));
+    }
+    for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+      const aiVector3D& p = mesh.mVertices[v];
+      out.vertices.push_back(linear * Vec3(p.x, p.y, p.z) + offset);
+    }
+    for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+      const aiFace& face = mesh.mFaces[f];
+      if (face.mNumIndices != 3) {  // Points and lines: no area, no volume.
+        ++skipped;
+        continue;
+      }
+      std::array<std::int32_t, 3> tri;
+      for (int k = 0; k < 3; ++k) {
+        if (face.mIndices[k] >= mesh.mNumVertices) {
+          throw MeshError(fmt::format("face {} of mesh {} refers to vertex {} of {}", f, m,
+                                      face.mIndices[k], mesh.mNumVertices));
+        }
+        tri[k] = static_cast<std::int32_t>(base + face.mIndices[k]);
+      }
+      if (mirrored) std::swap(tri[1], tri[2]);
+      out.triangles.push_back(tri);
+    }
+  }
+  for (unsigned c = 0; c < node.mNumChildren; ++c) {
+    collect(scene, *node.mChildren[c], world, scale, out, skipped);
+  }
+}
+
+}  // namespace
+
+inertia::TriangleMesh read_mesh_file(const std::filesystem::path& path, double scale) {
+  const std::string name = path.string();
+  if (!std::isfinite(scale) || !(scale > 0.0)) {
+    throw InvalidArgument(fmt::format(
+        "{}: unit scale {} is not positive and finite (0.001 reads millimetres)", name, scale));
+  }
+
+  // The file itself: present, a regular file, not empty, of a supported kind.
+  std::error_code error;
+  const fs::file_status status = fs::status(path, error);
+  if (!fs::exists(status)) throw FileError(fmt::format("{}: mesh file not found", name));
+  if (!fs::is_regular_file(status)) {
+    throw FileError(fmt::format("{}: not a regular file", name));
+  }
+  const std::uintmax_t size = fs::file_size(path, error);
+  if (error) throw FileError(fmt::format("{}: cannot read its size: {}", name, error.message()));
+  if (size == 0) throw FileError(fmt::format("{}: mesh file is empty", name));
+  const std::string extension = lower(path.extension().string());
+  Format format;
+  if (extension == ".stl") {
+    format = classify_stl(path, size);
+  } else if (extension == ".obj") {
+    format = Format::kObj;
+  } else {
+    throw ParseError(name, 0, 0,
+                     fmt::format("unsupported mesh file extension '{}': expected .stl or .obj",
+                                 path.extension().string()));
+  }
+
+  // Import with triangulation only: no vertex joining, normal generation, degenerate removal or
+  // any other step that would change the geometry behind our back. Coordinates arrive as floats.
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(name, aiProcess_Triangulate);
+  if (scene == nullptr || scene->mRootNode == nullptr) {
+    throw ParseError(
+        name, 0, 0,
+        fmt::format("cannot read the {} file: {}", format == Format::kObj ? "OBJ" : "STL",
+                    importer.GetErrorString()));
+  }
+
+  // Merge every mesh of the scene, in world coordinates (node transforms applied), scaled.
+  TriangleMesh soup;
+  std::size_t vertices = 0, faces = 0;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    vertices += scene->mMeshes[m]->mNumVertices;
+    faces += scene->mMeshes[m]->mNumFaces;
+  }
+  soup.vertices.reserve(vertices);
+  soup.triangles.reserve(faces);
+  std::size_t skipped = 0;
+  collect(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), scale, soup, skipped);
+  importer.FreeScene();  // Free the float copy before welding.
+  if (soup.triangles.empty()) {
+    throw ParseError(name, 0, 0,
+                     skipped > 0
+                         ? fmt::format("file holds {} points or lines but no triangles", skipped)
+                         : std::string("file holds no triangles"));
+  }
+
+  // Weld exact repeats (STL stores each triangle's corners apart) so the topology can be checked.
+  return inertia::weld_vertices(soup, 0.0);
+}
+
+}  // namespace momenta::io
