@@ -76,54 +76,6 @@ class DisjointSets {
   std::vector<Index> parent_;
 };
 
-// An open-addressing hash table from grid cells to the head of a list of welded vertices.
-class CellTable {
- public:
-  explicit CellTable(std::size_t expected) {
-    const std::size_t size = std::bit_ceil(std::max<std::size_t>(16, 2 * expected));
-    slots_.assign(size, Slot{});
-    mask_ = size - 1;
-  }
-  // The list head of a cell, creating an empty one (-1) if absent.
-  Index& head(std::int64_t x, std::int64_t y, std::int64_t z) {
-    std::size_t i = hash(x, y, z) & mask_;
-    while (true) {
-      Slot& s = slots_[i];
-      if (!s.used) {
-        s = Slot{x, y, z, -1, true};
-        return s.head;
-      }
-      if (s.x == x && s.y == y && s.z == z) return s.head;
-      i = (i + 1) & mask_;
-    }
-  }
-  // The list head of a cell, or -1.
-  Index find(std::int64_t x, std::int64_t y, std::int64_t z) const {
-    std::size_t i = hash(x, y, z) & mask_;
-    while (true) {
-      const Slot& s = slots_[i];
-      if (!s.used) return -1;
-      if (s.x == x && s.y == y && s.z == z) return s.head;
-      i = (i + 1) & mask_;
-    }
-  }
-
- private:
-  struct Slot {
-    std::int64_t x = 0, y = 0, z = 0;
-    Index head = -1;
-    bool used = false;
-  };
-  static std::size_t hash(std::int64_t x, std::int64_t y, std::int64_t z) {
-    std::uint64_t h = static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ull;
-    h ^= static_cast<std::uint64_t>(y) * 0xC2B2AE3D27D4EB4Full + (h << 6) + (h >> 2);
-    h ^= static_cast<std::uint64_t>(z) * 0x165667B19E3779F9ull + (h << 6) + (h >> 2);
-    return static_cast<std::size_t>(h ^ (h >> 29));
-  }
-  std::vector<Slot> slots_;
-  std::size_t mask_ = 0;
-};
-
 // 6 × signed volume of the tetrahedra from `origin` and their unsigned sum.
 std::pair<double, double> six_volumes(const TriangleMesh& mesh, const Vec3& origin) {
   double signed_sum = 0.0;
@@ -174,41 +126,82 @@ TriangleMesh weld_vertices(const TriangleMesh& mesh, double tolerance) {
   const double extent = (hi - lo).maxCoeff();
   double cell = std::max(tolerance, 1e-12 * extent);
   if (!(cell > 0.0)) cell = 1.0;  // All vertices coincide.
+  const double inverse_cell = 1.0 / cell;
   const double tolerance2 = tolerance * tolerance;
+  using Cell = std::array<std::int64_t, 3>;
+  const auto cell_of = [&](const Vec3& p) {
+    return Cell{static_cast<std::int64_t>(std::floor((p.x() - lo.x()) * inverse_cell)),
+                static_cast<std::int64_t>(std::floor((p.y() - lo.y()) * inverse_cell)),
+                static_cast<std::int64_t>(std::floor((p.z() - lo.z()) * inverse_cell))};
+  };
+  const auto hash = [](const Cell& c) {
+    std::uint64_t h = static_cast<std::uint64_t>(c[0]) * 0x9E3779B97F4A7C15ull;
+    h = (h ^ (h >> 32)) + static_cast<std::uint64_t>(c[1]) * 0xC2B2AE3D27D4EB4Full;
+    h = (h ^ (h >> 29)) + static_cast<std::uint64_t>(c[2]) * 0x165667B19E3779F9ull;
+    return h ^ (h >> 32);
+  };
 
-  CellTable table(n);
+  // Open addressing from cells to the first welded vertex of the cell's list (8-byte slots, the
+  // cell itself recomputed from that vertex), grown at half load: small enough to stay in cache.
+  struct Slot {
+    std::uint32_t tag = 0;
+    Index head = -1;
+  };
+  std::vector<Slot> slots(std::bit_ceil(std::max<std::size_t>(64, n / 4)));
+  std::size_t used = 0;
   std::vector<Index> next;  // Next welded vertex in the same cell.
-  std::vector<Index> remap(n);
-  out.vertices.reserve(n);
-  next.reserve(n);
+  const auto slot_of = [&](const Cell& c) -> Slot& {
+    const std::uint64_t h = hash(c);
+    const std::size_t mask = slots.size() - 1;
+    const auto tag = static_cast<std::uint32_t>(h >> 32);
+    for (std::size_t i = h & mask;; i = (i + 1) & mask) {
+      Slot& s = slots[i];
+      if (s.head < 0 || (s.tag == tag && cell_of(out.vertices[s.head]) == c)) return s;
+    }
+  };
+  const auto grow = [&] {
+    std::vector<Slot> old(slots.size() * 2);
+    old.swap(slots);
+    for (const Slot& s : old) {
+      if (s.head < 0) continue;
+      const Cell c = cell_of(out.vertices[s.head]);
+      Slot& fresh = slot_of(c);
+      fresh = Slot{static_cast<std::uint32_t>(hash(c) >> 32), s.head};
+    }
+  };
   const auto search = [&](Index head, const Vec3& p) {
     for (Index j = head; j >= 0; j = next[j]) {
       if ((out.vertices[j] - p).squaredNorm() <= tolerance2) return j;
     }
     return Index{-1};
   };
+
+  std::vector<Index> remap(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3& p = mesh.vertices[i];
-    const auto x = static_cast<std::int64_t>(std::floor((p.x() - lo.x()) / cell));
-    const auto y = static_cast<std::int64_t>(std::floor((p.y() - lo.y()) / cell));
-    const auto z = static_cast<std::int64_t>(std::floor((p.z() - lo.z()) / cell));
-    Index& own = table.head(x, y, z);
+    const Cell c = cell_of(p);
     // Its own cell first (exact duplicates always land there), then, with a tolerance, the rest.
-    Index match = search(own, p);
+    Index match = search(slot_of(c).head, p);
     for (int dx = -1; match < 0 && tolerance > 0.0 && dx <= 1; ++dx) {
       for (int dy = -1; match < 0 && dy <= 1; ++dy) {
         for (int dz = -1; match < 0 && dz <= 1; ++dz) {
           if (dx == 0 && dy == 0 && dz == 0) continue;
-          const Index head = table.find(x + dx, y + dy, z + dz);
-          if (head >= 0) match = search(head, p);
+          match = search(slot_of(Cell{c[0] + dx, c[1] + dy, c[2] + dz}).head, p);
         }
       }
     }
     if (match < 0) {
+      // A new welded vertex, at the head of its cell's list.
       match = static_cast<Index>(out.vertices.size());
       out.vertices.push_back(p);
-      next.push_back(own);
-      own = match;
+      Slot& s = slot_of(c);
+      if (s.head < 0) {
+        s.tag = static_cast<std::uint32_t>(hash(c) >> 32);
+        ++used;
+      }
+      next.push_back(s.head);
+      s.head = match;
+      if (2 * used > slots.size()) grow();
     }
     remap[i] = match;
   }
