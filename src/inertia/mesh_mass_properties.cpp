@@ -59,6 +59,26 @@ inline bool gather(const TriangleMesh& mesh, std::size_t t, int count, const Vec
   const Vec3* v = mesh.vertices.data();
   const auto* tri = mesh.triangles.data() + t;
   bool ok = true;
+  if (count == kLanes) {
+    // Full group: no tail handling, indices checked together.
+    std::uint32_t bad = 0;
+    for (int k = 0; k < kLanes; ++k) {
+      const auto i0 = static_cast<std::uint32_t>(tri[k][0]);
+      const auto i1 = static_cast<std::uint32_t>(tri[k][1]);
+      const auto i2 = static_cast<std::uint32_t>(tri[k][2]);
+      bad |= static_cast<std::uint32_t>(i0 >= n) | (i1 >= n) | (i2 >= n);
+    }
+    if (bad != 0) return false;
+    for (int k = 0; k < kLanes; ++k) {
+      const Vec3& a = v[tri[k][0]];
+      const Vec3& b = v[tri[k][1]];
+      const Vec3& c = v[tri[k][2]];
+      l.ax[k] = a.x() - origin.x(), l.ay[k] = a.y() - origin.y(), l.az[k] = a.z() - origin.z();
+      l.bx[k] = b.x() - origin.x(), l.by[k] = b.y() - origin.y(), l.bz[k] = b.z() - origin.z();
+      l.cx[k] = c.x() - origin.x(), l.cy[k] = c.y() - origin.y(), l.cz[k] = c.z() - origin.z();
+    }
+    return true;
+  }
   for (int k = 0; k < kLanes; ++k) {
     if (k >= count) {
       l.ax[k] = l.ay[k] = l.az[k] = l.bx[k] = l.by[k] = l.bz[k] = l.cx[k] = l.cy[k] = l.cz[k] = 0;
