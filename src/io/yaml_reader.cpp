@@ -1,0 +1,370 @@
+#include "momenta/io/yaml_reader.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <system_error>
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include "momenta/common/suggest.hpp"
+
+namespace momenta::io {
+
+struct YamlNode::Impl {
+  YAML::Node node;
+  std::shared_ptr<const std::string> file;
+  std::string path;
+  int line = 0;    // 1-based; 0 unknown.
+  int column = 0;  // 1-based; 0 unknown.
+};
+
+namespace {
+
+// yaml-cpp marks are 0-based with -1 for "none".
+std::pair<int, int> position_of(const YAML::Mark& mark) {
+  if (mark.is_null() || mark.line < 0) return {0, 0};
+  return {mark.line + 1, mark.column + 1};
+}
+
+// What a node is, for messages ("expected a number, got a map").
+std::string_view kind_of(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Null:
+      return "nothing";
+    case YAML::NodeType::Scalar:
+      return "a scalar";
+    case YAML::NodeType::Sequence:
+      return "a list";
+    case YAML::NodeType::Map:
+      return "a map";
+    default:
+      return "an undefined node";
+  }
+}
+
+std::string join_quoted(std::span<const std::string_view> words) {
+  std::string out;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    if (i > 0) out += ", ";
+    out += fmt::format("'{}'", words[i]);
+  }
+  return out;
+}
+
+std::string describe(const YAML::Node& node) {
+  if (node.IsScalar()) return fmt::format("'{}'", node.Scalar());
+  return std::string(kind_of(node));
+}
+
+}  // namespace
+
+YamlNode YamlNode::make(Impl impl) {
+  return YamlNode(std::make_shared<const Impl>(std::move(impl)));
+}
+
+YamlNode YamlNode::load_string(const std::string& text, const std::string& file_name) {
+  auto file = std::make_shared<const std::string>(file_name);
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    const auto [line, column] = position_of(e.mark);
+    throw ParseError(file_name, line, column, fmt::format("malformed YAML: {}", e.msg));
+  } catch (const YAML::Exception& e) {
+    const auto [line, column] = position_of(e.mark);
+    throw ParseError(file_name, line, column, fmt::format("malformed YAML: {}", e.msg));
+  }
+  if (!root.IsDefined() || root.IsNull()) {
+    throw ParseError(file_name, 0, 0, "the file holds no YAML document (it is empty)");
+  }
+  const auto [line, column] = position_of(root.Mark());
+  return make(Impl{root, std::move(file), "", line, column});
+}
+
+YamlNode YamlNode::load_file(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::error_code error;
+  const auto status = std::filesystem::status(path, error);
+  if (!std::filesystem::exists(status)) throw FileError(fmt::format("{}: file not found", name));
+  if (!std::filesystem::is_regular_file(status)) {
+    throw FileError(fmt::format("{}: not a regular file", name));
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FileError(fmt::format("{}: cannot open the file for reading", name));
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw FileError(fmt::format("{}: read error", name));
+  return load_string(text.str(), name);
+}
+
+const std::string& YamlNode::file() const { return *impl_->file; }
+const std::string& YamlNode::key_path() const { return impl_->path; }
+int YamlNode::line() const { return impl_->line; }
+int YamlNode::column() const { return impl_->column; }
+
+bool YamlNode::is_null() const { return impl_->node.IsNull(); }
+bool YamlNode::is_scalar() const { return impl_->node.IsScalar(); }
+bool YamlNode::is_sequence() const { return impl_->node.IsSequence(); }
+bool YamlNode::is_map() const { return impl_->node.IsMap(); }
+
+ParseError YamlNode::error(std::string_view message) const {
+  const std::string text =
+      impl_->path.empty() ? std::string(message) : fmt::format("{}: {}", impl_->path, message);
+  return ParseError(*impl_->file, impl_->line, impl_->column, text);
+}
+
+void YamlNode::fail(std::string_view message) const { throw error(message); }
+
+// --- maps ---------------------------------------------------------------------------------------
+
+void YamlNode::expect_map(std::string_view what) const {
+  if (!impl_->node.IsMap()) {
+    fail(fmt::format("expected {}, got {}", what, describe(impl_->node)));
+  }
+}
+
+bool YamlNode::has(std::string_view key) const {
+  if (!impl_->node.IsMap()) return false;
+  for (const auto& entry : impl_->node) {
+    if (entry.first.IsScalar() && entry.first.Scalar() == key) return true;
+  }
+  return false;
+}
+
+std::optional<YamlNode> YamlNode::find(std::string_view key) const {
+  expect_map();
+  // Walk the entries rather than use operator[]: it gives the key's own position, used when the
+  // value is empty (yaml-cpp marks an empty value at the start of the next line).
+  for (const auto& entry : impl_->node) {
+    if (!entry.first.IsScalar() || entry.first.Scalar() != key) continue;
+    const YAML::Mark mark = entry.second.IsNull() ? entry.first.Mark() : entry.second.Mark();
+    const auto [line, column] = position_of(mark);
+    std::string path =
+        impl_->path.empty() ? std::string(key) : fmt::format("{}.{}", impl_->path, key);
+    return make(Impl{entry.second, impl_->file, std::move(path), line, column});
+  }
+  return std::nullopt;
+}
+
+YamlNode YamlNode::at(std::string_view key) const {
+  if (auto value = find(key)) return *value;
+  fail(fmt::format("missing required key '{}'", key));
+}
+
+std::vector<std::string> YamlNode::keys() const {
+  expect_map();
+  std::vector<std::string> out;
+  for (const auto& entry : impl_->node) {
+    if (!entry.first.IsScalar()) {
+      const auto [line, column] = position_of(entry.first.Mark());
+      throw ParseError(*impl_->file, line, column,
+                       fmt::format("{}{}a key must be a plain name, got {}", impl_->path,
+                                   impl_->path.empty() ? "" : ": ", kind_of(entry.first)));
+    }
+    out.push_back(entry.first.Scalar());
+  }
+  return out;
+}
+
+void YamlNode::check_keys(std::span<const std::string_view> allowed) const {
+  expect_map();
+  std::vector<std::string_view> seen;
+  for (const auto& entry : impl_->node) {
+    const auto [line, column] = position_of(entry.first.Mark());
+    const auto at_key = [&](const std::string& message) {
+      return ParseError(
+          *impl_->file, line, column,
+          impl_->path.empty() ? message : fmt::format("{}: {}", impl_->path, message));
+    };
+    if (!entry.first.IsScalar()) {
+      throw at_key(fmt::format("a key must be a plain name, got {}", kind_of(entry.first)));
+    }
+    const std::string& key = entry.first.Scalar();
+    bool known = false;
+    for (const std::string_view a : allowed) known = known || a == key;
+    if (!known) {
+      throw at_key(fmt::format("unknown key '{}'{}; expected one of {}", key,
+                               did_you_mean(key, allowed), join_quoted(allowed)));
+    }
+    for (const std::string_view s : seen) {
+      if (s == key) throw at_key(fmt::format("key '{}' given twice", key));
+    }
+    seen.push_back(entry.first.Scalar());
+  }
+}
+
+void YamlNode::check_keys(std::initializer_list<std::string_view> allowed) const {
+  check_keys(std::span<const std::string_view>(allowed.begin(), allowed.size()));
+}
+
+std::optional<std::string> YamlNode::which_of(
+    std::span<const std::string_view> alternatives) const {
+  expect_map();
+  std::optional<std::string> found;
+  for (const auto& entry : impl_->node) {
+    if (!entry.first.IsScalar()) continue;
+    const std::string& key = entry.first.Scalar();
+    bool listed = false;
+    for (const std::string_view a : alternatives) listed = listed || a == key;
+    if (!listed) continue;
+    if (found && *found != key) {
+      const auto [line, column] = position_of(entry.first.Mark());
+      const std::string message = fmt::format("give only one of {}: both '{}' and '{}' are given",
+                                              join_quoted(alternatives), *found, key);
+      throw ParseError(*impl_->file, line, column,
+                       impl_->path.empty() ? message : fmt::format("{}: {}", impl_->path, message));
+    }
+    found = key;
+  }
+  return found;
+}
+
+std::optional<std::string> YamlNode::which_of(
+    std::initializer_list<std::string_view> alternatives) const {
+  return which_of(std::span<const std::string_view>(alternatives.begin(), alternatives.size()));
+}
+
+// --- sequences ----------------------------------------------------------------------------------
+
+std::size_t YamlNode::size() const {
+  const YAML::Node& n = impl_->node;
+  return (n.IsSequence() || n.IsMap()) ? n.size() : 0;
+}
+
+std::vector<YamlNode> YamlNode::elements(std::optional<std::size_t> expected_size) const {
+  const YAML::Node& n = impl_->node;
+  if (!n.IsSequence()) {
+    if (expected_size)
+      fail(fmt::format("expected a list of {}, got {}", *expected_size, describe(n)));
+    fail(fmt::format("expected a list, got {}", describe(n)));
+  }
+  if (expected_size && n.size() != *expected_size) {
+    fail(fmt::format("expected a list of {} elements, got {}", *expected_size, n.size()));
+  }
+  std::vector<YamlNode> out;
+  out.reserve(n.size());
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    const YAML::Node element = n[i];
+    auto [line, column] = position_of(element.Mark());
+    if (line == 0) std::tie(line, column) = std::pair(impl_->line, impl_->column);
+    out.push_back(
+        make(Impl{element, impl_->file, fmt::format("{}[{}]", impl_->path, i), line, column}));
+  }
+  return out;
+}
+
+// --- scalars ------------------------------------------------------------------------------------
+
+std::string YamlNode::as_string() const {
+  if (!impl_->node.IsScalar()) fail(fmt::format("expected a text, got {}", describe(impl_->node)));
+  return impl_->node.Scalar();
+}
+
+bool YamlNode::as_bool() const {
+  bool value = false;
+  if (!impl_->node.IsScalar() || !YAML::convert<bool>::decode(impl_->node, value)) {
+    fail(fmt::format("expected true or false, got {}", describe(impl_->node)));
+  }
+  return value;
+}
+
+long long YamlNode::as_integer() const {
+  long long value = 0;
+  if (!impl_->node.IsScalar() || !YAML::convert<long long>::decode(impl_->node, value)) {
+    fail(fmt::format("expected a whole number, got {}", describe(impl_->node)));
+  }
+  return value;
+}
+
+double YamlNode::as_double(Bound bound) const {
+  double value = 0.0;
+  if (!impl_->node.IsScalar() || !YAML::convert<double>::decode(impl_->node, value)) {
+    fail(fmt::format("expected a number, got {}", describe(impl_->node)));
+  }
+  if (!std::isfinite(value))
+    fail(fmt::format("expected a finite number, got {}", describe(impl_->node)));
+  if (bound == Bound::kPositive && !(value > 0.0)) {
+    fail(fmt::format("must be positive, got {}", impl_->node.Scalar()));
+  }
+  if (bound == Bound::kNonNegative && value < 0.0) {
+    fail(fmt::format("must not be negative, got {}", impl_->node.Scalar()));
+  }
+  return value;
+}
+
+Vec3 YamlNode::as_vec3(Bound bound) const {
+  const std::vector<YamlNode> xyz = elements(3);
+  return Vec3(xyz[0].as_double(bound), xyz[1].as_double(bound), xyz[2].as_double(bound));
+}
+
+Mat3 YamlNode::as_mat3() const {
+  if (!impl_->node.IsSequence() || impl_->node.size() != 3) {
+    fail(
+        fmt::format("expected a 3×3 matrix as three rows [[a, b, c], [d, e, f], [g, h, i]], got {}",
+                    impl_->node.IsSequence() ? fmt::format("a list of {}", impl_->node.size())
+                                             : describe(impl_->node)));
+  }
+  Mat3 M;
+  const std::vector<YamlNode> rows = elements(3);
+  for (int i = 0; i < 3; ++i) M.row(i) = rows[static_cast<std::size_t>(i)].as_vec3().transpose();
+  return M;
+}
+
+VecX YamlNode::as_vector(std::optional<std::size_t> expected_size, Bound bound) const {
+  const std::vector<YamlNode> items = elements(expected_size);
+  if (items.empty()) fail("expected a list of numbers, got an empty list");
+  VecX v(static_cast<Eigen::Index>(items.size()));
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    v[static_cast<Eigen::Index>(i)] = items[i].as_double(bound);
+  }
+  return v;
+}
+
+// --- map getters --------------------------------------------------------------------------------
+
+double YamlNode::number(std::string_view key, Bound bound) const {
+  return at(key).as_double(bound);
+}
+
+std::optional<double> YamlNode::find_number(std::string_view key, Bound bound) const {
+  if (auto value = find(key)) return value->as_double(bound);
+  return std::nullopt;
+}
+
+std::optional<std::string> YamlNode::find_string(std::string_view key) const {
+  if (auto value = find(key)) return value->as_string();
+  return std::nullopt;
+}
+
+std::optional<bool> YamlNode::find_bool(std::string_view key) const {
+  if (auto value = find(key)) return value->as_bool();
+  return std::nullopt;
+}
+
+std::optional<Vec3> YamlNode::find_vec3(std::string_view key, Bound bound) const {
+  if (auto value = find(key)) return value->as_vec3(bound);
+  return std::nullopt;
+}
+
+std::optional<double> YamlNode::find_angle(std::string_view key) const {
+  const std::string deg = fmt::format("{}_deg", key);
+  const std::string_view names[] = {key, deg};
+  const auto which = which_of(names);
+  if (!which) return std::nullopt;
+  const double value = at(*which).as_double();
+  return *which == key ? value : value * std::numbers::pi / 180.0;
+}
+
+std::optional<Vec3> YamlNode::find_angles(std::string_view key) const {
+  const std::string deg = fmt::format("{}_deg", key);
+  const std::string_view names[] = {key, deg};
+  const auto which = which_of(names);
+  if (!which) return std::nullopt;
+  const Vec3 value = at(*which).as_vec3();
+  return *which == key ? value : Vec3(value * std::numbers::pi / 180.0);
+}
+
+}  // namespace momenta::io
