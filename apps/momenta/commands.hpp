@@ -9,4 +9,7 @@ namespace momenta::cli {
 /// `momenta version`.
 void add_version_command(CLI::App& app);
 
+/// `momenta inertia FILE`: mass properties of a mesh or a composite part file (docs/cli.md).
+void add_inertia_command(CLI::App& app);
+
 }  // namespace momenta::cli

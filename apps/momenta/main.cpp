@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
                "Run `momenta <command> --help` for a command's options and an example."};
   app.require_subcommand(1);
   momenta::cli::add_version_command(app);
+  momenta::cli::add_inertia_command(app);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,264 @@
+// `momenta inertia FILE`: mass properties of a mesh file or a composite part file.
+// Parses the options, calls momenta::io and momenta::inertia, prints text or JSON. Documented in
+// docs/cli.md; the part-file format in docs/inertia-format.md.
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "momenta/common/error.hpp"
+#include "momenta/inertia/amount.hpp"
+#include "momenta/inertia/mass_properties.hpp"
+#include "momenta/io/part_file.hpp"
+
+namespace momenta::cli {
+namespace {
+
+using inertia::MassProperties;
+// Ordered: keys print in the order written, mass first.
+using json = nlohmann::ordered_json;
+
+struct InertiaOptions {
+  std::string file;
+  std::optional<double> density;
+  std::optional<double> mass;
+  std::optional<double> scale;
+  bool shell = false;
+  std::vector<double> about;
+  std::string frame = "body";
+  bool json = false;
+};
+
+// What was read: the composite (or the mesh as one part) and how.
+struct Result {
+  std::string name;
+  MassProperties total;
+  std::vector<io::PartSummary> parts;  // Empty for a mesh file.
+  std::optional<double> density;       // A mesh file's density (kg/m³, or kg/m² for a shell).
+  bool per_unit_density = false;
+  bool shell = false;
+};
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string e = path.extension().string();
+  std::transform(e.begin(), e.end(), e.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return e;
+}
+
+Result read(const InertiaOptions& o) {
+  const std::filesystem::path path = o.file;
+  const std::string extension = lower_extension(path);
+  Result r;
+  if (extension == ".yaml" || extension == ".yml") {
+    // Options that only make sense for a single mesh are usage errors here.
+    if (o.mass)
+      throw CLI::ValidationError("--mass",
+                                 "applies to mesh files; a part file gives masses per part");
+    if (o.scale)
+      throw CLI::ValidationError(
+          "--scale",
+          "applies to mesh files; use 'units:' or a mesh part's 'scale:' in a part file");
+    if (o.shell)
+      throw CLI::ValidationError(
+          "--shell", "applies to mesh files; use a mesh part's 'shell: true' in a part file");
+    io::CompositePart part = io::read_part_file(path, {.default_density = o.density});
+    r.name = part.name;
+    r.total = part.total;
+    r.parts = std::move(part.parts);
+    return r;
+  }
+  if (extension == ".stl" || extension == ".obj") {
+    if (o.density && o.mass) {
+      throw CLI::ValidationError("--density", "give --density or --mass, not both");
+    }
+    // Without a density or mass the result is per unit density: volume and centre of mass are
+    // exact, mass and inertia scale with the density.
+    r.per_unit_density = !o.density && !o.mass;
+    const inertia::Amount amount =
+        o.mass ? inertia::Amount::mass(*o.mass) : inertia::Amount::density(o.density.value_or(1.0));
+    if (!o.mass) r.density = o.density.value_or(1.0);
+    r.shell = o.shell;
+    r.name = path.stem().string();
+    r.total = io::read_mesh_mass_properties(path, amount, o.scale.value_or(1.0), o.shell);
+    return r;
+  }
+  throw InvalidArgument(fmt::format(
+      "{}: unsupported file extension '{}': expected .yaml or .yml (a part file), .stl or .obj "
+      "(a mesh)",
+      o.file, path.extension().string()));
+}
+
+// x + 0.0 turns −0 into +0 (a zero product of inertia reads better without its sign) and leaves
+// every other value as it is.
+double tidy(double x) { return x + 0.0; }
+
+json vec_json(const Vec3& v) { return json::array({tidy(v.x()), tidy(v.y()), tidy(v.z())}); }
+
+json mat_json(const Mat3& M) {
+  json rows = json::array();
+  for (int i = 0; i < 3; ++i)
+    rows.push_back(json::array({tidy(M(i, 0)), tidy(M(i, 1)), tidy(M(i, 2))}));
+  return rows;
+}
+
+std::string vec_text(const Vec3& v) {
+  return fmt::format("[{:.6g}, {:.6g}, {:.6g}]", tidy(v.x()), tidy(v.y()), tidy(v.z()));
+}
+
+void print_matrix(const Mat3& M) {
+  for (int i = 0; i < 3; ++i) {
+    fmt::print("  [{:>14.6e} {:>14.6e} {:>14.6e} ]\n", tidy(M(i, 0)), tidy(M(i, 1)), tidy(M(i, 2)));
+  }
+}
+
+void run(const InertiaOptions& o) {
+  const Result r = read(o);
+  const MassProperties& mp = r.total;
+  const inertia::PrincipalAxes principal = mp.principal_axes();
+  const Mat3& R_BP = principal.R_BP;
+  // Tensors are printed in the frame asked for: B's own axes, or the principal axes P.
+  const bool in_principal = o.frame == "principal";
+  const auto express = [&](const Mat3& I_B) -> Mat3 {
+    return in_principal ? Mat3(R_BP.transpose() * I_B * R_BP) : I_B;
+  };
+  // In principal axes the tensor about the centre of mass is diagonal by definition: print the
+  // moments themselves rather than R_BPᵀ I R_BP with its round-off off the diagonal.
+  const Mat3 I_com = in_principal ? Mat3(principal.moments.asDiagonal()) : mp.inertia_about_com();
+  std::optional<Vec3> about;
+  std::optional<Mat3> I_about;
+  if (!o.about.empty()) {
+    about = Vec3(o.about[0], o.about[1], o.about[2]);
+    I_about = express(mp.inertia_about(*about));
+  }
+
+  if (o.json) {
+    json j;
+    j["file"] = o.file;
+    j["name"] = r.name;
+    j["frame"] = o.frame;
+    j["mass"] = mp.mass();
+    j["volume"] = mp.volume();
+    j["com"] = vec_json(mp.center_of_mass());
+    j["inertia_com"] = mat_json(I_com);
+    j["principal_moments"] = vec_json(principal.moments);
+    j["principal_axes"] = mat_json(R_BP);
+    if (about) {
+      j["about"] = vec_json(*about);
+      j["inertia_about"] = mat_json(*I_about);
+    }
+    if (r.parts.empty()) {
+      j["shell"] = r.shell;
+      j["density"] = r.density ? json(*r.density) : json(nullptr);
+      j["per_unit_density"] = r.per_unit_density;
+    } else {
+      json parts = json::array();
+      for (const io::PartSummary& p : r.parts) {
+        const MassProperties& pm = p.mass_properties;
+        parts.push_back({{"name", p.name},
+                         {"kind", p.kind},
+                         {"hole", p.hole},
+                         {"line", p.line},
+                         {"mass", pm.mass()},
+                         {"volume", pm.volume()},
+                         {"com", vec_json(pm.center_of_mass())},
+                         {"inertia_com", mat_json(pm.inertia_about_com())}});
+      }
+      j["parts"] = std::move(parts);
+    }
+    fmt::print("{}\n", j.dump(2));
+  } else {
+    fmt::print("{} ({})\n", r.name, o.file);
+    if (!r.parts.empty()) {
+      fmt::print("\n  {:<24} {:<18} {:>12}  {}\n", "part", "kind", "mass kg", "centre of mass m");
+      for (const io::PartSummary& p : r.parts) {
+        const double m = p.mass_properties.mass();
+        fmt::print("  {:<24} {:<18} {:>12.6g}  {}\n", p.name, p.hole ? p.kind + " (hole)" : p.kind,
+                   p.hole ? -m : m, vec_text(p.mass_properties.center_of_mass()));
+      }
+      fmt::print("\n");
+    }
+    fmt::print("mass               {:.9g} kg\n", mp.mass());
+    fmt::print("volume             {:.9g} m³{}\n", mp.volume(),
+               r.shell ? " (a thin shell has none)" : "");
+    fmt::print("centre of mass     {} m\n", vec_text(mp.center_of_mass()));
+    const std::string axes = in_principal ? "principal axes" : "body axes";
+    fmt::print("inertia about the centre of mass, in {} (kg·m²):\n", axes);
+    print_matrix(I_com);
+    fmt::print("principal moments  {} kg·m² (ascending)\n", vec_text(principal.moments));
+    fmt::print("principal axes (columns, in body axes):\n");
+    for (int i = 0; i < 3; ++i) {
+      fmt::print("  [{:>10.6f} {:>10.6f} {:>10.6f} ]\n", tidy(R_BP(i, 0)), tidy(R_BP(i, 1)),
+                 tidy(R_BP(i, 2)));
+    }
+    if (about) {
+      fmt::print("inertia about {} m, in {} (kg·m²):\n", vec_text(*about), axes);
+      print_matrix(*I_about);
+    }
+  }
+  if (r.per_unit_density) {
+    fmt::print(stderr,
+               "momenta: note: no --density or --mass given: mass and inertia are per unit density "
+               "(1 kg/m{}); volume and centre of mass do not depend on it\n",
+               r.shell ? "²" : "³");
+  }
+}
+
+}  // namespace
+
+void add_inertia_command(CLI::App& app) {
+  auto options = std::make_shared<InertiaOptions>();
+  CLI::App* command = app.add_subcommand(
+      "inertia",
+      "Mass, centre of mass, inertia tensor and principal axes of a mesh file (.stl, .obj) or a "
+      "composite part file (.yaml)");
+  command
+      ->add_option("FILE", options->file,
+                   "A part file (.yaml, .yml; format in docs/inertia-format.md) or a closed "
+                   "triangle mesh (.stl, .obj)")
+      ->required();
+  command
+      ->add_option("--density", options->density,
+                   "Density, kg/m³ (kg/m² with --shell). Mesh: its material (default: 1, per unit "
+                   "density). Part file: replaces the file's default density of solids")
+      ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--mass", options->mass, "Mesh only: its total mass, kg (instead of --density)")
+      ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--scale", options->scale,
+                   "Mesh only: multiplies its coordinates into metres (0.001 for millimetres)")
+      ->check(CLI::PositiveNumber);
+  command->add_flag("--shell", options->shell,
+                    "Mesh only: a thin shell of uniform surface density (sheet metal) over its "
+                    "triangles, rather than the solid it bounds");
+  command
+      ->add_option("--about", options->about,
+                   "Also the inertia tensor about the point X Y Z (m, in the file's frame)")
+      ->expected(3);
+  command
+      ->add_option("--frame", options->frame,
+                   "Axes the inertia tensors are expressed in: 'body' (the file's own) or "
+                   "'principal' (the principal axes, tensors diagonal)")
+      ->check(CLI::IsMember({"body", "principal"}))
+      ->capture_default_str();
+  command->add_flag("--json", options->json, "Print JSON (SI units) instead of text");
+  command->footer(
+      "Examples:\n"
+      "  momenta inertia examples/parts/flanged_shaft.yaml\n"
+      "  momenta inertia bracket.stl --scale 0.001 --density 2700 --about 0 0 0.05\n"
+      "  momenta inertia cover.obj --shell --density 5.4 --json\n"
+      "All output is SI: kg, m, m³, kg·m². Off-diagonal inertia entries are minus the products of "
+      "inertia.");
+  command->callback([options] { run(*options); });
+}
+
+}  // namespace momenta::cli
