@@ -1,0 +1,71 @@
+#pragma once
+// Data: the preallocated workspace and results of the dynamics algorithms for one Model.
+//
+// Build one Data per Model (and per thread); every algorithm then runs without allocating.
+// Per-body arrays have num_bodies() entries indexed by body (entry 0, the world, stays at rest);
+// per-joint arrays have num_joints() entries. Spatial vectors are rotation first; "in B" means
+// expressed in body frame B about its origin Bo (Featherstone's body coordinates).
+//
+// Which algorithm sets which field is listed with each field. Fields not listed for an
+// algorithm are left untouched by it.
+
+#include <vector>
+
+#include "momenta/math/spatial.hpp"
+#include "momenta/model/model.hpp"
+
+namespace momenta::dynamics {
+
+using model::Model;
+
+struct Data {
+  /// Sizes every array for `model`.
+  explicit Data(const Model& model);
+
+  // --- Position: forward_kinematics(q) (X_PB and S also by rnea, aba, crba, hybrid_dynamics) ----
+  std::vector<Transform> X_PB;  ///< Pose of body B in its parent body frame P.
+  std::vector<Transform> X_WB;  ///< Pose of body B in the world. Not set by rnea/aba/crba.
+  /// Motion subspace of joint j in its child body frame (6 × nv_j, leading columns; constant
+  /// for 1-dof joints and the spherical joint).
+  std::vector<Mat6> S;
+
+  // --- Velocity: forward_kinematics(q, v) (also rnea, aba, hybrid_dynamics) ---------------------
+  std::vector<Vec6> V_WB_B;  ///< Spatial velocity of B in W, in B: [w_WB_B; v_WBo_B].
+  /// Velocity-product acceleration of joint j's child B, in B: V_WB × S v + Ṡ v.
+  std::vector<Vec6> c_B;
+
+  // --- Acceleration: forward_kinematics(q, v, vdot) -------------------------------------------
+  /// Spatial acceleration of B in W, in B (Featherstone: the rate of the components of V_WB_B,
+  /// so the classical acceleration of Bo is linear(A) + w × v; see body_acceleration_in_world).
+  std::vector<Vec6> A_WB_B;
+  /// The part of A_WB_B present with vdot = 0 (velocity products: Coriolis and centripetal).
+  std::vector<Vec6> A_bias_B;
+
+  // --- Forces: rnea, joint_reactions ----------------------------------------------------------
+  /// Wrench transmitted by the joint carrying B, from its parent onto B, in B (about Bo).
+  std::vector<Vec6> F_B;
+
+  // --- Workspace of rnea / aba / hybrid_dynamics ---------------------------------------------
+  std::vector<Vec6> A_gf;  ///< Acceleration shifted by −g (Featherstone's a₀ = −g trick), in B.
+  std::vector<Mat6> IA;    ///< Articulated-body inertia, in B.
+  std::vector<Vec6> pA;    ///< Articulated-body bias force, in B.
+  std::vector<Mat6> U;     ///< IA S per joint (leading nv columns).
+  std::vector<Mat6> Dinv;  ///< (Sᵀ IA S)⁻¹ per joint (leading nv × nv block).
+  std::vector<Vec6> u;     ///< τ − Sᵀ pA per joint (leading nv entries).
+
+  // --- Workspace of crba -----------------------------------------------------------------------
+  std::vector<SpatialInertia> I_composite;  ///< Composite inertia of B's subtree, in B.
+  std::vector<Mat6> F_crba;                 ///< Composite-inertia force columns per joint.
+
+  // --- Results -------------------------------------------------------------------------------
+  VecX tau;   ///< nv: rnea's inverse dynamics; hybrid_dynamics' full generalized forces.
+  VecX vdot;  ///< nv: aba's and hybrid_dynamics' accelerations.
+  VecX nle;   ///< nv: nonlinear_effects, C(q, v) v + g(q).
+  VecX g;     ///< nv: generalized_gravity, g(q).
+  MatX M;     ///< nv × nv: crba's mass matrix (both triangles filled).
+
+  // --- Scratch sized nv for the convenience paths (not results) ------------------------------
+  VecX scratch_nv;
+};
+
+}  // namespace momenta::dynamics

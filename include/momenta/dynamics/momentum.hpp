@@ -1,0 +1,31 @@
+#pragma once
+// System centre of mass and momentum.
+
+#include "momenta/dynamics/data.hpp"
+
+namespace momenta::dynamics {
+
+/// Mass, centre of mass and momentum of the whole system S, in the world frame.
+struct Momentum {
+  double mass = 0.0;       ///< kg.
+  Vec3 p_WoScm_W;          ///< Centre of mass (m).
+  Vec3 v_WScm_W;           ///< Velocity of the centre of mass (m/s).
+  Vec3 linear;             ///< Linear momentum L = m v_Scm (kg·m/s).
+  Vec3 angular_about_com;  ///< Angular momentum about Scm, H_Scm (kg·m²/s).
+
+  /// Angular momentum about the world-fixed point Q at p_WoQ_W: H_Q = H_Scm + (p_Scm − p_Q) × L.
+  Vec3 angular_about(const Vec3& p_WoQ_W) const {
+    return angular_about_com + (p_WoScm_W - p_WoQ_W).cross(linear);
+  }
+};
+
+/// Centre of mass of the system (m, in W) at configuration q. Runs forward_kinematics(q).
+Vec3 center_of_mass(const Model& model, Data& data, const VecX& q);
+
+/// Momentum of the system at (q, v). Runs forward_kinematics(q, v).
+Momentum momentum(const Model& model, Data& data, const VecX& q, const VecX& v);
+
+/// From data already filled by forward_kinematics(q, v).
+Momentum momentum(const Model& model, const Data& data);
+
+}  // namespace momenta::dynamics

@@ -1,0 +1,93 @@
+#pragma once
+// Force elements: springs, dampers, friction and applied loads, as data.
+//
+// These structs describe the elements; ModelBuilder::build() checks their parameters and fills
+// the resolved indices; the simulator evaluates them into generalized forces (and the springs'
+// potential energy). Bodies are named, "world" for the ground; points are fixed in their body and
+// given in its frame. Signals are named and live in the Model.
+
+#include <string>
+#include <variant>
+
+#include "momenta/math/types.hpp"
+
+namespace momenta::model {
+
+/// A point P fixed in body B: the body's name and p_BoP_B (m).
+struct BodyPoint {
+  std::string body;
+  Vec3 p_BoP_B = Vec3::Zero();
+  int body_index = -1;  ///< Set by ModelBuilder::build().
+};
+
+/// Frame in which an applied load's vector is given.
+enum class LoadFrame { world, body };
+
+/// Spring and damper along the line between point a and point b (either may be on the world):
+/// tension T = stiffness · (ℓ − free_length) + damping · ℓ̇, ℓ = |p_b − p_a|, pulling the points
+/// together when T > 0. Potential energy ½ stiffness (ℓ − free_length)².
+struct LinearSpringDamper {
+  std::string name;
+  BodyPoint a;
+  BodyPoint b;
+  double stiffness = 0.0;    ///< N/m, ≥ 0.
+  double damping = 0.0;      ///< N·s/m, ≥ 0.
+  double free_length = 0.0;  ///< m, ≥ 0.
+};
+
+/// Torsional spring and damper. On a 1-dof joint (`joint` set; revolute, or prismatic where it
+/// acts as a linear spring): τ = −stiffness (q − rest_angle) − damping q̇. Between two bodies
+/// (`joint` empty, `body_a` and `body_b` set): the moment on b is −stiffness · log(R_AB) −
+/// damping · (ω_B − ω_A) with log the rotation vector of b relative to a, measured from their
+/// orientation at the rest configuration, and the opposite moment acts on a.
+struct TorsionalSpringDamper {
+  std::string name;
+  std::string joint;
+  std::string body_a;
+  std::string body_b;
+  double stiffness = 0.0;   ///< N·m/rad, ≥ 0.
+  double damping = 0.0;     ///< N·m·s/rad, ≥ 0.
+  double rest_angle = 0.0;  ///< rad (m on a prismatic joint); joint form only.
+  int joint_index = -1;     ///< Set by ModelBuilder::build(); −1 in the two-body form.
+  int body_a_index = -1;    ///< Set by ModelBuilder::build() in the two-body form.
+  int body_b_index = -1;    ///< Set by ModelBuilder::build() in the two-body form.
+};
+
+/// Viscous friction on every velocity coordinate of a joint: τ = −viscous · v.
+struct JointFriction {
+  std::string name;
+  std::string joint;
+  double viscous = 0.0;  ///< N·m·s/rad or N·s/m, ≥ 0.
+  int joint_index = -1;  ///< Set by ModelBuilder::build().
+};
+
+/// A force applied at a point of a body: F = vector, or F = u(t) · vector when `signal` names a
+/// signal. `vector` is expressed in the world (a fixed direction) or in the body (a follower
+/// load), per `frame`.
+struct AppliedForce {
+  std::string name;
+  BodyPoint at;
+  LoadFrame frame = LoadFrame::world;
+  Vec3 vector = Vec3::Zero();  ///< N (or a direction scaled by the signal).
+  std::string signal;          ///< Empty for a constant load.
+  int signal_index = -1;       ///< Set by ModelBuilder::build(); −1 without a signal.
+};
+
+/// A pure moment applied to a body: M = vector, or M = u(t) · vector with a signal.
+struct AppliedTorque {
+  std::string name;
+  std::string body;
+  LoadFrame frame = LoadFrame::world;
+  Vec3 vector = Vec3::Zero();  ///< N·m (or a direction scaled by the signal).
+  std::string signal;
+  int body_index = -1;    ///< Set by ModelBuilder::build().
+  int signal_index = -1;  ///< Set by ModelBuilder::build(); −1 without a signal.
+};
+
+using ForceElement = std::variant<LinearSpringDamper, TorsionalSpringDamper, JointFriction,
+                                  AppliedForce, AppliedTorque>;
+
+/// The name of any force element.
+const std::string& force_element_name(const ForceElement& element);
+
+}  // namespace momenta::model

@@ -1,0 +1,151 @@
+#pragma once
+// Joints: what connects a child body to its parent, and how its coordinates are laid out.
+//
+// Frames. Every joint has a frame J fixed in the parent body P, at pose X_PJ, and a frame J'
+// fixed in the child body C, at pose X_CJ (J' in C). At the neutral configuration J' coincides
+// with J; the joint moves J' relative to J by X_JJ'(q). The pose of the child in its parent is
+//   X_PC(q) = X_PJ · X_JJ'(q) · X_CJ⁻¹.
+// Axes are unit vectors expressed in J (and J' for the universal joint's second axis).
+//
+// Coordinates (nq configuration, nv velocity; Featherstone 2008, Table 4.1):
+//
+// | type        | nq | nv | q                                  | v                               |
+// |-------------|----|----|------------------------------------|---------------------------------|
+// | fixed       | 0  | 0  | —                                  | —                               |
+// | revolute    | 1  | 1  | angle θ about axis (rad)           | θ̇                               |
+// | prismatic   | 1  | 1  | displacement d along axis (m)      | ḋ                               |
+// | cylindrical | 2  | 2  | [θ, d] about and along axis        | [θ̇, ḋ]                          |
+// | universal   | 2  | 2  | [θ1, θ2]: X_JJ' = Rot(axis, θ1) Rot(axis2, θ2) | [θ̇1, θ̇2]             |
+// | spherical   | 4  | 3  | quaternion q_JJ' [w, x, y, z]      | w_JJ'_J' (rad/s, in J')         |
+// | planar      | 3  | 3  | [x, y, θ]: translation in J's x-y plane, then rotation θ about J's z |
+// [ẋ, ẏ, θ̇] | | free        | 7  | 6  | [p_JoJ'o_J (3); q_JJ' (4, wxyz)]   | [w_JJ'_J' (3, in J');
+// v = ṗ_JoJ'o_J (3, in J)] |
+//
+// The free joint's velocity is the child's angular velocity in its own frame (as for the
+// spherical joint) followed by the rate of its position in the parent joint frame, so the
+// translation is a plain vector space: q̇_p = v_lin exactly, and q̇_quat = ½ q ⊗ [0; ω]
+// (MuJoCo's convention, ordered rotation first). Quaternions are integrated with the exponential
+// map, never by adding and normalizing (see integrate() in model.hpp).
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "momenta/math/spatial.hpp"
+#include "momenta/math/types.hpp"
+
+namespace momenta::model {
+
+enum class JointType {
+  fixed,
+  revolute,
+  prismatic,
+  cylindrical,
+  universal,
+  spherical,
+  planar,
+  free
+};
+
+/// The lower-case name of a joint type: "fixed", "revolute", ...
+std::string_view joint_type_name(JointType type);
+
+/// The joint type with that name; throws InvalidArgument with the list of names (and a "did you
+/// mean" suggestion) for an unknown one. Accepts the aliases "weld" (fixed), "hinge" (revolute),
+/// "slider" (prismatic), "ball" (spherical) and "floating" (free).
+JointType joint_type_from_name(std::string_view name);
+
+/// Configuration size nq of a joint type.
+constexpr int joint_nq(JointType type) {
+  switch (type) {
+    case JointType::fixed:
+      return 0;
+    case JointType::revolute:
+    case JointType::prismatic:
+      return 1;
+    case JointType::cylindrical:
+    case JointType::universal:
+      return 2;
+    case JointType::spherical:
+      return 4;
+    case JointType::planar:
+      return 3;
+    case JointType::free:
+      return 7;
+  }
+  return 0;
+}
+
+/// Velocity size nv of a joint type (its degrees of freedom).
+constexpr int joint_nv(JointType type) {
+  switch (type) {
+    case JointType::fixed:
+      return 0;
+    case JointType::revolute:
+    case JointType::prismatic:
+      return 1;
+    case JointType::cylindrical:
+    case JointType::universal:
+      return 2;
+    case JointType::spherical:
+    case JointType::planar:
+      return 3;
+    case JointType::free:
+      return 6;
+  }
+  return 0;
+}
+
+/// A joint as described by a user and stored in the Model. The fields under "set by
+/// ModelBuilder::build()" are ignored on input and filled in by the builder.
+struct Joint {
+  std::string name;
+  JointType type = JointType::revolute;
+  std::string parent;  ///< Name of the parent body; "world" for the ground.
+  std::string child;   ///< Name of the child body.
+
+  Transform X_PJ;  ///< Joint frame J in the parent body frame P.
+  Transform X_CJ;  ///< Child-side joint frame J' in the child body frame C.
+
+  /// Unit axis in J: revolute, prismatic and cylindrical axis, the universal joint's first axis.
+  Vec3 axis = Vec3::UnitZ();
+  /// Unit axis in J': the universal joint's second axis (not parallel to `axis`).
+  Vec3 axis2 = Vec3::UnitY();
+
+  /// Initial configuration (size nq); empty means neutral (zeros, identity quaternion).
+  VecX q0;
+  /// Initial velocity (size nv); empty means zero.
+  VecX v0;
+
+  /// Viscous damping coefficient c ≥ 0 on every velocity coordinate: τ = −c v (N·m·s/rad on
+  /// angles, N·s/m on displacements). Evaluated by the force-element code, not by the
+  /// dynamics algorithms.
+  double damping = 0.0;
+
+  /// Prescribed motion: empty for a joint driven by forces; otherwise one signal name per
+  /// coordinate (size nq == nv: revolute, prismatic, cylindrical, universal, planar) whose value,
+  /// rate and acceleration are q, v and v̇ of that coordinate. The signals live in the Model.
+  std::vector<std::string> prescribed_signals;
+
+  // --- set by ModelBuilder::build() ----------------------------------------------------------
+  int index = -1;                              ///< Index of this joint in Model::joints().
+  int parent_index = -1;                       ///< Index of the parent body (0 = world).
+  int child_index = -1;                        ///< Index of the child body; always index + 1.
+  int q_index = -1;                            ///< First configuration coordinate in q.
+  int v_index = -1;                            ///< First velocity coordinate in v.
+  std::vector<int> prescribed_signal_indices;  ///< Indices into Model::signals().
+
+  int nq() const { return joint_nq(type); }
+  int nv() const { return joint_nv(type); }
+  bool is_prescribed() const { return !prescribed_signals.empty(); }
+};
+
+/// X_JJ'(q): the pose of the child-side joint frame in the joint frame for configuration `q`
+/// (the joint's nq coordinates). Quaternions are normalized before use.
+Transform joint_transform(const Joint& joint, const double* q);
+
+/// The joint's motion subspace S in J' (6 × nv): J''s spatial velocity relative to J, expressed in
+/// J' about J'o, is S v. Returned in the leading nv columns of a 6×6 matrix.
+Mat6 joint_motion_subspace(const Joint& joint, const double* q);
+
+}  // namespace momenta::model

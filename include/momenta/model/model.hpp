@@ -1,0 +1,163 @@
+#pragma once
+// The Model: an immutable description of a multibody system — a tree of bodies connected by
+// joints, gravity, force elements and input signals. Built and validated by ModelBuilder
+// (model_builder.hpp); the algorithms in momenta/dynamics read it and write a Data.
+//
+// Indexing. Bodies are numbered 0..num_bodies()−1 with 0 the world; parents come before their
+// children (parent_index < index). Joint j carries body j + 1 (num_joints() == num_bodies() − 1),
+// so joints are in the same topological order. Joint j's coordinates are q[q_index, q_index + nq)
+// and v[v_index, v_index + nv), stacked in joint order (layout per joint type in joint.hpp).
+//
+// Configuration space. q is not a vector space where it holds quaternions (spherical and free
+// joints, nq ≠ nv): use integrate(), difference() and neutral() below to move on it.
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "momenta/math/spatial.hpp"
+#include "momenta/model/body.hpp"
+#include "momenta/model/force_element.hpp"
+#include "momenta/model/joint.hpp"
+#include "momenta/model/signal.hpp"
+
+namespace momenta::model {
+
+class ModelBuilder;
+
+/// What the algorithms precompute for each joint from its description (read-only; for
+/// implementers of algorithms, not needed by users).
+struct JointConstants {
+  JointType type = JointType::fixed;
+  int nq = 0;
+  int nv = 0;
+  int q_index = 0;
+  int v_index = 0;
+  int parent = 0;              ///< Parent body index.
+  int child = 0;               ///< Child body index.
+  Transform X_PJ;              ///< Joint frame in the parent.
+  Transform X_JC;              ///< Child body frame in J' (X_CJ⁻¹).
+  bool child_at_joint = true;  ///< X_CJ is the identity (C ≡ J').
+  /// 1-dof joints: the motion subspace column in the child frame C (constant).
+  Vec6 S_C = Vec6::Zero();
+  /// 1-dof joints whose S_C is a unit basis vector e_k: k (0–2 rotation, 3–5 translation); −1
+  /// otherwise. The algorithms' fast path for axis-aligned joints.
+  int S_basis = -1;
+  Vec3 axis = Vec3::UnitZ();
+  Vec3 axis2 = Vec3::UnitY();
+};
+
+class Model {
+ public:
+  /// Bodies including the world (index 0).
+  int num_bodies() const { return static_cast<int>(bodies_.size()); }
+  /// Joints; joint j carries body j + 1.
+  int num_joints() const { return static_cast<int>(joints_.size()); }
+  /// Size of the configuration vector q.
+  int nq() const { return nq_; }
+  /// Size of the velocity vector v (degrees of freedom).
+  int nv() const { return nv_; }
+
+  /// Gravitational acceleration g in the world frame (m/s²), e.g. (0, 0, −9.81).
+  const Vec3& gravity() const { return gravity_; }
+
+  const std::vector<Body>& bodies() const { return bodies_; }
+  const Body& body(int b) const { return bodies_[b]; }
+  const std::vector<Joint>& joints() const { return joints_; }
+  const Joint& joint(int j) const { return joints_[j]; }
+  const std::vector<ForceElement>& force_elements() const { return force_elements_; }
+  const std::vector<Signal>& signals() const { return signals_; }
+
+  /// Parent body index of body b (−1 for the world).
+  int parent(int b) const { return bodies_[b].parent_index; }
+
+  /// Spatial inertia of body b about Bo, expressed in B (zero for the world).
+  const SpatialInertia& spatial_inertia(int b) const { return inertias_[b]; }
+  /// Total mass of all bodies (kg).
+  double total_mass() const { return total_mass_; }
+
+  /// Index of the body, joint or signal with that name; nullopt if there is none.
+  std::optional<int> find_body(std::string_view name) const;
+  std::optional<int> find_joint(std::string_view name) const;
+  std::optional<int> find_signal(std::string_view name) const;
+  /// Index of the body, joint or signal with that name; throws InvalidArgument with a "did you
+  /// mean" suggestion if there is none.
+  int body_index(std::string_view name) const;
+  int joint_index(std::string_view name) const;
+  int signal_index(std::string_view name) const;
+
+  /// The joint owning configuration coordinate i (0 ≤ i < nq) or velocity coordinate i.
+  int joint_of_q(int i) const { return joint_of_q_[i]; }
+  int joint_of_v(int i) const { return joint_of_v_[i]; }
+  /// Readable names of the coordinates: "hinge.angle", "base.qw", "base.vx", ... for messages,
+  /// plots and CSV headers.
+  const std::string& q_name(int i) const { return q_names_[i]; }
+  const std::string& v_name(int i) const { return v_names_[i]; }
+
+  /// True when any joint is prescribed by signals.
+  bool has_prescribed_joints() const { return has_prescribed_; }
+
+  /// The initial state: each joint's q0 and v0 (neutral and zero where not given), stacked.
+  const VecX& initial_q() const { return q0_; }
+  const VecX& initial_v() const { return v0_; }
+
+  /// Per-joint constants for the algorithms (see JointConstants).
+  const std::vector<JointConstants>& joint_constants() const { return constants_; }
+
+ private:
+  friend class ModelBuilder;
+  Model() = default;
+
+  Vec3 gravity_ = Vec3(0, 0, -9.81);
+  std::vector<Body> bodies_;
+  std::vector<Joint> joints_;
+  std::vector<JointConstants> constants_;
+  std::vector<SpatialInertia> inertias_;
+  std::vector<ForceElement> force_elements_;
+  std::vector<Signal> signals_;
+  std::vector<int> joint_of_q_;
+  std::vector<int> joint_of_v_;
+  std::vector<std::string> q_names_;
+  std::vector<std::string> v_names_;
+  VecX q0_;
+  VecX v0_;
+  int nq_ = 0;
+  int nv_ = 0;
+  double total_mass_ = 0.0;
+  bool has_prescribed_ = false;
+};
+
+// --- Configuration space ---------------------------------------------------------------------
+
+/// The neutral configuration (size nq): zero angles and displacements, identity quaternions.
+VecX neutral(const Model& model);
+
+/// q_out = q ⊕ v·dt: moves q along the constant velocity v (size nv) for dt seconds. Rotation
+/// coordinates use the exponential map, q_JJ'(dt) = q_JJ' ⊗ exp(ω dt) with ω in J' (exact for
+/// constant body angular velocity; no add-and-normalize); everything else, including the free
+/// joint's translation, adds v·dt. q_out may alias q. Sizes: q, q_out nq; v nv.
+void integrate(const Model& model, const VecX& q, const VecX& v, double dt, VecX& q_out);
+VecX integrate(const Model& model, const VecX& q, const VecX& v, double dt);
+
+/// The tangent vector d (size nv) with integrate(model, q0, d, 1) == q1: the rotation vector
+/// log(q0⁻¹ ⊗ q1) (|·| ≤ π, in J') on rotations, q1 − q0 elsewhere.
+void difference(const Model& model, const VecX& q0, const VecX& q1, VecX& d);
+VecX difference(const Model& model, const VecX& q0, const VecX& q1);
+
+/// q̇ (size nq) for velocity v at q: ½ q ⊗ [0; ω] on quaternions, v elsewhere.
+void configuration_rate(const Model& model, const VecX& q, const VecX& v, VecX& qdot);
+
+/// Rate δ̇ (size nv) of local coordinates q = q_base ⊕ δ when the velocity is v:
+/// J_r(δ)⁻¹ ω on rotations (math/lie_group.hpp), v elsewhere (Munthe-Kaas 1998).
+void local_coordinate_rate(const Model& model, const VecX& delta, const VecX& v, VecX& delta_rate);
+
+/// Normalizes every quaternion in q in place; throws NumericalError naming the joint if one has
+/// zero or non-finite norm.
+void normalize(const Model& model, VecX& q);
+
+/// Throws InvalidArgument naming `what` and the sizes unless q has size nq and v size nv.
+void check_state_sizes(const Model& model, const VecX& q, const VecX& v, std::string_view what);
+
+}  // namespace momenta::model
