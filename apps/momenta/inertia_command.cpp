@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -110,13 +111,25 @@ json mat_json(const Mat3& M) {
   return rows;
 }
 
-std::string vec_text(const Vec3& v) {
-  return fmt::format("[{:.6g}, {:.6g}, {:.6g}]", tidy(v.x()), tidy(v.y()), tidy(v.z()));
+// Text shows 6 significant digits; entries below 1e-12 of `scale` (the round-off of a sum that
+// cancels, such as the products of a symmetric part) print as 0 there. JSON keeps every value.
+Vec3 shown(const Vec3& v, double scale) {
+  return v.unaryExpr([&](double x) { return std::abs(x) < 1e-12 * scale ? 0.0 : tidy(x); });
+}
+Mat3 shown(const Mat3& M) {
+  const double scale = M.cwiseAbs().maxCoeff();
+  return M.unaryExpr([&](double x) { return std::abs(x) < 1e-12 * scale ? 0.0 : tidy(x); });
 }
 
-void print_matrix(const Mat3& M) {
+std::string vec_text(const Vec3& v) {
+  return fmt::format("[{:.6g}, {:.6g}, {:.6g}]", v.x(), v.y(), v.z());
+}
+
+void print_matrix(const Mat3& M, const char* format) {
   for (int i = 0; i < 3; ++i) {
-    fmt::print("  [{:>14.6e} {:>14.6e} {:>14.6e} ]\n", tidy(M(i, 0)), tidy(M(i, 1)), tidy(M(i, 2)));
+    fmt::print("  [");
+    for (int j = 0; j < 3; ++j) fmt::print(fmt::runtime(format), M(i, j));
+    fmt::print(" ]\n");
   }
 }
 
@@ -177,31 +190,32 @@ void run(const InertiaOptions& o) {
     fmt::print("{}\n", j.dump(2));
   } else {
     fmt::print("{} ({})\n", r.name, o.file);
+    // Lengths are shown against the body's size: its radius of gyration or its distance from Bo.
+    const double length = std::max(mp.center_of_mass().norm(),
+                                   std::sqrt(mp.inertia_about_com().trace() / (2 * mp.mass())));
     if (!r.parts.empty()) {
       fmt::print("\n  {:<24} {:<18} {:>12}  {}\n", "part", "kind", "mass kg", "centre of mass m");
       for (const io::PartSummary& p : r.parts) {
         const double m = p.mass_properties.mass();
         fmt::print("  {:<24} {:<18} {:>12.6g}  {}\n", p.name, p.hole ? p.kind + " (hole)" : p.kind,
-                   p.hole ? -m : m, vec_text(p.mass_properties.center_of_mass()));
+                   p.hole ? -m : m, vec_text(shown(p.mass_properties.center_of_mass(), length)));
       }
       fmt::print("\n");
     }
     fmt::print("mass               {:.9g} kg\n", mp.mass());
     fmt::print("volume             {:.9g} m³{}\n", mp.volume(),
                r.shell ? " (a thin shell has none)" : "");
-    fmt::print("centre of mass     {} m\n", vec_text(mp.center_of_mass()));
+    fmt::print("centre of mass     {} m\n", vec_text(shown(mp.center_of_mass(), length)));
     const std::string axes = in_principal ? "principal axes" : "body axes";
     fmt::print("inertia about the centre of mass, in {} (kg·m²):\n", axes);
-    print_matrix(I_com);
-    fmt::print("principal moments  {} kg·m² (ascending)\n", vec_text(principal.moments));
+    print_matrix(shown(I_com), " {:>13.6e}");
+    fmt::print("principal moments  {} kg·m² (ascending)\n",
+               vec_text(shown(principal.moments, principal.moments.maxCoeff())));
     fmt::print("principal axes (columns, in body axes):\n");
-    for (int i = 0; i < 3; ++i) {
-      fmt::print("  [{:>10.6f} {:>10.6f} {:>10.6f} ]\n", tidy(R_BP(i, 0)), tidy(R_BP(i, 1)),
-                 tidy(R_BP(i, 2)));
-    }
+    print_matrix(shown(R_BP), " {:>9.6f}");
     if (about) {
       fmt::print("inertia about {} m, in {} (kg·m²):\n", vec_text(*about), axes);
-      print_matrix(*I_about);
+      print_matrix(shown(*I_about), " {:>13.6e}");
     }
   }
   if (r.per_unit_density) {

@@ -208,7 +208,8 @@ TEST_F(InertiaCli, MeshFileWithDensityMassScaleOrPerUnitDensity) {
   const fs::path obj = write_obj("block.obj", test::box_mesh(Vec3(100, 60, 40)));
   const inertia::MassProperties box =
       inertia::box(inertia::Amount::density(2700), Vec3(0.1, 0.06, 0.04));
-  const CliRun r = momenta("inertia " + quoted(obj.string()) + " --scale 0.001 --density 2700 --json");
+  const CliRun r =
+      momenta("inertia " + quoted(obj.string()) + " --scale 0.001 --density 2700 --json");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(r.err.empty()) << r.err;
   const json j = json::parse(r.out);
@@ -224,7 +225,8 @@ TEST_F(InertiaCli, MeshFileWithDensityMassScaleOrPerUnitDensity) {
   EXPECT_EQ(mat(j.at("inertia_com")), lib.inertia_about_com());
 
   // By total mass.
-  const CliRun by_mass = momenta("inertia " + quoted(obj.string()) + " --scale 0.001 --mass 2 --json");
+  const CliRun by_mass =
+      momenta("inertia " + quoted(obj.string()) + " --scale 0.001 --mass 2 --json");
   ASSERT_EQ(by_mass.code, 0) << by_mass.err;
   EXPECT_REL_NEAR(json::parse(by_mass.out).at("mass").get<double>(), 2.0, 1e-15);
 
@@ -339,6 +341,21 @@ TEST_F(InertiaCli, UsageErrorsExitTwo) {
     const CliRun r = momenta(args);
     EXPECT_EQ(r.code, 2) << r.out << r.err;
     EXPECT_FALSE(r.err.empty());
+  }
+}
+
+TEST_F(InertiaCli, BundledExamplesRun) {
+  // Their numbers are checked in tests/validation/io/example_parts_test.cpp; here, that the CLI
+  // prints them as JSON equal to the library's.
+  for (const char* name : {"flanged_shaft", "bracket", "flywheel", "satellite"}) {
+    SCOPED_TRACE(name);
+    const std::string file = test::source_dir() + "/examples/parts/" + name + ".yaml";
+    const CliRun r = momenta("inertia " + quoted(file) + " --json");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const json j = json::parse(r.out);
+    const inertia::MassProperties mp = io::read_part_file(file).total;
+    EXPECT_EQ(j.at("mass").get<double>(), mp.mass());
+    EXPECT_EQ(mat(j.at("inertia_com")), mp.inertia_about_com());
   }
 }
 
