@@ -133,6 +133,46 @@ void print_matrix(const Mat3& M, const char* format) {
   }
 }
 
+// JSON with one item per line, but a list of numbers (a vector, a matrix row) on one line:
+// `"com": [0.0, 0.0, 0.11]` reads better than three lines, and a matrix shows as its rows.
+void write_json(std::string& out, const json& j, int indent) {
+  const auto flat = [](const json& a) {
+    return a.is_array() &&
+           std::all_of(a.begin(), a.end(), [](const json& e) { return e.is_primitive(); });
+  };
+  const std::string pad(static_cast<std::size_t>(indent + 2), ' ');
+  if (j.is_object()) {
+    out += "{\n";
+    std::size_t i = 0;
+    for (const auto& [key, value] : j.items()) {
+      out += pad + json(key).dump() + ": ";
+      write_json(out, value, indent + 2);
+      out += ++i < j.size() ? ",\n" : "\n";
+    }
+    out += std::string(static_cast<std::size_t>(indent), ' ') + "}";
+  } else if (j.is_array() && !flat(j)) {
+    out += "[\n";
+    for (std::size_t i = 0; i < j.size(); ++i) {
+      out += pad;
+      write_json(out, j[i], indent + 2);
+      out += i + 1 < j.size() ? ",\n" : "\n";
+    }
+    out += std::string(static_cast<std::size_t>(indent), ' ') + "]";
+  } else {
+    // Numbers, strings and lists of numbers: compact, ", " between items.
+    std::string text = j.dump(-1, ' ', false);
+    std::string spaced;
+    bool in_string = false;
+    for (std::size_t k = 0; k < text.size(); ++k) {
+      const char c = text[k];
+      if (c == '"' && (k == 0 || text[k - 1] != '\\')) in_string = !in_string;
+      spaced += c;
+      if (c == ',' && !in_string) spaced += ' ';
+    }
+    out += spaced;
+  }
+}
+
 void run(const InertiaOptions& o) {
   const Result r = read(o);
   const MassProperties& mp = r.total;
@@ -187,7 +227,9 @@ void run(const InertiaOptions& o) {
       }
       j["parts"] = std::move(parts);
     }
-    fmt::print("{}\n", j.dump(2));
+    std::string text;
+    write_json(text, j, 0);
+    fmt::print("{}\n", text);
   } else {
     fmt::print("{} ({})\n", r.name, o.file);
     // Lengths are shown against the body's size: its radius of gyration or its distance from Bo.
