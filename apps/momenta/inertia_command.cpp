@@ -244,6 +244,11 @@ void run(const InertiaOptions& o) {
       }
       fmt::print("\n");
     }
+    if (r.parts.empty() && r.density) {
+      fmt::print("density            {:.9g} kg/m{}{}\n", *r.density,
+                 r.shell ? "² (thin shell)" : "³",
+                 r.per_unit_density ? " — none given: per unit density" : "");
+    }
     fmt::print("mass               {:.9g} kg\n", mp.mass());
     fmt::print("volume             {:.9g} m³{}\n", mp.volume(),
                r.shell ? " (a thin shell has none)" : "");
