@@ -9,6 +9,7 @@
 // Which algorithm sets which field is listed with each field. Fields not listed for an
 // algorithm are left untouched by it.
 
+#include <utility>
 #include <vector>
 
 #include "momenta/math/spatial.hpp"
@@ -54,8 +55,13 @@ struct Data {
   std::vector<Vec6> u;     ///< τ − Sᵀ pA per joint (leading nv entries).
 
   // --- Workspace of crba -----------------------------------------------------------------------
-  std::vector<SpatialInertia> I_composite;  ///< Composite inertia of B's subtree, in B.
-  std::vector<Mat6> F_crba;                 ///< Composite-inertia force columns per joint.
+  std::vector<SpatialInertia> I_composite;  ///< Composite inertia of B's subtree, in W about Wo.
+  MatX J_W;  ///< 6 × nv: every joint's motion subspace in W about Wo (crba, frame_jacobian).
+  MatX F_W;  ///< 6 × nv: composite inertia times J_W per joint (crba).
+  /// Per joint: the velocity-coordinate ranges [start, start + size) of the joint and all its
+  /// ancestors, merged into contiguous runs (one run for a serial chain). Fixed by the model.
+  std::vector<std::vector<std::pair<int, int>>> support_ranges;
+  bool all_dofs_related = true;  ///< Every pair of joints is ancestor-related (M has no zeros).
 
   // --- Results -------------------------------------------------------------------------------
   VecX tau;   ///< nv: rnea's inverse dynamics; hybrid_dynamics' full generalized forces.

@@ -1,0 +1,77 @@
+#include "momenta/dynamics/data.hpp"
+
+#include "momenta/model/joint.hpp"
+
+namespace momenta::dynamics {
+
+Data::Data(const Model& model) {
+  const auto nb = static_cast<std::size_t>(model.num_bodies());
+  const auto nj = static_cast<std::size_t>(model.num_joints());
+  const int nv = model.nv();
+  X_PB.assign(nb, Transform());
+  X_WB.assign(nb, Transform());
+  S.assign(nj, Mat6::Zero());
+  V_WB_B.assign(nb, Vec6::Zero());
+  c_B.assign(nb, Vec6::Zero());
+  A_WB_B.assign(nb, Vec6::Zero());
+  A_bias_B.assign(nb, Vec6::Zero());
+  F_B.assign(nb, Vec6::Zero());
+  A_gf.assign(nb, Vec6::Zero());
+  IA.assign(nb, Mat6::Zero());
+  pA.assign(nb, Vec6::Zero());
+  U.assign(nj, Mat6::Zero());
+  Dinv.assign(nj, Mat6::Zero());
+  u.assign(nj, Vec6::Zero());
+  I_composite.assign(nb, SpatialInertia());
+  J_W = MatX::Zero(6, nv);
+  F_W = MatX::Zero(6, nv);
+  tau = VecX::Zero(nv);
+  vdot = VecX::Zero(nv);
+  nle = VecX::Zero(nv);
+  g = VecX::Zero(nv);
+  M = MatX::Zero(nv, nv);
+  scratch_nv = VecX::Zero(nv);
+
+  // Motion subspaces in the child frame: the constant ones are set here once for all; the
+  // q-dependent ones (universal, planar, free) are refreshed by every algorithm.
+  const VecX q = model::neutral(model);
+  for (std::size_t j = 0; j < nj; ++j) {
+    const model::Joint& joint = model.joint(static_cast<int>(j));
+    const model::JointConstants& c = model.joint_constants()[j];
+    const Mat6 S_J = model::joint_motion_subspace(joint, q.data() + joint.q_index);
+    for (int k = 0; k < joint.nv(); ++k) S[j].col(k) = c.X_JC.act_motion_inverse(S_J.col(k));
+  }
+
+  // Ancestor velocity ranges per joint, merged into contiguous runs, ascending.
+  support_ranges.resize(nj);
+  std::vector<int> joints_on_path;
+  for (std::size_t j = 0; j < nj; ++j) {
+    joints_on_path.clear();
+    for (int b = static_cast<int>(j) + 1; b > 0; b = model.parent(b)) {
+      joints_on_path.push_back(b - 1);
+    }
+    auto& ranges = support_ranges[j];
+    for (auto it = joints_on_path.rbegin(); it != joints_on_path.rend(); ++it) {
+      const model::Joint& joint = model.joint(*it);
+      if (joint.nv() == 0) continue;
+      if (!ranges.empty() && ranges.back().first + ranges.back().second == joint.v_index) {
+        ranges.back().second += joint.nv();
+      } else {
+        ranges.emplace_back(joint.v_index, joint.nv());
+      }
+    }
+  }
+  // M has structural zeros unless the joints with degrees of freedom form one chain, where
+  // the support of each holds every earlier degree of freedom.
+  all_dofs_related = true;
+  for (std::size_t j = 0; j < nj; ++j) {
+    const model::Joint& joint = model.joint(static_cast<int>(j));
+    if (joint.nv() == 0) continue;
+    const auto& r = support_ranges[j];
+    if (r.size() != 1 || r[0].first != 0 || r[0].second != joint.v_index + joint.nv()) {
+      all_dofs_related = false;
+    }
+  }
+}
+
+}  // namespace momenta::dynamics
