@@ -15,7 +15,7 @@
 //     for (const io::YamlNode& part : root.at("parts").elements()) {
 //       part.check_keys(kPartKeys);
 //       const double radius = part.number("radius", io::Bound::kPositive);
-//       const Vec3 p = part.find("position") ? part.at("position").as_vec3() : Vec3::Zero();
+//       const Vec3 p = part.find_vec3("position").value_or(Vec3::Zero());
 //     }
 //
 // Lines and columns are 1-based, as editors count. Nodes are cheap handles (shared, immutable).
