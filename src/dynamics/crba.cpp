@@ -3,11 +3,42 @@
 #include "joint_kernels.hpp"
 
 namespace momenta::dynamics {
+namespace {
+
+// M(start + k, col) = S_W.row(start + k) · F for k < size: dot products of F with rows of the
+// nv × 6 matrix S_W, vectorized along its contiguous columns.
+inline void column_entries(const MatX& S_W, int start, int size, const Vec6& F, double* out) {
+  const Eigen::Index ld = S_W.rows();
+  const double* s = S_W.data() + start;
+  for (int k = 0; k < size; ++k) {
+    out[k] = s[k] * F[0] + s[k + ld] * F[1] + s[k + 2 * ld] * F[2] + s[k + 3 * ld] * F[3] +
+             s[k + 4 * ld] * F[4] + s[k + 5 * ld] * F[5];
+  }
+}
+
+// Copies the upper triangle of the square matrix M into its lower triangle, in tiles so that
+// the strided reads stay in cache.
+void mirror_upper(MatX& M) {
+  const Eigen::Index n = M.rows();
+  constexpr Eigen::Index kTile = 16;
+  for (Eigen::Index j0 = 0; j0 < n; j0 += kTile) {
+    const Eigen::Index j1 = std::min(n, j0 + kTile);
+    for (Eigen::Index i0 = j0; i0 < n; i0 += kTile) {
+      const Eigen::Index i1 = std::min(n, i0 + kTile);
+      // Lower entries (i, j), i > j, of this tile from the upper (j, i).
+      for (Eigen::Index j = j0; j < j1; ++j) {
+        for (Eigen::Index i = std::max(i0, j + 1); i < i1; ++i) M(i, j) = M(j, i);
+      }
+    }
+  }
+}
+
+}  // namespace
 
 // The composite-rigid-body algorithm in world coordinates (Featherstone 2008, §6.2, with the
 // quantities expressed in the fixed frame as in Pinocchio's crba): with composite inertias I_c
-// and motion subspaces J in W, M(λ, i) = J_λᵀ (I_c,i J_i) for every ancestor λ of joint i.
-// In W each entry is one dot product (no per-ancestor transform), so a column costs O(depth).
+// and motion subspaces S in W, M(λ, i) = S_λᵀ (I_c,i S_i) for every ancestor λ of joint i.
+// In W each entry is one 6-D dot product (no per-ancestor transform).
 const MatX& crba(const Model& model, Data& data, const VecX& q) {
   const auto& joints = model.joint_constants();
   const int nj = static_cast<int>(joints.size());
@@ -19,7 +50,7 @@ const MatX& crba(const Model& model, Data& data, const VecX& q) {
     detail::joint_position(c, q.data() + c.q_index, data.X_PB[i], data.S[j]);
     data.X_WB[i] = data.X_WB[c.parent] * data.X_PB[i];
     for (int k = 0; k < c.nv; ++k) {
-      data.J_W.col(c.v_index + k) = data.X_WB[i].act_motion(data.S[j].col(k));
+      data.S_W.row(c.v_index + k) = data.X_WB[i].act_motion(data.S[j].col(k)).transpose();
     }
     data.I_composite[i] = model.spatial_inertia(i).transformed(data.X_WB[i]);
   }
@@ -30,28 +61,23 @@ const MatX& crba(const Model& model, Data& data, const VecX& q) {
     if (c.parent != 0) data.I_composite[c.parent] += data.I_composite[c.child];
   }
 
-  // Columns: F = I_c J for each joint, then the entries with its ancestors (and itself).
+  // Upper triangle by columns: F = I_c S_i, then its products with the ancestors' S (and the
+  // joint's own). Joints that are not ancestors of one another have M = 0 there.
   if (!data.all_dofs_related) data.M.setZero();
   for (int j = 0; j < nj; ++j) {
     const auto& c = joints[j];
-    if (c.nv == 0) continue;
     const SpatialInertia& Ic = data.I_composite[c.child];
     for (int k = 0; k < c.nv; ++k) {
-      data.F_W.col(c.v_index + k) = Ic * Vec6(data.J_W.col(c.v_index + k));
-    }
-    const auto& ranges = data.support_ranges[j];
-    for (std::size_t r = 0; r < ranges.size(); ++r) {
-      const auto [start, size] = ranges[r];
-      auto block = data.M.block(start, c.v_index, size, c.nv);
-      block.noalias() =
-          data.J_W.middleCols(start, size).transpose() * data.F_W.middleCols(c.v_index, c.nv);
-      // Mirror into the lower triangle, leaving out the joint's own (symmetric) block.
-      const int mirrored = r + 1 == ranges.size() ? size - c.nv : size;
-      if (mirrored > 0) {
-        data.M.block(c.v_index, start, c.nv, mirrored) = block.topRows(mirrored).transpose();
+      const int col = c.v_index + k;
+      const Vec6 F = Ic * Vec6(data.S_W.row(col).transpose());
+      for (const auto& [start, size] : data.support_ranges[j]) {
+        // Only rows up to this column (the joint's own later columns come with them).
+        const int rows = std::min(size, col + 1 - start);
+        if (rows > 0) column_entries(data.S_W, start, rows, F, &data.M(start, col));
       }
     }
   }
+  mirror_upper(data.M);
   return data.M;
 }
 

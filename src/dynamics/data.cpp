@@ -23,8 +23,7 @@ Data::Data(const Model& model) {
   Dinv.assign(nj, Mat6::Zero());
   u.assign(nj, Vec6::Zero());
   I_composite.assign(nb, SpatialInertia());
-  J_W = MatX::Zero(6, nv);
-  F_W = MatX::Zero(6, nv);
+  S_W = MatX::Zero(nv, 6);
   tau = VecX::Zero(nv);
   vdot = VecX::Zero(nv);
   nle = VecX::Zero(nv);

@@ -1,6 +1,7 @@
 #include "momenta/dynamics/rnea.hpp"
 
 #include "joint_kernels.hpp"
+#include "scalar_kernels.hpp"
 
 namespace momenta::dynamics {
 
@@ -12,7 +13,9 @@ const VecX& rnea(const Model& model, Data& data, const VecX& q, const VecX& v, c
   const Vec6 a_base = spatial(Vec3::Zero(), -model.gravity());
   const bool has_fext = !f_ext.empty();
 
-  // Forward pass: velocities, accelerations and the net force each body needs.
+  // Forward pass: velocities, accelerations and the net force each body needs:
+  // V_i = ⁱX_λ V_λ + S v̄,  A_i = ⁱX_λ A_λ + S v̇ + V_i × S v̄ + Ṡ v̄,
+  // F_i = I_i A_i + V_i ×* I_i V_i − f_ext,i.
   for (int j = 0; j < nj; ++j) {
     const auto& c = joints[j];
     const int i = c.child;
@@ -21,36 +24,53 @@ const VecX& rnea(const Model& model, Data& data, const VecX& q, const VecX& v, c
     const double* vj = v.data() + c.v_index;
     Transform& X = data.X_PB[i];
     detail::joint_position(c, qj, X, data.S[j]);
-    const Vec6 vJ = detail::joint_velocity(c, data.S[j], vj);
-    Vec6& V = data.V_WB_B[i];
-    Vec6& A = data.A_gf[i];
+    double* V = data.V_WB_B[i].data();
+    double* A = data.A_gf[i].data();
     if (p == 0) {
-      V = vJ;
-      A = X.act_motion_inverse(a_base);
+      for (int r = 0; r < 6; ++r) V[r] = 0.0;
+      detail::motion_inverse(X, a_base.data(), A);
     } else {
-      V = X.act_motion_inverse(data.V_WB_B[p]) + vJ;
-      A = X.act_motion_inverse(data.A_gf[p]) + cross_motion(V, vJ);
+      detail::motion_inverse(X, data.V_WB_B[p].data(), V);
+      detail::motion_inverse(X, data.A_gf[p].data(), A);
     }
-    A += detail::joint_velocity(c, data.S[j], vdot.data() + c.v_index);
-    Vec6 cJ;
-    if (detail::joint_bias(c, qj, vj, cJ)) A += cJ;
+    if (c.S_basis >= 0) {
+      // V ×m (S v̄) before adding S v̄ to V: (V_λ + S v̄) × S v̄ = V_λ × S v̄.
+      detail::add_cross_motion_basis(V, c.S_basis, vj[0], A);
+      V[c.S_basis] += vj[0];
+      A[c.S_basis] += vdot[c.v_index];
+    } else {
+      const Vec6 vJ = detail::joint_velocity(c, data.S[j], vj);
+      detail::add_cross_motion(V, vJ.data(), A);
+      for (int r = 0; r < 6; ++r) V[r] += vJ[r];
+      const Vec6 aJ = detail::joint_velocity(c, data.S[j], vdot.data() + c.v_index);
+      for (int r = 0; r < 6; ++r) A[r] += aJ[r];
+      Vec6 cJ;
+      if (detail::joint_bias(c, qj, vj, cJ)) {
+        for (int r = 0; r < 6; ++r) A[r] += cJ[r];
+      }
+    }
     const SpatialInertia& I = model.spatial_inertia(i);
-    Vec6& F = data.F_B[i];
-    F = I * A + cross_force(V, I * V);
-    if (has_fext) F -= f_ext[i];
+    double IV[6];
+    double* F = data.F_B[i].data();
+    detail::inertia_times(I, V, IV);
+    detail::inertia_times(I, A, F);
+    detail::add_cross_force(V, IV, F);
+    if (has_fext) {
+      for (int r = 0; r < 6; ++r) F[r] -= f_ext[i][r];
+    }
   }
 
   // Backward pass: project onto the joint axes and pass the rest to the parent.
   for (int j = nj - 1; j >= 0; --j) {
     const auto& c = joints[j];
     const int i = c.child;
-    const Vec6& F = data.F_B[i];
-    if (c.nv == 1) {
-      data.tau[c.v_index] = c.S_basis >= 0 ? F[c.S_basis] : data.S[j].col(0).dot(F);
+    const double* F = data.F_B[i].data();
+    if (c.S_basis >= 0) {
+      data.tau[c.v_index] = F[c.S_basis];
     } else {
-      for (int k = 0; k < c.nv; ++k) data.tau[c.v_index + k] = data.S[j].col(k).dot(F);
+      for (int k = 0; k < c.nv; ++k) data.tau[c.v_index + k] = data.S[j].col(k).dot(data.F_B[i]);
     }
-    if (c.parent != 0) data.F_B[c.parent] += data.X_PB[i].act_force(F);
+    if (c.parent != 0) detail::add_force(data.X_PB[i], F, data.F_B[c.parent].data());
   }
   return data.tau;
 }

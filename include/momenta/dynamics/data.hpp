@@ -56,8 +56,9 @@ struct Data {
 
   // --- Workspace of crba -----------------------------------------------------------------------
   std::vector<SpatialInertia> I_composite;  ///< Composite inertia of B's subtree, in W about Wo.
-  MatX J_W;  ///< 6 × nv: every joint's motion subspace in W about Wo (crba, frame_jacobian).
-  MatX F_W;  ///< 6 × nv: composite inertia times J_W per joint (crba).
+  /// nv × 6: row k is velocity coordinate k's motion-subspace column in W about Wo, transposed
+  /// (so the products of crba run along contiguous memory).
+  MatX S_W;
   /// Per joint: the velocity-coordinate ranges [start, start + size) of the joint and all its
   /// ancestors, merged into contiguous runs (one run for a serial chain). Fixed by the model.
   std::vector<std::vector<std::pair<int, int>>> support_ranges;

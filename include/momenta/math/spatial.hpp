@@ -34,6 +34,27 @@ inline Vec6 spatial(const Vec3& a, const Vec3& b) {
   return x;
 }
 
+namespace spatial_detail {
+// Element-wise 3-vector kernels. Written out in scalars so that chains of them stay in registers
+// (Eigen's mix of packet and scalar code on 3-vectors stalls on store forwarding).
+inline void mul(const Mat3& R, double x, double y, double z, double* out) {
+  out[0] = R(0, 0) * x + R(0, 1) * y + R(0, 2) * z;
+  out[1] = R(1, 0) * x + R(1, 1) * y + R(1, 2) * z;
+  out[2] = R(2, 0) * x + R(2, 1) * y + R(2, 2) * z;
+}
+inline void mul_transpose(const Mat3& R, double x, double y, double z, double* out) {
+  out[0] = R(0, 0) * x + R(1, 0) * y + R(2, 0) * z;
+  out[1] = R(0, 1) * x + R(1, 1) * y + R(2, 1) * z;
+  out[2] = R(0, 2) * x + R(1, 2) * y + R(2, 2) * z;
+}
+// out = a × b.
+inline void cross(double ax, double ay, double az, double bx, double by, double bz, double* out) {
+  out[0] = ay * bz - az * by;
+  out[1] = az * bx - ax * bz;
+  out[2] = ax * by - ay * bx;
+}
+}  // namespace spatial_detail
+
 /// Rigid transform X_AB: the pose of frame B in frame A, R = R_AB, p = p_AoBo_A (m).
 struct Transform {
   Mat3 R = Mat3::Identity();
@@ -62,30 +83,46 @@ struct Transform {
 
   /// Motion vector expressed in B (about Bo) → expressed in A (about Ao): ᴬX_B m.
   Vec6 act_motion(const Vec6& m_B) const {
+    using namespace spatial_detail;
     Vec6 out;
-    out.head<3>() = R * m_B.head<3>();
-    out.tail<3>() = R * m_B.tail<3>() + p.cross(out.head<3>());
+    double w[3], v[3], pxw[3];
+    mul(R, m_B[0], m_B[1], m_B[2], w);
+    mul(R, m_B[3], m_B[4], m_B[5], v);
+    cross(p[0], p[1], p[2], w[0], w[1], w[2], pxw);
+    out << w[0], w[1], w[2], v[0] + pxw[0], v[1] + pxw[1], v[2] + pxw[2];
     return out;
   }
   /// Motion vector expressed in A (about Ao) → expressed in B (about Bo): ᴮX_A m.
   Vec6 act_motion_inverse(const Vec6& m_A) const {
+    using namespace spatial_detail;
     Vec6 out;
-    out.head<3>() = R.transpose() * m_A.head<3>();
-    out.tail<3>() = R.transpose() * (m_A.tail<3>() - p.cross(m_A.head<3>()));
+    double w[3], v[3], pxw[3];
+    cross(p[0], p[1], p[2], m_A[0], m_A[1], m_A[2], pxw);
+    mul_transpose(R, m_A[0], m_A[1], m_A[2], w);
+    mul_transpose(R, m_A[3] - pxw[0], m_A[4] - pxw[1], m_A[5] - pxw[2], v);
+    out << w[0], w[1], w[2], v[0], v[1], v[2];
     return out;
   }
   /// Force vector expressed in B (about Bo) → expressed in A (about Ao): ᴬX_B* f.
   Vec6 act_force(const Vec6& f_B) const {
+    using namespace spatial_detail;
     Vec6 out;
-    out.tail<3>() = R * f_B.tail<3>();
-    out.head<3>() = R * f_B.head<3>() + p.cross(out.tail<3>());
+    double n[3], f[3], pxf[3];
+    mul(R, f_B[3], f_B[4], f_B[5], f);
+    mul(R, f_B[0], f_B[1], f_B[2], n);
+    cross(p[0], p[1], p[2], f[0], f[1], f[2], pxf);
+    out << n[0] + pxf[0], n[1] + pxf[1], n[2] + pxf[2], f[0], f[1], f[2];
     return out;
   }
   /// Force vector expressed in A (about Ao) → expressed in B (about Bo): ᴮX_A* f.
   Vec6 act_force_inverse(const Vec6& f_A) const {
+    using namespace spatial_detail;
     Vec6 out;
-    out.tail<3>() = R.transpose() * f_A.tail<3>();
-    out.head<3>() = R.transpose() * (f_A.head<3>() - p.cross(f_A.tail<3>()));
+    double n[3], f[3], pxf[3];
+    cross(p[0], p[1], p[2], f_A[3], f_A[4], f_A[5], pxf);
+    mul_transpose(R, f_A[3], f_A[4], f_A[5], f);
+    mul_transpose(R, f_A[0] - pxf[0], f_A[1] - pxf[1], f_A[2] - pxf[2], n);
+    out << n[0], n[1], n[2], f[0], f[1], f[2];
     return out;
   }
 
@@ -115,17 +152,25 @@ struct Transform {
 
 /// Spatial cross product for motion: v ×m, Featherstone's crm(v) m.
 inline Vec6 cross_motion(const Vec6& v, const Vec6& m) {
+  using spatial_detail::cross;
+  double a[3], b[3], c[3];
+  cross(v[0], v[1], v[2], m[0], m[1], m[2], a);
+  cross(v[0], v[1], v[2], m[3], m[4], m[5], b);
+  cross(v[3], v[4], v[5], m[0], m[1], m[2], c);
   Vec6 out;
-  out.head<3>() = v.head<3>().cross(m.head<3>());
-  out.tail<3>() = v.head<3>().cross(m.tail<3>()) + v.tail<3>().cross(m.head<3>());
+  out << a[0], a[1], a[2], b[0] + c[0], b[1] + c[1], b[2] + c[2];
   return out;
 }
 
 /// Spatial cross product for force: v ×* f, Featherstone's crf(v) f = −crm(v)ᵀ f.
 inline Vec6 cross_force(const Vec6& v, const Vec6& f) {
+  using spatial_detail::cross;
+  double a[3], b[3], c[3];
+  cross(v[0], v[1], v[2], f[0], f[1], f[2], a);
+  cross(v[3], v[4], v[5], f[3], f[4], f[5], b);
+  cross(v[0], v[1], v[2], f[3], f[4], f[5], c);
   Vec6 out;
-  out.head<3>() = v.head<3>().cross(f.head<3>()) + v.tail<3>().cross(f.tail<3>());
-  out.tail<3>() = v.head<3>().cross(f.tail<3>());
+  out << a[0] + b[0], a[1] + b[1], a[2] + b[2], c[0], c[1], c[2];
   return out;
 }
 
@@ -168,9 +213,14 @@ struct SpatialInertia {
   /// Momentum of the body moving with spatial velocity V (same frame): I V = [I_O ω + h × v;
   /// m v − h × ω].
   Vec6 operator*(const Vec6& V) const {
+    using namespace spatial_detail;
+    double Iw[3], hxv[3], hxw[3];
+    mul(I_O, V[0], V[1], V[2], Iw);
+    cross(h[0], h[1], h[2], V[3], V[4], V[5], hxv);
+    cross(h[0], h[1], h[2], V[0], V[1], V[2], hxw);
     Vec6 out;
-    out.head<3>() = I_O * V.head<3>() + h.cross(V.tail<3>());
-    out.tail<3>() = mass * V.tail<3>() - h.cross(V.head<3>());
+    out << Iw[0] + hxv[0], Iw[1] + hxv[1], Iw[2] + hxv[2], mass * V[3] - hxw[0],
+        mass * V[4] - hxw[1], mass * V[5] - hxw[2];
     return out;
   }
 
@@ -192,11 +242,15 @@ struct SpatialInertia {
   /// ᴬX_B* I ᴮX_A.
   SpatialInertia transformed(const Transform& X_AB) const {
     const Vec3 h_A = X_AB.R * h;
-    // Rotate about Bo, then shift the reference point to Ao (parallel axes for the first moment).
-    const Mat3 I_Bo_A = X_AB.R * I_O * X_AB.R.transpose();
     const Vec3& p = X_AB.p;
-    const Mat3 shift = -skew(p) * skew(h_A) - skew(h_A + mass * p) * skew(p);
-    return {mass, h_A + mass * p, I_Bo_A + shift};
+    // Rotate about Bo, then move the reference point to Ao: with [a]×[b]× = b aᵀ − (a·b) 1,
+    // I_Ao = R I_Bo Rᵀ − [p]×[h_A]× − [h_A + m p]×[p]×
+    //      = R I_Bo Rᵀ − h_A pᵀ − p (h_A + m p)ᵀ + (2 p·h_A + m p·p) 1.
+    const Vec3 h_new = h_A + mass * p;
+    Mat3 I_A = X_AB.R * I_O * X_AB.R.transpose();
+    I_A.noalias() -= h_A * p.transpose() + p * h_new.transpose();
+    I_A.diagonal().array() += p.dot(h_A) + p.dot(h_new);
+    return {mass, h_new, I_A};
   }
 
   SpatialInertia& operator+=(const SpatialInertia& other) {
