@@ -90,6 +90,57 @@ Real jacobi_amplitude(const AgmTable<Real>& table, Real u) {
   return phi;
 }
 
+/// The descending Landen sequence for sn, cn, dn without transcendental functions per level
+/// (DLMF 22.7.1–3): k_{i} = (1 − k'_{i−1})/(1 + k'_{i−1}), formed as k²_{i−1}/(1 + k'_{i−1})², and
+/// k'_i = 2√k'_{i−1}/(1 + k'_{i−1}), until m_N = k_N² < 1e-8, where sn ≈ sin z − (m/4)(z − sin z
+/// cos z) cos z to O(m²) (A&S 16.13). Then, level by level back up, with t = k_i sn²:
+///   sn ← (1 + k_i) sn/(1 + t),  cn ← cn dn/(1 + t),  dn ← (1 − t)/(1 + t),
+/// the last being DLMF 22.7.3 rewritten with dn² = 1 − k_i² sn² so that it has no cancellation.
+template <class Real>
+struct LandenTable {
+  static constexpr int kMaxLevels = 24;
+  int levels = 0;
+  Real scale = 1;                    ///< z_N = scale · u, scale = 1/∏(1 + k_i)
+  Real m_bottom = 0;                 ///< k_N²
+  std::array<Real, kMaxLevels> k{};  ///< k_1 .. k_N (index i − 1)
+};
+
+template <class Real>
+LandenTable<Real> make_landen_table(Real m, Real mc) {
+  LandenTable<Real> table;
+  Real k2 = m, kc = std::sqrt(mc);
+  while (k2 >= Real(1e-8) && table.levels < LandenTable<Real>::kMaxLevels) {
+    const Real k_next = k2 / ((1 + kc) * (1 + kc));
+    kc = 2 * std::sqrt(kc) / (1 + kc);
+    k2 = k_next * k_next;
+    table.k[table.levels++] = k_next;
+    table.scale /= 1 + k_next;
+  }
+  table.m_bottom = k2;
+  return table;
+}
+
+/// sn, cn, dn at u (|u| <= K for the stated accuracy: absolute errors of a few ulps); dn is
+/// returned as √(cn² + mc sn²) so that it keeps its relative precision where it is small.
+template <class Real, class Table>
+void jacobi_sn_cn_dn(const Table& table, Real mc, Real u, Real& sn, Real& cn, Real& dn) {
+  const Real z = table.scale * u;
+  const Real s = std::sin(z), c = std::cos(z);
+  const Real correction = table.m_bottom / 4 * (z - s * c);
+  sn = s - correction * c;
+  cn = c + correction * s;
+  dn = 1 - table.m_bottom / 2 * s * s;
+  for (int i = table.levels; i > 0; --i) {
+    const Real k = table.k[i - 1];
+    const Real t = k * sn * sn;
+    const Real inverse = 1 / (1 + t);
+    sn = (1 + k) * sn * inverse;
+    cn = cn * dn * inverse;
+    dn = (1 - t) * inverse;
+  }
+  dn = std::sqrt(cn * cn + mc * sn * sn);
+}
+
 /// Δ(φ)² = 1 − m sin²φ, formed as cos²φ + mc sin²φ so that it keeps its digits near m = 1.
 template <class Real>
 Real delta_squared(Real s, Real c, Real mc) {

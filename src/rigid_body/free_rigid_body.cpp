@@ -177,7 +177,18 @@ void FreeRigidBodySolution::setup_asymmetric(const Eigen::Matrix<long double, 3,
                                              const Eigen::Matrix<long double, 3, 1>& w_P,
                                              const Mat3& R_WB0) {
   // Which side of the separatrix: S = H² − 2T I2, formed without its ω2 term (which cancels).
-  const LD S = I[0] * (I[0] - I[1]) * w_P[0] * w_P[0] + I[2] * (I[2] - I[1]) * w_P[2] * w_P[2];
+  // Its two terms nearly cancel near the separatrix (to 4e-12 of 1e-2 for 1 − m = 1e-12), so
+  // they are summed in binary128 where the compiler has it: S then carries the relative error
+  // of its inputs only, and 1 − m (hence the period) keeps long-double precision.
+#ifdef __SIZEOF_FLOAT128__
+  using Wide = __float128;
+#else
+  using Wide = long double;
+#endif
+  const auto term = [&](int i) {
+    return Wide(I[i]) * (Wide(I[i]) - Wide(I[1])) * Wide(w_P[i]) * Wide(w_P[i]);
+  };
+  const LD S = static_cast<LD>(term(0) + term(2));
   // The canonical frame C: z along the principal axis whose ω component never changes sign
   // (3 above the separatrix, 1 below), x along the other extreme axis, signs chosen so that
   // ω_z(0) > 0 and ω_x(0) >= 0, y completing a right-handed frame.
@@ -257,12 +268,11 @@ void FreeRigidBodySolution::setup_asymmetric(const Eigen::Matrix<long double, 3,
     psi_offset_ = beta0 - coefficient * std::atan(s * std::tanh(u0_));
   } else {
     const auto table = detail::make_agm_table<LD>(m, mc);
-    agm_steps_ = table.steps;
-    agm_scale_ = static_cast<double>(table.scale);
-    for (int i = 0; i < table.steps; ++i) {
-      agm_ratio_[i] = static_cast<double>(table.ratio[i]);
-      agm_complement_[i] = static_cast<double>(table.complement[i]);
-    }
+    const auto landen = detail::make_landen_table<LD>(m, mc);
+    landen_.levels = landen.levels;
+    landen_.scale = static_cast<double>(landen.scale);
+    landen_.m_bottom = static_cast<double>(landen.m_bottom);
+    for (int i = 0; i < landen.levels; ++i) landen_.k[i] = static_cast<double>(landen.k[i]);
     const LD K = table.quarter_period;
     two_k_ = 2 * K;
     quarter_period_ = K;
@@ -360,10 +370,7 @@ void FreeRigidBodySolution::evaluate(long double t, Mat3& R_WB, Vec3& w_WB_B) co
     // G(u) = G(u_r) + 2jG(K), sn and cn flip sign with j.
     const LD j = std::nearbyint(u / two_k_);
     const LD u_r = u - j * two_k_;
-    const double phi = amplitude(static_cast<double>(u_r));
-    sn = std::sin(phi);
-    cn = std::cos(phi);
-    dn = std::sqrt(cn * cn + mc_ * sn * sn);
+    detail::jacobi_sn_cn_dn(landen_, mc_, static_cast<double>(u_r), sn, cn, dn);
     // G(u_r) from v = K − |u_r| (see the constructor).
     const double v = std::max(0.0, static_cast<double>(quarter_period_ - std::abs(u_r)));
     const double s_v = cn / dn, c_v = sqrt_mc_ * std::abs(sn) / dn;
@@ -389,15 +396,6 @@ void FreeRigidBodySolution::evaluate(long double t, Mat3& R_WB, Vec3& w_WB_B) co
   R_WA_psi.col(1) = -s * R_WA_.col(0) + c * R_WA_.col(1);
   R_WA_psi.col(2) = R_WA_.col(2);
   R_WB.noalias() = R_WA_psi * (R_h.transpose() * R_CB_);
-}
-
-double FreeRigidBodySolution::amplitude(double u) const {
-  // Descending Landen steps from φ_N = 2^N a_N u (A&S 16.4.3).
-  double phi = agm_scale_ * u;
-  for (int k = agm_steps_; k > 0; --k) {
-    phi = detail::landen_descent_step(phi, agm_ratio_[k - 1], agm_complement_[k - 1]);
-  }
-  return phi;
 }
 
 double FreeRigidBodySolution::angular_velocity_period() const {

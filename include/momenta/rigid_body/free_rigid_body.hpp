@@ -91,7 +91,6 @@ class FreeRigidBodySolution {
  private:
   void setup_asymmetric(const Eigen::Matrix<long double, 3, 1>& moments,
                         const Eigen::Matrix<long double, 3, 1>& w_P, const Mat3& R_WB0);
-  double amplitude(double u) const;  // am(u|m) for |u| <= K
 
   FreeRotationRegime regime_ = FreeRotationRegime::kSteady;
   Vec3 moments_;
@@ -118,10 +117,11 @@ class FreeRigidBodySolution {
   long double quarter_period_ = 0;
   long double lambda_ = 0, u0_ = 0, two_k_ = 0;  // u = λ t + u0; period of u for dn is 2K
   long double psi_rate_ = 0, psi_per_period_ = 0, psi_offset_ = 0;
-  int agm_steps_ = 0;
-  double agm_scale_ = 1;
-  double agm_ratio_[24] = {};
-  double agm_complement_[24] = {};
+  struct Landen {  // descending Landen sequence for sn, cn, dn (src/rigid_body/elliptic_impl.hpp)
+    int levels = 0;
+    double scale = 1, m_bottom = 0;
+    double k[24] = {};
+  } landen_;
 };
 
 /// The state at time t of a torque-free body that starts at (R_WB0, w_WB_B0): the exact motion
