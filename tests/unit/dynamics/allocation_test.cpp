@@ -1,0 +1,76 @@
+// The algorithms must not allocate once Data exists: counts global operator new around them, on
+// a random tree with every joint type.
+#include <cstdlib>
+#include <new>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "momenta/dynamics/aba.hpp"
+#include "momenta/dynamics/crba.hpp"
+#include "momenta/dynamics/energy.hpp"
+#include "momenta/dynamics/hybrid_dynamics.hpp"
+#include "momenta/dynamics/kinematics.hpp"
+#include "momenta/dynamics/momentum.hpp"
+#include "momenta/dynamics/point_kinematics.hpp"
+#include "momenta/dynamics/reactions.hpp"
+#include "momenta/dynamics/rnea.hpp"
+#include "momenta_test/multibody_models.hpp"
+
+namespace {
+thread_local long allocations = 0;
+}  // namespace
+
+void* operator new(std::size_t size) {
+  ++allocations;
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace momenta::dynamics {
+namespace {
+
+TEST(DynamicsAllocation, AlgorithmsDoNotAllocate) {
+  const Model m = test::random_tree(16, 9);
+  Data data(m);
+  std::mt19937 rng(1);
+  const VecX q = test::random_configuration(m, rng);
+  const VecX v = test::random_vector(m.nv(), rng);
+  const VecX a = test::random_vector(m.nv(), rng);
+  std::vector<Vec6> f_ext(m.num_bodies(), Vec6::Ones());
+  std::vector<char> mask(m.num_joints(), 0);
+  mask[1] = mask[4] = 1;
+  MatX J(6, m.nv());
+  VecX q_out(m.nq()), d(m.nv()), qdot(m.nq());
+  hybrid_dynamics(m, data, q, v, a, a);  // first call sizes its thread-local mask
+  const long before = allocations;
+  forward_kinematics(m, data, q);
+  forward_kinematics(m, data, q, v);
+  forward_kinematics(m, data, q, v, a);
+  rnea(m, data, q, v, a);
+  rnea(m, data, q, v, a, f_ext);
+  nonlinear_effects(m, data, q, v);
+  generalized_gravity(m, data, q);
+  crba(m, data, q);
+  aba(m, data, q, v, a);
+  aba(m, data, q, v, a, f_ext);
+  hybrid_dynamics(m, data, mask, q, v, a, a, f_ext);
+  hybrid_dynamics(m, data, q, v, a, a);
+  joint_reactions(m, data, q, v, a, f_ext);
+  joint_reaction(m, data, 3, ReactionFrame::world);
+  kinetic_energy(m, data, q, v);
+  potential_energy(m, data, q);
+  momentum(m, data, q, v);
+  center_of_mass(m, data, q);
+  point_kinematics(m, data, q, v, a, 5, Vec3(1, 2, 3));
+  frame_jacobian(m, data, 5, Vec3(1, 2, 3), J);
+  model::integrate(m, q, v, 0.1, q_out);
+  model::difference(m, q, q_out, d);
+  model::configuration_rate(m, q, v, qdot);
+  EXPECT_EQ(allocations - before, 0);
+}
+
+}  // namespace
+}  // namespace momenta::dynamics

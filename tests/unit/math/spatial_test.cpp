@@ -1,0 +1,67 @@
+// Spatial algebra: the inline transform actions and cross products against their 6×6 matrices
+// (Featherstone 2008, eqs. 2.24–2.32), duality of motion and force, and spatial inertia.
+#include "momenta/math/spatial.hpp"
+
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "momenta_test/tolerance.hpp"
+
+namespace momenta {
+namespace {
+
+Transform some_transform() {
+  return {rotation_from_axis_angle(Vec3(1, -2, 0.5), 0.9), Vec3(0.3, -0.7, 1.1)};
+}
+
+TEST(Spatial, TransformActionsMatchMatrices) {
+  const Transform X = some_transform();
+  const Vec6 m = (Vec6() << 0.1, -0.2, 0.3, 1.0, 2.0, -3.0).finished();
+  // Round-off of O(1) products: 1e-15.
+  EXPECT_MATRIX_NEAR(X.act_motion(m), X.motion_matrix() * m, 1e-15);
+  EXPECT_MATRIX_NEAR(X.act_force(m), X.force_matrix() * m, 1e-15);
+  EXPECT_MATRIX_NEAR(X.act_motion_inverse(m), X.inverse().motion_matrix() * m, 1e-15);
+  EXPECT_MATRIX_NEAR(X.act_force_inverse(m), X.inverse().force_matrix() * m, 1e-15);
+  // ᴬX_B* = (ᴮX_A)ᵀ, and the power f·m does not depend on the frame.
+  EXPECT_MATRIX_NEAR(X.force_matrix(), X.inverse().motion_matrix().transpose(), 1e-15);
+  const Vec6 f = (Vec6() << 2.0, 0.5, -1.0, 0.3, 0.2, 0.1).finished();
+  EXPECT_NEAR(X.act_force(f).dot(X.act_motion(m)), f.dot(m), 1e-14);
+  // Composition and inverse.
+  const Transform Y(rotation_from_axis_angle(Vec3(0, 1, 1), -0.4), Vec3(-1, 0.2, 0.3));
+  EXPECT_MATRIX_NEAR((X * Y).motion_matrix(), X.motion_matrix() * Y.motion_matrix(), 1e-14);
+  EXPECT_TRUE((X * X.inverse()).isApprox(Transform::identity()));
+  EXPECT_MATRIX_NEAR(X.apply(Vec3(1, 2, 3)), X.R * Vec3(1, 2, 3) + X.p, 1e-15);
+}
+
+TEST(Spatial, CrossProducts) {
+  const Vec6 v = (Vec6() << 0.4, -1.0, 0.7, 2.0, 0.1, -0.5).finished();
+  const Vec6 m = (Vec6() << 1.0, 2.0, 3.0, -1.0, 0.5, 0.25).finished();
+  EXPECT_MATRIX_NEAR(cross_motion(v, m), crm(v) * m, 1e-15);
+  EXPECT_MATRIX_NEAR(cross_force(v, m), crf(v) * m, 1e-15);
+  EXPECT_MATRIX_NEAR(crf(v), -crm(v).transpose(), 0.0);
+  EXPECT_MATRIX_NEAR(cross_motion(v, v), Vec6::Zero(), 0.0);
+}
+
+TEST(Spatial, InertiaFromMassPropertiesAndTransformed) {
+  const Mat3 R = rotation_from_axis_angle(Vec3(1, 1, 0), 0.6);
+  const inertia::MassProperties mp(2.5, Vec3(0.1, -0.2, 0.3),
+                                   R * Vec3(0.02, 0.03, 0.04).asDiagonal() * R.transpose());
+  const SpatialInertia I = SpatialInertia::from_mass_properties(mp);
+  EXPECT_MATRIX_NEAR(I.I_O, mp.inertia_about(Vec3::Zero()), 1e-15);
+  EXPECT_MATRIX_NEAR(I.center_of_mass(), mp.center_of_mass(), 1e-15);
+  const Vec6 V = (Vec6() << 0.4, -1.0, 0.7, 2.0, 0.1, -0.5).finished();
+  EXPECT_MATRIX_NEAR(I * V, I.matrix() * V, 1e-15);
+  // In A: ᴬX_B* I ᴮX_A (Featherstone eq. 2.66), against the mass properties moved to A.
+  const Transform X = some_transform();
+  const SpatialInertia IA = I.transformed(X);
+  const Mat6 expected = X.force_matrix() * I.matrix() * X.inverse().motion_matrix();
+  EXPECT_MATRIX_NEAR(IA.matrix(), expected, 1e-14);
+  const inertia::MassProperties moved = mp.transformed(X.R, X.p);
+  EXPECT_MATRIX_NEAR(IA.I_O, moved.inertia_about(Vec3::Zero()), 1e-14);
+  // Kinetic energy is frame independent.
+  EXPECT_NEAR(IA.kinetic_energy(X.act_motion(V)), I.kinetic_energy(V), 1e-14);
+}
+
+}  // namespace
+}  // namespace momenta
