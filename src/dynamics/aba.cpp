@@ -3,6 +3,7 @@
 #include <Eigen/Cholesky>
 
 #include "joint_kernels.hpp"
+#include "scalar_kernels.hpp"
 #include "spatial_inertia_ops.hpp"
 
 namespace momenta::dynamics {
@@ -29,21 +30,35 @@ const VecX& aba(const Model& model, Data& data, const VecX& q, const VecX& v, co
     const double* vj = v.data() + c.v_index;
     Transform& X = data.X_PB[i];
     detail::joint_position(c, qj, X, data.S[j]);
-    const Vec6 vJ = detail::joint_velocity(c, data.S[j], vj);
-    Vec6& V = data.V_WB_B[i];
+    double* V = data.V_WB_B[i].data();
+    double* cB = data.c_B[i].data();
     if (p == 0) {
-      V = vJ;
-      data.c_B[i].setZero();
+      for (int r = 0; r < 6; ++r) V[r] = 0.0;
     } else {
-      V = X.act_motion_inverse(data.V_WB_B[p]) + vJ;
-      data.c_B[i] = cross_motion(V, vJ);
+      detail::motion_inverse(X, data.V_WB_B[p].data(), V);
     }
-    Vec6 cJ;
-    if (detail::joint_bias(c, qj, vj, cJ)) data.c_B[i] += cJ;
+    for (int r = 0; r < 6; ++r) cB[r] = 0.0;
+    if (c.S_basis >= 0) {
+      // c = (V_λ + S v̄) × S v̄ = V_λ × S v̄, with V_λ in the child frame.
+      detail::add_cross_motion_basis(V, c.S_basis, vj[0], cB);
+      V[c.S_basis] += vj[0];
+    } else {
+      const Vec6 vJ = detail::joint_velocity(c, data.S[j], vj);
+      detail::add_cross_motion(V, vJ.data(), cB);
+      for (int r = 0; r < 6; ++r) V[r] += vJ[r];
+      Vec6 cJ;
+      if (detail::joint_bias(c, qj, vj, cJ)) data.c_B[i] += cJ;
+    }
     const SpatialInertia& I = model.spatial_inertia(i);
     detail::set_inertia_matrix(I, data.IA[i]);
-    data.pA[i] = cross_force(V, I * V);
-    if (has_fext) data.pA[i] -= f_ext[i];
+    double IV[6];
+    detail::inertia_times(I, V, IV);
+    double* pA = data.pA[i].data();
+    for (int r = 0; r < 6; ++r) pA[r] = 0.0;
+    detail::add_cross_force(V, IV, pA);
+    if (has_fext) {
+      for (int r = 0; r < 6; ++r) pA[r] -= f_ext[i][r];
+    }
   }
 
   // Pass 2 (leaves to root): articulated inertias and bias forces.
@@ -69,11 +84,19 @@ const VecX& aba(const Model& model, Data& data, const VecX& q, const VecX& v, co
       data.u[j][0] = u_j;
       if (p == 0) continue;
       // Ia = IA − U D⁻¹ Uᵀ;  pa = pA + Ia c + U D⁻¹ u.
-      const Vec6 U_Dinv = U * D_inv;
-      IA.noalias() -= U_Dinv * U.transpose();
-      const Vec6 pa = pA + IA * data.c_B[i] + U_Dinv * u_j;
+      double Ud[6];
+      for (int r = 0; r < 6; ++r) Ud[r] = U[r] * D_inv;
+      for (int col = 0; col < 6; ++col) {
+        for (int r = 0; r < 6; ++r) IA(r, col) -= Ud[r] * U[col];
+      }
+      double pa[6];
+      const double* cB = data.c_B[i].data();
+      for (int r = 0; r < 6; ++r) pa[r] = pA[r] + Ud[r] * u_j;
+      for (int col = 0; col < 6; ++col) {
+        for (int r = 0; r < 6; ++r) pa[r] += IA(r, col) * cB[col];
+      }
       detail::add_transformed_inertia(data.X_PB[i], IA, data.IA[p]);
-      data.pA[p] += data.X_PB[i].act_force(pa);
+      detail::add_force(data.X_PB[i], pa, data.pA[p].data());
       continue;
     }
     Vec6 pa = pA;
@@ -107,9 +130,13 @@ const VecX& aba(const Model& model, Data& data, const VecX& q, const VecX& v, co
     const int i = c.child;
     const int p = c.parent;
     Vec6& a = data.A_gf[i];
-    a = data.X_PB[i].act_motion_inverse(p == 0 ? a_base : data.A_gf[p]) + data.c_B[i];
+    detail::motion_inverse(data.X_PB[i], p == 0 ? a_base.data() : data.A_gf[p].data(), a.data());
+    for (int r = 0; r < 6; ++r) a[r] += data.c_B[i][r];
     if (c.nv == 1) {
-      const double qdd = data.Dinv[j](0, 0) * (data.u[j][0] - data.U[j].col(0).dot(a));
+      const double* U = data.U[j].data();
+      double Ua = 0.0;
+      for (int r = 0; r < 6; ++r) Ua += U[r] * a[r];
+      const double qdd = data.Dinv[j](0, 0) * (data.u[j][0] - Ua);
       data.vdot[c.v_index] = qdd;
       if (c.S_basis >= 0) {
         a[c.S_basis] += qdd;

@@ -12,35 +12,68 @@ namespace momenta::dynamics::detail {
 inline void add_transformed_inertia(const Transform& X_PB, const Mat6& I_B, Mat6& I_P) {
   const Mat3& R = X_PB.R;
   const Vec3& p = X_PB.p;
-  const Mat3 RA = R * I_B.topLeftCorner<3, 3>();
-  const Mat3 RB = R * I_B.topRightCorner<3, 3>();
-  const Mat3 RD = R * I_B.bottomRightCorner<3, 3>();
-  Mat3 A, B, D;
-  A.noalias() = RA * R.transpose();
-  B.noalias() = RB * R.transpose();
-  D.noalias() = RD * R.transpose();
-  // B_P = B' + [p]× D' (column by column: p × D'_k).
-  Mat3 BP;
-  for (int k = 0; k < 3; ++k) BP.col(k) = B.col(k) + p.cross(D.col(k));
-  // A_P = A' + [p]× B'ᵀ − B_P [p]×, column k of the last term being −B_P (p × e_k).
-  Mat3 AP = A;
-  for (int k = 0; k < 3; ++k) AP.col(k) += p.cross(B.row(k).transpose());
-  AP.col(0) -= p.z() * BP.col(1) - p.y() * BP.col(2);
-  AP.col(1) -= p.x() * BP.col(2) - p.z() * BP.col(0);
-  AP.col(2) -= p.y() * BP.col(0) - p.x() * BP.col(1);
-  I_P.topLeftCorner<3, 3>() += AP;
-  I_P.topRightCorner<3, 3>() += BP;
-  I_P.bottomLeftCorner<3, 3>() += BP.transpose();
-  I_P.bottomRightCorner<3, 3>() += D;
+  // R times each block, then times Rᵀ (only the upper triangle of the symmetric A and D).
+  double RA[3][3], RB[3][3], RD[3][3];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      RA[i][j] = R(i, 0) * I_B(0, j) + R(i, 1) * I_B(1, j) + R(i, 2) * I_B(2, j);
+      RB[i][j] = R(i, 0) * I_B(0, 3 + j) + R(i, 1) * I_B(1, 3 + j) + R(i, 2) * I_B(2, 3 + j);
+      RD[i][j] = R(i, 0) * I_B(3, 3 + j) + R(i, 1) * I_B(4, 3 + j) + R(i, 2) * I_B(5, 3 + j);
+    }
+  }
+  double A[3][3], B[3][3], D[3][3];
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      B[i][j] = RB[i][0] * R(j, 0) + RB[i][1] * R(j, 1) + RB[i][2] * R(j, 2);
+      if (j < i) continue;
+      A[i][j] = A[j][i] = RA[i][0] * R(j, 0) + RA[i][1] * R(j, 1) + RA[i][2] * R(j, 2);
+      D[i][j] = D[j][i] = RD[i][0] * R(j, 0) + RD[i][1] * R(j, 1) + RD[i][2] * R(j, 2);
+    }
+  }
+  // B_P = B' + [p]× D': column k gains p × D'_k.
+  double BP[3][3];
+  for (int k = 0; k < 3; ++k) {
+    BP[0][k] = B[0][k] + p[1] * D[2][k] - p[2] * D[1][k];
+    BP[1][k] = B[1][k] + p[2] * D[0][k] - p[0] * D[2][k];
+    BP[2][k] = B[2][k] + p[0] * D[1][k] - p[1] * D[0][k];
+  }
+  // A_P(i, j) = A'(i, j) + (p × B'_{j,:})_i + (p × B_P{i,:})_j (upper triangle; A_P symmetric).
+  const auto cross_i = [&](const double* r, int i) {
+    const int a = (i + 1) % 3, b = (i + 2) % 3;
+    return p[a] * r[b] - p[b] * r[a];
+  };
+  for (int i = 0; i < 3; ++i) {
+    for (int j = i; j < 3; ++j) {
+      const double value = A[i][j] + cross_i(B[j], i) + cross_i(BP[i], j);
+      I_P(i, j) += value;
+      if (j != i) I_P(j, i) += value;
+    }
+  }
+  for (int i = 0; i < 3; ++i) {
+    for (int k = 0; k < 3; ++k) {
+      I_P(i, 3 + k) += BP[i][k];
+      I_P(3 + k, i) += BP[i][k];
+      I_P(3 + i, 3 + k) += D[i][k];
+    }
+  }
 }
 
 // The 6×6 matrix of a rigid-body spatial inertia, written into M.
 inline void set_inertia_matrix(const SpatialInertia& I, Mat6& M) {
-  M.topLeftCorner<3, 3>() = I.I_O;
-  const Mat3 hx = skew(I.h);
-  M.topRightCorner<3, 3>() = hx;
-  M.bottomLeftCorner<3, 3>() = hx.transpose();
-  M.bottomRightCorner<3, 3>() = I.mass * Mat3::Identity();
+  const Vec3& h = I.h;
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 3; ++i) {
+      M(i, j) = I.I_O(i, j);
+      M(3 + i, 3 + j) = i == j ? I.mass : 0.0;
+    }
+  }
+  // Upper right [h]×, lower left its transpose.
+  M(0, 3) = 0.0, M(0, 4) = -h[2], M(0, 5) = h[1];
+  M(1, 3) = h[2], M(1, 4) = 0.0, M(1, 5) = -h[0];
+  M(2, 3) = -h[1], M(2, 4) = h[0], M(2, 5) = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) M(3 + j, i) = M(i, 3 + j);
+  }
 }
 
 }  // namespace momenta::dynamics::detail

@@ -241,16 +241,31 @@ struct SpatialInertia {
   /// This inertia (expressed in B about Bo) expressed in A about Ao, B at pose X_AB in A:
   /// ᴬX_B* I ᴮX_A.
   SpatialInertia transformed(const Transform& X_AB) const {
-    const Vec3 h_A = X_AB.R * h;
-    const Vec3& p = X_AB.p;
     // Rotate about Bo, then move the reference point to Ao: with [a]×[b]× = b aᵀ − (a·b) 1,
     // I_Ao = R I_Bo Rᵀ − [p]×[h_A]× − [h_A + m p]×[p]×
-    //      = R I_Bo Rᵀ − h_A pᵀ − p (h_A + m p)ᵀ + (2 p·h_A + m p·p) 1.
-    const Vec3 h_new = h_A + mass * p;
-    Mat3 I_A = X_AB.R * I_O * X_AB.R.transpose();
-    I_A.noalias() -= h_A * p.transpose() + p * h_new.transpose();
-    I_A.diagonal().array() += p.dot(h_A) + p.dot(h_new);
-    return {mass, h_new, I_A};
+    //      = R I_Bo Rᵀ − (h_A pᵀ + p h_Aᵀ + m p pᵀ) + (2 p·h_A + m p·p) 1,
+    // a symmetric sum computed on its six distinct entries.
+    const Mat3& R = X_AB.R;
+    const Vec3& p = X_AB.p;
+    double hA[3];
+    spatial_detail::mul(R, h[0], h[1], h[2], hA);
+    Mat3 RI;  // R I_Bo
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        RI(i, j) = R(i, 0) * I_O(0, j) + R(i, 1) * I_O(1, j) + R(i, 2) * I_O(2, j);
+      }
+    }
+    const double diag = 2.0 * (p[0] * hA[0] + p[1] * hA[1] + p[2] * hA[2]) +
+                        mass * (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    Mat3 I_A;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = i; j < 3; ++j) {
+        const double rotated = RI(i, 0) * R(j, 0) + RI(i, 1) * R(j, 1) + RI(i, 2) * R(j, 2);
+        const double shift = hA[i] * p[j] + p[i] * hA[j] + mass * p[i] * p[j];
+        I_A(i, j) = I_A(j, i) = rotated - shift + (i == j ? diag : 0.0);
+      }
+    }
+    return {mass, Vec3(hA[0] + mass * p[0], hA[1] + mass * p[1], hA[2] + mass * p[2]), I_A};
   }
 
   SpatialInertia& operator+=(const SpatialInertia& other) {

@@ -32,7 +32,7 @@ TEST(Crba, DoublePendulumClosedForm) {
 TEST(Crba, SiblingBranchesDoNotCouple) {
   model::ModelBuilder b;
   b.add_body("trunk", inertia::MassProperties(1.0, Vec3(0, 0, -0.2), 0.01 * Mat3::Identity()));
-  b.add_body("left", inertia::MassProperties(1.0, Vec3(0, 0, -0.3), 0.01 * Mat3::Identity()));
+  b.add_body("left", inertia::MassProperties(1.0, Vec3(0.1, 0, -0.3), 0.01 * Mat3::Identity()));
   b.add_body("right", inertia::MassProperties(1.0, Vec3(0, 0, -0.3), 0.01 * Mat3::Identity()));
   b.add_joint(test::make_joint("j0", model::JointType::revolute, "world", "trunk"));
   b.add_joint(test::make_joint("j1", model::JointType::revolute, "trunk", "left", Vec3::UnitX()));
