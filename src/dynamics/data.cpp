@@ -30,6 +30,10 @@ Data::Data(const Model& model) {
   g = VecX::Zero(nv);
   M = MatX::Zero(nv, nv);
   scratch_nv = VecX::Zero(nv);
+  prescribed_mask.resize(nj);
+  for (std::size_t j = 0; j < nj; ++j) {
+    prescribed_mask[j] = model.joint(static_cast<int>(j)).is_prescribed() ? 1 : 0;
+  }
 
   // Motion subspaces in the child frame: the constant ones are set here once for all; the
   // q-dependent ones (universal, planar, free) are refreshed by every algorithm.

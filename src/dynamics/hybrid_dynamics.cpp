@@ -102,12 +102,7 @@ const VecX& hybrid_dynamics(const Model& model, Data& data, const std::vector<ch
 
 const VecX& hybrid_dynamics(const Model& model, Data& data, const VecX& q, const VecX& v,
                             const VecX& vdot_in, const VecX& tau_in, std::span<const Vec6> f_ext) {
-  // The mask is small and fixed per model; a thread_local copy avoids allocating per call.
-  thread_local std::vector<char> mask;
-  const auto nj = static_cast<std::size_t>(model.num_joints());
-  if (mask.size() != nj) mask.resize(nj);
-  for (std::size_t j = 0; j < nj; ++j) mask[j] = model.joint(static_cast<int>(j)).is_prescribed();
-  return hybrid_dynamics(model, data, mask, q, v, vdot_in, tau_in, f_ext);
+  return hybrid_dynamics(model, data, data.prescribed_mask, q, v, vdot_in, tau_in, f_ext);
 }
 
 std::vector<char> prescribed_joint_mask(const Model& model) {

@@ -73,6 +73,8 @@ struct Data {
 
   // --- Scratch sized nv for the convenience paths (not results) ------------------------------
   VecX scratch_nv;
+  /// The model's prescribed joints (num_joints() entries, 1 = prescribed), for hybrid_dynamics.
+  std::vector<char> prescribed_mask;
 };
 
 }  // namespace momenta::dynamics
