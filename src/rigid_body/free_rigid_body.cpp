@@ -21,10 +21,15 @@ Mat3 rotation_about(const Vec3& unit_axis, double angle) {
   return Eigen::AngleAxisd(angle, unit_axis).toRotationMatrix();
 }
 
-// The angle rate·t reduced to (−π, π], formed in long double so that large t keeps its digits.
-double reduced_angle(LD rate, LD t) {
-  return static_cast<double>(std::remainder(rate * t, kTwoPiL));
+// x reduced to [−π, π] in long double: one rounding of k·2π (ε_ld |x|, 1e-16 at |x| = 1e3 rad),
+// as remainderl but without its slow exact division loop.
+double reduce_angle(LD x) {
+  const LD k = std::rint(x * (1 / kTwoPiL));
+  return static_cast<double>(x - k * kTwoPiL);
 }
+
+// The angle rate·t reduced to [−π, π], formed in long double so that large t keeps its digits.
+double reduced_angle(LD rate, LD t) { return reduce_angle(rate * t); }
 
 // The smallest rotation taking e_z to the unit vector h (h_z > −1): Rodrigues about e_z × h.
 Mat3 rotation_from_z_to(double hx, double hy, double hz) {
@@ -241,6 +246,7 @@ void FreeRigidBodySolution::setup_asymmetric(const Eigen::Matrix<long double, 3,
   const LD rho = cy / cx;  // = J_y a_y / (J_x a_x), finite as a_x -> 0
   const LD n = -Jz * (Jy - Jx) / (Jx * (Jz - Jy));
   rho_ = static_cast<double>(rho);
+  n_ = static_cast<double>(n);
   sqrt_minus_n_ = static_cast<double>(std::sqrt(-n));
   one_minus_n_ = static_cast<double>(1 - n);
 
@@ -275,6 +281,7 @@ void FreeRigidBodySolution::setup_asymmetric(const Eigen::Matrix<long double, 3,
     for (int i = 0; i < landen.levels; ++i) landen_.k[i] = static_cast<double>(landen.k[i]);
     const LD K = table.quarter_period;
     two_k_ = 2 * K;
+    inverse_two_k_ = 1 / two_k_;
     quarter_period_ = K;
     sqrt_mc_ = static_cast<double>(std::sqrt(mc));
     // G(u) is taken from v = K − |u| (docs/rotation.md §6):
@@ -302,6 +309,15 @@ void FreeRigidBodySolution::setup_asymmetric(const Eigen::Matrix<long double, 3,
         (complete_g -
          (v0 - one_minus_np * detail::elliptic_g_sc<LD>(one_minus_np, s_v, c_v, mc)) / (1 - n));
     u0_ = u_r0 + 2 * j0 * K;
+    // G's integrand sn²/(1 − n sn²) is analytic for |Im u| < y*, where sn²(i y*) = 1/n, i.e.
+    // sc(y*|1 − m) = 1/√(−n) (Jacobi's imaginary transformation sn(iy|m) = i sc(y|1 − m)); the
+    // poles of sn itself are removable there.
+    {
+      const LD s_star = 1 / std::sqrt(1 - n), c_star = std::sqrt(-n / (1 - n));
+      strip_ = static_cast<double>(
+          s_star *
+          detail::carlson_rf(c_star * c_star, c_star * c_star + m * s_star * s_star, LD(1)));
+    }
     const LD g0 = g_r0 + 2 * j0 * complete_g;
     psi_per_period_ = std::remainder(2 * gamma * complete_g, kTwoPiL);
     psi_offset_ = beta0 - gamma * g0;
@@ -355,37 +371,52 @@ void FreeRigidBodySolution::evaluate(long double t, Mat3& R_WB, Vec3& w_WB_B) co
     default:
       break;
   }
-  double sn, cn, dn, psi;
-  const LD u = lambda_ * t + u0_;
   if (regime_ == FreeRotationRegime::kSeparatrix) {
     // sn = tanh u, cn = dn = sech u; ψ = rate t + c atan(√(−n) tanh u) − β + offset.
-    const double ud = static_cast<double>(u);
-    sn = std::tanh(ud);
-    cn = dn = 1.0 / std::cosh(ud);
+    const double ud = static_cast<double>(lambda_ * t + u0_);
+    const double sn = std::tanh(ud), cn = 1.0 / std::cosh(ud);
     const double beta = std::atan2(rho_ * sn, cn);
-    psi = static_cast<double>(std::remainder(psi_rate_ * t + psi_offset_, kTwoPiL)) +
-          separatrix_coefficient_ * std::atan(sqrt_minus_n_ * sn) - beta;
-  } else {
-    // Reduce u = u_r + 2jK (|u_r| <= K) in long double: am(u) = am(u_r) + jπ,
-    // G(u) = G(u_r) + 2jG(K), sn and cn flip sign with j.
-    const LD j = std::nearbyint(u / two_k_);
-    const LD u_r = u - j * two_k_;
-    detail::jacobi_sn_cn_dn(landen_, mc_, static_cast<double>(u_r), sn, cn, dn);
-    // G(u_r) from v = K − |u_r| (see the constructor).
-    const double v = std::max(0.0, static_cast<double>(quarter_period_ - std::abs(u_r)));
-    const double s_v = cn / dn, c_v = sqrt_mc_ * std::abs(sn) / dn;
-    const double g_v = detail::elliptic_g_sc<double>(one_minus_n_prime_, s_v, c_v, mc_);
-    const double g_r =
-        (u_r < 0 ? -1.0 : 1.0) * (complete_g_ - (v - one_minus_n_prime_ * g_v) / one_minus_n_);
-    if (std::fmod(static_cast<double>(j), 2.0) != 0.0) {
-      sn = -sn;
-      cn = -cn;
-    }
-    const double beta = std::atan2(rho_ * sn, cn);
-    psi = static_cast<double>(
-              std::remainder(psi_rate_ * t + j * psi_per_period_ + psi_offset_, kTwoPiL)) +
-          gamma_ * g_r - beta;
+    const double psi = reduce_angle(psi_rate_ * t + psi_offset_) +
+                       separatrix_coefficient_ * std::atan(sqrt_minus_n_ * sn) - beta;
+    assemble(psi, sn, cn, cn, R_WB, w_WB_B);
+    return;
   }
+  const Phase p = phase(t);
+  assemble_elliptic(t, p, reduced_g(p), R_WB, w_WB_B);
+}
+
+FreeRigidBodySolution::Phase FreeRigidBodySolution::phase(long double t) const {
+  // Reduce u = u_r + 2jK (|u_r| <= K) in long double: am(u) = am(u_r) + jπ,
+  // G(u) = G(u_r) + 2jG(K), sn and cn flip sign with j.
+  Phase p;
+  const LD u = lambda_ * t + u0_;
+  p.j = std::rint(u * inverse_two_k_);
+  const LD u_r = u - p.j * two_k_;
+  p.u_r = static_cast<double>(u_r);
+  p.v = std::max(0.0, static_cast<double>(quarter_period_ - std::abs(u_r)));
+  detail::jacobi_sn_cn_dn(landen_, mc_, p.u_r, p.sn, p.cn, p.dn);
+  return p;
+}
+
+double FreeRigidBodySolution::reduced_g(const Phase& p) const {
+  // G(u_r) from v = K − |u_r| (see the constructor).
+  const double s_v = p.cn / p.dn, c_v = sqrt_mc_ * std::abs(p.sn) / p.dn;
+  const double g_v = detail::elliptic_g_sc<double>(one_minus_n_prime_, s_v, c_v, mc_);
+  return (p.u_r < 0 ? -1.0 : 1.0) * (complete_g_ - (p.v - one_minus_n_prime_ * g_v) / one_minus_n_);
+}
+
+void FreeRigidBodySolution::assemble_elliptic(long double t, const Phase& p, double g_r, Mat3& R_WB,
+                                              Vec3& w_WB_B) const {
+  const double sign = std::fmod(static_cast<double>(p.j), 2.0) != 0.0 ? -1.0 : 1.0;
+  const double sn = sign * p.sn, cn = sign * p.cn;
+  const double beta = std::atan2(rho_ * sn, cn);
+  const double psi =
+      reduce_angle(psi_rate_ * t + p.j * psi_per_period_ + psi_offset_) + gamma_ * g_r - beta;
+  assemble(psi, sn, cn, p.dn, R_WB, w_WB_B);
+}
+
+void FreeRigidBodySolution::assemble(double psi, double sn, double cn, double dn, Mat3& R_WB,
+                                     Vec3& w_WB_B) const {
   // ω in C, and R_WB = R_WA Rz(ψ) R_h(t)ᵀ R_CB.
   const Vec3 w_C(a_x_ * cn, a_y_ * sn, a_z_ * dn);
   w_WB_B = R_BC_ * w_C;
@@ -428,14 +459,87 @@ ExactFreeRigidBodyStepper::ExactFreeRigidBodyStepper(const Mat3& I_BBcm_B) : I_B
 ExactFreeRigidBodyStepper::ExactFreeRigidBodyStepper(const inertia::MassProperties& body)
     : ExactFreeRigidBodyStepper(body.inertia_about_com()) {}
 
+void ExactFreeRigidBodyStepper::prepare_quadrature(double h) {
+  quadrature_h_ = h;
+  nodes_ = 0;
+  anchored_ = false;
+  const FreeRigidBodySolution& s = *solution_;
+  const double delta = static_cast<double>(s.lambda_) * h;  // the step in u (signed)
+  if (delta == 0 || !(s.strip_ > 0)) return;
+  // Gauss–Legendre error for an integrand analytic inside the Bernstein ellipse ρ of the
+  // interval: O(ρ^−2p). Half the strip keeps |integrand| moderate on the ellipse.
+  const double r = s.strip_ / std::abs(delta);  // (y*/2) / (|δ|/2)
+  const double rho = r + std::sqrt(r * r + 1);
+  const int p = std::max(2, static_cast<int>(std::ceil(18 * std::log(10.0) / (2 * std::log(rho)))));
+  if (p > kMaxNodes) return;  // too long a step: evaluate G directly
+  // Nodes x_i and weights of Gauss–Legendre on [−1, 1] (Newton on P_p).
+  for (int i = 0; i < p; ++i) {
+    double x = std::cos(std::numbers::pi * (i + 0.75) / (p + 0.5)), dp = 0;
+    for (int iteration = 0; iteration < 100; ++iteration) {
+      double p0 = 1, p1 = 0;
+      for (int k = 1; k <= p; ++k) {
+        const double p2 = p1;
+        p1 = p0;
+        p0 = ((2 * k - 1) * x * p1 - (k - 1) * p2) / k;
+      }
+      dp = p * (x * p0 - p1) / (x * x - 1);
+      const double dx = p0 / dp;
+      x -= dx;
+      if (std::abs(dx) < 1e-16) break;
+    }
+    // The node sits a = δ(1 − x)/2 before the step's end.
+    const double a = 0.5 * delta * (1 - x);
+    detail::jacobi_sn_cn_dn(s.landen_, s.mc_, a, node_sn_[i], node_cn_[i], node_dn_[i]);
+    node_weight_[i] = 0.5 * delta * 2 / ((1 - x * x) * dp * dp);
+  }
+  nodes_ = p;
+}
+
 void ExactFreeRigidBodyStepper::step(Mat3& R_WB, Vec3& w_WB_B, double h) {
   // Follow the current solution while the caller hands back exactly what it was given.
   if (!solution_ || R_WB != last_R_WB_ || w_WB_B != last_w_WB_B_) {
     solution_.emplace(I_BBcm_B_, R_WB, w_WB_B);
     time_ = 0;
+    quadrature_h_ = 0;
+    nodes_ = 0;
+    anchored_ = false;
   }
   time_ += h;
-  solution_->evaluate(time_, R_WB, w_WB_B);
+  const FreeRigidBodySolution& s = *solution_;
+  const bool elliptic =
+      s.regime_ == FreeRotationRegime::kMajorAxis || s.regime_ == FreeRotationRegime::kMinorAxis;
+  if (!elliptic) {
+    s.evaluate(time_, R_WB, w_WB_B);
+  } else {
+    if (h != quadrature_h_) prepare_quadrature(h);
+    const FreeRigidBodySolution::Phase p = s.phase(time_);
+    if (nodes_ == 0 || !anchored_ || ++since_anchor_ >= kAnchorInterval) {
+      g_r_ = s.reduced_g(p);
+      g_compensation_ = 0;
+      since_anchor_ = 0;
+      anchored_ = nodes_ > 0;
+    } else {
+      // ΔG = ∫ sn²/(1 − n sn²) over the step, sn at the nodes by the addition theorem
+      // sn(u − a) = (sn u cn a dn a − sn a cn u dn u)/(1 − m sn²u sn²a); then
+      // G(u_r) gains ΔG and loses 2G(K) per period crossed.
+      double increment = 0;
+      const double sn2 = p.sn * p.sn, cndn = p.cn * p.dn;
+      for (int i = 0; i < nodes_; ++i) {
+        const double sn_node = (p.sn * node_cn_[i] * node_dn_[i] - node_sn_[i] * cndn) /
+                               (1 - s.m_ * sn2 * node_sn_[i] * node_sn_[i]);
+        const double q = sn_node * sn_node;
+        increment += node_weight_[i] * q / (1 - s.n_ * q);
+      }
+      increment -= 2 * s.complete_g_ * static_cast<double>(p.j - last_j_);
+      // Kahan summation keeps the running sum's rounding at an ulp or two between anchors.
+      const double y = increment - g_compensation_;
+      const double sum = g_r_ + y;
+      g_compensation_ = (sum - g_r_) - y;
+      g_r_ = sum;
+    }
+    last_j_ = p.j;
+    s.assemble_elliptic(time_, p, g_r_, R_WB, w_WB_B);
+  }
   last_R_WB_ = R_WB;
   last_w_WB_B_ = w_WB_B;
 }
