@@ -68,9 +68,12 @@ struct Validator {
     for (std::size_t i = 0; i < s.times.size(); ++i) {
       require(std::isfinite(s.times[i]) && std::isfinite(s.values[i]), name,
               fmt::format("table row {} is not finite", i + 1));
-      require(i == 0 || s.times[i] > s.times[i - 1], name,
-              fmt::format("table times must increase strictly: row {} has t = {} after t = {}",
-                          i + 1, s.times[i], s.times[i - 1]));
+      // The message reads times[i − 1], so it is only formatted for i > 0.
+      if (i > 0) {
+        require(s.times[i] > s.times[i - 1], name,
+                fmt::format("table times must increase strictly: row {} has t = {} after t = {}",
+                            i + 1, s.times[i], s.times[i - 1]));
+      }
     }
   }
 };
