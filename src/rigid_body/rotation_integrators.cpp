@@ -46,19 +46,32 @@ struct HalfAngle {
   }
 };
 
-// M ← Rot_i(θ)ᵀ M and R ← R Rot_i(θ) for the rotation by θ about principal axis i.
-void rotate_about_axis(int i, double theta, Mat3& R, Vec3& M) {
-  const int j = (i + 1) % 3, k = (i + 2) % 3;
-  const HalfAngle a(theta);
-  const double Mj = M[j], Mk = M[k];
-  M[j] += a.cos_minus_one * Mj + a.sin * Mk;
-  M[k] += a.cos_minus_one * Mk - a.sin * Mj;
-  const Vec3 Rj = R.col(j), Rk = R.col(k);
-  R.col(j) += a.cos_minus_one * Rj + a.sin * Rk;
-  R.col(k) += a.cos_minus_one * Rk - a.sin * Rj;
+// hi + lo ← hi + lo + d, keeping hi's rounding error in lo (Knuth's TwoSum, 6 flops).
+inline void compensated_add(double& hi, double& lo, double d) {
+  const double sum = hi + d;
+  const double b = sum - hi;
+  lo += (hi - (sum - b)) + (d - b);
+  hi = sum;
+}
+
+// The pair (x_j, x_k) + (l_j, l_k) rotated in place: x ← x + (cos θ − 1) x ± sin θ y, with the
+// low parts rotated too (so that they do not lag behind).
+inline void rotate_pair(double& xj, double& lj, double& xk, double& lk, const HalfAngle& a) {
+  const double dj = a.cos_minus_one * xj + a.sin * xk + (a.cos_minus_one * lj + a.sin * lk);
+  const double dk = a.cos_minus_one * xk - a.sin * xj + (a.cos_minus_one * lk - a.sin * lj);
+  compensated_add(xj, lj, dj);
+  compensated_add(xk, lk, dk);
 }
 
 }  // namespace
+
+// M ← Rot_i(θ)ᵀ M and R ← R Rot_i(θ) for the rotation by θ about principal axis i.
+void SplittingIntegrator::rotate_about_axis(int i, double theta) {
+  const int j = (i + 1) % 3, k = (i + 2) % 3;
+  const HalfAngle a(theta);
+  rotate_pair(M_P_[j], M_low_[j], M_P_[k], M_low_[k], a);
+  for (int r = 0; r < 3; ++r) rotate_pair(R_WP_(r, j), R_low_(r, j), R_WP_(r, k), R_low_(r, k), a);
+}
 
 UniformGravity::UniformGravity(double mass, const Vec3& p_OBcm_B, const Vec3& g_W)
     : mp_B_(mass * p_OBcm_B), g_W_(g_W) {
@@ -126,44 +139,52 @@ SplittingIntegrator::SplittingIntegrator(const Mat3& I_BO_B, Composition composi
   }
 }
 
-void SplittingIntegrator::run(Kind kind, double tau, Mat3& R_WP, Vec3& M_P) const {
+void SplittingIntegrator::run(Kind kind, double tau) {
   switch (kind) {
     case Kind::kKick: {
       // M ← M + τ τ_P(R): the flow of the potential, R fixed.
-      const Mat3 R_WB = principal_ ? R_WP : Mat3(R_WP * R_BP_.transpose());
+      const Mat3 R_WB = principal_ ? R_WP_ : Mat3(R_WP_ * R_BP_.transpose());
       const Vec3 torque_B = potential_->torque_B(R_WB);
-      M_P += tau * (principal_ ? torque_B : Vec3(R_BP_.transpose() * torque_B));
+      const Vec3 kick = tau * (principal_ ? torque_B : Vec3(R_BP_.transpose() * torque_B));
+      for (int i = 0; i < 3; ++i) compensated_add(M_P_[i], M_low_[i], kick[i]);
       return;
     }
     case Kind::kAxis1:
-      rotate_about_axis(0, tau * (1.0 / moments_[0] - 1.0 / moments_[1]) * M_P[0], R_WP, M_P);
+      rotate_about_axis(0, tau * (1.0 / moments_[0] - 1.0 / moments_[1]) * M_P_[0]);
       return;
     case Kind::kAxis3:
-      rotate_about_axis(2, tau * (1.0 / moments_[2] - 1.0 / moments_[1]) * M_P[2], R_WP, M_P);
+      rotate_about_axis(2, tau * (1.0 / moments_[2] - 1.0 / moments_[1]) * M_P_[2]);
       return;
     case Kind::kAboutMomentum: {
       // The Casimir |M|²/(2 I2): R ← R exp(τ M̂/I2); M lies on the axis and does not change.
-      const double norm = M_P.norm();
+      const double norm = M_P_.norm();
       if (norm == 0) return;
       const double angle = tau * norm / moments_[1];
-      const Vec3 axis = M_P / norm;
+      const Vec3 axis = M_P_ / norm;
       const HalfAngle r(angle);
-      // Rodrigues: Rot = 1 + sin θ â + (1 − cos θ)(a aᵀ − 1); R ← R Rot.
-      const Vec3 Ra = R_WP * axis;
-      Mat3 change;
-      for (int j = 0; j < 3; ++j) {
-        change.col(j) = r.sin * (R_WP * axis.cross(Vec3::Unit(j))) -
-                        r.cos_minus_one * (axis[j] * Ra - R_WP.col(j));
-      }
-      R_WP += change;
+      // Rodrigues: Rot = 1 + sin θ â + (1 − cos θ)(a aᵀ − 1); R ← R Rot, on both parts of R.
+      const auto change = [&](const Mat3& R) {
+        const Vec3 Ra = R * axis;
+        Mat3 c;
+        for (int j = 0; j < 3; ++j) {
+          c.col(j) =
+              r.sin * (R * axis.cross(Vec3::Unit(j))) - r.cos_minus_one * (axis[j] * Ra - R.col(j));
+        }
+        return c;
+      };
+      const Mat3 delta = change(R_WP_) + change(R_low_);
+      for (int i = 0; i < 9; ++i)
+        compensated_add(R_WP_.data()[i], R_low_.data()[i], delta.data()[i]);
       return;
     }
     case Kind::kExact: {
-      const Vec3 w_P = M_P.cwiseQuotient(moments_);
-      const FreeRigidBodySolution solution(Mat3(moments_.asDiagonal()), R_WP, w_P);
+      const Vec3 w_P = (M_P_ + M_low_).cwiseQuotient(moments_);
+      const FreeRigidBodySolution solution(Mat3(moments_.asDiagonal()), Mat3(R_WP_ + R_low_), w_P);
       Vec3 w;
-      solution.evaluate(tau, R_WP, w);
-      M_P = moments_.cwiseProduct(w);
+      solution.evaluate(tau, R_WP_, w);
+      M_P_ = moments_.cwiseProduct(w);
+      R_low_.setZero();
+      M_low_.setZero();
       return;
     }
   }
@@ -171,13 +192,28 @@ void SplittingIntegrator::run(Kind kind, double tau, Mat3& R_WP, Vec3& M_P) cons
 
 void SplittingIntegrator::step(Mat3& R_WB, Vec3& w_WB_B, double h) {
   // To principal axes, R_WP = R_WB R_BP and M_P = I_P ω_P, unless continuing from the last step.
+  // The internal state is compensated: R_WP_ + R_low_ and M_P_ + M_low_ carry the rounding of
+  // every update (TwoSum), so that |H| and the energy do not random-walk by √(steps) ε.
   if (!has_state_ || R_WB != last_R_WB_ || w_WB_B != last_w_WB_B_) {
     R_WP_ = principal_ ? R_WB : Mat3(R_WB * R_BP_);
     M_P_ = moments_.cwiseProduct(principal_ ? w_WB_B : Vec3(R_BP_.transpose() * w_WB_B));
+    R_low_.setZero();
+    M_low_.setZero();
     has_state_ = true;
   }
-  for (int i = 0; i < operation_count_; ++i) {
-    run(operations_[i].kind, operations_[i].fraction * h, R_WP_, M_P_);
+  for (int i = 0; i < operation_count_; ++i) run(operations_[i].kind, operations_[i].fraction * h);
+  // Renormalize each pair so that the low part stays below half an ulp of the high one.
+  for (int i = 0; i < 9; ++i) {
+    double& hi = R_WP_.data()[i];
+    double& lo = R_low_.data()[i];
+    const double sum = hi + lo;
+    lo -= sum - hi;
+    hi = sum;
+  }
+  for (int i = 0; i < 3; ++i) {
+    const double sum = M_P_[i] + M_low_[i];
+    M_low_[i] -= sum - M_P_[i];
+    M_P_[i] = sum;
   }
   R_WB = principal_ ? R_WP_ : Mat3(R_WP_ * R_BP_.transpose());
   const Vec3 w_P = M_P_.cwiseQuotient(moments_);

@@ -101,7 +101,8 @@ class SplittingIntegrator {
     Kind kind;
     double fraction;
   };
-  void run(Kind kind, double tau, Mat3& R_WP, Vec3& M_P) const;
+  void run(Kind kind, double tau);
+  void rotate_about_axis(int i, double theta);
 
   Mat3 I_;
   Vec3 moments_;            // principal moments, ascending
@@ -113,8 +114,8 @@ class SplittingIntegrator {
   Operation operations_[32];
   // The internal state after the last step and what was returned for it.
   bool has_state_ = false;
-  Mat3 R_WP_, last_R_WB_;
-  Vec3 M_P_, last_w_WB_B_;
+  Mat3 R_WP_, R_low_, last_R_WB_;
+  Vec3 M_P_, M_low_, last_w_WB_B_;
 };
 
 class LieGroupVariational {
