@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Configures and builds momenta. Usage: scripts/build.sh [BUILD_DIR] [extra CMake options...]
-# BUILD_DIR defaults to build/. Uses ccache when present (cache in .cache/ccache unless
-# CCACHE_DIR is set) and all cores.
+# BUILD_DIR defaults to build/. Uses ccache when present and all cores. The cache lives outside
+# the checkout (~/.cache/momenta/ccache unless CCACHE_DIR is set), so a fresh clone on the same
+# machine — CI's — reuses what earlier builds compiled.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${1:-build}
 shift || true
-export CCACHE_DIR=${CCACHE_DIR:-$PWD/.cache/ccache}
+export CCACHE_DIR=${CCACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/momenta/ccache}
 export CCACHE_MAXSIZE=${CCACHE_MAXSIZE:-2G}
 cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=${BUILD_TYPE:-Release} "$@" >/dev/null
 cmake --build "$build_dir" --parallel "$(nproc)"

@@ -332,7 +332,9 @@ TEST_P(DynamicsProperties, IntegrateAndDifferenceAreInverse) {
     // Quaternions stay unit: the exponential map, not add-and-normalize.
     for (const auto& j : m().joints()) {
       const int k = j.type == JointType::spherical ? 0 : (j.type == JointType::free ? 3 : -1);
-      if (k >= 0) EXPECT_NEAR(q1.segment<4>(j.q_index + k).norm(), 1.0, 1e-15);
+      if (k >= 0) {
+        EXPECT_NEAR(q1.segment<4>(j.q_index + k).norm(), 1.0, 1e-15);
+      }
     }
   }
 }

@@ -6,6 +6,8 @@
 #include <random>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "momenta/math/rotation.hpp"
 #include "momenta/math/spatial.hpp"
 #include "momenta/model/model_builder.hpp"
@@ -65,14 +67,16 @@ inline Model random_tree(int n, unsigned seed,
   ModelBuilder builder;
   builder.set_gravity(gravity);
   for (int k = 0; k < n; ++k) {
-    const std::string name = "b" + std::to_string(k);
+    // fmt::format rather than "b" + std::to_string(k): GCC 12 raises a false -Wrestrict on the
+    // inlined operator+ (GCC bug 105329).
+    const std::string name = fmt::format("b{}", k);
     builder.add_body(name, random_mass_properties(rng));
     Joint j;
-    j.name = "j" + std::to_string(k);
+    j.name = fmt::format("j{}", k);
     j.type = types[k % types.size()];
     j.parent = k == 0 ? "world"
-                      : "b" + std::to_string(std::uniform_int_distribution<int>(std::max(0, k - 3),
-                                                                                k - 1)(rng));
+                      : fmt::format("b{}", std::uniform_int_distribution<int>(std::max(0, k - 3),
+                                                                              k - 1)(rng));
     j.child = name;
     j.X_PJ = random_transform(rng, 0.3);
     j.X_CJ = random_transform(rng, 0.2);
