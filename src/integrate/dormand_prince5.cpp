@@ -64,7 +64,8 @@ void DormandPrince5::initialize(SecondOrderSystem& system, const State& state) {
   statistics_ = {};
   previous_error_ = 1e-4;
   last_rejected_ = false;
-  // The first stage's acceleration, reused by the first step.
+  // The first stage's acceleration, reused by the first step (inputs from the right).
+  system.begin_step(state.t, std::numeric_limits<double>::infinity());
   system.acceleration(state.t, state.q, state.v, stages_.kv[0]);
   ++statistics_.evaluations;
   have_last_acceleration_ = true;
@@ -122,11 +123,14 @@ double DormandPrince5::step(SecondOrderSystem& system, State& state, double h_ma
     throw InvalidArgument(fmt::format("dopri5: the step limit must be positive, got {}", h_max));
   }
   if (!have_last_acceleration_) {
+    // The step's start, from the right: no step end is announced yet.
+    system.begin_step(state.t, std::numeric_limits<double>::infinity());
     system.acceleration(state.t, state.q, state.v, stages_.kv[0]);
     ++statistics_.evaluations;
     have_last_acceleration_ = true;
   }
   system.configuration_scale(state.q, scale_q0_);
+  const double t_break = system.next_discontinuity(state.t);
   for (;;) {
     const double h = std::min(h_, h_max);
     if (h < 16.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(state.t))) {
@@ -136,6 +140,7 @@ double DormandPrince5::step(SecondOrderSystem& system, State& state, double h_ma
           h, state.t, tolerances_.relative, tolerances_.absolute));
     }
     // Stages 1..6; stage 0 is the last step's final acceleration.
+    system.begin_step(state.t, state.t + h);
     stages_.kq[0] = state.v;
     for (int i = 1; i < 7; ++i) {
       stages_.evaluate(system, state, h, i, kA[i], kC[i], statistics_.evaluations);
@@ -192,6 +197,11 @@ double DormandPrince5::step(SecondOrderSystem& system, State& state, double h_ma
     state.v = v1_;
     state.t += h;
     stages_.kv[0].swap(stages_.kv[6]);
+    // A step that ended on a discontinuity saw the inputs' left limits there: the next step must
+    // start from their right limits, so first-same-as-last does not apply.
+    if (t_break <= state.t + 1e-12 * std::max(1.0, std::abs(state.t))) {
+      have_last_acceleration_ = false;
+    }
     // PI control of the next step; no growth right after a rejection.
     double factor = factor11 / std::pow(previous_error_, kBeta);
     factor = std::clamp(factor / kSafety, 1.0 / kMaxFactor, 1.0 / kMinFactor);

@@ -1,5 +1,6 @@
 #include "momenta/integrate/run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -50,20 +51,38 @@ RunSummary run(SecondOrderSystem& system, Integrator& integrator, State& state,
   integrator.initialize(system, state);
   observer(state);
   const double t0 = state.t;
-  long k = 0;
+  const auto close = [&](double a, double b) {
+    return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b));
+  };
+  long k = 0;  // steps taken that end on the output grid (fixed steps) or anywhere (adaptive)
   bool reported = true;
   while (state.t < options.t_end) {
-    double h = std::min(options.h, options.t_end - state.t);
-    h = integrator.step(system, state, h);
-    ++k;
-    // Fixed steps land on t0 + k h exactly instead of accumulating round-off in t.
-    if (!integrator.adaptive()) state.t = std::min(t0 + k * options.h, options.t_end);
-    // An interval h does not divide leaves a last step of round-off size: absorb it.
-    if (options.t_end - state.t <= 1e-12 * std::max(1.0, std::abs(options.t_end))) {
-      state.t = options.t_end;
+    // The step ends at the next grid time t0 + (k+1) h for fixed-step methods (times are not
+    // accumulated sums), at most h ahead for adaptive ones, and never past the end or the next
+    // discontinuity of the inputs: a step that straddled one would be first order.
+    const double t_grid = integrator.adaptive() ? state.t + options.h : t0 + (k + 1) * options.h;
+    double t_target = std::min(t_grid, options.t_end);
+    double t_break = system.next_discontinuity(state.t);
+    while (close(t_break, state.t)) t_break = system.next_discontinuity(t_break);
+    // A discontinuity on the grid time (to round-off) is landed on exactly; one before it ends
+    // a shorter step that is not a grid step.
+    bool grid_step = true;
+    if (close(t_break, t_target)) {
+      t_target = t_break;
+    } else if (t_break < t_target) {
+      t_target = t_break;
+      grid_step = false;
     }
+    const double h = integrator.step(system, state, t_target - state.t);
+    // Land exactly on the target when the step reached it; an interval h does not divide leaves
+    // a last step of round-off size: absorb it.
+    if (close(state.t, t_target)) state.t = t_target;
+    if (close(state.t, options.t_end)) state.t = options.t_end;
     check_finite(system, integrator, state, h);
-    reported = k % options.every == 0;
+    // Steps that stop short on a discontinuity are neither counted for `every` nor reported.
+    if (!integrator.adaptive() && !grid_step) continue;
+    ++k;
+    reported = k % options.every == 0 || state.t == options.t_end;
     if (reported) observer(state);
   }
   if (!reported) observer(state);

@@ -17,6 +17,7 @@ void RungeKutta4::initialize(SecondOrderSystem& system, const State& state) {
 }
 
 double RungeKutta4::step(SecondOrderSystem& system, State& state, double h) {
+  system.begin_step(state.t, state.t + h);
   // Stage 0 at the start, where δ = 0 and dexp⁻¹ is the identity.
   stages_.kq[0] = state.v;
   system.acceleration(state.t, state.q, state.v, stages_.kv[0]);

@@ -11,6 +11,7 @@ void SymplecticEuler::initialize(SecondOrderSystem& system, const State& state) 
 }
 
 double SymplecticEuler::step(SecondOrderSystem& system, State& state, double h) {
+  system.begin_step(state.t, state.t + h);
   // Kick the velocity with the acceleration at the old configuration ...
   system.acceleration(state.t, state.q, state.v, vdot_);
   ++statistics_.evaluations;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <limits>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -78,10 +80,23 @@ struct Validator {
   }
 };
 
-SignalSample sample_step(const StepSignal& s, double t) {
+// Whether t lies in the piece before the breakpoint a: strictly for the right limit (at a itself
+// the piece starting there applies), inclusively for the left limit (the piece ending there).
+bool before(double t, double a, Limit limit) { return limit == Limit::right ? t < a : t <= a; }
+
+// The smallest of the candidates that is strictly after t; +infinity if none is.
+double first_after(double t, std::initializer_list<double> candidates) {
+  double next = std::numeric_limits<double>::infinity();
+  for (double c : candidates) {
+    if (c > t) next = std::min(next, c);
+  }
+  return next;
+}
+
+SignalSample sample_step(const StepSignal& s, double t, Limit limit) {
   const double jump = s.final - s.initial;
-  if (t < s.start) return {s.initial, 0, 0};
-  if (s.rise_time == 0 || t >= s.start + s.rise_time) return {s.final, 0, 0};
+  if (before(t, s.start, limit)) return {s.initial, 0, 0};
+  if (s.rise_time == 0 || !before(t, s.start + s.rise_time, limit)) return {s.final, 0, 0};
   // Quintic smoothstep h(x) = 10x³ − 15x⁴ + 6x⁵ on x = (t − start) / rise_time.
   const double T = s.rise_time;
   const double x = (t - s.start) / T;
@@ -91,11 +106,13 @@ SignalSample sample_step(const StepSignal& s, double t) {
   return {s.initial + jump * h, jump * dh / T, jump * ddh / (T * T)};
 }
 
-SignalSample sample_table(const TableSignal& s, double t) {
-  if (t <= s.times.front()) return {s.values.front(), 0, 0};
-  if (t >= s.times.back()) return {s.values.back(), 0, 0};
-  // The segment [times[i-1], times[i]) holding t.
-  const auto it = std::upper_bound(s.times.begin(), s.times.end(), t);
+SignalSample sample_table(const TableSignal& s, double t, Limit limit) {
+  if (before(t, s.times.front(), limit) || s.times.size() == 1) return {s.values.front(), 0, 0};
+  if (!before(t, s.times.back(), limit)) return {s.values.back(), 0, 0};
+  // The segment holding t: [times[i-1], times[i]) for the right limit, (times[i-1], times[i]]
+  // for the left.
+  const auto it = limit == Limit::right ? std::upper_bound(s.times.begin(), s.times.end(), t)
+                                        : std::lower_bound(s.times.begin(), s.times.end(), t);
   const std::size_t i = static_cast<std::size_t>(it - s.times.begin());
   const double slope = (s.values[i] - s.values[i - 1]) / (s.times[i] - s.times[i - 1]);
   return {s.values[i - 1] + slope * (t - s.times[i - 1]), slope, 0};
@@ -107,36 +124,45 @@ Signal::Signal(std::string name, Shape shape) : name_(std::move(name)), shape_(s
   std::visit(Validator{name_}, shape_);
 }
 
-SignalSample Signal::sample(double t) const {
+SignalSample Signal::sample(double t, Limit limit) const {
   return std::visit(Overloaded{
                         [](const ConstantSignal& s) {
                           return SignalSample{s.value, 0, 0};
                         },
-                        [t](const StepSignal& s) { return sample_step(s, t); },
-                        [t](const RampSignal& s) {
-                          if (t <= s.start) return SignalSample{s.offset, 0, 0};
-                          if (t >= s.stop)
+                        [&](const StepSignal& s) { return sample_step(s, t, limit); },
+                        [&](const RampSignal& s) {
+                          if (before(t, s.start, limit)) return SignalSample{s.offset, 0, 0};
+                          if (!before(t, s.stop, limit)) {
                             return SignalSample{s.offset + s.slope * (s.stop - s.start), 0, 0};
+                          }
                           return SignalSample{s.offset + s.slope * (t - s.start), s.slope, 0};
                         },
-                        [t](const PulseSignal& s) {
+                        [&](const PulseSignal& s) {
                           double phase = t - s.start;
-                          if (s.period > 0 && phase >= 0) phase = std::fmod(phase, s.period);
-                          const bool on = phase >= 0 && phase < s.width;
+                          if (s.period > 0 && phase > 0) {
+                            phase = std::fmod(phase, s.period);
+                            // The left limit at a period boundary belongs to the previous period's
+                            // end.
+                            if (limit == Limit::left && phase == 0) phase = s.period;
+                          }
+                          const bool on = !before(phase, 0, limit) && before(phase, s.width, limit);
                           return SignalSample{s.offset + (on ? s.amplitude : 0.0), 0, 0};
                         },
-                        [t](const SineSignal& s) {
-                          if (t < s.start)
+                        [&](const SineSignal& s) {
+                          if (before(t, s.start, limit)) {
                             return SignalSample{s.offset + s.amplitude * std::sin(s.phase), 0, 0};
+                          }
                           const double w = kTwoPi * s.frequency;
                           const double angle = w * (t - s.start) + s.phase;
                           return SignalSample{s.offset + s.amplitude * std::sin(angle),
                                               s.amplitude * w * std::cos(angle),
                                               -s.amplitude * w * w * std::sin(angle)};
                         },
-                        [t](const ChirpSignal& s) {
+                        [&](const ChirpSignal& s) {
                           const double tau = t - s.start;
-                          if (tau < 0 || tau > s.duration) return SignalSample{0, 0, 0};
+                          if (before(tau, 0, limit) || !before(tau, s.duration, limit)) {
+                            return SignalSample{0, 0, 0};
+                          }
                           // Phase φ(τ) = 2π (f0 τ + k τ²/2), k = (f1 − f0) / duration.
                           const double k = (s.f1 - s.f0) / s.duration;
                           const double phi = kTwoPi * (s.f0 * tau + 0.5 * k * tau * tau);
@@ -147,7 +173,38 @@ SignalSample Signal::sample(double t) const {
                               A * std::sin(phi), A * dphi * std::cos(phi),
                               A * (ddphi * std::cos(phi) - dphi * dphi * std::sin(phi))};
                         },
-                        [t](const TableSignal& s) { return sample_table(s, t); },
+                        [&](const TableSignal& s) { return sample_table(s, t, limit); },
+                    },
+                    shape_);
+}
+
+double Signal::next_breakpoint(double t) const {
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  return std::visit(Overloaded{
+                        [](const ConstantSignal&) { return kNone; },
+                        [t](const StepSignal& s) {
+                          return first_after(t, {s.start, s.start + s.rise_time});
+                        },
+                        [t](const RampSignal& s) {
+                          return first_after(t, {s.start, s.stop});
+                        },
+                        [t](const PulseSignal& s) {
+                          if (s.period == 0 || t < s.start)
+                            return first_after(t, {s.start, s.start + s.width});
+                          // The edges of the period holding t and the next period's rising edge.
+                          const double k = std::floor((t - s.start) / s.period);
+                          const double begin = s.start + k * s.period;
+                          return first_after(t, {begin, begin + s.width, begin + s.period,
+                                                 begin + s.period + s.width});
+                        },
+                        [t](const SineSignal& s) { return first_after(t, {s.start}); },
+                        [t](const ChirpSignal& s) {
+                          return first_after(t, {s.start, s.start + s.duration});
+                        },
+                        [t](const TableSignal& s) {
+                          const auto it = std::upper_bound(s.times.begin(), s.times.end(), t);
+                          return it == s.times.end() ? kNone : *it;
+                        },
                     },
                     shape_);
 }

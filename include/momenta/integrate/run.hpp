@@ -22,7 +22,10 @@ struct RunSummary {
 /// Advances `state` to options.t_end with `integrator` (which this initializes), calling
 /// observer(state) at the start, after every options.every-th step, and at the end. Fixed-step
 /// methods take steps of exactly h (the last one shorter when h does not divide the interval;
-/// times are t0 + k h, not accumulated sums). Throws InvalidArgument for a bad option, and
+/// times are t0 + k h, not accumulated sums). No step straddles a discontinuity of the system's
+/// inputs (SecondOrderSystem::next_discontinuity): a step is cut short to end on it — for a fixed
+/// step method that extra step is not counted for `every` and not reported — so that the methods
+/// keep their order across a step or a pulse. Throws InvalidArgument for a bad option, and
 /// NumericalError naming the time, the first non-finite coordinate and a hint when the state
 /// stops being finite.
 RunSummary run(SecondOrderSystem& system, Integrator& integrator, State& state,

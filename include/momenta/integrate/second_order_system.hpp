@@ -3,6 +3,7 @@
 // possibly on a Lie group: quaternions of ball and free joints) and velocity v (size nv, in the
 // tangent space), obeying q̇ = "v" and v̇ = a(t, q, v).
 
+#include <limits>
 #include <string>
 
 #include "momenta/math/types.hpp"
@@ -39,6 +40,23 @@ class SecondOrderSystem {
   /// the relative tolerance: |q_i| on vector-space coordinates (the default only knows those
   /// when nq == nv), 1 rad on rotations.
   virtual void configuration_scale(const VecX& q, VecX& scale) const { scale = q.cwiseAbs(); }
+
+  /// The first time strictly after t where a(t, q, v) is not smooth in t — an input steps, a
+  /// table has a corner. integrate::run ends a step there so that no step straddles it (a step
+  /// across a jump would cut the method to first order). +infinity (the default): none.
+  virtual double next_discontinuity(double t) const {
+    (void)t;
+    return std::numeric_limits<double>::infinity();
+  }
+
+  /// Announces the step [t0, t1] an integrator is about to take (each attempt of an adaptive
+  /// one). Evaluations at t1 then take time-dependent inputs as their limits from the left, so
+  /// that a step ending on a discontinuity integrates the inputs it lay over. The default does
+  /// nothing (systems without inputs).
+  virtual void begin_step(double t0, double t1) {
+    (void)t0;
+    (void)t1;
+  }
 
   /// A name for configuration coordinate i (velocity coordinate i when `velocity`), used in
   /// error messages: "hinge.q0". The default is "q[i]" / "v[i]".

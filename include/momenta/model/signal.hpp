@@ -73,6 +73,12 @@ struct TableSignal {
   std::vector<double> values;
 };
 
+/// Which side a signal is sampled from at a breakpoint (where it, or a derivative, jumps).
+enum class Limit {
+  right,  ///< The piece that starts at t: u(t⁺). What sample(t) returns by default.
+  left,   ///< The piece that ends at t: u(t⁻). What an integration step ending at t integrated.
+};
+
 /// Value and first two time derivatives of a signal at one instant.
 struct SignalSample {
   double value;
@@ -93,7 +99,16 @@ class Signal {
   const Shape& shape() const { return shape_; }
 
   double value(double t) const { return sample(t).value; }
-  SignalSample sample(double t) const;
+  /// Value, rate and acceleration at t. Away from breakpoints both limits agree; at a breakpoint
+  /// `limit` chooses the piece (right: the one starting at t; left: the one ending there).
+  SignalSample sample(double t, Limit limit = Limit::right) const;
+
+  /// The first breakpoint strictly after t: a time where the value or one of its first two
+  /// derivatives jumps — a step's start (and the end of its rise), a ramp's start and stop, a
+  /// pulse's edges, a sine's start, a chirp's start and end, a table's times. +infinity when
+  /// there is none. Integrators end a step on each (integrate/run.hpp), so that no step straddles
+  /// a jump and the methods keep their order.
+  double next_breakpoint(double t) const;
 
  private:
   std::string name_;

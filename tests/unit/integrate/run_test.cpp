@@ -40,6 +40,63 @@ TEST(Run, AdaptiveStepsEndExactlyAtTheFinalTime) {
   EXPECT_NEAR(state.q[0], std::cos(7.3), 1e-7);
 }
 
+// q̈ = u(t), u a pulse of height a on [t_on, t_off): q is piecewise quadratic, so a method of
+// order ≥ 2 whose steps never straddle an edge integrates it exactly. Breakpoints and one-sided
+// inputs are announced through next_discontinuity / begin_step, as a model's signals are.
+class PulseDriven final : public SecondOrderSystem {
+ public:
+  static constexpr double kOn = 0.1234, kOff = 0.6789, kHeight = 3.0;
+  int nq() const override { return 1; }
+  int nv() const override { return 1; }
+  void begin_step(double, double t1) override { step_end_ = t1; }
+  double next_discontinuity(double t) const override {
+    if (t < kOn) return kOn;
+    if (t < kOff) return kOff;
+    return std::numeric_limits<double>::infinity();
+  }
+  void acceleration(double t, const VecX&, const VecX&, VecX& vdot) override {
+    // The left limit at the end of the step, the right limit elsewhere.
+    const bool at_end = t >= step_end_;
+    const bool on = at_end ? (t > kOn && t <= kOff) : (t >= kOn && t < kOff);
+    vdot[0] = on ? kHeight : 0.0;
+  }
+  void integrate(const VecX& q, const VecX& dq, VecX& q_out) const override { q_out = q + dq; }
+  // Exact q(t) from rest at 0.
+  static double exact_q(double t) {
+    const auto ramp2 = [](double s) { return s > 0 ? 0.5 * s * s : 0.0; };
+    return kHeight * (ramp2(t - kOn) - ramp2(t - kOff));
+  }
+
+ private:
+  double step_end_ = std::numeric_limits<double>::infinity();
+};
+
+TEST(Run, StepsLandOnInputDiscontinuitiesAndKeepTheirOrder) {
+  // With steps ending on both edges and the left limit at each step's end, RK4 and Dormand–
+  // Prince are exact for this piecewise-quadratic motion (round-off only, 1e-14); straddling an
+  // edge would cost an O(h·a) = 3e-2 error in v. The grid steps (h = 0.1) are still reported at
+  // k h: the short steps to the edges are not.
+  for (const bool adaptive : {false, true}) {
+    PulseDriven system;
+    RungeKutta4 rk4;
+    DormandPrince5 dopri(Tolerances{1e-10, 1e-12});
+    Integrator& integrator = adaptive ? static_cast<Integrator&>(dopri) : rk4;
+    State state{0.0, VecX::Zero(1), VecX::Zero(1)};
+    std::vector<double> times;
+    run(system, integrator, state, {1.0, 0.1, 1}, [&](const State& s) {
+      times.push_back(s.t);
+      EXPECT_NEAR(s.q[0], PulseDriven::exact_q(s.t), 1e-14) << integrator.name() << " t=" << s.t;
+    });
+    EXPECT_NEAR(state.v[0], PulseDriven::kHeight * (PulseDriven::kOff - PulseDriven::kOn), 1e-14)
+        << integrator.name();
+    if (!adaptive) {
+      ASSERT_EQ(times.size(), 11u);
+      for (int k = 0; k <= 10; ++k) EXPECT_EQ(times[k], k * 0.1);
+      EXPECT_EQ(integrator.statistics().steps, 12);  // ten grid steps and two to the edges
+    }
+  }
+}
+
 // q̈ = 2 q³ blows up in finite time: q = 1/(1 − t) for q(0) = v(0) = 1.
 class Blowup final : public SecondOrderSystem {
  public:

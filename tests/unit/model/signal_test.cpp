@@ -1,6 +1,7 @@
 #include "momenta/model/signal.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -55,6 +56,73 @@ TEST(Signal, RampPulseSineChirpTable) {
   EXPECT_NEAR(table.sample(2.0).rate, -2.0, 1e-15);
   EXPECT_EQ(table.value(-1), 0.0);
   EXPECT_EQ(table.value(9), -2.0);
+}
+
+TEST(Signal, LimitsFromBothSidesAtBreakpoints) {
+  // At a breakpoint the right limit is the piece starting there, the left limit the piece ending
+  // there; away from breakpoints they agree.
+  const Signal pulse("p", PulseSignal{.start = 1, .width = 0.5, .amplitude = 10, .period = 2});
+  EXPECT_EQ(pulse.sample(1.0).value, 10.0);
+  EXPECT_EQ(pulse.sample(1.0, Limit::left).value, 0.0);
+  EXPECT_EQ(pulse.sample(1.5).value, 0.0);
+  EXPECT_EQ(pulse.sample(1.5, Limit::left).value, 10.0);
+  EXPECT_EQ(pulse.sample(3.0, Limit::left).value, 0.0);  // the end of the first period
+  EXPECT_EQ(pulse.sample(3.0).value, 10.0);
+  EXPECT_EQ(pulse.sample(1.2, Limit::left).value, 10.0);
+  const Signal ramp("r", RampSignal{.start = 1.0, .slope = 3.0, .offset = 1.0, .stop = 2.0});
+  EXPECT_EQ(ramp.sample(1.0).rate, 3.0);
+  EXPECT_EQ(ramp.sample(1.0, Limit::left).rate, 0.0);
+  EXPECT_EQ(ramp.sample(2.0).rate, 0.0);
+  EXPECT_EQ(ramp.sample(2.0, Limit::left).rate, 3.0);
+  EXPECT_EQ(ramp.sample(2.0, Limit::left).value, ramp.sample(2.0).value);  // continuous value
+  const Signal step("s", StepSignal{.start = 1.0, .initial = 0.0, .final = 2.0, .rise_time = 0.5});
+  // The quintic blend's acceleration jumps at both ends: 0 outside, ±60/T²·... inside → 0 at the
+  // ends, so both limits of the C² blend agree in value, rate and acceleration there.
+  EXPECT_EQ(step.sample(1.0, Limit::left).value, step.sample(1.0).value);
+  const Signal hard("h", StepSignal{.start = 1.0, .initial = 0.0, .final = 2.0});
+  EXPECT_EQ(hard.sample(1.0, Limit::left).value, 0.0);
+  EXPECT_EQ(hard.sample(1.0).value, 2.0);
+  const Signal table("tab", TableSignal{{0, 1, 3}, {0, 2, -2}});
+  EXPECT_EQ(table.sample(1.0).rate, -2.0);
+  EXPECT_EQ(table.sample(1.0, Limit::left).rate, 2.0);
+  EXPECT_EQ(table.sample(0.0, Limit::left).rate, 0.0);
+  EXPECT_EQ(table.sample(0.0).rate, 2.0);
+  EXPECT_EQ(table.sample(3.0, Limit::left).rate, -2.0);
+  EXPECT_EQ(table.sample(3.0).rate, 0.0);
+  const Signal chirp("c", ChirpSignal{.amplitude = 1, .f0 = 1, .f1 = 5, .start = 0, .duration = 4});
+  EXPECT_EQ(chirp.sample(0.0, Limit::left).rate, 0.0);
+  EXPECT_GT(chirp.sample(0.0).rate, 0.0);
+  EXPECT_NE(chirp.sample(4.0, Limit::left).rate, 0.0);
+  EXPECT_EQ(chirp.sample(4.0).rate, 0.0);
+}
+
+TEST(Signal, NextBreakpointIsTheFirstJumpAfterT) {
+  constexpr double kNone = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(Signal("k", ConstantSignal{3.0}).next_breakpoint(0.0), kNone);
+  const Signal step("s", StepSignal{.start = 1.0, .initial = 0.0, .final = 2.0, .rise_time = 0.5});
+  EXPECT_EQ(step.next_breakpoint(0.0), 1.0);
+  EXPECT_EQ(step.next_breakpoint(1.0), 1.5);  // strictly after t
+  EXPECT_EQ(step.next_breakpoint(1.5), kNone);
+  const Signal pulse("p", PulseSignal{.start = 1, .width = 0.5, .amplitude = 10, .period = 2});
+  EXPECT_EQ(pulse.next_breakpoint(0.0), 1.0);
+  EXPECT_EQ(pulse.next_breakpoint(1.0), 1.5);
+  EXPECT_EQ(pulse.next_breakpoint(1.7), 3.0);
+  EXPECT_EQ(pulse.next_breakpoint(3.0), 3.5);
+  EXPECT_EQ(pulse.next_breakpoint(100.2), 101.0);
+  const Signal once("o", PulseSignal{.start = 1, .width = 0.5});
+  EXPECT_EQ(once.next_breakpoint(1.2), 1.5);
+  EXPECT_EQ(once.next_breakpoint(1.5), kNone);
+  const Signal ramp("r", RampSignal{.start = 1.0, .slope = 3.0});
+  EXPECT_EQ(ramp.next_breakpoint(0.0), 1.0);
+  EXPECT_EQ(ramp.next_breakpoint(1.0), kNone);  // no stop
+  const Signal table("tab", TableSignal{{0, 1, 3}, {0, 2, -2}});
+  EXPECT_EQ(table.next_breakpoint(-5.0), 0.0);
+  EXPECT_EQ(table.next_breakpoint(0.0), 1.0);
+  EXPECT_EQ(table.next_breakpoint(2.0), 3.0);
+  EXPECT_EQ(table.next_breakpoint(3.0), kNone);
+  const Signal sine("sin", SineSignal{.start = 2.0});
+  EXPECT_EQ(sine.next_breakpoint(0.0), 2.0);
+  EXPECT_EQ(sine.next_breakpoint(2.0), kNone);
 }
 
 TEST(Signal, RejectsBadParameters) {
