@@ -12,4 +12,19 @@ void add_version_command(CLI::App& app);
 /// `momenta inertia FILE`: mass properties of a mesh or a composite part file (docs/cli.md).
 void add_inertia_command(CLI::App& app);
 
+/// `momenta simulate MODEL`: integrates a model file, CSV out, summary and audit on stderr.
+void add_simulate_command(CLI::App& app);
+
+/// `momenta info MODEL`: degrees of freedom, bodies, joints, elements, signals, outputs.
+void add_info_command(CLI::App& app);
+
+/// `momenta linearize MODEL`: A, B, C, D about an operating point (docs/cli.md).
+void add_linearize_command(CLI::App& app);
+
+/// `momenta modes MODEL`: eigenvalues, frequencies, damping ratios and mode shapes.
+void add_modes_command(CLI::App& app);
+
+/// `momenta response MODEL`: step, impulse or Bode response of one input–output pair.
+void add_response_command(CLI::App& app);
+
 }  // namespace momenta::cli

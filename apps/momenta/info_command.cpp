@@ -1,12 +1,376 @@
+// `momenta info MODEL`: what a model file describes — degrees of freedom, bodies with their mass
+// properties, joints and their coordinates, force elements, signals, outputs and simulation
+// settings — as text or JSON. Reads the file with momenta::io and prints what the Model holds.
+// Documented in docs/cli.md.
+
+#include <cmath>
+#include <memory>
+#include <string>
+#include <variant>
+
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "momenta/common/error.hpp"
+#include "momenta/io/model_file.hpp"
+#include "momenta/simulate/multibody_system.hpp"
+#include "momenta/simulate/output.hpp"
 
 namespace momenta::cli {
+namespace {
 
-void add_version_command(CLI::App& app) {
-  CLI::App* command = app.add_subcommand("version", "Print momenta's version");
-  command->callback([] { fmt::print("momenta {}\n", MOMENTA_VERSION); });
+// Ordered: keys print in the order written.
+using json = nlohmann::ordered_json;
+
+struct InfoOptions {
+  std::string model;
+  bool json = false;
+};
+
+json vec_json(const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
+
+json mat_json(const Mat3& M) {
+  json rows = json::array();
+  for (int i = 0; i < 3; ++i) rows.push_back(json::array({M(i, 0), M(i, 1), M(i, 2)}));
+  return rows;
+}
+
+std::string vec_text(const Vec3& v) {
+  return fmt::format("[{:.6g}, {:.6g}, {:.6g}]", v.x(), v.y(), v.z());
+}
+
+std::string body_point_text(const model::BodyPoint& p) {
+  return fmt::format("{} {}", p.body, vec_text(p.p_BoP_B));
+}
+
+const char* frame_name(model::LoadFrame frame) {
+  return frame == model::LoadFrame::world ? "world" : "body";
+}
+
+// A force element's kind and parameters.
+json element_json(const model::ForceElement& element) {
+  return std::visit(
+      [](const auto& e) -> json {
+        using T = std::decay_t<decltype(e)>;
+        json j;
+        j["name"] = e.name;
+        if constexpr (std::is_same_v<T, model::LinearSpringDamper>) {
+          j["kind"] = "linear_spring_damper";
+          j["a"] = {{"body", e.a.body}, {"point", vec_json(e.a.p_BoP_B)}};
+          j["b"] = {{"body", e.b.body}, {"point", vec_json(e.b.p_BoP_B)}};
+          j["stiffness"] = e.stiffness;
+          j["damping"] = e.damping;
+          j["free_length"] = e.free_length;
+        } else if constexpr (std::is_same_v<T, model::TorsionalSpringDamper>) {
+          j["kind"] = "torsional_spring_damper";
+          if (!e.joint.empty()) {
+            j["joint"] = e.joint;
+          } else {
+            j["body_a"] = e.body_a;
+            j["body_b"] = e.body_b;
+          }
+          j["stiffness"] = e.stiffness;
+          j["damping"] = e.damping;
+          if (!e.joint.empty()) j["rest_angle"] = e.rest_angle;
+        } else if constexpr (std::is_same_v<T, model::JointFriction>) {
+          j["kind"] = "joint_friction";
+          j["joint"] = e.joint;
+          j["viscous"] = e.viscous;
+        } else if constexpr (std::is_same_v<T, model::AppliedForce>) {
+          j["kind"] = "applied_force";
+          j["body"] = e.at.body;
+          j["point"] = vec_json(e.at.p_BoP_B);
+          j["frame"] = frame_name(e.frame);
+          j["vector"] = vec_json(e.vector);
+          j["signal"] = e.signal.empty() ? json(nullptr) : json(e.signal);
+        } else {
+          j["kind"] = "applied_torque";
+          j["body"] = e.body;
+          j["frame"] = frame_name(e.frame);
+          j["vector"] = vec_json(e.vector);
+          j["signal"] = e.signal.empty() ? json(nullptr) : json(e.signal);
+        }
+        return j;
+      },
+      element);
+}
+
+std::string element_text(const model::ForceElement& element) {
+  return std::visit(
+      [](const auto& e) -> std::string {
+        using T = std::decay_t<decltype(e)>;
+        if constexpr (std::is_same_v<T, model::LinearSpringDamper>) {
+          return fmt::format(
+              "linear spring-damper  {} — {}: k {:.6g} N/m, c {:.6g} N·s/m, free length {:.6g} m",
+              body_point_text(e.a), body_point_text(e.b), e.stiffness, e.damping, e.free_length);
+        } else if constexpr (std::is_same_v<T, model::TorsionalSpringDamper>) {
+          if (!e.joint.empty()) {
+            return fmt::format(
+                "torsional spring-damper on joint {}: k {:.6g}, c {:.6g}, rest {:.6g}", e.joint,
+                e.stiffness, e.damping, e.rest_angle);
+          }
+          return fmt::format(
+              "torsional spring-damper {} — {}: k {:.6g} N·m/rad, c {:.6g} N·m·s/rad", e.body_a,
+              e.body_b, e.stiffness, e.damping);
+        } else if constexpr (std::is_same_v<T, model::JointFriction>) {
+          return fmt::format("joint friction on {}: viscous {:.6g}", e.joint, e.viscous);
+        } else if constexpr (std::is_same_v<T, model::AppliedForce>) {
+          return fmt::format("applied force at {}: {} N in {}{}", body_point_text(e.at),
+                             vec_text(e.vector), frame_name(e.frame),
+                             e.signal.empty() ? "" : " × signal " + e.signal);
+        } else {
+          return fmt::format("applied torque on {}: {} N·m in {}{}", e.body, vec_text(e.vector),
+                             frame_name(e.frame), e.signal.empty() ? "" : " × signal " + e.signal);
+        }
+      },
+      element);
+}
+
+// A signal's shape and parameters.
+json signal_json(const model::Signal& signal) {
+  json j;
+  j["name"] = signal.name();
+  std::visit(
+      [&j](const auto& s) {
+        using T = std::decay_t<decltype(s)>;
+        if constexpr (std::is_same_v<T, model::ConstantSignal>) {
+          j["kind"] = "constant";
+          j["value"] = s.value;
+        } else if constexpr (std::is_same_v<T, model::StepSignal>) {
+          j["kind"] = "step";
+          j["start"] = s.start;
+          j["initial"] = s.initial;
+          j["final"] = s.final;
+          j["rise_time"] = s.rise_time;
+        } else if constexpr (std::is_same_v<T, model::RampSignal>) {
+          j["kind"] = "ramp";
+          j["start"] = s.start;
+          j["slope"] = s.slope;
+          j["offset"] = s.offset;
+          j["stop"] = std::isfinite(s.stop) ? json(s.stop) : json(nullptr);
+        } else if constexpr (std::is_same_v<T, model::PulseSignal>) {
+          j["kind"] = "pulse";
+          j["start"] = s.start;
+          j["width"] = s.width;
+          j["amplitude"] = s.amplitude;
+          j["offset"] = s.offset;
+          j["period"] = s.period;
+        } else if constexpr (std::is_same_v<T, model::SineSignal>) {
+          j["kind"] = "sine";
+          j["amplitude"] = s.amplitude;
+          j["frequency"] = s.frequency;
+          j["phase"] = s.phase;
+          j["offset"] = s.offset;
+          j["start"] = s.start;
+        } else if constexpr (std::is_same_v<T, model::ChirpSignal>) {
+          j["kind"] = "chirp";
+          j["amplitude"] = s.amplitude;
+          j["f0"] = s.f0;
+          j["f1"] = s.f1;
+          j["start"] = s.start;
+          j["duration"] = s.duration;
+        } else {
+          j["kind"] = "table";
+          j["times"] = s.times;
+          j["values"] = s.values;
+        }
+      },
+      signal.shape());
+  return j;
+}
+
+std::string signal_text(const json& j) {
+  std::string text = j["kind"].get<std::string>();
+  if (j["kind"] == "table") {
+    const auto& times = j["times"];
+    return fmt::format("table of {} points, t from {:.6g} to {:.6g} s", times.size(),
+                       times.front().get<double>(), times.back().get<double>());
+  }
+  const char* separator = " ";
+  for (const auto& [key, value] : j.items()) {
+    if (key == "name" || key == "kind") continue;
+    text += fmt::format("{}{} {}", separator, key,
+                        value.is_null() ? std::string("none") : value.dump());
+    separator = ", ";
+  }
+  return text;
+}
+
+// Everything `info` reports, as JSON; the text form prints from it.
+json describe(const InfoOptions& o, const io::ModelFile& file) {
+  const model::Model& m = file.model;
+  const simulate::MultibodySystem system(m);
+  json j;
+  j["file"] = o.model;
+  j["name"] = file.name;
+  j["description"] = file.description;
+  j["gravity"] = vec_json(m.gravity());
+  j["nq"] = m.nq();
+  j["nv"] = m.nv();
+  j["total_mass"] = m.total_mass();
+  j["conserves_energy"] = system.conserves_energy();
+  j["conserves_angular_momentum"] = system.conserves_angular_momentum();
+
+  json bodies = json::array();
+  for (int b = 1; b < m.num_bodies(); ++b) {
+    const model::Body& body = m.body(b);
+    const inertia::MassProperties& mp = body.mass_properties;
+    bodies.push_back({{"name", body.name},
+                      {"joint", m.joint(body.joint_index).name},
+                      {"mass", mp.mass()},
+                      {"com", vec_json(mp.center_of_mass())},
+                      {"inertia_com", mat_json(mp.inertia_about_com())},
+                      {"principal_moments", vec_json(mp.principal_axes().moments)}});
+  }
+  j["bodies"] = std::move(bodies);
+
+  json joints = json::array();
+  for (const model::Joint& joint : m.joints()) {
+    json q = json::array(), v = json::array();
+    for (int i = 0; i < joint.nq(); ++i)
+      q.push_back({{"column", fmt::format("{}.q{}", joint.name, i)},
+                   {"name", m.q_name(joint.q_index + i)}});
+    for (int i = 0; i < joint.nv(); ++i)
+      v.push_back({{"column", fmt::format("{}.v{}", joint.name, i)},
+                   {"name", m.v_name(joint.v_index + i)}});
+    json entry = {{"name", joint.name},          {"type", model::joint_type_name(joint.type)},
+                  {"parent", joint.parent},      {"child", joint.child},
+                  {"q_index", joint.q_index},    {"v_index", joint.v_index},
+                  {"coordinates", std::move(q)}, {"speeds", std::move(v)},
+                  {"damping", joint.damping}};
+    entry["prescribed_by"] = joint.prescribed_signals;
+    joints.push_back(std::move(entry));
+  }
+  j["joints"] = std::move(joints);
+
+  json elements = json::array();
+  for (const model::ForceElement& e : m.force_elements()) elements.push_back(element_json(e));
+  j["force_elements"] = std::move(elements);
+
+  json signals = json::array();
+  for (const model::Signal& s : m.signals()) signals.push_back(signal_json(s));
+  j["signals"] = std::move(signals);
+
+  // Outputs with the columns each gives, resolved as `simulate` resolves them.
+  json out = json::array();
+  for (const simulate::OutputSpec& spec : file.outputs) {
+    const simulate::OutputSet one(m, {spec});
+    out.push_back({{"name", spec.name},
+                   {"quantity", simulate::output_quantity_name(spec.quantity)},
+                   {"target", spec.target},
+                   {"columns", one.column_names()}});
+  }
+  j["outputs"] = std::move(out);
+
+  const io::SimulationSettings& s = file.simulation;
+  json settings = json::object();
+  if (s.duration) settings["duration"] = *s.duration;
+  if (s.step) settings["step"] = *s.step;
+  if (s.integrator) settings["integrator"] = *s.integrator;
+  if (s.relative_tolerance) settings["rtol"] = *s.relative_tolerance;
+  if (s.absolute_tolerance) settings["atol"] = *s.absolute_tolerance;
+  if (s.every) settings["every"] = *s.every;
+  j["simulation"] = std::move(settings);
+  return j;
+}
+
+void print_text(const json& j, const io::ModelFile& file) {
+  const model::Model& m = file.model;
+  fmt::print("{} ({})\n", j["name"].get<std::string>(), j["file"].get<std::string>());
+  if (!file.description.empty()) fmt::print("{}\n", file.description);
+  fmt::print("\ndegrees of freedom  nq {}, nv {}\n", m.nq(), m.nv());
+  fmt::print("gravity             {} m/s²\n", vec_text(m.gravity()));
+  fmt::print("total mass          {:.9g} kg\n", m.total_mass());
+  fmt::print("conserves           energy: {}; angular momentum about the centre of mass: {}\n",
+             j["conserves_energy"].get<bool>() ? "yes" : "no",
+             j["conserves_angular_momentum"].get<bool>() ? "yes" : "no");
+
+  fmt::print("\nbodies ({})\n", m.num_bodies() - 1);
+  for (int b = 1; b < m.num_bodies(); ++b) {
+    const model::Body& body = m.body(b);
+    const inertia::MassProperties& mp = body.mass_properties;
+    fmt::print("  {}  (on joint {})\n", body.name, m.joint(body.joint_index).name);
+    fmt::print("    mass               {:.9g} kg\n", mp.mass());
+    fmt::print("    centre of mass     {} m (in {})\n", vec_text(mp.center_of_mass()), body.name);
+    fmt::print("    inertia about com  ");
+    const Mat3& I = mp.inertia_about_com();
+    for (int r = 0; r < 3; ++r) {
+      fmt::print("{}[{:>13.6e} {:>13.6e} {:>13.6e} ]\n", r == 0 ? "" : "                       ",
+                 I(r, 0), I(r, 1), I(r, 2));
+    }
+    fmt::print("    principal moments  {} kg·m²\n", vec_text(mp.principal_axes().moments));
+  }
+
+  fmt::print("\njoints ({})\n", m.num_joints());
+  for (const model::Joint& joint : m.joints()) {
+    fmt::print("  {}  {}, {} → {}", joint.name, model::joint_type_name(joint.type), joint.parent,
+               joint.child);
+    if (joint.damping > 0.0) fmt::print(", damping {:.6g}", joint.damping);
+    fmt::print("\n");
+    for (int i = 0; i < joint.nq(); ++i) {
+      fmt::print("    {}.q{}  {}", joint.name, i, m.q_name(joint.q_index + i));
+      if (joint.is_prescribed())
+        fmt::print("  prescribed by signal {}", joint.prescribed_signals[i]);
+      fmt::print("\n");
+    }
+    for (int i = 0; i < joint.nv(); ++i)
+      fmt::print("    {}.v{}  {}\n", joint.name, i, m.v_name(joint.v_index + i));
+  }
+
+  fmt::print("\nforce elements ({})\n", m.force_elements().size());
+  for (const model::ForceElement& e : m.force_elements())
+    fmt::print("  {}  {}\n", model::force_element_name(e), element_text(e));
+
+  fmt::print("\nsignals ({})\n", m.signals().size());
+  for (const json& s : j["signals"])
+    fmt::print("  {}  {}\n", s["name"].get<std::string>(), signal_text(s));
+
+  fmt::print("\noutputs ({})\n", j["outputs"].size());
+  for (const json& out : j["outputs"]) {
+    std::string columns;
+    for (const json& c : out["columns"])
+      columns += (columns.empty() ? "" : ", ") + c.get<std::string>();
+    fmt::print("  {}  {} of {}: {}\n", out["name"].get<std::string>(),
+               out["quantity"].get<std::string>(), out["target"].get<std::string>(), columns);
+  }
+
+  if (!j["simulation"].empty()) {
+    std::string settings;
+    for (const auto& [key, value] : j["simulation"].items())
+      settings += fmt::format("{}{} {}", settings.empty() ? "" : ", ", key,
+                              value.is_string() ? value.get<std::string>() : value.dump());
+    fmt::print("\nsimulation          {}\n", settings);
+  }
+}
+
+void run(const InfoOptions& o) {
+  const io::ModelFile file = io::read_model_file(o.model);
+  const json j = describe(o, file);
+  if (o.json) {
+    fmt::print("{}\n", j.dump(2));
+  } else {
+    print_text(j, file);
+  }
+}
+
+}  // namespace
+
+void add_info_command(CLI::App& app) {
+  auto options = std::make_shared<InfoOptions>();
+  CLI::App* command = app.add_subcommand(
+      "info",
+      "Describe a model file: degrees of freedom, bodies and mass properties, joints and their "
+      "coordinates, force elements, signals, outputs");
+  command->add_option("MODEL", options->model, "A model file (.yaml; docs/model-format.md)")
+      ->required();
+  command->add_flag("--json", options->json, "Print JSON (SI units) instead of text");
+  command->footer(
+      "Examples:\n"
+      "  momenta info examples/double_pendulum.yaml\n"
+      "  momenta info examples/double_pendulum.yaml --json\n"
+      "Coordinates are listed with their CSV column (<joint>.q<i>) and their readable name.");
+  command->callback([options] { run(*options); });
 }
 
 }  // namespace momenta::cli

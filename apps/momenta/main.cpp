@@ -5,18 +5,24 @@
 
 #include <exception>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "commands.hpp"
 #include "momenta/common/error.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"momenta — model, simulate and analyse mechanical systems from first principles.\n"
-               "Run `momenta <command> --help` for a command's options and an example."};
+  CLI::App app{
+      "momenta — model, simulate and analyse mechanical systems from first principles.\n"
+      "Run `momenta <command> --help` for a command's options and an example."};
   app.require_subcommand(1);
   momenta::cli::add_version_command(app);
   momenta::cli::add_inertia_command(app);
+  momenta::cli::add_simulate_command(app);
+  momenta::cli::add_info_command(app);
+  momenta::cli::add_linearize_command(app);
+  momenta::cli::add_modes_command(app);
+  momenta::cli::add_response_command(app);
 
   try {
     app.parse(argc, argv);

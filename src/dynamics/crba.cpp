@@ -1,6 +1,12 @@
 #include "momenta/dynamics/crba.hpp"
 
+#include <cmath>
+#include <vector>
+
+#include <fmt/format.h>
+
 #include "joint_kernels.hpp"
+#include "momenta/common/error.hpp"
 
 namespace momenta::dynamics {
 namespace {
@@ -84,6 +90,42 @@ const MatX& crba(const Model& model, Data& data, const VecX& q) {
 MatX mass_matrix(const Model& model, const VecX& q) {
   Data data(model);
   return crba(model, data, q);
+}
+
+void check_mass_matrix(const Model& model, const VecX& q) {
+  // The coordinates whose acceleration forward dynamics solves for: prescribed joints' motion
+  // is given, so their bodies may carry no inertia.
+  std::vector<int> free;
+  for (int i = 0; i < model.nv(); ++i) {
+    if (!model.joint(model.joint_of_v(i)).is_prescribed()) free.push_back(i);
+  }
+  const MatX M_full = mass_matrix(model, q);
+  const int n = static_cast<int>(free.size());
+  MatX M(n, n);
+  for (int r = 0; r < n; ++r) {
+    for (int c = 0; c < n; ++c) M(r, c) = M_full(free[r], free[c]);
+  }
+  // Cholesky without pivoting, in coordinate order, so the first vanishing pivot names the
+  // first coordinate whose motion nothing before it or itself resists.
+  MatX L = MatX::Zero(n, n);
+  for (int j = 0; j < n; ++j) {
+    const double pivot = M(j, j) - L.row(j).head(j).squaredNorm();
+    if (!(pivot > 1e-12 * M(j, j))) {
+      const model::Joint& joint = model.joint(model.joint_of_v(free[j]));
+      throw InvalidArgument(fmt::format(
+          "joint '{}': the mass matrix is singular along its coordinate '{}' (pivot {:.3g} of "
+          "M_ii = {:.3g}): no inertia resists that motion. A body with zero inertia about an "
+          "axis its joint lets it turn about (a slender rod or point mass spinning about "
+          "itself), or a massless body carrying degrees of freedom, has no defined "
+          "acceleration. Give the body inertia about that axis (a cylinder rather than a slender "
+          "rod) or remove the freedom (a revolute or fixed joint)",
+          joint.name, model.v_name(free[j]), pivot, M(j, j)));
+    }
+    L(j, j) = std::sqrt(pivot);
+    for (int i = j + 1; i < n; ++i) {
+      L(i, j) = (M(i, j) - L.row(i).head(j).dot(L.row(j).head(j))) / L(j, j);
+    }
+  }
 }
 
 }  // namespace momenta::dynamics

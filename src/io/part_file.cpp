@@ -16,6 +16,7 @@
 #include "momenta/inertia/primitives.hpp"
 #include "momenta/inertia/triangle_mesh.hpp"
 #include "momenta/io/mesh_file.hpp"
+#include "momenta/io/part_node.hpp"
 #include "momenta/io/yaml_reader.hpp"
 #include "momenta/math/rotation.hpp"
 
@@ -177,6 +178,8 @@ std::string one_line(std::string text) {
   return text;
 }
 
+}  // namespace
+
 // The rotation R_BS of the part frame S in the file's frame B: identity, or exactly one of
 // `rotation` (3×3 rows), `quaternion` [w, x, y, z], `euler` {sequence, angles | angles_deg}.
 Mat3 read_rotation(const YamlNode& part) {
@@ -215,6 +218,8 @@ Mat3 read_rotation(const YamlNode& part) {
     sequence.fail(one_line(e.what()));
   }
 }
+
+namespace {
 
 // How much material a part has: its own `mass:` or `density:`, else the file's default density
 // (solids only: a default in kg/m³ means nothing for a plate or a rod).
@@ -272,6 +277,8 @@ std::vector<std::string_view> allowed_keys(std::string_view kind_key, const Shap
   }
   return keys;
 }
+
+}  // namespace
 
 // Reads one part in its own frame S and places it in B.
 PartSummary read_part(const YamlNode& part, std::size_t index, double unit,
@@ -345,8 +352,6 @@ PartSummary read_part(const YamlNode& part, std::size_t index, double unit,
   summary.mass_properties = in_S.transformed(R_BS, p_BoSo_B);
   return summary;
 }
-
-}  // namespace
 
 inertia::MassProperties read_mesh_mass_properties(const std::filesystem::path& path,
                                                   inertia::Amount amount, double scale,

@@ -390,6 +390,14 @@ Model ModelBuilder::build() const {
   const auto nonnegative = [](double x, const std::string& who, const char* what) {
     MOMENTA_REQUIRE(x >= 0 && std::isfinite(x), "{}: {} {} must be zero or positive", who, what, x);
   };
+  // Body orientations in the world at the initial configuration: the rest orientation of the
+  // two-body torsional springs (the world, body 0, is the identity).
+  std::vector<Mat3> R_WB_initial(model.bodies_.size(), Mat3::Identity());
+  for (const Joint& j : model.joints_) {
+    const Transform X_PC =
+        j.X_PJ * joint_transform(j, model.q0_.data() + j.q_index) * j.X_CJ.inverse();
+    R_WB_initial[j.child_index] = R_WB_initial[j.parent_index] * X_PC.R;
+  }
   for (ForceElement element : force_elements_) {
     const std::string& name = force_element_name(element);
     require(!name.empty(), "a force element has an empty name");
@@ -415,6 +423,7 @@ Model ModelBuilder::build() const {
                        require(e.body_a.empty() && e.body_b.empty(),
                                who + ": give either a joint or two bodies, not both");
                        e.joint_index = joint_at(e.joint, who);
+                       e.R_AB_rest = Mat3::Identity();
                        const Joint& j = model.joints_[e.joint_index];
                        MOMENTA_REQUIRE(j.nv() == 1,
                                        "{}: joint '{}' is {} with {} degrees of "
@@ -427,6 +436,8 @@ Model ModelBuilder::build() const {
                        e.body_b_index = body_at(e.body_b, who);
                        MOMENTA_REQUIRE(e.body_a_index != e.body_b_index,
                                        "{}: both ends are on body '{}'", who, e.body_a);
+                       e.R_AB_rest =
+                           R_WB_initial[e.body_a_index].transpose() * R_WB_initial[e.body_b_index];
                      }
                    },
                    [&](JointFriction& e) {

@@ -13,4 +13,14 @@ const MatX& crba(const Model& model, Data& data, const VecX& q);
 /// Allocating convenience form of crba.
 MatX mass_matrix(const Model& model, const VecX& q);
 
+/// Checks that M(q) is positive definite, so that forward dynamics has a unique answer. Throws
+/// InvalidArgument naming the first coordinate along which no inertia resists the motion — a
+/// body with zero inertia about an axis its joint lets it turn about (a slender rod or a point
+/// mass spinning about itself), or a massless body carrying degrees of freedom — with the pivot
+/// that vanished, its joint ("joint 'pivot': ...") and a hint. A pivot counts as vanished when it
+/// is below 1e-12 of its diagonal entry M_ii (round-off in a singular M is far smaller; a
+/// physically lopsided but valid inertia ratio is far larger). Allocates: a model check, not a
+/// hot path.
+void check_mass_matrix(const Model& model, const VecX& q);
+
 }  // namespace momenta::dynamics

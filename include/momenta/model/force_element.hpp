@@ -37,9 +37,12 @@ struct LinearSpringDamper {
 
 /// Torsional spring and damper. On a 1-dof joint (`joint` set; revolute, or prismatic where it
 /// acts as a linear spring): τ = −stiffness (q − rest_angle) − damping q̇. Between two bodies
-/// (`joint` empty, `body_a` and `body_b` set): the moment on b is −stiffness · log(R_AB) −
-/// damping · (ω_B − ω_A) with log the rotation vector of b relative to a, measured from their
-/// orientation at the rest configuration, and the opposite moment acts on a.
+/// (`joint` empty, `body_a` and `body_b` set; either may be the world): the moment on b is
+/// −stiffness · θ − damping · (ω_B − ω_A), and the opposite moment acts on a. θ = log(R_AB_restᵀ
+/// R_AB) is the rotation vector (|θ| ≤ π) of b relative to a measured from their rest relative
+/// orientation R_AB_rest, which is their relative orientation at the model's initial
+/// configuration (Model::initial_q(), the joints' q0): the spring is relaxed there. Potential
+/// energy ½ stiffness |θ|² (½ stiffness (q − rest_angle)² in the joint form).
 struct TorsionalSpringDamper {
   std::string name;
   std::string joint;
@@ -51,6 +54,9 @@ struct TorsionalSpringDamper {
   int joint_index = -1;     ///< Set by ModelBuilder::build(); −1 in the two-body form.
   int body_a_index = -1;    ///< Set by ModelBuilder::build() in the two-body form.
   int body_b_index = -1;    ///< Set by ModelBuilder::build() in the two-body form.
+  /// Set by ModelBuilder::build() in the two-body form: R_AB (b's orientation in a) at the
+  /// model's initial configuration, where the spring is relaxed. Identity in the joint form.
+  Mat3 R_AB_rest = Mat3::Identity();
 };
 
 /// Viscous friction on every velocity coordinate of a joint: τ = −viscous · v.

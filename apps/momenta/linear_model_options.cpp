@@ -1,0 +1,200 @@
+#include "linear_model_options.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "momenta/common/error.hpp"
+
+namespace momenta::cli {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+// A STATE.json: {"q": [...], "v": [...], "t": 0}.
+analysis::OperatingPoint read_state_file(const std::string& path, const model::Model& model) {
+  std::ifstream in(path);
+  if (!in) throw FileError(fmt::format("{}: cannot open the state file", path));
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw InvalidArgument(fmt::format("{}: not valid JSON: {}", path, e.what()));
+  }
+  if (!j.is_object()) {
+    throw InvalidArgument(
+        fmt::format("{}: expected an object {{\"q\": [...], \"v\": [...]}}", path));
+  }
+  for (const auto& [key, value] : j.items()) {
+    if (key != "q" && key != "v" && key != "t") {
+      throw InvalidArgument(
+          fmt::format("{}: unknown key '{}' (expected q, v and optionally t)", path, key));
+    }
+  }
+  const auto vector = [&](const char* key, int size) {
+    if (!j.contains(key)) {
+      throw InvalidArgument(fmt::format("{}: missing '{}' ({} numbers)", path, key, size));
+    }
+    const json& a = j.at(key);
+    if (!a.is_array() || static_cast<int>(a.size()) != size ||
+        !std::all_of(a.begin(), a.end(), [](const json& x) { return x.is_number(); })) {
+      throw InvalidArgument(
+          fmt::format("{}: '{}' must be a list of {} numbers (the model's {}); "
+                      "got {}",
+                      path, key, size, key[0] == 'q' ? "nq" : "nv", a.dump()));
+    }
+    VecX x(size);
+    for (int i = 0; i < size; ++i) x[i] = a.at(static_cast<std::size_t>(i)).get<double>();
+    return x;
+  };
+  analysis::OperatingPoint p;
+  p.q = vector("q", model.nq());
+  p.v = vector("v", model.nv());
+  if (j.contains("t")) {
+    if (!j.at("t").is_number())
+      throw InvalidArgument(fmt::format("{}: 't' must be a number", path));
+    p.t = j.at("t").get<double>();
+  }
+  return p;
+}
+
+}  // namespace
+
+void add_linear_model_options(CLI::App* command, LinearModelOptions& o, bool with_channels) {
+  command->add_option("MODEL", o.model, "A model file (.yaml; format in docs/model-format.md)")
+      ->required();
+  command
+      ->add_option("--about", o.about,
+                   "Operating point: 'initial' (the file's initial state), 'equilibrium' (the "
+                   "static equilibrium Newton finds from it) or a STATE.json file "
+                   "{\"q\": [...], \"v\": [...], \"t\": 0}")
+      ->capture_default_str();
+  if (with_channels) {
+    command
+        ->add_option("--inputs", o.inputs,
+                     "Inputs: signals or prescribed coordinates, comma-separated (default: "
+                     "every signal)")
+        ->delimiter(',');
+    command
+        ->add_option("--outputs", o.outputs,
+                     "Outputs: the file's output columns, states or joint coordinates, "
+                     "comma-separated (default: the file's outputs, else every coordinate)")
+        ->delimiter(',');
+  }
+}
+
+LoadedLinearModel load_linear_model(const LinearModelOptions& o) {
+  LoadedLinearModel r{io::read_model_file(o.model), {}, {}};
+  const model::Model& model = r.file.model;
+  analysis::LinearizationOptions options;
+  options.inputs = o.inputs;
+  options.outputs = o.outputs;
+  options.output_specs = r.file.outputs;
+  analysis::OperatingPoint point;
+  if (o.about == "initial") {
+    point = analysis::initial_operating_point(model);
+    r.about = "the initial state";
+  } else if (o.about == "equilibrium") {
+    const analysis::Equilibrium e = analysis::find_equilibrium(model, model.initial_q());
+    point = e.point;
+    r.about = fmt::format("the static equilibrium ({} Newton iterations)", e.iterations);
+    if (!e.stable()) {
+      std::vector<std::string> growth;
+      for (const auto& z : e.unstable_eigenvalues) growth.push_back(complex_text(z));
+      fmt::print(stderr,
+                 "momenta: note: the equilibrium is unstable: eigenvalues with positive real "
+                 "part {}\n",
+                 fmt::join(growth, ", "));
+    }
+  } else {
+    if (!std::filesystem::exists(o.about)) {
+      throw FileError(
+          fmt::format("--about '{}': not 'initial', 'equilibrium' or an existing state "
+                      "file",
+                      o.about));
+    }
+    point = read_state_file(o.about, model);
+    r.about = o.about;
+  }
+  r.linear = analysis::linearize(model, point, options);
+  return r;
+}
+
+json matrix_json(const MatX& M) {
+  json rows = json::array();
+  for (Eigen::Index i = 0; i < M.rows(); ++i) {
+    json row = json::array();
+    for (Eigen::Index k = 0; k < M.cols(); ++k) row.push_back(M(i, k) + 0.0);
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+json complex_json(std::complex<double> z) { return json::array({z.real() + 0.0, z.imag() + 0.0}); }
+
+namespace {
+void write_json(std::string& out, const json& j, int indent) {
+  const auto flat = [](const json& a) {
+    return a.is_array() &&
+           std::all_of(a.begin(), a.end(), [](const json& e) { return e.is_primitive(); });
+  };
+  const std::string pad(static_cast<std::size_t>(indent + 2), ' ');
+  if (j.is_object() && !j.empty()) {
+    out += "{\n";
+    std::size_t i = 0;
+    for (const auto& [key, value] : j.items()) {
+      out += pad + json(key).dump() + ": ";
+      write_json(out, value, indent + 2);
+      out += ++i < j.size() ? ",\n" : "\n";
+    }
+    out += std::string(static_cast<std::size_t>(indent), ' ') + "}";
+  } else if (j.is_array() && !flat(j)) {
+    out += "[\n";
+    for (std::size_t i = 0; i < j.size(); ++i) {
+      out += pad;
+      write_json(out, j[i], indent + 2);
+      out += i + 1 < j.size() ? ",\n" : "\n";
+    }
+    out += std::string(static_cast<std::size_t>(indent), ' ') + "]";
+  } else {
+    out += j.dump();
+  }
+}
+}  // namespace
+
+std::string json_text(const json& j) {
+  std::string out;
+  write_json(out, j, 0);
+  return out;
+}
+
+void print_matrix(const char* name, const MatX& M, const std::vector<std::string>& rows,
+                  const std::vector<std::string>& columns) {
+  fmt::print("{} ({}×{}):\n", name, M.rows(), M.cols());
+  if (M.rows() == 0 || M.cols() == 0) return;
+  std::size_t width = 0;
+  for (const std::string& r : rows) width = std::max(width, r.size());
+  fmt::print("  {:<{}}", "", width);
+  for (const std::string& c : columns) fmt::print(" {:>13.13}", c);
+  fmt::print("\n");
+  for (Eigen::Index i = 0; i < M.rows(); ++i) {
+    fmt::print("  {:<{}}", rows[static_cast<std::size_t>(i)], width);
+    for (Eigen::Index k = 0; k < M.cols(); ++k) fmt::print(" {:>13.6g}", M(i, k) + 0.0);
+    fmt::print("\n");
+  }
+}
+
+std::string complex_text(std::complex<double> z) {
+  // Parts below 1e-12 of |z| are round-off (a real pole's imaginary part, an undamped pair's
+  // real part): shown as 0.
+  const double tiny = 1e-12 * std::abs(z);
+  z = {std::abs(z.real()) <= tiny ? 0.0 : z.real(), std::abs(z.imag()) <= tiny ? 0.0 : z.imag()};
+  if (z.imag() == 0.0) return fmt::format("{:.6g}", z.real() + 0.0);
+  return fmt::format("{:.6g} {} {:.6g}j", z.real() + 0.0, z.imag() < 0 ? "−" : "+",
+                     std::abs(z.imag()));
+}
+
+}  // namespace momenta::cli

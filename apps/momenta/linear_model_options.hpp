@@ -1,0 +1,50 @@
+#pragma once
+// What `momenta linearize`, `momenta modes` and `momenta response` share: the model file, the
+// operating point (--about), the inputs and outputs, and how matrices print.
+
+#include <complex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "momenta/analysis/equilibrium.hpp"
+#include "momenta/analysis/linearize.hpp"
+#include "momenta/io/model_file.hpp"
+
+namespace momenta::cli {
+
+struct LinearModelOptions {
+  std::string model;
+  std::string about = "initial";  // initial | equilibrium | STATE.json
+  std::vector<std::string> inputs;
+  std::vector<std::string> outputs;
+};
+
+/// Adds MODEL and --about (and --inputs/--outputs when `with_channels`) to a command.
+void add_linear_model_options(CLI::App* command, LinearModelOptions& options, bool with_channels);
+
+/// The model file and its linearization about the point --about names. An unstable equilibrium
+/// is noted on stderr.
+struct LoadedLinearModel {
+  io::ModelFile file;
+  analysis::LinearModel linear;
+  std::string about;  // "initial state", "equilibrium", or the state file
+};
+LoadedLinearModel load_linear_model(const LinearModelOptions& options);
+
+/// JSON of a matrix as an array of rows.
+nlohmann::ordered_json matrix_json(const MatX& M);
+/// JSON of a complex number as [re, im].
+nlohmann::ordered_json complex_json(std::complex<double> z);
+/// Pretty JSON with every list of numbers on one line.
+std::string json_text(const nlohmann::ordered_json& j);
+/// Prints a matrix with row and column labels, 6 significant digits.
+void print_matrix(const char* name, const MatX& M, const std::vector<std::string>& rows,
+                  const std::vector<std::string>& columns);
+/// "−0.5 + 3.1j"
+std::string complex_text(std::complex<double> z);
+
+}  // namespace momenta::cli

@@ -1,0 +1,87 @@
+// `momenta linearize MODEL`: the continuous-time state space (A, B, C, D) of a model file about
+// an operating point, as text or JSON. Parses the options and calls momenta::analysis::linearize.
+// Documented in docs/cli.md.
+
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "linear_model_options.hpp"
+#include "momenta/analysis/modes.hpp"
+
+namespace momenta::cli {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+struct LinearizeOptions {
+  LinearModelOptions model;
+  bool json = false;
+};
+
+void run(const LinearizeOptions& o) {
+  const LoadedLinearModel loaded = load_linear_model(o.model);
+  const analysis::LinearModel& lin = loaded.linear;
+  const analysis::StateSpace& sys = lin.system;
+  const analysis::Modes m = analysis::modes(sys);
+  if (o.json) {
+    json j;
+    j["model"] = loaded.file.name;
+    j["about"] = loaded.about;
+    j["t"] = lin.point.t;
+    j["q"] = json(std::vector<double>(lin.point.q.data(), lin.point.q.data() + lin.point.q.size()));
+    j["v"] = json(std::vector<double>(lin.point.v.data(), lin.point.v.data() + lin.point.v.size()));
+    j["state_names"] = sys.state_names();
+    j["input_names"] = sys.input_names();
+    j["output_names"] = sys.output_names();
+    j["A"] = matrix_json(sys.A());
+    j["B"] = matrix_json(sys.B());
+    j["C"] = matrix_json(sys.C());
+    j["D"] = matrix_json(sys.D());
+    json eig = json::array();
+    for (const analysis::Mode& mode : m.modes) eig.push_back(complex_json(mode.eigenvalue));
+    j["eigenvalues"] = std::move(eig);
+    j["states_shifted"] = lin.states_shifted;
+    j["output_values"] = json(std::vector<double>(
+        lin.output_values.data(), lin.output_values.data() + lin.output_values.size()));
+    fmt::print("{}\n", json_text(j));
+    return;
+  }
+  fmt::print("{}: linearized about {} (t = {:g} s)\n", loaded.file.name, loaded.about, lin.point.t);
+  fmt::print("states  ({}): {}\n", sys.state_count(), fmt::join(sys.state_names(), ", "));
+  fmt::print("inputs  ({}): {}\n", sys.input_count(), fmt::join(sys.input_names(), ", "));
+  fmt::print("outputs ({}): {}\n\n", sys.output_count(), fmt::join(sys.output_names(), ", "));
+  print_matrix("A", sys.A(), sys.state_names(), sys.state_names());
+  print_matrix("B", sys.B(), sys.state_names(), sys.input_names());
+  print_matrix("C", sys.C(), sys.output_names(), sys.state_names());
+  print_matrix("D", sys.D(), sys.output_names(), sys.input_names());
+  std::vector<std::string> eig;
+  for (const analysis::Mode& mode : m.modes) eig.push_back(complex_text(mode.eigenvalue));
+  fmt::print("eigenvalues (1/s): {}\n", fmt::join(eig, ", "));
+  if (lin.states_shifted) {
+    fmt::print(
+        "note: a prescribed input's rate or acceleration enters; the states are shifted by "
+        "it (docs/analysis.md)\n");
+  }
+}
+
+}  // namespace
+
+void add_linearize_command(CLI::App& app) {
+  auto options = std::make_shared<LinearizeOptions>();
+  CLI::App* command =
+      app.add_subcommand("linearize",
+                         "Continuous-time state space ẋ = A x + B u, y = C x + D u of a model file "
+                         "about an operating point");
+  add_linear_model_options(command, options->model, true);
+  command->add_flag("--json", options->json, "Print JSON instead of text");
+  command->footer(
+      "Examples:\n"
+      "  momenta linearize examples/quarter_car.yaml --inputs road --outputs body_y\n"
+      "  momenta linearize examples/pendulum.yaml --about equilibrium --json\n"
+      "States are the free joints' tangent coordinates, then their velocities; SI units.");
+  command->callback([options] { run(*options); });
+}
+
+}  // namespace momenta::cli

@@ -1,0 +1,137 @@
+// `momenta modes MODEL`: eigenvalues, natural frequencies, damping ratios and mode shapes of a
+// model file linearized about an operating point, and its undamped normal modes where the
+// stiffness is symmetric. Calls momenta::analysis; documented in docs/cli.md.
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "linear_model_options.hpp"
+#include "momenta/analysis/modes.hpp"
+#include "momenta/common/error.hpp"
+
+namespace momenta::cli {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+struct ModesOptions {
+  LinearModelOptions model;
+  bool json = false;
+};
+
+double hz(double omega) { return omega / (2 * std::numbers::pi); }
+
+// NaN (an undefined damping ratio, a divergent mode's frequency) as JSON null.
+json number(double x) { return std::isfinite(x) ? json(x + 0.0) : json(nullptr); }
+
+void run(const ModesOptions& o) {
+  const LoadedLinearModel loaded = load_linear_model(o.model);
+  const analysis::LinearModel& lin = loaded.linear;
+  const analysis::Modes m = analysis::modes(lin.system);
+  // Undamped normal modes exist where K is symmetric (a conservative model at an equilibrium).
+  std::optional<analysis::NormalModes> normal;
+  std::string why_not;
+  try {
+    normal = analysis::undamped_modes(lin);
+  } catch (const InvalidArgument& e) {
+    why_not = e.what();
+  }
+  if (o.json) {
+    json j;
+    j["model"] = loaded.file.name;
+    j["about"] = loaded.about;
+    j["state_names"] = m.state_names;
+    json modes = json::array();
+    for (const analysis::Mode& mode : m.modes) {
+      json shape = json::array();
+      for (Eigen::Index i = 0; i < mode.shape.size(); ++i)
+        shape.push_back(complex_json(mode.shape[i]));
+      modes.push_back({{"eigenvalue", complex_json(mode.eigenvalue)},
+                       {"natural_frequency_rad_s", number(mode.natural_frequency)},
+                       {"natural_frequency_hz", number(hz(mode.natural_frequency))},
+                       {"damping_ratio", number(mode.damping_ratio)},
+                       {"damped_frequency_rad_s", number(mode.damped_frequency)},
+                       {"shape", std::move(shape)}});
+    }
+    j["modes"] = std::move(modes);
+    if (normal) {
+      j["coordinate_names"] = normal->coordinate_names;
+      json nm = json::array();
+      for (const analysis::NormalMode& mode : normal->modes) {
+        nm.push_back({{"squared_frequency", number(mode.squared_frequency)},
+                      {"natural_frequency_rad_s", number(mode.natural_frequency)},
+                      {"natural_frequency_hz", number(hz(mode.natural_frequency))},
+                      {"shape", json(std::vector<double>(mode.shape.data(),
+                                                         mode.shape.data() + mode.shape.size()))}});
+      }
+      j["normal_modes"] = std::move(nm);
+    } else {
+      j["normal_modes"] = nullptr;
+    }
+    fmt::print("{}\n", json_text(j));
+    return;
+  }
+  fmt::print("{}: modes about {} ({} states)\n\n", loaded.file.name, loaded.about,
+             m.state_names.size());
+  fmt::print("  {:>3}  {:>26}  {:>12}  {:>12}  {:>10}  {}\n", "#", "eigenvalue 1/s", "ωn rad/s",
+             "ωn Hz", "ζ", "largest shape entries");
+  for (std::size_t k = 0; k < m.modes.size(); ++k) {
+    const analysis::Mode& mode = m.modes[k];
+    // The shape's three largest entries, by magnitude.
+    std::vector<Eigen::Index> order(static_cast<std::size_t>(mode.shape.size()));
+    for (Eigen::Index i = 0; i < mode.shape.size(); ++i) order[static_cast<std::size_t>(i)] = i;
+    std::sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) {
+      return std::abs(mode.shape[a]) > std::abs(mode.shape[b]);
+    });
+    std::vector<std::string> entries;
+    for (std::size_t i = 0; i < std::min<std::size_t>(3, order.size()); ++i) {
+      const Eigen::Index e = order[i];
+      if (std::abs(mode.shape[e]) < 1e-9) break;
+      entries.push_back(fmt::format("{} {}", m.state_names[static_cast<std::size_t>(e)],
+                                    complex_text(mode.shape[e])));
+    }
+    fmt::print("  {:>3}  {:>26}  {:>12.6g}  {:>12.6g}  {:>10.4g}  {}\n", k + 1,
+               complex_text(mode.eigenvalue), mode.natural_frequency, hz(mode.natural_frequency),
+               mode.damping_ratio, fmt::join(entries, "; "));
+  }
+  if (normal) {
+    fmt::print("\nundamped normal modes (K φ = ω² M φ):\n");
+    for (std::size_t k = 0; k < normal->modes.size(); ++k) {
+      const analysis::NormalMode& mode = normal->modes[k];
+      std::vector<std::string> entries;
+      for (Eigen::Index i = 0; i < mode.shape.size(); ++i)
+        entries.push_back(fmt::format(
+            "{} {:.4g}", normal->coordinate_names[static_cast<std::size_t>(i)], mode.shape[i]));
+      fmt::print("  {:>3}  ω² = {:<12.6g} ω = {:.6g} rad/s = {:.6g} Hz   [{}]\n", k + 1,
+                 mode.squared_frequency, mode.natural_frequency, hz(mode.natural_frequency),
+                 fmt::join(entries, ", "));
+    }
+  } else {
+    fmt::print("\nno undamped normal modes: {}\n", why_not);
+  }
+}
+
+}  // namespace
+
+void add_modes_command(CLI::App& app) {
+  auto options = std::make_shared<ModesOptions>();
+  CLI::App* command = app.add_subcommand(
+      "modes",
+      "Eigenvalues, natural frequencies (rad/s and Hz), damping ratios and mode shapes "
+      "of a model file linearized about an operating point");
+  add_linear_model_options(command, options->model, false);
+  command->add_flag("--json", options->json, "Print JSON instead of text");
+  command->footer(
+      "Examples:\n"
+      "  momenta modes examples/double_pendulum.yaml --about equilibrium\n"
+      "  momenta modes examples/quarter_car.yaml --json\n"
+      "ζ is −Re λ/|λ| (1 for a stable real pole, −1 unstable, blank at λ = 0).");
+  command->callback([options] { run(*options); });
+}
+
+}  // namespace momenta::cli

@@ -1,0 +1,160 @@
+// `momenta response MODEL`: step, impulse or frequency response of one input–output pair of a
+// model file linearized about an operating point: a summary on stdout (the transfer function's
+// factors and the step figures) and the samples as CSV (--csv). Calls momenta::analysis;
+// documented in docs/cli.md.
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "linear_model_options.hpp"
+#include "momenta/analysis/frequency_response.hpp"
+#include "momenta/analysis/step_info.hpp"
+#include "momenta/analysis/time_response.hpp"
+#include "momenta/analysis/transfer_function.hpp"
+#include "momenta/common/error.hpp"
+
+namespace momenta::cli {
+namespace {
+
+struct ResponseOptions {
+  LinearModelOptions model;
+  std::string input;
+  std::string output;
+  bool step = false;
+  bool impulse = false;
+  std::vector<double> bode;  // FMIN FMAX, rad/s
+  std::optional<std::string> csv;
+  std::optional<double> duration;
+  std::optional<std::size_t> points;
+};
+
+std::string complex_list(const std::vector<analysis::Complex>& zs) {
+  std::vector<std::string> items;
+  for (const auto& z : zs) items.push_back(complex_text(z));
+  return items.empty() ? std::string("none") : fmt::format("{}", fmt::join(items, ", "));
+}
+
+void run(const ResponseOptions& o) {
+  LinearModelOptions model = o.model;
+  model.inputs = {o.input};
+  model.outputs = {o.output};
+  const LoadedLinearModel loaded = load_linear_model(model);
+  const analysis::StateSpace& sys = loaded.linear.system;
+  const analysis::TransferFunction tf = analysis::transfer_function(sys, 0, 0);
+
+  // The samples, as CSV text.
+  std::string csv;
+  std::string summary;
+  if (o.bode.empty()) {
+    const analysis::TimeGrid grid{o.duration.value_or(0.0), o.points.value_or(0)};
+    const analysis::TimeResponse r =
+        o.step ? analysis::step_response(sys, 0, grid) : analysis::impulse_response(sys, 0, grid);
+    csv = fmt::format("time,{}\n", o.output);
+    for (Eigen::Index k = 0; k < r.time.size(); ++k)
+      csv += fmt::format("{:.17g},{:.17g}\n", r.time[k], r.outputs(k, 0));
+    if (o.step) {
+      const analysis::StepInfo info = analysis::step_info(r, 0, tf.dc_gain);
+      summary += fmt::format(
+          "unit step: final value {:.6g}, rise time {:.6g} s, settling time (2 %) {:.6g} s, "
+          "overshoot {:.4g} %, peak {:.6g} at {:.6g} s\n",
+          info.final_value, info.rise_time, info.settling_time, info.overshoot, info.peak,
+          info.peak_time);
+    } else {
+      summary += fmt::format("unit impulse: {} samples over {:.6g} s\n", r.time.size(),
+                             r.time[r.time.size() - 1]);
+    }
+  } else {
+    const analysis::FrequencyResponse f =
+        analysis::frequency_response(sys, 0, 0, o.bode[0], o.bode[1], o.points.value_or(200));
+    csv = "frequency_rad_s,frequency_hz,magnitude,magnitude_db,phase_deg\n";
+    Eigen::Index peak = 0;
+    f.magnitude.maxCoeff(&peak);
+    for (Eigen::Index k = 0; k < f.frequency.size(); ++k)
+      csv += fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", f.frequency[k],
+                         f.frequency[k] / (2 * std::numbers::pi), f.magnitude[k], f.magnitude_db[k],
+                         f.phase_deg[k]);
+    summary += fmt::format(
+        "Bode, {} frequencies from {:.6g} to {:.6g} rad/s: peak {:.6g} dB at "
+        "{:.6g} rad/s\n",
+        f.frequency.size(), o.bode[0], o.bode[1], f.magnitude_db[peak], f.frequency[peak]);
+  }
+
+  if (o.csv && *o.csv == "-") {
+    fmt::print("{}", csv);
+    return;
+  }
+  if (o.csv) {
+    std::ofstream out(*o.csv, std::ios::binary);
+    if (!out) throw FileError(fmt::format("--csv {}: cannot write the file", *o.csv));
+    out << csv;
+  }
+  fmt::print("{}: {} → {}, linearized about {}\n", loaded.file.name, o.input, o.output,
+             loaded.about);
+  fmt::print("G(s) = K ∏(s − z)/∏(s − p): K = {:.6g}, relative degree {}\n", tf.gain,
+             tf.relative_degree());
+  fmt::print("poles (1/s): {}\n", complex_list(tf.poles));
+  fmt::print("zeros (1/s): {}\n", complex_list(tf.zeros));
+  if (!tf.cancelled.empty()) {
+    fmt::print("cancelled (uncontrollable or unobservable): {}\n", complex_list(tf.cancelled));
+  }
+  fmt::print("DC gain: {:.6g}\n", tf.dc_gain);
+  fmt::print("{}", summary);
+  if (o.csv) fmt::print("samples written to {}\n", *o.csv);
+}
+
+}  // namespace
+
+void add_response_command(CLI::App& app) {
+  auto options = std::make_shared<ResponseOptions>();
+  CLI::App* command = app.add_subcommand(
+      "response",
+      "Step, impulse or frequency (Bode) response of one input–output pair of a model "
+      "file linearized about an operating point");
+  add_linear_model_options(command, options->model, false);
+  command->add_option("--input", options->input, "The input (a signal or prescribed coordinate)")
+      ->required();
+  command
+      ->add_option("--output", options->output,
+                   "The output (an output column, a state or a joint coordinate)")
+      ->required();
+  auto* kind = command->add_option_group("kind", "which response");
+  kind->add_flag("--step", options->step, "Unit step response");
+  kind->add_flag("--impulse", options->impulse, "Unit impulse response");
+  kind->add_option("--bode", options->bode,
+                   "Frequency response from FMIN to FMAX, angular frequencies in rad/s")
+      ->expected(2);
+  kind->require_option(1);
+  command->add_option("--csv", options->csv,
+                      "Write the samples as CSV to FILE ('-': to stdout instead of the summary)");
+  command
+      ->add_option("--duration", options->duration,
+                   "Step/impulse: last sample time, s (default: from the poles)")
+      ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--points", options->points,
+                   "Number of samples or frequencies (default: from the poles; 200 for Bode)")
+      ->check(CLI::Range(2, 1000000));
+  command->footer(
+      "Examples:\n"
+      "  momenta response examples/quarter_car.yaml --input road --output body_y --step\n"
+      "  momenta response examples/flexible_satellite.yaml --input tc --output theta2 "
+      "--bode 0.1 10 --csv bode.csv\n"
+      "Frequencies are angular, rad/s (the CSV also gives Hz); phase in degrees, unwrapped.");
+  command->callback([options] {
+    if (options->bode.size() == 2 &&
+        !(options->bode[0] > 0 && options->bode[1] > options->bode[0])) {
+      throw CLI::ValidationError("--bode", "needs 0 < FMIN < FMAX (rad/s)");
+    }
+    run(*options);
+  });
+}
+
+}  // namespace momenta::cli

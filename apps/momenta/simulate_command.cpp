@@ -1,0 +1,138 @@
+// `momenta simulate MODEL`: integrates a model file and writes a CSV table (stdout or --output),
+// with a summary and the conservation audit on stderr. Parses the options, merges them over the
+// file's `simulation:` section and calls momenta::simulate::Simulation. Documented in docs/cli.md.
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "momenta/common/error.hpp"
+#include "momenta/io/model_file.hpp"
+#include "momenta/simulate/csv_writer.hpp"
+#include "momenta/simulate/simulation.hpp"
+
+namespace momenta::cli {
+namespace {
+
+struct SimulateOptions {
+  std::string model;
+  std::optional<double> duration;
+  std::optional<double> dt;
+  std::optional<double> rtol;
+  std::optional<double> atol;
+  std::optional<std::string> integrator;
+  std::optional<std::string> output;
+  std::optional<long> every;
+  bool force = false;
+  bool reactions = false;
+};
+
+// Adaptive methods without a step given take at most duration / kAdaptiveSteps per step, so the
+// table has at least that many rows.
+constexpr double kAdaptiveSteps = 1000.0;
+
+// The command line over the file's `simulation:` section over the defaults (docs/cli.md).
+simulate::SimulationOptions merge(const SimulateOptions& o, const io::SimulationSettings& file) {
+  simulate::SimulationOptions s;
+  s.duration = o.duration.value_or(file.duration.value_or(s.duration));
+  s.tolerances.relative = o.rtol.value_or(file.relative_tolerance.value_or(s.tolerances.relative));
+  s.tolerances.absolute = o.atol.value_or(file.absolute_tolerance.value_or(s.tolerances.absolute));
+  // Tolerances without an integrator ask for the adaptive one.
+  const bool tolerances_given = o.rtol || o.atol;
+  const std::string fallback =
+      tolerances_given || file.relative_tolerance || file.absolute_tolerance ? "dopri5" : "rk4";
+  s.integrator = o.integrator.value_or(file.integrator.value_or(fallback));
+  const std::unique_ptr<integrate::Integrator> probe =
+      simulate::make_simulation_integrator(s.integrator, s.tolerances);
+  if (tolerances_given && !probe->adaptive()) {
+    throw CLI::ValidationError(o.rtol ? "--rtol" : "--atol",
+                               fmt::format("applies to adaptive integrators (dopri5); '{}' takes "
+                                           "a fixed step, --dt",
+                                           s.integrator));
+  }
+  const double default_step = probe->adaptive() ? s.duration / kAdaptiveSteps : s.step;
+  s.step = o.dt.value_or(file.step.value_or(default_step));
+  s.every = o.every.value_or(file.every.value_or(s.every));
+  s.reactions = o.reactions;
+  return s;
+}
+
+void run(const SimulateOptions& o) {
+  const io::ModelFile file = io::read_model_file(o.model);
+  const simulate::SimulationOptions options = merge(o, file.simulation);
+  // Built before the output is opened: a bad option or output leaves no empty file behind.
+  simulate::Simulation simulation(file.model, file.outputs, options);
+
+  std::unique_ptr<simulate::CsvWriter> writer;
+  if (o.output) {
+    if (std::filesystem::exists(*o.output) && !o.force) {
+      throw FileError(
+          fmt::format("{}: the output file exists; pass --force to overwrite it", *o.output));
+    }
+    writer = std::make_unique<simulate::CsvWriter>(std::filesystem::path(*o.output), o.force);
+  } else {
+    writer = std::make_unique<simulate::CsvWriter>(stdout);
+  }
+
+  const simulate::SimulationSummary summary = simulation.run(*writer);
+  writer.reset();  // closes the file before the summary says it is written
+  fmt::print(stderr, "momenta: simulated {} ({}) for {} s; {} rows, {} columns to {}\n", file.name,
+             o.model, summary.t_end, summary.rows, simulation.column_names().size(),
+             o.output ? *o.output : std::string("standard output"));
+  fmt::print(stderr, "{}", simulate::format_summary(summary));
+}
+
+}  // namespace
+
+void add_simulate_command(CLI::App& app) {
+  auto options = std::make_shared<SimulateOptions>();
+  CLI::App* command = app.add_subcommand(
+      "simulate",
+      "Integrate a model file and write time, coordinates, energies, angular momentum and the "
+      "model's outputs as CSV; summary and conservation audit on stderr");
+  command->add_option("MODEL", options->model, "A model file (.yaml; docs/model-format.md)")
+      ->required();
+  command->add_option("--duration", options->duration, "Simulated time, s (default 10)")
+      ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--dt", options->dt,
+                   "Step, s (default 0.001); with an adaptive integrator its largest step "
+                   "(default duration/1000)")
+      ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--rtol", options->rtol,
+                   "Relative tolerance of an adaptive integrator (default 1e-8; implies dopri5)")
+      ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--atol", options->atol,
+                   "Absolute tolerance of an adaptive integrator (default 1e-10; implies dopri5)")
+      ->check(CLI::PositiveNumber);
+  command->add_option(
+      "--integrator", options->integrator,
+      "rk4 (default), symplectic_euler, dopri5, or a rigid-body method: splitting, splitting4, "
+      "lie_group, exact (a free body or a heavy top only)");
+  command->add_option("--output,-o", options->output,
+                      "CSV file to write (default: standard output); never overwritten without "
+                      "--force");
+  command->add_flag("--force", options->force, "Overwrite the --output file if it exists");
+  command->add_option("--every", options->every, "Write every N-th step (default 1)")
+      ->check(CLI::PositiveNumber);
+  command->add_flag("--reactions", options->reactions,
+                    "Add every joint's reaction force and moment (world frame) to each row");
+  command->footer(
+      "Examples:\n"
+      "  momenta simulate examples/double_pendulum.yaml --duration 5 --output run.csv\n"
+      "  momenta simulate examples/heavy_top.yaml --integrator dopri5 --rtol 1e-10 "
+      "--every 10\n"
+      "Options override the model file's `simulation:` section. Columns: time, <joint>.q<i>, "
+      "<joint>.v<i>, energy_kinetic, energy_potential, energy_total, H_x, H_y, H_z, the model's "
+      "outputs, <joint>.reaction.Fx..Mz (--reactions), audit.* (docs/cli.md).");
+  command->callback([options] { run(*options); });
+}
+
+}  // namespace momenta::cli

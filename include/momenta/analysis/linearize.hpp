@@ -1,0 +1,144 @@
+#pragma once
+// Linearization of a multibody model (momenta::model::Model, run by simulate::MultibodySystem)
+// about an operating point, for control design:
+//
+//     δẋ = A δx + B δu,     δy = C δx + D δu.
+//
+// States. x = [δq; v] over the free (not prescribed) joints' coordinates: δq is the tangent of
+// the configuration, q = q₀ ⊕ δq (model::integrate; a ball joint's quaternion becomes its
+// rotation vector in J', 3 coordinates, a free joint's 7 become 6), v the joints' velocities.
+// Prescribed joints' coordinates are not states: their motion is an input.
+//
+// Dynamics through inverse dynamics. With r(q, v, v̇, u) = ID(q, v, v̇) − τ_elements(q, v, u) the
+// free coordinates' generalized-force residual (rnea with the force elements' body wrenches,
+// minus their joint forces), the motion obeys r_f(q, v, a(q, v, u), u) ≡ 0 and ∂r_f/∂v̇_f = M_ff,
+// so at the operating point, with v̇₀ its acceleration,
+//
+//     A = [ T              I            ]     K = ∂r_f/∂δq,  C_v = ∂r_f/∂v    at v̇ = v̇₀
+//         [ −M⁻¹ K      −M⁻¹ C_v       ],    B = [0; −M⁻¹ ∂r_f/∂u],
+//
+// M = M_ff(q₀) by CRBA, T = ∂(δ̇q)/∂δq = −½[ω₀]× on rotation coordinates (from δ̇ = J_r(δ)⁻¹ ω)
+// and 0 elsewhere (so T = 0 at rest).
+//
+// Derivatives (docs/analysis.md, "Model linearization"):
+//  - ∂/∂v: r is quadratic in v at fixed q (Coriolis and centrifugal terms quadratic, dampers
+//    linear), and for a quadratic the central difference [r(v + h) − r(v − h)] / 2h is the
+//    derivative exactly, for any h: round-off only (h = 1 rad/s or m/s).
+//  - ∂/∂u: loads are linear in their signals' values, and a prescribed motion's rate enters
+//    quadratically and its acceleration linearly, so these central differences are exact too.
+//  - ∂/∂δq (and a prescribed motion's value): central differences with one Richardson
+//    extrapolation, R(h) = (4 D(h/2) − D(h)) / 3 = f' + O(h⁴); truncation ~h⁴ against round-off
+//    ~ε/h puts the best step near ε^(1/5) ≈ 7e-4 of the coordinate's scale: h = 1e-3 rad on
+//    angles and 1e-3·L on lengths, L the model's characteristic length. Error ~1e-12 relative.
+//
+// Prescribed motion as an input. A prescribed coordinate p(t) (a road profile under a tire)
+// acts through its value, rate and acceleration: δv̇ = … + b₀ δp + b₁ δṗ + b₂ δp̈. The input is
+// the position δp itself: the rate and acceleration terms are folded in exactly by shifting the
+// states, w = δx − E₁ δp − E₂ δṗ with E₂ = B₂, E₁ = A E₂ + B₁, which gives
+//     ẇ = A w + (B₀ + A E₁) δp,    δy = C w + (D₀ + C E₁) δp,
+// the same poles, the same transfer function C(sI − A)⁻¹(B₀ + B₁ s + B₂ s²) + D₀. Where the
+// prescribed motion acts through its position only (a tire as a pure spring on a separate
+// joint), E₁ = E₂ = 0 and the states are unchanged. An output that would feel δṗ or δp̈
+// directly (C E₂ + D₁ ≠ 0 or D₂ ≠ 0: a velocity carried by the prescribed joint) makes the
+// transfer function improper and is refused.
+
+#include <string>
+#include <vector>
+
+#include "momenta/analysis/modes.hpp"
+#include "momenta/analysis/state_space.hpp"
+#include "momenta/math/types.hpp"
+#include "momenta/model/model.hpp"
+#include "momenta/simulate/output.hpp"
+
+namespace momenta::analysis {
+
+/// A state of a model: time (signals are evaluated at t), configuration and velocity.
+struct OperatingPoint {
+  double t = 0.0;  ///< s
+  VecX q;          ///< nq
+  VecX v;          ///< nv
+};
+
+/// The model's initial state (each joint's q0 and v0) at t = 0.
+OperatingPoint initial_operating_point(const model::Model& model);
+
+/// What to linearize with respect to, and how.
+struct LinearizationOptions {
+  /// Inputs u: model signals by name (an applied load's value, or a prescribed motion), or a
+  /// prescribed coordinate by its name ("road.position", model::Model::q_name), which stands for
+  /// the signal driving it and keeps the name given. Empty: every signal of the model.
+  std::vector<std::string> inputs;
+  /// Outputs y: a column of `output_specs` ("tip.x"), a state ("hinge.angle",
+  /// "hinge.angle_rate"), or any model coordinate by name (model::Model::q_name / v_name, e.g. a
+  /// prescribed joint's "road.position" or a quaternion's "base.qw"). Empty: every column of
+  /// `output_specs`, or every configuration state when there are none.
+  std::vector<std::string> outputs;
+  /// The named model quantities `outputs` may refer to (a model file's `outputs:`).
+  std::vector<simulate::OutputSpec> output_specs;
+  /// Largest step of the configuration differences, rad on angles; 0: automatic (1e-3).
+  double angle_step = 0.0;
+  /// The same on lengths, m; 0: automatic (1e-3 · characteristic_length(model)).
+  double length_step = 0.0;
+};
+
+/// The linear model about one operating point.
+struct LinearModel {
+  /// ẋ = A x + B u, y = C x + D u, with every name: states "<joint>.<coordinate>" then
+  /// "<joint>.<coordinate>_rate" (model::Model::q_name / v_name; rotation tangents of ball and
+  /// free joints "<joint>.rx", ".ry", ".rz"), the inputs and outputs as requested. B and D hold
+  /// prescribed-motion inputs folded as the header comment says.
+  StateSpace system{MatX(), MatX(), MatX(), MatX()};
+  /// The point itself, its prescribed coordinates set from their signals.
+  OperatingPoint point;
+  /// v̇ at the point (nv); zero on the free coordinates at an equilibrium.
+  VecX acceleration;
+  /// y at the point (one per output).
+  VecX output_values;
+  /// The velocity index (into v) of each free coordinate; state i and state nf + i belong to
+  /// free coordinate i.
+  std::vector<int> coordinates;
+  /// Second-order form over the nf free coordinates,
+  ///   M δv̇ + damping δv + stiffness δq = −(∂r/∂u) δu − (∂r/∂u̇) δu̇ − (∂r/∂ü) δü,
+  /// mass = M_ff(q₀) (symmetric positive definite), stiffness = ∂r_f/∂δq and damping = ∂r_f/∂v
+  /// at v̇ = v̇₀ (damping includes gyroscopic terms when v₀ ≠ 0).
+  MatX mass, damping, stiffness;
+  /// The input columns before folding (n × m, rows over x): ∂ẋ/∂u (value), ∂ẋ/∂u̇ (rate) and
+  /// ∂ẋ/∂ü (acceleration); the last two are zero for load signals.
+  MatX input_value, input_rate, input_acceleration;
+  /// The same for the outputs (p × m).
+  MatX feedthrough_value, feedthrough_rate, feedthrough_acceleration;
+  /// True when a prescribed input's rate or acceleration enters, so that the states of `system`
+  /// are the shifted w = x − E₁ u − E₂ u̇ (see the header comment); A and the transfer functions
+  /// are unaffected.
+  bool states_shifted = false;
+};
+
+/// Linearizes `model` about `point` (q nq, v nv; quaternions unit to 1e-6) with respect to the
+/// inputs and outputs of `options`.
+/// Throws InvalidArgument on a state of the wrong size, an unknown input or output name (with a
+/// "did you mean"), a repeated name, an input that drives nothing, or an output that feels a
+/// prescribed input's rate or acceleration directly (an improper transfer function, named);
+/// NumericalError when the mass matrix of the free coordinates is not positive definite or a
+/// derivative is not finite.
+LinearModel linearize(const model::Model& model, const OperatingPoint& point,
+                      const LinearizationOptions& options = {});
+
+/// The model's characteristic length (m): the largest joint offset, centre-of-mass offset, radius
+/// of gyration, spring length or attachment offset; 1 m when all are zero. Sets the automatic
+/// length step of linearize().
+double characteristic_length(const model::Model& model);
+
+/// Names of the states linearize() gives `model`: the free coordinates' tangent names, then
+/// their velocity names.
+std::vector<std::string> linear_state_names(const model::Model& model);
+
+/// Undamped normal modes of M δq̈ + K δq = 0 from a linearization (mass and stiffness), named
+/// after the configuration states. K is symmetric for a conservative model at an equilibrium
+/// (the Hessian of the potential); its symmetric part is used after checking that the
+/// antisymmetric part is below 1e-6 of its largest entry (the finite-difference noise is
+/// ~1e-12). Throws InvalidArgument naming the largest asymmetry when it is not (follower loads,
+/// or a point that is not an equilibrium: use modes(linear.system)).
+NormalModes undamped_modes(const LinearModel& linear);
+
+}  // namespace momenta::analysis

@@ -1,0 +1,119 @@
+#pragma once
+// A Model as the second-order system the integrators advance: v̇ = a(t, q, v) from the model's
+// gravity, force elements (dynamics/force_elements.hpp) and prescribed joints (hybrid dynamics,
+// Featherstone 2008 §9.2).
+//
+// Prescribed joints. Their coordinates stay in q and v (so the state has the model's layout), but
+// every evaluation first overwrites them with their signals' values at t, and their acceleration
+// is the signals' second derivative: the prescribed motion is exact whatever the integrator's
+// error. apply_prescribed_motion() does the same to a state between steps so that what is
+// recorded is exact too.
+
+#include <limits>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "momenta/dynamics/data.hpp"
+#include "momenta/integrate/second_order_system.hpp"
+#include "momenta/model/model.hpp"
+
+namespace momenta::simulate {
+
+/// Energy of the system at one instant (J).
+struct Energy {
+  double kinetic = 0.0;            ///< ½ vᵀ M v
+  double potential_gravity = 0.0;  ///< −Σ m g · p_cm
+  double potential_springs = 0.0;  ///< ½ k (ℓ − ℓ0)² of every spring
+  double potential() const { return potential_gravity + potential_springs; }
+  double total() const { return kinetic + potential(); }
+};
+
+class MultibodySystem final : public integrate::SecondOrderSystem {
+ public:
+  /// Keeps a reference to `model` (it must outlive the system) and sizes every workspace. Throws
+  /// InvalidArgument, naming the joint and coordinate, when the mass matrix of the free
+  /// coordinates is singular at the initial configuration (dynamics::check_mass_matrix).
+  explicit MultibodySystem(const model::Model& model);
+
+  const model::Model& model() const { return model_; }
+
+  int nq() const override;
+  int nv() const override;
+
+  /// v̇ at (t, q, v): force elements at t, then hybrid_dynamics (plain ABA without prescribed
+  /// joints). Sizes q nq, v and vdot nv. The integrators' fast path: data() is left partly
+  /// updated (world poses only when some element acts on bodies; no body accelerations), so
+  /// read quantities after evaluate(). No allocation.
+  void acceleration(double t, const VecX& q, const VecX& v, VecX& vdot) override;
+  void integrate(const VecX& q, const VecX& dq, VecX& q_out) const override;
+  void local_coordinate_rate(const VecX& delta, const VecX& v, VecX& delta_rate) const override;
+  void configuration_scale(const VecX& q, VecX& scale) const override;
+  /// The first breakpoint of any of the model's signals after t (model::Signal::next_breakpoint):
+  /// integrate::run ends a step there.
+  double next_discontinuity(double t) const override;
+  /// Remembers t1: acceleration() at t ≥ t1 samples the signals from the left.
+  void begin_step(double t0, double t1) override;
+  /// The model's coordinate names ("hinge.q0", "base.v3").
+  std::string coordinate_name(int i, bool velocity) const override;
+
+  /// Sets the prescribed joints' coordinates of q and v to their signals' value and rate at t
+  /// (offsets included). No allocation.
+  void apply_prescribed_motion(double t, VecX& q, VecX& v) const;
+
+  /// Evaluates everything at (t, q, v) and leaves it in data(): kinematics (poses, velocities,
+  /// accelerations) of the state with the prescribed coordinates applied, the force elements' tau
+  /// and f_ext (element_forces(), external_wrenches()), vdot and data().tau, the total
+  /// generalized force on every coordinate: element_forces() on the free ones, and on the
+  /// prescribed ones the force their motion needs (rnea(q, v, vdot, f_ext) == data().tau; the
+  /// drive's own effort is data().tau − element_forces() there). Returns data().vdot. No
+  /// allocation.
+  const VecX& evaluate(double t, const VecX& q, const VecX& v);
+
+  /// After evaluate(): the workspace with every quantity of that instant.
+  const dynamics::Data& data() const { return data_; }
+  dynamics::Data& data() { return data_; }
+  /// After evaluate(): the force elements' generalized forces (size nv) and body wrenches.
+  const VecX& element_forces() const { return tau_elements_; }
+  std::span<const Vec6> external_wrenches() const { return f_ext_; }
+
+  /// Perturbations added to the signals: value, rate and acceleration offsets, one each per
+  /// model signal (model.signals()), zero by default. Linearization perturbs inputs through
+  /// these; a simulation leaves them at zero. Throws InvalidArgument on a size mismatch.
+  void set_signal_offsets(std::span<const double> value, std::span<const double> rate,
+                          std::span<const double> acceleration);
+  /// The signals' samples (with offsets) at the last evaluated instant.
+  std::span<const model::SignalSample> signal_samples() const { return samples_; }
+
+  /// Energy at (q, v) (prescribed coordinates as given). Overwrites data()'s poses and
+  /// velocities with those of (q, v). No allocation.
+  Energy energy(const VecX& q, const VecX& v);
+
+  /// True when total energy should be conserved: no prescribed joints, no dampers, friction or
+  /// applied loads.
+  bool conserves_energy() const { return conserves_energy_; }
+  /// True when the angular momentum about the system centre of mass (world frame) should be
+  /// conserved: additionally every joint on the world is free and no spring attaches to the world.
+  bool conserves_angular_momentum() const { return conserves_angular_momentum_; }
+
+ private:
+  // evaluate() without the bodies' accelerations: signals (from the side `limit` at a
+  // breakpoint), prescribed state, kinematics, force elements, forward dynamics.
+  const VecX& compute(double t, const VecX& q, const VecX& v, model::Limit limit);
+
+  const model::Model& model_;
+  dynamics::Data data_;
+  VecX q_, v_;            // the state with prescribed coordinates applied
+  VecX tau_elements_;     // force elements on the joints
+  VecX vdot_prescribed_;  // signals' accelerations at the prescribed coordinates
+  std::vector<Vec6> f_ext_;
+  std::vector<model::SignalSample> samples_;  // every signal at the current instant
+  std::vector<double> signal_values_;         // samples_[i].value, for force_element_forces
+  std::vector<model::SignalSample> offsets_;  // see set_signal_offsets
+  double step_end_ = std::numeric_limits<double>::infinity();  // see begin_step
+  bool body_loads_ = false;  // some element acts on bodies (needs poses; f_ext is not zero)
+  bool conserves_energy_ = false;
+  bool conserves_angular_momentum_ = false;
+};
+
+}  // namespace momenta::simulate

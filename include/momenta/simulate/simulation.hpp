@@ -1,0 +1,150 @@
+#pragma once
+// A simulation run: a Model integrated from its initial state, one table row recorded every n
+// steps (time, coordinates, energies, angular momentum, the model's outputs, optionally every
+// joint's reaction, and the conservation audit), handed to a RowSink (csv_writer.hpp writes CSV).
+// This is `momenta simulate` without the argument parsing (docs/cli.md).
+//
+// Columns, in order (column_names()):
+//   time                                   s
+//   <joint>.q<i>   every configuration coordinate, i its index within the joint (quaternions
+//                  w, x, y, z; model/joint.hpp)
+//   <joint>.v<i>   every velocity coordinate
+//   energy_kinetic, energy_potential, energy_total     J (potential: gravity and springs)
+//   H_x, H_y, H_z  angular momentum about the system centre of mass, in W (kg·m²/s)
+//   the model's outputs (OutputSet::column_names())
+//   with options.reactions: <joint>.reaction.Fx .Fy .Fz .Mx .My .Mz for every joint: the
+//                  wrench it transmits to its child, in W, the moment about the child-side joint
+//                  frame's origin J'o (dynamics/reactions.hpp)
+//   the audit, where audited (see below): audit.energy_drift, audit.H_norm_drift, audit.H_drift,
+//                  audit.quaternion_norm_error
+//
+// Conservation audit. Evaluated after every step (not only at recorded rows), without
+// allocation: the relative drift of the total energy where MultibodySystem::conserves_energy(),
+// of |H| and of the vector H where conserves_angular_momentum(), and the largest | |q| − 1 | of
+// the quaternions of spherical and free joints where the model has any. Energy drift is
+// (E − E0) / max(|E0|, E_scale) with E_scale = T0 + V_springs0 + Σ_b m_b |g| |p_WoBcm_W| (the
+// energy the motion could exchange, so that a model starting at E0 = 0 is not divided by zero);
+// |H| and H drift are (|H| − |H0|) / S and |H − H0| / S with S = max(|H0|, sqrt(2 T0 Σ_b
+// tr I_Bcm / 3)). The quaternion norm error is absolute.
+//
+// Prescribed joints. After every step the recorded copy of the state gets the prescribed
+// coordinates' exact values (MultibodySystem::apply_prescribed_motion); the integrator's own
+// state is left as it returned it.
+
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "momenta/integrate/integrator.hpp"
+#include "momenta/model/model.hpp"
+#include "momenta/simulate/conservation_audit.hpp"
+#include "momenta/simulate/output.hpp"
+
+namespace momenta::simulate {
+
+/// How a run is integrated and what it records. The defaults are `momenta simulate`'s.
+struct SimulationOptions {
+  double duration = 10.0;  ///< s, > 0: the run goes from t = 0 to t = duration
+  double step = 1e-3;      ///< s, > 0: the fixed step, or the largest step of an adaptive method
+  std::string integrator = "rk4";    ///< see simulation_integrator_names()
+  integrate::Tolerances tolerances;  ///< adaptive methods (dopri5) only
+  long every = 1;          ///< record every n-th step (≥ 1); the first and last states always
+  bool reactions = false;  ///< add every joint's reaction wrench to each row
+};
+
+/// Receives the table a run produces, row by row.
+class RowSink {
+ public:
+  virtual ~RowSink() = default;
+  /// Called once, before any row, with every column's name.
+  virtual void begin(std::span<const std::string> columns) = 0;
+  /// One row, values in column order. Called from the step loop.
+  virtual void row(std::span<const double> values) = 0;
+  /// Pushes buffered rows out: called at the end of a run and before a failed run throws.
+  virtual void flush() {}
+};
+
+/// Keeps the table in memory (allocates per row: for tests and short runs).
+class TableSink final : public RowSink {
+ public:
+  void begin(std::span<const std::string> columns) override;
+  void row(std::span<const double> values) override;
+
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+  /// Index of the column with that name; throws InvalidArgument (with a did-you-mean) if none.
+  int column(std::string_view name) const;
+};
+
+/// What a run did.
+struct SimulationSummary {
+  std::string integrator;  ///< its name
+  int order = 0;           ///< its order (kExactOrder of rigid_body_integrator.hpp: exact)
+  bool adaptive = false;
+  double step = 0.0;   ///< s: the fixed step, or the adaptive method's largest
+  double t_end = 0.0;  ///< s: the time reached
+  integrate::IntegratorStatistics statistics;
+  double wall_seconds = 0.0;
+  long rows = 0;  ///< rows handed to the sink
+  bool energy_audited = false;
+  bool momentum_audited = false;
+  bool quaternions_audited = false;
+  /// The audited quantities, in this order where audited: "energy", "|H|", "H", "quaternion
+  /// norm". final_drift is at t_end, max_drift the largest over every step.
+  std::vector<AuditEntry> audit;
+};
+
+/// The names of every integrator a simulation can use: the structure-preserving rigid-body
+/// methods (rigid_body_integrator.hpp) and integrate::integrator_names().
+std::vector<std::string_view> simulation_integrator_names();
+
+/// The integrator with that name: a rigid-body method first, else integrate::make_integrator.
+/// Throws InvalidArgument for an unknown name (with a did-you-mean over both lists) or a bad
+/// tolerance.
+std::unique_ptr<integrate::Integrator> make_simulation_integrator(
+    std::string_view name, const integrate::Tolerances& tolerances = {});
+
+class Simulation {
+ public:
+  /// Checks the options, resolves the outputs against `model` (which must outlive this) and
+  /// makes the integrator. Throws InvalidArgument naming the option and its value (duration or
+  /// step not positive and finite, every < 1, an unknown integrator) or the output at fault.
+  Simulation(const model::Model& model, std::vector<OutputSpec> outputs, SimulationOptions options);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  const SimulationOptions& options() const { return options_; }
+  /// Every column of a row, in order (see the file comment).
+  const std::vector<std::string>& column_names() const { return columns_; }
+  const OutputSet& outputs() const { return outputs_; }
+
+  /// Integrates from t = 0 and the model's initial state (quaternions normalized, prescribed
+  /// coordinates set from their signals) to options().duration, handing sink.begin() the
+  /// columns and sink.row() every recorded row, then flushes the sink. The step loop does not
+  /// allocate (the sink aside). May be called again; each call starts afresh.
+  ///
+  /// Throws NumericalError when the state stops being finite, naming the time, the coordinate
+  /// and a hint (integrate::run), with how many rows were written — after flushing the sink so
+  /// the rows up to then are kept; and what the integrator throws (a rigid-body method on a model
+  /// it does not apply to).
+  SimulationSummary run(RowSink& sink);
+
+ private:
+  class Recorder;
+
+  const model::Model& model_;
+  SimulationOptions options_;
+  OutputSet outputs_;
+  std::unique_ptr<integrate::Integrator> integrator_;
+  std::vector<std::string> columns_;
+};
+
+/// The summary as `momenta simulate` prints it on stderr: steps (accepted, rejected),
+/// evaluations, wall time, rows, and the audit (end and maximum drift, or why a quantity is not
+/// audited). Several lines, each ending in '\n'.
+std::string format_summary(const SimulationSummary& summary);
+
+}  // namespace momenta::simulate

@@ -1,0 +1,202 @@
+#include "momenta/io/model_file.hpp"
+
+#include <algorithm>
+#include <array>
+#include <numbers>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "model_file_internal.hpp"
+#include "momenta/common/error.hpp"
+#include "momenta/common/suggest.hpp"
+#include "momenta/dynamics/crba.hpp"
+#include "momenta/integrate/integrator.hpp"
+
+namespace momenta::io {
+namespace detail {
+
+// --- names ---------------------------------------------------------------------------------------
+
+void Declared::add(const std::string& name, const YamlNode& node, const YamlNode& name_node) {
+  if (name.empty()) name_node.fail(fmt::format("a {}'s name may not be empty", kind_));
+  if (const auto earlier = find(name)) {
+    name_node.fail(fmt::format("a second {} named '{}' (the first is at line {})", kind_, name,
+                               earlier->line()));
+  }
+  names_.push_back(name);
+  nodes_.emplace(name, node);
+}
+
+std::optional<YamlNode> Declared::find(std::string_view name) const {
+  const auto it = nodes_.find(name);
+  if (it == nodes_.end()) return std::nullopt;
+  return it->second;
+}
+
+std::string Declared::resolve(const YamlNode& ref, bool allow_world) const {
+  const std::string name = ref.as_string();
+  if (allow_world && name == model::kWorldBodyName) return name;
+  if (contains(name)) return name;
+  std::vector<std::string_view> candidates(names_.begin(), names_.end());
+  if (allow_world) candidates.insert(candidates.begin(), model::kWorldBodyName);
+  std::string known = candidates.empty() ? "none are declared" : "";
+  constexpr std::size_t kListed = 10;
+  for (std::size_t i = 0; i < std::min(candidates.size(), kListed); ++i) {
+    known += fmt::format("{}'{}'", i == 0 ? "" : ", ", candidates[i]);
+  }
+  if (candidates.size() > kListed) known += ", ...";
+  ref.fail(fmt::format("unknown {} '{}'{}; known: {}", kind_, name, did_you_mean(name, candidates),
+                       known));
+}
+
+std::string one_line(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  return text;
+}
+
+std::vector<YamlNode> list_section(const YamlNode& root, std::string_view key) {
+  const auto node = root.find(key);
+  if (!node || node->is_null()) return {};
+  return node->elements();
+}
+
+YamlNode name_node(const YamlNode& entry) {
+  const YamlNode name = entry.at("name");
+  if (!name.is_scalar()) name.fail("expected a name");
+  return name;
+}
+
+std::optional<VecX> find_coordinates(const YamlNode& map, std::string_view key,
+                                     bool degrees_allowed, std::string_view why_not_degrees) {
+  const std::string deg = fmt::format("{}_deg", key);
+  const std::array<std::string_view, 2> names = {key, deg};
+  const auto which = map.which_of(names);
+  if (!which) return std::nullopt;
+  const YamlNode node = map.at(*which);
+  if (*which == deg && !degrees_allowed) {
+    node.fail(fmt::format("degrees are not allowed here ({}): give '{}' in SI units",
+                          why_not_degrees, key));
+  }
+  VecX values = node.is_sequence() ? node.as_vector() : VecX::Constant(1, node.as_double());
+  if (*which == deg) values *= std::numbers::pi / 180.0;
+  return values;
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::Context;
+
+constexpr std::array<std::string_view, 9> kFileKeys = {"name",   "description", "gravity",
+                                                       "bodies", "joints",      "forces",
+                                                       "inputs", "outputs",     "simulation"};
+
+// `simulation:` — defaults for `momenta simulate`.
+SimulationSettings read_simulation(const YamlNode& root) {
+  SimulationSettings s;
+  const auto node = root.find("simulation");
+  if (!node || node->is_null()) return s;
+  node->expect_map("a map {duration, step, integrator, rtol, atol, every}");
+  node->check_keys({"duration", "step", "integrator", "rtol", "atol", "every"});
+  s.duration = node->find_number("duration", Bound::kPositive);
+  s.step = node->find_number("step", Bound::kPositive);
+  s.relative_tolerance = node->find_number("rtol", Bound::kPositive);
+  s.absolute_tolerance = node->find_number("atol", Bound::kPositive);
+  if (const auto integrator = node->find("integrator")) {
+    const std::string name = integrator->as_string();
+    const auto& names = integrate::integrator_names();
+    if (std::find(names.begin(), names.end(), name) == names.end()) {
+      integrator->fail(fmt::format("unknown integrator '{}'{}; known: {}", name,
+                                   did_you_mean(name, names), fmt::join(names, ", ")));
+    }
+    s.integrator = name;
+  }
+  if (const auto every = node->find("every")) {
+    const long long n = every->as_integer();
+    if (n < 1) every->fail(fmt::format("must be a whole number >= 1, got {}", n));
+    s.every = static_cast<long>(n);
+  }
+  if (s.step && s.duration && *s.step > *s.duration) {
+    node->at("step").fail(
+        fmt::format("step {} s is longer than the duration {} s", *s.step, *s.duration));
+  }
+  return s;
+}
+
+// ModelBuilder::build() names what it rejects ("joint 'hinge': ...", "body 'rod' ...", "force
+// element 'spring' ..."): the declaring node of the first thing named, if the file declares it.
+std::optional<YamlNode> named_in(const std::string& message, const Context& ctx) {
+  const std::array<std::pair<std::string_view, const detail::Declared*>, 4> kinds = {
+      {{"force element '", &ctx.forces},
+       {"joint '", &ctx.joints},
+       {"body '", &ctx.bodies},
+       {"signal '", &ctx.signals}}};
+  std::size_t first = std::string::npos;
+  std::optional<YamlNode> node;
+  for (const auto& [prefix, declared] : kinds) {
+    const std::size_t at = message.find(prefix);
+    if (at == std::string::npos || at >= first) continue;
+    const std::size_t begin = at + prefix.size();
+    const std::size_t end = message.find('\'', begin);
+    if (end == std::string::npos) continue;
+    if (const auto found = declared->find(std::string_view(message).substr(begin, end - begin))) {
+      first = at;
+      node = found;
+    }
+  }
+  return node;
+}
+
+ModelFile compose(const YamlNode& root, const std::filesystem::path& base_dir) {
+  root.expect_map("a model file: a map with 'bodies' and 'joints'");
+  root.check_keys(kFileKeys);
+
+  std::string name =
+      root.find_string("name").value_or(std::filesystem::path(root.file()).stem().string());
+  std::string description = root.find_string("description").value_or("");
+
+  Context ctx;
+  ctx.base_dir = base_dir;
+  model::ModelBuilder builder;
+  builder.set_gravity(root.find_vec3("gravity").value_or(Vec3(0, 0, -9.81)));
+
+  // Signals first (joints and forces name them), then the tree, then what acts on it.
+  detail::read_signals(root, ctx, builder);
+  detail::read_bodies(root, ctx, builder);
+  detail::read_joints(root, ctx, builder);
+  detail::read_forces(root, ctx, builder);
+
+  // What the reader did not check itself, the builder does, and the mass matrix at the initial
+  // configuration must be invertible: report either at the line of what it names.
+  model::Model model = [&] {
+    try {
+      model::Model built = builder.build();
+      dynamics::check_mass_matrix(built, built.initial_q());
+      return built;
+    } catch (const InvalidArgument& e) {
+      const std::string message = detail::one_line(e.what());
+      const auto node = named_in(message, ctx);
+      throw node ? node->error(message) : root.error(message);
+    }
+  }();
+
+  std::vector<simulate::OutputSpec> outputs = detail::read_outputs(root, ctx, model);
+  SimulationSettings simulation = read_simulation(root);
+  return ModelFile{std::move(name), std::move(description), std::move(model), std::move(outputs),
+                   simulation};
+}
+
+}  // namespace
+
+ModelFile read_model_file(const std::filesystem::path& path) {
+  return compose(YamlNode::load_file(path), path.parent_path());
+}
+
+ModelFile parse_model_file(const std::string& text, const std::string& file_name,
+                           const std::filesystem::path& base_dir) {
+  return compose(YamlNode::load_string(text, file_name), base_dir);
+}
+
+}  // namespace momenta::io

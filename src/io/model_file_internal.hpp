@@ -1,0 +1,82 @@
+#pragma once
+// Shared pieces of the model-file reader (model_file*.cpp): where every named thing was declared,
+// name look-ups that fail at the referencing line with a did-you-mean, and the section readers.
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "momenta/io/model_file.hpp"
+#include "momenta/io/yaml_reader.hpp"
+#include "momenta/model/model_builder.hpp"
+
+namespace momenta::io::detail {
+
+/// The things of one kind declared in a file (bodies, joints, force elements, signals): their
+/// names in file order and the node that declared each, for messages at its line.
+class Declared {
+ public:
+  /// `kind` names the kind in messages ("body", "joint", ...).
+  explicit Declared(std::string kind) : kind_(std::move(kind)) {}
+
+  /// Records `name` declared by `node` (the list entry); throws at `name_node` if it is empty or
+  /// repeats an earlier one (naming that one's line).
+  void add(const std::string& name, const YamlNode& node, const YamlNode& name_node);
+
+  /// The declaring node of `name`, or nothing.
+  std::optional<YamlNode> find(std::string_view name) const;
+  bool contains(std::string_view name) const { return find(name).has_value(); }
+  const std::vector<std::string>& names() const { return names_; }
+
+  /// The name `ref` (a scalar) holds, which must be declared (or be "world" when `allow_world`);
+  /// throws at `ref`: "unknown body 'wheal' (did you mean 'wheel'?); bodies: ...".
+  std::string resolve(const YamlNode& ref, bool allow_world = false) const;
+
+ private:
+  std::string kind_;
+  std::vector<std::string> names_;
+  std::map<std::string, YamlNode, std::less<>> nodes_;
+};
+
+/// What the readers share while reading one file.
+struct Context {
+  std::filesystem::path base_dir;
+  Declared bodies{"body"};
+  Declared joints{"joint"};
+  Declared forces{"force element"};
+  Declared signals{"signal"};
+  /// Joint types by joint name (for checks that need them before the model is built).
+  std::map<std::string, model::JointType, std::less<>> joint_types;
+};
+
+/// Messages must stay on one line: a wrapped library message could carry a newline.
+std::string one_line(std::string text);
+
+/// A list section: its elements, or none when the key is absent or empty (`forces:`). Throws
+/// unless it is a list.
+std::vector<YamlNode> list_section(const YamlNode& root, std::string_view key);
+
+/// An entry's `name:` node (required, a non-empty scalar).
+YamlNode name_node(const YamlNode& entry);
+
+/// `inputs:` — every signal, added to the builder and to ctx.signals.
+void read_signals(const YamlNode& root, Context& ctx, model::ModelBuilder& builder);
+/// `bodies:` and `joints:` — added to the builder and ctx; the joints are checked to form a tree
+/// rooted at the world, with every body carried by exactly one joint.
+void read_bodies(const YamlNode& root, Context& ctx, model::ModelBuilder& builder);
+void read_joints(const YamlNode& root, Context& ctx, model::ModelBuilder& builder);
+/// `forces:` — every force element.
+void read_forces(const YamlNode& root, Context& ctx, model::ModelBuilder& builder);
+/// `outputs:` — checked against the built model.
+std::vector<simulate::OutputSpec> read_outputs(const YamlNode& root, const Context& ctx,
+                                               const model::Model& model);
+
+/// A list of numbers or a single number (one coordinate), with its unit converted: `key` in SI or
+/// `key_deg` in degrees where `degrees_allowed`. Nothing when neither key is present.
+std::optional<VecX> find_coordinates(const YamlNode& map, std::string_view key,
+                                     bool degrees_allowed, std::string_view why_not_degrees);
+
+}  // namespace momenta::io::detail

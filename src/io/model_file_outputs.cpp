@@ -1,0 +1,193 @@
+// Model files, `outputs:`: the named quantities `momenta simulate` records and `momenta linearize`
+// takes as outputs, checked against the built model.
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <string_view>
+#include <utility>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "model_file_internal.hpp"
+#include "momenta/common/error.hpp"
+#include "momenta/common/suggest.hpp"
+
+namespace momenta::io::detail {
+namespace {
+
+using simulate::OutputQuantity;
+using Q = OutputQuantity;
+
+// The quantities of each kind of target, by their names in the file.
+struct Target {
+  std::string_view key;  // "body", "joint", "signal", "spring"
+  std::vector<std::pair<std::string_view, OutputQuantity>> quantities;
+};
+
+const std::array<Target, 4>& targets() {
+  static const std::array<Target, 4> table = {{
+      {"body",
+       {{"position", Q::body_position},
+        {"velocity", Q::body_velocity},
+        {"acceleration", Q::body_acceleration},
+        {"angular_velocity", Q::body_angular_velocity}}},
+      {"joint",
+       {{"position", Q::joint_position},
+        {"velocity", Q::joint_velocity},
+        {"effort", Q::joint_effort},
+        {"reaction_force", Q::reaction_force},
+        {"reaction_moment", Q::reaction_moment}}},
+      {"signal", {{"signal", Q::signal}}},
+      {"spring", {{"spring_length", Q::spring_length}, {"spring_tension", Q::spring_tension}}},
+  }};
+  return table;
+}
+
+bool is_vector(OutputQuantity q) {
+  return q == Q::body_position || q == Q::body_velocity || q == Q::body_acceleration ||
+         q == Q::body_angular_velocity || q == Q::reaction_force || q == Q::reaction_moment;
+}
+bool is_reaction(OutputQuantity q) { return q == Q::reaction_force || q == Q::reaction_moment; }
+bool at_point(OutputQuantity q) {
+  return q == Q::body_position || q == Q::body_velocity || q == Q::body_acceleration;
+}
+
+OutputQuantity read_quantity(const YamlNode& e, const Target& target) {
+  const auto node = e.find("quantity");
+  if (!node) {
+    if (target.key == "signal") return Q::signal;
+    e.fail(fmt::format("an output of a {} needs a 'quantity'", target.key));
+  }
+  const std::string name = node->as_string();
+  std::vector<std::string_view> names;
+  for (const auto& [n, q] : target.quantities) {
+    if (n == name) return q;
+    names.push_back(n);
+  }
+  node->fail(fmt::format("'{}' is not a quantity of a {}{}; a {} has {}", name, target.key,
+                         did_you_mean(name, names), target.key, fmt::join(names, ", ")));
+}
+
+dynamics::ReactionFrame read_reaction_frame(const YamlNode& node) {
+  const std::string frame = node.as_string();
+  constexpr std::array<std::pair<std::string_view, dynamics::ReactionFrame>, 4> kFrames = {
+      {{"world", dynamics::ReactionFrame::world},
+       {"joint", dynamics::ReactionFrame::joint},
+       {"child", dynamics::ReactionFrame::child},
+       {"parent", dynamics::ReactionFrame::parent}}};
+  for (const auto& [n, f] : kFrames) {
+    if (n == frame) return f;
+  }
+  const std::array<std::string_view, 4> names = {"world", "joint", "child", "parent"};
+  node.fail(
+      fmt::format("unknown frame '{}'{}; expected world, joint (the child-side joint frame "
+                  "J'), child or parent",
+                  frame, did_you_mean(frame, names)));
+}
+
+// x | y | z of a vector; a coordinate index 0 .. n−1 of a joint quantity.
+int read_component(const YamlNode& node, const simulate::OutputSpec& spec,
+                   const model::Model& model) {
+  if (is_vector(spec.quantity)) {
+    const std::string axis = node.as_string();
+    if (axis == "x" || axis == "y" || axis == "z") return axis[0] - 'x';
+    node.fail(fmt::format("component '{}' of a vector must be x, y or z", axis));
+  }
+  if (spec.quantity == Q::signal || spec.quantity == Q::spring_length ||
+      spec.quantity == Q::spring_tension) {
+    node.fail("this quantity is a single number: it has no components");
+  }
+  const model::Joint& joint = model.joint(model.joint_index(spec.target));
+  const bool q = spec.quantity == Q::joint_position;
+  const int n = q ? joint.nq() : joint.nv();
+  std::string names;
+  for (int i = 0; i < n; ++i) {
+    names += fmt::format("{}{} ({})", i == 0 ? "" : ", ", i,
+                         q ? model.q_name(joint.q_index + i) : model.v_name(joint.v_index + i));
+  }
+  const long long i = node.as_integer();
+  if (i < 0 || i >= n) {
+    node.fail(fmt::format("coordinate {} is out of range: joint '{}' has {}{}", i, joint.name,
+                          n == 0 ? "none" : fmt::format("{}: ", n), names));
+  }
+  return static_cast<int>(i);
+}
+
+simulate::OutputSpec read_output(const YamlNode& e, const Context& ctx, const model::Model& model) {
+  e.expect_map("an output: a map with a target ('body', 'joint', 'signal', 'spring')");
+  e.check_keys(
+      {"name", "quantity", "body", "joint", "signal", "spring", "point", "component", "frame"});
+  const auto key = e.which_of({"body", "joint", "signal", "spring"});
+  if (!key) {
+    e.fail("an output needs one target: 'body', 'joint', 'signal' or 'spring' (a spring_damper)");
+  }
+  const Target& target = *std::find_if(targets().begin(), targets().end(),
+                                       [&](const Target& t) { return t.key == *key; });
+  simulate::OutputSpec spec;
+  spec.quantity = read_quantity(e, target);
+
+  // The target, by name.
+  const YamlNode ref = e.at(*key);
+  if (*key == "body") {
+    spec.target = ctx.bodies.resolve(ref);
+  } else if (*key == "joint") {
+    spec.target = ctx.joints.resolve(ref);
+  } else if (*key == "signal") {
+    spec.target = ctx.signals.resolve(ref);
+  } else {
+    spec.target = ctx.forces.resolve(ref);
+    const auto& elements = model.force_elements();
+    const auto element = std::find_if(elements.begin(), elements.end(), [&](const auto& f) {
+      return model::force_element_name(f) == spec.target;
+    });
+    if (!std::holds_alternative<model::LinearSpringDamper>(*element)) {
+      ref.fail(
+          fmt::format("force element '{}' is not a spring_damper: only those have a length "
+                      "and a tension",
+                      spec.target));
+    }
+  }
+
+  // Where, in which frame, which component.
+  if (const auto point = e.find("point")) {
+    if (!at_point(spec.quantity)) {
+      point->fail("only a body's position, velocity and acceleration are taken at a point");
+    }
+    spec.point = point->as_vec3();
+  }
+  if (const auto frame = e.find("frame")) {
+    if (!is_reaction(spec.quantity)) frame->fail("only reactions take a 'frame'");
+    spec.frame = read_reaction_frame(*frame);
+  }
+  if (const auto component = e.find("component")) {
+    spec.component = read_component(*component, spec, model);
+  }
+  spec.name = e.find_string("name").value_or(
+      spec.quantity == Q::signal ? spec.target
+                                 : fmt::format("{}.{}", spec.target, e.at("quantity").as_string()));
+  return spec;
+}
+
+}  // namespace
+
+std::vector<simulate::OutputSpec> read_outputs(const YamlNode& root, const Context& ctx,
+                                               const model::Model& model) {
+  std::vector<simulate::OutputSpec> specs;
+  std::map<std::string, int, std::less<>> line_of_name;
+  for (const YamlNode& e : list_section(root, "outputs")) {
+    simulate::OutputSpec spec = read_output(e, ctx, model);
+    const auto [it, inserted] = line_of_name.emplace(spec.name, e.line());
+    if (!inserted) {
+      (e.has("name") ? e.at("name") : e)
+          .fail(fmt::format("a second output named '{}' (the first is at line {}): give each a "
+                            "distinct 'name'",
+                            spec.name, it->second));
+    }
+    specs.push_back(std::move(spec));
+  }
+  return specs;
+}
+
+}  // namespace momenta::io::detail

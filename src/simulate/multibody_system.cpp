@@ -1,0 +1,212 @@
+#include "momenta/simulate/multibody_system.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "momenta/common/error.hpp"
+#include "momenta/dynamics/aba.hpp"
+#include "momenta/dynamics/crba.hpp"
+#include "momenta/dynamics/energy.hpp"
+#include "momenta/dynamics/force_elements.hpp"
+#include "momenta/dynamics/hybrid_dynamics.hpp"
+#include "momenta/dynamics/kinematics.hpp"
+
+namespace momenta::simulate {
+
+namespace {
+
+// A signal's sample plus its offsets (the linearization's perturbation; zero in a simulation).
+model::SignalSample offset_sample(const model::Signal& signal, const model::SignalSample& offset,
+                                  double t, model::Limit limit = model::Limit::right) {
+  const model::SignalSample s = signal.sample(t, limit);
+  return {s.value + offset.value, s.rate + offset.rate, s.acceleration + offset.acceleration};
+}
+
+// Writes a prescribed joint's signals (value, rate) into its coordinates of q and v.
+template <class Samples>
+void write_prescribed(const model::Model& model, const Samples& sample_of, VecX& q, VecX& v) {
+  for (const model::Joint& j : model.joints()) {
+    if (!j.is_prescribed()) continue;
+    for (int k = 0; k < j.nv(); ++k) {
+      const model::SignalSample s = sample_of(j.prescribed_signal_indices[k]);
+      q[j.q_index + k] = s.value;
+      v[j.v_index + k] = s.rate;
+    }
+  }
+}
+
+}  // namespace
+
+MultibodySystem::MultibodySystem(const model::Model& model)
+    : model_(model),
+      data_(model),
+      q_(model.initial_q()),
+      v_(model.initial_v()),
+      tau_elements_(VecX::Zero(model.nv())),
+      vdot_prescribed_(VecX::Zero(model.nv())),
+      f_ext_(model.num_bodies(), Vec6::Zero()),
+      samples_(model.signals().size(), model::SignalSample{0.0, 0.0, 0.0}),
+      signal_values_(model.signals().size(), 0.0),
+      offsets_(model.signals().size(), model::SignalSample{0.0, 0.0, 0.0}) {
+  // Forward dynamics needs an invertible mass matrix: say which coordinate has no inertia now,
+  // rather than return NaN accelerations later.
+  dynamics::check_mass_matrix(model, model.initial_q());
+  conserves_energy_ =
+      !model.has_prescribed_joints() && dynamics::force_elements_conservative(model);
+  // Angular momentum about the centre of mass: besides conserving energy, no body may be held
+  // by the world — every joint on the world free, no spring attached to the world. Uniform
+  // gravity acts at the centre of mass and exerts no moment about it.
+  bool floating = true;
+  for (const model::Joint& j : model.joints()) {
+    if (j.parent_index == 0 && j.type != model::JointType::free) floating = false;
+  }
+  for (const model::ForceElement& element : model.force_elements()) {
+    if (const auto* s = std::get_if<model::LinearSpringDamper>(&element)) {
+      if (s->a.body_index == 0 || s->b.body_index == 0) floating = false;
+    } else if (const auto* t = std::get_if<model::TorsionalSpringDamper>(&element)) {
+      if (t->joint_index < 0 && (t->body_a_index == 0 || t->body_b_index == 0)) floating = false;
+    }
+  }
+  conserves_angular_momentum_ = conserves_energy_ && floating;
+  for (const model::ForceElement& element : model.force_elements()) {
+    const auto* t = std::get_if<model::TorsionalSpringDamper>(&element);
+    const bool on_joint = std::holds_alternative<model::JointFriction>(element) ||
+                          (t != nullptr && t->joint_index >= 0);
+    if (!on_joint) body_loads_ = true;
+  }
+}
+
+int MultibodySystem::nq() const { return model_.nq(); }
+int MultibodySystem::nv() const { return model_.nv(); }
+
+const VecX& MultibodySystem::compute(double t, const VecX& q, const VecX& v, model::Limit limit) {
+  // Every signal once at t (offsets added), from the side `limit` says at a breakpoint.
+  const auto& signals = model_.signals();
+  for (std::size_t i = 0; i < signals.size(); ++i) {
+    samples_[i] = offset_sample(signals[i], offsets_[i], t, limit);
+    signal_values_[i] = samples_[i].value;
+  }
+
+  // The state with the prescribed coordinates taken from their signals; their accelerations too.
+  q_ = q;
+  v_ = v;
+  const bool prescribed = model_.has_prescribed_joints();
+  if (prescribed) {
+    write_prescribed(
+        model_, [this](int s) { return samples_[s]; }, q_, v_);
+    for (const model::Joint& j : model_.joints()) {
+      for (int k = 0; k < static_cast<int>(j.prescribed_signal_indices.size()); ++k) {
+        vdot_prescribed_[j.v_index + k] = samples_[j.prescribed_signal_indices[k]].acceleration;
+      }
+    }
+  }
+
+  // The force elements. Those on bodies read the poses and velocities of forward kinematics;
+  // without any, only joint-space elements remain (they read q and v alone), kinematics is left
+  // to the dynamics algorithm, and the zero wrenches are not passed on.
+  if (body_loads_) dynamics::forward_kinematics(model_, data_, q_, v_);
+  dynamics::force_element_forces(model_, data_, signal_values_, q_, v_, tau_elements_, f_ext_);
+  const std::span<const Vec6> f_ext =
+      body_loads_ ? std::span<const Vec6>(f_ext_) : std::span<const Vec6>();
+
+  // Forward dynamics; hybrid where joints are prescribed (it also fills data_.tau with the
+  // generalized forces the prescription needs).
+  if (prescribed) {
+    dynamics::hybrid_dynamics(model_, data_, q_, v_, vdot_prescribed_, tau_elements_, f_ext);
+  } else {
+    dynamics::aba(model_, data_, q_, v_, tau_elements_, f_ext);
+    data_.tau = tau_elements_;
+  }
+  return data_.vdot;
+}
+
+const VecX& MultibodySystem::evaluate(double t, const VecX& q, const VecX& v) {
+  compute(t, q, v, model::Limit::right);
+  dynamics::forward_kinematics(model_, data_, q_, v_, data_.vdot);
+  return data_.vdot;
+}
+
+void MultibodySystem::acceleration(double t, const VecX& q, const VecX& v, VecX& vdot) {
+  // At the end of the announced step the inputs are taken from the left: the step integrated
+  // them over the interval that ends there (see begin_step).
+  vdot = compute(t, q, v, t >= step_end_ ? model::Limit::left : model::Limit::right);
+}
+
+double MultibodySystem::next_discontinuity(double t) const {
+  double next = std::numeric_limits<double>::infinity();
+  for (const model::Signal& signal : model_.signals()) {
+    next = std::min(next, signal.next_breakpoint(t));
+  }
+  return next;
+}
+
+void MultibodySystem::begin_step(double t0, double t1) {
+  (void)t0;
+  step_end_ = t1;
+}
+
+void MultibodySystem::integrate(const VecX& q, const VecX& dq, VecX& q_out) const {
+  model::integrate(model_, q, dq, 1.0, q_out);
+}
+
+void MultibodySystem::local_coordinate_rate(const VecX& delta, const VecX& v,
+                                            VecX& delta_rate) const {
+  model::local_coordinate_rate(model_, delta, v, delta_rate);
+}
+
+void MultibodySystem::configuration_scale(const VecX& q, VecX& scale) const {
+  // |q_i| on vector-space coordinates; 1 rad on the rotation coordinates of ball and free joints
+  // (their tangent coordinates have no configuration value of their own).
+  scale.resize(model_.nv());
+  for (const model::Joint& j : model_.joints()) {
+    switch (j.type) {
+      case model::JointType::spherical:
+        scale.segment<3>(j.v_index).setOnes();
+        break;
+      case model::JointType::free:
+        scale.segment<3>(j.v_index).setOnes();
+        scale.segment<3>(j.v_index + 3) = q.segment<3>(j.q_index).cwiseAbs();
+        break;
+      default:
+        scale.segment(j.v_index, j.nv()) = q.segment(j.q_index, j.nq()).cwiseAbs();
+        break;
+    }
+  }
+}
+
+std::string MultibodySystem::coordinate_name(int i, bool velocity) const {
+  return velocity ? model_.v_name(i) : model_.q_name(i);
+}
+
+void MultibodySystem::apply_prescribed_motion(double t, VecX& q, VecX& v) const {
+  if (!model_.has_prescribed_joints()) return;
+  write_prescribed(
+      model_, [&](int s) { return offset_sample(model_.signals()[s], offsets_[s], t); }, q, v);
+}
+
+void MultibodySystem::set_signal_offsets(std::span<const double> value,
+                                         std::span<const double> rate,
+                                         std::span<const double> acceleration) {
+  const std::size_t n = model_.signals().size();
+  if (value.size() != n || rate.size() != n || acceleration.size() != n) {
+    throw InvalidArgument(fmt::format(
+        "set_signal_offsets: {} value, {} rate and {} acceleration offsets; the model has {} "
+        "signals (one of each per signal)",
+        value.size(), rate.size(), acceleration.size(), n));
+  }
+  for (std::size_t i = 0; i < n; ++i) offsets_[i] = {value[i], rate[i], acceleration[i]};
+}
+
+Energy MultibodySystem::energy(const VecX& q, const VecX& v) {
+  dynamics::forward_kinematics(model_, data_, q, v);
+  Energy e;
+  e.kinetic = dynamics::kinetic_energy(model_, static_cast<const dynamics::Data&>(data_));
+  e.potential_gravity =
+      dynamics::potential_energy(model_, static_cast<const dynamics::Data&>(data_));
+  e.potential_springs = dynamics::spring_potential_energy(model_, data_, q);
+  return e;
+}
+
+}  // namespace momenta::simulate

@@ -1,0 +1,313 @@
+#include "momenta/simulate/output.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <set>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "momenta/common/error.hpp"
+#include "momenta/common/suggest.hpp"
+#include "momenta/dynamics/point_kinematics.hpp"
+#include "momenta/simulate/multibody_system.hpp"
+
+namespace momenta::simulate {
+
+namespace {
+
+// What kind of model item a quantity is of.
+enum class TargetKind { joint, body, signal, element };
+
+TargetKind target_kind(OutputQuantity quantity) {
+  switch (quantity) {
+    case OutputQuantity::joint_position:
+    case OutputQuantity::joint_velocity:
+    case OutputQuantity::joint_effort:
+    case OutputQuantity::reaction_force:
+    case OutputQuantity::reaction_moment:
+      return TargetKind::joint;
+    case OutputQuantity::body_position:
+    case OutputQuantity::body_velocity:
+    case OutputQuantity::body_acceleration:
+    case OutputQuantity::body_angular_velocity:
+      return TargetKind::body;
+    case OutputQuantity::signal:
+      return TargetKind::signal;
+    case OutputQuantity::spring_length:
+    case OutputQuantity::spring_tension:
+      return TargetKind::element;
+  }
+  return TargetKind::joint;
+}
+
+const char* target_kind_name(TargetKind kind) {
+  switch (kind) {
+    case TargetKind::joint:
+      return "joint";
+    case TargetKind::body:
+      return "body";
+    case TargetKind::signal:
+      return "signal";
+    case TargetKind::element:
+      return "force element";
+  }
+  return "";
+}
+
+bool is_vector(OutputQuantity quantity) {
+  const TargetKind kind = target_kind(quantity);
+  return kind == TargetKind::body || quantity == OutputQuantity::reaction_force ||
+         quantity == OutputQuantity::reaction_moment;
+}
+
+// Names of the model's items of one kind, for did-you-mean suggestions.
+std::vector<std::string_view> candidate_names(const model::Model& model, TargetKind kind) {
+  std::vector<std::string_view> names;
+  switch (kind) {
+    case TargetKind::joint:
+      for (const model::Joint& j : model.joints()) names.push_back(j.name);
+      break;
+    case TargetKind::body:
+      for (const model::Body& b : model.bodies()) names.push_back(b.name);
+      break;
+    case TargetKind::signal:
+      for (const model::Signal& s : model.signals()) names.push_back(s.name());
+      break;
+    case TargetKind::element:
+      for (const model::ForceElement& e : model.force_elements())
+        names.push_back(model::force_element_name(e));
+      break;
+  }
+  return names;
+}
+
+// Index of the target, or a message naming the output and the nearest name.
+int resolve_target(const model::Model& model, const OutputSpec& spec, TargetKind kind) {
+  const std::vector<std::string_view> names = candidate_names(model, kind);
+  const auto it = std::find(names.begin(), names.end(), spec.target);
+  if (it != names.end()) return static_cast<int>(it - names.begin());
+  throw InvalidArgument(fmt::format("output '{}': {} of unknown {} '{}'{}", spec.name,
+                                    output_quantity_name(spec.quantity), target_kind_name(kind),
+                                    spec.target, did_you_mean(spec.target, names)));
+}
+
+// Position and velocity of the point p_BoP_B of body b, in W, after forward_kinematics(q, v).
+void point_motion(const dynamics::Data& data, int b, const Vec3& p_BoP_B, Vec3& p_WoP_W,
+                  Vec3& v_WP_W) {
+  const Transform& X = data.X_WB[b];
+  const Vec6& V = data.V_WB_B[b];
+  p_WoP_W = X.apply(p_BoP_B);
+  v_WP_W = X.R * (V.tail<3>() + V.head<3>().cross(p_BoP_B));
+}
+
+}  // namespace
+
+std::string_view output_quantity_name(OutputQuantity quantity) {
+  switch (quantity) {
+    case OutputQuantity::joint_position:
+    case OutputQuantity::body_position:
+      return "position";
+    case OutputQuantity::joint_velocity:
+    case OutputQuantity::body_velocity:
+      return "velocity";
+    case OutputQuantity::joint_effort:
+      return "effort";
+    case OutputQuantity::body_acceleration:
+      return "acceleration";
+    case OutputQuantity::body_angular_velocity:
+      return "angular_velocity";
+    case OutputQuantity::reaction_force:
+      return "reaction_force";
+    case OutputQuantity::reaction_moment:
+      return "reaction_moment";
+    case OutputQuantity::signal:
+      return "signal";
+    case OutputQuantity::spring_length:
+      return "spring_length";
+    case OutputQuantity::spring_tension:
+      return "spring_tension";
+  }
+  return "";
+}
+
+OutputSet::OutputSet(const model::Model& model, std::vector<OutputSpec> specs)
+    : specs_(std::move(specs)), nq_(model.nq()), nv_(model.nv()) {
+  static constexpr std::array<const char*, 3> kAxes = {"x", "y", "z"};
+  std::set<std::string, std::less<>> seen;
+  for (int s = 0; s < static_cast<int>(specs_.size()); ++s) {
+    const OutputSpec& spec = specs_[s];
+    const std::string_view quantity = output_quantity_name(spec.quantity);
+    if (spec.name.empty()) {
+      throw InvalidArgument(
+          fmt::format("output {} ({} of '{}'): the name is empty", s, quantity, spec.target));
+    }
+    const TargetKind kind = target_kind(spec.quantity);
+    const int index = resolve_target(model, spec, kind);
+    if (kind != TargetKind::body && !spec.point.isZero(0.0)) {
+      throw InvalidArgument(fmt::format(
+          "output '{}': a point [{}, {}, {}] applies only to body quantities, not to the {} of {} "
+          "'{}'",
+          spec.name, spec.point.x(), spec.point.y(), spec.point.z(), quantity,
+          target_kind_name(kind), spec.target));
+    }
+    if (!spec.point.allFinite()) {
+      throw InvalidArgument(fmt::format("output '{}': the point [{}, {}, {}] is not finite",
+                                        spec.name, spec.point.x(), spec.point.y(), spec.point.z()));
+    }
+
+    // How many values the quantity has, and how its columns are suffixed.
+    int count = 1;
+    bool by_axis = false;
+    if (is_vector(spec.quantity)) {
+      count = 3;
+      by_axis = true;
+    } else if (kind == TargetKind::joint) {
+      const model::Joint& joint = model.joint(index);
+      count = spec.quantity == OutputQuantity::joint_position ? joint.nq() : joint.nv();
+      if (count == 0) {
+        throw InvalidArgument(fmt::format("output '{}': joint '{}' is {}: it has no coordinates",
+                                          spec.name, joint.name,
+                                          model::joint_type_name(joint.type)));
+      }
+    } else if (kind == TargetKind::element) {
+      const model::ForceElement& element = model.force_elements()[index];
+      if (!std::holds_alternative<model::LinearSpringDamper>(element)) {
+        throw InvalidArgument(
+            fmt::format("output '{}': {} applies to a linear spring-damper, and '{}' is not one",
+                        spec.name, quantity, spec.target));
+      }
+    }
+    if (spec.component < -1 || spec.component >= count || (count == 1 && spec.component > 0)) {
+      throw InvalidArgument(fmt::format(
+          "output '{}': component {} is out of range: the {} of '{}' has {} value{}{}", spec.name,
+          spec.component, quantity, spec.target, count, count == 1 ? "" : "s",
+          count == 1 ? "" : fmt::format(" (components 0 to {})", count - 1)));
+    }
+
+    // One column per value, or one for the chosen component.
+    const int first = spec.component >= 0 ? spec.component : 0;
+    const int last = spec.component >= 0 ? spec.component + 1 : count;
+    for (int k = first; k < last; ++k) {
+      std::string column = spec.name;
+      if (spec.component < 0 && count > 1)
+        column += by_axis ? fmt::format(".{}", kAxes[k]) : fmt::format(".{}", k);
+      if (!seen.insert(column).second) {
+        throw InvalidArgument(fmt::format(
+            "output '{}': column '{}' is already taken by another output", spec.name, column));
+      }
+      columns_.push_back(std::move(column));
+      resolved_.push_back({s, index, k});
+    }
+    needs_reactions_ = needs_reactions_ || spec.quantity == OutputQuantity::reaction_force ||
+                       spec.quantity == OutputQuantity::reaction_moment;
+  }
+  q_.resize(nq_);
+  v_.resize(nv_);
+  vdot_.resize(nv_);
+}
+
+void OutputSet::evaluate(MultibodySystem& system, double t, const VecX& q, const VecX& v,
+                         std::span<double> values) const {
+  if (values.size() != columns_.size()) {
+    throw InvalidArgument(fmt::format("OutputSet::evaluate: {} values for {} columns",
+                                      values.size(), columns_.size()));
+  }
+  const model::Model& model = system.model();
+  system.evaluate(t, q, v);
+  const dynamics::Data& data = system.data();
+  const VecX& tau_elements = system.element_forces();
+
+  // Every column but the reactions, from what evaluate() left in data.
+  for (std::size_t c = 0; c < resolved_.size(); ++c) {
+    const Column& column = resolved_[c];
+    const OutputSpec& spec = specs_[column.spec];
+    const int k = column.component;
+    double& out = values[c];
+    switch (spec.quantity) {
+      case OutputQuantity::joint_position: {
+        const model::Joint& joint = model.joint(column.index);
+        const int i = joint.q_index + k;
+        out = joint.is_prescribed()
+                  ? system.signal_samples()[joint.prescribed_signal_indices[k]].value
+                  : q[i];
+        break;
+      }
+      case OutputQuantity::joint_velocity: {
+        const model::Joint& joint = model.joint(column.index);
+        const int i = joint.v_index + k;
+        out = joint.is_prescribed()
+                  ? system.signal_samples()[joint.prescribed_signal_indices[k]].rate
+                  : v[i];
+        break;
+      }
+      case OutputQuantity::joint_effort: {
+        // A prescribed joint's data.tau is everything it transmits along its motion (what the
+        // prescription needs); a free joint's is what the force elements apply.
+        const model::Joint& joint = model.joint(column.index);
+        const int i = joint.v_index + k;
+        out = joint.is_prescribed() ? data.tau[i] : tau_elements[i];
+        break;
+      }
+      case OutputQuantity::body_position:
+        out = data.X_WB[column.index].apply(spec.point)[k];
+        break;
+      case OutputQuantity::body_velocity:
+        out = dynamics::point_kinematics(model, data, column.index, spec.point).v_WP_W[k];
+        break;
+      case OutputQuantity::body_acceleration:
+        out = dynamics::point_kinematics(model, data, column.index, spec.point).a_WP_W[k];
+        break;
+      case OutputQuantity::body_angular_velocity:
+        out = (data.X_WB[column.index].R * data.V_WB_B[column.index].head<3>())[k];
+        break;
+      case OutputQuantity::signal:
+        out = system.signal_samples()[column.index].value;
+        break;
+      case OutputQuantity::spring_length:
+      case OutputQuantity::spring_tension: {
+        const auto& spring =
+            std::get<model::LinearSpringDamper>(model.force_elements()[column.index]);
+        Vec3 p_a, v_a, p_b, v_b;
+        point_motion(data, spring.a.body_index, spring.a.p_BoP_B, p_a, v_a);
+        point_motion(data, spring.b.body_index, spring.b.p_BoP_B, p_b, v_b);
+        const Vec3 d = p_b - p_a;
+        const double length = d.norm();
+        if (spec.quantity == OutputQuantity::spring_length) {
+          out = length;
+        } else {
+          // ℓ̇ = d·ḋ/ℓ; at ℓ = 0 the direction is undefined and the damper carries nothing.
+          const double rate = length > 0.0 ? d.dot(v_b - v_a) / length : 0.0;
+          out = spring.stiffness * (length - spring.free_length) + spring.damping * rate;
+        }
+        break;
+      }
+      case OutputQuantity::reaction_force:
+      case OutputQuantity::reaction_moment:
+        break;  // below
+    }
+  }
+  if (!needs_reactions_) return;
+
+  // Reactions: Newton–Euler on each subtree for the motion evaluate() found, at the state with
+  // the prescribed coordinates applied (evaluate() applied them to its own copy).
+  q_ = q;
+  v_ = v;
+  system.apply_prescribed_motion(t, q_, v_);
+  vdot_ = system.data().vdot;
+  dynamics::joint_reactions(model, system.data(), q_, v_, vdot_, system.external_wrenches());
+  for (std::size_t c = 0; c < resolved_.size(); ++c) {
+    const Column& column = resolved_[c];
+    const OutputSpec& spec = specs_[column.spec];
+    if (spec.quantity != OutputQuantity::reaction_force &&
+        spec.quantity != OutputQuantity::reaction_moment)
+      continue;
+    const dynamics::JointReaction r =
+        dynamics::joint_reaction(model, system.data(), column.index, spec.frame);
+    values[c] =
+        (spec.quantity == OutputQuantity::reaction_force ? r.force : r.moment)[column.component];
+  }
+}
+
+}  // namespace momenta::simulate

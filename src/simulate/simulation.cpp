@@ -1,0 +1,330 @@
+#include "momenta/simulate/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "momenta/common/error.hpp"
+#include "momenta/common/suggest.hpp"
+#include "momenta/dynamics/kinematics.hpp"
+#include "momenta/dynamics/momentum.hpp"
+#include "momenta/dynamics/reactions.hpp"
+#include "momenta/integrate/run.hpp"
+#include "momenta/simulate/multibody_system.hpp"
+#include "momenta/simulate/rigid_body_integrator.hpp"
+
+namespace momenta::simulate {
+
+// --- TableSink -----------------------------------------------------------------------------------
+
+void TableSink::begin(std::span<const std::string> names) {
+  columns.assign(names.begin(), names.end());
+  rows.clear();
+}
+
+void TableSink::row(std::span<const double> values) {
+  rows.emplace_back(values.begin(), values.end());
+}
+
+int TableSink::column(std::string_view name) const {
+  const auto it = std::find(columns.begin(), columns.end(), name);
+  if (it != columns.end()) return static_cast<int>(it - columns.begin());
+  const std::vector<std::string_view> names(columns.begin(), columns.end());
+  throw InvalidArgument(fmt::format("no column '{}'{}", name, did_you_mean(name, names)));
+}
+
+// --- Integrators ---------------------------------------------------------------------------------
+
+std::vector<std::string_view> simulation_integrator_names() {
+  std::vector<std::string_view> names = integrate::integrator_names();
+  const auto& rigid = rigid_body_integrator_names();
+  names.insert(names.end(), rigid.begin(), rigid.end());
+  return names;
+}
+
+std::unique_ptr<integrate::Integrator> make_simulation_integrator(
+    std::string_view name, const integrate::Tolerances& tolerances) {
+  if (auto integrator = make_rigid_body_integrator(name)) return integrator;
+  const auto& general = integrate::integrator_names();
+  if (std::find(general.begin(), general.end(), name) != general.end())
+    return integrate::make_integrator(name, tolerances);
+  const std::vector<std::string_view> names = simulation_integrator_names();
+  throw InvalidArgument(fmt::format("unknown integrator '{}'{}; known: {}", name,
+                                    did_you_mean(name, names), fmt::join(names, ", ")));
+}
+
+// --- Simulation ----------------------------------------------------------------------------------
+
+namespace {
+
+void check_options(const SimulationOptions& o) {
+  if (!(o.duration > 0.0) || !std::isfinite(o.duration)) {
+    throw InvalidArgument(
+        fmt::format("the duration must be positive and finite, got {} s", o.duration));
+  }
+  if (!(o.step > 0.0) || !std::isfinite(o.step)) {
+    throw InvalidArgument(fmt::format("the step must be positive and finite, got {} s", o.step));
+  }
+  if (o.every < 1) {
+    throw InvalidArgument(fmt::format("every must be at least 1 step, got {}", o.every));
+  }
+}
+
+// Joints whose coordinates hold a quaternion, and where it starts in q.
+std::vector<int> quaternion_offsets(const model::Model& model) {
+  std::vector<int> offsets;
+  for (const model::Joint& j : model.joints()) {
+    if (j.type == model::JointType::spherical) offsets.push_back(j.q_index);
+    if (j.type == model::JointType::free) offsets.push_back(j.q_index + 3);
+  }
+  return offsets;
+}
+
+constexpr const char* kReactionSuffixes[6] = {"Fx", "Fy", "Fz", "Mx", "My", "Mz"};
+
+}  // namespace
+
+Simulation::Simulation(const model::Model& model, std::vector<OutputSpec> outputs,
+                       SimulationOptions options)
+    : model_(model), options_(std::move(options)), outputs_(model, std::move(outputs)) {
+  check_options(options_);
+  integrator_ = make_simulation_integrator(options_.integrator, options_.tolerances);
+
+  // The columns that do not depend on what the model conserves.
+  columns_.push_back("time");
+  for (const model::Joint& j : model.joints())
+    for (int i = 0; i < j.nq(); ++i) columns_.push_back(fmt::format("{}.q{}", j.name, i));
+  for (const model::Joint& j : model.joints())
+    for (int i = 0; i < j.nv(); ++i) columns_.push_back(fmt::format("{}.v{}", j.name, i));
+  for (const char* name :
+       {"energy_kinetic", "energy_potential", "energy_total", "H_x", "H_y", "H_z"})
+    columns_.push_back(name);
+  for (const std::string& name : outputs_.column_names()) columns_.push_back(name);
+  if (options_.reactions) {
+    for (const model::Joint& j : model.joints())
+      for (const char* suffix : kReactionSuffixes)
+        columns_.push_back(fmt::format("{}.reaction.{}", j.name, suffix));
+  }
+
+  // The audit columns, where the model should conserve the quantity.
+  const MultibodySystem system(model);
+  if (system.conserves_energy()) columns_.push_back("audit.energy_drift");
+  if (system.conserves_angular_momentum()) {
+    columns_.push_back("audit.H_norm_drift");
+    columns_.push_back("audit.H_drift");
+  }
+  if (!quaternion_offsets(model).empty()) columns_.push_back("audit.quaternion_norm_error");
+
+  // A name used twice (an output called "time", a joint "a" with a coordinate column that an
+  // output also produces) would make the table ambiguous.
+  std::vector<std::string> sorted = columns_;
+  std::sort(sorted.begin(), sorted.end());
+  const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
+  if (twice != sorted.end()) {
+    throw InvalidArgument(fmt::format(
+        "column '{}' would appear twice in the table: rename the output (or joint) that makes it",
+        *twice));
+  }
+}
+
+Simulation::~Simulation() = default;
+
+// Everything one run needs between steps, allocated before the first: the system, the recorded
+// copy of the state, the audit and the row. observe() is the step loop's body.
+class Simulation::Recorder {
+ public:
+  Recorder(const Simulation& simulation, RowSink& sink)
+      : sim_(simulation),
+        model_(simulation.model_),
+        sink_(sink),
+        system_(model_),
+        audit_data_(model_),
+        quaternions_(quaternion_offsets(model_)),
+        q_(model_.nq()),
+        v_(model_.nv()),
+        vdot_(model_.nv()),
+        row_(simulation.columns_.size()) {}
+
+  MultibodySystem& system() { return system_; }
+
+  // Sets up the audit from the initial state (prescribed motion already applied).
+  void start(const integrate::State& state, SimulationSummary& summary) {
+    q_ = state.q;
+    v_ = state.v;
+    const Energy e = system_.energy(q_, v_);
+    const dynamics::Momentum h = dynamics::momentum(model_, audit_data_, q_, v_);
+    summary.energy_audited = system_.conserves_energy();
+    summary.momentum_audited = system_.conserves_angular_momentum();
+    summary.quaternions_audited = !quaternions_.empty();
+    if (summary.energy_audited) {
+      // E_scale = T0 + V_springs0 + Σ m_b |g| |p_WoBcm_W| (audit_data_ holds the poses).
+      double scale = e.kinetic + std::abs(e.potential_springs);
+      for (int b = 1; b < model_.num_bodies(); ++b) {
+        const auto& mp = model_.body(b).mass_properties;
+        scale += mp.mass() * model_.gravity().norm() *
+                 audit_data_.X_WB[b].apply(mp.center_of_mass()).norm();
+      }
+      energy_ = audit_.add("energy", e.total(), scale);
+    }
+    if (summary.momentum_audited) {
+      double inertia_scale = 0.0;
+      for (int b = 1; b < model_.num_bodies(); ++b)
+        inertia_scale += model_.body(b).mass_properties.inertia_about_com().trace() / 3.0;
+      const double floor = std::sqrt(2.0 * std::max(e.kinetic, 0.0) * inertia_scale);
+      h_norm_ = audit_.add("|H|", h.angular_about_com.norm(), floor);
+      h_ = audit_.add("H", h.angular_about_com, floor);
+    }
+    if (summary.quaternions_audited) quaternion_ = audit_.add("quaternion norm", 0.0, 1.0);
+    sink_.begin(sim_.columns_);
+  }
+
+  // Called after every step (and with the initial state): audits, and records a row when asked.
+  void observe(const integrate::State& state, bool record) {
+    // The recorded copy, with the prescribed joints exactly on their signals.
+    q_ = state.q;
+    v_ = state.v;
+    if (model_.has_prescribed_joints()) system_.apply_prescribed_motion(state.t, q_, v_);
+
+    // Energy and momentum where audited or recorded (each runs the kinematics once).
+    Energy e;
+    dynamics::Momentum h;
+    if (energy_ >= 0 || record) e = system_.energy(q_, v_);
+    if (h_ >= 0 || record) h = dynamics::momentum(model_, audit_data_, q_, v_);
+    double quaternion_error = 0.0;
+    for (int i : quaternions_)
+      quaternion_error = std::max(quaternion_error, std::abs(q_.segment<4>(i).norm() - 1.0));
+    if (energy_ >= 0) audit_.record(energy_, e.total());
+    if (h_ >= 0) {
+      audit_.record(h_norm_, h.angular_about_com.norm());
+      audit_.record(h_, h.angular_about_com);
+    }
+    if (quaternion_ >= 0) audit_.record(quaternion_, quaternion_error);
+    if (!record) return;
+
+    // The row, in column order.
+    std::size_t c = 0;
+    row_[c++] = state.t;
+    for (int i = 0; i < model_.nq(); ++i) row_[c++] = q_[i];
+    for (int i = 0; i < model_.nv(); ++i) row_[c++] = v_[i];
+    row_[c++] = e.kinetic;
+    row_[c++] = e.potential();
+    row_[c++] = e.total();
+    for (int k = 0; k < 3; ++k) row_[c++] = h.angular_about_com[k];
+    // The outputs evaluate the system at (t, q, v), which also serves the reactions below.
+    const std::size_t n_outputs = sim_.outputs_.size();
+    sim_.outputs_.evaluate(system_, state.t, q_, v_, std::span<double>(row_).subspan(c, n_outputs));
+    c += n_outputs;
+    if (sim_.options_.reactions) {
+      vdot_ = system_.data().vdot;
+      dynamics::joint_reactions(model_, system_.data(), q_, v_, vdot_, system_.external_wrenches());
+      for (int j = 0; j < model_.num_joints(); ++j) {
+        const dynamics::JointReaction r =
+            dynamics::joint_reaction(model_, system_.data(), j, dynamics::ReactionFrame::world);
+        for (int k = 0; k < 3; ++k) row_[c++] = r.force[k];
+        for (int k = 0; k < 3; ++k) row_[c++] = r.moment[k];
+      }
+    }
+    if (energy_ >= 0) row_[c++] = audit_.entry(energy_).final_drift;
+    if (h_ >= 0) {
+      row_[c++] = audit_.entry(h_norm_).final_drift;
+      row_[c++] = audit_.entry(h_).final_drift;
+    }
+    if (quaternion_ >= 0) row_[c++] = quaternion_error;
+    sink_.row(row_);
+    ++rows_;
+  }
+
+  long rows() const { return rows_; }
+  const ConservationAudit& audit() const { return audit_; }
+
+ private:
+  const Simulation& sim_;
+  const model::Model& model_;
+  RowSink& sink_;
+  MultibodySystem system_;
+  dynamics::Data audit_data_;  // for the momentum, so system_'s evaluation stays as it was
+  std::vector<int> quaternions_;
+  VecX q_, v_, vdot_;
+  std::vector<double> row_;
+  ConservationAudit audit_;
+  int energy_ = -1, h_norm_ = -1, h_ = -1, quaternion_ = -1;  // audit entries, −1 if not audited
+  long rows_ = 0;
+};
+
+SimulationSummary Simulation::run(RowSink& sink) {
+  Recorder recorder(*this, sink);
+  SimulationSummary summary;
+  summary.integrator = std::string(integrator_->name());
+  summary.order = integrator_->order();
+  summary.adaptive = integrator_->adaptive();
+  summary.step = options_.step;
+
+  // The initial state: the model's, with unit quaternions and exact prescribed coordinates.
+  integrate::State state{0.0, model_.initial_q(), model_.initial_v()};
+  model::normalize(model_, state.q);
+  if (model_.has_prescribed_joints())
+    recorder.system().apply_prescribed_motion(0.0, state.q, state.v);
+  recorder.start(state, summary);
+
+  // integrate::run reports every step (so the audit sees each); rows are kept every n-th, and
+  // the last.
+  integrate::RunOptions run_options;
+  run_options.t_end = options_.duration;
+  run_options.h = options_.step;
+  run_options.every = 1;
+  long step = -1;
+  const auto observe = [&](const integrate::State& s) {
+    ++step;
+    recorder.observe(s, step % options_.every == 0 || s.t >= options_.duration);
+  };
+  try {
+    const integrate::RunSummary run_summary =
+        integrate::run(recorder.system(), *integrator_, state, run_options, observe);
+    summary.statistics = run_summary.statistics;
+    summary.wall_seconds = run_summary.wall_seconds;
+  } catch (const NumericalError& e) {
+    // Keep what was recorded, and say how far it goes.
+    sink.flush();
+    throw NumericalError(fmt::format("{} ({} row{} up to the failure were written)", e.what(),
+                                     recorder.rows(), recorder.rows() == 1 ? "" : "s"));
+  } catch (...) {
+    sink.flush();
+    throw;
+  }
+  sink.flush();
+  summary.t_end = state.t;
+  summary.rows = recorder.rows();
+  summary.audit = recorder.audit().entries();
+  return summary;
+}
+
+// --- Summary -------------------------------------------------------------------------------------
+
+std::string format_summary(const SimulationSummary& s) {
+  std::string out;
+  const std::string order =
+      s.order == kExactOrder ? std::string("exact") : fmt::format("order {}", s.order);
+  out += fmt::format("integrator   {} ({}{}), {} {:.6g} s, to t = {:.6g} s\n", s.integrator, order,
+                     s.adaptive ? ", adaptive" : "", s.adaptive ? "largest step" : "step", s.step,
+                     s.t_end);
+  out += fmt::format("steps        {} accepted, {} rejected; {} evaluations\n", s.statistics.steps,
+                     s.statistics.rejected_steps, s.statistics.evaluations);
+  const double rate = s.wall_seconds > 0.0 ? s.statistics.steps / s.wall_seconds : 0.0;
+  out += fmt::format("wall time    {:.3g} s ({:.3g} steps/s); {} rows\n", s.wall_seconds, rate,
+                     s.rows);
+  out += "conservation audit (relative drift: at the end, largest over every step)\n";
+  for (const AuditEntry& e : s.audit) {
+    out += fmt::format("  {:<16} {:>10.2e}  {:>10.2e}\n", e.name, e.final_drift, e.max_drift);
+  }
+  if (!s.energy_audited)
+    out +=
+        "  energy           not audited: damping, friction, applied loads or prescribed motion\n";
+  if (!s.momentum_audited)
+    out +=
+        "  H                not audited: external torques act (a joint or spring to the world, "
+        "applied loads)\n";
+  return out;
+}
+
+}  // namespace momenta::simulate

@@ -1,0 +1,177 @@
+// `momenta linearize`, `momenta modes` and `momenta response`, run as a user runs them: the built
+// binary (MOMENTA_CLI_PATH), exit codes (0 ok, 1 user error, 2 usage error) and JSON checked
+// against the library on the example models.
+
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "momenta/analysis/linearize.hpp"
+#include "momenta/io/model_file.hpp"
+#include "momenta_test/tolerance.hpp"
+
+#ifndef MOMENTA_CLI_PATH
+#error "MOMENTA_CLI_PATH must name the built momenta binary"
+#endif
+
+namespace momenta {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct CliRun {
+  int code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class AnalysisCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / (std::string("momenta_analysis_cli_") + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  static std::string example(const std::string& name) {
+    return fmt::format("'{}/examples/{}.yaml'", test::source_dir(), name);
+  }
+
+  CliRun momenta(const std::string& args) const {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string command =
+        fmt::format("'{}' {} >'{}' 2>'{}'", MOMENTA_CLI_PATH, args, out.string(), err.string());
+    const int status = std::system(command.c_str());
+    CliRun r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+  }
+
+  fs::path dir_;
+};
+
+MatX matrix(const json& rows, Eigen::Index cols) {
+  MatX M(static_cast<Eigen::Index>(rows.size()), cols);
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (Eigen::Index k = 0; k < cols; ++k)
+      M(static_cast<Eigen::Index>(i), k) = rows.at(i).at(static_cast<std::size_t>(k)).get<double>();
+  return M;
+}
+
+TEST_F(AnalysisCli, LinearizeJsonMatchesTheLibrary) {
+  const CliRun r = momenta("linearize " + example("quarter_car") +
+                           " --inputs road --outputs body_y,wheel_x --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  const io::ModelFile file = io::read_model_file(test::source_dir() + "/examples/quarter_car.yaml");
+  analysis::LinearizationOptions options;
+  options.inputs = {"road"};
+  options.outputs = {"body_y", "wheel_x"};
+  options.output_specs = file.outputs;
+  const analysis::LinearModel lin =
+      analysis::linearize(file.model, analysis::initial_operating_point(file.model), options);
+  EXPECT_EQ(j.at("state_names").get<std::vector<std::string>>(), lin.system.state_names());
+  EXPECT_EQ(j.at("input_names").get<std::vector<std::string>>(), std::vector<std::string>{"road"});
+  EXPECT_EQ(j.at("output_names").get<std::vector<std::string>>(),
+            (std::vector<std::string>{"body_y", "wheel_x"}));
+  // JSON prints doubles round-trip exactly: the same numbers.
+  EXPECT_MATRIX_NEAR(matrix(j.at("A"), 4), lin.system.A(), 0.0);
+  EXPECT_MATRIX_NEAR(matrix(j.at("B"), 1), lin.system.B(), 0.0);
+  EXPECT_MATRIX_NEAR(matrix(j.at("C"), 4), lin.system.C(), 0.0);
+  EXPECT_MATRIX_NEAR(matrix(j.at("D"), 1), lin.system.D(), 0.0);
+  ASSERT_EQ(j.at("eigenvalues").size(), 4u);
+  EXPECT_EQ(j.at("eigenvalues").at(0).size(), 2u);
+}
+
+TEST_F(AnalysisCli, ModesOfThePendulumAboutItsEquilibriumFromAState) {
+  // A state file at the bottom: ω = √(g/L) = 3.1321 rad/s = 0.49849 Hz.
+  std::ofstream(dir_ / "bottom.json") << R"({"q": [0.0], "v": [0.0]})";
+  const CliRun r = momenta("modes " + example("pendulum") + " --about '" +
+                           (dir_ / "bottom.json").string() + "' --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  const double w = std::sqrt(9.81);
+  // Richardson-extrapolated stiffness: 1e-12 relative.
+  EXPECT_TRUE(test::relatively_near(j.at("modes").at(0).at("natural_frequency_rad_s").get<double>(),
+                                    w, 1e-12));
+  EXPECT_TRUE(test::relatively_near(j.at("modes").at(0).at("natural_frequency_hz").get<double>(),
+                                    w / (2 * M_PI), 1e-12));
+  EXPECT_TRUE(test::relatively_near(
+      j.at("normal_modes").at(0).at("natural_frequency_rad_s").get<double>(), w, 1e-12));
+}
+
+TEST_F(AnalysisCli, StepResponseCsvFollowsTheClosedForm) {
+  // Cruise control, unit force: v = (1/b)(1 − e^(−bt/m)).
+  const fs::path csv = dir_ / "step.csv";
+  const CliRun r = momenta("response " + example("cruise_control") +
+                           " --input u --output speed --step --duration 100 --points 101 --csv '" +
+                           csv.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("poles (1/s): -0.05"), std::string::npos) << r.out;
+  std::istringstream in(slurp(csv));
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, "time,speed");
+  int rows = 0;
+  while (std::getline(in, line)) {
+    const double t = std::stod(line.substr(0, line.find(',')));
+    const double v = std::stod(line.substr(line.find(',') + 1));
+    // ZOH samples exact for the linear model: 1e-14 of the 0.02 m/s final value.
+    EXPECT_NEAR(v, (1.0 / 50) * (1 - std::exp(-50 * t / 1000)), 1e-14) << line;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 101);
+}
+
+TEST_F(AnalysisCli, ErrorsAndUsage) {
+  // Unknown output: user error, one line, with a suggestion.
+  CliRun r = momenta("linearize " + example("quarter_car") + " --outputs body_yy");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("did you mean 'body_y'"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+  // No equilibrium under the cruise-control push.
+  r = momenta("modes " + example("cruise_control") + " --about equilibrium");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("no equilibrium"), std::string::npos) << r.err;
+  // A state file of the wrong size.
+  std::ofstream(dir_ / "bad.json") << R"({"q": [0.0, 1.0], "v": [0.0]})";
+  r = momenta("linearize " + example("pendulum") + " --about '" + (dir_ / "bad.json").string() +
+              "'");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("'q' must be a list of 1 numbers"), std::string::npos) << r.err;
+  // Usage: no response kind, two kinds.
+  EXPECT_EQ(momenta("response " + example("pendulum") + " --input x --output theta").code, 2);
+  EXPECT_EQ(momenta("response " + example("cruise_control") +
+                    " --input u --output speed --step --impulse")
+                .code,
+            2);
+  // An unstable equilibrium is noted on stderr, the command succeeds.
+  r = momenta("linearize " + example("pendulum") + " --about equilibrium");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("unstable"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace momenta

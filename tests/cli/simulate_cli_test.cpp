@@ -1,0 +1,273 @@
+// `momenta simulate` and `momenta info`, run as a user runs them: the built binary
+// (MOMENTA_CLI_PATH), its CSV against the library's Simulation on the same model file, its exit
+// codes (0 ok, 1 user error, 2 usage error) and messages, and `info --json` against the Model.
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "momenta/io/model_file.hpp"
+#include "momenta/simulate/simulation.hpp"
+#include "momenta_test/tolerance.hpp"
+
+#ifndef MOMENTA_CLI_PATH
+#error "MOMENTA_CLI_PATH must name the built momenta binary"
+#endif
+
+namespace momenta {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+struct CliRun {
+  int code = -1;
+  std::string out;
+  std::string err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string quoted(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+std::vector<std::string> split(const std::string& line, char separator) {
+  std::vector<std::string> fields;
+  std::istringstream in(line);
+  std::string field;
+  while (std::getline(in, field, separator)) fields.push_back(field);
+  return fields;
+}
+
+// The CSV as a header and rows of numbers.
+struct Csv {
+  std::vector<std::string> header;
+  std::vector<std::vector<double>> rows;
+};
+
+Csv parse_csv(const std::string& text) {
+  Csv csv;
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  csv.header = split(line, ',');
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    for (const std::string& f : split(line, ',')) row.push_back(std::strtod(f.c_str(), nullptr));
+    csv.rows.push_back(std::move(row));
+  }
+  return csv;
+}
+
+std::string example(const std::string& name) { return test::source_dir() + "/examples/" + name; }
+std::string test_model(const std::string& name) {
+  return test::source_dir() + "/tests/data/models/" + name;
+}
+
+class SimulateCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / (std::string("momenta_simcli_") + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  CliRun momenta(const std::string& args) const {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string command = quoted(MOMENTA_CLI_PATH) + " " + args + " >" +
+                                quoted(out.string()) + " 2>" + quoted(err.string());
+    const int status = std::system(command.c_str());
+    CliRun r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+  }
+
+  fs::path dir_;
+};
+
+// The CSV holds exactly what the library's Simulation produces from the same file and options,
+// bit for bit (numbers are written in their shortest round-trip form).
+TEST_F(SimulateCli, PendulumCsvMatchesTheLibrary) {
+  const std::string model = example("pendulum.yaml");
+  const fs::path csv_path = dir_ / "run.csv";
+  const CliRun r = momenta("simulate " + quoted(model) + " --duration 1 --dt 0.01 --every 10 " +
+                           "--output " + quoted(csv_path.string()));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(r.out.empty()) << r.out;
+  const Csv csv = parse_csv(slurp(csv_path));
+
+  const io::ModelFile file = io::read_model_file(model);
+  simulate::SimulationOptions o;
+  o.duration = 1.0;
+  o.step = 0.01;
+  o.every = 10;
+  simulate::Simulation sim(file.model, file.outputs, o);
+  simulate::TableSink table;
+  sim.run(table);
+  EXPECT_EQ(csv.header, table.columns);
+  ASSERT_EQ(csv.rows.size(), table.rows.size());
+  for (std::size_t i = 0; i < csv.rows.size(); ++i)
+    for (std::size_t c = 0; c < table.columns.size(); ++c)
+      EXPECT_EQ(csv.rows[i][c], table.rows[i][c]) << i << " " << table.columns[c];
+  // The summary on stderr.
+  EXPECT_NE(r.err.find("100 accepted, 0 rejected; 400 evaluations"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("conservation audit"), std::string::npos) << r.err;
+}
+
+TEST_F(SimulateCli, HeaderWithReactionsAndCsvOnStdout) {
+  const CliRun r = momenta("simulate " + quoted(example("pendulum.yaml")) +
+                           " --duration 0.1 --dt 0.01 --reactions");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Csv csv = parse_csv(r.out);
+  const std::vector<std::string> expected = {"time",
+                                             "pivot.q0",
+                                             "pivot.v0",
+                                             "energy_kinetic",
+                                             "energy_potential",
+                                             "energy_total",
+                                             "H_x",
+                                             "H_y",
+                                             "H_z",
+                                             "theta",
+                                             "bob.x",
+                                             "bob.y",
+                                             "bob.z",
+                                             "pivot.reaction.Fx",
+                                             "pivot.reaction.Fy",
+                                             "pivot.reaction.Fz",
+                                             "pivot.reaction.Mx",
+                                             "pivot.reaction.My",
+                                             "pivot.reaction.Mz",
+                                             "audit.energy_drift"};
+  EXPECT_EQ(csv.header, expected);
+  EXPECT_EQ(csv.rows.size(), 11u);
+  // Released from rest at θ0 = 120° (m = 1 kg, L = 1 m): a = L θ̈ e_t with θ̈ = −(g/L) sin θ0 and
+  // e_t = (−cos θ, 0, sin θ); the pin's force on the bob is m (a − g). Round-off: ulps of m g.
+  const double theta0 = 2.0 * M_PI / 3.0, g = 9.81;
+  const double theta_ddot = -g * std::sin(theta0);
+  const double ax = -std::cos(theta0) * theta_ddot, az = std::sin(theta0) * theta_ddot;
+  const auto& row0 = csv.rows.front();
+  EXPECT_NEAR(row0[13], ax, 1e-12 * g);
+  EXPECT_NEAR(row0[15], az + g, 1e-12 * g);
+}
+
+TEST_F(SimulateCli, NeverOverwritesWithoutForce) {
+  const fs::path csv_path = dir_ / "existing.csv";
+  std::ofstream(csv_path) << "keep me\n";
+  const std::string args = "simulate " + quoted(example("pendulum.yaml")) +
+                           " --duration 0.1 --output " + quoted(csv_path.string());
+  const CliRun refused = momenta(args);
+  EXPECT_EQ(refused.code, 1);
+  EXPECT_EQ(refused.err.rfind("momenta: error: ", 0), 0u) << refused.err;
+  EXPECT_NE(refused.err.find("existing.csv"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("--force"), std::string::npos) << refused.err;
+  EXPECT_EQ(slurp(csv_path), "keep me\n");
+  const CliRun forced = momenta(args + " --force");
+  EXPECT_EQ(forced.code, 0) << forced.err;
+  EXPECT_EQ(slurp(csv_path).rfind("time,", 0), 0u);
+}
+
+// The file's simulation section gives duration 0.01 s and step 1e-5 s; --dt 0.01 makes RK4
+// unstable (ω h = 100): exit 1, the time and coordinate named, the rows so far kept.
+TEST_F(SimulateCli, NonFiniteStateExitsOneWithTheTime) {
+  const fs::path csv_path = dir_ / "blowup.csv";
+  const CliRun r = momenta("simulate " + quoted(test_model("stiff_spring.yaml")) +
+                           " --duration 100 --dt 0.01 --output " + quoted(csv_path.string()));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_EQ(r.err.rfind("momenta: error: ", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("non-finite at t = "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("rail."), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("step"), std::string::npos) << r.err;
+  const Csv csv = parse_csv(slurp(csv_path));
+  EXPECT_GT(csv.rows.size(), 1u);
+  EXPECT_EQ(csv.rows.front().size(), csv.header.size());
+}
+
+// Options over the file's section: the file says 0.01 s at 1e-5 s (1000 steps); --every 100
+// keeps 11 rows; --duration 0.001 then leaves 100 steps and 2 rows.
+TEST_F(SimulateCli, OptionsOverrideTheFileSection) {
+  const std::string model = quoted(test_model("stiff_spring.yaml"));
+  const CliRun a = momenta("simulate " + model + " --every 100");
+  ASSERT_EQ(a.code, 0) << a.err;
+  EXPECT_EQ(parse_csv(a.out).rows.size(), 11u);
+  EXPECT_NE(a.err.find("1000 accepted"), std::string::npos) << a.err;
+  const CliRun b = momenta("simulate " + model + " --every 100 --duration 0.001");
+  ASSERT_EQ(b.code, 0) << b.err;
+  EXPECT_EQ(parse_csv(b.out).rows.size(), 2u);
+  // Tolerances alone choose dopri5.
+  const CliRun c = momenta("simulate " + model + " --rtol 1e-6 --atol 1e-9");
+  ASSERT_EQ(c.code, 0) << c.err;
+  EXPECT_NE(c.err.find("dopri5"), std::string::npos) << c.err;
+}
+
+TEST_F(SimulateCli, BadIntegratorAndOptions) {
+  const std::string model = quoted(example("pendulum.yaml"));
+  const CliRun unknown = momenta("simulate " + model + " --integrator rk5");
+  EXPECT_EQ(unknown.code, 1);
+  EXPECT_NE(unknown.err.find("did you mean 'rk4'"), std::string::npos) << unknown.err;
+  EXPECT_NE(unknown.err.find("splitting"), std::string::npos) << unknown.err;
+  // A tolerance for a fixed-step method is a usage error.
+  EXPECT_EQ(momenta("simulate " + model + " --integrator rk4 --rtol 1e-6").code, 2);
+  EXPECT_EQ(momenta("simulate " + model + " --dt -1").code, 2);
+  EXPECT_EQ(momenta("simulate").code, 2);
+  const CliRun missing = momenta("simulate " + quoted((dir_ / "none.yaml").string()));
+  EXPECT_EQ(missing.code, 1);
+  EXPECT_NE(missing.err.find("none.yaml"), std::string::npos) << missing.err;
+}
+
+// `info --json` against the Model read by the library.
+TEST_F(SimulateCli, InfoJsonDescribesTheModel) {
+  const std::string model = example("double_pendulum.yaml");
+  const CliRun r = momenta("info " + quoted(model) + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  const io::ModelFile file = io::read_model_file(model);
+  EXPECT_EQ(j.at("name"), file.name);
+  EXPECT_EQ(j.at("nq"), file.model.nq());
+  EXPECT_EQ(j.at("nv"), file.model.nv());
+  ASSERT_EQ(j.at("bodies").size(), 2u);
+  EXPECT_EQ(j.at("bodies")[1].at("name"), "mass2");
+  EXPECT_EQ(j.at("bodies")[1].at("mass").get<double>(), 1.0);
+  EXPECT_EQ(j.at("joints")[1].at("parent"), "mass1");
+  EXPECT_EQ(j.at("joints")[1].at("coordinates")[0].at("column"), "lower.q0");
+  EXPECT_EQ(j.at("conserves_energy"), true);
+  EXPECT_EQ(j.at("outputs")[2].at("columns"), json({"tip.x", "tip.y", "tip.z"}));
+  // The text form names the same things.
+  const CliRun text = momenta("info " + quoted(model));
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("nq 2, nv 2"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("lower  revolute, mass1 → mass2"), std::string::npos) << text.out;
+}
+
+TEST_F(SimulateCli, InfoShowsPrescribedJointsAndSignals) {
+  const CliRun r = momenta("info " + quoted(example("quarter_car.yaml")) + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_EQ(j.at("joints")[0].at("prescribed_by"), json({"road"}));
+  EXPECT_EQ(j.at("signals")[0].at("name"), "road");
+  EXPECT_EQ(j.at("force_elements")[0].at("kind"), "linear_spring_damper");
+  EXPECT_EQ(j.at("conserves_energy"), false);
+}
+
+}  // namespace
+}  // namespace momenta
