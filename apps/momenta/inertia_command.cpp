@@ -19,6 +19,7 @@
 #include "momenta/inertia/amount.hpp"
 #include "momenta/inertia/mass_properties.hpp"
 #include "momenta/io/part_file.hpp"
+#include "output_format.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -104,13 +105,6 @@ double tidy(double x) { return x + 0.0; }
 
 json vec_json(const Vec3& v) { return json::array({tidy(v.x()), tidy(v.y()), tidy(v.z())}); }
 
-json mat_json(const Mat3& M) {
-  json rows = json::array();
-  for (int i = 0; i < 3; ++i)
-    rows.push_back(json::array({tidy(M(i, 0)), tidy(M(i, 1)), tidy(M(i, 2))}));
-  return rows;
-}
-
 // Text shows 6 significant digits; entries below 1e-12 of `scale` (the round-off of a sum that
 // cancels, such as the products of a symmetric part) print as 0 there. JSON keeps every value.
 Vec3 shown(const Vec3& v, double scale) {
@@ -121,55 +115,11 @@ Mat3 shown(const Mat3& M) {
   return M.unaryExpr([&](double x) { return std::abs(x) < 1e-12 * scale ? 0.0 : tidy(x); });
 }
 
-std::string vec_text(const Vec3& v) {
-  return fmt::format("[{:.6g}, {:.6g}, {:.6g}]", v.x(), v.y(), v.z());
-}
-
 void print_matrix(const Mat3& M, const char* format) {
   for (int i = 0; i < 3; ++i) {
     fmt::print("  [");
     for (int j = 0; j < 3; ++j) fmt::print(fmt::runtime(format), M(i, j));
     fmt::print(" ]\n");
-  }
-}
-
-// JSON with one item per line, but a list of numbers (a vector, a matrix row) on one line:
-// `"com": [0.0, 0.0, 0.11]` reads better than three lines, and a matrix shows as its rows.
-void write_json(std::string& out, const json& j, int indent) {
-  const auto flat = [](const json& a) {
-    return a.is_array() &&
-           std::all_of(a.begin(), a.end(), [](const json& e) { return e.is_primitive(); });
-  };
-  const std::string pad(static_cast<std::size_t>(indent + 2), ' ');
-  if (j.is_object()) {
-    out += "{\n";
-    std::size_t i = 0;
-    for (const auto& [key, value] : j.items()) {
-      out += pad + json(key).dump() + ": ";
-      write_json(out, value, indent + 2);
-      out += ++i < j.size() ? ",\n" : "\n";
-    }
-    out += std::string(static_cast<std::size_t>(indent), ' ') + "}";
-  } else if (j.is_array() && !flat(j)) {
-    out += "[\n";
-    for (std::size_t i = 0; i < j.size(); ++i) {
-      out += pad;
-      write_json(out, j[i], indent + 2);
-      out += i + 1 < j.size() ? ",\n" : "\n";
-    }
-    out += std::string(static_cast<std::size_t>(indent), ' ') + "]";
-  } else {
-    // Numbers, strings and lists of numbers: compact, ", " between items.
-    std::string text = j.dump(-1, ' ', false);
-    std::string spaced;
-    bool in_string = false;
-    for (std::size_t k = 0; k < text.size(); ++k) {
-      const char c = text[k];
-      if (c == '"' && (k == 0 || text[k - 1] != '\\')) in_string = !in_string;
-      spaced += c;
-      if (c == ',' && !in_string) spaced += ' ';
-    }
-    out += spaced;
   }
 }
 
@@ -201,12 +151,12 @@ void run(const InertiaOptions& o) {
     j["mass"] = mp.mass();
     j["volume"] = mp.volume();
     j["com"] = vec_json(mp.center_of_mass());
-    j["inertia_com"] = mat_json(I_com);
+    j["inertia_com"] = matrix_json(I_com);
     j["principal_moments"] = vec_json(principal.moments);
-    j["principal_axes"] = mat_json(R_BP);
+    j["principal_axes"] = matrix_json(R_BP);
     if (about) {
       j["about"] = vec_json(*about);
-      j["inertia_about"] = mat_json(*I_about);
+      j["inertia_about"] = matrix_json(*I_about);
     }
     if (r.parts.empty()) {
       j["shell"] = r.shell;
@@ -223,13 +173,13 @@ void run(const InertiaOptions& o) {
                          {"mass", pm.mass()},
                          {"volume", pm.volume()},
                          {"com", vec_json(pm.center_of_mass())},
-                         {"inertia_com", mat_json(pm.inertia_about_com())}});
+                         {"inertia_com", matrix_json(pm.inertia_about_com())}});
       }
       j["parts"] = std::move(parts);
     }
-    std::string text;
-    write_json(text, j, 0);
-    fmt::print("{}\n", text);
+    // Every object here has keys, and a vector or a matrix row prints on one line, ", " between
+    // its numbers.
+    fmt::print("{}\n", json_text(j, ListSpacing::spaced));
   } else {
     fmt::print("{} ({})\n", r.name, o.file);
     // Lengths are shown against the body's size: its radius of gyration or its distance from Bo.

@@ -16,6 +16,7 @@
 #include "momenta/io/model_file.hpp"
 #include "momenta/simulate/multibody_system.hpp"
 #include "momenta/simulate/output.hpp"
+#include "output_format.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -34,10 +35,6 @@ json mat_json(const Mat3& M) {
   json rows = json::array();
   for (int i = 0; i < 3; ++i) rows.push_back(json::array({M(i, 0), M(i, 1), M(i, 2)}));
   return rows;
-}
-
-std::string vec_text(const Vec3& v) {
-  return fmt::format("[{:.6g}, {:.6g}, {:.6g}]", v.x(), v.y(), v.z());
 }
 
 std::string body_point_text(const model::BodyPoint& p) {

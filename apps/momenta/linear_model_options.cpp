@@ -123,53 +123,7 @@ LoadedLinearModel load_linear_model(const LinearModelOptions& o) {
   return r;
 }
 
-json matrix_json(const MatX& M) {
-  json rows = json::array();
-  for (Eigen::Index i = 0; i < M.rows(); ++i) {
-    json row = json::array();
-    for (Eigen::Index k = 0; k < M.cols(); ++k) row.push_back(M(i, k) + 0.0);
-    rows.push_back(std::move(row));
-  }
-  return rows;
-}
-
 json complex_json(std::complex<double> z) { return json::array({z.real() + 0.0, z.imag() + 0.0}); }
-
-namespace {
-void write_json(std::string& out, const json& j, int indent) {
-  const auto flat = [](const json& a) {
-    return a.is_array() &&
-           std::all_of(a.begin(), a.end(), [](const json& e) { return e.is_primitive(); });
-  };
-  const std::string pad(static_cast<std::size_t>(indent + 2), ' ');
-  if (j.is_object() && !j.empty()) {
-    out += "{\n";
-    std::size_t i = 0;
-    for (const auto& [key, value] : j.items()) {
-      out += pad + json(key).dump() + ": ";
-      write_json(out, value, indent + 2);
-      out += ++i < j.size() ? ",\n" : "\n";
-    }
-    out += std::string(static_cast<std::size_t>(indent), ' ') + "}";
-  } else if (j.is_array() && !flat(j)) {
-    out += "[\n";
-    for (std::size_t i = 0; i < j.size(); ++i) {
-      out += pad;
-      write_json(out, j[i], indent + 2);
-      out += i + 1 < j.size() ? ",\n" : "\n";
-    }
-    out += std::string(static_cast<std::size_t>(indent), ' ') + "]";
-  } else {
-    out += j.dump();
-  }
-}
-}  // namespace
-
-std::string json_text(const json& j) {
-  std::string out;
-  write_json(out, j, 0);
-  return out;
-}
 
 void print_matrix(const char* name, const MatX& M, const std::vector<std::string>& rows,
                   const std::vector<std::string>& columns) {

@@ -1,6 +1,7 @@
 #pragma once
 // What `momenta linearize`, `momenta modes` and `momenta response` share: the model file, the
-// operating point (--about), the inputs and outputs, and how matrices print.
+// operating point (--about), the inputs and outputs, and how matrices print (with the JSON layout
+// of output_format.hpp, which every command shares).
 
 #include <complex>
 #include <optional>
@@ -13,6 +14,7 @@
 #include "momenta/analysis/equilibrium.hpp"
 #include "momenta/analysis/linearize.hpp"
 #include "momenta/io/model_file.hpp"
+#include "output_format.hpp"
 
 namespace momenta::cli {
 
@@ -35,12 +37,8 @@ struct LoadedLinearModel {
 };
 LoadedLinearModel load_linear_model(const LinearModelOptions& options);
 
-/// JSON of a matrix as an array of rows.
-nlohmann::ordered_json matrix_json(const MatX& M);
 /// JSON of a complex number as [re, im].
 nlohmann::ordered_json complex_json(std::complex<double> z);
-/// Pretty JSON with every list of numbers on one line.
-std::string json_text(const nlohmann::ordered_json& j);
 /// Prints a matrix with row and column labels, 6 significant digits.
 void print_matrix(const char* name, const MatX& M, const std::vector<std::string>& rows,
                   const std::vector<std::string>& columns);

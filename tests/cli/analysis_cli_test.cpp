@@ -2,8 +2,6 @@
 // binary (MOMENTA_CLI_PATH), exit codes (0 ok, 1 user error, 2 usage error) and JSON checked
 // against the library on the example models.
 
-#include <sys/wait.h>
-
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -16,13 +14,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cli_runner.hpp"
 #include "momenta/analysis/linearize.hpp"
 #include "momenta/io/model_file.hpp"
 #include "momenta_test/tolerance.hpp"
-
-#ifndef MOMENTA_CLI_PATH
-#error "MOMENTA_CLI_PATH must name the built momenta binary"
-#endif
 
 namespace momenta {
 namespace {
@@ -30,46 +25,14 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-struct CliRun {
-  int code = -1;
-  std::string out;
-  std::string err;
-};
+using test::CliRun;
+using test::slurp;
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class AnalysisCli : public ::testing::Test {
+class AnalysisCli : public test::CliTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / (std::string("momenta_analysis_cli_") + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   static std::string example(const std::string& name) {
     return fmt::format("'{}/examples/{}.yaml'", test::source_dir(), name);
   }
-
-  CliRun momenta(const std::string& args) const {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command =
-        fmt::format("'{}' {} >'{}' 2>'{}'", MOMENTA_CLI_PATH, args, out.string(), err.string());
-    const int status = std::system(command.c_str());
-    CliRun r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-  }
-
-  fs::path dir_;
 };
 
 MatX matrix(const json& rows, Eigen::Index cols) {

@@ -2,8 +2,6 @@
 // exit codes (0 ok, 1 user error, 2 usage error), its one-line errors and its JSON, checked
 // against the library.
 
-#include <sys/wait.h>
-
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -15,14 +13,11 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cli_runner.hpp"
 #include "momenta/inertia/primitives.hpp"
 #include "momenta/io/part_file.hpp"
 #include "momenta_test/meshes.hpp"
 #include "momenta_test/tolerance.hpp"
-
-#ifndef MOMENTA_CLI_PATH
-#error "MOMENTA_CLI_PATH must name the built momenta binary"
-#endif
 
 namespace momenta {
 namespace {
@@ -30,35 +25,12 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-struct CliRun {
-  int code = -1;
-  std::string out;
-  std::string err;
-};
+using test::CliRun;
+using test::quoted;
+using test::slurp;
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-class InertiaCli : public ::testing::Test {
+class InertiaCli : public test::CliTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / (std::string("momenta_cli_") + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   // Writes `text` to a file in the test's folder and returns its path.
   fs::path write(const std::string& name, const std::string& text) const {
     const fs::path path = dir_ / name;
@@ -94,19 +66,6 @@ class InertiaCli : public ::testing::Test {
     return write(name, bytes);
   }
 
-  // Runs `momenta <args>` with stdout and stderr captured apart.
-  CliRun momenta(const std::string& args) const {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = quoted(MOMENTA_CLI_PATH) + " " + args + " >" +
-                                quoted(out.string()) + " 2>" + quoted(err.string());
-    const int status = std::system(command.c_str());
-    CliRun r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-  }
-
   // Expects exit code 1 and one line on stderr holding every piece of `pieces`.
   void expect_user_error(const std::string& args, const std::vector<std::string>& pieces) const {
     SCOPED_TRACE(args);
@@ -119,8 +78,6 @@ class InertiaCli : public ::testing::Test {
     for (const std::string& piece : pieces)
       EXPECT_NE(r.err.find(piece), std::string::npos) << r.err;
   }
-
-  fs::path dir_;
 };
 
 Vec3 vec(const json& j) {

@@ -2,8 +2,6 @@
 // (MOMENTA_CLI_PATH), its CSV against the library's Simulation on the same model file, its exit
 // codes (0 ok, 1 user error, 2 usage error) and messages, and `info --json` against the Model.
 
-#include <sys/wait.h>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -14,13 +12,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cli_runner.hpp"
 #include "momenta/io/model_file.hpp"
 #include "momenta/simulate/simulation.hpp"
 #include "momenta_test/tolerance.hpp"
-
-#ifndef MOMENTA_CLI_PATH
-#error "MOMENTA_CLI_PATH must name the built momenta binary"
-#endif
 
 namespace momenta {
 namespace {
@@ -28,24 +23,9 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-struct CliRun {
-  int code = -1;
-  std::string out;
-  std::string err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::string quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
+using test::CliRun;
+using test::quoted;
+using test::slurp;
 
 std::vector<std::string> split(const std::string& line, char separator) {
   std::vector<std::string> fields;
@@ -80,30 +60,7 @@ std::string test_model(const std::string& name) {
   return test::source_dir() + "/tests/data/models/" + name;
 }
 
-class SimulateCli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / (std::string("momenta_simcli_") + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  CliRun momenta(const std::string& args) const {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = quoted(MOMENTA_CLI_PATH) + " " + args + " >" +
-                                quoted(out.string()) + " 2>" + quoted(err.string());
-    const int status = std::system(command.c_str());
-    CliRun r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-  }
-
-  fs::path dir_;
-};
+class SimulateCli : public test::CliTest {};
 
 // The CSV holds exactly what the library's Simulation produces from the same file and options,
 // bit for bit (numbers are written in their shortest round-trip form).

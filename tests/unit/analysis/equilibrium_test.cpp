@@ -8,6 +8,7 @@
 
 #include "momenta/common/error.hpp"
 #include "momenta/model/model_builder.hpp"
+#include "momenta_test/hand_models.hpp"
 #include "momenta_test/tolerance.hpp"
 
 namespace momenta::analysis {
@@ -16,26 +17,14 @@ namespace {
 using model::Joint;
 using model::JointType;
 using model::ModelBuilder;
+using test::make_joint;
 
 constexpr double kG = 9.81;
-
-Joint joint(std::string name, JointType type, std::string parent, std::string child, Vec3 axis) {
-  Joint j;
-  j.name = std::move(name);
-  j.type = type;
-  j.parent = std::move(parent);
-  j.child = std::move(child);
-  j.axis = axis;
-  return j;
-}
 
 // Point mass m, l below a pivot about y; optional constant torque about y.
 // (A small inertia about the centre of mass keeps a vertical axis non-singular.)
 model::Model pendulum(double m, double l, double torque = 0.0, Vec3 axis = Vec3::UnitY()) {
-  ModelBuilder b;
-  b.set_gravity(Vec3(0, 0, -kG));
-  b.add_body("bob", inertia::MassProperties(m, Vec3(0, 0, -l), Mat3(0.01 * Mat3::Identity())));
-  b.add_joint(joint("pivot", JointType::revolute, "world", "bob", axis));
+  ModelBuilder b = test::pendulum_builder(m, l, 0.01, kG, axis);
   if (torque != 0.0) {
     b.add_signal(model::Signal("tau", model::ConstantSignal{torque}));
     b.add_force_element(
@@ -95,10 +84,10 @@ TEST(Equilibrium, SpringMassSagsUnderGravityFromAPrescribedSupport) {
   b.add_signal(model::Signal("height", model::ConstantSignal{s}));
   b.add_body("support", inertia::MassProperties(1.0, Vec3::Zero(), Mat3::Zero()));
   b.add_body("mass", inertia::MassProperties(m, Vec3::Zero(), Mat3::Zero()));
-  Joint support = joint("lift", JointType::prismatic, "world", "support", Vec3::UnitZ());
+  Joint support = make_joint("lift", JointType::prismatic, "world", "support", Vec3::UnitZ());
   support.prescribed_signals = {"height"};
   b.add_joint(support);
-  b.add_joint(joint("drop", JointType::prismatic, "world", "mass", Vec3::UnitZ()));
+  b.add_joint(make_joint("drop", JointType::prismatic, "world", "mass", Vec3::UnitZ()));
   model::LinearSpringDamper spring;
   spring.name = "spring";
   spring.a.body = "support";
@@ -125,7 +114,7 @@ TEST(Equilibrium, NoEquilibriumUnderAnUnbalancedPush) {
   // A cart with drag only and a constant push: it accelerates forever.
   ModelBuilder b;
   b.add_body("cart", inertia::MassProperties(1000.0, Vec3::Zero(), Mat3::Zero()));
-  Joint road = joint("road", JointType::prismatic, "world", "cart", Vec3::UnitX());
+  Joint road = make_joint("road", JointType::prismatic, "world", "cart", Vec3::UnitX());
   road.damping = 50.0;
   b.add_joint(road);
   b.add_signal(model::Signal("u", model::ConstantSignal{500.0}));

@@ -10,6 +10,7 @@
 #include "momenta/common/error.hpp"
 #include "momenta/model/model_builder.hpp"
 #include "momenta/simulate/multibody_system.hpp"
+#include "momenta_test/hand_models.hpp"
 #include "momenta_test/tolerance.hpp"
 
 namespace momenta::analysis {
@@ -18,26 +19,13 @@ namespace {
 using model::Joint;
 using model::JointType;
 using model::ModelBuilder;
+using test::make_joint;
 
 constexpr double kG = 9.81;
 
-Joint joint(std::string name, JointType type, std::string parent, std::string child,
-            Vec3 axis = Vec3::UnitY()) {
-  Joint j;
-  j.name = std::move(name);
-  j.type = type;
-  j.parent = std::move(parent);
-  j.child = std::move(child);
-  j.axis = axis;
-  return j;
-}
-
 // A point mass m at distance l below a pivot turning about y, with a torque input "tau" about y.
 model::Model pendulum(double m, double l) {
-  ModelBuilder b;
-  b.set_gravity(Vec3(0, 0, -kG));
-  b.add_body("bob", inertia::MassProperties(m, Vec3(0, 0, -l), Mat3::Zero()));
-  b.add_joint(joint("pivot", JointType::revolute, "world", "bob"));
+  ModelBuilder b = test::pendulum_builder(m, l, 0.0, kG);
   b.add_signal(model::Signal("tau", model::ConstantSignal{0.0}));
   b.add_force_element(
       model::AppliedTorque{"motor", "bob", model::LoadFrame::world, Vec3::UnitY(), "tau"});
@@ -54,14 +42,14 @@ model::Model mixed_chain() {
   b.add_body("link1", inertia::MassProperties(1.3, Vec3(0.1, 0.02, -0.3), I1));
   b.add_body("link2", inertia::MassProperties(0.8, Vec3(0.0, 0.05, -0.2), Mat3(0.6 * I1)));
   b.add_body("slider", inertia::MassProperties(0.5, Vec3(0.03, 0, 0), Mat3(0.3 * I1)));
-  Joint j1 = joint("shoulder", JointType::revolute, "world", "link1", Vec3(0, 1, 0));
+  Joint j1 = make_joint("shoulder", JointType::revolute, "world", "link1", Vec3(0, 1, 0));
   j1.damping = 0.15;
   b.add_joint(j1);
-  Joint j2 = joint("elbow", JointType::universal, "link1", "link2", Vec3::UnitX());
+  Joint j2 = make_joint("elbow", JointType::universal, "link1", "link2", Vec3::UnitX());
   j2.axis2 = Vec3::UnitY();
   j2.X_PJ = Transform::translation(Vec3(0.05, 0, -0.6));
   b.add_joint(j2);
-  Joint j3 = joint("rail", JointType::prismatic, "link2", "slider", Vec3(0, 0.6, -0.8));
+  Joint j3 = make_joint("rail", JointType::prismatic, "link2", "slider", Vec3(0, 0.6, -0.8));
   j3.X_PJ = Transform::translation(Vec3(0, 0.02, -0.4));
   b.add_joint(j3);
   model::LinearSpringDamper spring;
@@ -101,8 +89,8 @@ model::Model free_and_ball() {
                                                 Mat3(Vec3(0.04, 0.05, 0.03).asDiagonal())));
   b.add_body("top", inertia::MassProperties(1.5, Vec3(0.0, 0.0, 0.3),
                                             Mat3(Vec3(0.02, 0.02, 0.01).asDiagonal())));
-  b.add_joint(joint("float", JointType::free, "world", "capsule"));
-  b.add_joint(joint("ball", JointType::spherical, "world", "top"));
+  b.add_joint(make_joint("float", JointType::free, "world", "capsule"));
+  b.add_joint(make_joint("ball", JointType::spherical, "world", "top"));
   model::LinearSpringDamper spring;
   spring.name = "tether";
   spring.a.body = "world";
@@ -276,7 +264,7 @@ TEST(Linearize, SphericalPendulumAboutTheBottom) {
   b.set_gravity(Vec3(0, 0, -kG));
   b.add_body("bob",
              inertia::MassProperties(m, Vec3(0, 0, -l), Mat3(Vec3(Ixx, Iyy, Izz).asDiagonal())));
-  b.add_joint(joint("ball", JointType::spherical, "world", "bob"));
+  b.add_joint(make_joint("ball", JointType::spherical, "world", "bob"));
   const model::Model model = b.build();
   const LinearModel lin = linearize(model, initial_operating_point(model));
   const NormalModes nm = undamped_modes(lin);
@@ -301,14 +289,14 @@ model::Model quarter_car(bool wheel_on_road) {
   b.add_body("road_surface", inertia::MassProperties(1.0, Vec3::Zero(), Mat3::Zero()));
   b.add_body("wheel", inertia::MassProperties(m1, Vec3::Zero(), Mat3::Zero()));
   b.add_body("body", inertia::MassProperties(m2, Vec3::Zero(), Mat3::Zero()));
-  Joint road = joint("road", JointType::prismatic, "world", "road_surface", Vec3::UnitZ());
+  Joint road = make_joint("road", JointType::prismatic, "world", "road_surface", Vec3::UnitZ());
   road.prescribed_signals = {"road"};
   b.add_joint(road);
-  Joint wheel = joint("wheel_travel", JointType::prismatic,
-                      wheel_on_road ? "road_surface" : "world", "wheel", Vec3::UnitZ());
+  Joint wheel = make_joint("wheel_travel", JointType::prismatic,
+                           wheel_on_road ? "road_surface" : "world", "wheel", Vec3::UnitZ());
   wheel.X_PJ = Transform::translation(Vec3(0, 0, 0.3));
   b.add_joint(wheel);
-  Joint body = joint("body_travel", JointType::prismatic, "world", "body", Vec3::UnitZ());
+  Joint body = make_joint("body_travel", JointType::prismatic, "world", "body", Vec3::UnitZ());
   body.X_PJ = Transform::translation(Vec3(0, 0, 0.8));
   b.add_joint(body);
   if (wheel_on_road) {
@@ -442,7 +430,7 @@ TEST(Linearize, ErrorsNameTheCulprit) {
   // A signal nothing reads.
   ModelBuilder b;
   b.add_body("bob", inertia::MassProperties(1.0, Vec3(0, 0, -1), Mat3::Zero()));
-  b.add_joint(joint("pivot", JointType::revolute, "world", "bob"));
+  b.add_joint(make_joint("pivot", JointType::revolute, "world", "bob"));
   b.add_signal(model::Signal("idle", model::ConstantSignal{0.0}));
   const model::Model idle = b.build();
   LinearizationOptions io;

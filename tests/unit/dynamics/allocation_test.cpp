@@ -1,7 +1,5 @@
 // The algorithms must not allocate once Data exists: counts global operator new around them, on
 // a random tree with every joint type.
-#include <cstdlib>
-#include <new>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -15,19 +13,8 @@
 #include "momenta/dynamics/point_kinematics.hpp"
 #include "momenta/dynamics/reactions.hpp"
 #include "momenta/dynamics/rnea.hpp"
+#include "momenta_test/allocation_counter.hpp"
 #include "momenta_test/multibody_models.hpp"
-
-namespace {
-thread_local long allocations = 0;
-}  // namespace
-
-void* operator new(std::size_t size) {
-  ++allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace momenta::dynamics {
 namespace {
@@ -44,7 +31,7 @@ TEST(DynamicsAllocation, AlgorithmsDoNotAllocate) {
   mask[1] = mask[4] = 1;
   MatX J(6, m.nv());
   VecX q_out(m.nq()), d(m.nv()), qdot(m.nq());
-  const long before = allocations;
+  const long before = test::allocation_count();
   forward_kinematics(m, data, q);
   forward_kinematics(m, data, q, v);
   forward_kinematics(m, data, q, v, a);
@@ -68,7 +55,7 @@ TEST(DynamicsAllocation, AlgorithmsDoNotAllocate) {
   model::integrate(m, q, v, 0.1, q_out);
   model::difference(m, q, q_out, d);
   model::configuration_rate(m, q, v, qdot);
-  EXPECT_EQ(allocations - before, 0);
+  EXPECT_EQ(test::allocation_count() - before, 0);
 }
 
 }  // namespace

@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "hand_models.hpp"
+#include "momenta_test/hand_models.hpp"
 #include "momenta_test/tolerance.hpp"
 
 namespace momenta::dynamics {

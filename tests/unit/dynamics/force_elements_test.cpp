@@ -11,58 +11,25 @@
 
 #include <gtest/gtest.h>
 
-#include "hand_models.hpp"
 #include "momenta/dynamics/kinematics.hpp"
 #include "momenta/dynamics/rnea.hpp"
 #include "momenta/math/rotation.hpp"
+#include "momenta_test/hand_models.hpp"
 #include "momenta_test/multibody_models.hpp"
 #include "momenta_test/tolerance.hpp"
 
 namespace momenta::dynamics {
 namespace {
 
-using model::AppliedForce;
 using model::AppliedTorque;
 using model::ForceElement;
 using model::JointFriction;
 using model::LinearSpringDamper;
 using model::LoadFrame;
 using model::TorsionalSpringDamper;
-
-// A torsional spring–damper on a 1-dof joint, and one between two bodies.
-TorsionalSpringDamper joint_spring(std::string name, std::string joint, double k, double c,
-                                   double rest) {
-  TorsionalSpringDamper t;
-  t.name = std::move(name);
-  t.joint = std::move(joint);
-  t.stiffness = k;
-  t.damping = c;
-  t.rest_angle = rest;
-  return t;
-}
-TorsionalSpringDamper body_spring(std::string name, std::string a, std::string b, double k,
-                                  double c) {
-  TorsionalSpringDamper t;
-  t.name = std::move(name);
-  t.body_a = std::move(a);
-  t.body_b = std::move(b);
-  t.stiffness = k;
-  t.damping = c;
-  return t;
-}
-
-// An applied force (designated initializers of AppliedForce trip GCC 12's maybe-uninitialized).
-AppliedForce applied_force(std::string name, std::string body, const Vec3& p_BoP_B, LoadFrame frame,
-                           const Vec3& vector, std::string signal) {
-  AppliedForce f;
-  f.name = std::move(name);
-  f.at.body = std::move(body);
-  f.at.p_BoP_B = p_BoP_B;
-  f.frame = frame;
-  f.vector = vector;
-  f.signal = std::move(signal);
-  return f;
-}
+using test::applied_force;
+using test::body_spring;
+using test::joint_spring;
 
 // Hand calculations below are a few operations on O(1) numbers: round-off ~1e-15.
 constexpr double kTol = 1e-13;

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "hand_models.hpp"
 #include "momenta/model/signal.hpp"
+#include "momenta_test/hand_models.hpp"
 #include "momenta_test/tolerance.hpp"
 
 namespace momenta::dynamics {

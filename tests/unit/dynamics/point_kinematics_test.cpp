@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "hand_models.hpp"
 #include "momenta/common/error.hpp"
+#include "momenta_test/hand_models.hpp"
 #include "momenta_test/tolerance.hpp"
 
 namespace momenta::dynamics {

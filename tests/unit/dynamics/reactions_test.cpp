@@ -6,10 +6,10 @@
 
 #include <gtest/gtest.h>
 
-#include "hand_models.hpp"
 #include "momenta/dynamics/aba.hpp"
 #include "momenta/dynamics/hybrid_dynamics.hpp"
 #include "momenta/model/signal.hpp"
+#include "momenta_test/hand_models.hpp"
 #include "momenta_test/tolerance.hpp"
 
 namespace momenta::dynamics {

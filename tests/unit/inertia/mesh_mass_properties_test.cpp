@@ -1,7 +1,5 @@
 #include "momenta/inertia/mesh_mass_properties.hpp"
 
-#include <cstdlib>
-#include <new>
 #include <numbers>
 #include <random>
 
@@ -10,25 +8,9 @@
 #include "momenta/common/error.hpp"
 #include "momenta/inertia/primitives.hpp"
 #include "momenta/math/rotation.hpp"
+#include "momenta_test/allocation_counter.hpp"
 #include "momenta_test/meshes.hpp"
 #include "momenta_test/tolerance.hpp"
-
-// Counts global operator new calls, to show the integration does not allocate.
-namespace {
-thread_local long allocations = 0;
-}  // namespace
-
-// GCC's -Wmismatched-new-delete cannot see that this operator new allocates with malloc.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void* operator new(std::size_t size) {
-  ++allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-#pragma GCC diagnostic pop
 
 namespace momenta::inertia {
 namespace {
@@ -148,9 +130,9 @@ TEST(SolidMesh, PolygonPrismMatchesItsClosedForm) {
 
 TEST(SolidMesh, DoesNotAllocate) {
   const TriangleMesh sphere = test::uv_ellipsoid(Vec3(1, 1, 1), 32, 64);
-  const long before = allocations;
+  const long before = test::allocation_count();
   const MassProperties p = solid_mesh_mass_properties(sphere, Amount::density(1));
-  EXPECT_EQ(allocations - before, 0);
+  EXPECT_EQ(test::allocation_count() - before, 0);
   EXPECT_GT(p.mass(), 0.0);
 }
 

@@ -1,24 +1,10 @@
 // Integrator steps must not allocate: counts global operator new calls around them.
-#include <cstdlib>
-#include <new>
-
 #include <gtest/gtest.h>
 
 #include "momenta/integrate/runge_kutta.hpp"
 #include "momenta/integrate/symplectic_euler.hpp"
+#include "momenta_test/allocation_counter.hpp"
 #include "test_systems.hpp"
-
-namespace {
-thread_local long allocations = 0;
-}  // namespace
-
-void* operator new(std::size_t size) {
-  ++allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace momenta::integrate {
 namespace {
@@ -30,9 +16,9 @@ TEST(IntegratorAllocation, StepsDoNotAllocate) {
     State state{0.0, VecX(4), VecX(Vec3(0.01, 2.0, 0.01))};
     state.q << 1.0, 0.0, 0.0, 0.0;
     integrator->initialize(system, state);
-    const long before = allocations;
+    const long before = momenta::test::allocation_count();
     for (int i = 0; i < 100; ++i) integrator->step(system, state, 1e-2);
-    EXPECT_EQ(allocations - before, 0) << name;
+    EXPECT_EQ(momenta::test::allocation_count() - before, 0) << name;
   }
 }
 

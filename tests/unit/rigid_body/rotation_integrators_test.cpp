@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <functional>
-#include <new>
 #include <string>
 #include <vector>
 
@@ -13,20 +12,9 @@
 #include "momenta/math/rotation.hpp"
 #include "momenta/rigid_body/analytic_references.hpp"
 #include "momenta/rigid_body/free_rigid_body.hpp"
+#include "momenta_test/allocation_counter.hpp"
 #include "momenta_test/rotation_reference.hpp"
 #include "momenta_test/tolerance.hpp"
-
-namespace {
-thread_local long allocations = 0;
-}  // namespace
-
-void* operator new(std::size_t size) {
-  ++allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace momenta::rigid_body {
 namespace {
@@ -208,14 +196,14 @@ TEST(RotationIntegrators, StepsDoNotAllocate) {
   ExactFreeRigidBodyStepper stepper(I);
   Mat3 R = Mat3::Identity();
   Vec3 w(0.5, 0.3, 1.0);
-  const long before = allocations;
+  const long before = test::allocation_count();
   for (int i = 0; i < 100; ++i) {
     strang.step(R, w, 1e-3);
     exact.step(R, w, 1e-3);
     lgvi.step(R, w, 1e-3);
     stepper.step(R, w, 1e-3);
   }
-  EXPECT_EQ(allocations - before, 0);
+  EXPECT_EQ(test::allocation_count() - before, 0);
 }
 
 TEST(RotationIntegrators, RejectInvalidArguments) {

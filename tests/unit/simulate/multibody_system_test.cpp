@@ -11,7 +11,6 @@
 
 #include <gtest/gtest.h>
 
-#include "allocation_counter.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/dynamics/force_elements.hpp"
 #include "momenta/dynamics/momentum.hpp"
@@ -19,13 +18,14 @@
 #include "momenta/integrate/runge_kutta.hpp"
 #include "momenta/integrate/symplectic_euler.hpp"
 #include "momenta/model/model_builder.hpp"
+#include "momenta_test/allocation_counter.hpp"
+#include "momenta_test/hand_models.hpp"
 #include "momenta_test/multibody_models.hpp"
 #include "momenta_test/tolerance.hpp"
 
 namespace momenta::simulate {
 namespace {
 
-using model::AppliedForce;
 using model::AppliedTorque;
 using model::Joint;
 using model::JointFriction;
@@ -34,54 +34,10 @@ using model::LinearSpringDamper;
 using model::LoadFrame;
 using model::Model;
 using model::ModelBuilder;
-using model::TorsionalSpringDamper;
-
-Joint make_joint(std::string name, JointType type, std::string parent, std::string child,
-                 const Vec3& axis = Vec3::UnitY(), const Transform& X_PJ = Transform()) {
-  Joint j;
-  j.name = std::move(name);
-  j.type = type;
-  j.parent = std::move(parent);
-  j.child = std::move(child);
-  j.axis = axis;
-  j.X_PJ = X_PJ;
-  return j;
-}
-
-// A torsional spring–damper on a 1-dof joint, and one between two bodies.
-TorsionalSpringDamper joint_spring(std::string name, std::string joint, double k, double c,
-                                   double rest) {
-  TorsionalSpringDamper t;
-  t.name = std::move(name);
-  t.joint = std::move(joint);
-  t.stiffness = k;
-  t.damping = c;
-  t.rest_angle = rest;
-  return t;
-}
-TorsionalSpringDamper body_spring(std::string name, std::string a, std::string b, double k,
-                                  double c) {
-  TorsionalSpringDamper t;
-  t.name = std::move(name);
-  t.body_a = std::move(a);
-  t.body_b = std::move(b);
-  t.stiffness = k;
-  t.damping = c;
-  return t;
-}
-
-// An applied force (designated initializers of AppliedForce trip GCC 12's maybe-uninitialized).
-AppliedForce applied_force(std::string name, std::string body, const Vec3& p_BoP_B, LoadFrame frame,
-                           const Vec3& vector, std::string signal) {
-  AppliedForce f;
-  f.name = std::move(name);
-  f.at.body = std::move(body);
-  f.at.p_BoP_B = p_BoP_B;
-  f.frame = frame;
-  f.vector = vector;
-  f.signal = std::move(signal);
-  return f;
-}
+using test::applied_force;
+using test::body_spring;
+using test::joint_spring;
+using test::make_joint;
 
 inertia::MassProperties box(double m, const Vec3& c, const Vec3& moments) {
   return {m, c, moments.asDiagonal().toDenseMatrix()};

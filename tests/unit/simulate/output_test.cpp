@@ -12,6 +12,7 @@
 #include "momenta/common/error.hpp"
 #include "momenta/model/model_builder.hpp"
 #include "momenta/simulate/multibody_system.hpp"
+#include "momenta_test/hand_models.hpp"
 #include "momenta_test/tolerance.hpp"
 
 namespace momenta::simulate {
@@ -20,6 +21,7 @@ namespace {
 using model::Joint;
 using model::JointType;
 using model::ModelBuilder;
+using test::make_joint;
 using Q = OutputQuantity;
 
 // Every value here is a few products of O(1) numbers: round-off is a few ulps, 1e-12 allows for
@@ -39,19 +41,7 @@ OutputSpec spec(std::string name, OutputQuantity quantity, std::string target,
 
 // A point mass m on a rigid massless rod of length L, hinged at the world origin about y, θ = 0
 // hanging down (−z). The body frame is at the pivot, the mass at (0, 0, −L) in it.
-model::Model pendulum(double m, double L, double g) {
-  ModelBuilder b;
-  b.set_gravity(Vec3(0, 0, -g));
-  b.add_body("bob", inertia::MassProperties(m, Vec3(0, 0, -L), Mat3::Zero()));
-  Joint j;
-  j.name = "pivot";
-  j.type = JointType::revolute;
-  j.parent = "world";
-  j.child = "bob";
-  j.axis = Vec3::UnitY();
-  b.add_joint(j);
-  return b.build();
-}
+model::Model pendulum(double m, double L, double g) { return test::pendulum(m, L, 0.0, g); }
 
 TEST(OutputSet, ColumnNamesFollowTheQuantityAndComponent) {
   const model::Model m = pendulum(1.0, 1.0, 9.81);
@@ -71,12 +61,7 @@ TEST(OutputSet, ColumnNamesFollowTheQuantityAndComponent) {
 TEST(OutputSet, MultiCoordinateJointGetsOneColumnPerCoordinate) {
   ModelBuilder b;
   b.add_body("ball", inertia::MassProperties(1.0, Vec3::Zero(), Mat3::Identity()));
-  Joint j;
-  j.name = "socket";
-  j.type = JointType::spherical;
-  j.parent = "world";
-  j.child = "ball";
-  b.add_joint(j);
+  b.add_joint(make_joint("socket", JointType::spherical, "world", "ball", Vec3::UnitZ()));
   const model::Model m = b.build();
   const OutputSet set(
       m, {spec("quat", Q::joint_position, "socket"), spec("rate", Q::joint_velocity, "socket"),
@@ -134,12 +119,7 @@ TEST(OutputSet, PrescribedLiftReactionIsMassTimesGPlusA) {
   b.set_gravity(Vec3(0, 0, -g));
   b.add_signal(model::Signal("lift", model::SineSignal{A, f, 0.0, 0.0, 0.0}));
   b.add_body("carriage", inertia::MassProperties(m, r, Mat3::Identity() * 0.01));
-  Joint j;
-  j.name = "slide";
-  j.type = JointType::prismatic;
-  j.parent = "world";
-  j.child = "carriage";
-  j.axis = Vec3::UnitZ();
+  Joint j = make_joint("slide", JointType::prismatic, "world", "carriage", Vec3::UnitZ());
   j.prescribed_signals = {"lift"};
   b.add_joint(j);
   const model::Model model = b.build();
@@ -179,13 +159,7 @@ TEST(OutputSet, SpringLengthAndTensionMatchHandComputation) {
   ModelBuilder b;
   b.set_gravity(Vec3::Zero());
   b.add_body("slider", inertia::MassProperties(1.0, Vec3::Zero(), Mat3::Identity() * 0.01));
-  Joint j;
-  j.name = "rail";
-  j.type = JointType::prismatic;
-  j.parent = "world";
-  j.child = "slider";
-  j.axis = Vec3::UnitX();
-  b.add_joint(j);
+  b.add_joint(make_joint("rail", JointType::prismatic, "world", "slider", Vec3::UnitX()));
   model::LinearSpringDamper spring;
   spring.name = "spring";
   spring.a = {"world", Vec3(-0.5, 0.3, 0.0)};
@@ -215,19 +189,8 @@ TEST(OutputSet, BadOutputsAreRejectedWithTheirName) {
   ModelBuilder b;
   b.add_body("bob", inertia::MassProperties(1.0, Vec3(0, 0, -1), Mat3::Zero()));
   b.add_body("plate", inertia::MassProperties(1.0, Vec3::Zero(), Mat3::Identity()));
-  Joint j;
-  j.name = "pivot";
-  j.type = JointType::revolute;
-  j.parent = "world";
-  j.child = "bob";
-  j.axis = Vec3::UnitY();
-  b.add_joint(j);
-  Joint weld;
-  weld.name = "weld";
-  weld.type = JointType::fixed;
-  weld.parent = "bob";
-  weld.child = "plate";
-  b.add_joint(weld);
+  b.add_joint(make_joint("pivot", JointType::revolute, "world", "bob"));
+  b.add_joint(make_joint("weld", JointType::fixed, "bob", "plate", Vec3::UnitZ()));
   model::JointFriction friction;
   friction.name = "friction";
   friction.joint = "pivot";

@@ -9,7 +9,6 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <new>
 #include <string>
 #include <vector>
 
@@ -26,19 +25,8 @@
 #include "momenta/rigid_body/free_rigid_body.hpp"
 #include "momenta/rigid_body/rotation_integrators.hpp"
 #include "momenta/simulate/multibody_system.hpp"
+#include "momenta_test/allocation_counter.hpp"
 #include "momenta_test/tolerance.hpp"
-
-namespace {
-thread_local long allocations = 0;
-}  // namespace
-
-void* operator new(std::size_t size) {
-  ++allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 
 namespace momenta::simulate {
 namespace {
@@ -470,12 +458,12 @@ TEST(RigidBodyIntegrator, StepsDoNotAllocate) {
       auto integrator = make_rigid_body_integrator(name);
       State state{0.0, model->initial_q(), model->initial_v()};
       integrator->initialize(system, state);
-      const long before = allocations;
+      const long before = test::allocation_count();
       for (int i = 0; i < 100; ++i) integrator->step(system, state, 1e-3);
       // A state edited between steps restarts without allocating either.
       state.v[0] += 0.01;
       integrator->step(system, state, 1e-3);
-      EXPECT_EQ(allocations - before, 0);
+      EXPECT_EQ(test::allocation_count() - before, 0);
     }
   }
 }

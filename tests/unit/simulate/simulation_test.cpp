@@ -10,9 +10,9 @@
 
 #include <gtest/gtest.h>
 
-#include "allocation_counter.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/model/model_builder.hpp"
+#include "momenta_test/allocation_counter.hpp"
 #include "momenta_test/tolerance.hpp"
 
 namespace momenta::simulate {

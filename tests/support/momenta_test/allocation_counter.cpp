@@ -1,4 +1,6 @@
-#include "allocation_counter.hpp"
+// The replacement global operator new behind allocation_count() (allocation_counter.hpp): counts
+// each call on the calling thread, then allocates with malloc as the default one does.
+#include "momenta_test/allocation_counter.hpp"
 
 #include <cstdlib>
 #include <new>

@@ -1,0 +1,74 @@
+#include "output_format.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+namespace momenta::cli {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+// Writes `j` at `indent` into `out`; objects and nested lists open one item a line.
+void write_json(std::string& out, const json& j, int indent, ListSpacing lists) {
+  const auto flat = [](const json& a) {
+    return a.is_array() &&
+           std::all_of(a.begin(), a.end(), [](const json& e) { return e.is_primitive(); });
+  };
+  const std::string pad(static_cast<std::size_t>(indent + 2), ' ');
+  if (j.is_object() && !j.empty()) {
+    out += "{\n";
+    std::size_t i = 0;
+    for (const auto& [key, value] : j.items()) {
+      out += pad + json(key).dump() + ": ";
+      write_json(out, value, indent + 2, lists);
+      out += ++i < j.size() ? ",\n" : "\n";
+    }
+    out += std::string(static_cast<std::size_t>(indent), ' ') + "}";
+  } else if (j.is_array() && !flat(j)) {
+    out += "[\n";
+    for (std::size_t i = 0; i < j.size(); ++i) {
+      out += pad;
+      write_json(out, j[i], indent + 2, lists);
+      out += i + 1 < j.size() ? ",\n" : "\n";
+    }
+    out += std::string(static_cast<std::size_t>(indent), ' ') + "]";
+  } else if (lists == ListSpacing::compact) {
+    out += j.dump();
+  } else {
+    // Numbers, strings and lists of them, compact but for ", " between items (a comma inside a
+    // string stays as it is).
+    const std::string text = j.dump();
+    bool in_string = false;
+    for (std::size_t k = 0; k < text.size(); ++k) {
+      const char c = text[k];
+      if (c == '"' && (k == 0 || text[k - 1] != '\\')) in_string = !in_string;
+      out += c;
+      if (c == ',' && !in_string) out += ' ';
+    }
+  }
+}
+
+}  // namespace
+
+json matrix_json(const MatX& M) {
+  json rows = json::array();
+  for (Eigen::Index i = 0; i < M.rows(); ++i) {
+    json row = json::array();
+    for (Eigen::Index k = 0; k < M.cols(); ++k) row.push_back(M(i, k) + 0.0);
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
+std::string json_text(const json& j, ListSpacing lists) {
+  std::string out;
+  write_json(out, j, 0, lists);
+  return out;
+}
+
+std::string vec_text(const Vec3& v) {
+  return fmt::format("[{:.6g}, {:.6g}, {:.6g}]", v.x(), v.y(), v.z());
+}
+
+}  // namespace momenta::cli

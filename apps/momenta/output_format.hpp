@@ -1,0 +1,26 @@
+#pragma once
+// How the subcommands print numbers, shared so that one layout serves them all: JSON with every
+// list of numbers (a vector, a matrix row) on one line, matrices as JSON rows, vectors as text.
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "momenta/math/types.hpp"
+
+namespace momenta::cli {
+
+/// JSON of a matrix as an array of rows (−0 written as 0).
+nlohmann::ordered_json matrix_json(const MatX& M);
+
+/// What separates the items of a list printed on one line: "," (`compact`) or ", " (`spaced`).
+enum class ListSpacing { compact, spaced };
+
+/// Pretty JSON: an item a line, indented by 2, but a list of numbers or strings on one line
+/// (`"com": [0, 0, 0.11]` reads better than three lines, and a matrix shows as its rows).
+std::string json_text(const nlohmann::ordered_json& j, ListSpacing lists = ListSpacing::compact);
+
+/// "[x, y, z]", 6 significant digits.
+std::string vec_text(const Vec3& v);
+
+}  // namespace momenta::cli

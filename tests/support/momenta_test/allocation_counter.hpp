@@ -1,0 +1,21 @@
+#pragma once
+// Counts heap allocations, for the tests that check a hot path (dynamics algorithms, integrator
+// steps, simulation steps) allocates nothing once its workspace exists.
+//
+// allocation_counter.cpp replaces the global `operator new(std::size_t)` (and the matching
+// `operator delete`s) with versions that count each call on the calling thread. A replacement
+// must be defined exactly once per executable, so the definition is built once, as the OBJECT
+// library `momenta_allocation_counter` (tests/CMakeLists.txt), and linked into the test
+// executables that include this header. It lives in its own translation unit so that GCC does not
+// inline it into code it then flags as a mismatched new/delete (-Werror=mismatched-new-delete).
+//
+// Use: `const long before = test::allocation_count(); <code>; EXPECT_EQ(test::allocation_count()
+// - before, 0);`.
+
+namespace momenta::test {
+
+/// Calls of the global operator new made so far on this thread (array, aligned and nothrow forms
+/// are not replaced and not counted).
+long allocation_count();
+
+}  // namespace momenta::test
