@@ -34,6 +34,7 @@
 #include "momenta/rigid_body/rotation_integrators.hpp"
 #include "momenta/simulate/multibody_system.hpp"
 #include "momenta/simulate/rigid_body_integrator.hpp"
+#include "momenta_test/multibody_models.hpp"
 
 namespace {
 
@@ -47,23 +48,8 @@ constexpr long kSteps = 1'000'000;
 const char* kNames[] = {"splitting", "splitting4", "lie_group",       "exact",
                         "rk4",       "dopri5",     "symplectic_euler"};
 
-// The benchmark body on a free joint to the world, no gravity; B principal, placements identity,
-// so that w_WB_B is v[0..2] and R_WB the joint's quaternion.
 const model::Model& racket() {
-  static const model::Model model = [] {
-    model::Joint joint;
-    joint.name = "free";
-    joint.type = model::JointType::free;
-    joint.parent = "world";
-    joint.child = "racket";
-    joint.v0 = VecX::Zero(6);
-    joint.v0.head<3>() = kOmega0;
-    return model::ModelBuilder()
-        .set_gravity(Vec3::Zero())
-        .add_body("racket", inertia::MassProperties(1.0, Vec3::Zero(), kMoments.asDiagonal()))
-        .add_joint(joint)
-        .build();
-  }();
+  static const model::Model model = test::tumbling_free_body();
   return model;
 }
 

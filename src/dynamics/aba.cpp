@@ -1,6 +1,6 @@
 #include "momenta/dynamics/aba.hpp"
 
-#include <Eigen/Cholesky>
+#include <cmath>
 
 #include "joint_kernels.hpp"
 #include "scalar_kernels.hpp"
@@ -9,9 +9,113 @@
 namespace momenta::dynamics {
 
 namespace detail {
-// Matrices of at most 6×6 on the stack (no allocation) for multi-dof joints.
-using MatN = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
-using VecN = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
+
+// A multi-dof joint's n × n blocks: fixed N (2, 3, 6) or Eigen::Dynamic with at most 6 (on the
+// stack either way: no allocation).
+template <int N>
+using MatNN =
+    Eigen::Matrix<double, N, N, 0, (N == Eigen::Dynamic ? 6 : N), (N == Eigen::Dynamic ? 6 : N)>;
+template <int N>
+using VecNd = Eigen::Matrix<double, N, 1, 0, (N == Eigen::Dynamic ? 6 : N), 1>;
+
+// Leading n columns / n × n corner / n entries, as fixed-size blocks when N is fixed.
+template <int N, class M>
+auto left_cols(M& m, int n) {
+  if constexpr (N == Eigen::Dynamic) {
+    return m.leftCols(n);
+  } else {
+    (void)n;
+    return m.template leftCols<N>();
+  }
+}
+template <int N, class M>
+auto corner(M& m, int n) {
+  if constexpr (N == Eigen::Dynamic) {
+    return m.topLeftCorner(n, n);
+  } else {
+    (void)n;
+    return m.template topLeftCorner<N, N>();
+  }
+}
+template <int N, class V>
+auto segment(V& v, int start, int n) {
+  if constexpr (N == Eigen::Dynamic) {
+    return v.segment(start, n);
+  } else {
+    (void)n;
+    return v.template segment<N>(start);
+  }
+}
+
+// D⁻¹ of the joint's symmetric positive-definite n × n matrix D = Sᵀ IA S by Cholesky, written
+// out so that fixed N unrolls: Eigen's LLT::solve(Identity) dispatches to its blocked triangular
+// solvers, which cost more than the whole rest of the articulated-body pass at these sizes.
+// D = L Lᵀ, W = L⁻¹ (lower), D⁻¹ = Wᵀ W.
+template <int N>
+MatNN<N> spd_inverse(const MatNN<N>& D, int n) {
+  const int m = N == Eigen::Dynamic ? n : N;
+  MatNN<N> L = MatNN<N>::Zero(m, m);
+  for (int j = 0; j < m; ++j) {
+    double d = D(j, j);
+    for (int k = 0; k < j; ++k) d -= L(j, k) * L(j, k);
+    L(j, j) = std::sqrt(d);
+    const double inv = 1.0 / L(j, j);
+    for (int i = j + 1; i < m; ++i) {
+      double x = D(i, j);
+      for (int k = 0; k < j; ++k) x -= L(i, k) * L(j, k);
+      L(i, j) = x * inv;
+    }
+  }
+  MatNN<N> W = MatNN<N>::Zero(m, m);
+  for (int j = 0; j < m; ++j) {
+    W(j, j) = 1.0 / L(j, j);
+    for (int i = j + 1; i < m; ++i) {
+      double x = 0.0;
+      for (int k = j; k < i; ++k) x += L(i, k) * W(k, j);
+      W(i, j) = -x / L(i, i);
+    }
+  }
+  MatNN<N> Dinv(m, m);
+  for (int c = 0; c < m; ++c) {
+    for (int r = c; r < m; ++r) {
+      double x = 0.0;
+      for (int k = r; k < m; ++k) x += W(k, r) * W(k, c);
+      Dinv(r, c) = x;
+      Dinv(c, r) = x;
+    }
+  }
+  return Dinv;
+}
+
+// Pass 2 for joint j with N degrees of freedom: U = IA S, D⁻¹ = (Sᵀ U)⁻¹, u = τ − Sᵀ pA; and,
+// unless it is a root joint, Ia = IA − U D⁻¹ Uᵀ into IA and pa += U D⁻¹ u.
+template <int N>
+void articulate(Data& data, int j, const double* tau, bool root, Vec6& pa, int n = N) {
+  const int i = j + 1;
+  Mat6& IA = data.IA[i];
+  const auto S = left_cols<N>(data.S[j], n);
+  const Eigen::Matrix<double, 6, N, 0, 6, (N == Eigen::Dynamic ? 6 : N)> U = IA * S;
+  const MatNN<N> D = S.transpose() * U;
+  const MatNN<N> Dinv = spd_inverse<N>(D, n);
+  const VecNd<N> u = Eigen::Map<const VecNd<N>>(tau, n) - S.transpose() * data.pA[i];
+  left_cols<N>(data.U[j], n) = U;
+  corner<N>(data.Dinv[j], n) = Dinv;
+  segment<N>(data.u[j], 0, n) = u;
+  if (root) return;
+  const Eigen::Matrix<double, 6, N, 0, 6, (N == Eigen::Dynamic ? 6 : N)> U_Dinv = U * Dinv;
+  IA.noalias() -= U_Dinv * U.transpose();
+  pa.noalias() += U_Dinv * u;
+}
+
+// Pass 3 for joint j: v̇_j = D⁻¹ (u − Uᵀ a) and a += S v̇_j.
+template <int N>
+void accelerate(Data& data, int j, int v_index, Vec6& a, int n = N) {
+  const VecNd<N> qdd = corner<N>(data.Dinv[j], n) *
+                       (segment<N>(data.u[j], 0, n) - left_cols<N>(data.U[j], n).transpose() * a);
+  segment<N>(data.vdot, v_index, n) = qdd;
+  a.noalias() += left_cols<N>(data.S[j], n) * qdd;
+}
+
 }  // namespace detail
 
 const VecX& aba(const Model& model, Data& data, const VecX& q, const VecX& v, const VecX& tau,
@@ -101,20 +205,22 @@ const VecX& aba(const Model& model, Data& data, const VecX& q, const VecX& v, co
     }
     Vec6 pa = pA;
     if (c.nv > 0) {
-      const int n = c.nv;
-      const auto S = data.S[j].leftCols(n);
-      auto U = data.U[j].leftCols(n);
-      U.noalias() = IA * S;
-      const detail::MatN D = S.transpose() * U;
-      const Eigen::LLT<detail::MatN> llt(D);
-      auto Dinv = data.Dinv[j].topLeftCorner(n, n);
-      Dinv = llt.solve(detail::MatN::Identity(n, n));
-      auto u = data.u[j].head(n);
-      u = tau.segment(c.v_index, n) - S.transpose() * pA;
+      // Fixed sizes for the common multi-dof joints (Eigen unrolls and vectorizes them).
+      switch (c.nv) {
+        case 2:
+          detail::articulate<2>(data, j, tau.data() + c.v_index, p == 0, pa);
+          break;
+        case 3:
+          detail::articulate<3>(data, j, tau.data() + c.v_index, p == 0, pa);
+          break;
+        case 6:
+          detail::articulate<6>(data, j, tau.data() + c.v_index, p == 0, pa);
+          break;
+        default:
+          detail::articulate<Eigen::Dynamic>(data, j, tau.data() + c.v_index, p == 0, pa, c.nv);
+          break;
+      }
       if (p == 0) continue;
-      const Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6> U_Dinv = U * Dinv;
-      IA.noalias() -= U_Dinv * U.transpose();
-      pa += U_Dinv * u;
     } else if (p == 0) {
       continue;
     }
@@ -144,11 +250,20 @@ const VecX& aba(const Model& model, Data& data, const VecX& q, const VecX& v, co
         a += data.S[j].col(0) * qdd;
       }
     } else if (c.nv > 0) {
-      const int n = c.nv;
-      const detail::VecN qdd = data.Dinv[j].topLeftCorner(n, n) *
-                               (data.u[j].head(n) - data.U[j].leftCols(n).transpose() * a);
-      data.vdot.segment(c.v_index, n) = qdd;
-      a += data.S[j].leftCols(n) * qdd;
+      switch (c.nv) {
+        case 2:
+          detail::accelerate<2>(data, j, c.v_index, a);
+          break;
+        case 3:
+          detail::accelerate<3>(data, j, c.v_index, a);
+          break;
+        case 6:
+          detail::accelerate<6>(data, j, c.v_index, a);
+          break;
+        default:
+          detail::accelerate<Eigen::Dynamic>(data, j, c.v_index, a, c.nv);
+          break;
+      }
     }
   }
   return data.vdot;

@@ -136,4 +136,23 @@ inline Model revolute_chain(int n) {
   return builder.build();
 }
 
+/// The peer figures' tumbling body (/work/shared/references.md): I = diag(1, 2, 3) kg·m² on a free
+/// joint to the world, ω0 = (0.01, 2, 0.01) rad/s near the intermediate axis (it flips), no
+/// gravity. B is principal and every placement the identity, so w_WB_B is v[0..2] and R_WB the
+/// joint's quaternion q[3..6].
+inline Model tumbling_free_body() {
+  Joint joint;
+  joint.name = "free";
+  joint.type = JointType::free;
+  joint.parent = "world";
+  joint.child = "racket";
+  joint.v0 = VecX::Zero(6);
+  joint.v0.head<3>() = Vec3(0.01, 2.0, 0.01);
+  return ModelBuilder()
+      .set_gravity(Vec3::Zero())
+      .add_body("racket", inertia::MassProperties(1.0, Vec3::Zero(), Vec3(1, 2, 3).asDiagonal()))
+      .add_joint(joint)
+      .build();
+}
+
 }  // namespace momenta::test
