@@ -7,8 +7,10 @@ cd "$(dirname "$0")/.."
 scripts/bootstrap.sh
 if [[ "${1:-}" == "--sanitize" ]]; then
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  # -O1 -g1 (line tables for the reports' stack traces): what the sanitizers recommend, and half
+  # the compile time of -O2 -g on this 2-core machine.
   BUILD_TYPE=RelWithDebInfo scripts/build.sh build-sanitize -DMOMENTA_SANITIZE=ON \
-    -DMOMENTA_BUILD_BENCHMARKS=OFF
+    -DMOMENTA_BUILD_BENCHMARKS=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
   ctest --test-dir build-sanitize --output-on-failure --parallel "$(nproc)"
 else
   scripts/build.sh build -DMOMENTA_WARNINGS_AS_ERRORS=ON

@@ -2,6 +2,7 @@
 // model file linearized about an operating point, and its undamped normal modes where the
 // stiffness is symmetric. Calls momenta::analysis; documented in docs/cli.md.
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -76,8 +77,18 @@ void run(const ModesOptions& o) {
     fmt::print("{}\n", json_text(j));
     return;
   }
-  fmt::print("{}: modes about {} ({} states)\n\n", loaded.file.name, loaded.about,
+  fmt::print("{}: modes about {} ({} states)\n", loaded.file.name, loaded.about,
              m.state_names.size());
+  // Modes of a state that is not at rest describe the motion linearized at that instant only.
+  double worst = 0.0;
+  for (const int i : lin.coordinates) worst = std::max(worst, std::abs(lin.acceleration[i]));
+  if (worst > 1e-9) {
+    fmt::print(
+        "note: this state is not an equilibrium (largest acceleration {:.4g}): the modes describe "
+        "the motion linearized at this instant; --about equilibrium finds a state at rest\n",
+        worst);
+  }
+  fmt::print("\n");
   fmt::print("  {:>3}  {:>26}  {:>12}  {:>12}  {:>10}  {}\n", "#", "eigenvalue 1/s", "ωn rad/s",
              "ωn Hz", "ζ", "largest shape entries");
   for (std::size_t k = 0; k < m.modes.size(); ++k) {
@@ -107,6 +118,13 @@ void run(const ModesOptions& o) {
       for (Eigen::Index i = 0; i < mode.shape.size(); ++i)
         entries.push_back(fmt::format(
             "{} {:.4g}", normal->coordinate_names[static_cast<std::size_t>(i)], mode.shape[i]));
+      if (mode.squared_frequency < 0) {
+        // A negative stiffness: no oscillation, the mode grows like e^{√(−ω²) t}.
+        fmt::print("  {:>3}  ω² = {:<12.6g} unstable: grows like e^({:.6g} t)   [{}]\n", k + 1,
+                   mode.squared_frequency, std::sqrt(-mode.squared_frequency),
+                   fmt::join(entries, ", "));
+        continue;
+      }
       fmt::print("  {:>3}  ω² = {:<12.6g} ω = {:.6g} rad/s = {:.6g} Hz   [{}]\n", k + 1,
                  mode.squared_frequency, mode.natural_frequency, hz(mode.natural_frequency),
                  fmt::join(entries, ", "));

@@ -25,6 +25,13 @@ ModelResidual::ModelResidual(const model::Model& model)
     if (j.is_prescribed()) continue;
     for (int k = 0; k < j.nv(); ++k) free_.push_back(j.v_index + k);
   }
+  // With nothing free there is no state to linearize or balance.
+  if (free_.empty()) {
+    throw InvalidArgument(
+        "the model has no degree of freedom to linearize or balance: every joint is fixed or "
+        "prescribed (a prescribed joint's motion is an input, not a state). Simulate it instead "
+        "(momenta simulate --reactions) to see the loads its motion needs");
+  }
 }
 
 void ModelResidual::set_offset(int signal, double value, double rate, double acceleration) {

@@ -53,11 +53,11 @@ struct Equilibrium {
 
 /// Finds the static equilibrium nearest (by Newton's method) to the configuration `q_guess`
 /// (size nq; its prescribed coordinates are replaced by their signals).
-/// Throws InvalidArgument when q_guess has the wrong size or a non-unit quaternion;
-/// NumericalError when there is no equilibrium to be found: the line search stalls with the
-/// residual still above tolerance (the forces cannot balance, e.g. a constant push on a
-/// coordinate with no restoring force, or K singular along the residual) or the iterations run
-/// out — the message names the largest residual coordinate and its value.
+/// Throws InvalidArgument when no joint is free (all fixed or prescribed), when q_guess has the
+/// wrong size or a non-unit quaternion; NumericalError when there is no equilibrium to be found:
+/// the line search stalls with the residual still above tolerance (the forces cannot balance, e.g.
+/// a constant push on a coordinate with no restoring force, or K singular along the residual) or
+/// the iterations run out — the message names the largest residual coordinate and its value.
 Equilibrium find_equilibrium(const model::Model& model, const VecX& q_guess,
                              const EquilibriumOptions& options = {});
 

@@ -116,11 +116,11 @@ struct LinearModel {
 
 /// Linearizes `model` about `point` (q nq, v nv; quaternions unit to 1e-6) with respect to the
 /// inputs and outputs of `options`.
-/// Throws InvalidArgument on a state of the wrong size, an unknown input or output name (with a
-/// "did you mean"), a repeated name, an input that drives nothing, or an output that feels a
-/// prescribed input's rate or acceleration directly (an improper transfer function, named);
-/// NumericalError when the mass matrix of the free coordinates is not positive definite or a
-/// derivative is not finite.
+/// Throws InvalidArgument when no joint is free (all fixed or prescribed), on a state of the wrong
+/// size, an unknown input or output name (with a "did you mean"), a repeated name, an input that
+/// drives nothing, or an output that feels a prescribed input's rate or acceleration directly (an
+/// improper transfer function, named); NumericalError when the mass matrix of the free coordinates
+/// is not positive definite or a derivative is not finite.
 LinearModel linearize(const model::Model& model, const OperatingPoint& point,
                       const LinearizationOptions& options = {});
 

@@ -438,6 +438,20 @@ TEST(Linearize, ErrorsNameTheCulprit) {
   EXPECT_THROW(linearize(idle, initial_operating_point(idle), io), InvalidArgument);
   // By default it is left out.
   EXPECT_EQ(linearize(idle, initial_operating_point(idle)).system.input_count(), 0u);
+  // Nothing free: a shaft turned by a prescribed signal has no state.
+  ModelBuilder shaft;
+  shaft.add_body("shaft", inertia::MassProperties(1.0, Vec3::Zero(), Mat3::Identity()));
+  model::Joint bearing = make_joint("bearing", JointType::revolute, "world", "shaft");
+  bearing.prescribed_signals = {"angle"};
+  shaft.add_joint(bearing);
+  shaft.add_signal(model::Signal("angle", model::RampSignal{.slope = 10.0}));
+  const model::Model driven = shaft.build();
+  try {
+    linearize(driven, initial_operating_point(driven));
+    ADD_FAILURE() << "a model without a free joint was linearized";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("no degree of freedom"), std::string::npos) << e.what();
+  }
 }
 
 TEST(Linearize, CharacteristicLengthAndStateNames) {
