@@ -14,19 +14,19 @@ namespace momenta::io {
 
 /// The file's `simulation:` section: defaults that `momenta simulate` options override.
 struct SimulationSettings {
-  std::optional<double> duration;          ///< s, > 0
-  std::optional<double> step;              ///< fixed step, or an adaptive method's largest, s
-  std::optional<std::string> integrator;   ///< a name integrate::make_integrator knows
+  std::optional<double> duration;         ///< s, > 0
+  std::optional<double> step;             ///< fixed step, or an adaptive method's largest, s
+  std::optional<std::string> integrator;  ///< a name integrate::make_integrator knows
   std::optional<double> relative_tolerance;
   std::optional<double> absolute_tolerance;
-  std::optional<long> every;               ///< record every n-th step
+  std::optional<long> every;  ///< record every n-th step
 };
 
 /// What a model file describes.
 struct ModelFile {
-  std::string name;          ///< The file's `name:`, or the file's stem.
-  std::string description;   ///< The file's `description:`, or empty.
-  model::Model model;        ///< Built and validated.
+  std::string name;                           ///< The file's `name:`, or the file's stem.
+  std::string description;                    ///< The file's `description:`, or empty.
+  model::Model model;                         ///< Built and validated.
   std::vector<simulate::OutputSpec> outputs;  ///< The `outputs:` section, in file order.
   SimulationSettings simulation;
 };
