@@ -50,11 +50,6 @@ std::string Declared::resolve(const YamlNode& ref, bool allow_world) const {
                        known));
 }
 
-std::string one_line(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  return text;
-}
-
 std::vector<YamlNode> list_section(const YamlNode& root, std::string_view key) {
   const auto node = root.find(key);
   if (!node || node->is_null()) return {};

@@ -12,6 +12,7 @@
 #include "momenta/io/model_file.hpp"
 #include "momenta/io/yaml_reader.hpp"
 #include "momenta/model/model_builder.hpp"
+#include "one_line.hpp"
 
 namespace momenta::io::detail {
 
@@ -51,9 +52,6 @@ struct Context {
   /// Joint types by joint name (for checks that need them before the model is built).
   std::map<std::string, model::JointType, std::less<>> joint_types;
 };
-
-/// Messages must stay on one line: a wrapped library message could carry a newline.
-std::string one_line(std::string text);
 
 /// A list section: its elements, or none when the key is absent or empty (`forces:`). Throws
 /// unless it is a list.

@@ -19,6 +19,7 @@
 #include "momenta/io/part_node.hpp"
 #include "momenta/io/yaml_reader.hpp"
 #include "momenta/math/rotation.hpp"
+#include "one_line.hpp"
 
 namespace momenta::io {
 namespace {
@@ -172,11 +173,7 @@ constexpr std::array<std::string_view, 5> kFileKeys = {"name", "description", "u
 constexpr std::array<std::string_view, 6> kPoseKeys = {"name",     "hole",       "position",
                                                        "rotation", "quaternion", "euler"};
 
-// Messages must stay on one line: a wrapped library message could carry a newline.
-std::string one_line(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  return text;
-}
+using detail::one_line;
 
 }  // namespace
 
