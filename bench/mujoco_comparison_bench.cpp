@@ -12,7 +12,7 @@
 //
 // The tumbling free body of the peer figures (I = diag(1, 2, 3) kg·m², ω0 = (0.01, 2, 0.01)
 // rad/s, h = 1 ms, 10⁶ steps): MuJoCo's mj_step with its RK4 integrator against momenta's
-// integrators on the same body as a model (simulate::MultibodySystem): ns per step, and as
+// integrators on the same body as a model (system::MultibodySystem): ns per step, and as
 // counters the relative energy and |H| drift at the end of the 10⁶ steps.
 
 #include <cmath>
@@ -31,8 +31,8 @@
 #include "momenta/dynamics/crba.hpp"
 #include "momenta/dynamics/rnea.hpp"
 #include "momenta/integrate/integrator.hpp"
-#include "momenta/simulate/multibody_system.hpp"
-#include "momenta/simulate/rigid_body_integrator.hpp"
+#include "momenta/system/multibody_system.hpp"
+#include "momenta/system/rigid_body_integrator.hpp"
 #include "momenta_test/multibody_models.hpp"
 
 namespace {
@@ -254,8 +254,8 @@ void BM_Momenta_FreeBody(benchmark::State& state) {
   const char* name = kFreeBodyIntegrators[state.range(0)];
   state.SetLabel(name);
   static const model::Model model = test::tumbling_free_body();
-  simulate::MultibodySystem system(model);
-  std::unique_ptr<integrate::Integrator> integrator = simulate::make_rigid_body_integrator(name);
+  system::MultibodySystem system(model);
+  std::unique_ptr<integrate::Integrator> integrator = system::make_rigid_body_integrator(name);
   if (!integrator) integrator = integrate::make_integrator(name);
   integrate::State s{0.0, model.initial_q(), model.initial_v()};
   integrator->initialize(system, s);

@@ -1,8 +1,8 @@
 // Integrators on a model: the free rigid body of the peer figures (/work/shared/references.md),
 // I = diag(1, 2, 3) kg·m², ω0 = (0.01, 2, 0.01) rad/s, as a one-body model on a free joint
-// (simulate::MultibodySystem), h = 1 ms, 1e6 steps (1000 s, 45 periods of ω, 90 flips). Every
+// (system::MultibodySystem), h = 1 ms, 1e6 steps (1000 s, 45 periods of ω, 90 flips). Every
 // integrator the model can be run with: the structure-preserving ones
-// (simulate::make_rigid_body_integrator) and the generic ones (integrate::make_integrator).
+// (system::make_rigid_body_integrator) and the generic ones (integrate::make_integrator).
 //
 //   BM_ModelStep/<integrator>   ns per step over exactly 1e6 steps from the initial state
 //                               (--benchmark_repetitions=3, quote the median), and as counters
@@ -32,8 +32,8 @@
 #include "momenta/model/model_builder.hpp"
 #include "momenta/rigid_body/free_rigid_body.hpp"
 #include "momenta/rigid_body/rotation_integrators.hpp"
-#include "momenta/simulate/multibody_system.hpp"
-#include "momenta/simulate/rigid_body_integrator.hpp"
+#include "momenta/system/multibody_system.hpp"
+#include "momenta/system/rigid_body_integrator.hpp"
 #include "momenta_test/multibody_models.hpp"
 
 namespace {
@@ -54,7 +54,7 @@ const model::Model& racket() {
 }
 
 std::unique_ptr<integrate::Integrator> make(std::string_view name) {
-  if (auto integrator = simulate::make_rigid_body_integrator(name)) return integrator;
+  if (auto integrator = system::make_rigid_body_integrator(name)) return integrator;
   return integrate::make_integrator(name);
 }
 
@@ -70,7 +70,7 @@ void BM_ModelStep(benchmark::State& bench) {
   const std::string_view name = kNames[bench.range(0)];
   bench.SetLabel(std::string(name));
   const model::Model& model = racket();
-  simulate::MultibodySystem system(model);
+  system::MultibodySystem system(model);
   auto integrator = make(name);
   integrate::State s{0.0, model.initial_q(), model.initial_v()};
   integrator->initialize(system, s);
@@ -106,7 +106,7 @@ void BM_ModelEnergyMax(benchmark::State& bench) {
   bench.SetLabel(std::string(name));
   const model::Model& model = racket();
   for (auto _ : bench) {
-    simulate::MultibodySystem system(model);
+    system::MultibodySystem system(model);
     auto integrator = make(name);
     integrate::State s{0.0, model.initial_q(), model.initial_v()};
     integrator->initialize(system, s);

@@ -15,7 +15,7 @@
 
 #include "momenta/integrate/runge_kutta.hpp"
 #include "momenta/integrate/symplectic_euler.hpp"
-#include "momenta/simulate/multibody_system.hpp"
+#include "momenta/system/multibody_system.hpp"
 #include "momenta_test/multibody_models.hpp"
 
 namespace {
@@ -52,7 +52,7 @@ struct Setup {
     }
   }
   model::Model model;
-  simulate::MultibodySystem system;
+  system::MultibodySystem system;
   integrate::State state;
 };
 

@@ -12,10 +12,11 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "model_loading.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/io/model_file.hpp"
-#include "momenta/simulate/multibody_system.hpp"
-#include "momenta/simulate/output.hpp"
+#include "momenta/system/multibody_system.hpp"
+#include "momenta/system/output_set.hpp"
 #include "output_format.hpp"
 
 namespace momenta::cli {
@@ -197,7 +198,7 @@ std::string signal_text(const json& j) {
 // Everything `info` reports, as JSON; the text form prints from it.
 json describe(const InfoOptions& o, const io::ModelFile& file) {
   const model::Model& m = file.model;
-  const simulate::MultibodySystem system(m);
+  const system::MultibodySystem system(m);
   json j;
   j["file"] = o.model;
   j["name"] = file.name;
@@ -251,16 +252,16 @@ json describe(const InfoOptions& o, const io::ModelFile& file) {
 
   // Outputs with the columns each gives, resolved as `simulate` resolves them.
   json out = json::array();
-  for (const simulate::OutputSpec& spec : file.outputs) {
-    const simulate::OutputSet one(m, {spec});
+  for (const model::OutputSpec& spec : file.outputs) {
+    const system::OutputSet one(m, {spec});
     out.push_back({{"name", spec.name},
-                   {"quantity", simulate::output_quantity_name(spec.quantity)},
+                   {"quantity", model::output_quantity_name(spec.quantity)},
                    {"target", spec.target},
                    {"columns", one.column_names()}});
   }
   j["outputs"] = std::move(out);
 
-  const io::SimulationSettings& s = file.simulation;
+  const model::SimulationSettings& s = file.simulation;
   json settings = json::object();
   if (s.duration) settings["duration"] = *s.duration;
   if (s.step) settings["step"] = *s.step;
@@ -342,7 +343,7 @@ void print_text(const json& j, const io::ModelFile& file) {
 }
 
 void run(const InfoOptions& o) {
-  const io::ModelFile file = io::read_model_file(o.model);
+  const io::ModelFile file = load_model(o.model);
   const json j = describe(o, file);
   if (o.json) {
     fmt::print("{}\n", j.dump(2));

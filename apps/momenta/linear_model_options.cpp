@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "model_loading.hpp"
 #include "momenta/common/error.hpp"
 
 namespace momenta::cli {
@@ -87,7 +88,7 @@ void add_linear_model_options(CLI::App* command, LinearModelOptions& o, bool wit
 }
 
 LoadedLinearModel load_linear_model(const LinearModelOptions& o) {
-  LoadedLinearModel r{io::read_model_file(o.model), {}, {}};
+  LoadedLinearModel r{load_model(o.model), {}, {}};
   const model::Model& model = r.file.model;
   analysis::LinearizationOptions options;
   options.inputs = o.inputs;

@@ -11,10 +11,12 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "model_loading.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/io/model_file.hpp"
 #include "momenta/simulate/csv_writer.hpp"
 #include "momenta/simulate/simulation.hpp"
+#include "momenta/system/integrators.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -37,7 +39,7 @@ struct SimulateOptions {
 constexpr double kAdaptiveSteps = 1000.0;
 
 // The command line over the file's `simulation:` section over the defaults (docs/cli.md).
-simulate::SimulationOptions merge(const SimulateOptions& o, const io::SimulationSettings& file) {
+simulate::SimulationOptions merge(const SimulateOptions& o, const model::SimulationSettings& file) {
   simulate::SimulationOptions s;
   s.duration = o.duration.value_or(file.duration.value_or(s.duration));
   s.tolerances.relative = o.rtol.value_or(file.relative_tolerance.value_or(s.tolerances.relative));
@@ -48,7 +50,7 @@ simulate::SimulationOptions merge(const SimulateOptions& o, const io::Simulation
       tolerances_given || file.relative_tolerance || file.absolute_tolerance ? "dopri5" : "rk4";
   s.integrator = o.integrator.value_or(file.integrator.value_or(fallback));
   const std::unique_ptr<integrate::Integrator> probe =
-      simulate::make_simulation_integrator(s.integrator, s.tolerances);
+      system::make_integrator(s.integrator, s.tolerances);
   if (tolerances_given && !probe->adaptive()) {
     throw CLI::ValidationError(o.rtol ? "--rtol" : "--atol",
                                fmt::format("applies to adaptive integrators (dopri5); '{}' takes "
@@ -63,7 +65,7 @@ simulate::SimulationOptions merge(const SimulateOptions& o, const io::Simulation
 }
 
 void run(const SimulateOptions& o) {
-  const io::ModelFile file = io::read_model_file(o.model);
+  const io::ModelFile file = load_model(o.model);
   const simulate::SimulationOptions options = merge(o, file.simulation);
   // Built before the output is opened: a bad option or output leaves no empty file behind.
   simulate::Simulation simulation(file.model, file.outputs, options);

@@ -136,9 +136,9 @@ struct OutputRow {
 std::vector<OutputRow> resolve_outputs(const model::Model& model,
                                        const std::vector<std::string>& state_names,
                                        const LinearizationOptions& options,
-                                       std::vector<simulate::OutputSpec>& specs) {
+                                       std::vector<model::OutputSpec>& specs) {
   specs = options.output_specs;
-  const std::vector<std::string> columns = simulate::OutputSet(model, specs).column_names();
+  const std::vector<std::string> columns = system::OutputSet(model, specs).column_names();
   const std::size_t nf = state_names.size() / 2;
 
   std::vector<std::string> names = options.outputs;
@@ -167,18 +167,18 @@ std::vector<OutputRow> resolve_outputs(const model::Model& model,
       continue;
     }
     // Any model coordinate: a joint-position or joint-velocity output of one component.
-    std::optional<simulate::OutputSpec> spec;
+    std::optional<model::OutputSpec> spec;
     for (int i = 0; i < model.nq() && !spec; ++i) {
       if (model.q_name(i) != name) continue;
       const model::Joint& j = model.joint(model.joint_of_q(i));
-      spec = simulate::OutputSpec{name, simulate::OutputQuantity::joint_position, j.name,
-                                  Vec3::Zero(), i - j.q_index};
+      spec = model::OutputSpec{name, model::OutputQuantity::joint_position, j.name, Vec3::Zero(),
+                               i - j.q_index};
     }
     for (int i = 0; i < model.nv() && !spec; ++i) {
       if (model.v_name(i) != name) continue;
       const model::Joint& j = model.joint(model.joint_of_v(i));
-      spec = simulate::OutputSpec{name, simulate::OutputQuantity::joint_velocity, j.name,
-                                  Vec3::Zero(), i - j.v_index};
+      spec = model::OutputSpec{name, model::OutputQuantity::joint_velocity, j.name, Vec3::Zero(),
+                               i - j.v_index};
     }
     if (spec) {
       specs.push_back(*spec);
@@ -261,7 +261,7 @@ LinearModel linearize(const model::Model& model, const OperatingPoint& point,
         options.angle_step, options.length_step));
   }
   ModelResidual residual(model);
-  simulate::MultibodySystem& system = residual.system();
+  system::MultibodySystem& system = residual.system();
   const double t = point.t;
   const int nf = residual.nf();
   const int n = 2 * nf;
@@ -281,9 +281,9 @@ LinearModel linearize(const model::Model& model, const OperatingPoint& point,
   // Names, inputs and outputs.
   const std::vector<std::string> state_names = linear_state_names(model);
   const std::vector<Input> inputs = resolve_inputs(model, options.inputs);
-  std::vector<simulate::OutputSpec> specs;
+  std::vector<model::OutputSpec> specs;
   const std::vector<OutputRow> rows = resolve_outputs(model, state_names, options, specs);
-  const simulate::OutputSet output_set(model, specs);
+  const system::OutputSet output_set(model, specs);
   const int columns = static_cast<int>(output_set.size());
   const int m = static_cast<int>(inputs.size());
   const int p = static_cast<int>(rows.size());

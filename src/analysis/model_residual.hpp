@@ -8,7 +8,7 @@
 #include "momenta/dynamics/data.hpp"
 #include "momenta/math/types.hpp"
 #include "momenta/model/model.hpp"
-#include "momenta/simulate/multibody_system.hpp"
+#include "momenta/system/multibody_system.hpp"
 
 namespace momenta::analysis::detail {
 
@@ -21,7 +21,7 @@ class ModelResidual {
   explicit ModelResidual(const model::Model& model);
 
   const model::Model& model() const { return model_; }
-  simulate::MultibodySystem& system() { return system_; }
+  system::MultibodySystem& system() { return system_; }
 
   /// Velocity indices of the free coordinates, ascending.
   const std::vector<int>& free() const { return free_; }
@@ -44,7 +44,7 @@ class ModelResidual {
 
  private:
   const model::Model& model_;
-  simulate::MultibodySystem system_;
+  system::MultibodySystem system_;
   dynamics::Data data_;
   std::vector<int> free_;
   std::vector<double> offset_value_, offset_rate_, offset_acceleration_;

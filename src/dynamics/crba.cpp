@@ -106,13 +106,17 @@ void check_mass_matrix(const Model& model, const VecX& q) {
     for (int c = 0; c < n; ++c) M(r, c) = M_full(free[r], free[c]);
   }
   // Cholesky without pivoting, in coordinate order, so the first vanishing pivot names the
-  // first coordinate whose motion nothing before it or itself resists.
+  // first coordinate whose motion nothing before it or itself resists. A pivot vanishes when it
+  // is round-off of its own diagonal entry (a coordinate doing what earlier ones already do), or
+  // of the matrix as a whole (a body turned about its own zero-inertia axis, whose entry is
+  // m L² cos²(π/2) ≈ 1e-33 rather than exactly 0).
+  const double scale = n > 0 ? M.diagonal().cwiseAbs().maxCoeff() : 0.0;
   MatX L = MatX::Zero(n, n);
   for (int j = 0; j < n; ++j) {
     const double pivot = M(j, j) - L.row(j).head(j).squaredNorm();
-    if (!(pivot > 1e-12 * M(j, j))) {
+    if (!(pivot > 1e-12 * M(j, j)) || !(pivot > 1e-14 * scale)) {
       const model::Joint& joint = model.joint(model.joint_of_v(free[j]));
-      throw InvalidArgument(fmt::format(
+      InvalidArgument error(fmt::format(
           "joint '{}': the mass matrix is singular along its coordinate '{}' (pivot {:.3g} of "
           "M_ii = {:.3g}): no inertia resists that motion. A body with zero inertia about an "
           "axis its joint lets it turn about (a slender rod or point mass spinning about "
@@ -120,6 +124,8 @@ void check_mass_matrix(const Model& model, const VecX& q) {
           "acceleration. Give the body inertia about that axis (a cylinder rather than a slender "
           "rod) or remove the freedom (a revolute or fixed joint)",
           joint.name, model.v_name(free[j]), pivot, M(j, j)));
+      error.about(ModelItemRef::Kind::joint, joint.name);
+      throw error;
     }
     L(j, j) = std::sqrt(pivot);
     for (int i = j + 1; i < n; ++i) {

@@ -10,8 +10,7 @@
 #include "model_file_internal.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
-#include "momenta/dynamics/crba.hpp"
-#include "momenta/integrate/integrator.hpp"
+#include "momenta/model/integrators.hpp"
 
 namespace momenta::io {
 namespace detail {
@@ -89,8 +88,8 @@ constexpr std::array<std::string_view, 9> kFileKeys = {"name",   "description", 
                                                        "inputs", "outputs",     "simulation"};
 
 // `simulation:` — defaults for `momenta simulate`.
-SimulationSettings read_simulation(const YamlNode& root) {
-  SimulationSettings s;
+model::SimulationSettings read_simulation(const YamlNode& root) {
+  model::SimulationSettings s;
   const auto node = root.find("simulation");
   if (!node || node->is_null()) return s;
   node->expect_map("a map {duration, step, integrator, rtol, atol, every}");
@@ -101,10 +100,10 @@ SimulationSettings read_simulation(const YamlNode& root) {
   s.absolute_tolerance = node->find_number("atol", Bound::kPositive);
   if (const auto integrator = node->find("integrator")) {
     const std::string name = integrator->as_string();
-    const auto& names = integrate::integrator_names();
-    if (std::find(names.begin(), names.end(), name) == names.end()) {
-      integrator->fail(fmt::format("unknown integrator '{}'{}; known: {}", name,
-                                   did_you_mean(name, names), fmt::join(names, ", ")));
+    try {
+      model::integrator_info(name);
+    } catch (const InvalidArgument& e) {
+      integrator->fail(e.what());
     }
     s.integrator = name;
   }
@@ -120,28 +119,42 @@ SimulationSettings read_simulation(const YamlNode& root) {
   return s;
 }
 
-// ModelBuilder::build() names what it rejects ("joint 'hinge': ...", "body 'rod' ...", "force
-// element 'spring' ..."): the declaring node of the first thing named, if the file declares it.
-std::optional<YamlNode> named_in(const std::string& message, const Context& ctx) {
-  const std::array<std::pair<std::string_view, const detail::Declared*>, 4> kinds = {
-      {{"force element '", &ctx.forces},
-       {"joint '", &ctx.joints},
-       {"body '", &ctx.bodies},
-       {"signal '", &ctx.signals}}};
-  std::size_t first = std::string::npos;
-  std::optional<YamlNode> node;
-  for (const auto& [prefix, declared] : kinds) {
-    const std::size_t at = message.find(prefix);
-    if (at == std::string::npos || at >= first) continue;
-    const std::size_t begin = at + prefix.size();
-    const std::size_t end = message.find('\'', begin);
-    if (end == std::string::npos) continue;
-    if (const auto found = declared->find(std::string_view(message).substr(begin, end - begin))) {
-      first = at;
-      node = found;
+// The node that declares the item an error is about, if the file declares it.
+std::optional<YamlNode> declaring_node(const Error& error, const Context& ctx) {
+  if (!error.item()) return std::nullopt;
+  const detail::Declared* declared = nullptr;
+  switch (error.item()->kind) {
+    case ModelItemRef::Kind::body:
+      declared = &ctx.bodies;
+      break;
+    case ModelItemRef::Kind::joint:
+      declared = &ctx.joints;
+      break;
+    case ModelItemRef::Kind::force_element:
+      declared = &ctx.forces;
+      break;
+    case ModelItemRef::Kind::signal:
+      declared = &ctx.signals;
+      break;
+  }
+  return declared->find(error.item()->name);
+}
+
+// Where the file declares each body, joint, force element and signal.
+std::vector<ItemLocation> item_locations(const Context& ctx) {
+  std::vector<ItemLocation> locations;
+  const std::array<std::pair<ModelItemRef::Kind, const detail::Declared*>, 4> kinds = {
+      {{ModelItemRef::Kind::body, &ctx.bodies},
+       {ModelItemRef::Kind::joint, &ctx.joints},
+       {ModelItemRef::Kind::force_element, &ctx.forces},
+       {ModelItemRef::Kind::signal, &ctx.signals}}};
+  for (const auto& [kind, declared] : kinds) {
+    for (const std::string& name : declared->names()) {
+      const YamlNode node = *declared->find(name);
+      locations.push_back({{kind, name}, node.line(), node.column()});
     }
   }
-  return node;
+  return locations;
 }
 
 ModelFile compose(const YamlNode& root, const std::filesystem::path& base_dir) {
@@ -163,30 +176,39 @@ ModelFile compose(const YamlNode& root, const std::filesystem::path& base_dir) {
   detail::read_joints(root, ctx, builder);
   detail::read_forces(root, ctx, builder);
 
-  // What the reader did not check itself, the builder does, and the mass matrix at the initial
-  // configuration must be invertible: report either at the line of what it names.
+  // What the reader did not check itself, the builder does: report it at the line of the item
+  // it is about.
   model::Model model = [&] {
     try {
-      model::Model built = builder.build();
-      dynamics::check_mass_matrix(built, built.initial_q());
-      return built;
+      return builder.build();
     } catch (const InvalidArgument& e) {
       const std::string message = detail::one_line(e.what());
-      const auto node = named_in(message, ctx);
+      const auto node = declaring_node(e, ctx);
       throw node ? node->error(message) : root.error(message);
     }
   }();
 
-  std::vector<simulate::OutputSpec> outputs = detail::read_outputs(root, ctx, model);
-  SimulationSettings simulation = read_simulation(root);
-  return ModelFile{std::move(name), std::move(description), std::move(model), std::move(outputs),
-                   simulation};
+  std::vector<model::OutputSpec> outputs = detail::read_outputs(root, ctx, model);
+  model::SimulationSettings simulation = read_simulation(root);
+  return ModelFile{
+      std::move(name), std::move(description), std::move(model), std::move(outputs), simulation,
+      root.file(),     item_locations(ctx)};
 }
 
 }  // namespace
 
 ModelFile read_model_file(const std::filesystem::path& path) {
   return compose(YamlNode::load_file(path), path.parent_path());
+}
+
+std::optional<ParseError> ModelFile::locate(const Error& error) const {
+  if (!error.item()) return std::nullopt;
+  for (const ItemLocation& at : items) {
+    if (at.item.kind == error.item()->kind && at.item.name == error.item()->name) {
+      return ParseError(file, at.line, at.column, detail::one_line(error.what()));
+    }
+  }
+  return std::nullopt;
 }
 
 ModelFile parse_model_file(const std::string& text, const std::string& file_name,

@@ -30,9 +30,10 @@ MassProperties read_part_body(const YamlNode& body, const Context& ctx) {
   return part.total.transformed(R_BS, p_BoSo_B);
 }
 
-// `mass`, `com`, `inertia`: given outright. Mass 0 without inertia is a massless body.
+// `mass`, `com`, `inertia` (about the centre of mass, or about the point `inertia_about`): given
+// outright. Mass 0 without inertia is a massless body.
 MassProperties read_explicit_body(const YamlNode& body, const std::string& name) {
-  body.check_keys({"name", "mass", "com", "inertia"});
+  body.check_keys({"name", "mass", "com", "inertia", "inertia_about"});
   if (!body.has("mass")) {
     body.fail(
         "a body needs its mass properties: a 'shape' (with its sizes and 'mass' or 'density'), a "
@@ -41,25 +42,42 @@ MassProperties read_explicit_body(const YamlNode& body, const std::string& name)
   const YamlNode mass_node = body.at("mass");
   const double mass = mass_node.as_double(Bound::kNonNegative);
   const Vec3 p_BoBcm_B = body.find_vec3("com").value_or(Vec3::Zero());
-  Mat3 I_BBcm_B = Mat3::Zero();
+  Mat3 I_given = Mat3::Zero();
   const auto inertia_node = body.find("inertia");
   if (inertia_node) {
     // Three numbers are the diagonal (principal moments along B's axes); else the full tensor.
     const bool diagonal = inertia_node->is_sequence() && inertia_node->size() == 3 &&
                           !inertia_node->elements()[0].is_sequence();
-    I_BBcm_B = diagonal ? Mat3(inertia_node->as_vec3().asDiagonal()) : inertia_node->as_mat3();
+    I_given = diagonal ? Mat3(inertia_node->as_vec3().asDiagonal()) : inertia_node->as_mat3();
   }
+  const auto about_node = body.find("inertia_about");
+  if (about_node && !inertia_node)
+    about_node->fail("'inertia_about' needs an 'inertia' to go with");
   if (mass == 0.0) {
-    if (!I_BBcm_B.isZero(0.0)) {
+    if (!I_given.isZero(0.0)) {
       inertia_node->fail("a body of mass 0 must have no inertia (a massless body)");
     }
     return MassProperties();
+  }
+  // Inertia given about a point P (a top's pivot): about the centre of mass by the parallel-axis
+  // theorem, I_Bcm = I_P − m (|d|² 1 − d dᵀ) with d = p_PBcm.
+  Mat3 I_BBcm_B = I_given;
+  if (about_node) {
+    const Vec3 d = p_BoBcm_B - about_node->as_vec3();
+    I_BBcm_B = I_given - mass * (d.squaredNorm() * Mat3::Identity() - d * d.transpose());
   }
   const MassProperties result(mass, p_BoBcm_B, I_BBcm_B);
   try {
     result.check_physical(fmt::format("body '{}'", name));
   } catch (const InvalidInertia& e) {
-    (inertia_node ? *inertia_node : mass_node).fail(one_line(e.what()));
+    std::string message = one_line(e.what());
+    if (about_node) {
+      message += fmt::format(
+          " (derived from the inertia given about [{}, {}, {}] by the parallel-axis theorem: "
+          "that tensor and the centre of mass imply no physical body; check both)",
+          about_node->as_vec3().x(), about_node->as_vec3().y(), about_node->as_vec3().z());
+    }
+    (inertia_node ? *inertia_node : mass_node).fail(message);
   }
   return result;
 }

@@ -69,8 +69,8 @@ void read_joints(const YamlNode& root, Context& ctx, model::ModelBuilder& builde
 /// `forces:` — every force element.
 void read_forces(const YamlNode& root, Context& ctx, model::ModelBuilder& builder);
 /// `outputs:` — checked against the built model.
-std::vector<simulate::OutputSpec> read_outputs(const YamlNode& root, const Context& ctx,
-                                               const model::Model& model);
+std::vector<model::OutputSpec> read_outputs(const YamlNode& root, const Context& ctx,
+                                            const model::Model& model);
 
 /// A list of numbers or a single number (one coordinate), with its unit converted: `key` in SI or
 /// `key_deg` in degrees where `degrees_allowed`. Nothing when neither key is present.

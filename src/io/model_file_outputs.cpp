@@ -17,7 +17,7 @@
 namespace momenta::io::detail {
 namespace {
 
-using simulate::OutputQuantity;
+using model::OutputQuantity;
 using Q = OutputQuantity;
 
 // The quantities of each kind of target, by their names in the file.
@@ -70,13 +70,13 @@ OutputQuantity read_quantity(const YamlNode& e, const Target& target) {
                          did_you_mean(name, names), target.key, fmt::join(names, ", ")));
 }
 
-dynamics::ReactionFrame read_reaction_frame(const YamlNode& node) {
+model::ReactionFrame read_reaction_frame(const YamlNode& node) {
   const std::string frame = node.as_string();
-  constexpr std::array<std::pair<std::string_view, dynamics::ReactionFrame>, 4> kFrames = {
-      {{"world", dynamics::ReactionFrame::world},
-       {"joint", dynamics::ReactionFrame::joint},
-       {"child", dynamics::ReactionFrame::child},
-       {"parent", dynamics::ReactionFrame::parent}}};
+  constexpr std::array<std::pair<std::string_view, model::ReactionFrame>, 4> kFrames = {
+      {{"world", model::ReactionFrame::world},
+       {"joint", model::ReactionFrame::joint},
+       {"child", model::ReactionFrame::child},
+       {"parent", model::ReactionFrame::parent}}};
   for (const auto& [n, f] : kFrames) {
     if (n == frame) return f;
   }
@@ -88,8 +88,7 @@ dynamics::ReactionFrame read_reaction_frame(const YamlNode& node) {
 }
 
 // x | y | z of a vector; a coordinate index 0 .. n−1 of a joint quantity.
-int read_component(const YamlNode& node, const simulate::OutputSpec& spec,
-                   const model::Model& model) {
+int read_component(const YamlNode& node, const model::OutputSpec& spec, const model::Model& model) {
   if (is_vector(spec.quantity)) {
     const std::string axis = node.as_string();
     if (axis == "x" || axis == "y" || axis == "z") return axis[0] - 'x';
@@ -115,7 +114,7 @@ int read_component(const YamlNode& node, const simulate::OutputSpec& spec,
   return static_cast<int>(i);
 }
 
-simulate::OutputSpec read_output(const YamlNode& e, const Context& ctx, const model::Model& model) {
+model::OutputSpec read_output(const YamlNode& e, const Context& ctx, const model::Model& model) {
   e.expect_map("an output: a map with a target ('body', 'joint', 'signal', 'spring')");
   e.check_keys(
       {"name", "quantity", "body", "joint", "signal", "spring", "point", "component", "frame"});
@@ -125,7 +124,7 @@ simulate::OutputSpec read_output(const YamlNode& e, const Context& ctx, const mo
   }
   const Target& target = *std::find_if(targets().begin(), targets().end(),
                                        [&](const Target& t) { return t.key == *key; });
-  simulate::OutputSpec spec;
+  model::OutputSpec spec;
   spec.quantity = read_quantity(e, target);
 
   // The target, by name.
@@ -172,12 +171,12 @@ simulate::OutputSpec read_output(const YamlNode& e, const Context& ctx, const mo
 
 }  // namespace
 
-std::vector<simulate::OutputSpec> read_outputs(const YamlNode& root, const Context& ctx,
-                                               const model::Model& model) {
-  std::vector<simulate::OutputSpec> specs;
+std::vector<model::OutputSpec> read_outputs(const YamlNode& root, const Context& ctx,
+                                            const model::Model& model) {
+  std::vector<model::OutputSpec> specs;
   std::map<std::string, int, std::less<>> line_of_name;
   for (const YamlNode& e : list_section(root, "outputs")) {
-    simulate::OutputSpec spec = read_output(e, ctx, model);
+    model::OutputSpec spec = read_output(e, ctx, model);
     const auto [it, inserted] = line_of_name.emplace(spec.name, e.line());
     if (!inserted) {
       (e.has("name") ? e.at("name") : e)

@@ -20,11 +20,6 @@ namespace {
 // normalized vector written out, and rejects axes that were simply not normalized.
 constexpr double kAxisTolerance = 1e-9;
 
-template <class... Ts>
-struct Overloaded : Ts... {
-  using Ts::operator()...;
-};
-
 std::string vec_str(const Vec3& v) { return fmt::format("({}, {}, {})", v.x(), v.y(), v.z()); }
 
 // Throws InvalidArgument with the formatted message when cond fails; the message is only
@@ -121,67 +116,134 @@ ModelBuilder& ModelBuilder::add_signal(Signal signal) {
   return *this;
 }
 
-Model ModelBuilder::build() const {
-  Model model;
-  model.gravity_ = gravity_;
+namespace {
 
-  // --- Bodies: unique names, physical mass properties --------------------------------------------
-  std::map<std::string, int, std::less<>> body_by_name;  // index into bodies_ (input order)
-  std::vector<std::string_view> body_names{kWorldBodyName};
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    const Body& b = bodies_[i];
-    MOMENTA_REQUIRE(!b.name.empty(), "body #{} has an empty name", i + 1);
-    MOMENTA_REQUIRE(b.name != kWorldBodyName,
-                    "a body may not be called '{}': that name is the ground", kWorldBodyName);
-    MOMENTA_REQUIRE(body_by_name.emplace(b.name, static_cast<int>(i)).second,
-                    "two bodies are named '{}'", b.name);
-    if (!is_massless(b.mass_properties)) {
-      b.mass_properties.check_physical(fmt::format("body '{}'", b.name));
+using Kind = ModelItemRef::Kind;
+
+// Runs `check`, attributing any error it throws to the item (kind, name) without changing the
+// exception's type: a file reader then points at the item's line.
+template <class F>
+void for_item(Kind kind, const std::string& name, F&& check) {
+  try {
+    check();
+  } catch (Error& e) {
+    e.about(kind, name);
+    throw;
+  }
+}
+
+}  // namespace
+
+namespace detail {
+
+// The steps of ModelBuilder::build, in order; each reads what the earlier ones left.
+class ModelAssembler {
+ public:
+  ModelAssembler(const Vec3& gravity, const std::vector<Body>& bodies,
+                 const std::vector<Joint>& joints, const std::vector<ForceElement>& elements,
+                 const std::vector<Signal>& signals)
+      : bodies_(bodies), joints_(joints), elements_(elements), signals_(signals) {
+    model_.gravity_ = gravity;
+  }
+
+  Model build() {
+    check_bodies();
+    check_signals();
+    check_joints();
+    order_tree();
+    place_bodies_and_joints();
+    fill_state_and_constants();
+    check_inertia_along_joints();
+    resolve_force_elements();
+    model_.signals_ = signals_;
+    return std::move(model_);
+  }
+
+ private:
+  // Bodies: unique names, physical mass properties.
+  void check_bodies() {
+    body_names_.push_back(kWorldBodyName);
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      const Body& b = bodies_[i];
+      MOMENTA_REQUIRE(!b.name.empty(), "body #{} has an empty name", i + 1);
+      for_item(Kind::body, b.name, [&] {
+        MOMENTA_REQUIRE(b.name != kWorldBodyName,
+                        "a body may not be called '{}': that name is the ground", kWorldBodyName);
+        MOMENTA_REQUIRE(body_by_name_.emplace(b.name, static_cast<int>(i)).second,
+                        "two bodies are named '{}'", b.name);
+        if (!is_massless(b.mass_properties)) {
+          b.mass_properties.check_physical(fmt::format("body '{}'", b.name));
+        }
+      });
+      body_names_.push_back(b.name);
     }
-    body_names.push_back(b.name);
   }
-  const auto unknown_body = [&](std::string_view name) { return did_you_mean(name, body_names); };
 
-  // --- Signals: unique names ---------------------------------------------------------------------
-  std::map<std::string, int, std::less<>> signal_by_name;
-  std::vector<std::string_view> signal_names;
-  for (std::size_t i = 0; i < signals_.size(); ++i) {
-    MOMENTA_REQUIRE(!signals_[i].name().empty(), "signal #{} has an empty name", i + 1);
-    MOMENTA_REQUIRE(signal_by_name.emplace(signals_[i].name(), static_cast<int>(i)).second,
-                    "two signals are named '{}'", signals_[i].name());
-    signal_names.push_back(signals_[i].name());
+  // Signals: unique names.
+  void check_signals() {
+    for (std::size_t i = 0; i < signals_.size(); ++i) {
+      const std::string& name = signals_[i].name();
+      MOMENTA_REQUIRE(!name.empty(), "signal #{} has an empty name", i + 1);
+      for_item(Kind::signal, name, [&] {
+        MOMENTA_REQUIRE(signal_by_name_.emplace(name, static_cast<int>(i)).second,
+                        "two signals are named '{}'", name);
+      });
+      signal_names_.push_back(name);
+    }
   }
-  const auto find_signal = [&](const std::string& name, const std::string& who) {
-    auto it = signal_by_name.find(name);
-    MOMENTA_REQUIRE(it != signal_by_name.end(), "{}: unknown signal '{}'{}", who, name,
-                    did_you_mean(name, signal_names));
+
+  int find_signal(const std::string& name, const std::string& who) const {
+    auto it = signal_by_name_.find(name);
+    MOMENTA_REQUIRE(it != signal_by_name_.end(), "{}: unknown signal '{}'{}", who, name,
+                    did_you_mean(name, signal_names_));
     return it->second;
-  };
+  }
 
-  // --- Joints: parents and children exist, one joint per body ------------------------------------
-  std::set<std::string, std::less<>> joint_names;
-  std::vector<int> joint_of_child(bodies_.size(), -1);  // input joint carrying input body
-  for (std::size_t k = 0; k < joints_.size(); ++k) {
-    const Joint& j = joints_[k];
-    MOMENTA_REQUIRE(!j.name.empty(), "joint #{} has an empty name", k + 1);
-    MOMENTA_REQUIRE(joint_names.insert(j.name).second, "two joints are named '{}'", j.name);
+  std::string unknown_body(std::string_view name) const { return did_you_mean(name, body_names_); }
+
+  // Joints: parents and children exist, one joint per body, valid geometry and parameters.
+  void check_joints() {
+    std::set<std::string, std::less<>> joint_names;
+    joint_of_child_.assign(bodies_.size(), -1);
+    for (std::size_t k = 0; k < joints_.size(); ++k) {
+      const Joint& j = joints_[k];
+      MOMENTA_REQUIRE(!j.name.empty(), "joint #{} has an empty name", k + 1);
+      for_item(Kind::joint, j.name, [&] {
+        MOMENTA_REQUIRE(joint_names.insert(j.name).second, "two joints are named '{}'", j.name);
+        check_connection(j, static_cast<int>(k));
+        check_joint_parameters(j);
+      });
+    }
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+      for_item(Kind::body, bodies_[i].name, [&] {
+        MOMENTA_REQUIRE(joint_of_child_[i] >= 0,
+                        "body '{}' is not attached to anything: add a joint with it as the child "
+                        "(type fixed to weld it)",
+                        bodies_[i].name);
+      });
+    }
+  }
+
+  void check_connection(const Joint& j, int k) {
     const std::string who = fmt::format("joint '{}'", j.name);
-    MOMENTA_REQUIRE(j.parent == kWorldBodyName || body_by_name.count(j.parent),
+    MOMENTA_REQUIRE(j.parent == kWorldBodyName || body_by_name_.count(j.parent),
                     "{}: unknown parent body '{}'{}", who, j.parent, unknown_body(j.parent));
     MOMENTA_REQUIRE(j.child != kWorldBodyName,
                     "{}: the world cannot be a child (swap parent and child)", who);
-    auto child = body_by_name.find(j.child);
-    MOMENTA_REQUIRE(child != body_by_name.end(), "{}: unknown child body '{}'{}", who, j.child,
+    auto child = body_by_name_.find(j.child);
+    MOMENTA_REQUIRE(child != body_by_name_.end(), "{}: unknown child body '{}'{}", who, j.child,
                     unknown_body(j.child));
     MOMENTA_REQUIRE(j.child != j.parent, "{}: connects body '{}' to itself", who, j.child);
-    int& carrier = joint_of_child[child->second];
+    int& carrier = joint_of_child_[child->second];
     MOMENTA_REQUIRE(carrier < 0,
                     "body '{}' is the child of two joints, '{}' and '{}': the bodies must form "
                     "a tree (closed loops are not supported)",
                     j.child, joints_[carrier].name, j.name);
-    carrier = static_cast<int>(k);
+    carrier = k;
+  }
 
-    // Geometry, initial state and parameters.
+  void check_joint_parameters(const Joint& j) const {
+    const std::string who = fmt::format("joint '{}'", j.name);
     check_transform(j.X_PJ, who + " X_PJ");
     check_transform(j.X_CJ, who + " X_CJ");
     const JointType t = j.type;
@@ -214,101 +276,113 @@ Model ModelBuilder::build() const {
                       who, j.prescribed_signals.size(), joint_type_name(t), j.nv());
     }
   }
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    MOMENTA_REQUIRE(joint_of_child[i] >= 0,
-                    "body '{}' is not attached to anything: add a joint with it as the child "
-                    "(type fixed to weld it)",
-                    bodies_[i].name);
-  }
 
-  // --- Topological order from the world (breadth first); unreached bodies lie on a cycle --------
-  std::vector<int> order;  // input body indices in model order (after the world)
-  {
+  // Topological order from the world (breadth first); unreached bodies lie on a cycle.
+  void order_tree() {
     std::vector<std::string_view> frontier{kWorldBodyName};
     std::vector<char> placed(bodies_.size(), 0);
     for (std::size_t f = 0; f < frontier.size(); ++f) {
       for (std::size_t k = 0; k < joints_.size(); ++k) {
         if (joints_[k].parent != frontier[f]) continue;
-        const int c = body_by_name.find(joints_[k].child)->second;
+        const int c = body_by_name_.find(joints_[k].child)->second;
         placed[c] = 1;
-        order.push_back(c);
+        order_.push_back(c);
         frontier.push_back(bodies_[c].name);
       }
     }
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
-      if (placed[i]) continue;
-      // Walk up from an unplaced body to show the cycle.
-      std::string cycle = bodies_[i].name;
-      int b = static_cast<int>(i);
-      for (std::size_t step = 0; step <= bodies_.size(); ++step) {
-        const Joint& j = joints_[joint_of_child[b]];
-        cycle += " <- " + j.parent;
-        b = body_by_name.find(j.parent)->second;
-        if (b == static_cast<int>(i)) break;
-      }
-      throw InvalidArgument(fmt::format(
-          "the joints form a cycle ({}): the bodies must form a tree rooted at the world", cycle));
+      if (!placed[i]) throw_cycle(static_cast<int>(i));
     }
   }
 
-  // --- Bodies and joints in model order ----------------------------------------------------------
-  std::vector<int> model_index(bodies_.size());
-  for (std::size_t m = 0; m < order.size(); ++m) model_index[order[m]] = static_cast<int>(m) + 1;
-  {
+  // Walks up from an unplaced body to show the cycle it lies on.
+  [[noreturn]] void throw_cycle(int start) const {
+    std::string cycle = bodies_[start].name;
+    int b = start;
+    for (std::size_t step = 0; step <= bodies_.size(); ++step) {
+      const Joint& j = joints_[joint_of_child_[b]];
+      cycle += " <- " + j.parent;
+      b = body_by_name_.find(j.parent)->second;
+      if (b == start) break;
+    }
+    InvalidArgument error(fmt::format(
+        "the joints form a cycle ({}): the bodies must form a tree rooted at the world", cycle));
+    error.about(Kind::joint, joints_[joint_of_child_[start]].name);
+    throw error;
+  }
+
+  // Bodies and joints in model order, with their indices and coordinate offsets.
+  void place_bodies_and_joints() {
+    model_index_.resize(bodies_.size());
+    for (std::size_t m = 0; m < order_.size(); ++m) {
+      model_index_[order_[m]] = static_cast<int>(m) + 1;
+    }
     Body world;
     world.name = kWorldBodyName;
     world.index = 0;
-    model.bodies_.push_back(world);
-  }
-  int nq = 0, nv = 0;
-  for (std::size_t m = 0; m < order.size(); ++m) {
-    const int in = order[m];
-    Joint joint = joints_[joint_of_child[in]];
-    const int child = static_cast<int>(m) + 1;
-    joint.index = child - 1;
-    joint.child_index = child;
-    joint.parent_index =
-        joint.parent == kWorldBodyName ? 0 : model_index[body_by_name.find(joint.parent)->second];
-    joint.q_index = nq;
-    joint.v_index = nv;
-    nq += joint.nq();
-    nv += joint.nv();
-    joint.prescribed_signal_indices.clear();
-    for (const auto& s : joint.prescribed_signals) {
-      joint.prescribed_signal_indices.push_back(find_signal(s, "joint '" + joint.name + "'"));
+    model_.bodies_.push_back(world);
+    int nq = 0, nv = 0;
+    for (std::size_t m = 0; m < order_.size(); ++m) {
+      const int in = order_[m];
+      Joint joint = joints_[joint_of_child_[in]];
+      const int child = static_cast<int>(m) + 1;
+      joint.index = child - 1;
+      joint.child_index = child;
+      joint.parent_index = joint.parent == kWorldBodyName
+                               ? 0
+                               : model_index_[body_by_name_.find(joint.parent)->second];
+      joint.q_index = nq;
+      joint.v_index = nv;
+      nq += joint.nq();
+      nv += joint.nv();
+      joint.prescribed_signal_indices.clear();
+      for_item(Kind::joint, joint.name, [&] {
+        for (const auto& s : joint.prescribed_signals) {
+          joint.prescribed_signal_indices.push_back(find_signal(s, "joint '" + joint.name + "'"));
+        }
+      });
+      Body body = bodies_[in];
+      body.index = child;
+      body.parent_index = joint.parent_index;
+      body.joint_index = joint.index;
+      model_.bodies_.push_back(std::move(body));
+      model_.joints_.push_back(std::move(joint));
     }
-    Body body = bodies_[in];
-    body.index = child;
-    body.parent_index = joint.parent_index;
-    body.joint_index = joint.index;
-    model.bodies_.push_back(std::move(body));
-    model.joints_.push_back(std::move(joint));
+    model_.nq_ = nq;
+    model_.nv_ = nv;
   }
-  model.nq_ = nq;
-  model.nv_ = nv;
 
-  // --- Inertias, initial state, coordinate names, constants for the algorithms -----------------
-  model.inertias_.resize(model.bodies_.size());
-  model.total_mass_ = 0.0;
-  for (std::size_t b = 1; b < model.bodies_.size(); ++b) {
-    model.inertias_[b] = SpatialInertia::from_mass_properties(model.bodies_[b].mass_properties);
-    model.total_mass_ += model.bodies_[b].mass_properties.mass();
+  // Inertias, initial state, coordinate names, constants for the algorithms.
+  void fill_state_and_constants() {
+    model_.inertias_.resize(model_.bodies_.size());
+    model_.total_mass_ = 0.0;
+    for (std::size_t b = 1; b < model_.bodies_.size(); ++b) {
+      model_.inertias_[b] = model_.bodies_[b].mass_properties.spatial_inertia();
+      model_.total_mass_ += model_.bodies_[b].mass_properties.mass();
+    }
+    model_.q0_ = neutral(model_);
+    model_.v0_ = VecX::Zero(model_.nv_);
+    for (const Joint& j : model_.joints_) {
+      for_item(Kind::joint, j.name, [&] { set_initial_state(j); });
+      for (int i = 0; i < j.nq(); ++i) model_.joint_of_q_.push_back(j.index);
+      for (int i = 0; i < j.nv(); ++i) model_.joint_of_v_.push_back(j.index);
+      coordinate_names(j, model_.q_names_, model_.v_names_);
+      model_.has_prescribed_ = model_.has_prescribed_ || j.is_prescribed();
+      model_.constants_.push_back(joint_constants(j));
+    }
   }
-  model.q0_ = neutral(model);
-  model.v0_ = VecX::Zero(nv);
-  for (const Joint& j : model.joints_) {
-    if (j.q0.size() > 0) model.q0_.segment(j.q_index, j.nq()) = j.q0;
-    if (j.v0.size() > 0) model.v0_.segment(j.v_index, j.nv()) = j.v0;
+
+  void set_initial_state(const Joint& j) {
+    if (j.q0.size() > 0) model_.q0_.segment(j.q_index, j.nq()) = j.q0;
+    if (j.v0.size() > 0) model_.v0_.segment(j.v_index, j.nv()) = j.v0;
     const int k = j.type == JointType::spherical ? 0 : (j.type == JointType::free ? 3 : -1);
     if (k >= 0 && j.q0.size() > 0) {
       const Quat r = quaternion_from_wxyz(j.q0.segment<4>(k), "joint '" + j.name + "' q0");
-      model.q0_.segment<4>(j.q_index + k) << r.w(), r.x(), r.y(), r.z();
+      model_.q0_.segment<4>(j.q_index + k) << r.w(), r.x(), r.y(), r.z();
     }
-    for (int i = 0; i < j.nq(); ++i) model.joint_of_q_.push_back(j.index);
-    for (int i = 0; i < j.nv(); ++i) model.joint_of_v_.push_back(j.index);
-    coordinate_names(j, model.q_names_, model.v_names_);
-    model.has_prescribed_ = model.has_prescribed_ || j.is_prescribed();
+  }
 
+  JointConstants joint_constants(const Joint& j) const {
     JointConstants c;
     c.type = j.type;
     c.nq = j.nq();
@@ -323,147 +397,180 @@ Model ModelBuilder::build() const {
     c.axis = j.axis;
     c.axis2 = j.axis2;
     if (c.nv == 1) {
-      const Mat6 S_J = joint_motion_subspace(j, model.q0_.data() + j.q_index);
+      const Mat6 S_J = joint_motion_subspace(j, model_.q0_.data() + j.q_index);
       c.S_C = j.X_CJ.act_motion(S_J.col(0));
-      for (int k2 = 0; k2 < 6; ++k2) {
+      for (int k = 0; k < 6; ++k) {
         Vec6 e = Vec6::Zero();
-        e[k2] = 1.0;
-        if (c.S_C == e) c.S_basis = k2;
+        e[k] = 1.0;
+        if (c.S_C == e) c.S_basis = k;
       }
     }
-    model.constants_.push_back(c);
+    return c;
   }
 
-  // --- Singular mass matrix: every joint with degrees of freedom must move some inertia ---------
-  // Composite inertia of each subtree at the neutral configuration, in its body frame; the
-  // joint's block Sᵀ I S must be positive definite there.
-  {
-    const VecX qn = neutral(model);
-    std::vector<SpatialInertia> composite = model.inertias_;
-    for (int j = model.num_joints() - 1; j >= 0; --j) {
-      const Joint& joint = model.joints_[j];
+  // Singular mass matrix: every joint whose motion is free (not prescribed) must move some
+  // inertia. Composite inertia of each subtree at the neutral configuration, in its body frame;
+  // the joint's block Sᵀ I S must be positive definite there. A prescribed joint's motion is
+  // given, so what it carries needs no inertia along it (a massless driven turntable).
+  void check_inertia_along_joints() const {
+    const VecX qn = neutral(model_);
+    std::vector<SpatialInertia> composite = model_.inertias_;
+    for (int j = model_.num_joints() - 1; j >= 0; --j) {
+      const Joint& joint = model_.joints_[j];
       if (joint.parent_index == 0) continue;
       const Transform X_PC =
           joint.X_PJ * joint_transform(joint, qn.data() + joint.q_index) * joint.X_CJ.inverse();
       composite[joint.parent_index] += composite[joint.child_index].transformed(X_PC);
     }
-    for (const Joint& joint : model.joints_) {
-      if (joint.nv() == 0) continue;
-      const SpatialInertia& I = composite[joint.child_index];
-      MOMENTA_REQUIRE(I.mass > 0 || !I.I_O.isZero(0.0),
-                      "joint '{}' carries only massless bodies (body '{}' and its subtree): "
-                      "its mass matrix would be singular; give them mass or make the joint "
-                      "fixed",
-                      joint.name, joint.child);
-      const Mat6 S_J = joint_motion_subspace(joint, qn.data() + joint.q_index);
-      const int n = joint.nv();
-      Mat6 S_C = Mat6::Zero();
-      for (int k = 0; k < n; ++k) S_C.col(k) = joint.X_CJ.act_motion(S_J.col(k));
-      const MatX D = S_C.leftCols(n).transpose() * I.matrix() * S_C.leftCols(n);
-      const Eigen::SelfAdjointEigenSolver<MatX> eig(D);
-      const double largest = eig.eigenvalues().cwiseAbs().maxCoeff();
-      MOMENTA_REQUIRE(eig.eigenvalues().minCoeff() > 1e-12 * largest && largest > 0,
-                      "joint '{}': the bodies it carries have no inertia along some of its {} "
-                      "degrees of freedom (smallest eigenvalue {:.3g} of Sᵀ I S, largest "
-                      "{:.3g}): the mass matrix would be singular",
-                      joint.name, n, eig.eigenvalues().minCoeff(), largest);
+    for (const Joint& joint : model_.joints_) {
+      if (joint.nv() == 0 || joint.is_prescribed()) continue;
+      for_item(Kind::joint, joint.name,
+               [&] { check_inertia_along(joint, composite[joint.child_index], qn); });
     }
   }
 
-  // --- Force elements ----------------------------------------------------------------------------
-  std::set<std::string, std::less<>> element_names;
-  const auto body_at = [&](const std::string& name, const std::string& who) {
+  static void check_inertia_along(const Joint& joint, const SpatialInertia& I, const VecX& qn) {
+    MOMENTA_REQUIRE(I.mass > 0 || !I.I_O.isZero(0.0),
+                    "joint '{}' carries only massless bodies (body '{}' and its subtree): its "
+                    "mass matrix would be singular; give them mass, make the joint fixed, or "
+                    "prescribe its motion",
+                    joint.name, joint.child);
+    const Mat6 S_J = joint_motion_subspace(joint, qn.data() + joint.q_index);
+    const int n = joint.nv();
+    Mat6 S_C = Mat6::Zero();
+    for (int k = 0; k < n; ++k) S_C.col(k) = joint.X_CJ.act_motion(S_J.col(k));
+    const MatX D = S_C.leftCols(n).transpose() * I.matrix() * S_C.leftCols(n);
+    const Eigen::SelfAdjointEigenSolver<MatX> eig(D);
+    const double largest = eig.eigenvalues().cwiseAbs().maxCoeff();
+    MOMENTA_REQUIRE(eig.eigenvalues().minCoeff() > 1e-12 * largest && largest > 0,
+                    "joint '{}': the bodies it carries have no inertia along some of its {} "
+                    "degrees of freedom (smallest eigenvalue {:.3g} of Sᵀ I S, largest "
+                    "{:.3g}): the mass matrix would be singular",
+                    joint.name, n, eig.eigenvalues().minCoeff(), largest);
+  }
+
+  int body_at(const std::string& name, const std::string& who) const {
     if (name == kWorldBodyName) return 0;
-    auto it = body_by_name.find(name);
-    MOMENTA_REQUIRE(it != body_by_name.end(), "{}: unknown body '{}'{}", who, name,
+    auto it = body_by_name_.find(name);
+    MOMENTA_REQUIRE(it != body_by_name_.end(), "{}: unknown body '{}'{}", who, name,
                     unknown_body(name));
-    return model_index[it->second];
-  };
-  std::vector<std::string_view> joint_name_list;
-  for (const Joint& j : model.joints_) joint_name_list.push_back(j.name);
-  const auto joint_at = [&](const std::string& name, const std::string& who) {
-    auto i = model.find_joint(name);
-    MOMENTA_REQUIRE(i.has_value(), "{}: unknown joint '{}'{}", who, name,
-                    did_you_mean(name, joint_name_list));
+    return model_index_[it->second];
+  }
+
+  int joint_at(const std::string& name, const std::string& who) const {
+    auto i = model_.find_joint(name);
+    if (!i) {
+      std::vector<std::string_view> names;
+      for (const Joint& j : model_.joints_) names.push_back(j.name);
+      throw InvalidArgument(
+          fmt::format("{}: unknown joint '{}'{}", who, name, did_you_mean(name, names)));
+    }
     return *i;
-  };
-  const auto nonnegative = [](double x, const std::string& who, const char* what) {
+  }
+
+  static void nonnegative(double x, const std::string& who, const char* what) {
     MOMENTA_REQUIRE(x >= 0 && std::isfinite(x), "{}: {} {} must be zero or positive", who, what, x);
-  };
-  // Body orientations in the world at the initial configuration: the rest orientation of the
-  // two-body torsional springs (the world, body 0, is the identity).
-  std::vector<Mat3> R_WB_initial(model.bodies_.size(), Mat3::Identity());
-  for (const Joint& j : model.joints_) {
-    const Transform X_PC =
-        j.X_PJ * joint_transform(j, model.q0_.data() + j.q_index) * j.X_CJ.inverse();
-    R_WB_initial[j.child_index] = R_WB_initial[j.parent_index] * X_PC.R;
   }
-  for (ForceElement element : force_elements_) {
-    const std::string& name = force_element_name(element);
-    require(!name.empty(), "a force element has an empty name");
-    MOMENTA_REQUIRE(element_names.insert(name).second, "two force elements are named '{}'", name);
-    const std::string who = fmt::format("force element '{}'", name);
-    std::visit(
-        Overloaded{[&](LinearSpringDamper& e) {
-                     e.a.body_index = body_at(e.a.body, who);
-                     e.b.body_index = body_at(e.b.body, who);
-                     require(e.a.p_BoP_B.allFinite() && e.b.p_BoP_B.allFinite(),
-                             who + ": attachment point is not finite");
-                     MOMENTA_REQUIRE(e.a.body_index != e.b.body_index,
-                                     "{}: both ends are on body '{}'", who, e.a.body);
-                     nonnegative(e.stiffness, who, "stiffness");
-                     nonnegative(e.damping, who, "damping");
-                     nonnegative(e.free_length, who, "free_length");
-                   },
-                   [&](TorsionalSpringDamper& e) {
-                     nonnegative(e.stiffness, who, "stiffness");
-                     nonnegative(e.damping, who, "damping");
-                     require(std::isfinite(e.rest_angle), who + ": rest_angle is not finite");
-                     if (!e.joint.empty()) {
-                       require(e.body_a.empty() && e.body_b.empty(),
-                               who + ": give either a joint or two bodies, not both");
-                       e.joint_index = joint_at(e.joint, who);
-                       e.R_AB_rest = Mat3::Identity();
-                       const Joint& j = model.joints_[e.joint_index];
-                       MOMENTA_REQUIRE(j.nv() == 1,
-                                       "{}: joint '{}' is {} with {} degrees of "
-                                       "freedom; a torsional spring needs a 1-dof joint",
-                                       who, j.name, joint_type_name(j.type), j.nv());
-                     } else {
-                       require(!e.body_a.empty() && !e.body_b.empty(),
-                               who + ": give a joint, or two bodies body_a and body_b");
-                       e.body_a_index = body_at(e.body_a, who);
-                       e.body_b_index = body_at(e.body_b, who);
-                       MOMENTA_REQUIRE(e.body_a_index != e.body_b_index,
-                                       "{}: both ends are on body '{}'", who, e.body_a);
-                       e.R_AB_rest =
-                           R_WB_initial[e.body_a_index].transpose() * R_WB_initial[e.body_b_index];
-                     }
-                   },
-                   [&](JointFriction& e) {
-                     e.joint_index = joint_at(e.joint, who);
-                     nonnegative(e.viscous, who, "viscous");
-                   },
-                   [&](AppliedForce& e) {
-                     e.at.body_index = body_at(e.at.body, who);
-                     require(e.at.body_index != 0, who + ": a load on the world does nothing");
-                     MOMENTA_REQUIRE(e.at.p_BoP_B.allFinite() && e.vector.allFinite(),
-                                     "{}: point or vector {} is not finite", who,
-                                     vec_str(e.vector));
-                     if (!e.signal.empty()) e.signal_index = find_signal(e.signal, who);
-                   },
-                   [&](AppliedTorque& e) {
-                     e.body_index = body_at(e.body, who);
-                     require(e.body_index != 0, who + ": a load on the world does nothing");
-                     MOMENTA_REQUIRE(e.vector.allFinite(), "{}: vector {} is not finite", who,
-                                     vec_str(e.vector));
-                     if (!e.signal.empty()) e.signal_index = find_signal(e.signal, who);
-                   }},
-        element);
-    model.force_elements_.push_back(std::move(element));
+
+  // Force elements: names unique, every body, joint and signal they name resolved.
+  void resolve_force_elements() {
+    // Body orientations in the world at the initial configuration: the rest orientation of the
+    // two-body torsional springs (the world, body 0, is the identity).
+    R_WB_initial_.assign(model_.bodies_.size(), Mat3::Identity());
+    for (const Joint& j : model_.joints_) {
+      const Transform X_PC =
+          j.X_PJ * joint_transform(j, model_.q0_.data() + j.q_index) * j.X_CJ.inverse();
+      R_WB_initial_[j.child_index] = R_WB_initial_[j.parent_index] * X_PC.R;
+    }
+    std::set<std::string, std::less<>> element_names;
+    for (ForceElement element : elements_) {
+      const std::string& name = force_element_name(element);
+      require(!name.empty(), "a force element has an empty name");
+      for_item(Kind::force_element, name, [&] {
+        MOMENTA_REQUIRE(element_names.insert(name).second, "two force elements are named '{}'",
+                        name);
+        std::visit([&](auto& e) { resolve(e, fmt::format("force element '{}'", name)); }, element);
+      });
+      model_.force_elements_.push_back(std::move(element));
+    }
   }
-  model.signals_ = signals_;
-  return model;
+
+  void resolve(LinearSpringDamper& e, const std::string& who) const {
+    e.a.body_index = body_at(e.a.body, who);
+    e.b.body_index = body_at(e.b.body, who);
+    require(e.a.p_BoP_B.allFinite() && e.b.p_BoP_B.allFinite(),
+            who + ": attachment point is not finite");
+    MOMENTA_REQUIRE(e.a.body_index != e.b.body_index, "{}: both ends are on body '{}'", who,
+                    e.a.body);
+    nonnegative(e.stiffness, who, "stiffness");
+    nonnegative(e.damping, who, "damping");
+    nonnegative(e.free_length, who, "free_length");
+  }
+
+  void resolve(TorsionalSpringDamper& e, const std::string& who) const {
+    nonnegative(e.stiffness, who, "stiffness");
+    nonnegative(e.damping, who, "damping");
+    require(std::isfinite(e.rest_angle), who + ": rest_angle is not finite");
+    if (!e.joint.empty()) {
+      require(e.body_a.empty() && e.body_b.empty(),
+              who + ": give either a joint or two bodies, not both");
+      e.joint_index = joint_at(e.joint, who);
+      e.R_AB_rest = Mat3::Identity();
+      const Joint& j = model_.joints_[e.joint_index];
+      MOMENTA_REQUIRE(j.nv() == 1,
+                      "{}: joint '{}' is {} with {} degrees of freedom; a torsional spring needs "
+                      "a 1-dof joint",
+                      who, j.name, joint_type_name(j.type), j.nv());
+      return;
+    }
+    require(!e.body_a.empty() && !e.body_b.empty(),
+            who + ": give a joint, or two bodies body_a and body_b");
+    e.body_a_index = body_at(e.body_a, who);
+    e.body_b_index = body_at(e.body_b, who);
+    MOMENTA_REQUIRE(e.body_a_index != e.body_b_index, "{}: both ends are on body '{}'", who,
+                    e.body_a);
+    e.R_AB_rest = R_WB_initial_[e.body_a_index].transpose() * R_WB_initial_[e.body_b_index];
+  }
+
+  void resolve(JointFriction& e, const std::string& who) const {
+    e.joint_index = joint_at(e.joint, who);
+    nonnegative(e.viscous, who, "viscous");
+  }
+
+  void resolve(AppliedForce& e, const std::string& who) const {
+    e.at.body_index = body_at(e.at.body, who);
+    require(e.at.body_index != 0, who + ": a load on the world does nothing");
+    MOMENTA_REQUIRE(e.at.p_BoP_B.allFinite() && e.vector.allFinite(),
+                    "{}: point or vector {} is not finite", who, vec_str(e.vector));
+    if (!e.signal.empty()) e.signal_index = find_signal(e.signal, who);
+  }
+
+  void resolve(AppliedTorque& e, const std::string& who) const {
+    e.body_index = body_at(e.body, who);
+    require(e.body_index != 0, who + ": a load on the world does nothing");
+    MOMENTA_REQUIRE(e.vector.allFinite(), "{}: vector {} is not finite", who, vec_str(e.vector));
+    if (!e.signal.empty()) e.signal_index = find_signal(e.signal, who);
+  }
+
+  const std::vector<Body>& bodies_;
+  const std::vector<Joint>& joints_;
+  const std::vector<ForceElement>& elements_;
+  const std::vector<Signal>& signals_;
+  Model model_;
+  std::map<std::string, int, std::less<>> body_by_name_;  // index into bodies_ (input order)
+  std::vector<std::string_view> body_names_;
+  std::map<std::string, int, std::less<>> signal_by_name_;
+  std::vector<std::string_view> signal_names_;
+  std::vector<int> joint_of_child_;  // input joint carrying each input body
+  std::vector<int> order_;           // input body indices in model order (after the world)
+  std::vector<int> model_index_;     // model index of each input body
+  std::vector<Mat3> R_WB_initial_;
+};
+
+}  // namespace detail
+
+Model ModelBuilder::build() const {
+  return detail::ModelAssembler(gravity_, bodies_, joints_, force_elements_, signals_).build();
 }
 
 }  // namespace momenta::model

@@ -11,10 +11,14 @@
 #include "momenta/dynamics/momentum.hpp"
 #include "momenta/dynamics/reactions.hpp"
 #include "momenta/integrate/run.hpp"
-#include "momenta/simulate/multibody_system.hpp"
-#include "momenta/simulate/rigid_body_integrator.hpp"
+#include "momenta/system/integrators.hpp"
+#include "momenta/system/multibody_system.hpp"
+#include "momenta/system/rigid_body_integrator.hpp"
 
 namespace momenta::simulate {
+
+using system::Energy;
+using system::MultibodySystem;
 
 // --- TableSink -----------------------------------------------------------------------------------
 
@@ -32,26 +36,6 @@ int TableSink::column(std::string_view name) const {
   if (it != columns.end()) return static_cast<int>(it - columns.begin());
   const std::vector<std::string_view> names(columns.begin(), columns.end());
   throw InvalidArgument(fmt::format("no column '{}'{}", name, did_you_mean(name, names)));
-}
-
-// --- Integrators ---------------------------------------------------------------------------------
-
-std::vector<std::string_view> simulation_integrator_names() {
-  std::vector<std::string_view> names = integrate::integrator_names();
-  const auto& rigid = rigid_body_integrator_names();
-  names.insert(names.end(), rigid.begin(), rigid.end());
-  return names;
-}
-
-std::unique_ptr<integrate::Integrator> make_simulation_integrator(
-    std::string_view name, const integrate::Tolerances& tolerances) {
-  if (auto integrator = make_rigid_body_integrator(name)) return integrator;
-  const auto& general = integrate::integrator_names();
-  if (std::find(general.begin(), general.end(), name) != general.end())
-    return integrate::make_integrator(name, tolerances);
-  const std::vector<std::string_view> names = simulation_integrator_names();
-  throw InvalidArgument(fmt::format("unknown integrator '{}'{}; known: {}", name,
-                                    did_you_mean(name, names), fmt::join(names, ", ")));
 }
 
 // --- Simulation ----------------------------------------------------------------------------------
@@ -85,11 +69,11 @@ constexpr const char* kReactionSuffixes[6] = {"Fx", "Fy", "Fz", "Mx", "My", "Mz"
 
 }  // namespace
 
-Simulation::Simulation(const model::Model& model, std::vector<OutputSpec> outputs,
+Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec> outputs,
                        SimulationOptions options)
     : model_(model), options_(std::move(options)), outputs_(model, std::move(outputs)) {
   check_options(options_);
-  integrator_ = make_simulation_integrator(options_.integrator, options_.tolerances);
+  integrator_ = system::make_integrator(options_.integrator, options_.tolerances);
 
   // The columns that do not depend on what the model conserves.
   columns_.push_back("time");
@@ -304,7 +288,7 @@ SimulationSummary Simulation::run(RowSink& sink) {
 std::string format_summary(const SimulationSummary& s) {
   std::string out;
   const std::string order =
-      s.order == kExactOrder ? std::string("exact") : fmt::format("order {}", s.order);
+      s.order == model::kExactOrder ? std::string("exact") : fmt::format("order {}", s.order);
   out += fmt::format("integrator   {} ({}{}), {} {:.6g} s, to t = {:.6g} s\n", s.integrator, order,
                      s.adaptive ? ", adaptive" : "", s.adaptive ? "largest step" : "step", s.step,
                      s.t_end);

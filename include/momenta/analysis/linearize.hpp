@@ -1,5 +1,5 @@
 #pragma once
-// Linearization of a multibody model (momenta::model::Model, run by simulate::MultibodySystem)
+// Linearization of a multibody model (momenta::model::Model, run by system::MultibodySystem)
 // about an operating point, for control design:
 //
 //     δẋ = A δx + B δu,     δy = C δx + D δu.
@@ -49,7 +49,7 @@
 #include "momenta/analysis/state_space.hpp"
 #include "momenta/math/types.hpp"
 #include "momenta/model/model.hpp"
-#include "momenta/simulate/output.hpp"
+#include "momenta/system/output_set.hpp"
 
 namespace momenta::analysis {
 
@@ -75,7 +75,7 @@ struct LinearizationOptions {
   /// `output_specs`, or every configuration state when there are none.
   std::vector<std::string> outputs;
   /// The named model quantities `outputs` may refer to (a model file's `outputs:`).
-  std::vector<simulate::OutputSpec> output_specs;
+  std::vector<model::OutputSpec> output_specs;
   /// Largest step of the configuration differences, rad on angles; 0: automatic (1e-3).
   double angle_step = 0.0;
   /// The same on lengths, m; 0: automatic (1e-3 · characteristic_length(model)).

@@ -2,15 +2,40 @@
 // The exceptions momenta throws. Every message names the offending quantity and its value, and
 // where it came from (file, line, column) when it came from a file.
 
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace momenta {
+
+/// Which item of a model an error is about, as data (not only as text), so that a file reader
+/// can point at the line that declares it.
+struct ModelItemRef {
+  enum class Kind { body, joint, force_element, signal };
+  Kind kind;
+  std::string name;
+};
+
+/// "body", "joint", "force element", "signal".
+std::string_view model_item_kind_name(ModelItemRef::Kind kind);
 
 /// Base of every exception momenta throws.
 class Error : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+
+  /// The model item the error is about, when one is known.
+  const std::optional<ModelItemRef>& item() const { return item_; }
+  /// Records the item the error is about, unless one is already recorded (the innermost, most
+  /// specific item wins). Used as `catch (Error& e) { e.about(...); throw; }`, which keeps the
+  /// exception's type.
+  void about(ModelItemRef::Kind kind, std::string name) {
+    if (!item_) item_ = ModelItemRef{kind, std::move(name)};
+  }
+
+ private:
+  std::optional<ModelItemRef> item_;
 };
 
 /// A function argument is outside its documented domain (a negative length, a non-unit axis).

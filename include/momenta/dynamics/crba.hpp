@@ -13,14 +13,16 @@ const MatX& crba(const Model& model, Data& data, const VecX& q);
 /// Allocating convenience form of crba.
 MatX mass_matrix(const Model& model, const VecX& q);
 
-/// Checks that M(q) is positive definite, so that forward dynamics has a unique answer. Throws
-/// InvalidArgument naming the first coordinate along which no inertia resists the motion — a
-/// body with zero inertia about an axis its joint lets it turn about (a slender rod or a point
-/// mass spinning about itself), or a massless body carrying degrees of freedom — with the pivot
-/// that vanished, its joint ("joint 'pivot': ...") and a hint. A pivot counts as vanished when it
-/// is below 1e-12 of its diagonal entry M_ii (round-off in a singular M is far smaller; a
-/// physically lopsided but valid inertia ratio is far larger). Allocates: a model check, not a
-/// hot path.
+/// Checks that M(q) of the coordinates that are not prescribed is positive definite, so that
+/// forward dynamics has a unique answer. Throws InvalidArgument naming the first coordinate along
+/// which no inertia resists the motion — a body with zero inertia about an axis its joint lets it
+/// turn about (a slender rod or a point mass spinning about itself), or a massless body carrying
+/// degrees of freedom — with the pivot that vanished, its joint ("joint 'pivot': ...") and a
+/// hint; Error::item() names the joint. A pivot of the Cholesky factorization in coordinate order
+/// counts as vanished when it is below 1e-12 of its own diagonal entry M_ii, or below 1e-14 of the
+/// largest diagonal entry (round-off in a singular M is far smaller — a rod turned 90° about its
+/// axis leaves 1e-33 of m L²; a physically lopsided but valid inertia ratio is far larger).
+/// Allocates: a model check, not a hot path.
 void check_mass_matrix(const Model& model, const VecX& q);
 
 }  // namespace momenta::dynamics

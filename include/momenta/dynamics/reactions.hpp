@@ -6,16 +6,11 @@
 #include <span>
 
 #include "momenta/dynamics/data.hpp"
+#include "momenta/model/reaction_frame.hpp"
 
 namespace momenta::dynamics {
 
-/// Frame in which a reaction is expressed.
-enum class ReactionFrame {
-  joint,   ///< The child-side joint frame J'.
-  child,   ///< The child body frame C.
-  parent,  ///< The parent body frame P.
-  world,   ///< The world frame W.
-};
+using model::ReactionFrame;  // model/reaction_frame.hpp
 
 /// The wrench a joint transmits onto its child: force (N) and moment (N·m) about the origin of
 /// the child-side joint frame J' (the joint centre of revolute, universal and spherical joints).

@@ -1,5 +1,6 @@
 #pragma once
-// Mass properties of a rigid body: mass, centre of mass and inertia tensor about the centre of mass.
+// Mass properties of a rigid body: mass, centre of mass and inertia tensor about the centre of
+// mass.
 //
 // Frame notation (docs/conventions.md): a MassProperties describes a body B in a frame, also
 // called B, with origin Bo. The centre of mass is p_BoBcm_B; the inertia is I_BBcm_B, about Bcm,
@@ -8,6 +9,7 @@
 
 #include <string_view>
 
+#include "momenta/math/spatial.hpp"
 #include "momenta/math/types.hpp"
 
 namespace momenta::inertia {
@@ -45,6 +47,12 @@ class MassProperties {
   /// Inertia about the point Q at p_BoQ_B, expressed in B (parallel-axis theorem, products
   /// included): I_BQ = I_BBcm + m (|d|² 1 − d dᵀ) with d = p_QBcm.
   Mat3 inertia_about(const Vec3& p_BoQ_B) const;
+
+  /// The spatial inertia about Bo, expressed in B (Featherstone 2008 §2.13): mass, first moment
+  /// m p_BoBcm_B and the inertia about Bo.
+  SpatialInertia spatial_inertia() const {
+    return {mass_, mass_ * p_BoBcm_B_, inertia_about(Vec3::Zero())};
+  }
 
   /// The same body described in frame A, where B sits at pose (R_AB, p_AoBo_A) in A.
   MassProperties transformed(const Mat3& R_AB, const Vec3& p_AoBo_A) const;

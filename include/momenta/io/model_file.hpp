@@ -7,28 +7,34 @@
 #include <string>
 #include <vector>
 
+#include "momenta/common/error.hpp"
 #include "momenta/model/model.hpp"
-#include "momenta/simulate/output.hpp"
+#include "momenta/model/output_spec.hpp"
+#include "momenta/model/simulation_settings.hpp"
 
 namespace momenta::io {
 
-/// The file's `simulation:` section: defaults that `momenta simulate` options override.
-struct SimulationSettings {
-  std::optional<double> duration;         ///< s, > 0
-  std::optional<double> step;             ///< fixed step, or an adaptive method's largest, s
-  std::optional<std::string> integrator;  ///< a name integrate::make_integrator knows
-  std::optional<double> relative_tolerance;
-  std::optional<double> absolute_tolerance;
-  std::optional<long> every;  ///< record every n-th step
+/// Where a model file declares one item (1-based line and column).
+struct ItemLocation {
+  ModelItemRef item;
+  int line = 0;
+  int column = 0;
 };
 
 /// What a model file describes.
 struct ModelFile {
-  std::string name;                           ///< The file's `name:`, or the file's stem.
-  std::string description;                    ///< The file's `description:`, or empty.
-  model::Model model;                         ///< Built and validated.
-  std::vector<simulate::OutputSpec> outputs;  ///< The `outputs:` section, in file order.
-  SimulationSettings simulation;
+  std::string name;                        ///< The file's `name:`, or the file's stem.
+  std::string description;                 ///< The file's `description:`, or empty.
+  model::Model model;                      ///< Built and validated.
+  std::vector<model::OutputSpec> outputs;  ///< The `outputs:` section, in file order.
+  model::SimulationSettings simulation;
+  std::string file;                 ///< The file's name as messages give it.
+  std::vector<ItemLocation> items;  ///< Where each body, joint, force element, signal is declared.
+
+  /// The error at the line of the item it is about (Error::item()), as ParseError
+  /// `file:line:column: message`; nullopt when it names no item this file declares. For errors
+  /// found after reading — a singular mass matrix found by the system layer, say.
+  std::optional<ParseError> locate(const Error& error) const;
 };
 
 /// Reads, checks and builds a model file. Paths inside it (part files, meshes, CSV tables) are
@@ -39,8 +45,8 @@ struct ModelFile {
 /// content: malformed YAML; an unknown key (with a did-you-mean suggestion); a missing or doubled
 /// key; a number that is not finite or out of range (a negative mass, a zero length); a name that
 /// is unknown (with a did-you-mean) or repeated; a joint tree with a cycle, a body without a
-/// joint or a massless leaf carrying degrees of freedom (singular mass matrix); a non-unit axis
-/// or quaternion; a signal table whose times do not increase; an output that does not fit its
+/// joint or a massless subtree on a joint whose motion is free (singular mass matrix); a non-unit
+/// axis or quaternion; a signal table whose times do not increase; an output that does not fit its
 /// target. Problems found only when the model is assembled are reported at the line of the
 /// body, joint or element they name.
 ModelFile read_model_file(const std::filesystem::path& path);

@@ -14,7 +14,6 @@
 //
 // Everything here is inline: these are the inner-loop operations of the dynamics algorithms.
 
-#include "momenta/inertia/mass_properties.hpp"
 #include "momenta/math/rotation.hpp"
 #include "momenta/math/types.hpp"
 
@@ -200,12 +199,6 @@ struct SpatialInertia {
   SpatialInertia() = default;
   SpatialInertia(double m, const Vec3& first_moment, const Mat3& I_about_origin)
       : mass(m), h(first_moment), I_O(I_about_origin) {}
-
-  /// From mass properties of body B described in B: the inertia about Bo, expressed in B.
-  static SpatialInertia from_mass_properties(const inertia::MassProperties& mp) {
-    const Vec3& c = mp.center_of_mass();
-    return {mp.mass(), mp.mass() * c, mp.inertia_about(Vec3::Zero())};
-  }
 
   /// Centre of mass from O (m); zero for a massless body.
   Vec3 center_of_mass() const { return mass > 0 ? Vec3(h / mass) : Vec3::Zero(); }

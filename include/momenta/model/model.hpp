@@ -26,6 +26,9 @@
 namespace momenta::model {
 
 class ModelBuilder;
+namespace detail {
+class ModelAssembler;
+}
 
 /// What the algorithms precompute for each joint from its description (read-only; for
 /// implementers of algorithms, not needed by users).
@@ -107,7 +110,7 @@ class Model {
   const std::vector<JointConstants>& joint_constants() const { return constants_; }
 
  private:
-  friend class ModelBuilder;
+  friend class detail::ModelAssembler;
   Model() = default;
 
   Vec3 gravity_ = Vec3(0, 0, -9.81);

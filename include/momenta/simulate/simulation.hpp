@@ -40,7 +40,7 @@
 #include "momenta/integrate/integrator.hpp"
 #include "momenta/model/model.hpp"
 #include "momenta/simulate/conservation_audit.hpp"
-#include "momenta/simulate/output.hpp"
+#include "momenta/system/output_set.hpp"
 
 namespace momenta::simulate {
 
@@ -48,7 +48,7 @@ namespace momenta::simulate {
 struct SimulationOptions {
   double duration = 10.0;  ///< s, > 0: the run goes from t = 0 to t = duration
   double step = 1e-3;      ///< s, > 0: the fixed step, or the largest step of an adaptive method
-  std::string integrator = "rk4";    ///< see simulation_integrator_names()
+  std::string integrator = "rk4";    ///< a name of model::integrators()
   integrate::Tolerances tolerances;  ///< adaptive methods (dopri5) only
   long every = 1;          ///< record every n-th step (≥ 1); the first and last states always
   bool reactions = false;  ///< add every joint's reaction wrench to each row
@@ -81,7 +81,7 @@ class TableSink final : public RowSink {
 /// What a run did.
 struct SimulationSummary {
   std::string integrator;  ///< its name
-  int order = 0;           ///< its order (kExactOrder of rigid_body_integrator.hpp: exact)
+  int order = 0;           ///< its order (model::kExactOrder: exact)
   bool adaptive = false;
   double step = 0.0;   ///< s: the fixed step, or the adaptive method's largest
   double t_end = 0.0;  ///< s: the time reached
@@ -96,22 +96,13 @@ struct SimulationSummary {
   std::vector<AuditEntry> audit;
 };
 
-/// The names of every integrator a simulation can use: the structure-preserving rigid-body
-/// methods (rigid_body_integrator.hpp) and integrate::integrator_names().
-std::vector<std::string_view> simulation_integrator_names();
-
-/// The integrator with that name: a rigid-body method first, else integrate::make_integrator.
-/// Throws InvalidArgument for an unknown name (with a did-you-mean over both lists) or a bad
-/// tolerance.
-std::unique_ptr<integrate::Integrator> make_simulation_integrator(
-    std::string_view name, const integrate::Tolerances& tolerances = {});
-
 class Simulation {
  public:
   /// Checks the options, resolves the outputs against `model` (which must outlive this) and
   /// makes the integrator. Throws InvalidArgument naming the option and its value (duration or
   /// step not positive and finite, every < 1, an unknown integrator) or the output at fault.
-  Simulation(const model::Model& model, std::vector<OutputSpec> outputs, SimulationOptions options);
+  Simulation(const model::Model& model, std::vector<model::OutputSpec> outputs,
+             SimulationOptions options);
   ~Simulation();
   Simulation(const Simulation&) = delete;
   Simulation& operator=(const Simulation&) = delete;
@@ -119,7 +110,7 @@ class Simulation {
   const SimulationOptions& options() const { return options_; }
   /// Every column of a row, in order (see the file comment).
   const std::vector<std::string>& column_names() const { return columns_; }
-  const OutputSet& outputs() const { return outputs_; }
+  const system::OutputSet& outputs() const { return outputs_; }
 
   /// Integrates from t = 0 and the model's initial state (quaternions normalized, prescribed
   /// coordinates set from their signals) to options().duration, handing sink.begin() the
@@ -137,7 +128,7 @@ class Simulation {
 
   const model::Model& model_;
   SimulationOptions options_;
-  OutputSet outputs_;
+  system::OutputSet outputs_;
   std::unique_ptr<integrate::Integrator> integrator_;
   std::vector<std::string> columns_;
 };

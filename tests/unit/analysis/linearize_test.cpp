@@ -9,7 +9,7 @@
 #include "momenta/analysis/transfer_function.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/model/model_builder.hpp"
-#include "momenta/simulate/multibody_system.hpp"
+#include "momenta/system/multibody_system.hpp"
 #include "momenta_test/hand_models.hpp"
 #include "momenta_test/tolerance.hpp"
 
@@ -120,7 +120,7 @@ OperatingPoint moving_point(const model::Model& m, unsigned seed) {
 // Plain central differences of the nonlinear vector field ẋ = [δ̇; a(q₀ ⊕ δ, v)] at δ = 0:
 // the reference A (no Richardson, no inverse dynamics).
 MatX finite_difference_A(const model::Model& m, const OperatingPoint& p, double h) {
-  simulate::MultibodySystem system(m);
+  system::MultibodySystem system(m);
   const int nv = m.nv();
   MatX A(2 * nv, 2 * nv);
   VecX rate_plus(nv), rate_minus(nv), a_plus(nv), a_minus(nv);
@@ -187,7 +187,7 @@ TEST(Linearize, VelocityDerivativeIsExactBecauseDynamicsAreQuadraticInV) {
   // and centrifugal terms quadratic, dampers linear). Proof on the mixed chain:
   const model::Model model = mixed_chain();
   const OperatingPoint p = moving_point(model, 7);
-  simulate::MultibodySystem system(model);
+  system::MultibodySystem system(model);
   const int nv = model.nv();
   VecX a(nv);
   const auto acceleration = [&](int i, double s) {
@@ -218,7 +218,7 @@ TEST(Linearize, InputColumnMatchesFiniteDifferencesOfTheSignal) {
   const OperatingPoint p = moving_point(model, 4);
   const LinearModel lin = linearize(model, p);
   ASSERT_EQ(lin.system.input_names(), std::vector<std::string>{"push"});
-  simulate::MultibodySystem system(model);
+  system::MultibodySystem system(model);
   VecX a_plus(model.nv()), a_minus(model.nv());
   const double h = 0.5;  // loads are linear in the signal: any step, round-off only
   const std::vector<double> zero{0.0};
@@ -376,7 +376,7 @@ TEST(Linearize, PrescribedMotionFoldsIntoOneInputWhateverTheLayout) {
   // The wheel's absolute velocity is proper: D₁ = 1 cancels C E₂ = −1.
   options.outputs = {"wheel_speed"};
   options.output_specs = {
-      {"wheel_speed", simulate::OutputQuantity::body_velocity, "wheel", Vec3::Zero(), 2}};
+      {"wheel_speed", model::OutputQuantity::body_velocity, "wheel", Vec3::Zero(), 2}};
   EXPECT_NO_THROW(linearize(serial, initial_operating_point(serial), options));
 }
 
@@ -386,8 +386,8 @@ TEST(Linearize, OutputsFromModelQuantitiesAndCoordinates) {
   const model::Model model = pendulum(m, l);
   LinearizationOptions options;
   options.output_specs = {
-      {"bob", simulate::OutputQuantity::body_position, "bob", Vec3(0, 0, -l), -1},
-      {"bob_v", simulate::OutputQuantity::body_velocity, "bob", Vec3(0, 0, -l), 0}};
+      {"bob", model::OutputQuantity::body_position, "bob", Vec3(0, 0, -l), -1},
+      {"bob_v", model::OutputQuantity::body_velocity, "bob", Vec3(0, 0, -l), 0}};
   options.outputs = {"bob.x", "bob.z", "bob_v", "pivot.angle_rate"};
   const LinearModel lin =
       linearize(model, {0.0, VecX::Constant(1, theta0), VecX::Constant(1, w0)}, options);

@@ -7,6 +7,7 @@
 #include <string>
 #include <variant>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "momenta/common/error.hpp"
@@ -177,6 +178,55 @@ joints:
   EXPECT_EQ(tip.inertia_about_com()(2, 2), 0.4);
 }
 
+TEST(ModelFileBodies, InertiaAboutAPointMovesToTheCentreOfMass) {
+  // A top given as textbooks give it: m = 2 kg, centre of mass l = 0.3 m above the pivot, I1 about
+  // the pivot 0.25 kg·m², I3 0.1 kg·m². About the centre of mass I1 − m l² = 0.07 kg·m².
+  const ModelFile file = parse(R"(
+bodies:
+  - {name: top, mass: 2, com: [0, 0, 0.3], inertia: [0.25, 0.25, 0.1], inertia_about: [0, 0, 0]}
+joints:
+  - {name: pivot, type: spherical, parent: world, child: top}
+)");
+  const auto& top = file.model.body(1).mass_properties;
+  EXPECT_MATRIX_NEAR(top.inertia_about_com(), Vec3(0.07, 0.07, 0.1).asDiagonal().toDenseMatrix(),
+                     1e-15);
+  // Moved back to the pivot, it is what the file gave.
+  EXPECT_MATRIX_NEAR(top.inertia_about(Vec3::Zero()),
+                     Vec3(0.25, 0.25, 0.1).asDiagonal().toDenseMatrix(), 1e-15);
+}
+
+TEST(ModelFileErrors, InertiaAboutAPointThatImpliesNoBody) {
+  // I1 about the pivot smaller than m l²: about the centre of mass it would be negative.
+  EXPECT_ERROR_AT(error_of(R"(bodies:
+  - {name: top, mass: 2, com: [0, 0, 0.3], inertia: [0.1, 0.1, 0.1], inertia_about: [0, 0, 0]}
+joints:
+  - {name: pivot, type: spherical, parent: world, child: top}
+)"),
+                  "m.yaml:2:53: bodies[0].inertia: ", "parallel-axis theorem");
+  EXPECT_ERROR_AT(error_of(R"(bodies:
+  - {name: top, mass: 2, inertia_about: [0, 0, 0]}
+joints:
+  - {name: pivot, type: spherical, parent: world, child: top}
+)"),
+                  "m.yaml:2:41: bodies[0].inertia_about: ", "needs an 'inertia'");
+}
+
+TEST(ModelFileBodies, MasslessTurntableOnAPrescribedJoint) {
+  // A driven turntable carries a bead on a slot: the table's motion is given, so it needs no mass.
+  const ModelFile file = parse(R"(
+inputs:
+  - {name: spin, type: ramp, slope: 2}
+bodies:
+  - {name: table, mass: 0}
+  - {name: bead, mass: 0.1}
+joints:
+  - {name: drive, type: revolute, parent: world, child: table, axis: [0, 0, 1], prescribed: spin}
+  - {name: slot, type: prismatic, parent: table, child: bead, axis: [1, 0, 0]}
+)");
+  EXPECT_EQ(file.model.nv(), 2);
+  EXPECT_EQ(file.model.body(1).mass_properties.mass(), 0.0);
+}
+
 TEST(ModelFileBodies, PartFileIsReadRelativeToTheModel) {
   const auto dir = scratch_dir();
   std::ofstream(dir / "ball.yaml") << "parts:\n  - {shape: sphere, radius: 0.1, mass: 4}\n";
@@ -256,13 +306,13 @@ simulation: {duration: 2, step: 0.01, integrator: dopri5, rtol: 1e-8, atol: 1e-1
 )");
   ASSERT_EQ(file.outputs.size(), 3u);
   EXPECT_EQ(file.outputs[0].name, "bob.position");
-  EXPECT_EQ(file.outputs[0].quantity, simulate::OutputQuantity::body_position);
+  EXPECT_EQ(file.outputs[0].quantity, model::OutputQuantity::body_position);
   EXPECT_EQ(file.outputs[0].point, Vec3(0, 0, -1));
   EXPECT_EQ(file.outputs[0].component, 2);
   EXPECT_EQ(file.outputs[1].name, "rx");
-  EXPECT_EQ(file.outputs[1].quantity, simulate::OutputQuantity::reaction_force);
-  EXPECT_EQ(file.outputs[1].frame, dynamics::ReactionFrame::child);
-  EXPECT_EQ(file.outputs[2].quantity, simulate::OutputQuantity::joint_velocity);
+  EXPECT_EQ(file.outputs[1].quantity, model::OutputQuantity::reaction_force);
+  EXPECT_EQ(file.outputs[1].frame, model::ReactionFrame::child);
+  EXPECT_EQ(file.outputs[2].quantity, model::OutputQuantity::joint_velocity);
   EXPECT_EQ(*file.simulation.integrator, "dopri5");
   EXPECT_EQ(*file.simulation.every, 10);
   EXPECT_EQ(*file.simulation.absolute_tolerance, 1e-10);
@@ -345,6 +395,57 @@ joints:
   - {name: k, type: revolute, parent: a, child: ghost}
 )"),
                   "m.yaml:6:5: joints[1]: ", "joint 'k' carries only massless bodies");
+}
+
+TEST(ModelFileErrors, MasslessBodyOnAFreeJointIsStillRefused) {
+  EXPECT_ERROR_AT(error_of(R"(bodies:
+  - {name: table, mass: 0}
+joints:
+  - {name: drive, type: revolute, parent: world, child: table, axis: [0, 0, 1]}
+)"),
+                  "m.yaml:4:5: joints[0]: ", "joint 'drive' carries only massless bodies");
+}
+
+TEST(ModelFileSimulation, EveryRegisteredIntegratorIsAcceptedByName) {
+  for (const char* name :
+       {"rk4", "symplectic_euler", "dopri5", "splitting", "splitting4", "lie_group", "exact"}) {
+    const ModelFile file = parse(fmt::format(R"(
+bodies:
+  - {{name: b, mass: 1, inertia: [1, 2, 3]}}
+joints:
+  - {{name: f, type: free, parent: world, child: b}}
+simulation: {{integrator: {}}}
+)",
+                                             name));
+    EXPECT_EQ(*file.simulation.integrator, name);
+  }
+  EXPECT_ERROR_AT(error_of(R"(bodies:
+  - {name: b, mass: 1, inertia: [1, 2, 3]}
+joints:
+  - {name: f, type: free, parent: world, child: b}
+simulation: {integrator: exactt}
+)"),
+                  "m.yaml:5:26: simulation.integrator: ",
+                  "unknown integrator 'exactt' (did you mean 'exact'?); known: rk4, "
+                  "symplectic_euler, dopri5, splitting, splitting4, lie_group, exact");
+}
+
+TEST(ModelFile, LocatesAnErrorAboutAnItemAtItsDeclaration) {
+  const ModelFile file = parse(R"(bodies:
+  - {name: a, mass: 1, com: [1, 0, 0]}
+joints:
+  - {name: j, type: revolute, parent: world, child: a}
+)");
+  InvalidArgument about_joint("something about j");
+  about_joint.about(ModelItemRef::Kind::joint, "j");
+  const auto located = file.locate(about_joint);
+  ASSERT_TRUE(located.has_value());
+  EXPECT_EQ(std::string(located->what()), "m.yaml:4:5: something about j");
+  InvalidArgument about_nothing("no item");
+  EXPECT_FALSE(file.locate(about_nothing).has_value());
+  InvalidArgument about_other("other");
+  about_other.about(ModelItemRef::Kind::body, "j");
+  EXPECT_FALSE(file.locate(about_other).has_value());
 }
 
 TEST(ModelFileErrors, NonUnitQuaternionAndAxis) {

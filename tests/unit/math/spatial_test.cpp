@@ -1,6 +1,7 @@
 // Spatial algebra: the inline transform actions and cross products against their 6×6 matrices
 // (Featherstone 2008, eqs. 2.24–2.32), duality of motion and force, and spatial inertia.
 #include "momenta/math/spatial.hpp"
+#include "momenta/inertia/mass_properties.hpp"
 
 #include <random>
 
@@ -47,7 +48,7 @@ TEST(Spatial, InertiaFromMassPropertiesAndTransformed) {
   const Mat3 R = rotation_from_axis_angle(Vec3(1, 1, 0), 0.6);
   const inertia::MassProperties mp(2.5, Vec3(0.1, -0.2, 0.3),
                                    R * Vec3(0.02, 0.03, 0.04).asDiagonal() * R.transpose());
-  const SpatialInertia I = SpatialInertia::from_mass_properties(mp);
+  const SpatialInertia I = mp.spatial_inertia();
   EXPECT_MATRIX_NEAR(I.I_O, mp.inertia_about(Vec3::Zero()), 1e-15);
   EXPECT_MATRIX_NEAR(I.center_of_mass(), mp.center_of_mass(), 1e-15);
   const Vec6 V = (Vec6() << 0.4, -1.0, 0.7, 2.0, 0.1, -0.5).finished();

@@ -2,6 +2,8 @@
 // message that names the culprit.
 #include "momenta/model/model_builder.hpp"
 
+#include <optional>
+
 #include <gtest/gtest.h>
 
 #include "momenta/common/error.hpp"
@@ -169,6 +171,54 @@ TEST(ModelBuilder, RejectsBadParameters) {
 
 // A massless body is accepted inside the tree but not where it alone carries a degree of
 // freedom (its mass matrix would be singular).
+// Errors say which item they are about as data, whatever their type (InvalidInertia stays
+// InvalidInertia), so the model-file reader points at the item's line without reading the text.
+TEST(ModelBuilder, ErrorsCarryTheItemTheyAreAbout) {
+  const auto item_of = [](const ModelBuilder& b) -> std::optional<ModelItemRef> {
+    try {
+      b.build();
+    } catch (const Error& e) {
+      return e.item();
+    }
+    ADD_FAILURE() << "built";
+    return std::nullopt;
+  };
+  {
+    ModelBuilder b;
+    b.add_body("a", inertia::MassProperties(-1.0, Vec3::Zero(), Mat3::Identity()));
+    b.add_joint(joint("j", JointType::revolute, "world", "a"));
+    EXPECT_THROW(b.build(), InvalidInertia);
+    const auto item = item_of(b);
+    ASSERT_TRUE(item.has_value());
+    EXPECT_EQ(item->kind, ModelItemRef::Kind::body);
+    EXPECT_EQ(item->name, "a");
+  }
+  {
+    ModelBuilder b;
+    b.add_body("a", unit_body());
+    Joint j = joint("j", JointType::revolute, "world", "a");
+    j.axis = Vec3(0, 0, 2);
+    b.add_joint(j);
+    const auto item = item_of(b);
+    ASSERT_TRUE(item.has_value());
+    EXPECT_EQ(item->kind, ModelItemRef::Kind::joint);
+    EXPECT_EQ(item->name, "j");
+  }
+  {
+    ModelBuilder b;
+    b.add_body("a", unit_body());
+    b.add_joint(joint("j", JointType::revolute, "world", "a"));
+    model::JointFriction friction;
+    friction.name = "drag";
+    friction.joint = "k";
+    b.add_force_element(friction);
+    const auto item = item_of(b);
+    ASSERT_TRUE(item.has_value());
+    EXPECT_EQ(item->kind, ModelItemRef::Kind::force_element);
+    EXPECT_EQ(item->name, "drag");
+  }
+}
+
 TEST(ModelBuilder, MasslessBodies) {
   {
     ModelBuilder b;

@@ -16,6 +16,9 @@
 #include "momenta_test/tolerance.hpp"
 
 namespace momenta::simulate {
+
+using model::OutputQuantity;
+using model::OutputSpec;
 namespace {
 
 using model::Joint;

@@ -15,7 +15,7 @@
 #include "momenta/integrate/runge_kutta.hpp"
 #include "momenta/io/model_file.hpp"
 #include "momenta/model/model_builder.hpp"
-#include "momenta/simulate/multibody_system.hpp"
+#include "momenta/system/multibody_system.hpp"
 #include "momenta_test/tolerance.hpp"
 
 namespace momenta::analysis {
@@ -242,7 +242,7 @@ TEST(ModelLinearization, LinearStepResponseApproachesTheNonlinearOneQuadraticall
   const double T = 3.0, h = 1e-3;
   const auto steps = static_cast<std::size_t>(std::lround(T / h));
   const TimeResponse unit = step_response(lin.system, 0, {T, steps + 1});
-  simulate::MultibodySystem system(model);
+  system::MultibodySystem system(model);
   std::vector<double> errors;
   for (double dtau : {0.4, 0.2, 0.1, 0.05}) {
     const std::vector<double> value{dtau}, zero{0.0};

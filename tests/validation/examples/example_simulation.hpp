@@ -9,7 +9,7 @@
 #include "momenta/integrate/run.hpp"
 #include "momenta/integrate/runge_kutta.hpp"
 #include "momenta/io/model_file.hpp"
-#include "momenta/simulate/multibody_system.hpp"
+#include "momenta/system/multibody_system.hpp"
 
 namespace momenta::test {
 
@@ -18,7 +18,7 @@ inline io::ModelFile load_example(const std::string& name) {
 }
 
 /// The model's initial state at t = 0, prescribed coordinates applied.
-inline integrate::State initial_state(simulate::MultibodySystem& system) {
+inline integrate::State initial_state(system::MultibodySystem& system) {
   integrate::State state{0.0, system.model().initial_q(), system.model().initial_v()};
   system.apply_prescribed_motion(state.t, state.q, state.v);
   return state;
@@ -26,7 +26,7 @@ inline integrate::State initial_state(simulate::MultibodySystem& system) {
 
 /// Simulates `system` from its initial state to t_end with classic RK4 steps of h, calling
 /// observe(state) at the start and after every step (prescribed coordinates applied).
-inline integrate::State simulate_rk4(simulate::MultibodySystem& system, double t_end, double h,
+inline integrate::State simulate_rk4(system::MultibodySystem& system, double t_end, double h,
                                      const std::function<void(const integrate::State&)>& observe) {
   integrate::State state = initial_state(system);
   integrate::RungeKutta4 rk4;

@@ -33,7 +33,7 @@ TEST(LumpedExamples, CruiseControlSpeedFollowsTheFirstOrderClosedForm) {
   const model::Model& m = file.model;
   const double mass = 1000.0, b = 50.0, u = 500.0;
   EXPECT_EQ(m.body(1).mass_properties.mass(), mass);
-  simulate::MultibodySystem system(m);
+  system::MultibodySystem system(m);
   double worst_v = 0, worst_x = 0;
   const integrate::State end =
       test::simulate_rk4(system, 120.0, 0.01, [&](const integrate::State& s) {
@@ -69,7 +69,7 @@ TEST(LumpedExamples, QuarterCarFollowsFranklinsEquations) {
                            (-b * (x[2] - x[3]) - ks * (x[0] - x[1]) - kw * (x[0] - r)) / m1,
                            (-b * (x[3] - x[2]) - ks * (x[1] - x[0])) / m2);
   };
-  simulate::MultibodySystem system(m);
+  system::MultibodySystem system(m);
   const double h = 1e-4;
   Eigen::Vector4d x = Eigen::Vector4d::Zero();
   double t_ref = 0.0, worst = 0.0, peak_y = 0.0;
@@ -93,7 +93,7 @@ TEST(LumpedExamples, SatelliteAttitudeUnderATorquePulseIsPiecewiseQuadratic) {
   const io::ModelFile file = test::load_example("satellite_attitude");
   const model::Model& m = file.model;
   const double I = 5000.0, T = 10.0;
-  simulate::MultibodySystem system(m);
+  system::MultibodySystem system(m);
   double worst = 0.0;
   test::simulate_rk4(system, 10.0, 0.01, [&](const integrate::State& s) {
     double expected = 0.0;
@@ -113,7 +113,7 @@ TEST(LumpedExamples, FlexibleSatelliteFollowsItsEquationsAndKeepsTheImpulse) {
   const model::Model& m = file.model;
   const double I1 = 1.0, I2 = 0.1, k = 0.091, b = 0.0036;
   const auto torque = [](double t) { return (t >= 1.0 && t < 2.0) ? 0.1 : 0.0; };
-  simulate::MultibodySystem system(m);
+  system::MultibodySystem system(m);
   const int i1 = q_index(m, "theta1"), i2 = q_index(m, "theta2");
   const double h = 0.01;
   Eigen::Vector4d x = Eigen::Vector4d::Zero();

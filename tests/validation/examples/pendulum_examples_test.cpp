@@ -10,7 +10,7 @@
 #include <boost/math/special_functions/ellint_1.hpp>
 
 #include "example_simulation.hpp"
-#include "momenta/simulate/output.hpp"
+#include "momenta/system/output_set.hpp"
 
 namespace momenta {
 namespace {
@@ -25,7 +25,7 @@ double pendulum_period(double omega0, double theta0) {
 
 // Simulates a one-joint pendulum example and returns its period from the downward zero
 // crossings of θ (a quarter period, then whole periods apart).
-double simulated_period(simulate::MultibodySystem& system, double t_end, double h) {
+double simulated_period(system::MultibodySystem& system, double t_end, double h) {
   test::DownwardCrossings crossings;
   test::simulate_rk4(system, t_end, h,
                      [&](const integrate::State& s) { crossings.add(s.t, s.q[0], s.v[0]); });
@@ -46,7 +46,7 @@ TEST(PendulumExamples, LargeAmplitudePeriodIsTheEllipticIntegral) {
   const double L = m.body(1).mass_properties.center_of_mass().norm();
   const double theta0 = m.initial_q()[0];
   EXPECT_NEAR(theta0, 2 * std::numbers::pi / 3, 1e-15);
-  simulate::MultibodySystem system(m);
+  system::MultibodySystem system(m);
   const double expected = pendulum_period(std::sqrt(kG / L), theta0);
   EXPECT_NEAR(expected, 2.754090, 1e-6);  // the example's documented figure
   EXPECT_NEAR(simulated_period(system, 10.0, 1e-3), expected, 1e-10 * expected);
@@ -68,16 +68,16 @@ TEST(PendulumExamples, CompoundPendulumPeriodAndPinReactionAlongTheMotion) {
   const double I_O = rod.inertia_about(Vec3::Zero())(1, 1);  // about the y axis through O
   EXPECT_NEAR(I_O, mass * 1.0 * 1.0 / 3, 1e-12);
   const double omega0 = std::sqrt(mass * kG * d / I_O);
-  simulate::MultibodySystem system(m);
+  system::MultibodySystem system(m);
   const double expected = pendulum_period(omega0, m.initial_q()[0]);
   EXPECT_NEAR(expected, 1.641070, 1e-6);
   EXPECT_NEAR(simulated_period(system, 10.0, 1e-3), expected, 1e-10 * expected);
 
   // The pin reaction, in the world frame, along the motion.
-  simulate::OutputSet outputs(m, {{.name = "pin",
-                                   .quantity = simulate::OutputQuantity::reaction_force,
-                                   .target = "pivot",
-                                   .frame = dynamics::ReactionFrame::world}});
+  system::OutputSet outputs(m, {{.name = "pin",
+                                 .quantity = model::OutputQuantity::reaction_force,
+                                 .target = "pivot",
+                                 .frame = model::ReactionFrame::world}});
   std::vector<double> F(3);
   double worst = 0.0;
   test::simulate_rk4(system, 2.0, 1e-3, [&](const integrate::State& s) {
@@ -139,7 +139,7 @@ TEST(PendulumExamples, DoublePendulumFollowsLagrangesEquationsAndKeepsItsEnergy)
                                     m.body(2).mass_properties.mass(),
                                     m.body(1).mass_properties.center_of_mass().norm(),
                                     m.body(2).mass_properties.center_of_mass().norm()};
-  simulate::MultibodySystem system(m);
+  system::MultibodySystem system(m);
   const double h = 5e-4;
   // Model coordinates: θ1 absolute, θ2 relative to the upper rod.
   Eigen::Vector4d x(m.initial_q()[0], m.initial_q()[0] + m.initial_q()[1], m.initial_v()[0],

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "example_simulation.hpp"
-#include "momenta/simulate/output.hpp"
+#include "momenta/system/output_set.hpp"
 
 namespace momenta {
 namespace {
@@ -44,16 +44,16 @@ void expect_reactions_follow_euler(const char* example, double omega, double tol
   const Vec3 r_cm = rotor.center_of_mass();
   const Mat3 I_O = rotor.inertia_about(Vec3::Zero());
   const Vec3 w(0, 0, omega);
-  simulate::MultibodySystem system(m);
-  using simulate::OutputQuantity;
-  simulate::OutputSet outputs(m, {{.name = "F",
-                                   .quantity = OutputQuantity::reaction_force,
-                                   .target = "bearing",
-                                   .frame = dynamics::ReactionFrame::child},
-                                  {.name = "M",
-                                   .quantity = OutputQuantity::reaction_moment,
-                                   .target = "bearing",
-                                   .frame = dynamics::ReactionFrame::child}});
+  system::MultibodySystem system(m);
+  using model::OutputQuantity;
+  system::OutputSet outputs(m, {{.name = "F",
+                                 .quantity = OutputQuantity::reaction_force,
+                                 .target = "bearing",
+                                 .frame = model::ReactionFrame::child},
+                                {.name = "M",
+                                 .quantity = OutputQuantity::reaction_moment,
+                                 .target = "bearing",
+                                 .frame = model::ReactionFrame::child}});
   std::vector<double> values(6);
   double worst_F = 0, worst_M = 0;
   test::simulate_rk4(system, 0.2, 1e-3, [&](const integrate::State& s) {
@@ -106,15 +106,15 @@ TEST(RotorExamples, GyroscopePrecessesAtMglOverCOmegaWithItsAxleLevel) {
   const model::Model& m = file.model;
   const double Omega = 9.81 * (0.5 * 0.1 + 0.05 * 0.06) / (0.5 * 0.05 * 0.05 / 2 * 300.0);
   EXPECT_NEAR(Omega, 2.77296, 1e-5);
-  using simulate::OutputQuantity;
-  simulate::OutputSet outputs(
+  using model::OutputQuantity;
+  system::OutputSet outputs(
       m, {{.name = "end",
            .quantity = OutputQuantity::body_position,
            .target = "axle",
            .point = Vec3(0.1, 0, 0)},
           {.name = "w", .quantity = OutputQuantity::body_angular_velocity, .target = "axle"}});
   const auto deviation = [&](double h) {
-    simulate::MultibodySystem system(m);
+    system::MultibodySystem system(m);
     std::vector<double> values(6);
     double worst = 0.0;
     test::simulate_rk4(system, 2.2659, h, [&](const integrate::State& s) {

@@ -14,11 +14,14 @@
 #include "momenta/dynamics/kinematics.hpp"
 #include "momenta/io/model_file.hpp"
 #include "momenta/rigid_body/analytic_references.hpp"
-#include "momenta/simulate/multibody_system.hpp"
-#include "momenta/simulate/rigid_body_integrator.hpp"
+#include "momenta/system/multibody_system.hpp"
+#include "momenta/system/rigid_body_integrator.hpp"
 #include "momenta_test/tolerance.hpp"
 
 namespace momenta::simulate {
+
+using system::make_rigid_body_integrator;
+using system::MultibodySystem;
 namespace {
 
 using integrate::State;

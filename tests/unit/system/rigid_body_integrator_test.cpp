@@ -5,7 +5,7 @@
 // attitude, angular velocity and centre-of-mass motion come from forward kinematics of the model
 // (dynamics::forward_kinematics), energies and momenta from dynamics::kinetic_energy and
 // dynamics::momentum.
-#include "momenta/simulate/rigid_body_integrator.hpp"
+#include "momenta/system/rigid_body_integrator.hpp"
 
 #include <cmath>
 #include <cstdlib>
@@ -24,11 +24,11 @@
 #include "momenta/rigid_body/analytic_references.hpp"
 #include "momenta/rigid_body/free_rigid_body.hpp"
 #include "momenta/rigid_body/rotation_integrators.hpp"
-#include "momenta/simulate/multibody_system.hpp"
+#include "momenta/system/multibody_system.hpp"
 #include "momenta_test/allocation_counter.hpp"
 #include "momenta_test/tolerance.hpp"
 
-namespace momenta::simulate {
+namespace momenta::system {
 namespace {
 
 using integrate::State;
@@ -187,7 +187,7 @@ double trend_significance(const std::vector<double>& y) {
 TEST(RigidBodyIntegrator, NamesAndFactory) {
   const auto& names = rigid_body_integrator_names();
   ASSERT_EQ(names.size(), 4u);
-  const int orders[] = {2, 4, 2, kExactOrder};
+  const int orders[] = {2, 4, 2, model::kExactOrder};
   for (size_t i = 0; i < names.size(); ++i) {
     auto integrator = make_rigid_body_integrator(names[i]);
     ASSERT_NE(integrator, nullptr) << names[i];
@@ -570,4 +570,4 @@ TEST(RigidBodyIntegrator, RejectsModelsItDoesNotApplyTo) {
 }
 
 }  // namespace
-}  // namespace momenta::simulate
+}  // namespace momenta::system

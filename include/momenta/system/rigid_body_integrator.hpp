@@ -44,26 +44,24 @@
 #include <vector>
 
 #include "momenta/integrate/integrator.hpp"
+#include "momenta/model/integrators.hpp"
 #include "momenta/rigid_body/free_rigid_body.hpp"
 #include "momenta/rigid_body/rotation_integrators.hpp"
 
-namespace momenta::simulate {
+namespace momenta::system {
 
 /// The structure-preserving methods, by name ("splitting", "splitting4", "lie_group", "exact").
 enum class RigidBodyMethod { kSplitting, kSplitting4, kLieGroup, kExact };
-
-/// What order() reports for "exact": it has no truncation error.
-inline constexpr int kExactOrder = std::numeric_limits<int>::max();
 
 class RigidBodyIntegrator final : public integrate::Integrator {
  public:
   explicit RigidBodyIntegrator(RigidBodyMethod method);
 
   std::string_view name() const override;
-  /// 2 (splitting, lie_group), 4 (splitting4) or kExactOrder (exact).
+  /// 2 (splitting, lie_group), 4 (splitting4) or model::kExactOrder (exact).
   int order() const override;
 
-  /// Checks that `system` is a simulate::MultibodySystem whose model is a free body or a heavy
+  /// Checks that `system` is a system::MultibodySystem whose model is a free body or a heavy
   /// top (see the file comment) and that `state` has its sizes, then builds the rigid-body
   /// integrator for it (allocates). Throws InvalidArgument naming this integrator, what it
   /// applies to, what the model has, and suggesting rk4 or dopri5, when the model is neither;
@@ -112,4 +110,4 @@ const std::vector<std::string_view>& rigid_body_integrator_names();
 /// rigid_body_integrator_names() (so a caller can fall back to integrate::make_integrator).
 std::unique_ptr<integrate::Integrator> make_rigid_body_integrator(std::string_view name);
 
-}  // namespace momenta::simulate
+}  // namespace momenta::system

@@ -1,4 +1,4 @@
-#include "momenta/simulate/rigid_body_integrator.hpp"
+#include "momenta/system/rigid_body_integrator.hpp"
 
 #include <string>
 
@@ -6,9 +6,9 @@
 
 #include "momenta/common/error.hpp"
 #include "momenta/model/model.hpp"
-#include "momenta/simulate/multibody_system.hpp"
+#include "momenta/system/multibody_system.hpp"
 
-namespace momenta::simulate {
+namespace momenta::system {
 
 namespace {
 
@@ -83,7 +83,7 @@ int RigidBodyIntegrator::order() const {
     case RigidBodyMethod::kSplitting4:
       return 4;
     case RigidBodyMethod::kExact:
-      return kExactOrder;
+      return model::kExactOrder;
     default:
       return 2;
   }
@@ -94,7 +94,7 @@ void RigidBodyIntegrator::initialize(integrate::SecondOrderSystem& system,
   const auto* multibody = dynamic_cast<const MultibodySystem*>(&system);
   if (multibody == nullptr) {
     throw InvalidArgument(fmt::format(
-        "integrator '{}' applies to {}; it needs a multibody model (simulate::MultibodySystem), "
+        "integrator '{}' applies to {}; it needs a multibody model (system::MultibodySystem), "
         "not another kind of system. Use rk4 or dopri5 instead",
         name(), applies_to(method_)));
   }
@@ -256,4 +256,4 @@ std::unique_ptr<integrate::Integrator> make_rigid_body_integrator(std::string_vi
   return nullptr;
 }
 
-}  // namespace momenta::simulate
+}  // namespace momenta::system

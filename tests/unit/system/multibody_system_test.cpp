@@ -1,7 +1,7 @@
 // MultibodySystem: closed-form responses (mass–spring–damper, cruise control), the power balance
 // of a driven damped model, fourth-order energy convergence and momentum conservation of
 // conservative ones, prescribed motion against a second algorithm, and no allocation.
-#include "momenta/simulate/multibody_system.hpp"
+#include "momenta/system/multibody_system.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -23,7 +23,7 @@
 #include "momenta_test/multibody_models.hpp"
 #include "momenta_test/tolerance.hpp"
 
-namespace momenta::simulate {
+namespace momenta::system {
 namespace {
 
 using model::AppliedTorque;
@@ -509,4 +509,4 @@ TEST(MultibodySystem, AccelerationDoesNotAllocate) {
 }
 
 }  // namespace
-}  // namespace momenta::simulate
+}  // namespace momenta::system

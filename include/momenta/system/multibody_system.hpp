@@ -18,7 +18,7 @@
 #include "momenta/integrate/second_order_system.hpp"
 #include "momenta/model/model.hpp"
 
-namespace momenta::simulate {
+namespace momenta::system {
 
 /// Energy of the system at one instant (J).
 struct Energy {
@@ -116,4 +116,4 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   bool conserves_angular_momentum_ = false;
 };
 
-}  // namespace momenta::simulate
+}  // namespace momenta::system

@@ -1,4 +1,4 @@
-#include "momenta/simulate/output.hpp"
+#include "momenta/system/output_set.hpp"
 
 #include <algorithm>
 #include <array>
@@ -11,71 +11,37 @@
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
 #include "momenta/dynamics/point_kinematics.hpp"
-#include "momenta/simulate/multibody_system.hpp"
+#include "momenta/dynamics/reactions.hpp"
+#include "momenta/system/multibody_system.hpp"
 
-namespace momenta::simulate {
+namespace momenta::system {
+
+using model::OutputQuantity;
+using model::OutputSpec;
 
 namespace {
 
-// What kind of model item a quantity is of.
-enum class TargetKind { joint, body, signal, element };
-
-TargetKind target_kind(OutputQuantity quantity) {
-  switch (quantity) {
-    case OutputQuantity::joint_position:
-    case OutputQuantity::joint_velocity:
-    case OutputQuantity::joint_effort:
-    case OutputQuantity::reaction_force:
-    case OutputQuantity::reaction_moment:
-      return TargetKind::joint;
-    case OutputQuantity::body_position:
-    case OutputQuantity::body_velocity:
-    case OutputQuantity::body_acceleration:
-    case OutputQuantity::body_angular_velocity:
-      return TargetKind::body;
-    case OutputQuantity::signal:
-      return TargetKind::signal;
-    case OutputQuantity::spring_length:
-    case OutputQuantity::spring_tension:
-      return TargetKind::element;
-  }
-  return TargetKind::joint;
-}
-
-const char* target_kind_name(TargetKind kind) {
-  switch (kind) {
-    case TargetKind::joint:
-      return "joint";
-    case TargetKind::body:
-      return "body";
-    case TargetKind::signal:
-      return "signal";
-    case TargetKind::element:
-      return "force element";
-  }
-  return "";
-}
-
 bool is_vector(OutputQuantity quantity) {
-  const TargetKind kind = target_kind(quantity);
-  return kind == TargetKind::body || quantity == OutputQuantity::reaction_force ||
+  const model::OutputTargetKind kind = model::output_target_kind(quantity);
+  return kind == model::OutputTargetKind::body || quantity == OutputQuantity::reaction_force ||
          quantity == OutputQuantity::reaction_moment;
 }
 
 // Names of the model's items of one kind, for did-you-mean suggestions.
-std::vector<std::string_view> candidate_names(const model::Model& model, TargetKind kind) {
+std::vector<std::string_view> candidate_names(const model::Model& model,
+                                              model::OutputTargetKind kind) {
   std::vector<std::string_view> names;
   switch (kind) {
-    case TargetKind::joint:
+    case model::OutputTargetKind::joint:
       for (const model::Joint& j : model.joints()) names.push_back(j.name);
       break;
-    case TargetKind::body:
+    case model::OutputTargetKind::body:
       for (const model::Body& b : model.bodies()) names.push_back(b.name);
       break;
-    case TargetKind::signal:
+    case model::OutputTargetKind::signal:
       for (const model::Signal& s : model.signals()) names.push_back(s.name());
       break;
-    case TargetKind::element:
+    case model::OutputTargetKind::force_element:
       for (const model::ForceElement& e : model.force_elements())
         names.push_back(model::force_element_name(e));
       break;
@@ -84,13 +50,14 @@ std::vector<std::string_view> candidate_names(const model::Model& model, TargetK
 }
 
 // Index of the target, or a message naming the output and the nearest name.
-int resolve_target(const model::Model& model, const OutputSpec& spec, TargetKind kind) {
+int resolve_target(const model::Model& model, const OutputSpec& spec,
+                   model::OutputTargetKind kind) {
   const std::vector<std::string_view> names = candidate_names(model, kind);
   const auto it = std::find(names.begin(), names.end(), spec.target);
   if (it != names.end()) return static_cast<int>(it - names.begin());
-  throw InvalidArgument(fmt::format("output '{}': {} of unknown {} '{}'{}", spec.name,
-                                    output_quantity_name(spec.quantity), target_kind_name(kind),
-                                    spec.target, did_you_mean(spec.target, names)));
+  throw InvalidArgument(fmt::format(
+      "output '{}': {} of unknown {} '{}'{}", spec.name, model::output_quantity_name(spec.quantity),
+      model::output_target_kind_name(kind), spec.target, did_you_mean(spec.target, names)));
 }
 
 // Position and velocity of the point p_BoP_B of body b, in W, after forward_kinematics(q, v).
@@ -104,53 +71,25 @@ void point_motion(const dynamics::Data& data, int b, const Vec3& p_BoP_B, Vec3& 
 
 }  // namespace
 
-std::string_view output_quantity_name(OutputQuantity quantity) {
-  switch (quantity) {
-    case OutputQuantity::joint_position:
-    case OutputQuantity::body_position:
-      return "position";
-    case OutputQuantity::joint_velocity:
-    case OutputQuantity::body_velocity:
-      return "velocity";
-    case OutputQuantity::joint_effort:
-      return "effort";
-    case OutputQuantity::body_acceleration:
-      return "acceleration";
-    case OutputQuantity::body_angular_velocity:
-      return "angular_velocity";
-    case OutputQuantity::reaction_force:
-      return "reaction_force";
-    case OutputQuantity::reaction_moment:
-      return "reaction_moment";
-    case OutputQuantity::signal:
-      return "signal";
-    case OutputQuantity::spring_length:
-      return "spring_length";
-    case OutputQuantity::spring_tension:
-      return "spring_tension";
-  }
-  return "";
-}
-
 OutputSet::OutputSet(const model::Model& model, std::vector<OutputSpec> specs)
     : specs_(std::move(specs)), nq_(model.nq()), nv_(model.nv()) {
   static constexpr std::array<const char*, 3> kAxes = {"x", "y", "z"};
   std::set<std::string, std::less<>> seen;
   for (int s = 0; s < static_cast<int>(specs_.size()); ++s) {
     const OutputSpec& spec = specs_[s];
-    const std::string_view quantity = output_quantity_name(spec.quantity);
+    const std::string_view quantity = model::output_quantity_name(spec.quantity);
     if (spec.name.empty()) {
       throw InvalidArgument(
           fmt::format("output {} ({} of '{}'): the name is empty", s, quantity, spec.target));
     }
-    const TargetKind kind = target_kind(spec.quantity);
+    const model::OutputTargetKind kind = model::output_target_kind(spec.quantity);
     const int index = resolve_target(model, spec, kind);
-    if (kind != TargetKind::body && !spec.point.isZero(0.0)) {
+    if (kind != model::OutputTargetKind::body && !spec.point.isZero(0.0)) {
       throw InvalidArgument(fmt::format(
           "output '{}': a point [{}, {}, {}] applies only to body quantities, not to the {} of {} "
           "'{}'",
           spec.name, spec.point.x(), spec.point.y(), spec.point.z(), quantity,
-          target_kind_name(kind), spec.target));
+          model::output_target_kind_name(kind), spec.target));
     }
     if (!spec.point.allFinite()) {
       throw InvalidArgument(fmt::format("output '{}': the point [{}, {}, {}] is not finite",
@@ -163,7 +102,7 @@ OutputSet::OutputSet(const model::Model& model, std::vector<OutputSpec> specs)
     if (is_vector(spec.quantity)) {
       count = 3;
       by_axis = true;
-    } else if (kind == TargetKind::joint) {
+    } else if (kind == model::OutputTargetKind::joint) {
       const model::Joint& joint = model.joint(index);
       count = spec.quantity == OutputQuantity::joint_position ? joint.nq() : joint.nv();
       if (count == 0) {
@@ -171,7 +110,7 @@ OutputSet::OutputSet(const model::Model& model, std::vector<OutputSpec> specs)
                                           spec.name, joint.name,
                                           model::joint_type_name(joint.type)));
       }
-    } else if (kind == TargetKind::element) {
+    } else if (kind == model::OutputTargetKind::force_element) {
       const model::ForceElement& element = model.force_elements()[index];
       if (!std::holds_alternative<model::LinearSpringDamper>(element)) {
         throw InvalidArgument(
@@ -310,4 +249,4 @@ void OutputSet::evaluate(MultibodySystem& system, double t, const VecX& q, const
   }
 }
 
-}  // namespace momenta::simulate
+}  // namespace momenta::system

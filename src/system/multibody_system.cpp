@@ -1,4 +1,4 @@
-#include "momenta/simulate/multibody_system.hpp"
+#include "momenta/system/multibody_system.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -13,7 +13,7 @@
 #include "momenta/dynamics/hybrid_dynamics.hpp"
 #include "momenta/dynamics/kinematics.hpp"
 
-namespace momenta::simulate {
+namespace momenta::system {
 
 namespace {
 
@@ -209,4 +209,4 @@ Energy MultibodySystem::energy(const VecX& q, const VecX& v) {
   return e;
 }
 
-}  // namespace momenta::simulate
+}  // namespace momenta::system

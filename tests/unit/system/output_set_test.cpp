@@ -1,7 +1,7 @@
 // OutputSet: column names, and every quantity's value against a hand computation on a model simple
 // enough to solve by hand (a pendulum, a prescribed lift, a spring to the world).
 
-#include "momenta/simulate/output.hpp"
+#include "momenta/system/output_set.hpp"
 
 #include <cmath>
 #include <string>
@@ -11,11 +11,14 @@
 
 #include "momenta/common/error.hpp"
 #include "momenta/model/model_builder.hpp"
-#include "momenta/simulate/multibody_system.hpp"
+#include "momenta/system/multibody_system.hpp"
 #include "momenta_test/hand_models.hpp"
 #include "momenta_test/tolerance.hpp"
 
-namespace momenta::simulate {
+namespace momenta::system {
+
+using model::OutputQuantity;
+using model::OutputSpec;
 namespace {
 
 using model::Joint;
@@ -241,4 +244,4 @@ TEST(OutputSet, EvaluateChecksTheSpanSize) {
 }
 
 }  // namespace
-}  // namespace momenta::simulate
+}  // namespace momenta::system

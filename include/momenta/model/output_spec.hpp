@@ -1,0 +1,58 @@
+#pragma once
+// What a user asks to record: named model quantities that `momenta simulate` writes as extra CSV
+// columns and `momenta linearize` takes as outputs y (the rows of C and D). A description, read
+// from model files; system::OutputSet evaluates them on a model.
+//
+// An output names one quantity of one joint, body, signal or force element. Vector quantities are
+// three columns, "<name>.x", "<name>.y", "<name>.z", unless a single component is chosen; joint
+// quantities are one column per coordinate, "<name>.<i>", unless one coordinate is chosen. A
+// single column is called "<name>".
+
+#include <string>
+#include <string_view>
+
+#include "momenta/math/types.hpp"
+#include "momenta/model/reaction_frame.hpp"
+
+namespace momenta::model {
+
+enum class OutputQuantity {
+  joint_position,         ///< joint coordinates q (nq; quaternions as w, x, y, z)
+  joint_velocity,         ///< joint speeds v (nv)
+  joint_effort,           ///< generalized force on the joint: element forces + prescribed drive
+  body_position,          ///< p_WoP_W of a point P fixed in the body (m)
+  body_velocity,          ///< v_WP_W (m/s)
+  body_acceleration,      ///< a_WP_W (m/s²)
+  body_angular_velocity,  ///< w_WB_W (rad/s)
+  reaction_force,         ///< force the joint transmits to its child (N), in `frame`
+  reaction_moment,        ///< moment about the child-side joint frame's origin (N·m), in `frame`
+  signal,                 ///< an input signal's value
+  spring_length,          ///< a linear spring-damper's length ℓ (m)
+  spring_tension,         ///< its tension k (ℓ − ℓ0) + c ℓ̇ (N)
+};
+
+/// What kind of model item a quantity is of.
+enum class OutputTargetKind { joint, body, signal, force_element };
+
+/// The kind of item `quantity` is of (a reaction is of a joint, a spring length of a force
+/// element).
+OutputTargetKind output_target_kind(OutputQuantity quantity);
+
+/// "joint", "body", "signal", "force element".
+std::string_view output_target_kind_name(OutputTargetKind kind);
+
+/// The name used in model files: "position", "velocity", "effort", "reaction_force", ...
+/// (see docs/model-format.md) — joint and body quantities share "position" and "velocity".
+std::string_view output_quantity_name(OutputQuantity quantity);
+
+/// One requested output, as written in a model file.
+struct OutputSpec {
+  std::string name;  ///< column name (stem)
+  OutputQuantity quantity = OutputQuantity::body_position;
+  std::string target;         ///< the joint, body, signal or force element
+  Vec3 point = Vec3::Zero();  ///< body quantities: the point, p_BoP_B (m)
+  int component = -1;         ///< 0, 1, 2 for x, y, z (or one coordinate); −1: all
+  ReactionFrame frame = ReactionFrame::world;  ///< reactions only
+};
+
+}  // namespace momenta::model

@@ -1,0 +1,69 @@
+#include "momenta/model/output_spec.hpp"
+
+namespace momenta::model {
+
+OutputTargetKind output_target_kind(OutputQuantity quantity) {
+  switch (quantity) {
+    case OutputQuantity::joint_position:
+    case OutputQuantity::joint_velocity:
+    case OutputQuantity::joint_effort:
+    case OutputQuantity::reaction_force:
+    case OutputQuantity::reaction_moment:
+      return OutputTargetKind::joint;
+    case OutputQuantity::body_position:
+    case OutputQuantity::body_velocity:
+    case OutputQuantity::body_acceleration:
+    case OutputQuantity::body_angular_velocity:
+      return OutputTargetKind::body;
+    case OutputQuantity::signal:
+      return OutputTargetKind::signal;
+    case OutputQuantity::spring_length:
+    case OutputQuantity::spring_tension:
+      return OutputTargetKind::force_element;
+  }
+  return OutputTargetKind::joint;
+}
+
+std::string_view output_target_kind_name(OutputTargetKind kind) {
+  switch (kind) {
+    case OutputTargetKind::joint:
+      return "joint";
+    case OutputTargetKind::body:
+      return "body";
+    case OutputTargetKind::signal:
+      return "signal";
+    case OutputTargetKind::force_element:
+      return "force element";
+  }
+  return "";
+}
+
+std::string_view output_quantity_name(OutputQuantity quantity) {
+  switch (quantity) {
+    case OutputQuantity::joint_position:
+    case OutputQuantity::body_position:
+      return "position";
+    case OutputQuantity::joint_velocity:
+    case OutputQuantity::body_velocity:
+      return "velocity";
+    case OutputQuantity::joint_effort:
+      return "effort";
+    case OutputQuantity::body_acceleration:
+      return "acceleration";
+    case OutputQuantity::body_angular_velocity:
+      return "angular_velocity";
+    case OutputQuantity::reaction_force:
+      return "reaction_force";
+    case OutputQuantity::reaction_moment:
+      return "reaction_moment";
+    case OutputQuantity::signal:
+      return "signal";
+    case OutputQuantity::spring_length:
+      return "spring_length";
+    case OutputQuantity::spring_tension:
+      return "spring_tension";
+  }
+  return "";
+}
+
+}  // namespace momenta::model
