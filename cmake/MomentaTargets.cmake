@@ -13,6 +13,16 @@ function(momenta_configure_target target)
   endif()
 endfunction()
 
+# One translation unit per target (MOMENTA_UNITY_BUILD): Eigen's solvers and fmt are parsed and
+# instantiated once per library instead of once per file — the command-line tool builds cold in
+# a fraction of the time on two cores. Names private to a file must then differ between the files
+# of a target (anonymous namespaces are shared).
+function(momenta_unity_build target)
+  if(MOMENTA_UNITY_BUILD)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 0)
+  endif()
+endfunction()
+
 # momenta_add_library(<area> SOURCES ... DEPENDS ...): the library of one area, `momenta_<area>`,
 # exported as `momenta::<area>`.
 function(momenta_add_library area)
@@ -27,6 +37,7 @@ function(momenta_add_library area)
   target_compile_features(${target} PUBLIC cxx_std_20)
   target_link_libraries(${target} PUBLIC ${ARG_PUBLIC_DEPENDS} PRIVATE ${ARG_PRIVATE_DEPENDS})
   momenta_configure_target(${target})
+  momenta_unity_build(${target})
   install(TARGETS ${target} EXPORT momentaTargets
     ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
     LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The main job on a bundled example: installs what is missing (scripts/bootstrap.sh), builds
-# momenta (scripts/build.sh), and prints the mass properties of a flanged steel shaft with six bolt
+# The main job on a bundled example: installs what is missing (scripts/bootstrap.sh), builds the
+# momenta command-line tool alone — no tests, no benchmarks (scripts/build.sh), and prints the mass properties of a flanged steel shaft with six bolt
 # holes (examples/parts/flanged_shaft.yaml) — mass, volume, centre of mass, inertia tensor,
 # principal moments and axes.
 #
@@ -12,6 +12,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${MOMENTA_BUILD_DIR:-build}
 scripts/bootstrap.sh
-scripts/build.sh "$build_dir"
+MOMENTA_TARGET=momenta_cli scripts/build.sh "$build_dir"
 echo "\$ momenta inertia examples/parts/flanged_shaft.yaml $*" >&2
 exec "$build_dir/apps/momenta/momenta" inertia examples/parts/flanged_shaft.yaml "$@"

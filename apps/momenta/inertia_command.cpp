@@ -19,6 +19,7 @@
 #include "momenta/inertia/amount.hpp"
 #include "momenta/inertia/mass_properties.hpp"
 #include "momenta/io/part_file.hpp"
+#include "option_checks.hpp"
 #include "output_format.hpp"
 
 namespace momenta::cli {
@@ -103,8 +104,6 @@ Result read(const InertiaOptions& o) {
 // every other value as it is.
 double tidy(double x) { return x + 0.0; }
 
-json vec_json(const Vec3& v) { return json::array({tidy(v.x()), tidy(v.y()), tidy(v.z())}); }
-
 // Text shows 6 significant digits; entries below 1e-12 of `scale` (the round-off of a sum that
 // cancels, such as the products of a symmetric part) print as 0 there. JSON keeps every value.
 Vec3 shown(const Vec3& v, double scale) {
@@ -115,7 +114,7 @@ Mat3 shown(const Mat3& M) {
   return M.unaryExpr([&](double x) { return std::abs(x) < 1e-12 * scale ? 0.0 : tidy(x); });
 }
 
-void print_matrix(const Mat3& M, const char* format) {
+void print_tensor(const Mat3& M, const char* format) {
   for (int i = 0; i < 3; ++i) {
     fmt::print("  [");
     for (int j = 0; j < 3; ++j) fmt::print(fmt::runtime(format), M(i, j));
@@ -205,14 +204,14 @@ void run(const InertiaOptions& o) {
     fmt::print("centre of mass     {} m\n", vec_text(shown(mp.center_of_mass(), length)));
     const std::string axes = in_principal ? "principal axes" : "body axes";
     fmt::print("inertia about the centre of mass, in {} (kg·m²):\n", axes);
-    print_matrix(shown(I_com), " {:>13.6e}");
+    print_tensor(shown(I_com), " {:>13.6e}");
     fmt::print("principal moments  {} kg·m² (ascending)\n",
                vec_text(shown(principal.moments, principal.moments.maxCoeff())));
     fmt::print("principal axes (columns, in body axes):\n");
-    print_matrix(shown(R_BP), " {:>9.6f}");
+    print_tensor(shown(R_BP), " {:>9.6f}");
     if (about) {
       fmt::print("inertia about {} m, in {} (kg·m²):\n", vec_text(*about), axes);
-      print_matrix(shown(*I_about), " {:>13.6e}");
+      print_tensor(shown(*I_about), " {:>13.6e}");
     }
   }
   if (r.per_unit_density) {
@@ -240,21 +239,22 @@ void add_inertia_command(CLI::App& app) {
       ->add_option("--density", options->density,
                    "Density, kg/m³ (kg/m² with --shell). Mesh: its material (default: 1, per unit "
                    "density). Part file: replaces the file's default density of solids")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_finite());
   command
       ->add_option("--mass", options->mass, "Mesh only: its total mass, kg (instead of --density)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_finite());
   command
       ->add_option("--scale", options->scale,
                    "Mesh only: multiplies its coordinates into metres (0.001 for millimetres)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_finite());
   command->add_flag("--shell", options->shell,
                     "Mesh only: a thin shell of uniform surface density (sheet metal) over its "
                     "triangles, rather than the solid it bounds");
   command
       ->add_option("--about", options->about,
                    "Also the inertia tensor about the point X Y Z (m, in the file's frame)")
-      ->expected(3);
+      ->expected(3)
+      ->check(finite());
   command
       ->add_option("--frame", options->frame,
                    "Axes the inertia tensors are expressed in: 'body' (the file's own) or "

@@ -30,14 +30,6 @@ struct InfoOptions {
   bool json = false;
 };
 
-json vec_json(const Vec3& v) { return json::array({v.x(), v.y(), v.z()}); }
-
-json mat_json(const Mat3& M) {
-  json rows = json::array();
-  for (int i = 0; i < 3; ++i) rows.push_back(json::array({M(i, 0), M(i, 1), M(i, 2)}));
-  return rows;
-}
-
 std::string body_point_text(const model::BodyPoint& p) {
   return fmt::format("{} {}", p.body, vec_text(p.p_BoP_B));
 }
@@ -218,7 +210,7 @@ json describe(const InfoOptions& o, const io::ModelFile& file) {
                       {"joint", m.joint(body.joint_index).name},
                       {"mass", mp.mass()},
                       {"com", vec_json(mp.center_of_mass())},
-                      {"inertia_com", mat_json(mp.inertia_about_com())},
+                      {"inertia_com", matrix_json(mp.inertia_about_com())},
                       {"principal_moments", vec_json(mp.principal_axes().moments)}});
   }
   j["bodies"] = std::move(bodies);

@@ -4,18 +4,45 @@
 // 2 usage error (unknown option, missing argument).
 
 #include <exception>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
 #include "momenta/common/error.hpp"
+#include "momenta/common/suggest.hpp"
+
+namespace {
+
+// `momenta simulat ...`: CLI11 would only say that a subcommand is required. Names the word it
+// did not know, the nearest command and every command.
+bool refuse_unknown_command(const CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return false;
+  const std::string_view word = argv[1];
+  std::vector<std::string> names;
+  for (const CLI::App* command : app.get_subcommands({})) names.push_back(command->get_name());
+  for (const std::string& name : names) {
+    if (name == word) return false;
+  }
+  const std::vector<std::string_view> candidates(names.begin(), names.end());
+  fmt::print(
+      stderr,
+      "momenta: unknown command '{}'{}; commands: {}\nRun with --help for more information.\n",
+      word, momenta::did_you_mean(word, candidates), fmt::join(names, ", "));
+  return true;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
       "momenta — model, simulate and analyse mechanical systems from first principles.\n"
       "Run `momenta <command> --help` for a command's options and an example."};
   app.require_subcommand(1);
+  app.set_version_flag("--version", fmt::format("momenta {}", MOMENTA_VERSION));
   momenta::cli::add_version_command(app);
   momenta::cli::add_inertia_command(app);
   momenta::cli::add_simulate_command(app);
@@ -24,6 +51,7 @@ int main(int argc, char** argv) {
   momenta::cli::add_modes_command(app);
   momenta::cli::add_response_command(app);
 
+  if (refuse_unknown_command(app, argc, argv)) return 2;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -51,6 +51,8 @@ void write_json(std::string& out, const json& j, int indent, ListSpacing lists) 
 
 }  // namespace
 
+json vec_json(const Vec3& v) { return json::array({v.x() + 0.0, v.y() + 0.0, v.z() + 0.0}); }
+
 json matrix_json(const MatX& M) {
   json rows = json::array();
   for (Eigen::Index i = 0; i < M.rows(); ++i) {

@@ -10,6 +10,9 @@
 
 namespace momenta::cli {
 
+/// JSON of a vector as [x, y, z] (−0 written as 0).
+nlohmann::ordered_json vec_json(const Vec3& v);
+
 /// JSON of a matrix as an array of rows (−0 written as 0).
 nlohmann::ordered_json matrix_json(const MatX& M);
 

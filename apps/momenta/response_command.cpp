@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <numbers>
@@ -20,6 +21,7 @@
 #include "momenta/analysis/time_response.hpp"
 #include "momenta/analysis/transfer_function.hpp"
 #include "momenta/common/error.hpp"
+#include "option_checks.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -32,6 +34,7 @@ struct ResponseOptions {
   bool impulse = false;
   std::vector<double> bode;  // FMIN FMAX, rad/s
   std::optional<std::string> csv;
+  bool force = false;
   std::optional<double> duration;
   std::optional<std::size_t> points;
 };
@@ -43,6 +46,9 @@ std::string complex_list(const std::vector<analysis::Complex>& zs) {
 }
 
 void run(const ResponseOptions& o) {
+  if (o.csv && *o.csv != "-" && std::filesystem::exists(*o.csv) && !o.force) {
+    throw FileError(fmt::format("--csv {}: the file exists; pass --force to overwrite it", *o.csv));
+  }
   LinearModelOptions model = o.model;
   model.inputs = {o.input};
   model.outputs = {o.output};
@@ -130,14 +136,19 @@ void add_response_command(CLI::App& app) {
   kind->add_flag("--impulse", options->impulse, "Unit impulse response");
   kind->add_option("--bode", options->bode,
                    "Frequency response from FMIN to FMAX, angular frequencies in rad/s")
-      ->expected(2);
+      ->expected(2)
+      ->check(positive_finite());
   kind->require_option(1);
-  command->add_option("--csv", options->csv,
-                      "Write the samples as CSV to FILE ('-': to stdout instead of the summary)");
+  command
+      ->add_option("--csv", options->csv,
+                   "Write the samples as CSV to FILE ('-': to stdout instead of the summary); an "
+                   "existing file is never overwritten without --force")
+      ->check(not_a_folder());
+  command->add_flag("--force", options->force, "Overwrite the --csv file if it exists");
   command
       ->add_option("--duration", options->duration,
                    "Step/impulse: last sample time, s (default: from the poles)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_finite());
   command
       ->add_option("--points", options->points,
                    "Number of samples or frequencies (default: from the poles; 200 for Bode)")

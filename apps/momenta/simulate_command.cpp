@@ -17,6 +17,7 @@
 #include "momenta/simulate/csv_writer.hpp"
 #include "momenta/simulate/simulation.hpp"
 #include "momenta/system/integrators.hpp"
+#include "option_checks.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -100,30 +101,32 @@ void add_simulate_command(CLI::App& app) {
   command->add_option("MODEL", options->model, "A model file (.yaml; docs/model-format.md)")
       ->required();
   command->add_option("--duration", options->duration, "Simulated time, s (default 10)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_finite());
   command
       ->add_option("--dt", options->dt,
                    "Step, s (default 0.001); with an adaptive integrator its largest step "
                    "(default duration/1000)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_finite());
   command
       ->add_option("--rtol", options->rtol,
                    "Relative tolerance of an adaptive integrator (default 1e-8; implies dopri5)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_finite());
   command
       ->add_option("--atol", options->atol,
                    "Absolute tolerance of an adaptive integrator (default 1e-10; implies dopri5)")
-      ->check(CLI::PositiveNumber);
+      ->check(positive_finite());
   command->add_option(
       "--integrator", options->integrator,
       "rk4 (default), symplectic_euler, dopri5, or a rigid-body method: splitting, splitting4, "
       "lie_group, exact (a free body or a heavy top only)");
-  command->add_option("--output,-o", options->output,
-                      "CSV file to write (default: standard output); never overwritten without "
-                      "--force");
+  command
+      ->add_option("--output,-o", options->output,
+                   "CSV file to write (default: standard output); never overwritten without "
+                   "--force")
+      ->check(not_a_folder());
   command->add_flag("--force", options->force, "Overwrite the --output file if it exists");
   command->add_option("--every", options->every, "Write every N-th step (default 1)")
-      ->check(CLI::PositiveNumber);
+      ->check(whole_number_from_one());
   command->add_flag("--reactions", options->reactions,
                     "Add every joint's reaction force and moment (world frame) to each row");
   command->footer(

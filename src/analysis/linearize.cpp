@@ -200,7 +200,7 @@ std::vector<OutputRow> resolve_outputs(const model::Model& model,
 }
 
 // Throws NumericalError naming the first non-finite entry of a derivative.
-void check_finite(const MatX& X, const char* what) {
+void check_derivative_finite(const MatX& X, const char* what) {
   for (Eigen::Index j = 0; j < X.cols(); ++j)
     for (Eigen::Index i = 0; i < X.rows(); ++i)
       if (!std::isfinite(X(i, j)))
@@ -377,11 +377,11 @@ LinearModel linearize(const model::Model& model, const OperatingPoint& point,
     }
     residual.clear_offsets();
   }
-  check_finite(dg_dq, "∂(r, y)/∂q");
-  check_finite(dg_dv, "∂(r, y)/∂v");
-  check_finite(dg_du0, "∂(r, y)/∂u");
-  check_finite(dg_du1, "∂(r, y)/∂u̇");
-  check_finite(dg_du2, "∂(r, y)/∂ü");
+  check_derivative_finite(dg_dq, "∂(r, y)/∂q");
+  check_derivative_finite(dg_dv, "∂(r, y)/∂v");
+  check_derivative_finite(dg_du0, "∂(r, y)/∂u");
+  check_derivative_finite(dg_du1, "∂(r, y)/∂u̇");
+  check_derivative_finite(dg_du2, "∂(r, y)/∂ü");
 
   // T = ∂δ̇/∂δ from δ̇ = J_r(δ)⁻¹ ω (zero unless a ball or free joint turns).
   MatX T = MatX::Zero(nf, nf);

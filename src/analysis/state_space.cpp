@@ -25,7 +25,7 @@ void check_size(const MatX& matrix, const char* what, Eigen::Index rows, Eigen::
 }
 
 // Throws naming the first entry that is NaN or infinite.
-void check_finite(const MatX& matrix, const char* what) {
+void check_matrix_finite(const MatX& matrix, const char* what) {
   for (Eigen::Index j = 0; j < matrix.cols(); ++j) {
     for (Eigen::Index i = 0; i < matrix.rows(); ++i) {
       if (!std::isfinite(matrix(i, j))) {
@@ -80,10 +80,10 @@ StateSpace::StateSpace(MatX A, MatX B, MatX C, MatX D, std::vector<std::string> 
   check_size(C_, "C", C_.rows(), n, "C has one column per state");
   if (D_.size() == 0) D_ = MatX::Zero(C_.rows(), B_.cols());
   check_size(D_, "D", C_.rows(), B_.cols(), "D is outputs × inputs");
-  check_finite(A_, "A");
-  check_finite(B_, "B");
-  check_finite(C_, "C");
-  check_finite(D_, "D");
+  check_matrix_finite(A_, "A");
+  check_matrix_finite(B_, "B");
+  check_matrix_finite(C_, "C");
+  check_matrix_finite(D_, "D");
   state_names_ = checked_names(std::move(state_names), state_count(), "x", "state");
   input_names_ = checked_names(std::move(input_names), input_count(), "u", "input");
   output_names_ = checked_names(std::move(output_names), output_count(), "y", "output");

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/Eigenvalues>
 #include <fmt/format.h>
+#include <Eigen/Eigenvalues>
 
 #include "momenta/common/error.hpp"
 
@@ -12,9 +12,9 @@ namespace momenta::inertia {
 namespace {
 
 std::string format_matrix(const Mat3& M) {
-  return fmt::format("[[{:.6g}, {:.6g}, {:.6g}], [{:.6g}, {:.6g}, {:.6g}], [{:.6g}, {:.6g}, {:.6g}]]",
-                     M(0, 0), M(0, 1), M(0, 2), M(1, 0), M(1, 1), M(1, 2), M(2, 0), M(2, 1),
-                     M(2, 2));
+  return fmt::format(
+      "[[{:.6g}, {:.6g}, {:.6g}], [{:.6g}, {:.6g}, {:.6g}], [{:.6g}, {:.6g}, {:.6g}]]", M(0, 0),
+      M(0, 1), M(0, 2), M(1, 0), M(1, 1), M(1, 2), M(2, 0), M(2, 1), M(2, 2));
 }
 
 // Replaces the columns [first, last) of `axes`, an orthonormal basis of one eigenspace, by the
@@ -127,9 +127,10 @@ PrincipalAxes MassProperties::principal_axes() const {
 
 void MassProperties::check_physical(std::string_view what) const {
   if (!std::isfinite(mass_) || !(mass_ > 0.0)) {
-    throw InvalidInertia(fmt::format("{}: mass {:.6g} kg is not positive; a body needs a positive "
-                                     "mass",
-                                     what, mass_));
+    throw InvalidInertia(
+        fmt::format("{}: mass {:.6g} kg is not positive; a body needs a positive "
+                    "mass",
+                    what, mass_));
   }
   if (!p_BoBcm_B_.allFinite() || !I_BBcm_B_.allFinite()) {
     throw InvalidInertia(fmt::format("{}: centre of mass [{}, {}, {}] or inertia {} is not finite",

@@ -34,17 +34,6 @@ struct Monomials {
 constexpr int kLanes = 8;
 constexpr std::size_t kBlock = 1024;
 
-Vec3 bounding_box_centre(const TriangleMesh& mesh) {
-  if (mesh.vertices.empty()) return Vec3::Zero();
-  Vec3 lo = mesh.vertices.front();
-  Vec3 hi = lo;
-  for (const Vec3& p : mesh.vertices) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  return 0.5 * (lo + hi);
-}
-
 // Loads the corners of triangles [t, t + count) relative to `origin` into lanes, zero-filling
 // unused lanes (a zero triangle adds nothing). Returns false if an index is out of range.
 struct Lanes {

@@ -91,17 +91,6 @@ std::pair<double, double> six_volumes(const TriangleMesh& mesh, const Vec3& orig
   return {signed_sum, abs_sum};
 }
 
-Vec3 bounding_box_centre(const TriangleMesh& mesh) {
-  if (mesh.vertices.empty()) return Vec3::Zero();
-  Vec3 lo = mesh.vertices.front();
-  Vec3 hi = lo;
-  for (const Vec3& p : mesh.vertices) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  return 0.5 * (lo + hi);
-}
-
 }  // namespace
 
 TriangleMesh weld_vertices(const TriangleMesh& mesh, double tolerance) {
@@ -363,6 +352,17 @@ bool prepare_solid_mesh(TriangleMesh& mesh, std::string_view name) {
   if (six_signed > 0.0) return false;
   for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
   return true;
+}
+
+Vec3 bounding_box_centre(const TriangleMesh& mesh) {
+  if (mesh.vertices.empty()) return Vec3::Zero();
+  Vec3 lo = mesh.vertices.front();
+  Vec3 hi = lo;
+  for (const Vec3& p : mesh.vertices) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  return 0.5 * (lo + hi);
 }
 
 }  // namespace momenta::inertia

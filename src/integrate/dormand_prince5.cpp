@@ -11,8 +11,8 @@ namespace momenta::integrate {
 
 namespace {
 // Dormand & Prince (1980), as tabulated in Hairer, Nørsett & Wanner, Table II.5.2.
-constexpr double kC[7] = {0, 1.0 / 5, 3.0 / 10, 4.0 / 5, 8.0 / 9, 1, 1};
-constexpr double kA[7][6] = {
+constexpr double kDopriC[7] = {0, 1.0 / 5, 3.0 / 10, 4.0 / 5, 8.0 / 9, 1, 1};
+constexpr double kDopriA[7][6] = {
     {0, 0, 0, 0, 0, 0},
     {1.0 / 5, 0, 0, 0, 0, 0},
     {3.0 / 40, 9.0 / 40, 0, 0, 0, 0},
@@ -21,10 +21,10 @@ constexpr double kA[7][6] = {
     {9017.0 / 3168, -355.0 / 33, 46732.0 / 5247, 49.0 / 176, -5103.0 / 18656, 0},
     {35.0 / 384, 0, 500.0 / 1113, 125.0 / 192, -2187.0 / 6784, 11.0 / 84}};
 // The fifth-order solution's weights are the last row of a (first same as last).
-constexpr const double* kB = kA[6];
+constexpr const double* kDopriB = kDopriA[6];
 // Fifth- minus embedded fourth-order weights: the local error estimate.
-constexpr double kE[7] = {71.0 / 57600,      0,          -71.0 / 16695, 71.0 / 1920,
-                          -17253.0 / 339200, 22.0 / 525, -1.0 / 40};
+constexpr double kDopriE[7] = {71.0 / 57600,      0,          -71.0 / 16695, 71.0 / 1920,
+                               -17253.0 / 339200, 22.0 / 525, -1.0 / 40};
 // Dense output of order four (Hairer's dopri5 code, CONTD5).
 constexpr double kD[7] = {-12715105075.0 / 11282082432.0,  0,
                           87487479700.0 / 32700410799.0,   -10690763975.0 / 1880347072.0,
@@ -143,7 +143,7 @@ double DormandPrince5::step(SecondOrderSystem& system, State& state, double h_ma
     system.begin_step(state.t, state.t + h);
     stages_.kq[0] = state.v;
     for (int i = 1; i < 7; ++i) {
-      stages_.evaluate(system, state, h, i, kA[i], kC[i], statistics_.evaluations);
+      stages_.evaluate(system, state, h, i, kDopriA[i], kDopriC[i], statistics_.evaluations);
     }
     // The fifth-order solution is the last stage's point; the error estimate is Σ e_i k_i.
     delta1_ = stages_.delta;
@@ -151,9 +151,9 @@ double DormandPrince5::step(SecondOrderSystem& system, State& state, double h_ma
     error_delta_.setZero();
     error_v_.setZero();
     for (int j = 0; j < 7; ++j) {
-      if (kE[j] == 0.0) continue;
-      error_delta_.noalias() += (h * kE[j]) * stages_.kq[j];
-      error_v_.noalias() += (h * kE[j]) * stages_.kv[j];
+      if (kDopriE[j] == 0.0) continue;
+      error_delta_.noalias() += (h * kDopriE[j]) * stages_.kq[j];
+      error_v_.noalias() += (h * kDopriE[j]) * stages_.kv[j];
     }
     system.configuration_scale(stages_.q, scale_q1_);
     const double error = error_norm(state, v1_);

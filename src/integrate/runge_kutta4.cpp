@@ -4,9 +4,9 @@ namespace momenta::integrate {
 
 namespace {
 // Butcher tableau of the classic method (rows of a, then c and b).
-constexpr double kA[4][3] = {{0, 0, 0}, {0.5, 0, 0}, {0, 0.5, 0}, {0, 0, 1}};
-constexpr double kC[4] = {0, 0.5, 0.5, 1};
-constexpr double kB[4] = {1.0 / 6, 1.0 / 3, 1.0 / 3, 1.0 / 6};
+constexpr double kRk4A[4][3] = {{0, 0, 0}, {0.5, 0, 0}, {0, 0.5, 0}, {0, 0, 1}};
+constexpr double kRk4C[4] = {0, 0.5, 0.5, 1};
+constexpr double kRk4B[4] = {1.0 / 6, 1.0 / 3, 1.0 / 3, 1.0 / 6};
 }  // namespace
 
 void RungeKutta4::initialize(SecondOrderSystem& system, const State& state) {
@@ -23,10 +23,10 @@ double RungeKutta4::step(SecondOrderSystem& system, State& state, double h) {
   system.acceleration(state.t, state.q, state.v, stages_.kv[0]);
   ++statistics_.evaluations;
   for (int i = 1; i < 4; ++i) {
-    stages_.evaluate(system, state, h, i, kA[i], kC[i], statistics_.evaluations);
+    stages_.evaluate(system, state, h, i, kRk4A[i], kRk4C[i], statistics_.evaluations);
   }
   // Combine in local coordinates, then map back onto the manifold.
-  stages_.combine(state, h, kB, 4, delta_, stages_.v);
+  stages_.combine(state, h, kRk4B, 4, delta_, stages_.v);
   system.integrate(state.q, delta_, stages_.q);
   state.q.swap(stages_.q);
   state.v.swap(stages_.v);

@@ -83,9 +83,9 @@ namespace {
 
 using detail::Context;
 
-constexpr std::array<std::string_view, 9> kFileKeys = {"name",   "description", "gravity",
-                                                       "bodies", "joints",      "forces",
-                                                       "inputs", "outputs",     "simulation"};
+constexpr std::array<std::string_view, 9> kModelFileKeys = {"name",   "description", "gravity",
+                                                            "bodies", "joints",      "forces",
+                                                            "inputs", "outputs",     "simulation"};
 
 // `simulation:` — defaults for `momenta simulate`.
 model::SimulationSettings read_simulation(const YamlNode& root) {
@@ -159,7 +159,7 @@ std::vector<ItemLocation> item_locations(const Context& ctx) {
 
 ModelFile compose(const YamlNode& root, const std::filesystem::path& base_dir) {
   root.expect_map("a model file: a map with 'bodies' and 'joints'");
-  root.check_keys(kFileKeys);
+  root.check_keys(kModelFileKeys);
 
   std::string name =
       root.find_string("name").value_or(std::filesystem::path(root.file()).stem().string());

@@ -167,8 +167,8 @@ const std::vector<Shape>& shapes() {
 constexpr std::array<std::pair<std::string_view, double>, 4> kUnits = {
     {{"m", 1.0}, {"cm", 0.01}, {"mm", 0.001}, {"in", 0.0254}}};
 
-constexpr std::array<std::string_view, 5> kFileKeys = {"name", "description", "units", "density",
-                                                       "parts"};
+constexpr std::array<std::string_view, 5> kPartFileKeys = {"name", "description", "units",
+                                                           "density", "parts"};
 // Keys every part may have, whatever it is.
 constexpr std::array<std::string_view, 6> kPoseKeys = {"name",     "hole",       "position",
                                                        "rotation", "quaternion", "euler"};
@@ -365,7 +365,7 @@ namespace {
 CompositePart compose(const YamlNode& root, const std::filesystem::path& base_dir,
                       const PartFileOptions& options) {
   root.expect_map("a part file: a map with a 'parts' list");
-  root.check_keys(kFileKeys);
+  root.check_keys(kPartFileKeys);
 
   CompositePart result;
   result.name =

@@ -3,7 +3,9 @@
 #include <cmath>
 #include <fstream>
 #include <numbers>
+#include <optional>
 #include <sstream>
+#include <string_view>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -22,6 +24,40 @@ struct YamlNode::Impl {
 };
 
 namespace {
+
+// The offset of the first byte that does not belong to a well-formed UTF-8 sequence (no
+// overlong forms, no surrogates, nothing above U+10FFFF), or nullopt.
+std::optional<std::size_t> first_invalid_utf8(std::string_view text) {
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const unsigned char b = byte(i);
+    std::size_t length = 0;
+    unsigned char low = 0x80, high = 0xBF;  // the range of the second byte
+    if (b < 0x80) {
+      length = 1;
+    } else if (b >= 0xC2 && b <= 0xDF) {
+      length = 2;
+    } else if (b >= 0xE0 && b <= 0xEF) {
+      length = 3;
+      if (b == 0xE0) low = 0xA0;
+      if (b == 0xED) high = 0x9F;
+    } else if (b >= 0xF0 && b <= 0xF4) {
+      length = 4;
+      if (b == 0xF0) low = 0x90;
+      if (b == 0xF4) high = 0x8F;
+    } else {
+      return i;
+    }
+    if (i + length > text.size()) return i;
+    for (std::size_t k = 1; k < length; ++k) {
+      const unsigned char c = byte(i + k);
+      if (k == 1 ? (c < low || c > high) : (c < 0x80 || c > 0xBF)) return i;
+    }
+    i += length;
+  }
+  return std::nullopt;
+}
 
 // yaml-cpp marks are 0-based with -1 for "none".
 std::pair<int, int> position_of(const YAML::Mark& mark) {
@@ -260,7 +296,14 @@ std::vector<YamlNode> YamlNode::elements(std::optional<std::size_t> expected_siz
 
 std::string YamlNode::as_string() const {
   if (!impl_->node.IsScalar()) fail(fmt::format("expected a text, got {}", describe(impl_->node)));
-  return impl_->node.Scalar();
+  const std::string& text = impl_->node.Scalar();
+  if (const auto bad = first_invalid_utf8(text)) {
+    fail(
+        fmt::format("the text is not valid UTF-8 (byte 0x{:02x} at offset {}): save the file as "
+                    "UTF-8",
+                    static_cast<unsigned char>(text[*bad]), *bad));
+  }
+  return text;
 }
 
 bool YamlNode::as_bool() const {
@@ -286,6 +329,12 @@ double YamlNode::as_double(Bound bound) const {
   }
   if (!std::isfinite(value))
     fail(fmt::format("expected a finite number, got {}", describe(impl_->node)));
+  if (std::abs(value) > kLargestNumber) {
+    fail(
+        fmt::format("{} is too large: numbers are read up to ±{:g} (SI units), so that their "
+                    "products (m L², k x²) stay finite",
+                    impl_->node.Scalar(), kLargestNumber));
+  }
   if (bound == Bound::kPositive && !(value > 0.0)) {
     fail(fmt::format("must be positive, got {}", impl_->node.Scalar()));
   }

@@ -61,4 +61,9 @@ MeshTopology analyze_topology(const TriangleMesh& mesh);
 /// positive: an inward-facing piece inside an outward one is a cavity.
 bool prepare_solid_mesh(TriangleMesh& mesh, std::string_view name);
 
+/// The centre of the mesh's axis-aligned bounding box (zero for an empty mesh): the origin the
+/// volume sums are taken about, so that round-off does not grow with the mesh's distance from
+/// its own frame's origin.
+Vec3 bounding_box_centre(const TriangleMesh& mesh);
+
 }  // namespace momenta::inertia

@@ -35,8 +35,13 @@
 
 namespace momenta::io {
 
-/// What a number read from a file must satisfy beyond being finite (NaN and ±inf are always
-/// refused).
+/// Largest magnitude of a number read from a file (SI units). Products of three such numbers
+/// (m L², k x², ½ m v²) stay finite in double precision; nothing physical comes near it, and a
+/// 1e308 written by mistake is refused at its line instead of overflowing later.
+inline constexpr double kLargestNumber = 1e100;
+
+/// What a number read from a file must satisfy beyond being finite and within ±kLargestNumber
+/// (NaN and ±inf are always refused).
 enum class Bound {
   kFinite,       ///< Any finite number.
   kNonNegative,  ///< Finite and >= 0.
@@ -106,14 +111,15 @@ class YamlNode {
 
   // --- scalars and small arrays ---------------------------------------------------------------
 
-  /// A scalar as text. Throws unless this node is a scalar.
+  /// A scalar as text. Throws unless this node is a scalar of valid UTF-8 (names end up in JSON
+  /// and in messages).
   std::string as_string() const;
   /// true/false (also yes/no, on/off). Throws otherwise.
   bool as_bool() const;
   /// A whole number. Throws if this is not an integer.
   long long as_integer() const;
   /// A number within `bound`. Throws, showing the text or value, if it is not a number, not
-  /// finite (.nan, .inf) or outside the bound.
+  /// finite (.nan, .inf), larger in magnitude than kLargestNumber, or outside the bound.
   double as_double(Bound bound = Bound::kFinite) const;
   /// A list of exactly three numbers [x, y, z], each within `bound`.
   Vec3 as_vec3(Bound bound = Bound::kFinite) const;
