@@ -57,6 +57,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
+  } catch (const momenta::Interrupted& e) {
+    fmt::print(stderr, "momenta: {}\n", e.what());
+    return 130;
   } catch (const momenta::Error& e) {
     fmt::print(stderr, "momenta: error: {}\n", e.what());
     return 1;

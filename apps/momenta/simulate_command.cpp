@@ -2,7 +2,14 @@
 // with a summary and the conservation audit on stderr. Parses the options, merges them over the
 // file's `simulation:` section and calls momenta::simulate::Simulation. Documented in docs/cli.md.
 
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
 #include <cstdio>
+#include <functional>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -14,6 +21,7 @@
 #include "model_loading.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/io/model_file.hpp"
+#include "momenta/model/integrators.hpp"
 #include "momenta/simulate/csv_writer.hpp"
 #include "momenta/simulate/simulation.hpp"
 #include "momenta/system/integrators.hpp"
@@ -33,11 +41,17 @@ struct SimulateOptions {
   std::optional<long> every;
   bool force = false;
   bool reactions = false;
+  bool quiet = false;
 };
 
 // Adaptive methods without a step given take at most duration / kAdaptiveSteps per step, so the
 // table has at least that many rows.
 constexpr double kAdaptiveSteps = 1000.0;
+
+// Without --every (or `every:` in the file), a fixed-step run records at most this many steps
+// plus the first and the last: a long run at a fine step would otherwise write a row per step
+// (the double pendulum's 100 s at 1 ms: 55 MB). Rows written stay exact states.
+constexpr double kDefaultRows = 10000.0;
 
 // The command line over the file's `simulation:` section over the defaults (docs/cli.md).
 simulate::SimulationOptions merge(const SimulateOptions& o, const model::SimulationSettings& file) {
@@ -45,11 +59,19 @@ simulate::SimulationOptions merge(const SimulateOptions& o, const model::Simulat
   s.duration = o.duration.value_or(file.duration.value_or(s.duration));
   s.tolerances.relative = o.rtol.value_or(file.relative_tolerance.value_or(s.tolerances.relative));
   s.tolerances.absolute = o.atol.value_or(file.absolute_tolerance.value_or(s.tolerances.absolute));
-  // Tolerances without an integrator ask for the adaptive one.
+  // Tolerances without an integrator ask for an adaptive one: on the command line they override
+  // a fixed-step integrator the file names; in the file they choose one when it names none.
   const bool tolerances_given = o.rtol || o.atol;
-  const std::string fallback =
-      tolerances_given || file.relative_tolerance || file.absolute_tolerance ? "dopri5" : "rk4";
-  s.integrator = o.integrator.value_or(file.integrator.value_or(fallback));
+  const bool file_adaptive =
+      file.integrator && model::integrator_info(*file.integrator).adaptive;
+  if (o.integrator) {
+    s.integrator = *o.integrator;
+  } else if (tolerances_given && !file_adaptive) {
+    s.integrator = "dopri5";
+  } else {
+    s.integrator = file.integrator.value_or(
+        file.relative_tolerance || file.absolute_tolerance ? "dopri5" : "rk4");
+  }
   const std::unique_ptr<integrate::Integrator> probe =
       system::make_integrator(s.integrator, s.tolerances);
   if (tolerances_given && !probe->adaptive()) {
@@ -61,13 +83,49 @@ simulate::SimulationOptions merge(const SimulateOptions& o, const model::Simulat
   const double default_step = probe->adaptive() ? s.duration / kAdaptiveSteps : s.step;
   s.step = o.dt.value_or(file.step.value_or(default_step));
   s.every = o.every.value_or(file.every.value_or(s.every));
+  if (!o.every && !file.every && !probe->adaptive()) {
+    const double steps = std::ceil(s.duration / s.step);
+    if (steps > kDefaultRows && steps < 1e18) {
+      s.every = static_cast<long>(std::ceil(steps / kDefaultRows));
+      fmt::print(stderr,
+                 "momenta: recording one row every {} of {:.0f} steps ({} rows); --every 1 records "
+                 "them all\n",
+                 s.every, steps, static_cast<long>(std::ceil(steps / s.every)) + 1);
+    }
+  }
   s.reactions = o.reactions;
   return s;
 }
 
+// SIGINT and SIGTERM end a run on a whole row (the CSV stays readable); a second one kills.
+std::atomic<bool> stop_requested{false};
+extern "C" void request_stop(int signal_number) {
+  stop_requested.store(true);
+  std::signal(signal_number, SIG_DFL);
+}
+
+// A progress line on a terminal: time reached, elapsed, and an estimate of what is left.
+std::function<void(double)> progress_line(double duration) {
+  const auto start = std::chrono::steady_clock::now();
+  auto last = start;
+  return [=](double t) mutable {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last < std::chrono::milliseconds(200)) return;
+    last = now;
+    const double elapsed = std::chrono::duration<double>(now - start).count();
+    const double left = t > 0 ? elapsed * (duration - t) / t : 0.0;
+    fmt::print(stderr, "\r  t = {:.4g} s of {:.4g} s ({:.0f} %), {:.1f} s elapsed, about {:.1f} s "
+               "left   ",
+               t, duration, 100.0 * t / duration, elapsed, left);
+  };
+}
+
 void run(const SimulateOptions& o) {
   const io::ModelFile file = load_model(o.model);
-  const simulate::SimulationOptions options = merge(o, file.simulation);
+  simulate::SimulationOptions options = merge(o, file.simulation);
+  const bool show_progress = !o.quiet && isatty(STDERR_FILENO);
+  options.stop = &stop_requested;
+  if (show_progress) options.progress = progress_line(options.duration);
   // Built before the output is opened: a bad option or output leaves no empty file behind.
   simulate::Simulation simulation(file.model, file.outputs, options);
 
@@ -82,7 +140,20 @@ void run(const SimulateOptions& o) {
     writer = std::make_unique<simulate::CsvWriter>(stdout);
   }
 
-  const simulate::SimulationSummary summary = simulation.run(*writer);
+  stop_requested.store(false);
+  std::signal(SIGINT, request_stop);
+  std::signal(SIGTERM, request_stop);
+  const auto clear_progress = [&] {
+    if (show_progress) fmt::print(stderr, "\r\033[K");
+  };
+  simulate::SimulationSummary summary;
+  try {
+    summary = simulation.run(*writer);
+  } catch (...) {
+    clear_progress();
+    throw;
+  }
+  clear_progress();
   writer.reset();  // closes the file before the summary says it is written
   fmt::print(stderr, "momenta: simulated {} ({}) for {} s; {} rows, {} columns to {}\n", file.name,
              o.model, summary.t_end, summary.rows, simulation.column_names().size(),
@@ -127,6 +198,8 @@ void add_simulate_command(CLI::App& app) {
   command->add_flag("--force", options->force, "Overwrite the --output file if it exists");
   command->add_option("--every", options->every, "Write every N-th step (default 1)")
       ->check(whole_number_from_one());
+  command->add_flag("--quiet,-q", options->quiet,
+                    "No progress line on the terminal (it is shown only when stderr is one)");
   command->add_flag("--reactions", options->reactions,
                     "Add every joint's reaction force and moment (world frame) to each row");
   command->footer(

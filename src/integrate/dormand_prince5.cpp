@@ -47,6 +47,14 @@ DormandPrince5::DormandPrince5(const Tolerances& tolerances) : tolerances_(toler
         fmt::format("dopri5: tolerances must be positive and finite, got rtol = {}, atol = {}",
                     tolerances.relative, tolerances.absolute));
   }
+  if (tolerances.relative < kSmallestRelativeTolerance ||
+      tolerances.absolute < kSmallestAbsoluteTolerance) {
+    throw InvalidArgument(fmt::format(
+        "dopri5: rtol = {:.3g}, atol = {:.3g} ask for more than double precision holds: rtol must "
+        "be at least {:.1e} (100 ε) and atol at least {:.0e}",
+        tolerances.relative, tolerances.absolute, kSmallestRelativeTolerance,
+        kSmallestAbsoluteTolerance));
+  }
 }
 
 void DormandPrince5::initialize(SecondOrderSystem& system, const State& state) {
@@ -100,7 +108,30 @@ double DormandPrince5::initial_step(SecondOrderSystem& system, const State& stat
   const double d2 = rms(v_euler - state.v, a1 - a0) / h0;
   const double dmax = std::max(d1, d2);
   const double h1 = dmax <= 1e-15 ? std::max(1e-6, h0 * 1e-3) : std::pow(0.01 / dmax, 1.0 / 5.0);
-  return std::min(100.0 * h0, h1);
+  const double h = std::min(100.0 * h0, h1);
+  // Scales that overflow (a state of 1e200) leave no estimate: start small and let the error
+  // control grow the step.
+  return std::isfinite(h) && h > 0.0 ? h : 1e-6;
+}
+
+int DormandPrince5::largest_error_index() const {
+  int worst = 0;
+  double largest = -1.0;
+  for (int i = 0; i < static_cast<int>(error_v_.size()); ++i) {
+    const double e = std::max(std::abs(error_delta_[i]), std::abs(error_v_[i]));
+    if (!(e <= largest)) {
+      largest = std::isnan(e) ? std::numeric_limits<double>::infinity() : e;
+      worst = i;
+    }
+  }
+  return worst;
+}
+
+std::string DormandPrince5::largest_error_coordinate(const SecondOrderSystem& system,
+                                                     const State& state) const {
+  if (error_v_.size() == 0) return "no coordinate";
+  const int i = largest_error_index();
+  return fmt::format("{} = {:.9g}", system.coordinate_name(i, true), state.v[i]);
 }
 
 double DormandPrince5::error_norm(const State& start, const VecX& v1) const {
@@ -133,11 +164,14 @@ double DormandPrince5::step(SecondOrderSystem& system, State& state, double h_ma
   const double t_break = system.next_discontinuity(state.t);
   for (;;) {
     const double h = std::min(h_, h_max);
-    if (h < 16.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(state.t))) {
+    // (Written so that a NaN step fails it too.)
+    if (!(h >= 16.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(state.t)))) {
       throw NumericalError(fmt::format(
-          "dopri5: the step size fell to {:.3g} s at t = {:.9g} s; the system may be stiff or "
-          "singular there, or the tolerances (rtol = {}, atol = {}) too tight",
-          h, state.t, tolerances_.relative, tolerances_.absolute));
+          "dopri5: the step size fell to {:.3g} s at t = {:.9g} s, below the resolution of time; "
+          "the largest error is in the rate {}. The system may be stiff or singular there, or "
+          "the tolerances (rtol = {}, atol = {}) too tight",
+          h, state.t, largest_error_coordinate(system, state), tolerances_.relative,
+          tolerances_.absolute));
     }
     // Stages 1..6; stage 0 is the last step's final acceleration.
     system.begin_step(state.t, state.t + h);

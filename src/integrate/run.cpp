@@ -25,6 +25,45 @@ void check_options(const State& state, const RunOptions& options) {
     throw InvalidArgument(
         fmt::format("the output interval must be at least 1 step, got {}", options.every));
   }
+  if (options.t_end + options.h == options.t_end || state.t + options.h == state.t) {
+    throw InvalidArgument(fmt::format(
+        "the step {:.3g} s is below the resolution of time at t = {:.6g} s (double precision "
+        "holds about 16 digits): no step would advance it; take a larger step",
+        options.h, options.t_end));
+  }
+}
+
+// The input discontinuities in (t, t_end): counted when there are at most `limit`, else
+// extrapolated from the rate of the first `limit` of them (a pulse train of tiny period).
+double count_breakpoints(const SecondOrderSystem& system, double t, double t_end, long limit) {
+  long n = 0;
+  double first = t, last = t;
+  for (double b = system.next_discontinuity(t); b < t_end; b = system.next_discontinuity(b)) {
+    if (!(b > last)) break;  // a signal that does not advance: left to the run's own guard
+    if (n == 0) first = b;
+    last = b;
+    if (++n == limit) return n * (t_end - first) / std::max(last - first, 1e-300);
+  }
+  return static_cast<double>(n);
+}
+
+// Refuses a run whose step count is absurd before it starts, with the estimate: the grid steps
+// of a fixed-step method plus one step per input discontinuity (extrapolated from the first
+// ones when there are many: a pulse train of tiny width and period).
+void check_step_budget(const SecondOrderSystem& system, const Integrator& integrator,
+                       const State& state, const RunOptions& options) {
+  const double span = options.t_end - state.t;
+  const double grid_steps = integrator.adaptive() ? 0.0 : std::ceil(span / options.h);
+  const double breakpoints = count_breakpoints(system, state.t, options.t_end, 10000);
+  const double steps = grid_steps + breakpoints;
+  if (steps > kMaxRunSteps) {
+    throw InvalidArgument(fmt::format(
+        "this run would take about {:.3g} steps ({:.3g} of {:.3g} s{}), more than the {:.0e} a run "
+        "may take: shorten the duration, lengthen the step{}",
+        steps, grid_steps, options.h,
+        breakpoints > 0 ? fmt::format(", plus {:.3g} input discontinuities", breakpoints) : "",
+        kMaxRunSteps, breakpoints > grid_steps ? ", or widen the input's pulses" : ""));
+  }
 }
 
 // Throws naming the first non-finite coordinate, what the last step was, and what to try.
@@ -47,6 +86,7 @@ void check_finite(const SecondOrderSystem& system, const Integrator& integrator,
 RunSummary run(SecondOrderSystem& system, Integrator& integrator, State& state,
                const RunOptions& options, const std::function<void(const State&)>& observer) {
   check_options(state, options);
+  check_step_budget(system, integrator, state, options);
   const auto start = std::chrono::steady_clock::now();
   integrator.initialize(system, state);
   observer(state);
@@ -55,12 +95,23 @@ RunSummary run(SecondOrderSystem& system, Integrator& integrator, State& state,
     return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b));
   };
   long k = 0;  // steps taken that end on the output grid (fixed steps) or anywhere (adaptive)
+  long taken = 0;  // every step, those cut short on a discontinuity included
   bool reported = true;
   while (state.t < options.t_end) {
-    // The step ends at the next grid time t0 + (k+1) h for fixed-step methods (times are not
-    // accumulated sums), at most h ahead for adaptive ones, and never past the end or the next
-    // discontinuity of the inputs: a step that straddled one would be first order.
-    const double t_grid = integrator.adaptive() ? state.t + options.h : t0 + (k + 1) * options.h;
+    if (++taken > static_cast<long>(kMaxRunSteps)) {
+      throw NumericalError(fmt::format(
+          "the run took {:.0e} steps by t = {:.9g} s of {:.6g} s and was stopped: the adaptive "
+          "step stays tiny (a stiff or nearly singular model), or the inputs switch that often",
+          kMaxRunSteps, state.t, options.t_end));
+    }
+    // The step ends at the next grid time t0 + n h — for adaptive methods, at most h ahead, on
+    // the grid when it gets there (times are grid values, not accumulated sums) — and never past
+    // the end or the next discontinuity of the inputs: a step that straddled one would be first
+    // order.
+    const double t_grid =
+        integrator.adaptive()
+            ? t0 + (std::floor((state.t - t0) / options.h * (1 + 1e-12)) + 1) * options.h
+            : t0 + (k + 1) * options.h;
     double t_target = std::min(t_grid, options.t_end);
     double t_break = system.next_discontinuity(state.t);
     while (close(t_break, state.t)) t_break = system.next_discontinuity(t_break);

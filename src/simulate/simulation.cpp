@@ -165,6 +165,10 @@ class Simulation::Recorder {
 
   // Called after every step (and with the initial state): audits, and records a row when asked.
   void observe(const integrate::State& state, bool record) {
+    // A stop asked for (SIGINT in the CLI) ends the run on a whole row at this state.
+    const bool stopping = sim_.options_.stop != nullptr && sim_.options_.stop->load();
+    record = record || stopping;
+    if (sim_.options_.progress && (++observed_ & 1023) == 0) sim_.options_.progress(state.t);
     // The recorded copy, with the prescribed joints exactly on their signals.
     q_ = state.q;
     v_ = state.v;
@@ -215,8 +219,32 @@ class Simulation::Recorder {
       row_[c++] = audit_.entry(h_).final_drift;
     }
     if (quaternion_ >= 0) row_[c++] = quaternion_error;
+    check_row_finite(state.t);
     sink_.row(row_);
     ++rows_;
+    if (stopping) {
+      throw Interrupted(fmt::format("stopped at t = {:.9g} s on request", state.t));
+    }
+  }
+
+  // A quantity of the row that overflowed while the state stayed finite (the energy of a spring
+  // of absurd stiffness): nothing non-finite is written as a result.
+  void check_row_finite(double t) const {
+    std::size_t bad = 0;
+    while (bad < row_.size() && std::isfinite(row_[bad])) ++bad;
+    if (bad == row_.size()) return;
+    // The largest coordinate of the state, which the columns after time hold first.
+    const std::size_t n_state = static_cast<std::size_t>(model_.nq() + model_.nv());
+    std::size_t largest = 1;
+    for (std::size_t c = 1; c <= n_state; ++c) {
+      if (std::abs(row_[c]) > std::abs(row_[largest])) largest = c;
+    }
+    throw NumericalError(fmt::format(
+        "the recorded values became non-finite at t = {:.9g} s: {} = {} while the state is "
+        "finite (its largest coordinate {} = {:.3g}). The step may be too large for the fastest "
+        "motion (try a smaller --dt, or --integrator dopri5), or a parameter — a stiffness, a "
+        "mass, a signal's amplitude — is absurd",
+        t, sim_.columns_[bad], row_[bad], sim_.columns_[largest], row_[largest]));
   }
 
   long rows() const { return rows_; }
@@ -234,6 +262,7 @@ class Simulation::Recorder {
   ConservationAudit audit_;
   int energy_ = -1, h_norm_ = -1, h_ = -1, quaternion_ = -1;  // audit entries, −1 if not audited
   long rows_ = 0;
+  long observed_ = 0;
 };
 
 SimulationSummary Simulation::run(RowSink& sink) {
@@ -272,6 +301,10 @@ SimulationSummary Simulation::run(RowSink& sink) {
     sink.flush();
     throw NumericalError(fmt::format("{} ({} row{} up to the failure were written)", e.what(),
                                      recorder.rows(), recorder.rows() == 1 ? "" : "s"));
+  } catch (const Interrupted& e) {
+    sink.flush();
+    throw Interrupted(fmt::format("{}; {} whole row{} written", e.what(), recorder.rows(),
+                                  recorder.rows() == 1 ? "" : "s"));
   } catch (...) {
     sink.flush();
     throw;

@@ -79,6 +79,12 @@ class ParseError : public Error {
   int column_;
 };
 
+/// A run stopped because it was asked to (an interrupt from the user), not because it failed.
+class Interrupted : public Error {
+ public:
+  using Error::Error;
+};
+
 /// A computation produced a non-finite value or failed to converge at run time.
 class NumericalError : public Error {
  public:

@@ -56,6 +56,12 @@ class Integrator {
   IntegratorStatistics statistics_;
 };
 
+/// The tightest tolerances an adaptive method accepts: a relative error below 100 ε cannot be
+/// delivered in double precision (the error estimate is round-off there, and the step shrinks
+/// until time stops advancing); an absolute error below 1e-200 overflows the error's square.
+inline constexpr double kSmallestRelativeTolerance = 100 * 2.220446049250313e-16;
+inline constexpr double kSmallestAbsoluteTolerance = 1e-200;
+
 /// Tolerances of adaptive methods: per-component error scale atol + rtol·|x|.
 struct Tolerances {
   double relative = 1e-8;

@@ -8,6 +8,11 @@
 
 namespace momenta::integrate {
 
+/// The most steps one run may take (grid steps and steps cut short on input discontinuities):
+/// about an hour of a small model, and far beyond any sensible run; more is refused up front when
+/// it can be foreseen (run), stopped with NumericalError when not.
+inline constexpr double kMaxRunSteps = 1e9;
+
 struct RunOptions {
   double t_end = 0.0;  ///< final time, s (> state.t)
   double h = 0.0;      ///< fixed step, or the largest step of an adaptive method, s (> 0)
@@ -25,9 +30,12 @@ struct RunSummary {
 /// times are t0 + k h, not accumulated sums). No step straddles a discontinuity of the system's
 /// inputs (SecondOrderSystem::next_discontinuity): a step is cut short to end on it — for a fixed
 /// step method that extra step is not counted for `every` and not reported — so that the methods
-/// keep their order across a step or a pulse. Throws InvalidArgument for a bad option, and
+/// keep their order across a step or a pulse. Adaptive methods take steps of at most h and end a
+/// step exactly on the grid t0 + n h when they reach it. Throws InvalidArgument for a bad option:
+/// a step below the resolution of time, or a run foreseen to take more than kMaxRunSteps steps
+/// (the grid, plus one per input discontinuity, estimated from the first 10⁴ of them); and
 /// NumericalError naming the time, the first non-finite coordinate and a hint when the state
-/// stops being finite.
+/// stops being finite, or when a run passes kMaxRunSteps steps after all.
 RunSummary run(SecondOrderSystem& system, Integrator& integrator, State& state,
                const RunOptions& options, const std::function<void(const State&)>& observer);
 

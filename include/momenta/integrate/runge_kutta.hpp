@@ -6,6 +6,7 @@
 // (Runge–Kutta–Munthe-Kaas, Munthe-Kaas 1998): quaternions advance by the exponential map, never
 // by adding to the quaternion and renormalizing, and the methods keep their classical order.
 
+#include <string>
 #include <vector>
 
 #include "momenta/integrate/integrator.hpp"
@@ -67,6 +68,9 @@ class DormandPrince5 final : public Integrator {
  private:
   double initial_step(SecondOrderSystem& system, const State& state);
   double error_norm(const State& start, const VecX& v1) const;
+  // The coordinate whose last error estimate is largest, "name = value", for messages.
+  int largest_error_index() const;
+  std::string largest_error_coordinate(const SecondOrderSystem& system, const State& state) const;
 
   Tolerances tolerances_;
   detail::LocalStages stages_;

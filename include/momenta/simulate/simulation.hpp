@@ -31,6 +31,8 @@
 // coordinates' exact values (MultibodySystem::apply_prescribed_motion); the integrator's own
 // state is left as it returned it.
 
+#include <atomic>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -52,6 +54,11 @@ struct SimulationOptions {
   integrate::Tolerances tolerances;  ///< adaptive methods (dopri5) only
   long every = 1;          ///< record every n-th step (≥ 1); the first and last states always
   bool reactions = false;  ///< add every joint's reaction wrench to each row
+  /// When set and it becomes true (a signal handler's flag), the run records the state it has
+  /// reached as a last whole row, flushes the sink and throws Interrupted.
+  const std::atomic<bool>* stop = nullptr;
+  /// Called with the time reached about every 1024 steps (a progress line); none when empty.
+  std::function<void(double t)> progress;
 };
 
 /// Receives the table a run produces, row by row.
@@ -118,8 +125,9 @@ class Simulation {
   /// allocate (the sink aside). May be called again; each call starts afresh.
   ///
   /// Throws NumericalError when the state stops being finite, naming the time, the coordinate
-  /// and a hint (integrate::run), with how many rows were written — after flushing the sink so
-  /// the rows up to then are kept; and what the integrator throws (a rigid-body method on a model
+  /// and a hint (integrate::run), or when a recorded quantity overflows (naming the column), with
+  /// how many rows were written — after flushing the sink so the rows up to then are kept;
+  /// Interrupted when options().stop is raised, after a last whole row; and what the integrator throws (a rigid-body method on a model
   /// it does not apply to).
   SimulationSummary run(RowSink& sink);
 
