@@ -22,8 +22,9 @@ analysis::OperatingPoint read_state_file(const std::string& path, const model::M
   json j;
   try {
     j = json::parse(in);
-  } catch (const json::parse_error& e) {
-    throw InvalidArgument(fmt::format("{}: not valid JSON: {}", path, e.what()));
+  } catch (const json::exception& e) {
+    // Malformed text, or a number beyond double precision ("t": 1e400).
+    throw InvalidArgument(fmt::format("{}: not a valid state file: {}", path, e.what()));
   }
   if (!j.is_object()) {
     throw InvalidArgument(

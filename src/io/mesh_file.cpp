@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 #include <assimp/Importer.hpp>
 
+#include "mesh_text_formats.hpp"
 #include "momenta/common/error.hpp"
 
 namespace momenta::io {
@@ -163,34 +164,47 @@ inertia::TriangleMesh read_mesh_file(const std::filesystem::path& path, double s
                                  path.extension().string()));
   }
 
-  // Import with triangulation only: no vertex joining, normal generation, degenerate removal or
-  // any other step that would change the geometry behind our back. Coordinates arrive as floats.
-  Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(name, aiProcess_Triangulate);
-  if (scene == nullptr || scene->mRootNode == nullptr) {
-    throw ParseError(
-        name, 0, 0,
-        fmt::format("cannot read the {} file: {}", format == Format::kObj ? "OBJ" : "STL",
-                    importer.GetErrorString()));
-  }
-
-  // Merge every mesh of the scene, in world coordinates (node transforms applied), scaled.
+  // Text formats by their own grammars, in double precision; binary STL (single precision by the
+  // format itself) through assimp, with triangulation only: no vertex joining, normal generation,
+  // degenerate removal or any other step that would change the geometry behind our back.
   TriangleMesh soup;
-  std::size_t vertices = 0, faces = 0;
-  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
-    vertices += scene->mMeshes[m]->mNumVertices;
-    faces += scene->mMeshes[m]->mNumFaces;
-  }
-  soup.vertices.reserve(vertices);
-  soup.triangles.reserve(faces);
   std::size_t skipped = 0;
-  collect(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), scale, soup, skipped);
-  importer.FreeScene();  // Free the float copy before welding.
+  if (format == Format::kObj || format == Format::kAsciiStl) {
+    const std::string text = read_bytes(path, 0, static_cast<std::size_t>(size));
+    soup = format == Format::kObj ? detail::parse_obj(text, name, skipped)
+                                  : detail::parse_ascii_stl(text, name);
+    for (Vec3& p : soup.vertices) p *= scale;
+  } else {
+    Assimp::Importer importer;
+    const aiScene* scene = importer.ReadFile(name, aiProcess_Triangulate);
+    if (scene == nullptr || scene->mRootNode == nullptr) {
+      throw ParseError(name, 0, 0,
+                       fmt::format("cannot read the STL file: {}", importer.GetErrorString()));
+    }
+    // Merge every mesh of the scene, in world coordinates (node transforms applied), scaled.
+    std::size_t vertices = 0, faces = 0;
+    for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+      vertices += scene->mMeshes[m]->mNumVertices;
+      faces += scene->mMeshes[m]->mNumFaces;
+    }
+    soup.vertices.reserve(vertices);
+    soup.triangles.reserve(faces);
+    collect(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), scale, soup, skipped);
+  }
   if (soup.triangles.empty()) {
     throw ParseError(name, 0, 0,
                      skipped > 0
                          ? fmt::format("file holds {} points or lines but no triangles", skipped)
                          : std::string("file holds no triangles"));
+  }
+  // Coordinates that overflow once scaled (or a binary STL's NaN): named with the file.
+  for (std::size_t v = 0; v < soup.vertices.size(); ++v) {
+    const Vec3& p = soup.vertices[v];
+    if (!p.allFinite()) {
+      throw ParseError(name, 0, 0,
+                       fmt::format("vertex {} ({}, {}, {}) is not finite{}", v, p.x(), p.y(),
+                                   p.z(), scale != 1.0 ? fmt::format(" (scaled by {})", scale) : ""));
+    }
   }
 
   // Weld exact repeats (STL stores each triangle's corners apart) so the topology can be checked.
