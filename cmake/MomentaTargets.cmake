@@ -11,6 +11,12 @@ function(momenta_configure_target target)
                                              -fno-sanitize-recover=all)
     target_link_options(${target} PRIVATE -fsanitize=address,undefined)
   endif()
+  if(MOMENTA_FUZZ)
+    # Coverage for libFuzzer in every library; the harnesses link the fuzzer's main.
+    target_compile_options(${target} PRIVATE -fsanitize=fuzzer-no-link,address,undefined
+                                             -fno-omit-frame-pointer -fno-sanitize-recover=all)
+    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+  endif()
 endfunction()
 
 # One translation unit per target (MOMENTA_UNITY_BUILD): Eigen's solvers and fmt are parsed and

@@ -12,6 +12,8 @@ packages=(
 )
 # Optional: the side-by-side benchmarks against MuJoCo (MOMENTA_BENCH_MUJOCO=ON).
 if [[ "${MOMENTA_WITH_MUJOCO:-0}" == 1 ]]; then packages+=(libmujoco-dev); fi
+# Optional: the libFuzzer harnesses (scripts/fuzz.sh): clang and its sanitizer runtimes.
+if [[ "${MOMENTA_WITH_FUZZ:-0}" == 1 ]]; then packages+=(clang libclang-rt-14-dev); fi
 
 missing=()
 for p in "${packages[@]}"; do

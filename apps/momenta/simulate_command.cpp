@@ -9,8 +9,8 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
-#include <functional>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -62,8 +62,7 @@ simulate::SimulationOptions merge(const SimulateOptions& o, const model::Simulat
   // Tolerances without an integrator ask for an adaptive one: on the command line they override
   // a fixed-step integrator the file names; in the file they choose one when it names none.
   const bool tolerances_given = o.rtol || o.atol;
-  const bool file_adaptive =
-      file.integrator && model::integrator_info(*file.integrator).adaptive;
+  const bool file_adaptive = file.integrator && model::integrator_info(*file.integrator).adaptive;
   if (o.integrator) {
     s.integrator = *o.integrator;
   } else if (tolerances_given && !file_adaptive) {
@@ -114,7 +113,8 @@ std::function<void(double)> progress_line(double duration) {
     last = now;
     const double elapsed = std::chrono::duration<double>(now - start).count();
     const double left = t > 0 ? elapsed * (duration - t) / t : 0.0;
-    fmt::print(stderr, "\r  t = {:.4g} s of {:.4g} s ({:.0f} %), {:.1f} s elapsed, about {:.1f} s "
+    fmt::print(stderr,
+               "\r  t = {:.4g} s of {:.4g} s ({:.0f} %), {:.1f} s elapsed, about {:.1f} s "
                "left   ",
                t, duration, 100.0 * t / duration, elapsed, left);
   };

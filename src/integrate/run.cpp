@@ -94,7 +94,7 @@ RunSummary run(SecondOrderSystem& system, Integrator& integrator, State& state,
   const auto close = [&](double a, double b) {
     return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b));
   };
-  long k = 0;  // steps taken that end on the output grid (fixed steps) or anywhere (adaptive)
+  long k = 0;      // steps taken that end on the output grid (fixed steps) or anywhere (adaptive)
   long taken = 0;  // every step, those cut short on a discontinuity included
   bool reported = true;
   while (state.t < options.t_end) {

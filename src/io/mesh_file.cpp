@@ -202,8 +202,8 @@ inertia::TriangleMesh read_mesh_file(const std::filesystem::path& path, double s
     const Vec3& p = soup.vertices[v];
     if (!p.allFinite()) {
       throw ParseError(name, 0, 0,
-                       fmt::format("vertex {} ({}, {}, {}) is not finite{}", v, p.x(), p.y(),
-                                   p.z(), scale != 1.0 ? fmt::format(" (scaled by {})", scale) : ""));
+                       fmt::format("vertex {} ({}, {}, {}) is not finite{}", v, p.x(), p.y(), p.z(),
+                                   scale != 1.0 ? fmt::format(" (scaled by {})", scale) : ""));
     }
   }
 

@@ -96,8 +96,8 @@ std::int32_t vertex_index(std::string_view ref, std::size_t count, const Tokens&
   const long long n = static_cast<long long>(count);
   const long long index = i > 0 ? i - 1 : n + i;  // negative: counted back from the last vertex
   if (i == 0 || index < 0 || index >= n) {
-    tokens.fail(fmt::format("face refers to vertex {}, but {} vertices are defined before it", i,
-                            count));
+    tokens.fail(
+        fmt::format("face refers to vertex {}, but {} vertices are defined before it", i, count));
   }
   return static_cast<std::int32_t>(index);
 }
@@ -170,7 +170,8 @@ TriangleMesh parse_obj(std::string_view text, const std::string& file, std::size
       if (count < 3) tokens.fail(fmt::format("a vertex needs x y z, got {} numbers", count));
       if (count == 4 && xyzw[3] == 0.0) tokens.fail("a vertex with w = 0 lies at infinity");
       const double w = count == 4 ? xyzw[3] : 1.0;
-      if (mesh.vertices.size() >= static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+      if (mesh.vertices.size() >=
+          static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
         tokens.fail("more vertices than 32-bit indices hold");
       mesh.vertices.emplace_back(xyzw[0] / w, xyzw[1] / w, xyzw[2] / w);
     } else if (keyword == "f") {
@@ -197,7 +198,8 @@ TriangleMesh parse_ascii_stl(std::string_view text, const std::string& file) {
   const auto expect = [&](std::string_view word) {
     const std::string_view t = tokens.next();
     if (t != word) {
-      tokens.fail(fmt::format("expected '{}', got '{}'", word, t.empty() ? "the end of the file" : t));
+      tokens.fail(
+          fmt::format("expected '{}', got '{}'", word, t.empty() ? "the end of the file" : t));
     }
   };
   std::string_view t = tokens.next();
@@ -212,7 +214,8 @@ TriangleMesh parse_ascii_stl(std::string_view text, const std::string& file) {
       t = tokens.next();
       if (t.empty()) break;
       closed = false;
-      if (t != "solid") tokens.fail(fmt::format("expected 'solid' or the end of the file, got '{}'", t));
+      if (t != "solid")
+        tokens.fail(fmt::format("expected 'solid' or the end of the file, got '{}'", t));
       tokens.next_line();
       continue;
     }

@@ -17,7 +17,8 @@ namespace momenta::io::detail {
 /// skipped; `skipped` counts the lines and points. Throws ParseError `file:line:column: ...` for
 /// a malformed number, a reference to a vertex that does not exist, or a face of fewer than three
 /// vertices.
-inertia::TriangleMesh parse_obj(std::string_view text, const std::string& file, std::size_t& skipped);
+inertia::TriangleMesh parse_obj(std::string_view text, const std::string& file,
+                                std::size_t& skipped);
 
 /// The triangles of an ASCII STL text (one or more `solid ... endsolid`), each facet's three
 /// vertices as written (not welded). Throws ParseError `file:line:column: ...` for anything that

@@ -209,10 +209,10 @@ void YamlNode::check_keys(std::span<const std::string_view> allowed) const {
   expect_map();
   std::vector<std::string_view> seen;
   for (const auto& entry : impl_->node) {
-    const auto [line, column] = position_of(entry.first.Mark());
+    const auto position = position_of(entry.first.Mark());
     const auto at_key = [&](const std::string& message) {
       return ParseError(
-          *impl_->file, line, column,
+          *impl_->file, position.first, position.second,
           impl_->path.empty() ? message : fmt::format("{}: {}", impl_->path, message));
     };
     if (!entry.first.IsScalar()) {

@@ -19,6 +19,9 @@ template <class... Ts>
 struct Overloaded : Ts... {
   using Ts::operator()...;
 };
+// (Spelled out for clang 14, which has no aggregate deduction.)
+template <class... Ts>
+Overloaded(Ts...) -> Overloaded<Ts...>;
 
 void require(bool ok, const std::string& name, const std::string& what) {
   if (!ok) throw InvalidArgument(fmt::format("signal '{}': {}", name, what));

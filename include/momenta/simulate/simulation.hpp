@@ -127,8 +127,8 @@ class Simulation {
   /// Throws NumericalError when the state stops being finite, naming the time, the coordinate
   /// and a hint (integrate::run), or when a recorded quantity overflows (naming the column), with
   /// how many rows were written — after flushing the sink so the rows up to then are kept;
-  /// Interrupted when options().stop is raised, after a last whole row; and what the integrator throws (a rigid-body method on a model
-  /// it does not apply to).
+  /// Interrupted when options().stop is raised, after a last whole row; and what the integrator
+  /// throws (a rigid-body method on a model it does not apply to).
   SimulationSummary run(RowSink& sink);
 
  private:

@@ -195,12 +195,13 @@ TEST_F(MeshFile, TextFormatsKeepEveryDigit) {
   tetra.vertices = {Vec3(0.1234567, 0.2345678, 0.3456789), Vec3(1.9876543, 0.1111111, 0.2222222),
                     Vec3(0.3333333, 1.4444444, 0.5555555), Vec3(0.6666666, 0.7777777, 1.8888888)};
   tetra.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
-  const TriangleMesh body = test::moved(test::uv_ellipsoid(Vec3(0.3, 0.2, 0.1), 12, 24),
-                                        rotation_from_axis_angle(Vec3(1, 2, 3), 0.7),
-                                        Vec3(0.1, -0.2, 0.3));
+  const TriangleMesh body =
+      test::moved(test::uv_ellipsoid(Vec3(0.3, 0.2, 0.1), 12, 24),
+                  rotation_from_axis_angle(Vec3(1, 2, 3), 0.7), Vec3(0.1, -0.2, 0.3));
   for (const TriangleMesh* mesh : {static_cast<const TriangleMesh*>(&tetra), &body}) {
     std::string obj, stl = "solid exact\n";
-    for (const Vec3& p : mesh->vertices) obj += fmt::format("v {:.17g} {:.17g} {:.17g}\n", p.x(), p.y(), p.z());
+    for (const Vec3& p : mesh->vertices)
+      obj += fmt::format("v {:.17g} {:.17g} {:.17g}\n", p.x(), p.y(), p.z());
     for (const auto& t : mesh->triangles) {
       obj += fmt::format("f {} {} {}\n", t[0] + 1, t[1] + 1, t[2] + 1);
       stl += "facet normal 0 0 0\nouter loop\n";
@@ -231,7 +232,8 @@ TEST_F(MeshFile, TextFormatsKeepEveryDigit) {
   for (int k = 0; k < 3; ++k) edges.col(k) = tetra.vertices[k + 1] - tetra.vertices[0];
   const TriangleMesh tetra_read = [&] {
     std::string obj;
-    for (const Vec3& p : tetra.vertices) obj += fmt::format("v {:.7f} {:.7f} {:.7f}\n", p.x(), p.y(), p.z());
+    for (const Vec3& p : tetra.vertices)
+      obj += fmt::format("v {:.7f} {:.7f} {:.7f}\n", p.x(), p.y(), p.z());
     obj += "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
     write_text(file("tetra7.obj"), obj);
     return read_mesh_file(file("tetra7.obj"));
@@ -248,8 +250,8 @@ TEST_F(MeshFile, ConcavePolygonFacesAreEarClipped) {
   write_text(file("l.obj"),
              "v 0 0 0\nv 2 0 0\nv 2 1 0\nv 1 1 0\nv 1 2 0\nv 0 2 0\n"
              "v 0 0 1\nv 2 0 1\nv 2 1 1\nv 1 1 1\nv 1 2 1\nv 0 2 1\n"
-             "f 4 3 2 1 6 5\n"          // bottom, outward −z, starting at the reflex corner
-             "f 7 8 9 10 11 12\n"      // top, +z
+             "f 4 3 2 1 6 5\n"     // bottom, outward −z, starting at the reflex corner
+             "f 7 8 9 10 11 12\n"  // top, +z
              "f 1 2 8 7\nf 2 3 9 8\nf 3 4 10 9\nf 4 5 11 10\nf 5 6 12 11\nf 6 1 7 12\n");
   TriangleMesh read = read_mesh_file(file("l.obj"));
   EXPECT_EQ(read.triangles.size(), 4u + 4u + 12u);
@@ -271,15 +273,18 @@ TEST_F(MeshFile, TextFileErrorsNameTheLineAndColumn) {
   e = error("two.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n");
   EXPECT_TRUE(contains(e, "two.obj:3:")) << e;
   EXPECT_TRUE(contains(e, "at least 3 vertices")) << e;
-  e = error("nan.stl", "solid a\nfacet normal 0 0 0\nouter loop\nvertex 0 0 nan\nvertex 1 0 0\n"
-                       "vertex 0 1 0\nendloop\nendfacet\nendsolid\n");
+  e = error("nan.stl",
+            "solid a\nfacet normal 0 0 0\nouter loop\nvertex 0 0 nan\nvertex 1 0 0\n"
+            "vertex 0 1 0\nendloop\nendfacet\nendsolid\n");
   EXPECT_TRUE(contains(e, "nan.stl:4:12: the coordinate 'nan' is not a finite double")) << e;
-  e = error("word.stl", "solid a\nfacet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
-                        "endloop\nendfacet\nendsolid\n");
+  e = error("word.stl",
+            "solid a\nfacet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+            "endloop\nendfacet\nendsolid\n");
   EXPECT_TRUE(contains(e, "word.stl:6:1: expected 'vertex', got 'endloop'")) << e;
   // Negative references count back from the last vertex.
-  write_text(file("neg.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf -4 -2 -3\nf -4 -3 -1\n"
-                              "f -3 -2 -1\nf -4 -1 -2\n");
+  write_text(file("neg.obj"),
+             "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf -4 -2 -3\nf -4 -3 -1\n"
+             "f -3 -2 -1\nf -4 -1 -2\n");
   TriangleMesh tetra = read_mesh_file(file("neg.obj"));
   EXPECT_FALSE(inertia::prepare_solid_mesh(tetra, "neg.obj"));
   EXPECT_NEAR(inertia::solid_mesh_mass_properties(tetra, Amount::density(1)).volume(), 1.0 / 6,

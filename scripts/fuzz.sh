@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses of momenta's file readers with clang (AddressSanitizer +
+# UndefinedBehaviorSanitizer) and runs each one.
+#
+# Usage: scripts/fuzz.sh [SECONDS]        each harness for SECONDS (default 60), then exits
+#        MOMENTA_FUZZ_RUNS=1000000 scripts/fuzz.sh   each harness for that many executions
+#
+# Each harness first replays tests/fuzz/regressions/<harness>/ (inputs that once crashed: they
+# must not again), then fuzzes a corpus seeded from examples/ and tests/fuzz/corpus/<harness>/.
+# Any crash, hang (> 10 s on one input), leak or sanitizer report fails the script; the input
+# that caused it is left in build-fuzz/artifacts/ — add it to tests/fuzz/regressions/<harness>/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-60}
+MOMENTA_WITH_FUZZ=1 scripts/bootstrap.sh
+CXX=clang++ scripts/build.sh build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DMOMENTA_FUZZ=ON \
+  -DMOMENTA_BUILD_TESTS=OFF -DMOMENTA_BUILD_BENCHMARKS=OFF -DMOMENTA_BUILD_APPS=OFF \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1"
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+mkdir -p build-fuzz/artifacts
+seed() {  # harness, then the example files that seed it
+  local harness=$1; shift
+  local corpus=build-fuzz/corpus/$harness
+  mkdir -p "$corpus"
+  for f in "$@" tests/fuzz/corpus/"$harness"/*; do [[ -f $f ]] && cp -f "$f" "$corpus/" || true; done
+  echo "$corpus"
+}
+declare -A corpora=(
+  [model_file]="$(seed model_file examples/*.yaml tests/data/models/*.yaml)"
+  [part_file]="$(seed part_file examples/parts/*.yaml)"
+  [stl]="$(seed stl examples/parts/meshes/*.stl)"
+  [obj]="$(seed obj examples/parts/meshes/*.obj)"
+)
+for harness in model_file part_file stl obj; do
+  binary=build-fuzz/tests/fuzz/${harness}_fuzz
+  regressions=tests/fuzz/regressions/$harness
+  if compgen -G "$regressions/*" >/dev/null; then
+    echo "== $harness: replaying $regressions"
+    "$binary" "$regressions"/* 2>&1 | tail -n 2
+  fi
+  limit=(-max_total_time="$seconds")
+  [[ -n "${MOMENTA_FUZZ_RUNS:-}" ]] && limit=(-runs="$MOMENTA_FUZZ_RUNS")
+  echo "== $harness: fuzzing ${limit[*]}"
+  "$binary" "${corpora[$harness]}" "${limit[@]}" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
+    -artifact_prefix=build-fuzz/artifacts/"$harness"- -print_final_stats=1 2>&1 |
+    grep -E "^(#[0-9]+.*DONE|stat::number_of_executed_units|stat::average_exec_per_sec|==[0-9]+==ERROR|SUMMARY)" || true
+  # libFuzzer exits non-zero on a finding; pipefail carries it here.
+done
+echo "fuzz: all harnesses clean"

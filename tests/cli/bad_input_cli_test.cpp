@@ -1,0 +1,246 @@
+// The command line under bad input, as found by a bad-input battery and a mutation fuzzer: every
+// case ends in a one-line message and exit 1 (user error) or 2 (usage error) — never a hang, an
+// internal error, a non-finite number printed as a result, or a user's file overwritten — and a
+// run stopped by the user leaves whole rows.
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+#include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cli_runner.hpp"
+#include "momenta_test/tolerance.hpp"
+
+namespace momenta {
+namespace {
+
+namespace fs = std::filesystem;
+using test::CliRun;
+using test::quoted;
+using test::slurp;
+
+std::string example(const std::string& name) { return test::source_dir() + "/examples/" + name; }
+
+bool has(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+int lines(const std::string& text) {
+  int n = 0;
+  for (char c : text) n += c == '\n';
+  return n;
+}
+
+class BadInputCli : public test::CliTest {
+ protected:
+  fs::path write(const std::string& name, const std::string& text) const {
+    const fs::path path = dir_ / name;
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+};
+
+TEST_F(BadInputCli, VersionAndAMistypedCommand) {
+  const CliRun version = momenta("--version");
+  EXPECT_EQ(version.code, 0);
+  EXPECT_EQ(version.out.rfind("momenta 0.", 0), 0u) << version.out;
+  const CliRun typo = momenta("simulat " + quoted(example("pendulum.yaml")));
+  EXPECT_EQ(typo.code, 2);
+  EXPECT_TRUE(has(typo.err, "unknown command 'simulat' (did you mean 'simulate'?)")) << typo.err;
+}
+
+// Out-of-range values: a usage error with the value named, not CLI11's 309-digit bound.
+TEST_F(BadInputCli, OptionValuesOutOfRangeAreUsageErrorsInOneShortLine) {
+  const std::string pendulum = quoted(example("pendulum.yaml"));
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"simulate " + pendulum + " --every 1e400", "--every: must be a whole number"},
+      {"simulate " + pendulum + " --duration 1e400", "--duration: must be a positive finite"},
+      {"simulate " + pendulum + " --dt nan", "--dt: must be a positive finite number, got nan"},
+      {"inertia " + quoted(example("parts/flywheel.yaml")) + " --about nan 0 0",
+       "--about: must be a finite number, got nan"},
+      {"response " + quoted(example("cruise_control.yaml")) +
+           " --input u --output speed --bode 1 inf",
+       "--bode: must be a positive finite number, got inf"},
+      {"simulate " + pendulum + " -o " + quoted(dir_.string()), "is a folder"},
+  };
+  for (const auto& [args, message] : cases) {
+    const CliRun r = momenta(args);
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+    EXPECT_TRUE(has(r.err, message)) << args << "\n" << r.err;
+    EXPECT_LT(r.err.size(), 300u) << r.err;
+  }
+}
+
+TEST_F(BadInputCli, ResponseCsvIsNeverOverwrittenWithoutForce) {
+  const fs::path csv = write("bode.csv", "keep me\n");
+  const std::string args = "response " + quoted(example("cruise_control.yaml")) +
+                           " --input u --output speed --step --csv " + quoted(csv.string());
+  const CliRun refused = momenta(args);
+  EXPECT_EQ(refused.code, 1);
+  EXPECT_TRUE(has(refused.err, "--force")) << refused.err;
+  EXPECT_EQ(slurp(csv), "keep me\n");
+  EXPECT_EQ(momenta(args + " --force").code, 0);
+  EXPECT_EQ(slurp(csv).rfind("time,", 0), 0u);
+}
+
+// What used to run forever: each is refused up front, with the estimate or the reason.
+TEST_F(BadInputCli, RunsThatWouldNotEndAreRefusedUpFront) {
+  const std::string pendulum = quoted(example("pendulum.yaml"));
+  std::string text = slurp(example("pendulum.yaml"));
+  const CliRun tiny_step = momenta("simulate " + pendulum + " --dt 1e-300");
+  EXPECT_EQ(tiny_step.code, 1);
+  EXPECT_TRUE(has(tiny_step.err, "below the resolution of time")) << tiny_step.err;
+  const CliRun denormal = momenta("simulate " + pendulum + " --dt 4.9e-324");
+  EXPECT_EQ(denormal.code, 1) << denormal.err;
+  const CliRun endless = momenta("simulate " + pendulum + " --duration 1e300 --every 1000000000");
+  EXPECT_EQ(endless.code, 1);
+  EXPECT_TRUE(has(endless.err, "resolution of time")) << endless.err;
+  const CliRun long_run = momenta("simulate " + pendulum + " --duration 1e7 --dt 1e-3");
+  EXPECT_EQ(long_run.code, 1);
+  EXPECT_TRUE(has(long_run.err, "would take about 1e+10 steps")) << long_run.err;
+  const CliRun tight = momenta("simulate " + pendulum + " --rtol 1e-300 --atol 1e-300");
+  EXPECT_EQ(tight.code, 1);
+  EXPECT_TRUE(has(tight.err, "rtol must be at least 2.2e-14")) << tight.err;
+  // A pulse train 1e-12 s wide every 1e-9 s: 2e10 discontinuities, each ending a step.
+  std::string satellite = slurp(example("satellite_attitude.yaml"));
+  const std::string width = "    width: 1.0           # s";
+  ASSERT_NE(satellite.find(width), std::string::npos);
+  satellite.replace(satellite.find(width), width.size(), "    width: 1e-12\n    period: 1e-9");
+  const CliRun pulses = momenta("simulate " + quoted(write("pulses.yaml", satellite).string()));
+  EXPECT_EQ(pulses.code, 1);
+  EXPECT_TRUE(has(pulses.err, "input discontinuities")) << pulses.err;
+  EXPECT_TRUE(has(pulses.err, "widen the input's pulses")) << pulses.err;
+}
+
+// Numbers whose products overflow, and text that is not UTF-8, are refused at their line.
+TEST_F(BadInputCli, HugeNumbersAndInvalidUtf8AreRefusedAtTheirLine) {
+  const fs::path stiff = write("stiff.yaml", R"(bodies:
+  - {name: slider, mass: 1}
+joints:
+  - {name: rail, type: prismatic, parent: world, child: slider, axis: [1, 0, 0], q0: [0.1]}
+forces:
+  - {name: spring, type: spring_damper, body_a: world, body_b: slider, stiffness: 1e308}
+)");
+  CliRun r = momenta("simulate " + quoted(stiff.string()));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "stiff.yaml:6:")) << r.err;
+  EXPECT_TRUE(has(r.err, "1e308 is too large")) << r.err;
+  const fs::path inertia = write("inertia.yaml", R"(bodies:
+  - {name: b, mass: 1, inertia: [1, 1, 1e308]}
+joints:
+  - {name: f, type: free, parent: world, child: b}
+)");
+  r = momenta("info " + quoted(inertia.string()));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "inertia.yaml:2:")) << r.err;
+  const fs::path part = write("part.yaml",
+                              "parts:\n  - {shape: sphere, radius: 0.1, mass: 1, "
+                              "position: [1e308, 0, 0]}\n");
+  r = momenta("inertia " + quoted(part.string()));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "part.yaml:2:")) << r.err;
+  const fs::path utf8 = write("utf8.yaml",
+                              "bodies:\n  - {name: \"b\xff\", mass: 1}\njoints:\n"
+                              "  - {name: f, type: free, parent: world, child: b}\n");
+  for (const char* command : {"info --json", "simulate"}) {
+    r = momenta(std::string(command) + " " + quoted(utf8.string()));
+    EXPECT_EQ(r.code, 1) << command;
+    EXPECT_TRUE(has(r.err, "utf8.yaml:2:")) << r.err;
+    EXPECT_TRUE(has(r.err, "not valid UTF-8")) << r.err;
+    EXPECT_FALSE(has(r.err, "internal error")) << r.err;
+  }
+}
+
+TEST_F(BadInputCli, StateAndMeshFileErrorsAreUserErrorsNamingTheFile) {
+  const fs::path state = write("state.json", R"({"t": 1e400, "q": [0.1], "v": [0]})");
+  CliRun r = momenta("linearize " + quoted(example("pendulum.yaml")) + " --about " +
+                     quoted(state.string()));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "state.json: not a valid state file")) << r.err;
+  EXPECT_FALSE(has(r.err, "internal error")) << r.err;
+  const fs::path stl = write("nan.stl",
+                             "solid a\nfacet normal 0 0 0\nouter loop\nvertex 0 0 nan\n"
+                             "vertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid\n");
+  r = momenta("inertia " + quoted(stl.string()));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "nan.stl:4:12:")) << r.err;
+  const fs::path obj = write("words.obj", "v x y z\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  r = momenta("inertia " + quoted(obj.string()));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "words.obj:1:3: expected a number, got 'x'")) << r.err;
+}
+
+// A long run records at most 10 001 rows unless asked, and says so; rows stay exact states.
+TEST_F(BadInputCli, LongRunsRecordASensibleNumberOfRows) {
+  const CliRun r = momenta("simulate " + quoted(example("double_pendulum.yaml")) +
+                           " --duration 100 -o " + quoted((dir_ / "dp.csv").string()));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(has(r.err, "recording one row every 20 of 200000 steps (10001 rows)")) << r.err;
+  EXPECT_EQ(lines(slurp(dir_ / "dp.csv")), 10002);  // header + rows
+}
+
+// --rtol without --integrator asks for the adaptive method even when the file names rk4; its
+// rows land on the grid of the largest step, t = n h exactly.
+TEST_F(BadInputCli, ToleranceChoosesDopri5AndRowsLandOnTheGrid) {
+  std::string text = slurp(example("pendulum.yaml"));
+  ASSERT_TRUE(has(text, "integrator: rk4")) << text;
+  const CliRun r = momenta("simulate " + quoted(example("pendulum.yaml")) +
+                           " --rtol 1e-9 --duration 5 --dt 0.01");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(has(r.err, "dopri5")) << r.err;
+  std::istringstream in(r.out);
+  std::string line;
+  std::getline(in, line);
+  // Early steps are shorter than h (the error control starts small); a step that reaches a grid
+  // time ends exactly on it.
+  int on_grid = 0;
+  double last = 0;
+  while (std::getline(in, line)) {
+    last = std::stod(line.substr(0, line.find(',')));
+    const double n = std::round(last / 0.01);
+    if (std::abs(last - n * 0.01) < 1e-9) {
+      EXPECT_EQ(last, n * 0.01) << "row at " << last;
+      ++on_grid;
+    }
+  }
+  EXPECT_EQ(on_grid, 501);
+  EXPECT_EQ(last, 5.0);
+}
+
+// SIGINT or SIGTERM ends the run on a whole row: every line of the CSV has every column; exit
+// 130. (SIGTERM here: a shell's background job ignores SIGINT until the program takes it.)
+TEST_F(BadInputCli, InterruptLeavesWholeRows) {
+  const fs::path csv = dir_ / "long.csv", err = dir_ / "err.txt";
+  const std::string command =
+      quoted(MOMENTA_CLI_PATH) + " simulate " + quoted(example("double_pendulum.yaml")) +
+      " --duration 100000 --every 1 -q -o " + quoted(csv.string()) + " 2>" + quoted(err.string()) +
+      " & pid=$!; sleep 1; kill -TERM $pid; wait $pid; exit $?";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130) << slurp(err);
+  EXPECT_TRUE(has(slurp(err), "whole rows written")) << slurp(err);
+  const std::string text = slurp(csv);
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  const auto columns = std::count(line.begin(), line.end(), ',');
+  int rows = 0;
+  while (std::getline(in, line)) {
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), columns) << "row " << rows;
+    ++rows;
+  }
+  EXPECT_GT(rows, 10);
+  ASSERT_FALSE(text.empty());
+  EXPECT_EQ(text.back(), '\n');
+}
+
+}  // namespace
+}  // namespace momenta
