@@ -1,5 +1,7 @@
 #include "momenta/dynamics/aba.hpp"
 
+#include "argument_checks.hpp"
+
 #include <cmath>
 
 #include "joint_kernels.hpp"
@@ -120,6 +122,10 @@ void accelerate(Data& data, int j, int v_index, Vec6& a, int n = N) {
 
 const VecX& aba(const Model& model, Data& data, const VecX& q, const VecX& v, const VecX& tau,
                 std::span<const Vec6> f_ext) {
+  detail::check_data_and_q("aba", model, data, q);
+  detail::check_nv("aba", "v", model, v);
+  detail::check_nv("aba", "tau", model, tau);
+  detail::check_f_ext("aba", model, f_ext);
   const auto& joints = model.joint_constants();
   const int nj = static_cast<int>(joints.size());
   const bool has_fext = !f_ext.empty();

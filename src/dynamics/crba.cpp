@@ -1,5 +1,7 @@
 #include "momenta/dynamics/crba.hpp"
 
+#include "argument_checks.hpp"
+
 #include <cmath>
 #include <vector>
 
@@ -46,6 +48,7 @@ void mirror_upper(MatX& M) {
 // and motion subspaces S in W, M(λ, i) = S_λᵀ (I_c,i S_i) for every ancestor λ of joint i.
 // In W each entry is one 6-D dot product (no per-ancestor transform).
 const MatX& crba(const Model& model, Data& data, const VecX& q) {
+  detail::check_data_and_q("crba", model, data, q);
   const auto& joints = model.joint_constants();
   const int nj = static_cast<int>(joints.size());
 

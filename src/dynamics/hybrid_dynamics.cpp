@@ -1,5 +1,7 @@
 #include "momenta/dynamics/hybrid_dynamics.hpp"
 
+#include "argument_checks.hpp"
+
 #include <Eigen/Cholesky>
 
 #include "joint_kernels.hpp"
@@ -18,6 +20,13 @@ using VecN = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
 const VecX& hybrid_dynamics(const Model& model, Data& data, const std::vector<char>& prescribed,
                             const VecX& q, const VecX& v, const VecX& vdot_in, const VecX& tau_in,
                             std::span<const Vec6> f_ext) {
+  detail::check_data_and_q("hybrid_dynamics", model, data, q);
+  detail::check_nv("hybrid_dynamics", "v", model, v);
+  detail::check_nv("hybrid_dynamics", "vdot", model, vdot_in);
+  detail::check_nv("hybrid_dynamics", "tau", model, tau_in);
+  detail::check_size("hybrid_dynamics", "prescribed", static_cast<long>(prescribed.size()),
+                     model.num_joints(), "one flag per joint");
+  detail::check_f_ext("hybrid_dynamics", model, f_ext);
   const auto& joints = model.joint_constants();
   const int nj = static_cast<int>(joints.size());
   const bool has_fext = !f_ext.empty();

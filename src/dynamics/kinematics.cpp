@@ -1,10 +1,13 @@
 #include "momenta/dynamics/kinematics.hpp"
 
+#include "argument_checks.hpp"
+
 #include "joint_kernels.hpp"
 
 namespace momenta::dynamics {
 
 void forward_kinematics(const Model& model, Data& data, const VecX& q) {
+  detail::check_data_and_q("forward_kinematics", model, data, q);
   const auto& joints = model.joint_constants();
   for (std::size_t j = 0; j < joints.size(); ++j) {
     const auto& c = joints[j];
@@ -14,6 +17,8 @@ void forward_kinematics(const Model& model, Data& data, const VecX& q) {
 }
 
 void forward_kinematics(const Model& model, Data& data, const VecX& q, const VecX& v) {
+  detail::check_data_and_q("forward_kinematics", model, data, q);
+  detail::check_nv("forward_kinematics", "v", model, v);
   const auto& joints = model.joint_constants();
   for (std::size_t j = 0; j < joints.size(); ++j) {
     const auto& c = joints[j];
@@ -31,6 +36,7 @@ void forward_kinematics(const Model& model, Data& data, const VecX& q, const Vec
 
 void forward_kinematics(const Model& model, Data& data, const VecX& q, const VecX& v,
                         const VecX& vdot) {
+  detail::check_nv("forward_kinematics", "vdot", model, vdot);
   forward_kinematics(model, data, q, v);
   const auto& joints = model.joint_constants();
   for (std::size_t j = 0; j < joints.size(); ++j) {

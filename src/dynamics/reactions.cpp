@@ -1,5 +1,7 @@
 #include "momenta/dynamics/reactions.hpp"
 
+#include "argument_checks.hpp"
+
 #include <fmt/format.h>
 
 #include "momenta/common/error.hpp"
@@ -9,6 +11,10 @@ namespace momenta::dynamics {
 
 void joint_reactions(const Model& model, Data& data, const VecX& q, const VecX& v, const VecX& vdot,
                      std::span<const Vec6> f_ext) {
+  detail::check_data_and_q("joint_reactions", model, data, q);
+  detail::check_nv("joint_reactions", "v", model, v);
+  detail::check_nv("joint_reactions", "vdot", model, vdot);
+  detail::check_f_ext("joint_reactions", model, f_ext);
   // The backward pass of RNEA leaves in F_B the wrench each joint transmits to its subtree
   // (Newton–Euler of the subtree: Σ of I a + v ×* I v − f_ext over it).
   rnea(model, data, q, v, vdot, f_ext);

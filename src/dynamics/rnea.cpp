@@ -1,5 +1,7 @@
 #include "momenta/dynamics/rnea.hpp"
 
+#include "argument_checks.hpp"
+
 #include "joint_kernels.hpp"
 #include "scalar_kernels.hpp"
 
@@ -7,6 +9,10 @@ namespace momenta::dynamics {
 
 const VecX& rnea(const Model& model, Data& data, const VecX& q, const VecX& v, const VecX& vdot,
                  std::span<const Vec6> f_ext) {
+  detail::check_data_and_q("rnea", model, data, q);
+  detail::check_nv("rnea", "v", model, v);
+  detail::check_nv("rnea", "vdot", model, vdot);
+  detail::check_f_ext("rnea", model, f_ext);
   const auto& joints = model.joint_constants();
   const int nj = static_cast<int>(joints.size());
   // Gravity enters as a fictitious upward acceleration of the base (Featherstone 2008, §5.3).

@@ -8,6 +8,11 @@
 //
 // Which algorithm sets which field is listed with each field. Fields not listed for an
 // algorithm are left untouched by it.
+//
+// Every algorithm checks its arguments at the door, always: q of size nq, v, vdot and tau of
+// size nv, f_ext empty or one wrench per body, and a Data built for a model of this size; a
+// mismatch throws InvalidArgument naming the algorithm, the argument and both sizes
+// ("aba: q has size 3; the model needs 7 (nq)").
 
 #include <utility>
 #include <vector>

@@ -14,8 +14,9 @@ namespace momenta::dynamics {
 
 /// τ = M(q) v̇ + C(q, v) v + g(q) − Σ J_bᵀ f_ext[b]: the generalized forces (size nv) that
 /// produce accelerations v̇ at (q, v) under gravity. Writes data.tau (and data.F_B, the wrench
-/// each joint transmits) and returns data.tau. Sizes q nq, v and vdot nv; not checked (use
-/// check_state_sizes). No allocation.
+/// each joint transmits) and returns data.tau. Sizes q nq, v and vdot nv, f_ext empty or one
+/// per body, data built for the model: checked, InvalidArgument naming the argument otherwise
+/// (as in every dynamics algorithm). No allocation.
 const VecX& rnea(const Model& model, Data& data, const VecX& q, const VecX& v, const VecX& vdot,
                  std::span<const Vec6> f_ext = {});
 
