@@ -10,12 +10,13 @@ namespace momenta::io {
 /// Reads a triangle mesh from an STL (binary or ASCII) or OBJ file and multiplies every coordinate
 /// by `scale` (0.001 for a mesh drawn in mm). OBJ and ASCII STL are read by their own grammars in
 /// double precision (mesh_text_formats.hpp): coordinates written with 17 digits arrive exactly.
-/// Binary STL, single precision by the format, is read through assimp. Every mesh in the file is merged,
-/// moved by its node transforms (a mirroring transform has its triangles' winding reversed so
-/// outward stays outward); polygons are triangulated; points and lines are ignored. Nothing else
+/// Binary STL, single precision by the format, is read through assimp. Every mesh in the file is
+/// merged, moved by its node transforms (a mirroring transform has its triangles' winding reversed
+/// so outward stays outward); polygons are triangulated; points and lines are ignored. Nothing else
 /// alters the geometry: vertices exactly repeated (STL stores each triangle's corners apart) are
 /// welded so the topology can be checked, no normals are generated, no triangle is dropped but
-/// those whose corners coincide. Call inertia::prepare_solid_mesh on the result before solid integration.
+/// those whose corners coincide. Call inertia::prepare_solid_mesh on the result before solid
+/// integration.
 ///
 /// Throws InvalidArgument if `scale` is not positive and finite; FileError naming the file if it
 /// is missing, not a regular file, unreadable or empty; ParseError naming the file if the
