@@ -13,20 +13,6 @@ std::string locate(const std::string& file, int line, int column, const std::str
 
 }  // namespace
 
-std::string_view model_item_kind_name(ModelItemRef::Kind kind) {
-  switch (kind) {
-    case ModelItemRef::Kind::body:
-      return "body";
-    case ModelItemRef::Kind::joint:
-      return "joint";
-    case ModelItemRef::Kind::force_element:
-      return "force element";
-    case ModelItemRef::Kind::signal:
-      return "signal";
-  }
-  return "";
-}
-
 ParseError::ParseError(std::string file, int line, int column, const std::string& message)
     : Error(locate(file, line, column, message)),
       file_(std::move(file)),

@@ -114,24 +114,19 @@ double DormandPrince5::initial_step(SecondOrderSystem& system, const State& stat
   return std::isfinite(h) && h > 0.0 ? h : 1e-6;
 }
 
-int DormandPrince5::largest_error_index() const {
+std::string DormandPrince5::largest_error_coordinate(const SecondOrderSystem& system,
+                                                     const State& state) const {
+  if (error_v_.size() == 0) return "no coordinate";
   int worst = 0;
   double largest = -1.0;
   for (int i = 0; i < static_cast<int>(error_v_.size()); ++i) {
     const double e = std::max(std::abs(error_delta_[i]), std::abs(error_v_[i]));
-    if (!(e <= largest)) {
+    if (!(e <= largest)) {  // a NaN error counts as the largest
       largest = std::isnan(e) ? std::numeric_limits<double>::infinity() : e;
       worst = i;
     }
   }
-  return worst;
-}
-
-std::string DormandPrince5::largest_error_coordinate(const SecondOrderSystem& system,
-                                                     const State& state) const {
-  if (error_v_.size() == 0) return "no coordinate";
-  const int i = largest_error_index();
-  return fmt::format("{} = {:.9g}", system.coordinate_name(i, true), state.v[i]);
+  return fmt::format("{} = {:.9g}", system.coordinate_name(worst, true), state.v[worst]);
 }
 
 double DormandPrince5::error_norm(const State& start, const VecX& v1) const {

@@ -119,38 +119,36 @@ model::SimulationSettings read_simulation(const YamlNode& root) {
   return s;
 }
 
+// The declarations of one kind of item.
+const detail::Declared& declared_of(ModelItemRef::Kind kind, const Context& ctx) {
+  switch (kind) {
+    case ModelItemRef::Kind::body:
+      return ctx.bodies;
+    case ModelItemRef::Kind::joint:
+      return ctx.joints;
+    case ModelItemRef::Kind::force_element:
+      return ctx.forces;
+    case ModelItemRef::Kind::signal:
+      break;
+  }
+  return ctx.signals;
+}
+
 // The node that declares the item an error is about, if the file declares it.
 std::optional<YamlNode> declaring_node(const Error& error, const Context& ctx) {
   if (!error.item()) return std::nullopt;
-  const detail::Declared* declared = nullptr;
-  switch (error.item()->kind) {
-    case ModelItemRef::Kind::body:
-      declared = &ctx.bodies;
-      break;
-    case ModelItemRef::Kind::joint:
-      declared = &ctx.joints;
-      break;
-    case ModelItemRef::Kind::force_element:
-      declared = &ctx.forces;
-      break;
-    case ModelItemRef::Kind::signal:
-      declared = &ctx.signals;
-      break;
-  }
-  return declared->find(error.item()->name);
+  return declared_of(error.item()->kind, ctx).find(error.item()->name);
 }
 
 // Where the file declares each body, joint, force element and signal.
 std::vector<ItemLocation> item_locations(const Context& ctx) {
   std::vector<ItemLocation> locations;
-  const std::array<std::pair<ModelItemRef::Kind, const detail::Declared*>, 4> kinds = {
-      {{ModelItemRef::Kind::body, &ctx.bodies},
-       {ModelItemRef::Kind::joint, &ctx.joints},
-       {ModelItemRef::Kind::force_element, &ctx.forces},
-       {ModelItemRef::Kind::signal, &ctx.signals}}};
-  for (const auto& [kind, declared] : kinds) {
-    for (const std::string& name : declared->names()) {
-      const YamlNode node = *declared->find(name);
+  for (const ModelItemRef::Kind kind :
+       {ModelItemRef::Kind::body, ModelItemRef::Kind::joint, ModelItemRef::Kind::force_element,
+        ModelItemRef::Kind::signal}) {
+    const detail::Declared& declared = declared_of(kind, ctx);
+    for (const std::string& name : declared.names()) {
+      const YamlNode node = *declared.find(name);
       locations.push_back({{kind, name}, node.line(), node.column()});
     }
   }

@@ -5,7 +5,6 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
-#include <string_view>
 
 namespace momenta {
 
@@ -16,9 +15,6 @@ struct ModelItemRef {
   Kind kind;
   std::string name;
 };
-
-/// "body", "joint", "force element", "signal".
-std::string_view model_item_kind_name(ModelItemRef::Kind kind);
 
 /// Base of every exception momenta throws.
 class Error : public std::runtime_error {

@@ -69,7 +69,6 @@ class DormandPrince5 final : public Integrator {
   double initial_step(SecondOrderSystem& system, const State& state);
   double error_norm(const State& start, const VecX& v1) const;
   // The coordinate whose last error estimate is largest, "name = value", for messages.
-  int largest_error_index() const;
   std::string largest_error_coordinate(const SecondOrderSystem& system, const State& state) const;
 
   Tolerances tolerances_;

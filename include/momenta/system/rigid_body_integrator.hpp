@@ -37,7 +37,6 @@
 // Statistics: `steps` counts steps; `evaluations` (calls of SecondOrderSystem::acceleration)
 // stays 0 — the flows are closed-form and the gravity torque is evaluated in place.
 
-#include <limits>
 #include <memory>
 #include <optional>
 #include <string_view>
