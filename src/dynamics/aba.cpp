@@ -4,8 +4,7 @@
 
 #include <cmath>
 
-#include "joint_kernels.hpp"
-#include "scalar_kernels.hpp"
+#include "forward_pass.hpp"
 #include "spatial_inertia_ops.hpp"
 
 namespace momenta::dynamics {
@@ -135,40 +134,18 @@ const VecX& aba(const Model& model, Data& data, const VecX& q, const VecX& v, co
   for (int j = 0; j < nj; ++j) {
     const auto& c = joints[j];
     const int i = c.child;
-    const int p = c.parent;
-    const double* qj = q.data() + c.q_index;
-    const double* vj = v.data() + c.v_index;
-    Transform& X = data.X_PB[i];
-    detail::joint_position(c, qj, X, data.S[j]);
-    double* V = data.V_WB_B[i].data();
-    double* cB = data.c_B[i].data();
-    if (p == 0) {
-      for (int r = 0; r < 6; ++r) V[r] = 0.0;
-    } else {
-      detail::motion_inverse(X, data.V_WB_B[p].data(), V);
-    }
-    for (int r = 0; r < 6; ++r) cB[r] = 0.0;
-    if (c.S_basis >= 0) {
-      // c = (V_λ + S v̄) × S v̄ = V_λ × S v̄, with V_λ in the child frame.
-      detail::add_cross_motion_basis(V, c.S_basis, vj[0], cB);
-      V[c.S_basis] += vj[0];
-    } else {
-      const Vec6 vJ = detail::joint_velocity(c, data.S[j], vj);
-      detail::add_cross_motion(V, vJ.data(), cB);
-      for (int r = 0; r < 6; ++r) V[r] += vJ[r];
-      Vec6 cJ;
-      if (detail::joint_bias(c, qj, vj, cJ)) data.c_B[i] += cJ;
-    }
+    detail::velocity_step(c, j, q.data(), v.data(), data);
     const SpatialInertia& I = model.spatial_inertia(i);
     detail::set_inertia_matrix(I, data.IA[i]);
+    const double* V = data.V_WB_B[i].data();
     double IV[6];
-    detail::inertia_times(I, V, IV);
-    double* pA = data.pA[i].data();
-    for (int r = 0; r < 6; ++r) pA[r] = 0.0;
-    detail::add_cross_force(V, IV, pA);
+    double pA[6] = {0, 0, 0, 0, 0, 0};
+    kernel::inertia_times(I.mass, I.h, I.I_O, V, IV);
+    kernel::add_cross_force(V, IV, pA);
     if (has_fext) {
       for (int r = 0; r < 6; ++r) pA[r] -= f_ext[i][r];
     }
+    for (int r = 0; r < 6; ++r) data.pA[i][r] = pA[r];
   }
 
   // Pass 2 (leaves to root): articulated inertias and bias forces.
@@ -206,7 +183,7 @@ const VecX& aba(const Model& model, Data& data, const VecX& q, const VecX& v, co
         for (int r = 0; r < 6; ++r) pa[r] += IA(r, col) * cB[col];
       }
       detail::add_transformed_inertia(data.X_PB[i], IA, data.IA[p]);
-      detail::add_force(data.X_PB[i], pa, data.pA[p].data());
+      kernel::add_force(data.X_PB[i].R, data.X_PB[i].p, pa, data.pA[p].data());
       continue;
     }
     Vec6 pa = pA;
@@ -242,7 +219,8 @@ const VecX& aba(const Model& model, Data& data, const VecX& q, const VecX& v, co
     const int i = c.child;
     const int p = c.parent;
     Vec6& a = data.A_gf[i];
-    detail::motion_inverse(data.X_PB[i], p == 0 ? a_base.data() : data.A_gf[p].data(), a.data());
+    kernel::motion_inverse(data.X_PB[i].R, data.X_PB[i].p,
+                           p == 0 ? a_base.data() : data.A_gf[p].data(), a.data());
     for (int r = 0; r < 6; ++r) a[r] += data.c_B[i][r];
     if (c.nv == 1) {
       const double* U = data.U[j].data();

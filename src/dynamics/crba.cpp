@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "joint_kernels.hpp"
+#include "forward_pass.hpp"
 #include "momenta/common/error.hpp"
 
 namespace momenta::dynamics {
@@ -56,7 +56,7 @@ const MatX& crba(const Model& model, Data& data, const VecX& q) {
   for (int j = 0; j < nj; ++j) {
     const auto& c = joints[j];
     const int i = c.child;
-    detail::joint_position(c, q.data() + c.q_index, data.X_PB[i], data.S[j]);
+    detail::position_step(c, j, q.data(), data);
     data.X_WB[i] = data.X_WB[c.parent] * data.X_PB[i];
     for (int k = 0; k < c.nv; ++k) {
       data.S_W.row(c.v_index + k) = data.X_WB[i].act_motion(data.S[j].col(k)).transpose();

@@ -4,7 +4,7 @@
 
 #include <Eigen/Cholesky>
 
-#include "joint_kernels.hpp"
+#include "forward_pass.hpp"
 #include "spatial_inertia_ops.hpp"
 
 namespace momenta::dynamics {
@@ -35,18 +35,10 @@ const VecX& hybrid_dynamics(const Model& model, Data& data, const std::vector<ch
   for (int j = 0; j < nj; ++j) {
     const auto& c = joints[j];
     const int i = c.child;
-    const int p = c.parent;
-    const double* qj = q.data() + c.q_index;
-    const double* vj = v.data() + c.v_index;
-    detail::joint_position(c, qj, data.X_PB[i], data.S[j]);
-    const Vec6 vJ = detail::joint_velocity(c, data.S[j], vj);
-    Vec6& V = data.V_WB_B[i];
-    V = (p == 0 ? Vec6::Zero().eval() : data.X_PB[i].act_motion_inverse(data.V_WB_B[p])) + vJ;
-    data.c_B[i] = cross_motion(V, vJ);
-    Vec6 cJ;
-    if (detail::joint_bias(c, qj, vj, cJ)) data.c_B[i] += cJ;
+    detail::velocity_step(c, j, q.data(), v.data(), data);
     const SpatialInertia& I = model.spatial_inertia(i);
     detail::set_inertia_matrix(I, data.IA[i]);
+    const Vec6& V = data.V_WB_B[i];
     data.pA[i] = cross_force(V, I * V);
     if (has_fext) data.pA[i] -= f_ext[i];
   }

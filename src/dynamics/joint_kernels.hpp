@@ -36,19 +36,28 @@ inline Mat3 quaternion_matrix(const double* wxyz) {
   return Quat(wxyz[0], wxyz[1], wxyz[2], wxyz[3]).normalized().toRotationMatrix();
 }
 
-// X_PB(q) = X_PJ · X_JJ'(q) · X_JC, and the motion subspace in C for the joints where it
-// depends on q (universal, planar, free). Constant subspaces are set by Data's constructor.
-inline void joint_position(const JointConstants& c, const double* q, Transform& X_PB, Mat6& S) {
+// X_PB(q) = X_PJ · X_JJ'(q) · X_JC for any joint, and the motion subspace in C where it depends
+// on q (universal, planar, free; constant subspaces are set by Data's constructor).
+inline void joint_position_general(const JointConstants& c, const double* q, Transform& X_PB,
+                                   Mat6& S);
+
+// joint_position_general with the commonest case inline: a revolute joint about a coordinate
+// axis of the child frame, whose origin is on the axis (two columns of X_PJ's rotation mix).
+[[gnu::always_inline]] inline void joint_position(const JointConstants& c, const double* q,
+                                                  Transform& X_PB, Mat6& S) {
+  if (c.type == JointType::revolute && c.child_at_joint && c.S_basis >= 0) {
+    multiply_basis_rotation(c.X_PJ.R, c.S_basis, std::cos(q[0]), std::sin(q[0]), X_PB.R);
+    X_PB.p = c.X_PJ.p;
+    return;
+  }
+  joint_position_general(c, q, X_PB, S);
+}
+
+inline void joint_position_general(const JointConstants& c, const double* q, Transform& X_PB,
+                                   Mat6& S) {
   switch (c.type) {
     case JointType::revolute: {
-      const double cq = std::cos(q[0]);
-      const double sq = std::sin(q[0]);
-      if (c.child_at_joint && c.S_basis >= 0) {
-        multiply_basis_rotation(c.X_PJ.R, c.S_basis, cq, sq, X_PB.R);
-        X_PB.p = c.X_PJ.p;
-        return;
-      }
-      const Mat3 R_PJ2 = c.X_PJ.R * axis_rotation(c.axis, cq, sq);
+      const Mat3 R_PJ2 = c.X_PJ.R * axis_rotation(c.axis, std::cos(q[0]), std::sin(q[0]));
       X_PB.R = R_PJ2 * c.X_JC.R;
       X_PB.p = c.X_PJ.p + R_PJ2 * c.X_JC.p;
       return;

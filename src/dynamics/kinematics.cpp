@@ -2,7 +2,7 @@
 
 #include "argument_checks.hpp"
 
-#include "joint_kernels.hpp"
+#include "forward_pass.hpp"
 
 namespace momenta::dynamics {
 
@@ -11,7 +11,7 @@ void forward_kinematics(const Model& model, Data& data, const VecX& q) {
   const auto& joints = model.joint_constants();
   for (std::size_t j = 0; j < joints.size(); ++j) {
     const auto& c = joints[j];
-    detail::joint_position(c, q.data() + c.q_index, data.X_PB[c.child], data.S[j]);
+    detail::position_step(c, static_cast<int>(j), q.data(), data);
     data.X_WB[c.child] = data.X_WB[c.parent] * data.X_PB[c.child];
   }
 }
@@ -22,15 +22,8 @@ void forward_kinematics(const Model& model, Data& data, const VecX& q, const Vec
   const auto& joints = model.joint_constants();
   for (std::size_t j = 0; j < joints.size(); ++j) {
     const auto& c = joints[j];
-    const int i = c.child;
-    detail::joint_position(c, q.data() + c.q_index, data.X_PB[i], data.S[j]);
-    data.X_WB[i] = data.X_WB[c.parent] * data.X_PB[i];
-    // V_i = ⁱX_λ V_λ + S v̄;  c_i = V_i × S v̄ + Ṡ v̄ (Featherstone 2008, Table 7.1).
-    const Vec6 vJ = detail::joint_velocity(c, data.S[j], v.data() + c.v_index);
-    data.V_WB_B[i] = data.X_PB[i].act_motion_inverse(data.V_WB_B[c.parent]) + vJ;
-    data.c_B[i] = cross_motion(data.V_WB_B[i], vJ);
-    Vec6 cJ;
-    if (detail::joint_bias(c, q.data() + c.q_index, v.data() + c.v_index, cJ)) data.c_B[i] += cJ;
+    detail::velocity_step(c, static_cast<int>(j), q.data(), v.data(), data);
+    data.X_WB[c.child] = data.X_WB[c.parent] * data.X_PB[c.child];
   }
 }
 

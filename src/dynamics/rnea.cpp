@@ -2,8 +2,7 @@
 
 #include "argument_checks.hpp"
 
-#include "joint_kernels.hpp"
-#include "scalar_kernels.hpp"
+#include "forward_pass.hpp"
 
 namespace momenta::dynamics {
 
@@ -19,64 +18,60 @@ const VecX& rnea(const Model& model, Data& data, const VecX& q, const VecX& v, c
   const Vec6 a_base = spatial(Vec3::Zero(), -model.gravity());
   const bool has_fext = !f_ext.empty();
 
-  // Forward pass: velocities, accelerations and the net force each body needs:
-  // V_i = ⁱX_λ V_λ + S v̄,  A_i = ⁱX_λ A_λ + S v̇ + V_i × S v̄ + Ṡ v̄,
-  // F_i = I_i A_i + V_i ×* I_i V_i − f_ext,i.
+  // Forward pass: velocities (the shared kinematics step), accelerations and the net force
+  // each body needs: A_i = ⁱX_λ A_λ + S v̇ + c_i,  F_i = I_i A_i + V_i ×* I_i V_i − f_ext,i.
+  data.A_gf[0] = a_base;
   for (int j = 0; j < nj; ++j) {
     const auto& c = joints[j];
     const int i = c.child;
-    const int p = c.parent;
-    const double* qj = q.data() + c.q_index;
-    const double* vj = v.data() + c.v_index;
-    Transform& X = data.X_PB[i];
-    detail::joint_position(c, qj, X, data.S[j]);
-    double* V = data.V_WB_B[i].data();
-    double* A = data.A_gf[i].data();
-    if (p == 0) {
-      for (int r = 0; r < 6; ++r) V[r] = 0.0;
-      detail::motion_inverse(X, a_base.data(), A);
-    } else {
-      detail::motion_inverse(X, data.V_WB_B[p].data(), V);
-      detail::motion_inverse(X, data.A_gf[p].data(), A);
-    }
+    detail::velocity_step(c, j, q.data(), v.data(), data);
+    const double* V = data.V_WB_B[i].data();
+    const double* cB = data.c_B[i].data();
+    const Transform& X = data.X_PB[i];
+    double A[6];
+    kernel::motion_inverse(X.R, X.p, data.A_gf[c.parent].data(), A);
+    for (int r = 0; r < 6; ++r) A[r] += cB[r];
     if (c.S_basis >= 0) {
-      // V ×m (S v̄) before adding S v̄ to V: (V_λ + S v̄) × S v̄ = V_λ × S v̄.
-      detail::add_cross_motion_basis(V, c.S_basis, vj[0], A);
-      V[c.S_basis] += vj[0];
-      A[c.S_basis] += vdot[c.v_index];
+      kernel::add_basis(c.S_basis, vdot[c.v_index], A);
     } else {
-      const Vec6 vJ = detail::joint_velocity(c, data.S[j], vj);
-      detail::add_cross_motion(V, vJ.data(), A);
-      for (int r = 0; r < 6; ++r) V[r] += vJ[r];
       const Vec6 aJ = detail::joint_velocity(c, data.S[j], vdot.data() + c.v_index);
       for (int r = 0; r < 6; ++r) A[r] += aJ[r];
-      Vec6 cJ;
-      if (detail::joint_bias(c, qj, vj, cJ)) {
-        for (int r = 0; r < 6; ++r) A[r] += cJ[r];
-      }
     }
     const SpatialInertia& I = model.spatial_inertia(i);
-    double IV[6];
-    double* F = data.F_B[i].data();
-    detail::inertia_times(I, V, IV);
-    detail::inertia_times(I, A, F);
-    detail::add_cross_force(V, IV, F);
+    double IV[6], F[6];
+    kernel::inertia_times(I.mass, I.h, I.I_O, V, IV);
+    kernel::inertia_times(I.mass, I.h, I.I_O, A, F);
+    kernel::add_cross_force(V, IV, F);
     if (has_fext) {
       for (int r = 0; r < 6; ++r) F[r] -= f_ext[i][r];
     }
+    for (int r = 0; r < 6; ++r) {
+      data.A_gf[i][r] = A[r];
+      data.F_B[i][r] = F[r];
+    }
   }
 
-  // Backward pass: project onto the joint axes and pass the rest to the parent.
+  // Backward pass: project onto the joint axes and pass the rest to the parent. The force a
+  // body passes to its parent stays in `carried` while the next joint processed is the parent's
+  // own (always so along a chain), so it is not stored and reloaded at once.
+  double carried[6] = {0, 0, 0, 0, 0, 0};
+  int carried_to = 0;
   for (int j = nj - 1; j >= 0; --j) {
     const auto& c = joints[j];
     const int i = c.child;
-    const double* F = data.F_B[i].data();
+    if (carried_to != i && carried_to != 0) {
+      for (int r = 0; r < 6; ++r) data.F_B[carried_to][r] += carried[r];
+    }
+    double F[6];
+    for (int r = 0; r < 6; ++r) F[r] = data.F_B[i][r] + (carried_to == i ? carried[r] : 0.0);
+    for (int r = 0; r < 6; ++r) data.F_B[i][r] = F[r];
     if (c.S_basis >= 0) {
       data.tau[c.v_index] = F[c.S_basis];
     } else {
       for (int k = 0; k < c.nv; ++k) data.tau[c.v_index + k] = data.S[j].col(k).dot(data.F_B[i]);
     }
-    if (c.parent != 0) detail::add_force(data.X_PB[i], F, data.F_B[c.parent].data());
+    carried_to = c.parent;
+    kernel::force(data.X_PB[i].R, data.X_PB[i].p, F, carried);
   }
   return data.tau;
 }

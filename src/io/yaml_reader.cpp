@@ -81,6 +81,48 @@ std::string_view kind_of(const YAML::Node& node) {
   }
 }
 
+// Whether the quoted scalar opening at `start` (a ' or ") closes before the end of the text.
+// YAML lets a quoted scalar run over several lines; yaml-cpp also takes one that never closes,
+// swallowing the rest of the file, so the reader checks.
+bool quote_closes(std::string_view text, std::size_t start) {
+  const char quote = text[start];
+  for (std::size_t i = start + 1; i < text.size(); ++i) {
+    if (quote == '"' && text[i] == '\\') {
+      ++i;  // an escaped character, possibly a quote
+    } else if (text[i] == quote) {
+      if (quote == '\'' && i + 1 < text.size() && text[i + 1] == '\'') {
+        ++i;  // '' is a single quote inside a single-quoted scalar
+      } else {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+// The mark of the first quoted scalar under `node` (keys included) that never closes.
+std::optional<YAML::Mark> unterminated_quote(const YAML::Node& node, std::string_view text) {
+  if (node.IsScalar()) {
+    const YAML::Mark mark = node.Mark();
+    const auto pos = static_cast<std::size_t>(mark.pos);
+    const bool quoted = node.Tag() == "!" && mark.pos >= 0 && pos < text.size() &&
+                        (text[pos] == '"' || text[pos] == '\'');
+    if (quoted && !quote_closes(text, pos)) return mark;
+    return std::nullopt;
+  }
+  if (node.IsSequence()) {
+    for (const auto& item : node) {
+      if (auto mark = unterminated_quote(item, text)) return mark;
+    }
+  } else if (node.IsMap()) {
+    for (const auto& entry : node) {
+      if (auto mark = unterminated_quote(entry.first, text)) return mark;
+      if (auto mark = unterminated_quote(entry.second, text)) return mark;
+    }
+  }
+  return std::nullopt;
+}
+
 std::string join_quoted(std::span<const std::string_view> words) {
   std::string out;
   for (std::size_t i = 0; i < words.size(); ++i) {
@@ -115,6 +157,13 @@ YamlNode YamlNode::load_string(const std::string& text, const std::string& file_
   }
   if (!root.IsDefined() || root.IsNull()) {
     throw ParseError(file_name, 0, 0, "the file holds no YAML document (it is empty)");
+  }
+  if (const auto mark = unterminated_quote(root, text)) {
+    const auto [line, column] = position_of(*mark);
+    throw ParseError(file_name, line, column,
+                     fmt::format("malformed YAML: this quoted string has no closing {} (it runs "
+                                 "to the end of the file)",
+                                 text[static_cast<std::size_t>(mark->pos)]));
   }
   const auto [line, column] = position_of(root.Mark());
   return make(Impl{root, std::move(file), "", line, column});

@@ -12,9 +12,11 @@
 //   ᴬX_B  = [ R      0 ]      ᴬX_B* = [ R   [p]×R ]
 //           [ [p]×R  R ]              [ 0     R   ]
 //
-// Everything here is inline: these are the inner-loop operations of the dynamics algorithms.
+// Everything here is inline. The arithmetic of every action, cross product and inertia product
+// is written once, in math/spatial_kernels.hpp; these are its Eigen-typed forms.
 
 #include "momenta/math/rotation.hpp"
+#include "momenta/math/spatial_kernels.hpp"
 #include "momenta/math/types.hpp"
 
 namespace momenta {
@@ -29,30 +31,10 @@ inline auto linear(const Vec6& x) { return x.tail<3>(); }
 /// Stacks [a; b] into a spatial vector.
 inline Vec6 spatial(const Vec3& a, const Vec3& b) {
   Vec6 x;
-  x << a, b;
+  x.head<3>() = a;
+  x.tail<3>() = b;
   return x;
 }
-
-namespace spatial_detail {
-// Element-wise 3-vector kernels. Written out in scalars so that chains of them stay in registers
-// (Eigen's mix of packet and scalar code on 3-vectors stalls on store forwarding).
-inline void mul(const Mat3& R, double x, double y, double z, double* out) {
-  out[0] = R(0, 0) * x + R(0, 1) * y + R(0, 2) * z;
-  out[1] = R(1, 0) * x + R(1, 1) * y + R(1, 2) * z;
-  out[2] = R(2, 0) * x + R(2, 1) * y + R(2, 2) * z;
-}
-inline void mul_transpose(const Mat3& R, double x, double y, double z, double* out) {
-  out[0] = R(0, 0) * x + R(1, 0) * y + R(2, 0) * z;
-  out[1] = R(0, 1) * x + R(1, 1) * y + R(2, 1) * z;
-  out[2] = R(0, 2) * x + R(1, 2) * y + R(2, 2) * z;
-}
-// out = a × b.
-inline void cross(double ax, double ay, double az, double bx, double by, double bz, double* out) {
-  out[0] = ay * bz - az * by;
-  out[1] = az * bx - ax * bz;
-  out[2] = ax * by - ay * bx;
-}
-}  // namespace spatial_detail
 
 /// Rigid transform X_AB: the pose of frame B in frame A, R = R_AB, p = p_AoBo_A (m).
 struct Transform {
@@ -82,46 +64,26 @@ struct Transform {
 
   /// Motion vector expressed in B (about Bo) → expressed in A (about Ao): ᴬX_B m.
   Vec6 act_motion(const Vec6& m_B) const {
-    using namespace spatial_detail;
     Vec6 out;
-    double w[3], v[3], pxw[3];
-    mul(R, m_B[0], m_B[1], m_B[2], w);
-    mul(R, m_B[3], m_B[4], m_B[5], v);
-    cross(p[0], p[1], p[2], w[0], w[1], w[2], pxw);
-    out << w[0], w[1], w[2], v[0] + pxw[0], v[1] + pxw[1], v[2] + pxw[2];
+    kernel::motion(R, p, m_B.data(), out.data());
     return out;
   }
   /// Motion vector expressed in A (about Ao) → expressed in B (about Bo): ᴮX_A m.
   Vec6 act_motion_inverse(const Vec6& m_A) const {
-    using namespace spatial_detail;
     Vec6 out;
-    double w[3], v[3], pxw[3];
-    cross(p[0], p[1], p[2], m_A[0], m_A[1], m_A[2], pxw);
-    mul_transpose(R, m_A[0], m_A[1], m_A[2], w);
-    mul_transpose(R, m_A[3] - pxw[0], m_A[4] - pxw[1], m_A[5] - pxw[2], v);
-    out << w[0], w[1], w[2], v[0], v[1], v[2];
+    kernel::motion_inverse(R, p, m_A.data(), out.data());
     return out;
   }
   /// Force vector expressed in B (about Bo) → expressed in A (about Ao): ᴬX_B* f.
   Vec6 act_force(const Vec6& f_B) const {
-    using namespace spatial_detail;
     Vec6 out;
-    double n[3], f[3], pxf[3];
-    mul(R, f_B[3], f_B[4], f_B[5], f);
-    mul(R, f_B[0], f_B[1], f_B[2], n);
-    cross(p[0], p[1], p[2], f[0], f[1], f[2], pxf);
-    out << n[0] + pxf[0], n[1] + pxf[1], n[2] + pxf[2], f[0], f[1], f[2];
+    kernel::force(R, p, f_B.data(), out.data());
     return out;
   }
   /// Force vector expressed in A (about Ao) → expressed in B (about Bo): ᴮX_A* f.
   Vec6 act_force_inverse(const Vec6& f_A) const {
-    using namespace spatial_detail;
     Vec6 out;
-    double n[3], f[3], pxf[3];
-    cross(p[0], p[1], p[2], f_A[3], f_A[4], f_A[5], pxf);
-    mul_transpose(R, f_A[3], f_A[4], f_A[5], f);
-    mul_transpose(R, f_A[0] - pxf[0], f_A[1] - pxf[1], f_A[2] - pxf[2], n);
-    out << n[0], n[1], n[2], f[0], f[1], f[2];
+    kernel::force_inverse(R, p, f_A.data(), out.data());
     return out;
   }
 
@@ -151,25 +113,15 @@ struct Transform {
 
 /// Spatial cross product for motion: v ×m, Featherstone's crm(v) m.
 inline Vec6 cross_motion(const Vec6& v, const Vec6& m) {
-  using spatial_detail::cross;
-  double a[3], b[3], c[3];
-  cross(v[0], v[1], v[2], m[0], m[1], m[2], a);
-  cross(v[0], v[1], v[2], m[3], m[4], m[5], b);
-  cross(v[3], v[4], v[5], m[0], m[1], m[2], c);
-  Vec6 out;
-  out << a[0], a[1], a[2], b[0] + c[0], b[1] + c[1], b[2] + c[2];
+  Vec6 out = Vec6::Zero();
+  kernel::add_cross_motion(v.data(), m.data(), out.data());
   return out;
 }
 
 /// Spatial cross product for force: v ×* f, Featherstone's crf(v) f = −crm(v)ᵀ f.
 inline Vec6 cross_force(const Vec6& v, const Vec6& f) {
-  using spatial_detail::cross;
-  double a[3], b[3], c[3];
-  cross(v[0], v[1], v[2], f[0], f[1], f[2], a);
-  cross(v[3], v[4], v[5], f[3], f[4], f[5], b);
-  cross(v[0], v[1], v[2], f[3], f[4], f[5], c);
-  Vec6 out;
-  out << a[0] + b[0], a[1] + b[1], a[2] + b[2], c[0], c[1], c[2];
+  Vec6 out = Vec6::Zero();
+  kernel::add_cross_force(v.data(), f.data(), out.data());
   return out;
 }
 
@@ -206,14 +158,8 @@ struct SpatialInertia {
   /// Momentum of the body moving with spatial velocity V (same frame): I V = [I_O ω + h × v;
   /// m v − h × ω].
   Vec6 operator*(const Vec6& V) const {
-    using namespace spatial_detail;
-    double Iw[3], hxv[3], hxw[3];
-    mul(I_O, V[0], V[1], V[2], Iw);
-    cross(h[0], h[1], h[2], V[3], V[4], V[5], hxv);
-    cross(h[0], h[1], h[2], V[0], V[1], V[2], hxw);
     Vec6 out;
-    out << Iw[0] + hxv[0], Iw[1] + hxv[1], Iw[2] + hxv[2], mass * V[3] - hxw[0],
-        mass * V[4] - hxw[1], mass * V[5] - hxw[2];
+    kernel::inertia_times(mass, h, I_O, V.data(), out.data());
     return out;
   }
 
@@ -240,8 +186,7 @@ struct SpatialInertia {
     // a symmetric sum computed on its six distinct entries.
     const Mat3& R = X_AB.R;
     const Vec3& p = X_AB.p;
-    double hA[3];
-    spatial_detail::mul(R, h[0], h[1], h[2], hA);
+    const Vec3 hA = R * h;
     Mat3 RI;  // R I_Bo
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) {

@@ -42,6 +42,26 @@ TEST(YamlReader, MalformedYamlReportsYamlCppsLineAndColumn) {
   EXPECT_NE(m.find("i.yaml:2:"), std::string::npos) << m;
 }
 
+TEST(YamlReader, UnterminatedQuoteIsReportedWhereItOpens) {
+  // yaml-cpp takes a quoted string that never closes as running to the end of the file (it
+  // would then say 'missing required key bodies' at 1:1); the reader points at the quote.
+  const auto message = [](const std::string& text) {
+    return parse_error_of([&] { YamlNode::load_string(text, "q.yaml"); });
+  };
+  EXPECT_NE(message("name: \"abc\nbodies: []\n").find("q.yaml:1:7: malformed YAML: this quoted "
+                                                     "string has no closing \""),
+            std::string::npos);
+  EXPECT_NE(message("bodies:\n  - name: 'rod\n").find("q.yaml:2:11:"), std::string::npos);
+  // Inside a flow map yaml-cpp notices the missing brace itself.
+  EXPECT_NE(message("{\"key: 1}\n").find("malformed YAML"), std::string::npos);
+  // Quoted strings that do close, over lines and with their escapes, are fine.
+  const YamlNode root = YamlNode::load_string(
+      "a: \"one \\\" two\n  three\"\nb: 'it''s'\nc: \"ends in a backslash \\\\\"\n", "ok.yaml");
+  EXPECT_EQ(root.at("a").as_string(), "one \" two three");
+  EXPECT_EQ(root.at("b").as_string(), "it's");
+  EXPECT_EQ(root.at("c").as_string(), "ends in a backslash \\");
+}
+
 TEST(YamlReader, EmptyOrCommentOnlyFileIsAnError) {
   EXPECT_THROW(YamlNode::load_string("", "e.yaml"), ParseError);
   const std::string m = parse_error_of([] { YamlNode::load_string("# nothing\n", "e.yaml"); });
