@@ -208,6 +208,257 @@ void check_derivative_finite(const MatX& X, const char* what) {
             fmt::format("linearize: {}({}, {}) = {} is not finite", what, i, j, X(i, j)));
 }
 
+void check_arguments(const OperatingPoint& point, const LinearizationOptions& options) {
+  if (!std::isfinite(point.t)) {
+    throw InvalidArgument(
+        fmt::format("linearize: operating point time t = {} is not finite", point.t));
+  }
+  if (options.angle_step < 0.0 || options.length_step < 0.0 || !std::isfinite(options.angle_step) ||
+      !std::isfinite(options.length_step)) {
+    throw InvalidArgument(fmt::format(
+        "linearize: angle_step = {} and length_step = {} must be finite and ≥ 0 (0: automatic)",
+        options.angle_step, options.length_step));
+  }
+}
+
+// What linearize differentiates: g(q, v) = [r_f; the output columns] at the operating point's
+// time with its free accelerations held, and the steps of the differences.
+struct Differentiated {
+  const model::Model& model;
+  ModelResidual& residual;
+  const system::OutputSet& outputs;
+  double t;
+  VecX q0, v0, a_free;
+  int nf, columns;
+  double angle_step;   // rad
+  double length;       // characteristic length, m
+  double length_step;  // m, or 0: relative to the length and the coordinate
+  mutable VecX r_work;
+
+  void evaluate(const VecX& q, const VecX& v, VecX& out) const {
+    residual.residual(t, q, v, a_free, r_work);
+    out.resize(nf + columns);
+    out.head(nf) = r_work;
+    if (columns > 0) {
+      outputs.evaluate(residual.system(), t, q, v, std::span<double>(out.data() + nf, columns));
+    }
+  }
+  double step_of_length(double value) const {
+    return length_step > 0.0 ? length_step : kRelativeStep * std::max(length, std::abs(value));
+  }
+  // The configuration step of velocity coordinate i: an angle or a length.
+  double configuration_step(int i) const {
+    if (detail::is_angle_coordinate(model, i)) return angle_step;
+    const model::Joint& j = model.joint(model.joint_of_v(i));
+    const int k = i - j.v_index;
+    const int iq = j.type == model::JointType::free ? j.q_index + k - 3 : j.q_index + k;
+    return step_of_length(q0[iq]);
+  }
+  // The smallest configuration step of the coordinates a prescribed signal drives.
+  double prescribed_step(int signal) const {
+    double h = std::numeric_limits<double>::infinity();
+    for (const model::Joint& joint : model.joints()) {
+      for (int k = 0; k < static_cast<int>(joint.prescribed_signal_indices.size()); ++k) {
+        if (joint.prescribed_signal_indices[static_cast<std::size_t>(k)] != signal) continue;
+        const int i = joint.v_index + k;
+        h = std::min(h, detail::is_angle_coordinate(model, i)
+                            ? angle_step
+                            : step_of_length(q0[joint.q_index + k]));
+      }
+    }
+    return h;
+  }
+};
+
+// ∂g/∂δq, ∂g/∂v and ∂g/∂u by the input signal's value, rate and acceleration.
+struct Jacobians {
+  MatX dq, dv, du0, du1, du2;
+};
+
+// ∂g/∂δq by Richardson-extrapolated central differences; ∂g/∂v by exact central differences.
+void differentiate_state(const Differentiated& f, const std::vector<int>& free, Jacobians& J) {
+  J.dq.resize(f.nf + f.columns, f.nf);
+  J.dv.resize(f.nf + f.columns, f.nf);
+  VecX plus, minus, coarse, d, tangent, q_step, v_step;
+  for (int k = 0; k < f.nf; ++k) {
+    const int i = free[static_cast<std::size_t>(k)];
+    detail::richardson_difference(
+        [&](double s, VecX& out) {
+          detail::displace(f.model, f.q0, i, s, tangent, q_step);
+          f.evaluate(q_step, f.v0, out);
+        },
+        f.configuration_step(i), plus, minus, coarse, d);
+    J.dq.col(k) = d;
+    detail::central_difference(
+        [&](double s, VecX& out) {
+          v_step = f.v0;
+          v_step[i] += s;
+          f.evaluate(f.q0, v_step, out);
+        },
+        kExactStep, plus, minus, d);
+    J.dv.col(k) = d;
+  }
+}
+
+// ∂g/∂u: value, rate and acceleration offsets of each input's signal.
+void differentiate_inputs(const Differentiated& f, const std::vector<Input>& inputs, Jacobians& J) {
+  const int m = static_cast<int>(inputs.size());
+  J.du0 = MatX::Zero(f.nf + f.columns, m);
+  J.du1 = MatX::Zero(f.nf + f.columns, m);
+  J.du2 = MatX::Zero(f.nf + f.columns, m);
+  VecX plus, minus, coarse, d;
+  for (int j = 0; j < m; ++j) {
+    const Input& input = inputs[static_cast<std::size_t>(j)];
+    const auto perturbed = [&](double value, double rate, double acceleration) {
+      return [&, value, rate, acceleration](double s, VecX& out) {
+        f.residual.set_offset(input.signal, s * value, s * rate, s * acceleration);
+        f.evaluate(f.q0, f.v0, out);
+      };
+    };
+    if (input.prescribed) {
+      // The value moves prescribed coordinates: nonlinear, as the configuration.
+      detail::richardson_difference(perturbed(1, 0, 0), f.prescribed_step(input.signal), plus,
+                                    minus, coarse, d);
+      J.du0.col(j) = d;
+      detail::central_difference(perturbed(0, 1, 0), kExactStep, plus, minus, d);
+      J.du1.col(j) = d;
+      detail::central_difference(perturbed(0, 0, 1), kExactStep, plus, minus, d);
+      J.du2.col(j) = d;
+    } else {
+      // Loads are linear in their signal: one exact central difference.
+      const double u0 = f.model.signals()[static_cast<std::size_t>(input.signal)].value(f.t);
+      detail::central_difference(perturbed(1, 0, 0), std::max(1.0, std::abs(u0)), plus, minus, d);
+      J.du0.col(j) = d;
+    }
+    f.residual.clear_offsets();
+  }
+}
+
+void check_jacobians_finite(const Jacobians& J) {
+  check_derivative_finite(J.dq, "∂(r, y)/∂q");
+  check_derivative_finite(J.dv, "∂(r, y)/∂v");
+  check_derivative_finite(J.du0, "∂(r, y)/∂u");
+  check_derivative_finite(J.du1, "∂(r, y)/∂u̇");
+  check_derivative_finite(J.du2, "∂(r, y)/∂ü");
+}
+
+// T = ∂δ̇/∂δ from δ̇ = J_r(δ)⁻¹ ω (zero unless a ball or free joint turns).
+MatX rotation_rate_jacobian(const model::Model& model, const std::vector<int>& free,
+                            const VecX& v0) {
+  const int nf = static_cast<int>(free.size());
+  MatX T = MatX::Zero(nf, nf);
+  VecX tangent(model.nv()), rate_plus(model.nv()), rate_minus(model.nv());
+  for (int k = 0; k < nf; ++k) {
+    const int i = free[static_cast<std::size_t>(k)];
+    tangent.setZero();
+    tangent[i] = kRotationRateStep;
+    model::local_coordinate_rate(model, tangent, v0, rate_plus);
+    tangent[i] = -kRotationRateStep;
+    model::local_coordinate_rate(model, tangent, v0, rate_minus);
+    for (int a = 0; a < nf; ++a) {
+      const int ia = free[static_cast<std::size_t>(a)];
+      T(a, k) = (rate_plus[ia] - rate_minus[ia]) / (2 * kRotationRateStep);
+    }
+  }
+  return T;
+}
+
+// A = [T 1; −M⁻¹ K  −M⁻¹ C_v] and the input columns B = [0; −M⁻¹ ∂r_f/∂u] of each kind.
+MatX state_matrix(LinearModel& result, const MatX& T, const Eigen::LLT<MatX>& llt,
+                  const Jacobians& J, int nf) {
+  const int n = 2 * nf;
+  const auto m = J.du0.cols();
+  MatX A = MatX::Zero(n, n);
+  A.topLeftCorner(nf, nf) = T;
+  A.topRightCorner(nf, nf).setIdentity();
+  A.bottomLeftCorner(nf, nf) = -llt.solve(result.stiffness);
+  A.bottomRightCorner(nf, nf) = -llt.solve(result.damping);
+  const auto input_rows = [&](const MatX& dg_du) {
+    MatX B = MatX::Zero(n, m);
+    if (m > 0 && nf > 0) B.bottomRows(nf) = -llt.solve(dg_du.topRows(nf));
+    return B;
+  };
+  result.input_value = input_rows(J.du0);
+  result.input_rate = input_rows(J.du1);
+  result.input_acceleration = input_rows(J.du2);
+  return A;
+}
+
+// Output rows: a state directly, or a column of g by its differences. Sets the feedthroughs and
+// output values of `result`; returns C.
+MatX output_matrix(LinearModel& result, const std::vector<OutputRow>& rows, const Jacobians& J,
+                   const VecX& g0, const std::vector<int>& free, int nf, const VecX& v0) {
+  const auto p = static_cast<Eigen::Index>(rows.size());
+  const auto m = J.du0.cols();
+  MatX C = MatX::Zero(p, 2 * nf);
+  result.feedthrough_value = MatX::Zero(p, m);
+  result.feedthrough_rate = MatX::Zero(p, m);
+  result.feedthrough_acceleration = MatX::Zero(p, m);
+  result.output_values = VecX::Zero(p);
+  for (Eigen::Index r = 0; r < p; ++r) {
+    const OutputRow& row = rows[static_cast<std::size_t>(r)];
+    if (row.state >= 0) {
+      C(r, row.state) = 1.0;
+      const int i = free[static_cast<std::size_t>(row.state % nf)];
+      // A configuration state reads 0 at the point (δq = 0 there); a velocity state reads v₀.
+      result.output_values[r] = row.state < nf ? 0.0 : v0[i];
+      continue;
+    }
+    const int c = nf + row.column;
+    C.block(r, 0, 1, nf) = J.dq.row(c);
+    C.block(r, nf, 1, nf) = J.dv.row(c);
+    result.feedthrough_value.row(r) = J.du0.row(c);
+    result.feedthrough_rate.row(r) = J.du1.row(c);
+    result.feedthrough_acceleration.row(r) = J.du2.row(c);
+    result.output_values[r] = g0[c];
+  }
+  return C;
+}
+
+// Folds each prescribed input's rate and acceleration into its position (header comment):
+// w = x − E₁ u − E₂ u̇, E₂ = B₂, E₁ = A E₂ + B₁; B = B₀ + A E₁, D = D₀ + C E₁. Throws when an
+// output feels a rate or acceleration that no state shift absorbs (an improper transfer).
+void fold_input_rates(LinearModel& result, const MatX& A, const MatX& C,
+                      const std::vector<Input>& inputs,
+                      const std::vector<std::string>& output_names, MatX& B, MatX& D) {
+  B = result.input_value;
+  D = result.feedthrough_value;
+  const auto p = C.rows();
+  for (Eigen::Index j = 0; j < B.cols(); ++j) {
+    const VecX E2 = result.input_acceleration.col(j);
+    const VecX E1 = A * E2 + result.input_rate.col(j);
+    if (E1.isZero(0.0) && E2.isZero(0.0) && result.feedthrough_rate.col(j).isZero(0.0) &&
+        result.feedthrough_acceleration.col(j).isZero(0.0)) {
+      continue;
+    }
+    result.states_shifted = result.states_shifted || !E1.isZero(0.0) || !E2.isZero(0.0);
+    B.col(j) += A * E1;
+    D.col(j) += C * E1;
+    // The terms in u̇ and ü that a state shift cannot absorb must vanish (to round-off).
+    const VecX rate_term = C * E2 + result.feedthrough_rate.col(j);
+    for (Eigen::Index r = 0; r < p; ++r) {
+      const double floor =
+          1e-8 *
+          (C.row(r).cwiseAbs().maxCoeff() * (E1.cwiseAbs().maxCoeff() + E2.cwiseAbs().maxCoeff()) +
+           std::abs(result.feedthrough_value(r, j)) + std::abs(result.feedthrough_rate(r, j)) +
+           std::abs(result.output_values[r]));
+      const double direct[2] = {rate_term[r], result.feedthrough_acceleration(r, j)};
+      static constexpr const char* kWhat[2] = {"rate", "acceleration"};
+      for (int w = 0; w < 2; ++w) {
+        if (std::abs(direct[w]) > floor) {
+          const std::string& input = inputs[static_cast<std::size_t>(j)].name;
+          throw InvalidArgument(fmt::format(
+              "linearize: output '{}' feels the {} of prescribed input '{}' directly ({:.6g} per "
+              "unit), so its transfer function from '{}' is improper; choose a position output, "
+              "or a body's absolute velocity instead of a coordinate carried by the prescribed "
+              "joint",
+              output_names[static_cast<std::size_t>(r)], kWhat[w], input, direct[w], input));
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 
 OperatingPoint initial_operating_point(const model::Model& model) {
@@ -250,21 +501,11 @@ std::vector<std::string> linear_state_names(const model::Model& model) {
 
 LinearModel linearize(const model::Model& model, const OperatingPoint& point,
                       const LinearizationOptions& options) {
-  if (!std::isfinite(point.t)) {
-    throw InvalidArgument(
-        fmt::format("linearize: operating point time t = {} is not finite", point.t));
-  }
-  if (options.angle_step < 0.0 || options.length_step < 0.0 || !std::isfinite(options.angle_step) ||
-      !std::isfinite(options.length_step)) {
-    throw InvalidArgument(fmt::format(
-        "linearize: angle_step = {} and length_step = {} must be finite and ≥ 0 (0: automatic)",
-        options.angle_step, options.length_step));
-  }
+  check_arguments(point, options);
   ModelResidual residual(model);
   system::MultibodySystem& system = residual.system();
   const double t = point.t;
   const int nf = residual.nf();
-  const int n = 2 * nf;
   const std::vector<int>& free = residual.free();
 
   // The operating point, its prescribed coordinates from their signals.
@@ -284,122 +525,30 @@ LinearModel linearize(const model::Model& model, const OperatingPoint& point,
   std::vector<model::OutputSpec> specs;
   const std::vector<OutputRow> rows = resolve_outputs(model, state_names, options, specs);
   const system::OutputSet output_set(model, specs);
-  const int columns = static_cast<int>(output_set.size());
-  const int m = static_cast<int>(inputs.size());
-  const int p = static_cast<int>(rows.size());
+  std::vector<std::string> output_names, input_names;
+  for (const OutputRow& row : rows) output_names.push_back(row.name);
+  for (const Input& input : inputs) input_names.push_back(input.name);
 
   // Everything differentiated at once: g = [r_f; the output columns] at (q, v).
-  VecX r_work;
-  const auto g = [&](const VecX& q, const VecX& v, VecX& out) {
-    residual.residual(t, q, v, a_free, r_work);
-    out.resize(nf + columns);
-    out.head(nf) = r_work;
-    if (columns > 0) {
-      output_set.evaluate(system, t, q, v, std::span<double>(out.data() + nf, columns));
-    }
-  };
+  const Differentiated f{model,
+                         residual,
+                         output_set,
+                         t,
+                         q0,
+                         v0,
+                         a_free,
+                         nf,
+                         static_cast<int>(output_set.size()),
+                         options.angle_step > 0.0 ? options.angle_step : kRelativeStep,
+                         characteristic_length(model),
+                         options.length_step,
+                         {}};
   VecX g0;
-  g(q0, v0, g0);
-
-  // Steps of the configuration differences.
-  const double angle_step = options.angle_step > 0.0 ? options.angle_step : kRelativeStep;
-  const double length = characteristic_length(model);
-  const auto length_step = [&](double value) {
-    return options.length_step > 0.0 ? options.length_step
-                                     : kRelativeStep * std::max(length, std::abs(value));
-  };
-  const auto configuration_step = [&](int i) {
-    if (detail::is_angle_coordinate(model, i)) return angle_step;
-    const model::Joint& j = model.joint(model.joint_of_v(i));
-    const int k = i - j.v_index;
-    const int iq = j.type == model::JointType::free ? j.q_index + k - 3 : j.q_index + k;
-    return length_step(q0[iq]);
-  };
-
-  // ∂g/∂δq by Richardson-extrapolated central differences; ∂g/∂v by exact central differences.
-  MatX dg_dq(nf + columns, nf), dg_dv(nf + columns, nf);
-  VecX plus, minus, coarse, d, tangent, q_step, v_step;
-  for (int k = 0; k < nf; ++k) {
-    const int i = free[static_cast<std::size_t>(k)];
-    detail::richardson_difference(
-        [&](double s, VecX& out) {
-          detail::displace(model, q0, i, s, tangent, q_step);
-          g(q_step, v0, out);
-        },
-        configuration_step(i), plus, minus, coarse, d);
-    dg_dq.col(k) = d;
-    detail::central_difference(
-        [&](double s, VecX& out) {
-          v_step = v0;
-          v_step[i] += s;
-          g(q0, v_step, out);
-        },
-        kExactStep, plus, minus, d);
-    dg_dv.col(k) = d;
-  }
-
-  // ∂g/∂u: value, rate and acceleration offsets of each input's signal.
-  MatX dg_du0 = MatX::Zero(nf + columns, m), dg_du1 = MatX::Zero(nf + columns, m),
-       dg_du2 = MatX::Zero(nf + columns, m);
-  for (int j = 0; j < m; ++j) {
-    const Input& input = inputs[static_cast<std::size_t>(j)];
-    const auto perturbed = [&](double value, double rate, double acceleration) {
-      return [&, value, rate, acceleration](double s, VecX& out) {
-        residual.set_offset(input.signal, s * value, s * rate, s * acceleration);
-        g(q0, v0, out);
-      };
-    };
-    if (input.prescribed) {
-      // The value moves prescribed coordinates: nonlinear, as the configuration. The smallest
-      // step of the coordinates it drives.
-      double h = std::numeric_limits<double>::infinity();
-      for (const model::Joint& joint : model.joints()) {
-        for (int k = 0; k < static_cast<int>(joint.prescribed_signal_indices.size()); ++k) {
-          if (joint.prescribed_signal_indices[static_cast<std::size_t>(k)] != input.signal)
-            continue;
-          const int i = joint.v_index + k;
-          h = std::min(h, detail::is_angle_coordinate(model, i)
-                              ? angle_step
-                              : length_step(q0[joint.q_index + k]));
-        }
-      }
-      detail::richardson_difference(perturbed(1, 0, 0), h, plus, minus, coarse, d);
-      dg_du0.col(j) = d;
-      detail::central_difference(perturbed(0, 1, 0), kExactStep, plus, minus, d);
-      dg_du1.col(j) = d;
-      detail::central_difference(perturbed(0, 0, 1), kExactStep, plus, minus, d);
-      dg_du2.col(j) = d;
-    } else {
-      // Loads are linear in their signal: one exact central difference.
-      const double u0 = model.signals()[static_cast<std::size_t>(input.signal)].value(t);
-      detail::central_difference(perturbed(1, 0, 0), std::max(1.0, std::abs(u0)), plus, minus, d);
-      dg_du0.col(j) = d;
-    }
-    residual.clear_offsets();
-  }
-  check_derivative_finite(dg_dq, "∂(r, y)/∂q");
-  check_derivative_finite(dg_dv, "∂(r, y)/∂v");
-  check_derivative_finite(dg_du0, "∂(r, y)/∂u");
-  check_derivative_finite(dg_du1, "∂(r, y)/∂u̇");
-  check_derivative_finite(dg_du2, "∂(r, y)/∂ü");
-
-  // T = ∂δ̇/∂δ from δ̇ = J_r(δ)⁻¹ ω (zero unless a ball or free joint turns).
-  MatX T = MatX::Zero(nf, nf);
-  {
-    VecX rate_plus(model.nv()), rate_minus(model.nv());
-    for (int k = 0; k < nf; ++k) {
-      const int i = free[static_cast<std::size_t>(k)];
-      tangent.setZero(model.nv());
-      tangent[i] = kRotationRateStep;
-      model::local_coordinate_rate(model, tangent, v0, rate_plus);
-      tangent[i] = -kRotationRateStep;
-      model::local_coordinate_rate(model, tangent, v0, rate_minus);
-      for (int a = 0; a < nf; ++a) {
-        const int ia = free[static_cast<std::size_t>(a)];
-        T(a, k) = (rate_plus[ia] - rate_minus[ia]) / (2 * kRotationRateStep);
-      }
-    }
-  }
+  f.evaluate(q0, v0, g0);
+  Jacobians J;
+  differentiate_state(f, free, J);
+  differentiate_inputs(f, inputs, J);
+  check_jacobians_finite(J);
 
   // M_ff and its Cholesky factor: ∂a/∂(·) = −M⁻¹ ∂r/∂(·).
   result.mass = residual.free_mass(t, q0);
@@ -409,91 +558,13 @@ LinearModel linearize(const model::Model& model, const OperatingPoint& point,
         "linearize: the mass matrix of the free coordinates ({}) is not positive definite",
         fmt::join(state_names.begin(), state_names.begin() + nf, ", ")));
   }
-  result.stiffness = dg_dq.topRows(nf);
-  result.damping = dg_dv.topRows(nf);
+  result.stiffness = J.dq.topRows(nf);
+  result.damping = J.dv.topRows(nf);
 
-  MatX A = MatX::Zero(n, n);
-  A.topLeftCorner(nf, nf) = T;
-  A.topRightCorner(nf, nf).setIdentity();
-  A.bottomLeftCorner(nf, nf) = -llt.solve(result.stiffness);
-  A.bottomRightCorner(nf, nf) = -llt.solve(result.damping);
-  const auto input_rows = [&](const MatX& dg_du) {
-    MatX B = MatX::Zero(n, m);
-    if (m > 0 && nf > 0) B.bottomRows(nf) = -llt.solve(dg_du.topRows(nf));
-    return B;
-  };
-  result.input_value = input_rows(dg_du0);
-  result.input_rate = input_rows(dg_du1);
-  result.input_acceleration = input_rows(dg_du2);
-
-  // Output rows: a state directly, or a column by its differences.
-  MatX C = MatX::Zero(p, n);
-  result.feedthrough_value = MatX::Zero(p, m);
-  result.feedthrough_rate = MatX::Zero(p, m);
-  result.feedthrough_acceleration = MatX::Zero(p, m);
-  result.output_values = VecX::Zero(p);
-  std::vector<std::string> output_names;
-  for (int r = 0; r < p; ++r) {
-    const OutputRow& row = rows[static_cast<std::size_t>(r)];
-    output_names.push_back(row.name);
-    if (row.state >= 0) {
-      C(r, row.state) = 1.0;
-      const int k = row.state % nf;
-      const int i = free[static_cast<std::size_t>(k)];
-      // A configuration state reads 0 at the point (δq = 0 there); a velocity state reads v₀.
-      result.output_values[r] = row.state < nf ? 0.0 : v0[i];
-      continue;
-    }
-    const int c = nf + row.column;
-    C.block(r, 0, 1, nf) = dg_dq.row(c);
-    C.block(r, nf, 1, nf) = dg_dv.row(c);
-    result.feedthrough_value.row(r) = dg_du0.row(c);
-    result.feedthrough_rate.row(r) = dg_du1.row(c);
-    result.feedthrough_acceleration.row(r) = dg_du2.row(c);
-    result.output_values[r] = g0[c];
-  }
-
-  // Fold each prescribed input's rate and acceleration into its position (header comment):
-  // w = x − E₁ u − E₂ u̇, E₂ = B₂, E₁ = A E₂ + B₁; B = B₀ + A E₁, D = D₀ + C E₁.
-  MatX B = result.input_value;
-  MatX D = result.feedthrough_value;
-  for (int j = 0; j < m; ++j) {
-    const VecX E2 = result.input_acceleration.col(j);
-    const VecX E1 = A * E2 + result.input_rate.col(j);
-    if (E1.isZero(0.0) && E2.isZero(0.0) && result.feedthrough_rate.col(j).isZero(0.0) &&
-        result.feedthrough_acceleration.col(j).isZero(0.0)) {
-      continue;
-    }
-    result.states_shifted = result.states_shifted || !E1.isZero(0.0) || !E2.isZero(0.0);
-    B.col(j) += A * E1;
-    D.col(j) += C * E1;
-    // The terms in u̇ and ü that a state shift cannot absorb must vanish (to round-off).
-    const VecX rate_term = C * E2 + result.feedthrough_rate.col(j);
-    for (int r = 0; r < p; ++r) {
-      const double floor =
-          1e-8 *
-          (C.row(r).cwiseAbs().maxCoeff() * (E1.cwiseAbs().maxCoeff() + E2.cwiseAbs().maxCoeff()) +
-           std::abs(result.feedthrough_value(r, j)) + std::abs(result.feedthrough_rate(r, j)) +
-           std::abs(result.output_values[r]));
-      const double direct[2] = {rate_term[r], result.feedthrough_acceleration(r, j)};
-      static constexpr const char* kWhat[2] = {"rate", "acceleration"};
-      for (int w = 0; w < 2; ++w) {
-        if (std::abs(direct[w]) > floor) {
-          throw InvalidArgument(fmt::format(
-              "linearize: output '{}' feels the {} of prescribed input '{}' directly ({:.6g} per "
-              "unit), so its transfer function from '{}' is improper; choose a position output, "
-              "or a body's absolute velocity instead of a coordinate carried by the prescribed "
-              "joint",
-              output_names[static_cast<std::size_t>(r)], kWhat[w],
-              inputs[static_cast<std::size_t>(j)].name, direct[w],
-              inputs[static_cast<std::size_t>(j)].name));
-        }
-      }
-    }
-  }
-
-  std::vector<std::string> input_names;
-  for (const Input& input : inputs) input_names.push_back(input.name);
+  MatX A = state_matrix(result, rotation_rate_jacobian(model, free, v0), llt, J, nf);
+  MatX C = output_matrix(result, rows, J, g0, free, nf, v0);
+  MatX B, D;
+  fold_input_rates(result, A, C, inputs, output_names, B, D);
   result.system = StateSpace(std::move(A), std::move(B), std::move(C), std::move(D), state_names,
                              std::move(input_names), std::move(output_names));
   return result;

@@ -181,6 +181,24 @@ FreeRigidBodySolution::FreeRigidBodySolution(const Mat3& I_BBcm_B, const Mat3& R
 void FreeRigidBodySolution::setup_asymmetric(const Eigen::Matrix<long double, 3, 1>& I,
                                              const Eigen::Matrix<long double, 3, 1>& w_P,
                                              const Mat3& R_WB0) {
+  const CanonicalMotion c = enter_canonical_frame(I, w_P);
+  const Constants k = set_amplitudes_and_rates(c);
+  // Initial phase: cn u0 = ω_x/a_x, sn u0 = ω_y/a_y.
+  const LD cn0 = c.wx / k.ax, sn0 = c.wy / k.ay;
+  if (regime_ == FreeRotationRegime::kSeparatrix) {
+    set_separatrix_phase(k, cn0, sn0);
+  } else {
+    set_elliptic_phase(k, cn0, sn0, c.wz / k.az);
+  }
+  // A: inertial, z along H: R_WA = R_WC(0) R_h(0).
+  const Mat3 R_WC0 = R_WB0 * R_BC_;
+  R_WA_ = R_WC0 * rotation_from_z_to(static_cast<double>(c.Jx * c.wx / k.H),
+                                     static_cast<double>(c.Jy * c.wy / k.H),
+                                     static_cast<double>(c.Jz * c.wz / k.H));
+}
+
+FreeRigidBodySolution::CanonicalMotion FreeRigidBodySolution::enter_canonical_frame(
+    const Eigen::Matrix<long double, 3, 1>& I, const Eigen::Matrix<long double, 3, 1>& w_P) {
   // Which side of the separatrix: S = H² − 2T I2, formed without its ω2 term (which cancels).
   // Its two terms nearly cancel near the separatrix (to 4e-12 of 1e-2 for 1 − m = 1e-12), so
   // they are summed in binary128 where the compiler has it: S then carries the relative error
@@ -210,9 +228,12 @@ void FreeRigidBodySolution::setup_asymmetric(const Eigen::Matrix<long double, 3,
   R_CB_ = R_BC_.transpose();
   // ω and the moments in C (R_PC is a signed permutation: exact).
   const Vec3L w = R_PC.cast<LD>().transpose() * w_P;
-  const LD Jx = I[ix], Jy = I[1], Jz = I[iz];
-  const LD wx = w[0], wy = w[1], wz = w[2];
+  return {S, I[ix], I[1], I[iz], w[0], w[1], w[2]};
+}
 
+FreeRigidBodySolution::Constants FreeRigidBodySolution::set_amplitudes_and_rates(
+    const CanonicalMotion& c) {
+  const LD Jx = c.Jx, Jy = c.Jy, Jz = c.Jz, wx = c.wx, wy = c.wy, wz = c.wz, S = c.S;
   // Amplitudes from the invariants, each a sum of positive terms (docs/rotation.md §4):
   //   a_x² = ω_x² + J_y(J_z−J_y)/(J_x(J_z−J_x)) ω_y²,  a_z² = ω_z² + J_y(J_y−J_x)/(J_z(J_z−J_x))
   //   ω_y².
@@ -259,75 +280,73 @@ void FreeRigidBodySolution::setup_asymmetric(const Eigen::Matrix<long double, 3,
   gamma_ = static_cast<double>(gamma);
   psi_rate_ = two_T / H + rho * d * lambda;
 
-  // Initial phase: cn u0 = ω_x/a_x, sn u0 = ω_y/a_y.
-  const LD cn0 = wx / ax, sn0 = wy / ay;
-  const LD beta0 = std::atan2(rho * sn0, cn0);
+  return {m, mc, n, rho, gamma, lambda, H, ax, ay, az};
+}
 
-  if (regime_ == FreeRotationRegime::kSeparatrix) {
-    // m = 1: sn = tanh, and G(u) = (u − atan(√(−n) tanh u)/√(−n)) / (1 − n) (n < 0); its
-    // linear part joins the rate, the rest is an arctangent (docs/rotation.md §5).
-    u0_ = std::asinh(sn0 / cn0);
-    const LD s = std::sqrt(-n);
-    psi_rate_ += gamma * lambda / (1 - n);
-    const LD coefficient = -gamma / ((1 - n) * s);
-    separatrix_coefficient_ = static_cast<double>(coefficient);
-    psi_offset_ = beta0 - coefficient * std::atan(s * std::tanh(u0_));
-  } else {
-    const auto table = detail::make_agm_table<LD>(m, mc);
-    const auto landen = detail::make_landen_table<LD>(m, mc);
-    landen_.levels = landen.levels;
-    landen_.scale = static_cast<double>(landen.scale);
-    landen_.m_bottom = static_cast<double>(landen.m_bottom);
-    for (int i = 0; i < landen.levels; ++i) landen_.k[i] = static_cast<double>(landen.k[i]);
-    const LD K = table.quarter_period;
-    two_k_ = 2 * K;
-    inverse_two_k_ = 1 / two_k_;
-    quarter_period_ = K;
-    sqrt_mc_ = static_cast<double>(std::sqrt(mc));
-    // G(u) is taken from v = K − |u| (docs/rotation.md §6):
-    //   G(u) = G(K) − ∫_0^v cd²w / (1 − n cd²w) dw = G(K) − [v − (1 − n') G(n'; am v)] / (1 − n),
-    //   n' = (m − n)/(1 − n), 1 − n' = mc/(1 − n),
-    // with sin am v = cn u / dn u and cos am v = √mc |sn u| / dn u. Unlike G(n; am u) itself,
-    // whose φ-derivative sin²φ/((1 − n sin²φ) dn u) amplifies the absolute error of am u by up
-    // to 1/√mc near u = ±K, this form keeps full precision for every u and every mc > 0,
-    // because sn, cn and dn carry only absolute errors of a few ulps.
-    const LD one_minus_np = mc / (1 - n);
-    one_minus_n_prime_ = static_cast<double>(one_minus_np);
-    const LD complete_g = detail::elliptic_g_complete<LD>(1 - n, mc);
-    complete_g_ = static_cast<double>(complete_g);
-    // The initial phase u0 (F(am v0) = v0) and G0 = G(u0), by the same route.
-    const LD phi0 = std::atan2(sn0, cn0);
-    const LD j0 = std::nearbyint(phi0 / std::numbers::pi_v<LD>);
-    const LD sigma = std::fmod(j0, LD(2)) == 0 ? 1 : -1;
-    const LD sn_r = sigma * sn0, cn_r = sigma * cn0, dn0 = wz / az;
-    const LD s_v = cn_r / dn0, c_v = std::sqrt(mc) * std::abs(sn_r) / dn0;
-    const LD v0 = s_v * detail::carlson_rf(c_v * c_v, mc / (dn0 * dn0), LD(1));
-    const LD side = sn_r < 0 ? -1 : 1;
-    const LD u_r0 = side * (K - v0);
-    const LD g_r0 =
-        side *
-        (complete_g -
-         (v0 - one_minus_np * detail::elliptic_g_sc<LD>(one_minus_np, s_v, c_v, mc)) / (1 - n));
-    u0_ = u_r0 + 2 * j0 * K;
-    // G's integrand sn²/(1 − n sn²) is analytic for |Im u| < y*, where sn²(i y*) = 1/n, i.e.
-    // sc(y*|1 − m) = 1/√(−n) (Jacobi's imaginary transformation sn(iy|m) = i sc(y|1 − m)); the
-    // poles of sn itself are removable there.
-    {
-      const LD s_star = 1 / std::sqrt(1 - n), c_star = std::sqrt(-n / (1 - n));
-      strip_ = static_cast<double>(
-          s_star *
-          detail::carlson_rf(c_star * c_star, c_star * c_star + m * s_star * s_star, LD(1)));
-    }
-    const LD g0 = g_r0 + 2 * j0 * complete_g;
-    psi_per_period_ = std::remainder(2 * gamma * complete_g, kTwoPiL);
-    psi_offset_ = beta0 - gamma * g0;
+void FreeRigidBodySolution::set_separatrix_phase(const Constants& k, long double cn0,
+                                                 long double sn0) {
+  // m = 1: sn = tanh, and G(u) = (u − atan(√(−n) tanh u)/√(−n)) / (1 − n) (n < 0); its
+  // linear part joins the rate, the rest is an arctangent (docs/rotation.md §5).
+  const LD beta0 = std::atan2(k.rho * sn0, cn0);
+  u0_ = std::asinh(sn0 / cn0);
+  const LD s = std::sqrt(-k.n);
+  psi_rate_ += k.gamma * k.lambda / (1 - k.n);
+  const LD coefficient = -k.gamma / ((1 - k.n) * s);
+  separatrix_coefficient_ = static_cast<double>(coefficient);
+  psi_offset_ = beta0 - coefficient * std::atan(s * std::tanh(u0_));
+}
+
+void FreeRigidBodySolution::set_elliptic_phase(const Constants& k, long double cn0, long double sn0,
+                                               long double dn0) {
+  const LD m = k.m, mc = k.mc, n = k.n, gamma = k.gamma;
+  const LD beta0 = std::atan2(k.rho * sn0, cn0);
+  const auto table = detail::make_agm_table<LD>(m, mc);
+  const auto landen = detail::make_landen_table<LD>(m, mc);
+  landen_.levels = landen.levels;
+  landen_.scale = static_cast<double>(landen.scale);
+  landen_.m_bottom = static_cast<double>(landen.m_bottom);
+  for (int i = 0; i < landen.levels; ++i) landen_.k[i] = static_cast<double>(landen.k[i]);
+  const LD K = table.quarter_period;
+  two_k_ = 2 * K;
+  inverse_two_k_ = 1 / two_k_;
+  quarter_period_ = K;
+  sqrt_mc_ = static_cast<double>(std::sqrt(mc));
+  // G(u) is taken from v = K − |u| (docs/rotation.md §6):
+  //   G(u) = G(K) − ∫_0^v cd²w / (1 − n cd²w) dw = G(K) − [v − (1 − n') G(n'; am v)] / (1 − n),
+  //   n' = (m − n)/(1 − n), 1 − n' = mc/(1 − n),
+  // with sin am v = cn u / dn u and cos am v = √mc |sn u| / dn u. Unlike G(n; am u) itself,
+  // whose φ-derivative sin²φ/((1 − n sin²φ) dn u) amplifies the absolute error of am u by up
+  // to 1/√mc near u = ±K, this form keeps full precision for every u and every mc > 0,
+  // because sn, cn and dn carry only absolute errors of a few ulps.
+  const LD one_minus_np = mc / (1 - n);
+  one_minus_n_prime_ = static_cast<double>(one_minus_np);
+  const LD complete_g = detail::elliptic_g_complete<LD>(1 - n, mc);
+  complete_g_ = static_cast<double>(complete_g);
+  // The initial phase u0 (F(am v0) = v0) and G0 = G(u0), by the same route.
+  const LD phi0 = std::atan2(sn0, cn0);
+  const LD j0 = std::nearbyint(phi0 / std::numbers::pi_v<LD>);
+  const LD sigma = std::fmod(j0, LD(2)) == 0 ? 1 : -1;
+  const LD sn_r = sigma * sn0, cn_r = sigma * cn0;
+  const LD s_v = cn_r / dn0, c_v = std::sqrt(mc) * std::abs(sn_r) / dn0;
+  const LD v0 = s_v * detail::carlson_rf(c_v * c_v, mc / (dn0 * dn0), LD(1));
+  const LD side = sn_r < 0 ? -1 : 1;
+  const LD u_r0 = side * (K - v0);
+  const LD g_r0 =
+      side *
+      (complete_g -
+       (v0 - one_minus_np * detail::elliptic_g_sc<LD>(one_minus_np, s_v, c_v, mc)) / (1 - n));
+  u0_ = u_r0 + 2 * j0 * K;
+  // G's integrand sn²/(1 − n sn²) is analytic for |Im u| < y*, where sn²(i y*) = 1/n, i.e.
+  // sc(y*|1 − m) = 1/√(−n) (Jacobi's imaginary transformation sn(iy|m) = i sc(y|1 − m)); the
+  // poles of sn itself are removable there.
+  {
+    const LD s_star = 1 / std::sqrt(1 - n), c_star = std::sqrt(-n / (1 - n));
+    strip_ = static_cast<double>(
+        s_star * detail::carlson_rf(c_star * c_star, c_star * c_star + m * s_star * s_star, LD(1)));
   }
-
-  // A: inertial, z along H: R_WA = R_WC(0) R_h(0).
-  const Mat3 R_WC0 = R_WB0 * R_BC_;
-  R_WA_ =
-      R_WC0 * rotation_from_z_to(static_cast<double>(Jx * wx / H), static_cast<double>(Jy * wy / H),
-                                 static_cast<double>(Jz * wz / H));
+  const LD g0 = g_r0 + 2 * j0 * complete_g;
+  psi_per_period_ = std::remainder(2 * gamma * complete_g, kTwoPiL);
+  psi_offset_ = beta0 - gamma * g0;
 }
 
 RotationState FreeRigidBodySolution::operator()(double t) const {

@@ -121,12 +121,18 @@ inline void add_cross_motion_axis(const double* v, double s, double* out) {
 /// from k, picks the entries: `out` and `v` can then stay in registers.
 inline void add_cross_motion_basis(const double* v, int k, double s, double* out) {
   switch (k) {
-    case 0: return add_cross_motion_axis<0>(v, s, out);
-    case 1: return add_cross_motion_axis<1>(v, s, out);
-    case 2: return add_cross_motion_axis<2>(v, s, out);
-    case 3: return add_cross_motion_axis<3>(v, s, out);
-    case 4: return add_cross_motion_axis<4>(v, s, out);
-    default: return add_cross_motion_axis<5>(v, s, out);
+    case 0:
+      return add_cross_motion_axis<0>(v, s, out);
+    case 1:
+      return add_cross_motion_axis<1>(v, s, out);
+    case 2:
+      return add_cross_motion_axis<2>(v, s, out);
+    case 3:
+      return add_cross_motion_axis<3>(v, s, out);
+    case 4:
+      return add_cross_motion_axis<4>(v, s, out);
+    default:
+      return add_cross_motion_axis<5>(v, s, out);
   }
 }
 

@@ -91,8 +91,26 @@ class FreeRigidBodySolution {
  private:
   friend class ExactFreeRigidBodyStepper;
 
+  // The asymmetric regimes' set-up (docs/rotation.md §4–6), in four steps.
   void setup_asymmetric(const Eigen::Matrix<long double, 3, 1>& moments,
                         const Eigen::Matrix<long double, 3, 1>& w_P, const Mat3& R_WB0);
+  // The motion in the canonical frame C: the separatrix sign S = H² − 2T I2, the moments and
+  // ω(0) along C's axes.
+  struct CanonicalMotion {
+    long double S, Jx, Jy, Jz, wx, wy, wz;
+  };
+  // The constants of the motion the phase set-up needs.
+  struct Constants {
+    long double m, mc, n, rho, gamma, lambda, H, ax, ay, az;
+  };
+  // Picks the regime and C (sets regime_, R_BC_, R_CB_).
+  CanonicalMotion enter_canonical_frame(const Eigen::Matrix<long double, 3, 1>& moments,
+                                        const Eigen::Matrix<long double, 3, 1>& w_P);
+  // Parameter, amplitudes, the unit momentum's components and the precession rate.
+  Constants set_amplitudes_and_rates(const CanonicalMotion& c);
+  // The initial phase u0 and the precession angle's offsets, on the separatrix (m = 1) or off it.
+  void set_separatrix_phase(const Constants& k, long double cn0, long double sn0);
+  void set_elliptic_phase(const Constants& k, long double cn0, long double sn0, long double dn0);
   // The elliptic regimes' evaluation in three parts, so that the stepper can advance G itself.
   struct Phase {
     long double j = 0;              // u = u_r + 2jK

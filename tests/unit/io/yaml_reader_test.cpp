@@ -48,8 +48,9 @@ TEST(YamlReader, UnterminatedQuoteIsReportedWhereItOpens) {
   const auto message = [](const std::string& text) {
     return parse_error_of([&] { YamlNode::load_string(text, "q.yaml"); });
   };
-  EXPECT_NE(message("name: \"abc\nbodies: []\n").find("q.yaml:1:7: malformed YAML: this quoted "
-                                                     "string has no closing \""),
+  EXPECT_NE(message("name: \"abc\nbodies: []\n")
+                .find("q.yaml:1:7: malformed YAML: this quoted "
+                      "string has no closing \""),
             std::string::npos);
   EXPECT_NE(message("bodies:\n  - name: 'rod\n").find("q.yaml:2:11:"), std::string::npos);
   // Inside a flow map yaml-cpp notices the missing brace itself.
