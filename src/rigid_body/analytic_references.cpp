@@ -111,8 +111,7 @@ AsymmetricRotation asymmetric_rotation(const Vec3& I, const Vec3& w) {
 SteadyPrecession steady_precession(const SymmetricTop& top, double theta, double spin) {
   check_top(top);
   check_angle(theta);
-  const double cos_theta = std::abs(theta - std::numbers::pi / 2) < 1e-300 ? 0.0 : std::cos(theta);
-  return precession_roots(top.transverse_moment * cos_theta, -top.axial_moment * spin,
+  return precession_roots(top.transverse_moment * std::cos(theta), -top.axial_moment * spin,
                           top.mass * top.gravity * top.com_distance, "steady precession");
 }
 

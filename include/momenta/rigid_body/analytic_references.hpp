@@ -73,14 +73,15 @@ struct SymmetricTop {
 /// The two steady precession rates φ̇ (rad/s) at a fixed nutation angle.
 struct SteadyPrecession {
   double slow;  ///< → m g l/(I3 ω3) for a fast top
-  double fast;  ///< → I3 ω3/(I1 cos θ) for a fast top; ±∞ for a horizontal axle
+  double fast;  ///< → I3 ω3/(I1 cos θ) for a fast top; → ±∞ as the axle turns horizontal
 };
 
 /// Roots of I1 cos θ φ̇² − I3 ω3 φ̇ + m g l = 0 (θ̈ = 0 with θ̇ = 0; Goldstein eq. 5.76), for the
 /// nutation angle `theta` (rad, 0 < θ < π) and the spin `spin` ω3 (rad/s), computed without
-/// cancellation. At θ = π/2 the equation is linear: slow = m g l/(I3 ω3) exactly. Throws
-/// InvalidArgument where no steady precession exists (I3² ω3² < 4 I1 m g l cos θ, or ω3 = 0 at
-/// θ = π/2), showing the discriminant.
+/// cancellation. As θ → π/2 the equation turns linear: slow → m g l/(I3 ω3), fast → ±∞ (at the
+/// double nearest π/2, cos θ = 6.1e-17: slow is m g l/(I3 ω3) to an ulp, fast finite but
+/// ~1e16 times the slow). Throws InvalidArgument where no steady precession exists
+/// (I3² ω3² < 4 I1 m g l cos θ), showing the discriminant.
 SteadyPrecession steady_precession(const SymmetricTop& top, double theta, double spin);
 
 /// The same when the spin is given relative to the precessing frame, ψ̇ (rad/s), as a motor on a

@@ -102,5 +102,49 @@ TEST(Reactions, OffsetJointFrame) {
   EXPECT_MATRIX_NEAR(r.moment, -Vec3(0.3, 0, 0).cross(Vec3(0, 0, -m * g)), 1e-14);
 }
 
+// Every reporting frame with turned placements: a bracket A fixed to the world at a turned pose,
+// a link B hinged to it with both joint placements turned and offset, held at rest. Statics of
+// B alone: the joint carries its weight, f_W = −m_B g, with moment n_W = −(p_cm − p_J') × m_B g
+// about the joint centre J'. The poses are composed here from the placements the test gives.
+TEST(Reactions, EveryFrameWithTurnedPlacements) {
+  const double m_B = 1.5, g = 9.81;
+  const Vec3 c_B(0.3, -0.1, 0.2);
+  const Transform X_WA(rotation_from_axis_angle(Vec3(1, 1, 0), 0.5), Vec3(0.1, 0.2, 0.3));
+  const Transform X_AJ(rotation_from_axis_angle(Vec3(0, 1, 2), -0.8), Vec3(0.4, 0, 0));
+  const Transform X_BJ(rotation_from_axis_angle(Vec3(3, 0, 1), 1.1), Vec3(-0.1, 0.05, 0));
+  model::ModelBuilder b;
+  b.set_gravity(Vec3(0, 0, -g));
+  b.add_body("bracket", inertia::MassProperties(2.0, Vec3(0.1, 0, 0), 0.01 * Mat3::Identity()));
+  b.add_body("link", inertia::MassProperties(m_B, c_B, Vec3(0.02, 0.03, 0.04).asDiagonal()));
+  b.add_joint(test::make_joint("mount", JointType::fixed, "world", "bracket", Vec3::UnitZ(), X_WA));
+  auto hinge =
+      test::make_joint("hinge", JointType::revolute, "bracket", "link", Vec3::UnitZ(), X_AJ);
+  hinge.X_CJ = X_BJ;
+  b.add_joint(hinge);
+  const Model model = b.build();
+  Data data(model);
+  const VecX zero = VecX::Zero(1);
+  joint_reactions(model, data, zero, zero, zero);
+
+  // At q = 0, J' coincides with J: X_WB = X_WA X_AJ X_BJ⁻¹.
+  const Mat3 R_WJ = X_WA.R * X_AJ.R;
+  const Vec3 p_J_W = X_WA.p + X_WA.R * X_AJ.p;
+  const Mat3 R_WB = R_WJ * X_BJ.R.transpose();
+  const Vec3 p_Bo_W = p_J_W - R_WB * X_BJ.p;
+  const Vec3 p_cm_W = p_Bo_W + R_WB * c_B;
+  const Vec3 weight(0, 0, -m_B * g);
+  const Vec3 f_W = -weight;
+  const Vec3 n_W = -(p_cm_W - p_J_W).cross(weight);
+  const auto expect = [&](ReactionFrame frame, const Mat3& R_WF) {
+    const JointReaction r = joint_reaction(model, data, 1, frame);
+    EXPECT_MATRIX_NEAR(r.force, R_WF.transpose() * f_W, 1e-13);
+    EXPECT_MATRIX_NEAR(r.moment, R_WF.transpose() * n_W, 1e-13);
+  };
+  expect(ReactionFrame::world, Mat3::Identity());
+  expect(ReactionFrame::parent, X_WA.R);
+  expect(ReactionFrame::joint, R_WJ);
+  expect(ReactionFrame::child, R_WB);
+}
+
 }  // namespace
 }  // namespace momenta::dynamics

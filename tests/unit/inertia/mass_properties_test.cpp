@@ -1,5 +1,8 @@
 #include "momenta/inertia/mass_properties.hpp"
 
+#include <cmath>
+#include <numbers>
+
 #include <gtest/gtest.h>
 
 #include "momenta/common/error.hpp"
@@ -67,6 +70,48 @@ TEST(MassProperties, RepeatedMomentsGiveCanonicalAxes) {
   EXPECT_MATRIX_NEAR(p.moments, Vec3(1, 2, 2), kTol);
   EXPECT_MATRIX_NEAR(p.R_BP.col(0).cwiseAbs(), Vec3::UnitZ(), kTol);
   EXPECT_NEAR(p.R_BP.determinant(), 1.0, kTol);
+}
+
+TEST(MassProperties, RepeatedMomentsOfATurnedBodyGiveTheAxesClosestToB) {
+  // A cylinder (moments 2, 2 about its cross-section, 1 about its axis n) turned so that n is
+  // no coordinate axis: the solver's basis of the repeated plane is arbitrary; momenta's is
+  // u = (e_k − n n_k)/|…| for the B axis e_k farthest from n, then n × u.
+  const Vec3 n = Vec3(1.0, 2.0, 2.0) / 3.0;
+  const Mat3 I = 2.0 * Mat3::Identity() - n * n.transpose();
+  const PrincipalAxes p = MassProperties(1.0, Vec3::Zero(), I).principal_axes();
+  EXPECT_MATRIX_NEAR(p.moments, Vec3(1, 2, 2), kTol);
+  EXPECT_NEAR(std::abs(p.R_BP.col(0).dot(n)), 1.0, kTol);
+  // n_x = 1/3 is the smallest component: e_x is farthest from n.
+  const Vec3 u = (Vec3::UnitX() - n * n.x()).normalized();
+  EXPECT_MATRIX_NEAR(p.R_BP.col(1), u, kTol);
+  EXPECT_MATRIX_NEAR(p.R_BP.col(2), p.R_BP.col(0).cross(u), kTol);
+  EXPECT_NEAR(p.R_BP.determinant(), 1.0, kTol);
+  EXPECT_MATRIX_NEAR(p.R_BP.transpose() * I * p.R_BP, Mat3(p.moments.asDiagonal()), kTol);
+  // A sphere's tensor turned by a rotation (equal moments up to round-off): B's own axes.
+  const Mat3 R = rotation_from_euler("ZYX", Vec3(0.7, -0.2, 1.9));
+  const Mat3 sphere = R * (0.4 * Mat3::Identity()) * R.transpose();
+  EXPECT_MATRIX_NEAR(MassProperties(1.0, Vec3::Zero(), sphere).principal_axes().R_BP,
+                     Mat3::Identity(), 0.0);
+}
+
+TEST(MassProperties, NearlyEqualMomentsAreDiagonalizedToHalfTheirGap) {
+  // Moments within 1e-10 of the largest count as repeated, and their plane gets B's axes: the
+  // tensor in those axes is then diagonal only to half the gap, here 5e-12 (documented limit).
+  // diag(1, 1 + 1e-11, 2) turned 45° about z: the canonical axes x, y leave ±5e-12 off the
+  // diagonal.
+  const double gap = 1e-11;
+  const Mat3 R = rotation_from_axis_angle(Vec3::UnitZ(), std::numbers::pi / 4);
+  const Mat3 I = R * Vec3(1.0, 1.0 + gap, 2.0).asDiagonal() * R.transpose();
+  const PrincipalAxes p = MassProperties(1.0, Vec3::Zero(), I).principal_axes();
+  EXPECT_MATRIX_NEAR(p.moments, Vec3(1.0, 1.0 + gap, 2.0), kTol);
+  EXPECT_MATRIX_NEAR(p.R_BP, Mat3::Identity(), kTol);
+  const Mat3 D = p.R_BP.transpose() * I * p.R_BP;
+  EXPECT_NEAR(std::abs(D(0, 1)), gap / 2, 1e-15);
+  // Ten times farther apart (1e-10 < gap), the moments are distinct: the solver's axes, and a
+  // diagonal to round-off.
+  const Mat3 I_apart = R * Vec3(1.0, 1.0 + 1e-9, 2.0).asDiagonal() * R.transpose();
+  const PrincipalAxes q = MassProperties(1.0, Vec3::Zero(), I_apart).principal_axes();
+  EXPECT_MATRIX_NEAR(q.R_BP.transpose() * I_apart * q.R_BP, Mat3(q.moments.asDiagonal()), kTol);
 }
 
 TEST(MassProperties, CompositeThenShiftEqualsShiftThenComposite) {

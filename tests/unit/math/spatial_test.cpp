@@ -3,6 +3,7 @@
 #include "momenta/math/spatial.hpp"
 #include "momenta/inertia/mass_properties.hpp"
 
+#include <numbers>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -33,6 +34,39 @@ TEST(Spatial, TransformActionsMatchMatrices) {
   EXPECT_MATRIX_NEAR((X * Y).motion_matrix(), X.motion_matrix() * Y.motion_matrix(), 1e-14);
   EXPECT_TRUE((X * X.inverse()).isApprox(Transform::identity()));
   EXPECT_MATRIX_NEAR(X.apply(Vec3(1, 2, 3)), X.R * Vec3(1, 2, 3) + X.p, 1e-15);
+}
+
+TEST(Spatial, TransformsAgainstFeatherstoneWrittenOut) {
+  // Featherstone 2008, eq. 2.24: ᴮX_A = [E 0; −E r× E] with E = R_ABᵀ and r = p_AoBo_A, its
+  // blocks typed here entry by entry (no library matrix helper involved).
+  const Transform X = some_transform();
+  const Mat3 E = X.R.transpose();
+  const Vec3 r = X.p;
+  Mat3 r_cross;
+  r_cross << 0, -r.z(), r.y(), r.z(), 0, -r.x(), -r.y(), r.x(), 0;
+  Mat6 B_X_A;
+  B_X_A << E, Mat3::Zero(), -E * r_cross, E;
+  const Vec6 m = (Vec6() << 0.1, -0.2, 0.3, 1.0, 2.0, -3.0).finished();
+  EXPECT_MATRIX_NEAR(X.act_motion_inverse(m), B_X_A * m, 1e-15);
+  // ᴬX_B = (ᴮX_A)⁻¹ = [Eᵀ 0; r× Eᵀ Eᵀ]; ᴬX_B* = [Eᵀ r× Eᵀ; 0 Eᵀ] (eq. 2.25–2.26).
+  Mat6 A_X_B, A_X_B_force;
+  A_X_B << E.transpose(), Mat3::Zero(), r_cross * E.transpose(), E.transpose();
+  A_X_B_force << E.transpose(), r_cross * E.transpose(), Mat3::Zero(), E.transpose();
+  EXPECT_MATRIX_NEAR(X.act_motion(m), A_X_B * m, 1e-15);
+  EXPECT_MATRIX_NEAR(X.act_force(m), A_X_B_force * m, 1e-15);
+  EXPECT_MATRIX_NEAR(A_X_B * B_X_A, Mat6::Identity(), 1e-15);
+
+  // By hand: B turned 90° about z and 1 m along x from A.
+  const Transform Z(rotation_from_axis_angle(Vec3::UnitZ(), std::numbers::pi / 2), Vec3(1, 0, 0));
+  // Spinning about Bo's z at 1 rad/s: Ao, 1 m from the axis, moves at p × ω = (0, −1, 0).
+  const Vec6 spin = (Vec6() << 0, 0, 1, 0, 0, 0).finished();
+  EXPECT_MATRIX_NEAR(Z.act_motion(spin), (Vec6() << 0, 0, 1, 0, -1, 0).finished(), 1e-16);
+  // A 1 N force along B's x at Bo is along A's y, with moment p × f = (0, 0, 1) N·m about Ao.
+  const Vec6 push = (Vec6() << 0, 0, 0, 1, 0, 0).finished();
+  EXPECT_MATRIX_NEAR(Z.act_force(push), (Vec6() << 0, 0, 1, 0, 1, 0).finished(), 1e-16);
+  // And back.
+  EXPECT_MATRIX_NEAR(Z.act_force_inverse(Z.act_force(push)), push, 1e-16);
+  EXPECT_MATRIX_NEAR(Z.act_motion_inverse(Z.act_motion(spin)), spin, 1e-16);
 }
 
 TEST(Spatial, CrossProducts) {

@@ -27,10 +27,26 @@ TEST(AnalyticReferences, SteadyPrecessionRootsSolveTheQuadratic) {
       EXPECT_LE(std::abs(p.slow), std::abs(p.fast));
     }
   }
-  // Horizontal axle: linear, the slow root is m g l/(I3 ω3) exactly and there is no fast one.
-  const SteadyPrecession h = steady_precession(kTop, std::numbers::pi / 2, 150.0);
-  EXPECT_EQ(h.slow, gyroscopic_precession_rate(kTop, 150.0));
-  EXPECT_TRUE(std::isinf(h.fast));
+  // Horizontal axle (θ the double nearest π/2, cos θ = 6.1e-17, no special case): the slow
+  // root is m g l/(I3 ω3) (1 + ε + …) with ε = I1 m g l cos θ/(I3 ω3)² ~ 1e-18, so equal to it
+  // to an ulp; the fast root is I3 ω3/(I1 cos θ) − slow, ~1e17 rad/s.
+  const double spin = 150.0, cos_half_pi = std::cos(std::numbers::pi / 2);
+  ASSERT_GT(cos_half_pi, 0.0);
+  const SteadyPrecession h = steady_precession(kTop, std::numbers::pi / 2, spin);
+  const double gyroscopic =
+      kTop.mass * kTop.gravity * kTop.com_distance / (kTop.axial_moment * spin);
+  EXPECT_REL_NEAR(h.slow, gyroscopic, test::kEps);
+  EXPECT_REL_NEAR(h.fast, kTop.axial_moment * spin / (kTop.transverse_moment * cos_half_pi),
+                  4 * test::kEps);
+  // Just past π/2 (cos θ ≈ −1e-9) the fast root changes sign; the slow one keeps its first
+  // correction, 1 + ε (ε² ~ 1e-20 below round-off).
+  const double theta = std::numbers::pi / 2 + 1e-9;
+  const double H3 = kTop.axial_moment * spin;
+  const double epsilon = kTop.transverse_moment * kTop.mass * kTop.gravity * kTop.com_distance *
+                         std::cos(theta) / (H3 * H3);
+  const SteadyPrecession past = steady_precession(kTop, theta, spin);
+  EXPECT_REL_NEAR(past.slow, gyroscopic * (1 + epsilon), 2 * test::kEps);
+  EXPECT_LT(past.fast, 0.0);
   // Too slow a spin for the angle: no steady precession.
   EXPECT_THROW(steady_precession(kTop, 0.3, 10.0), InvalidArgument);
   EXPECT_THROW(steady_precession(kTop, 0.0, 150.0), InvalidArgument);
