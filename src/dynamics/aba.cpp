@@ -119,7 +119,7 @@ void accelerate(Data& data, int j, int v_index, Vec6& a, int n = N) {
 
 }  // namespace detail
 
-const VecX& aba(const Model& model, Data& data, const VecX& q, const VecX& v, const VecX& tau,
+const VecX& aba(const Model& model, Data& data, VecRef q, VecRef v, VecRef tau,
                 std::span<const Vec6> f_ext) {
   detail::check_data_and_q("aba", model, data, q);
   detail::check_nv("aba", "v", model, v);
@@ -253,7 +253,7 @@ const VecX& aba(const Model& model, Data& data, const VecX& q, const VecX& v, co
   return data.vdot;
 }
 
-VecX forward_dynamics(const Model& model, const VecX& q, const VecX& v, const VecX& tau,
+VecX forward_dynamics(const Model& model, VecRef q, VecRef v, VecRef tau,
                       std::span<const Vec6> f_ext) {
   Data data(model);
   return aba(model, data, q, v, tau, f_ext);

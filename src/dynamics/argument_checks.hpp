@@ -22,7 +22,7 @@ inline void check_size(const char* algorithm, const char* argument, long given, 
 
 /// data built for a model of this size; q of size nq.
 inline void check_data_and_q(const char* algorithm, const Model& model, const Data& data,
-                             const VecX& q) {
+                             VecRef q) {
   check_size(algorithm, "data (built for another model?)", static_cast<long>(data.X_WB.size()),
              model.num_bodies(), "one pose per body");
   check_size(algorithm, "q", q.size(), model.nq(), "nq");
@@ -30,7 +30,7 @@ inline void check_data_and_q(const char* algorithm, const Model& model, const Da
 
 /// A vector of the velocity space (v, vdot, tau) of size nv.
 inline void check_nv(const char* algorithm, const char* argument, const Model& model,
-                     const VecX& x) {
+                     VecRef x) {
   check_size(algorithm, argument, x.size(), model.nv(), "nv");
 }
 

@@ -47,7 +47,7 @@ void mirror_upper(MatX& M) {
 // quantities expressed in the fixed frame as in Pinocchio's crba): with composite inertias I_c
 // and motion subspaces S in W, M(λ, i) = S_λᵀ (I_c,i S_i) for every ancestor λ of joint i.
 // In W each entry is one 6-D dot product (no per-ancestor transform).
-const MatX& crba(const Model& model, Data& data, const VecX& q) {
+const MatX& crba(const Model& model, Data& data, VecRef q) {
   detail::check_data_and_q("crba", model, data, q);
   const auto& joints = model.joint_constants();
   const int nj = static_cast<int>(joints.size());
@@ -90,12 +90,12 @@ const MatX& crba(const Model& model, Data& data, const VecX& q) {
   return data.M;
 }
 
-MatX mass_matrix(const Model& model, const VecX& q) {
+MatX mass_matrix(const Model& model, VecRef q) {
   Data data(model);
   return crba(model, data, q);
 }
 
-void check_mass_matrix(const Model& model, const VecX& q) {
+void check_mass_matrix(const Model& model, VecRef q) {
   // The coordinates whose acceleration forward dynamics solves for: prescribed joints' motion
   // is given, so their bodies may carry no inertia.
   std::vector<int> free;

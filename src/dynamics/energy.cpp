@@ -23,12 +23,12 @@ double potential_energy(const Model& model, const Data& data) {
   return V;
 }
 
-double kinetic_energy(const Model& model, Data& data, const VecX& q, const VecX& v) {
+double kinetic_energy(const Model& model, Data& data, VecRef q, VecRef v) {
   forward_kinematics(model, data, q, v);
   return kinetic_energy(model, static_cast<const Data&>(data));
 }
 
-double potential_energy(const Model& model, Data& data, const VecX& q) {
+double potential_energy(const Model& model, Data& data, VecRef q) {
   forward_kinematics(model, data, q);
   return potential_energy(model, static_cast<const Data&>(data));
 }

@@ -90,7 +90,7 @@ void check_sizes(const Model& model, std::span<const double> signal_values,
 }  // namespace
 
 void force_element_forces(const Model& model, const Data& data,
-                          std::span<const double> signal_values, const VecX& q, const VecX& v,
+                          std::span<const double> signal_values, VecRef q, VecRef v,
                           VecX& tau, std::span<Vec6> f_ext) {
   check_sizes(model, signal_values, f_ext);
   tau.setZero(model.nv());
@@ -147,7 +147,7 @@ void force_element_forces(const Model& model, const Data& data,
   }
 }
 
-double spring_potential_energy(const Model& model, const Data& data, const VecX& q) {
+double spring_potential_energy(const Model& model, const Data& data, VecRef q) {
   double V = 0.0;
   for (const model::ForceElement& element : model.force_elements()) {
     if (const auto* s = std::get_if<LinearSpringDamper>(&element)) {
@@ -166,7 +166,7 @@ double spring_potential_energy(const Model& model, const Data& data, const VecX&
   return V;
 }
 
-double force_element_power(const Model& model, const Data& data, const VecX& v, const VecX& tau,
+double force_element_power(const Model& model, const Data& data, VecRef v, VecRef tau,
                            std::span<const Vec6> f_ext) {
   // τ·v on the joints; each wrench (in B about Bo) on its body's spatial velocity (in B).
   double power = tau.dot(v);

@@ -18,7 +18,7 @@ using VecN = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
 // joint contributes Ia = IA and pa = pA + IA (c + S v̇); in pass 3 its force is
 // τ = Sᵀ (IA a + pA), the force across the joint onto the articulated body it carries.
 const VecX& hybrid_dynamics(const Model& model, Data& data, const std::vector<char>& prescribed,
-                            const VecX& q, const VecX& v, const VecX& vdot_in, const VecX& tau_in,
+                            VecRef q, VecRef v, VecRef vdot_in, VecRef tau_in,
                             std::span<const Vec6> f_ext) {
   detail::check_data_and_q("hybrid_dynamics", model, data, q);
   detail::check_nv("hybrid_dynamics", "v", model, v);
@@ -101,8 +101,8 @@ const VecX& hybrid_dynamics(const Model& model, Data& data, const std::vector<ch
   return data.vdot;
 }
 
-const VecX& hybrid_dynamics(const Model& model, Data& data, const VecX& q, const VecX& v,
-                            const VecX& vdot_in, const VecX& tau_in, std::span<const Vec6> f_ext) {
+const VecX& hybrid_dynamics(const Model& model, Data& data, VecRef q, VecRef v,
+                            VecRef vdot_in, VecRef tau_in, std::span<const Vec6> f_ext) {
   return hybrid_dynamics(model, data, data.prescribed_mask, q, v, vdot_in, tau_in, f_ext);
 }
 

@@ -6,7 +6,7 @@
 
 namespace momenta::dynamics {
 
-void forward_kinematics(const Model& model, Data& data, const VecX& q) {
+void forward_kinematics(const Model& model, Data& data, VecRef q) {
   detail::check_data_and_q("forward_kinematics", model, data, q);
   const auto& joints = model.joint_constants();
   for (std::size_t j = 0; j < joints.size(); ++j) {
@@ -16,7 +16,7 @@ void forward_kinematics(const Model& model, Data& data, const VecX& q) {
   }
 }
 
-void forward_kinematics(const Model& model, Data& data, const VecX& q, const VecX& v) {
+void forward_kinematics(const Model& model, Data& data, VecRef q, VecRef v) {
   detail::check_data_and_q("forward_kinematics", model, data, q);
   detail::check_nv("forward_kinematics", "v", model, v);
   const auto& joints = model.joint_constants();
@@ -27,8 +27,8 @@ void forward_kinematics(const Model& model, Data& data, const VecX& q, const Vec
   }
 }
 
-void forward_kinematics(const Model& model, Data& data, const VecX& q, const VecX& v,
-                        const VecX& vdot) {
+void forward_kinematics(const Model& model, Data& data, VecRef q, VecRef v,
+                        VecRef vdot) {
   detail::check_nv("forward_kinematics", "vdot", model, vdot);
   forward_kinematics(model, data, q, v);
   const auto& joints = model.joint_constants();

@@ -24,12 +24,12 @@ Momentum momentum(const Model& model, const Data& data) {
   return m;
 }
 
-Momentum momentum(const Model& model, Data& data, const VecX& q, const VecX& v) {
+Momentum momentum(const Model& model, Data& data, VecRef q, VecRef v) {
   forward_kinematics(model, data, q, v);
   return momentum(model, static_cast<const Data&>(data));
 }
 
-Vec3 center_of_mass(const Model& model, Data& data, const VecX& q) {
+Vec3 center_of_mass(const Model& model, Data& data, VecRef q) {
   forward_kinematics(model, data, q);
   Vec3 first_moment = Vec3::Zero();
   for (int b = 1; b < model.num_bodies(); ++b) {

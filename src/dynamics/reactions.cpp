@@ -9,7 +9,7 @@
 
 namespace momenta::dynamics {
 
-void joint_reactions(const Model& model, Data& data, const VecX& q, const VecX& v, const VecX& vdot,
+void joint_reactions(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot,
                      std::span<const Vec6> f_ext) {
   detail::check_data_and_q("joint_reactions", model, data, q);
   detail::check_nv("joint_reactions", "v", model, v);

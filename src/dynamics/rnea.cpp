@@ -6,7 +6,7 @@
 
 namespace momenta::dynamics {
 
-const VecX& rnea(const Model& model, Data& data, const VecX& q, const VecX& v, const VecX& vdot,
+const VecX& rnea(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot,
                  std::span<const Vec6> f_ext) {
   detail::check_data_and_q("rnea", model, data, q);
   detail::check_nv("rnea", "v", model, v);
@@ -76,19 +76,19 @@ const VecX& rnea(const Model& model, Data& data, const VecX& q, const VecX& v, c
   return data.tau;
 }
 
-VecX inverse_dynamics(const Model& model, const VecX& q, const VecX& v, const VecX& vdot,
+VecX inverse_dynamics(const Model& model, VecRef q, VecRef v, VecRef vdot,
                       std::span<const Vec6> f_ext) {
   Data data(model);
   return rnea(model, data, q, v, vdot, f_ext);
 }
 
-const VecX& nonlinear_effects(const Model& model, Data& data, const VecX& q, const VecX& v) {
+const VecX& nonlinear_effects(const Model& model, Data& data, VecRef q, VecRef v) {
   data.scratch_nv.setZero();
   data.nle = rnea(model, data, q, v, data.scratch_nv);
   return data.nle;
 }
 
-const VecX& generalized_gravity(const Model& model, Data& data, const VecX& q) {
+const VecX& generalized_gravity(const Model& model, Data& data, VecRef q) {
   data.scratch_nv.setZero();
   data.g = rnea(model, data, q, data.scratch_nv, data.scratch_nv);
   return data.g;

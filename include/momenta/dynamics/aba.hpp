@@ -11,11 +11,11 @@ namespace momenta::dynamics {
 /// (size nv) and external wrenches f_ext (convention in rnea.hpp). Writes and returns
 /// data.vdot. Every joint is driven by its τ here, prescribed or not (hybrid_dynamics honours
 /// prescription). No allocation.
-const VecX& aba(const Model& model, Data& data, const VecX& q, const VecX& v, const VecX& tau,
+const VecX& aba(const Model& model, Data& data, VecRef q, VecRef v, VecRef tau,
                 std::span<const Vec6> f_ext = {});
 
 /// Allocating convenience form of aba.
-VecX forward_dynamics(const Model& model, const VecX& q, const VecX& v, const VecX& tau,
+VecX forward_dynamics(const Model& model, VecRef q, VecRef v, VecRef tau,
                       std::span<const Vec6> f_ext = {});
 
 }  // namespace momenta::dynamics

@@ -8,10 +8,10 @@ namespace momenta::dynamics {
 
 /// M(q) (nv × nv, symmetric positive definite for a valid model, both triangles filled), with
 /// kinetic energy ½ vᵀ M v. Writes and returns data.M; sets data.X_PB and data.S. No allocation.
-const MatX& crba(const Model& model, Data& data, const VecX& q);
+const MatX& crba(const Model& model, Data& data, VecRef q);
 
 /// Allocating convenience form of crba.
-MatX mass_matrix(const Model& model, const VecX& q);
+MatX mass_matrix(const Model& model, VecRef q);
 
 /// Checks that M(q) of the coordinates that are not prescribed is positive definite, so that
 /// forward dynamics has a unique answer. Throws InvalidArgument naming the first coordinate along
@@ -23,6 +23,6 @@ MatX mass_matrix(const Model& model, const VecX& q);
 /// largest diagonal entry (round-off in a singular M is far smaller — a rod turned 90° about its
 /// axis leaves 1e-33 of m L²; a physically lopsided but valid inertia ratio is far larger).
 /// Allocates: a model check, not a hot path.
-void check_mass_matrix(const Model& model, const VecX& q);
+void check_mass_matrix(const Model& model, VecRef q);
 
 }  // namespace momenta::dynamics

@@ -6,11 +6,11 @@
 namespace momenta::dynamics {
 
 /// Kinetic energy T = Σ ½ V_bᵀ I_b V_b = ½ vᵀ M(q) v (J). Runs forward_kinematics(q, v).
-double kinetic_energy(const Model& model, Data& data, const VecX& q, const VecX& v);
+double kinetic_energy(const Model& model, Data& data, VecRef q, VecRef v);
 
 /// Gravitational potential energy V = −Σ m_b g · p_WoBcm_W (J), zero with every centre of mass
 /// at the world origin. Runs forward_kinematics(q).
-double potential_energy(const Model& model, Data& data, const VecX& q);
+double potential_energy(const Model& model, Data& data, VecRef q);
 
 /// From data already filled by forward_kinematics (with v for the kinetic energy).
 double kinetic_energy(const Model& model, const Data& data);

@@ -30,18 +30,18 @@ namespace momenta::dynamics {
 /// there), and the parts that need u — the push k ℓ0 u of a compressed spring, the damper c ℓ̇ u —
 /// are left out at that instant rather than made NaN.
 void force_element_forces(const Model& model, const Data& data,
-                          std::span<const double> signal_values, const VecX& q, const VecX& v,
+                          std::span<const double> signal_values, VecRef q, VecRef v,
                           VecX& tau, std::span<Vec6> f_ext);
 
 /// Potential energy stored in the springs (linear and torsional) at configuration q (J).
 /// Preconditions: forward_kinematics(model, data, q) has run.
-double spring_potential_energy(const Model& model, const Data& data, const VecX& q);
+double spring_potential_energy(const Model& model, const Data& data, VecRef q);
 
 /// Power the force elements deliver to the system at (q, v) (W): τ·v plus, for every body
 /// load, the wrench's power on its body's velocity. Negative for dampers and friction; equals
 /// −d(spring energy)/dt for the conservative springs. Preconditions: forward_kinematics(model,
 /// data, q, v) has run; tau and f_ext as force_element_forces wrote them.
-double force_element_power(const Model& model, const Data& data, const VecX& v, const VecX& tau,
+double force_element_power(const Model& model, const Data& data, VecRef v, VecRef tau,
                            std::span<const Vec6> f_ext);
 
 /// True when no force element dissipates or injects energy: every damping and friction

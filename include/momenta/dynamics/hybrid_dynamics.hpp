@@ -17,12 +17,12 @@ namespace momenta::dynamics {
 /// coordinates; free ones copied from tau_in, prescribed ones the force the prescription needs).
 /// Returns data.vdot. No allocation. Consistency: rnea(q, v, data.vdot) == data.tau.
 const VecX& hybrid_dynamics(const Model& model, Data& data, const std::vector<char>& prescribed,
-                            const VecX& q, const VecX& v, const VecX& vdot_in, const VecX& tau_in,
+                            VecRef q, VecRef v, VecRef vdot_in, VecRef tau_in,
                             std::span<const Vec6> f_ext = {});
 
 /// As above with the model's own prescribed joints (Joint::is_prescribed()).
-const VecX& hybrid_dynamics(const Model& model, Data& data, const VecX& q, const VecX& v,
-                            const VecX& vdot_in, const VecX& tau_in,
+const VecX& hybrid_dynamics(const Model& model, Data& data, VecRef q, VecRef v,
+                            VecRef vdot_in, VecRef tau_in,
                             std::span<const Vec6> f_ext = {});
 
 /// The model's prescribed-joint mask (num_joints() entries) for the first overload.

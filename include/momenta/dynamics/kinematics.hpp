@@ -6,14 +6,14 @@
 namespace momenta::dynamics {
 
 /// Poses: sets data.X_PB, data.X_WB and data.S for configuration q (size nq).
-void forward_kinematics(const Model& model, Data& data, const VecX& q);
+void forward_kinematics(const Model& model, Data& data, VecRef q);
 
 /// Poses and velocities: also data.V_WB_B and data.c_B for velocity v (size nv).
-void forward_kinematics(const Model& model, Data& data, const VecX& q, const VecX& v);
+void forward_kinematics(const Model& model, Data& data, VecRef q, VecRef v);
 
 /// Poses, velocities and accelerations: also data.A_WB_B and data.A_bias_B for vdot (size nv).
-void forward_kinematics(const Model& model, Data& data, const VecX& q, const VecX& v,
-                        const VecX& vdot);
+void forward_kinematics(const Model& model, Data& data, VecRef q, VecRef v,
+                        VecRef vdot);
 
 /// Velocity of body b in the world, expressed in W about Bo: [w_WB_W; v_WBo_W] (after
 /// forward_kinematics with v).

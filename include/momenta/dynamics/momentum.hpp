@@ -20,10 +20,10 @@ struct Momentum {
 };
 
 /// Centre of mass of the system (m, in W) at configuration q. Runs forward_kinematics(q).
-Vec3 center_of_mass(const Model& model, Data& data, const VecX& q);
+Vec3 center_of_mass(const Model& model, Data& data, VecRef q);
 
 /// Momentum of the system at (q, v). Runs forward_kinematics(q, v).
-Momentum momentum(const Model& model, Data& data, const VecX& q, const VecX& v);
+Momentum momentum(const Model& model, Data& data, VecRef q, VecRef v);
 
 /// From data already filled by forward_kinematics(q, v).
 Momentum momentum(const Model& model, const Data& data);

@@ -24,7 +24,7 @@ struct JointReaction {
 /// Computes every joint's transmitted wrench for the motion (q, v, vdot) under gravity and
 /// external wrenches f_ext (convention in rnea.hpp); vdot typically comes from aba or
 /// hybrid_dynamics. Sets data.F_B, data.X_WB and what rnea sets. No allocation.
-void joint_reactions(const Model& model, Data& data, const VecX& q, const VecX& v, const VecX& vdot,
+void joint_reactions(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot,
                      std::span<const Vec6> f_ext = {});
 
 /// Joint j's reaction from data filled by joint_reactions, expressed in `frame`.

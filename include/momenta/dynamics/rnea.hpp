@@ -17,19 +17,19 @@ namespace momenta::dynamics {
 /// each joint transmits) and returns data.tau. Sizes q nq, v and vdot nv, f_ext empty or one
 /// per body, data built for the model: checked, InvalidArgument naming the argument otherwise
 /// (as in every dynamics algorithm). No allocation.
-const VecX& rnea(const Model& model, Data& data, const VecX& q, const VecX& v, const VecX& vdot,
+const VecX& rnea(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot,
                  std::span<const Vec6> f_ext = {});
 
 /// Allocating convenience form of rnea.
-VecX inverse_dynamics(const Model& model, const VecX& q, const VecX& v, const VecX& vdot,
+VecX inverse_dynamics(const Model& model, VecRef q, VecRef v, VecRef vdot,
                       std::span<const Vec6> f_ext = {});
 
 /// Bias forces C(q, v) v + g(q) (size nv): rnea with v̇ = 0 and no external force. Writes and
 /// returns data.nle.
-const VecX& nonlinear_effects(const Model& model, Data& data, const VecX& q, const VecX& v);
+const VecX& nonlinear_effects(const Model& model, Data& data, VecRef q, VecRef v);
 
 /// Generalized gravity g(q) = ∂V/∂q (in velocity coordinates; size nv): rnea with v = v̇ = 0.
 /// Writes and returns data.g.
-const VecX& generalized_gravity(const Model& model, Data& data, const VecX& q);
+const VecX& generalized_gravity(const Model& model, Data& data, VecRef q);
 
 }  // namespace momenta::dynamics

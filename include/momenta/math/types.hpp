@@ -14,4 +14,9 @@ using VecX = Eigen::VectorXd;
 using MatX = Eigen::MatrixXd;
 using Quat = Eigen::Quaterniond;
 
+/// A read-only view of any contiguous vector of doubles: a VecX, a segment of one, an
+/// Eigen::Map over a buffer (a NumPy array) — bound without a copy. The algorithms' vector
+/// inputs take this.
+using VecRef = Eigen::Ref<const VecX>;
+
 }  // namespace momenta

@@ -12,6 +12,7 @@
 #include "momenta/dynamics/momentum.hpp"
 #include "momenta/dynamics/point_kinematics.hpp"
 #include "momenta/dynamics/reactions.hpp"
+#include "momenta_test/tolerance.hpp"
 #include "momenta/dynamics/rnea.hpp"
 #include "momenta_test/allocation_counter.hpp"
 #include "momenta_test/multibody_models.hpp"
@@ -56,6 +57,21 @@ TEST(DynamicsAllocation, AlgorithmsDoNotAllocate) {
   model::difference(m, q, q_out, d);
   model::configuration_rate(m, q, v, qdot);
   EXPECT_EQ(test::allocation_count() - before, 0);
+
+  // Inputs that are parts of larger vectors (a stacked state [q; v], a mapped buffer) bind to
+  // the algorithms' Eigen::Ref parameters without a copy.
+  VecX state(m.nq() + m.nv());
+  state << q, v;
+  const Eigen::Map<const VecX> mapped(a.data(), a.size());
+  const long before_views = test::allocation_count();
+  aba(m, data, state.head(m.nq()), state.tail(m.nv()), mapped);
+  rnea(m, data, state.head(m.nq()), state.tail(m.nv()), mapped);
+  crba(m, data, state.head(m.nq()));
+  hybrid_dynamics(m, data, state.head(m.nq()), state.tail(m.nv()), mapped, mapped);
+  kinetic_energy(m, data, state.head(m.nq()), state.tail(m.nv()));
+  EXPECT_EQ(test::allocation_count() - before_views, 0);
+  EXPECT_MATRIX_NEAR(aba(m, data, state.head(m.nq()), state.tail(m.nv()), mapped),
+                     aba(m, data, q, v, a), 0.0);
 }
 
 }  // namespace
