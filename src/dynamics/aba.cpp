@@ -183,7 +183,8 @@ const VecX& aba(const Model& model, Data& data, VecRef q, VecRef v, VecRef tau,
         for (int r = 0; r < 6; ++r) pa[r] += IA(r, col) * cB[col];
       }
       detail::add_transformed_inertia(data.X_PB[i], IA, data.IA[p]);
-      kernel::add_force(data.X_PB[i].R, data.X_PB[i].p, pa, data.pA[p].data());
+      detail::to_parent(c, data.X_PB[i], pa, pa);
+      for (int r = 0; r < 6; ++r) data.pA[p][r] += pa[r];
       continue;
     }
     Vec6 pa = pA;
@@ -219,8 +220,7 @@ const VecX& aba(const Model& model, Data& data, VecRef q, VecRef v, VecRef tau,
     const int i = c.child;
     const int p = c.parent;
     Vec6& a = data.A_gf[i];
-    kernel::motion_inverse(data.X_PB[i].R, data.X_PB[i].p,
-                           p == 0 ? a_base.data() : data.A_gf[p].data(), a.data());
+    detail::to_child(c, data.X_PB[i], p == 0 ? a_base.data() : data.A_gf[p].data(), a.data());
     for (int r = 0; r < 6; ++r) a[r] += data.c_B[i][r];
     if (c.nv == 1) {
       const double* U = data.U[j].data();

@@ -29,8 +29,7 @@ inline void check_data_and_q(const char* algorithm, const Model& model, const Da
 }
 
 /// A vector of the velocity space (v, vdot, tau) of size nv.
-inline void check_nv(const char* algorithm, const char* argument, const Model& model,
-                     VecRef x) {
+inline void check_nv(const char* algorithm, const char* argument, const Model& model, VecRef x) {
   check_size(algorithm, argument, x.size(), model.nv(), "nv");
 }
 

@@ -57,9 +57,22 @@ const MatX& crba(const Model& model, Data& data, VecRef q) {
     const auto& c = joints[j];
     const int i = c.child;
     detail::position_step(c, j, q.data(), data);
-    data.X_WB[i] = data.X_WB[c.parent] * data.X_PB[i];
-    for (int k = 0; k < c.nv; ++k) {
-      data.S_W.row(c.v_index + k) = data.X_WB[i].act_motion(data.S[j].col(k)).transpose();
+    const Transform& X_WP = data.X_WB[c.parent];
+    Transform& X_WB = data.X_WB[i];
+    if (c.turns_about_axis) {
+      // R_WB = R_WP Rot_k(q): two columns of R_WP mix; S in W is [R_WB e_k; p_WB × R_WB e_k].
+      const int k = c.S_basis;
+      const int a = (k + 1) % 3, b = (k + 2) % 3;  // X_PB.R = Rot_k: c at (a, a), s at (b, a)
+      const double cq = data.X_PB[i].R(a, a), sq = data.X_PB[i].R(b, a);
+      detail::multiply_basis_rotation(X_WP.R, k, cq, sq, X_WB.R);
+      X_WB.p = X_WP.p + X_WP.R * data.X_PB[i].p;
+      const Vec3 w = X_WB.R.col(k);
+      data.S_W.row(c.v_index) << w.transpose(), X_WB.p.cross(w).transpose();
+    } else {
+      X_WB = X_WP * data.X_PB[i];
+      for (int k = 0; k < c.nv; ++k) {
+        data.S_W.row(c.v_index + k) = X_WB.act_motion(data.S[j].col(k)).transpose();
+      }
     }
     data.I_composite[i] = model.spatial_inertia(i).transformed(data.X_WB[i]);
   }

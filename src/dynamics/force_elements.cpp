@@ -90,8 +90,8 @@ void check_sizes(const Model& model, std::span<const double> signal_values,
 }  // namespace
 
 void force_element_forces(const Model& model, const Data& data,
-                          std::span<const double> signal_values, VecRef q, VecRef v,
-                          VecX& tau, std::span<Vec6> f_ext) {
+                          std::span<const double> signal_values, VecRef q, VecRef v, VecX& tau,
+                          std::span<Vec6> f_ext) {
   check_sizes(model, signal_values, f_ext);
   tau.setZero(model.nv());
   for (Vec6& f : f_ext) f.setZero();

@@ -13,15 +13,90 @@
 
 namespace momenta::dynamics::detail {
 
+/// out = ᴮX_λ m: a motion vector of joint c's parent carried into its child, by the joint's
+/// current X_PB (the half-cost form for a joint turning about a coordinate axis).
+[[gnu::always_inline]] inline void to_child(const JointConstants& c, const Transform& X,
+                                            const double* m, double* out) {
+  if (c.turns_about_axis) {
+    // X.R = Rot_k(q): c = R(i, i), s = R(j, i) with (k, i, j) cyclic.
+    switch (c.S_basis) {
+      case 0:
+        return kernel::motion_inverse_about_axis<0>(X.R(1, 1), X.R(2, 1), X.p, m, out);
+      case 1:
+        return kernel::motion_inverse_about_axis<1>(X.R(2, 2), X.R(0, 2), X.p, m, out);
+      default:
+        return kernel::motion_inverse_about_axis<2>(X.R(0, 0), X.R(1, 0), X.p, m, out);
+    }
+  }
+  kernel::motion_inverse(X.R, X.p, m, out);
+}
+
+/// out = ᴾX_B* f: a force on joint c's child carried to its parent (`out` may alias `f`).
+[[gnu::always_inline]] inline void to_parent(const JointConstants& c, const Transform& X,
+                                             const double* f, double* out) {
+  if (c.turns_about_axis) {
+    switch (c.S_basis) {
+      case 0:
+        return kernel::force_about_axis<0>(X.R(1, 1), X.R(2, 1), X.p, f, out);
+      case 1:
+        return kernel::force_about_axis<1>(X.R(2, 2), X.R(0, 2), X.p, f, out);
+      default:
+        return kernel::force_about_axis<2>(X.R(0, 0), X.R(1, 0), X.p, f, out);
+    }
+  }
+  kernel::force(X.R, X.p, f, out);
+}
+
 /// Position step of joint j: data.X_PB[child] and data.S[j] from q.
 inline void position_step(const JointConstants& c, int j, const double* q, Data& data) {
   joint_position(c, q + c.q_index, data.X_PB[c.child], data.S[j]);
 }
 
-/// Velocity step of joint j after its position step: V_WB_B and c_B of its child from v.
-[[gnu::always_inline]] inline void velocity_after_position(const JointConstants& c, int j,
-                                                           const double* q, const double* v,
-                                                           Data& data) {
+/// The velocity step of a joint turning about coordinate axis K of its child
+/// (c.turns_about_axis): X_PB = (Rot_K(q), p_PJ), then V and c_B, every index known at compile
+/// time.
+template <int K>
+[[gnu::always_inline]] inline void velocity_step_about_axis(const JointConstants& c,
+                                                            const double* q, const double* v,
+                                                            Data& data) {
+  constexpr int I = (K + 1) % 3, J = (K + 2) % 3;
+  const int i = c.child;
+  Transform& X = data.X_PB[i];
+  const double cq = std::cos(q[c.q_index]), sq = std::sin(q[c.q_index]);
+  X.R.setZero();
+  X.R(I, I) = cq;
+  X.R(J, I) = sq;
+  X.R(I, J) = -sq;
+  X.R(J, J) = cq;
+  X.R(K, K) = 1.0;
+  X.p = c.X_PJ.p;
+  const double w = v[c.v_index];
+  double V[6];
+  double cB[6] = {0, 0, 0, 0, 0, 0};
+  kernel::motion_inverse_about_axis<K>(cq, sq, X.p, data.V_WB_B[c.parent].data(), V);
+  // S v̄ = v̄ e_K, and (V_λ + S v̄) ×m S v̄ = V_λ ×m S v̄.
+  kernel::add_cross_motion_axis<K>(V, w, cB);
+  V[K] += w;
+  for (int r = 0; r < 6; ++r) {
+    data.V_WB_B[i][r] = V[r];
+    data.c_B[i][r] = cB[r];
+  }
+}
+
+/// Position and velocity step of joint j: X_PB, S, then V_WB_B and c_B of its child from v.
+[[gnu::always_inline]] inline void velocity_step(const JointConstants& c, int j, const double* q,
+                                                 const double* v, Data& data) {
+  if (c.turns_about_axis) {
+    switch (c.S_basis) {
+      case 0:
+        return velocity_step_about_axis<0>(c, q, v, data);
+      case 1:
+        return velocity_step_about_axis<1>(c, q, v, data);
+      default:
+        return velocity_step_about_axis<2>(c, q, v, data);
+    }
+  }
+  position_step(c, j, q, data);
   const int i = c.child;
   const Transform& X = data.X_PB[i];
   const double* vj = v + c.v_index;
@@ -45,13 +120,6 @@ inline void position_step(const JointConstants& c, int j, const double* q, Data&
     data.V_WB_B[i][r] = V[r];
     data.c_B[i][r] = cB[r];
   }
-}
-
-/// Position and velocity step of joint j: X_PB, S, then V_WB_B and c_B of its child from v.
-[[gnu::always_inline]] inline void velocity_step(const JointConstants& c, int j, const double* q,
-                                                 const double* v, Data& data) {
-  position_step(c, j, q, data);
-  velocity_after_position(c, j, q, v, data);
 }
 
 }  // namespace momenta::dynamics::detail

@@ -101,8 +101,8 @@ const VecX& hybrid_dynamics(const Model& model, Data& data, const std::vector<ch
   return data.vdot;
 }
 
-const VecX& hybrid_dynamics(const Model& model, Data& data, VecRef q, VecRef v,
-                            VecRef vdot_in, VecRef tau_in, std::span<const Vec6> f_ext) {
+const VecX& hybrid_dynamics(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot_in,
+                            VecRef tau_in, std::span<const Vec6> f_ext) {
   return hybrid_dynamics(model, data, data.prescribed_mask, q, v, vdot_in, tau_in, f_ext);
 }
 

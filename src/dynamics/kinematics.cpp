@@ -27,8 +27,7 @@ void forward_kinematics(const Model& model, Data& data, VecRef q, VecRef v) {
   }
 }
 
-void forward_kinematics(const Model& model, Data& data, VecRef q, VecRef v,
-                        VecRef vdot) {
+void forward_kinematics(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot) {
   detail::check_nv("forward_kinematics", "vdot", model, vdot);
   forward_kinematics(model, data, q, v);
   const auto& joints = model.joint_constants();

@@ -38,8 +38,8 @@ PointKinematics point_kinematics(const Model& model, const Data& data, int b, co
   return k;
 }
 
-PointKinematics point_kinematics(const Model& model, Data& data, VecRef q, VecRef v,
-                                 VecRef vdot, int b, const Vec3& p_BoP_B) {
+PointKinematics point_kinematics(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot,
+                                 int b, const Vec3& p_BoP_B) {
   check_body(model, b, "point_kinematics");
   forward_kinematics(model, data, q, v, vdot);
   return point_kinematics(model, static_cast<const Data&>(data), b, p_BoP_B);

@@ -29,7 +29,7 @@ const VecX& rnea(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot
     const double* cB = data.c_B[i].data();
     const Transform& X = data.X_PB[i];
     double A[6];
-    kernel::motion_inverse(X.R, X.p, data.A_gf[c.parent].data(), A);
+    detail::to_child(c, X, data.A_gf[c.parent].data(), A);
     for (int r = 0; r < 6; ++r) A[r] += cB[r];
     if (c.S_basis >= 0) {
       kernel::add_basis(c.S_basis, vdot[c.v_index], A);
@@ -71,7 +71,7 @@ const VecX& rnea(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot
       for (int k = 0; k < c.nv; ++k) data.tau[c.v_index + k] = data.S[j].col(k).dot(data.F_B[i]);
     }
     carried_to = c.parent;
-    kernel::force(data.X_PB[i].R, data.X_PB[i].p, F, carried);
+    detail::to_parent(c, data.X_PB[i], F, carried);
   }
   return data.tau;
 }

@@ -404,6 +404,8 @@ class ModelAssembler {
         e[k] = 1.0;
         if (c.S_C == e) c.S_basis = k;
       }
+      c.turns_about_axis = j.type == JointType::revolute && c.child_at_joint && c.S_basis >= 0 &&
+                           c.S_basis < 3 && j.X_PJ.R == Mat3::Identity();
     }
     return c;
   }

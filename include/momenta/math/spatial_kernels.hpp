@@ -88,6 +88,46 @@ inline void force_inverse(const Mat3& R, const Vec3& p, const double* f, double*
   out[5] = f2;
 }
 
+// --- Transforms whose rotation turns about coordinate axis K only (a revolute joint's) -------
+// R = Rot_K(θ) given by c = cos θ, s = sin θ: with (K, I, J) cyclic, R e_I = c e_I + s e_J and
+// R e_J = −s e_I + c e_J. Half the products of the general forms above.
+
+/// out = ᴮX_A m for X_AB = (Rot_K(θ), p).
+template <int K>
+inline void motion_inverse_about_axis(double c, double s, const Vec3& p, const double* m,
+                                      double* out) {
+  constexpr int I = (K + 1) % 3, J = (K + 2) % 3;
+  const double v0 = m[3] - (p[1] * m[2] - p[2] * m[1]);
+  const double v1 = m[4] - (p[2] * m[0] - p[0] * m[2]);
+  const double v2 = m[5] - (p[0] * m[1] - p[1] * m[0]);
+  const double v[3] = {v0, v1, v2};
+  out[I] = c * m[I] + s * m[J];
+  out[J] = c * m[J] - s * m[I];
+  out[K] = m[K];
+  out[3 + I] = c * v[I] + s * v[J];
+  out[3 + J] = c * v[J] - s * v[I];
+  out[3 + K] = v[K];
+}
+
+/// out = ᴬX_B* f for X_AB = (Rot_K(θ), p). `out` may alias `f`.
+template <int K>
+inline void force_about_axis(double c, double s, const Vec3& p, const double* f, double* out) {
+  constexpr int I = (K + 1) % 3, J = (K + 2) % 3;
+  double n[3], g[3];
+  n[I] = c * f[I] - s * f[J];
+  n[J] = s * f[I] + c * f[J];
+  n[K] = f[K];
+  g[I] = c * f[3 + I] - s * f[3 + J];
+  g[J] = s * f[3 + I] + c * f[3 + J];
+  g[K] = f[3 + K];
+  out[0] = n[0] + p[1] * g[2] - p[2] * g[1];
+  out[1] = n[1] + p[2] * g[0] - p[0] * g[2];
+  out[2] = n[2] + p[0] * g[1] - p[1] * g[0];
+  out[3] = g[0];
+  out[4] = g[1];
+  out[5] = g[2];
+}
+
 /// out += v ×m m (Featherstone's crm(v) m).
 inline void add_cross_motion(const double* v, const double* m, double* out) {
   out[0] += v[1] * m[2] - v[2] * m[1];

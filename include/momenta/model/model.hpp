@@ -48,6 +48,10 @@ struct JointConstants {
   /// 1-dof joints whose S_C is a unit basis vector e_k: k (0–2 rotation, 3–5 translation); −1
   /// otherwise. The algorithms' fast path for axis-aligned joints.
   int S_basis = -1;
+  /// A revolute joint about the coordinate axis S_basis (< 3) of its child, with the child at
+  /// the joint and the joint frame parallel to the parent's: X_PB = (Rot_k(q), p_PJ), whose
+  /// transforms cost half the general ones (kernel::*_about_axis).
+  bool turns_about_axis = false;
   Vec3 axis = Vec3::UnitZ();
   Vec3 axis2 = Vec3::UnitY();
 };

@@ -12,10 +12,10 @@
 #include "momenta/dynamics/momentum.hpp"
 #include "momenta/dynamics/point_kinematics.hpp"
 #include "momenta/dynamics/reactions.hpp"
-#include "momenta_test/tolerance.hpp"
 #include "momenta/dynamics/rnea.hpp"
 #include "momenta_test/allocation_counter.hpp"
 #include "momenta_test/multibody_models.hpp"
+#include "momenta_test/tolerance.hpp"
 
 namespace momenta::dynamics {
 namespace {

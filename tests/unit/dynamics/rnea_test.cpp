@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "momenta/dynamics/aba.hpp"
+#include "momenta/dynamics/crba.hpp"
 #include "momenta/dynamics/kinematics.hpp"
 #include "momenta_test/hand_models.hpp"
 #include "momenta_test/tolerance.hpp"
@@ -53,6 +55,51 @@ TEST(Rnea, AllocatingFormMatches) {
   const VecX q = VecX::LinSpaced(2, 0.3, -0.5), v = VecX::LinSpaced(2, 1, 2),
              a = VecX::LinSpaced(2, -1, 3);
   EXPECT_EQ(inverse_dynamics(model, q, v, a), rnea(model, data, q, v, a));
+}
+
+// Joints turning about a coordinate axis of a child at the joint, with the joint frame parallel
+// to the parent's, take the half-cost transforms (JointConstants::turns_about_axis). The same
+// chain with each joint frame pre-turned by α about its own axis takes the general path and is
+// the same mechanism at q − α: every algorithm must agree to round-off.
+TEST(Rnea, JointsTurningAboutAnAxisAgreeWithTheGeneralPath) {
+  const double alpha = 0.3;
+  const auto chain = [&](bool pre_turned) {
+    model::ModelBuilder b;
+    b.set_gravity(Vec3(0, 0, -9.81));
+    for (int k = 0; k < 4; ++k) {
+      // Names built with += (GCC 12 warns falsely on "link" + std::to_string(k) under -O3).
+      std::string name = "link", parent = k == 0 ? "world" : "link", joint = "j";
+      name += std::to_string(k);
+      if (k > 0) parent += std::to_string(k - 1);
+      joint += std::to_string(k);
+      b.add_body(name, inertia::MassProperties(1.0 + k, Vec3(0.2, 0.05 * k, -0.1),
+                                               Vec3(0.02, 0.03, 0.04).asDiagonal()));
+      const Vec3 axis = Vec3::Unit(k % 3);
+      const Transform X_PJ(pre_turned ? rotation_from_axis_angle(axis, alpha) : Mat3::Identity(),
+                           k == 0 ? Vec3::Zero() : Vec3(0.4, 0.1, 0));
+      b.add_joint(test::make_joint(joint, model::JointType::revolute, parent, name, axis, X_PJ));
+    }
+    return b.build();
+  };
+  const Model fast = chain(false), general = chain(true);
+  for (int j = 0; j < 4; ++j) {
+    EXPECT_TRUE(fast.joint_constants()[j].turns_about_axis);
+    EXPECT_FALSE(general.joint_constants()[j].turns_about_axis);
+  }
+  const VecX q = (VecX(4) << 0.7, -1.2, 2.5, 0.4).finished();
+  const VecX q_general = q - VecX::Constant(4, alpha);
+  const VecX v = (VecX(4) << 1.5, -0.3, 0.8, 2.0).finished();
+  const VecX a = (VecX(4) << -0.4, 1.1, 0.2, -2.2).finished();
+  Data d_fast(fast), d_general(general);
+  EXPECT_MATRIX_NEAR(rnea(fast, d_fast, q, v, a), rnea(general, d_general, q_general, v, a), 1e-13);
+  EXPECT_MATRIX_NEAR(aba(fast, d_fast, q, v, a), aba(general, d_general, q_general, v, a), 1e-13);
+  EXPECT_MATRIX_NEAR(crba(fast, d_fast, q), crba(general, d_general, q_general), 1e-14);
+  forward_kinematics(fast, d_fast, q, v);
+  forward_kinematics(general, d_general, q_general, v);
+  for (int i = 1; i <= 4; ++i) {
+    EXPECT_MATRIX_NEAR(d_fast.V_WB_B[i], d_general.V_WB_B[i], 1e-14);
+    EXPECT_TRUE(d_fast.X_WB[i].isApprox(d_general.X_WB[i], 1e-14));
+  }
 }
 
 }  // namespace

@@ -69,6 +69,35 @@ TEST(Spatial, TransformsAgainstFeatherstoneWrittenOut) {
   EXPECT_MATRIX_NEAR(Z.act_motion_inverse(Z.act_motion(spin)), spin, 1e-16);
 }
 
+// The half-cost forms for a rotation about one coordinate axis (a revolute joint's) against the
+// general kernels, for each axis.
+template <int K>
+void check_about_axis(double angle) {
+  const Vec3 p(0.3, -0.7, 1.1);
+  const Mat3 R = rotation_from_axis_angle(Vec3::Unit(K), angle);
+  const Vec6 m = (Vec6() << 0.1, -0.2, 0.3, 1.0, 2.0, -3.0).finished();
+  Vec6 fast, general;
+  kernel::motion_inverse_about_axis<K>(std::cos(angle), std::sin(angle), p, m.data(), fast.data());
+  kernel::motion_inverse(R, p, m.data(), general.data());
+  EXPECT_MATRIX_NEAR(fast, general, 1e-15);
+  kernel::force_about_axis<K>(std::cos(angle), std::sin(angle), p, m.data(), fast.data());
+  kernel::force(R, p, m.data(), general.data());
+  EXPECT_MATRIX_NEAR(fast, general, 1e-15);
+  // Cross product with a basis vector, against the general one.
+  Vec6 e = Vec6::Zero();
+  e[K] = 2.5;
+  Vec6 basis = Vec6::Zero(), full = Vec6::Zero();
+  kernel::add_cross_motion_axis<K>(m.data(), 2.5, basis.data());
+  kernel::add_cross_motion(m.data(), e.data(), full.data());
+  EXPECT_MATRIX_NEAR(basis, full, 0.0);
+}
+
+TEST(Spatial, KernelsAboutACoordinateAxisMatchTheGeneralOnes) {
+  check_about_axis<0>(0.8);
+  check_about_axis<1>(-2.1);
+  check_about_axis<2>(2.9);
+}
+
 TEST(Spatial, CrossProducts) {
   const Vec6 v = (Vec6() << 0.4, -1.0, 0.7, 2.0, 0.1, -0.5).finished();
   const Vec6 m = (Vec6() << 1.0, 2.0, 3.0, -1.0, 0.5, 0.25).finished();
