@@ -9,6 +9,7 @@
 
 #include "forward_pass.hpp"
 #include "momenta/common/error.hpp"
+#include "spatial_inertia_ops.hpp"
 
 namespace momenta::dynamics {
 namespace {
@@ -43,16 +44,17 @@ void mirror_upper(MatX& M) {
 
 }  // namespace
 
-// The composite-rigid-body algorithm in world coordinates (Featherstone 2008, §6.2, with the
-// quantities expressed in the fixed frame as in Pinocchio's crba): with composite inertias I_c
-// and motion subspaces S in W, M(λ, i) = S_λᵀ (I_c,i S_i) for every ancestor λ of joint i.
-// In W each entry is one 6-D dot product (no per-ancestor transform).
+// The composite-rigid-body algorithm (Featherstone 2008, §6.2): M(λ, i) = S_λᵀ (I_c,i S_i) for
+// every ancestor λ of joint i, I_c,i the composite inertia of joint i's subtree. Composite
+// inertias are accumulated in body frames (the joint transforms are cheap there), the products
+// taken in W (as Pinocchio's crba does): each entry is then one 6-D dot product, with no
+// per-ancestor transform.
 const MatX& crba(const Model& model, Data& data, VecRef q) {
   detail::check_data_and_q("crba", model, data, q);
   const auto& joints = model.joint_constants();
   const int nj = static_cast<int>(joints.size());
 
-  // Poses, motion subspaces and body inertias in W.
+  // Poses, world poses and motion subspaces in W; composite inertias start as each body's own.
   for (int j = 0; j < nj; ++j) {
     const auto& c = joints[j];
     const int i = c.child;
@@ -66,37 +68,69 @@ const MatX& crba(const Model& model, Data& data, VecRef q) {
       const double cq = data.X_PB[i].R(a, a), sq = data.X_PB[i].R(b, a);
       detail::multiply_basis_rotation(X_WP.R, k, cq, sq, X_WB.R);
       X_WB.p = X_WP.p + X_WP.R * data.X_PB[i].p;
-      const Vec3 w = X_WB.R.col(k);
-      data.S_W.row(c.v_index) << w.transpose(), X_WB.p.cross(w).transpose();
+      const double w[3] = {X_WB.R(0, k), X_WB.R(1, k), X_WB.R(2, k)};
+      const Vec3& p = X_WB.p;
+      double* row = data.S_W.data() + c.v_index;  // column-major nv × 6: stride nv
+      const Eigen::Index ld = data.S_W.rows();
+      row[0] = w[0];
+      row[ld] = w[1];
+      row[2 * ld] = w[2];
+      row[3 * ld] = p[1] * w[2] - p[2] * w[1];
+      row[4 * ld] = p[2] * w[0] - p[0] * w[2];
+      row[5 * ld] = p[0] * w[1] - p[1] * w[0];
     } else {
       X_WB = X_WP * data.X_PB[i];
       for (int k = 0; k < c.nv; ++k) {
         data.S_W.row(c.v_index + k) = X_WB.act_motion(data.S[j].col(k)).transpose();
       }
     }
-    data.I_composite[i] = model.spatial_inertia(i).transformed(data.X_WB[i]);
+    data.I_composite[i] = model.spatial_inertia(i);
   }
 
-  // Composite inertias, leaves to root.
+  // Leaves to root: the composite inertia of each subtree in its own body frame (passed to the
+  // parent by the joint's transform, half cost for a joint turning about an axis); its force
+  // F = I_c S carried to W, and the upper triangle of column i, M(λ, i) = S_λᵀ F, as dot
+  // products with the rows of S_W of the joint and its ancestors. Joints that are not ancestors
+  // of one another have M = 0 there.
+  if (!data.all_dofs_related) data.M.setZero();
   for (int j = nj - 1; j >= 0; --j) {
     const auto& c = joints[j];
-    if (c.parent != 0) data.I_composite[c.parent] += data.I_composite[c.child];
-  }
-
-  // Upper triangle by columns: F = I_c S_i, then its products with the ancestors' S (and the
-  // joint's own). Joints that are not ancestors of one another have M = 0 there.
-  if (!data.all_dofs_related) data.M.setZero();
-  for (int j = 0; j < nj; ++j) {
-    const auto& c = joints[j];
-    const SpatialInertia& Ic = data.I_composite[c.child];
+    const int i = c.child;
+    const SpatialInertia& Ic = data.I_composite[i];
+    const Transform& X_WB = data.X_WB[i];
     for (int k = 0; k < c.nv; ++k) {
       const int col = c.v_index + k;
-      const Vec6 F = Ic * Vec6(data.S_W.row(col).transpose());
+      double F_B[6];
+      Vec6 F;
+      if (c.S_basis >= 0) {
+        kernel::inertia_column(Ic.mass, Ic.h, Ic.I_O, c.S_basis, F_B);
+      } else {
+        kernel::inertia_times(Ic.mass, Ic.h, Ic.I_O, data.S[j].col(k).data(), F_B);
+      }
+      kernel::force(X_WB.R, X_WB.p, F_B, F.data());
       for (const auto& [start, size] : data.support_ranges[j]) {
         // Only rows up to this column (the joint's own later columns come with them).
         const int rows = std::min(size, col + 1 - start);
         if (rows > 0) column_entries(data.S_W, start, rows, F, &data.M(start, col));
       }
+    }
+    if (c.parent == 0) continue;
+    const Transform& X = data.X_PB[i];
+    SpatialInertia& I_parent = data.I_composite[c.parent];
+    if (c.turns_about_axis) {
+      switch (c.S_basis) {
+        case 0:
+          I_parent += detail::transformed_about_axis<0>(Ic, X.R(1, 1), X.R(2, 1), X.p);
+          break;
+        case 1:
+          I_parent += detail::transformed_about_axis<1>(Ic, X.R(2, 2), X.R(0, 2), X.p);
+          break;
+        default:
+          I_parent += detail::transformed_about_axis<2>(Ic, X.R(0, 0), X.R(1, 0), X.p);
+          break;
+      }
+    } else {
+      I_parent += Ic.transformed(X);
     }
   }
   mirror_upper(data.M);

@@ -58,6 +58,30 @@ inline void add_transformed_inertia(const Transform& X_PB, const Mat6& I_B, Mat6
   }
 }
 
+// I.transformed(X_AB) for X_AB = (Rot_K(θ), p), a rotation about coordinate axis K given by
+// c = cos θ, s = sin θ (a revolute joint's, JointConstants::turns_about_axis): the rotation mixes
+// only rows and columns (I, J) = (K + 1, K + 2) mod 3, a third of the general products.
+template <int K>
+SpatialInertia transformed_about_axis(const SpatialInertia& in, double c, double s, const Vec3& p) {
+  constexpr int I = (K + 1) % 3, J = (K + 2) % 3;
+  const Mat3& A = in.I_O;
+  Mat3 B;  // R A Rᵀ with R e_I = c e_I + s e_J, R e_J = −s e_I + c e_J, R e_K = e_K
+  B(K, K) = A(K, K);
+  B(K, I) = B(I, K) = c * A(K, I) - s * A(K, J);
+  B(K, J) = B(J, K) = s * A(K, I) + c * A(K, J);
+  // The {I, J} block r A rᵀ, r = [c −s; s c].
+  const double tII = c * A(I, I) - s * A(J, I), tIJ = c * A(I, J) - s * A(J, J);
+  const double tJI = s * A(I, I) + c * A(J, I), tJJ = s * A(I, J) + c * A(J, J);
+  B(I, I) = c * tII - s * tIJ;
+  B(J, J) = s * tJI + c * tJJ;
+  B(I, J) = B(J, I) = s * tII + c * tIJ;
+  Vec3 h;
+  h[I] = c * in.h[I] - s * in.h[J];
+  h[J] = s * in.h[I] + c * in.h[J];
+  h[K] = in.h[K];
+  return SpatialInertia::moved(in.mass, h, B, p);
+}
+
 // The 6×6 matrix of a rigid-body spatial inertia, written into M.
 inline void set_inertia_matrix(const SpatialInertia& I, Mat6& M) {
   const Vec3& h = I.h;

@@ -60,7 +60,7 @@ struct Data {
   std::vector<Vec6> u;     ///< τ − Sᵀ pA per joint (leading nv entries).
 
   // --- Workspace of crba -----------------------------------------------------------------------
-  std::vector<SpatialInertia> I_composite;  ///< Composite inertia of B's subtree, in W about Wo.
+  std::vector<SpatialInertia> I_composite;  ///< Composite inertia of B's subtree, in B about Bo.
   /// nv × 6: row k is velocity coordinate k's motion-subspace column in W about Wo, transposed
   /// (so the products of crba run along contiguous memory).
   MatX S_W;

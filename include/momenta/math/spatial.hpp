@@ -180,30 +180,41 @@ struct SpatialInertia {
   /// This inertia (expressed in B about Bo) expressed in A about Ao, B at pose X_AB in A:
   /// ᴬX_B* I ᴮX_A.
   SpatialInertia transformed(const Transform& X_AB) const {
-    // Rotate about Bo, then move the reference point to Ao: with [a]×[b]× = b aᵀ − (a·b) 1,
-    // I_Ao = R I_Bo Rᵀ − [p]×[h_A]× − [h_A + m p]×[p]×
-    //      = R I_Bo Rᵀ − (h_A pᵀ + p h_Aᵀ + m p pᵀ) + (2 p·h_A + m p·p) 1,
-    // a symmetric sum computed on its six distinct entries.
+    // Rotate about Bo (R I_Bo Rᵀ on its six distinct entries, R h), then move to Ao.
     const Mat3& R = X_AB.R;
-    const Vec3& p = X_AB.p;
-    const Vec3 hA = R * h;
     Mat3 RI;  // R I_Bo
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) {
         RI(i, j) = R(i, 0) * I_O(0, j) + R(i, 1) * I_O(1, j) + R(i, 2) * I_O(2, j);
       }
     }
-    const double diag = 2.0 * (p[0] * hA[0] + p[1] * hA[1] + p[2] * hA[2]) +
-                        mass * (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    Mat3 I_rotated;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = i; j < 3; ++j) {
+        I_rotated(i, j) = I_rotated(j, i) =
+            RI(i, 0) * R(j, 0) + RI(i, 1) * R(j, 1) + RI(i, 2) * R(j, 2);
+      }
+    }
+    return moved(mass, R * h, I_rotated, X_AB.p);
+  }
+
+  /// The inertia (mass m, first moment h and rotational inertia I about a point O, all already
+  /// expressed along A's axes) moved to the point Ao, with O at p = p_AoO_A:
+  /// with [a]×[b]× = b aᵀ − (a·b) 1,
+  ///   I_Ao = I − [p]×[h]× − [h + m p]×[p]× = I − (h pᵀ + p hᵀ + m p pᵀ) + (2 p·h + m p·p) 1,
+  ///   h_Ao = h + m p,
+  /// a symmetric sum computed on its six distinct entries.
+  static SpatialInertia moved(double m, const Vec3& h, const Mat3& I, const Vec3& p) {
+    const double diag = 2.0 * (p[0] * h[0] + p[1] * h[1] + p[2] * h[2]) +
+                        m * (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
     Mat3 I_A;
     for (int i = 0; i < 3; ++i) {
       for (int j = i; j < 3; ++j) {
-        const double rotated = RI(i, 0) * R(j, 0) + RI(i, 1) * R(j, 1) + RI(i, 2) * R(j, 2);
-        const double shift = hA[i] * p[j] + p[i] * hA[j] + mass * p[i] * p[j];
-        I_A(i, j) = I_A(j, i) = rotated - shift + (i == j ? diag : 0.0);
+        const double shift = h[i] * p[j] + p[i] * h[j] + m * p[i] * p[j];
+        I_A(i, j) = I_A(j, i) = I(i, j) - shift + (i == j ? diag : 0.0);
       }
     }
-    return {mass, Vec3(hA[0] + mass * p[0], hA[1] + mass * p[1], hA[2] + mass * p[2]), I_A};
+    return {m, Vec3(h[0] + m * p[0], h[1] + m * p[1], h[2] + m * p[2]), I_A};
   }
 
   SpatialInertia& operator+=(const SpatialInertia& other) {

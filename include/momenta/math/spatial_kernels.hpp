@@ -202,4 +202,24 @@ inline void inertia_times(double m, const Vec3& h, const Mat3& I_O, const double
   out[5] = m * v[5] - (h[0] * v[1] - h[1] * v[0]);
 }
 
+/// out = I e_k, column k of the spatial inertia's matrix [I_O [h]×; [h]×ᵀ m 1]: inertia_times
+/// for an axis-aligned motion subspace, without products.
+inline void inertia_column(double m, const Vec3& h, const Mat3& I_O, int k, double* out) {
+  if (k < 3) {
+    // [I_O e_k; e_k × h].
+    const Vec3 lower = Vec3::Unit(k).cross(h);
+    for (int r = 0; r < 3; ++r) {
+      out[r] = I_O(r, k);
+      out[3 + r] = lower[r];
+    }
+  } else {
+    // [h × e_l; m e_l], l = k − 3.
+    const Vec3 upper = h.cross(Vec3::Unit(k - 3));
+    for (int r = 0; r < 3; ++r) {
+      out[r] = upper[r];
+      out[3 + r] = r == k - 3 ? m : 0.0;
+    }
+  }
+}
+
 }  // namespace momenta::kernel

@@ -92,6 +92,17 @@ void check_about_axis(double angle) {
   EXPECT_MATRIX_NEAR(basis, full, 0.0);
 }
 
+TEST(Spatial, InertiaColumnsAreTheMatrixColumns) {
+  const SpatialInertia I(
+      2.5, Vec3(0.3, -0.4, 0.5),
+      (Mat3() << 0.4, -0.01, 0.02, -0.01, 0.5, 0.03, 0.02, 0.03, 0.6).finished());
+  for (int k = 0; k < 6; ++k) {
+    Vec6 column;
+    kernel::inertia_column(I.mass, I.h, I.I_O, k, column.data());
+    EXPECT_MATRIX_NEAR(column, I.matrix().col(k), 0.0) << k;
+  }
+}
+
 TEST(Spatial, KernelsAboutACoordinateAxisMatchTheGeneralOnes) {
   check_about_axis<0>(0.8);
   check_about_axis<1>(-2.1);
