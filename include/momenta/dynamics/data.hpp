@@ -30,7 +30,8 @@ struct Data {
 
   // --- Position: forward_kinematics(q) (X_PB and S also by rnea, aba, crba, hybrid_dynamics) ----
   std::vector<Transform> X_PB;  ///< Pose of body B in its parent body frame P.
-  std::vector<Transform> X_WB;  ///< Pose of body B in the world. Not set by rnea/aba/crba.
+  std::vector<Transform> X_WB;  ///< Pose of body B in the world. Also set by crba and
+                                ///< joint_reactions; not by rnea/aba.
   /// Motion subspace of joint j in its child body frame (6 × nv_j, leading columns; constant
   /// for 1-dof joints and the spherical joint).
   std::vector<Mat6> S;
@@ -52,7 +53,9 @@ struct Data {
   std::vector<Vec6> F_B;
 
   // --- Workspace of rnea / aba / hybrid_dynamics ---------------------------------------------
-  std::vector<Vec6> A_gf;  ///< Acceleration shifted by −g (Featherstone's a₀ = −g trick), in B.
+  /// Acceleration shifted by −g (Featherstone's a₀ = −g trick), in B; rnea sets entry 0, the
+  /// world's, to [0; −g].
+  std::vector<Vec6> A_gf;
   std::vector<Mat6> IA;    ///< Articulated-body inertia, in B.
   std::vector<Vec6> pA;    ///< Articulated-body bias force, in B.
   std::vector<Mat6> U;     ///< IA S per joint (leading nv columns).
