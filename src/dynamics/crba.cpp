@@ -64,20 +64,16 @@ const MatX& crba(const Model& model, Data& data, VecRef q) {
     if (c.turns_about_axis) {
       // R_WB = R_WP Rot_k(q): two columns of R_WP mix; S in W is [R_WB e_k; p_WB × R_WB e_k].
       const int k = c.S_basis;
-      const int a = (k + 1) % 3, b = (k + 2) % 3;  // X_PB.R = Rot_k: c at (a, a), s at (b, a)
-      const double cq = data.X_PB[i].R(a, a), sq = data.X_PB[i].R(b, a);
-      detail::multiply_basis_rotation(X_WP.R, k, cq, sq, X_WB.R);
+      detail::with_axis_rotation(k, data.X_PB[i].R, [&](auto, double cq, double sq) {
+        detail::multiply_basis_rotation(X_WP.R, k, cq, sq, X_WB.R);
+      });
       X_WB.p = X_WP.p + X_WP.R * data.X_PB[i].p;
-      const double w[3] = {X_WB.R(0, k), X_WB.R(1, k), X_WB.R(2, k)};
-      const Vec3& p = X_WB.p;
-      double* row = data.S_W.data() + c.v_index;  // column-major nv × 6: stride nv
-      const Eigen::Index ld = data.S_W.rows();
-      row[0] = w[0];
-      row[ld] = w[1];
-      row[2 * ld] = w[2];
-      row[3 * ld] = p[1] * w[2] - p[2] * w[1];
-      row[4 * ld] = p[2] * w[0] - p[0] * w[2];
-      row[5 * ld] = p[0] * w[1] - p[1] * w[0];
+      const Vec3 w = X_WB.R.col(k);
+      const Vec3 p_cross_w = X_WB.p.cross(w);
+      for (int r = 0; r < 3; ++r) {
+        data.S_W(c.v_index, r) = w[r];
+        data.S_W(c.v_index, 3 + r) = p_cross_w[r];
+      }
     } else {
       X_WB = X_WP * data.X_PB[i];
       for (int k = 0; k < c.nv; ++k) {
@@ -118,17 +114,9 @@ const MatX& crba(const Model& model, Data& data, VecRef q) {
     const Transform& X = data.X_PB[i];
     SpatialInertia& I_parent = data.I_composite[c.parent];
     if (c.turns_about_axis) {
-      switch (c.S_basis) {
-        case 0:
-          I_parent += detail::transformed_about_axis<0>(Ic, X.R(1, 1), X.R(2, 1), X.p);
-          break;
-        case 1:
-          I_parent += detail::transformed_about_axis<1>(Ic, X.R(2, 2), X.R(0, 2), X.p);
-          break;
-        default:
-          I_parent += detail::transformed_about_axis<2>(Ic, X.R(0, 0), X.R(1, 0), X.p);
-          break;
-      }
+      detail::with_axis_rotation(c.S_basis, X.R, [&](auto k, double cq, double sq) {
+        I_parent += detail::transformed_about_axis<decltype(k)::value>(Ic, cq, sq, X.p);
+      });
     } else {
       I_parent += Ic.transformed(X);
     }

@@ -18,15 +18,9 @@ namespace momenta::dynamics::detail {
 [[gnu::always_inline]] inline void to_child(const JointConstants& c, const Transform& X,
                                             const double* m, double* out) {
   if (c.turns_about_axis) {
-    // X.R = Rot_k(q): c = R(i, i), s = R(j, i) with (k, i, j) cyclic.
-    switch (c.S_basis) {
-      case 0:
-        return kernel::motion_inverse_about_axis<0>(X.R(1, 1), X.R(2, 1), X.p, m, out);
-      case 1:
-        return kernel::motion_inverse_about_axis<1>(X.R(2, 2), X.R(0, 2), X.p, m, out);
-      default:
-        return kernel::motion_inverse_about_axis<2>(X.R(0, 0), X.R(1, 0), X.p, m, out);
-    }
+    return with_axis_rotation(c.S_basis, X.R, [&](auto k, double cq, double sq) {
+      kernel::motion_inverse_about_axis<decltype(k)::value>(cq, sq, X.p, m, out);
+    });
   }
   kernel::motion_inverse(X.R, X.p, m, out);
 }
@@ -35,14 +29,9 @@ namespace momenta::dynamics::detail {
 [[gnu::always_inline]] inline void to_parent(const JointConstants& c, const Transform& X,
                                              const double* f, double* out) {
   if (c.turns_about_axis) {
-    switch (c.S_basis) {
-      case 0:
-        return kernel::force_about_axis<0>(X.R(1, 1), X.R(2, 1), X.p, f, out);
-      case 1:
-        return kernel::force_about_axis<1>(X.R(2, 2), X.R(0, 2), X.p, f, out);
-      default:
-        return kernel::force_about_axis<2>(X.R(0, 0), X.R(1, 0), X.p, f, out);
-    }
+    return with_axis_rotation(c.S_basis, X.R, [&](auto k, double cq, double sq) {
+      kernel::force_about_axis<decltype(k)::value>(cq, sq, X.p, f, out);
+    });
   }
   kernel::force(X.R, X.p, f, out);
 }

@@ -4,6 +4,7 @@
 // Specialized per joint type; axis-aligned 1-dof joints at the child origin take a fast path.
 
 #include <cmath>
+#include <type_traits>
 
 #include "momenta/dynamics/data.hpp"
 #include "momenta/model/model.hpp"
@@ -30,6 +31,21 @@ inline void multiply_basis_rotation(const Mat3& A, int k, double c, double s, Ma
   out.col(i) = c * A.col(i) + s * A.col(j);
   out.col(j) = c * A.col(j) - s * A.col(i);
   out.col(k) = A.col(k);
+}
+
+// A joint turning about coordinate axis k of its child (JointConstants::turns_about_axis) has
+// X_PB.R = Rot_k(q), which holds c = cos q at (i, i) and s = sin q at (j, i), (k, i, j) cyclic.
+// Calls f(std::integral_constant<int, k>{}, c, s), so that f can take k as a template argument.
+template <class F>
+[[gnu::always_inline]] inline void with_axis_rotation(int k, const Mat3& R, F&& f) {
+  switch (k) {
+    case 0:
+      return f(std::integral_constant<int, 0>{}, R(1, 1), R(2, 1));
+    case 1:
+      return f(std::integral_constant<int, 1>{}, R(2, 2), R(0, 2));
+    default:
+      return f(std::integral_constant<int, 2>{}, R(0, 0), R(1, 0));
+  }
 }
 
 inline Mat3 quaternion_matrix(const double* wxyz) {

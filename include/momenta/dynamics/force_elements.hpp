@@ -30,8 +30,8 @@ namespace momenta::dynamics {
 /// there), and the parts that need u — the push k ℓ0 u of a compressed spring, the damper c ℓ̇ u —
 /// are left out at that instant rather than made NaN.
 void force_element_forces(const Model& model, const Data& data,
-                          std::span<const double> signal_values, VecRef q, VecRef v,
-                          VecX& tau, std::span<Vec6> f_ext);
+                          std::span<const double> signal_values, VecRef q, VecRef v, VecX& tau,
+                          std::span<Vec6> f_ext);
 
 /// Potential energy stored in the springs (linear and torsional) at configuration q (J).
 /// Preconditions: forward_kinematics(model, data, q) has run.

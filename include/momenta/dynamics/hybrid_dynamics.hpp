@@ -21,9 +21,8 @@ const VecX& hybrid_dynamics(const Model& model, Data& data, const std::vector<ch
                             std::span<const Vec6> f_ext = {});
 
 /// As above with the model's own prescribed joints (Joint::is_prescribed()).
-const VecX& hybrid_dynamics(const Model& model, Data& data, VecRef q, VecRef v,
-                            VecRef vdot_in, VecRef tau_in,
-                            std::span<const Vec6> f_ext = {});
+const VecX& hybrid_dynamics(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot_in,
+                            VecRef tau_in, std::span<const Vec6> f_ext = {});
 
 /// The model's prescribed-joint mask (num_joints() entries) for the first overload.
 std::vector<char> prescribed_joint_mask(const Model& model);

@@ -12,8 +12,7 @@ void forward_kinematics(const Model& model, Data& data, VecRef q);
 void forward_kinematics(const Model& model, Data& data, VecRef q, VecRef v);
 
 /// Poses, velocities and accelerations: also data.A_WB_B and data.A_bias_B for vdot (size nv).
-void forward_kinematics(const Model& model, Data& data, VecRef q, VecRef v,
-                        VecRef vdot);
+void forward_kinematics(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot);
 
 /// Velocity of body b in the world, expressed in W about Bo: [w_WB_W; v_WBo_W] (after
 /// forward_kinematics with v).

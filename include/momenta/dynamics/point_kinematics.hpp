@@ -28,8 +28,8 @@ struct PointKinematics {
 PointKinematics point_kinematics(const Model& model, const Data& data, int b, const Vec3& p_BoP_B);
 
 /// Convenience: runs forward_kinematics(q, v, vdot) then point_kinematics.
-PointKinematics point_kinematics(const Model& model, Data& data, VecRef q, VecRef v,
-                                 VecRef vdot, int b, const Vec3& p_BoP_B);
+PointKinematics point_kinematics(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot,
+                                 int b, const Vec3& p_BoP_B);
 
 /// The 6 × nv Jacobian of body b at the point P (p_BoP_B), world-aligned: [w_WB_W; v_WP_W] = J v.
 /// Rows 3–5 are the point's translational Jacobian. J must be 6 × nv. Preconditions:

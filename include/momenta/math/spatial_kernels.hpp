@@ -65,13 +65,6 @@ inline void force(const Mat3& R, const Vec3& p, const double* f, double* out) {
   out[5] = fz;
 }
 
-/// out += ᴬX_B* f: a child's force added to its parent's.
-inline void add_force(const Mat3& R, const Vec3& p, const double* f, double* out) {
-  double moved[6];
-  force(R, p, f, moved);
-  for (int r = 0; r < 6; ++r) out[r] += moved[r];
-}
-
 /// out = ᴮX_A* f: force from A back to B.
 inline void force_inverse(const Mat3& R, const Vec3& p, const double* f, double* out) {
   const double nx = f[0] - (p[1] * f[5] - p[2] * f[4]);
