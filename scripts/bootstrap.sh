@@ -10,6 +10,13 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-scipy
 )
+# The Python package (python/) and its tests, examples and notebook; left out by
+# scripts/run-example.sh (MOMENTA_WITHOUT_PYTHON=1), which builds the command line alone.
+if [[ "${MOMENTA_WITHOUT_PYTHON:-0}" != 1 ]]; then
+  packages+=(python3-dev pybind11-dev python3-pytest python3-pandas python3-matplotlib
+             python3-nbclient python3-nbformat python3-ipykernel python3-pip python3-setuptools
+             python3-wheel)
+fi
 # Optional: the side-by-side benchmarks against MuJoCo (MOMENTA_BENCH_MUJOCO=ON).
 if [[ "${MOMENTA_WITH_MUJOCO:-0}" == 1 ]]; then packages+=(libmujoco-dev); fi
 # Optional: the libFuzzer harnesses (scripts/fuzz.sh): clang and its sanitizer runtimes.

@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "model_loading.hpp"
+#include "momenta/frontend/model_loading.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/io/model_file.hpp"
 #include "momenta/system/multibody_system.hpp"
@@ -335,7 +335,7 @@ void print_text(const json& j, const io::ModelFile& file) {
 }
 
 void run(const InfoOptions& o) {
-  const io::ModelFile file = load_model(o.model);
+  const io::ModelFile file = frontend::load_model(o.model);
   const json j = describe(o, file);
   if (o.json) {
     fmt::print("{}\n", j.dump(2));

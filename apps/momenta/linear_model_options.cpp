@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-#include "model_loading.hpp"
+#include "momenta/frontend/model_loading.hpp"
 #include "momenta/common/error.hpp"
 
 namespace momenta::cli {
@@ -89,7 +89,7 @@ void add_linear_model_options(CLI::App* command, LinearModelOptions& o, bool wit
 }
 
 LoadedLinearModel load_linear_model(const LinearModelOptions& o) {
-  LoadedLinearModel r{load_model(o.model), {}, {}};
+  LoadedLinearModel r{frontend::load_model(o.model), {}, {}};
   const model::Model& model = r.file.model;
   analysis::LinearizationOptions options;
   options.inputs = o.inputs;

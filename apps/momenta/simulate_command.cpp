@@ -18,13 +18,13 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "model_loading.hpp"
 #include "momenta/common/error.hpp"
+#include "momenta/frontend/model_loading.hpp"
 #include "momenta/io/model_file.hpp"
 #include "momenta/model/integrators.hpp"
 #include "momenta/simulate/csv_writer.hpp"
+#include "momenta/simulate/run_request.hpp"
 #include "momenta/simulate/simulation.hpp"
-#include "momenta/system/integrators.hpp"
 #include "option_checks.hpp"
 
 namespace momenta::cli {
@@ -44,56 +44,33 @@ struct SimulateOptions {
   bool quiet = false;
 };
 
-// Adaptive methods without a step given take at most duration / kAdaptiveSteps per step, so the
-// table has at least that many rows.
-constexpr double kAdaptiveSteps = 1000.0;
-
-// Without --every (or `every:` in the file), a fixed-step run records at most this many steps
-// plus the first and the last: a long run at a fine step would otherwise write a row per step
-// (the double pendulum's 100 s at 1 ms: 55 MB). Rows written stay exact states.
-constexpr double kDefaultRows = 10000.0;
-
 // The command line over the file's `simulation:` section over the defaults (docs/cli.md).
 simulate::SimulationOptions merge(const SimulateOptions& o, const model::SimulationSettings& file) {
-  simulate::SimulationOptions s;
-  s.duration = o.duration.value_or(file.duration.value_or(s.duration));
-  s.tolerances.relative = o.rtol.value_or(file.relative_tolerance.value_or(s.tolerances.relative));
-  s.tolerances.absolute = o.atol.value_or(file.absolute_tolerance.value_or(s.tolerances.absolute));
-  // Tolerances without an integrator ask for an adaptive one: on the command line they override
-  // a fixed-step integrator the file names; in the file they choose one when it names none.
-  const bool tolerances_given = o.rtol || o.atol;
-  const bool file_adaptive = file.integrator && model::integrator_info(*file.integrator).adaptive;
-  if (o.integrator) {
-    s.integrator = *o.integrator;
-  } else if (tolerances_given && !file_adaptive) {
-    s.integrator = "dopri5";
-  } else {
-    s.integrator = file.integrator.value_or(
-        file.relative_tolerance || file.absolute_tolerance ? "dopri5" : "rk4");
-  }
-  const std::unique_ptr<integrate::Integrator> probe =
-      system::make_integrator(s.integrator, s.tolerances);
-  if (tolerances_given && !probe->adaptive()) {
+  simulate::RunRequest request;
+  request.duration = o.duration;
+  request.step = o.dt;
+  request.relative_tolerance = o.rtol;
+  request.absolute_tolerance = o.atol;
+  request.integrator = o.integrator;
+  request.every = o.every;
+  request.reactions = o.reactions;
+  simulate::ResolvedRun resolved;
+  try {
+    resolved = simulate::resolve_run(request, file);
+  } catch (const InvalidArgument&) {
+    // A tolerance given with a fixed-step integrator is a usage error of the option.
+    const model::IntegratorInfo* named =
+        o.integrator ? model::find_integrator(*o.integrator) : nullptr;
+    if (!(o.rtol || o.atol) || !named || named->adaptive) throw;
     throw CLI::ValidationError(o.rtol ? "--rtol" : "--atol",
                                fmt::format("applies to adaptive integrators (dopri5); '{}' takes "
                                            "a fixed step, --dt",
-                                           s.integrator));
+                                           *o.integrator));
   }
-  const double default_step = probe->adaptive() ? s.duration / kAdaptiveSteps : s.step;
-  s.step = o.dt.value_or(file.step.value_or(default_step));
-  s.every = o.every.value_or(file.every.value_or(s.every));
-  if (!o.every && !file.every && !probe->adaptive()) {
-    const double steps = std::ceil(s.duration / s.step);
-    if (steps > kDefaultRows && steps < 1e18) {
-      s.every = static_cast<long>(std::ceil(steps / kDefaultRows));
-      fmt::print(stderr,
-                 "momenta: recording one row every {} of {:.0f} steps ({} rows); --every 1 records "
-                 "them all\n",
-                 s.every, steps, static_cast<long>(std::ceil(steps / s.every)) + 1);
-    }
+  if (!resolved.thinning_note.empty()) {
+    fmt::print(stderr, "momenta: {}; --every 1 records them all\n", resolved.thinning_note);
   }
-  s.reactions = o.reactions;
-  return s;
+  return resolved.options;
 }
 
 // SIGINT and SIGTERM end a run on a whole row (the CSV stays readable); a second one kills.
@@ -121,7 +98,7 @@ std::function<void(double)> progress_line(double duration) {
 }
 
 void run(const SimulateOptions& o) {
-  const io::ModelFile file = load_model(o.model);
+  const io::ModelFile file = frontend::load_model(o.model);
   simulate::SimulationOptions options = merge(o, file.simulation);
   const bool show_progress = !o.quiet && isatty(STDERR_FILENO);
   options.stop = &stop_requested;

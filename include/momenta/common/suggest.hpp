@@ -8,7 +8,9 @@
 
 namespace momenta {
 
-/// Levenshtein edit distance between two strings (insertions, deletions, substitutions).
+/// Edit distance between two strings: insertions, deletions, substitutions and transpositions of
+/// adjacent characters ('wrold' is one edit from 'world'), each counting 1 (the optimal string
+/// alignment distance, Damerau 1964). Case-insensitive.
 std::size_t edit_distance(std::string_view a, std::string_view b);
 
 /// The candidate closest to `word`, if it is close enough to be a likely misspelling: within

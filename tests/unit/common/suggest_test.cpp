@@ -1,6 +1,7 @@
 #include "momenta/common/suggest.hpp"
 
 #include <array>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -14,6 +15,14 @@ TEST(EditDistance, CountsInsertionsDeletionsSubstitutions) {
   EXPECT_EQ(edit_distance("", "abc"), 3u);
   EXPECT_EQ(edit_distance("mass", "mass"), 0u);
   EXPECT_EQ(edit_distance("Mass", "mass"), 0u);
+}
+
+TEST(EditDistance, CountsASwapOfNeighboursAsOneEdit) {
+  EXPECT_EQ(edit_distance("wrold", "world"), 1u);
+  EXPECT_EQ(edit_distance("ab", "ba"), 1u);
+  EXPECT_EQ(edit_distance("abc", "ca"), 3u);  // optimal string alignment: no edit of a swapped pair
+  EXPECT_EQ(did_you_mean("wrold", std::vector<std::string_view>{"world", "link"}),
+            " (did you mean 'world'?)");
 }
 
 TEST(ClosestMatch, SuggestsNearbyKeyOnly) {

@@ -1,11 +1,11 @@
-#include "model_loading.hpp"
+#include "momenta/frontend/model_loading.hpp"
 
 #include "momenta/common/error.hpp"
 #include "momenta/system/multibody_system.hpp"
 
-namespace momenta::cli {
+namespace momenta::frontend {
 
-io::ModelFile load_model(const std::string& path) {
+io::ModelFile load_model(const std::filesystem::path& path) {
   io::ModelFile file = io::read_model_file(path);
   try {
     const system::MultibodySystem accepted(file.model);
@@ -16,4 +16,4 @@ io::ModelFile load_model(const std::string& path) {
   return file;
 }
 
-}  // namespace momenta::cli
+}  // namespace momenta::frontend

@@ -1,0 +1,47 @@
+"""The tennis-racket (Dzhanibekov) flip: a free body spun near its intermediate axis turns over
+again and again. Simulated with momenta, with the conservation audit plotted: energy and |H|
+stay at round-off while the motion flips.
+
+    python3 examples/python/tennis_racket.py [OUTPUT_FOLDER]
+
+Writes tennis_racket.png.
+"""
+
+import pathlib
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+
+import momenta
+
+HERE = pathlib.Path(__file__).resolve().parent
+out = pathlib.Path(sys.argv[1]) if len(sys.argv) > 1 else pathlib.Path.cwd()
+
+model = momenta.load_model(HERE.parent / "free_body_tennis_racket.yaml")
+run = momenta.simulate(model, integrator="splitting", dt=1e-3)
+
+fig, (ax_w, ax_audit) = plt.subplots(2, 1, sharex=True, figsize=(8, 6))
+# The free joint's velocity starts with ω in the body frame: the flips show as ω_y changing sign.
+for k, axis in enumerate("xyz"):
+    ax_w.plot(run.time, run[f"free.v{k}"], label=f"ω_{axis} (body)")
+ax_w.set_ylabel("ω (rad/s)")
+ax_w.legend(loc="upper right")
+ax_w.grid(True, alpha=0.3)
+for column, label in [("audit.energy_drift", "energy"), ("audit.H_norm_drift", "|H|")]:
+    ax_audit.semilogy(run.time, np.abs(run[column]) + 1e-18, label=label)
+ax_audit.set_xlabel("t (s)")
+ax_audit.set_ylabel("relative drift")
+ax_audit.legend()
+ax_audit.grid(True, which="both", alpha=0.3)
+fig.suptitle(f"{model.name}: {run.summary['integrator']} at dt = {run.summary['step']} s")
+fig.savefig(out / "tennis_racket.png", dpi=120)
+
+audit = {entry["name"]: entry for entry in run.audit}
+print(run.summary_text)
+# The splitting method keeps |H| exactly (each sub-flow is a rotation) and the energy bounded.
+assert audit["|H|"]["max_drift"] < 1e-12
+assert audit["energy"]["max_drift"] < 1e-5

@@ -1,0 +1,17 @@
+#pragma once
+// Opening a model file the way every front end does (the momenta command line, the Python
+// module): the file read and built (io), then accepted by the system layer (the mass matrix
+// invertible at the initial state); an error about one of its bodies, joints, elements or
+// signals is reported at the line that declares it.
+
+#include <filesystem>
+
+#include "momenta/io/model_file.hpp"
+
+namespace momenta::frontend {
+
+/// Reads `path` and checks that it can be simulated. Throws ParseError
+/// `file:line:column: message` for anything wrong with it, FileError when it cannot be read.
+io::ModelFile load_model(const std::filesystem::path& path);
+
+}  // namespace momenta::frontend

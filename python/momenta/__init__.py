@@ -1,0 +1,74 @@
+"""momenta: model, simulate and analyse mechanical systems from first principles.
+
+The same models, algorithms and numbers as the `momenta` command line, with numpy arrays in and
+out (docs/python.md):
+
+    import momenta
+    model = momenta.load_model("examples/double_pendulum.yaml")
+    run = momenta.simulate(model, duration=5)
+    run["energy_total"]                      # a numpy column
+    ws = momenta.Workspace(model)
+    ws.aba(model.initial_q, model.initial_v, [0.0, 0.0])
+    linear = momenta.linearize(model)
+    momenta.modes(linear)
+
+Units are SI; spatial vectors are rotation first; inertia tensors carry minus the products of
+inertia off the diagonal (docs/conventions.md).
+"""
+
+from . import _core
+from ._core import (
+    Equilibrium,
+    Error,
+    FileError,
+    FrequencyResponse,
+    Interrupted,
+    InvalidArgument,
+    InvalidInertia,
+    LinearModel,
+    MeshError,
+    Mode,
+    Model,
+    ModelBuilder,
+    Modes,
+    NormalMode,
+    NormalModes,
+    NumericalError,
+    ParseError,
+    SimulationResult,
+    StateSpace,
+    StepInfo,
+    TimeResponse,
+    TransferFunction,
+    Workspace,
+    bode,
+    find_equilibrium,
+    impulse_response,
+    linearize,
+    load_model,
+    modes,
+    normal_modes,
+    simulate,
+    step_info,
+    step_response,
+    transfer_function,
+    undamped_modes,
+)
+from . import inertia
+
+__version__ = _core.__version__
+
+
+def _to_pandas(self):
+    """The table as a pandas DataFrame indexed by time (needs pandas)."""
+    try:
+        import pandas
+    except ImportError as error:  # pragma: no cover - pandas is optional
+        raise ImportError("SimulationResult.to_pandas() needs pandas (Debian: python3-pandas)") from error
+    frame = pandas.DataFrame(self.data, columns=self.columns)
+    return frame.set_index("time")
+
+
+SimulationResult.to_pandas = _to_pandas
+
+__all__ = [name for name in dir() if not name.startswith("_")]

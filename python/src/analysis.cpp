@@ -1,0 +1,376 @@
+// Linear analysis from Python: linearize a model about an operating point, find an equilibrium,
+// and the modes, transfer functions, Bode data and step / impulse responses of a StateSpace.
+
+#include <fmt/format.h>
+#include <pybind11/complex.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "model_handle.hpp"
+#include "momenta/analysis/equilibrium.hpp"
+#include "momenta/analysis/frequency_response.hpp"
+#include "momenta/analysis/linearize.hpp"
+#include "momenta/analysis/modes.hpp"
+#include "momenta/analysis/state_space.hpp"
+#include "momenta/analysis/step_info.hpp"
+#include "momenta/analysis/time_response.hpp"
+#include "momenta/analysis/transfer_function.hpp"
+
+namespace momenta::python {
+namespace {
+
+using namespace analysis;
+
+py::array_t<std::complex<double>> complex_array(const std::vector<Complex>& z) {
+  py::array_t<std::complex<double>> out(static_cast<py::ssize_t>(z.size()));
+  std::copy(z.begin(), z.end(), out.mutable_data());
+  return out;
+}
+
+// An input or output given by name (str) or index (int).
+std::size_t input_arg(const StateSpace& s, const py::handle& input) {
+  if (py::isinstance<py::str>(input)) return s.input_index(input.cast<std::string>());
+  return input.cast<std::size_t>();
+}
+std::size_t output_arg(const StateSpace& s, const py::handle& output) {
+  if (py::isinstance<py::str>(output)) return s.output_index(output.cast<std::string>());
+  return output.cast<std::size_t>();
+}
+
+TimeGrid grid_of(std::optional<double> final_time, std::optional<std::size_t> samples) {
+  TimeGrid grid;
+  grid.final_time = final_time.value_or(0.0);
+  grid.samples = samples.value_or(0);
+  return grid;
+}
+
+// The operating point: the model's initial state unless q / v are given.
+OperatingPoint point_of(const ModelHandle& h, const py::object& q, const py::object& v, double t) {
+  OperatingPoint p = initial_operating_point(h.model());
+  py::array_t<double, py::array::c_style> storage;
+  if (!q.is_none()) p.q = vector_arg(q, "q", h.model().nq(), "the model's nq", storage);
+  if (!v.is_none()) p.v = vector_arg(v, "v", h.model().nv(), "the model's nv", storage);
+  p.t = t;
+  return p;
+}
+
+void bind_state_space(py::module_& m) {
+  py::class_<StateSpace>(m, "StateSpace", R"doc(
+ẋ = A x + B u, y = C x + D u with named states, inputs and outputs. Build one from matrices
+(D may be None for zero; names default to x1.., u1.., y1..) or get one from linearize().)doc")
+      .def(py::init([](const py::object& A, const py::object& B, const py::object& C,
+                       const py::object& D, std::vector<std::string> states,
+                       std::vector<std::string> inputs, std::vector<std::string> outputs) {
+             const MatX a = matrix_arg(A, "A", -1, -1);
+             const MatX b = matrix_arg(B, "B", a.rows(), -1);
+             const MatX c = matrix_arg(C, "C", -1, a.rows());
+             const MatX d = D.is_none() ? MatX() : matrix_arg(D, "D", c.rows(), b.cols());
+             return StateSpace(a, b, c, d, std::move(states), std::move(inputs),
+                               std::move(outputs));
+           }),
+           py::arg("A"), py::arg("B"), py::arg("C"), py::arg("D") = py::none(),
+           py::arg("state_names") = std::vector<std::string>{},
+           py::arg("input_names") = std::vector<std::string>{},
+           py::arg("output_names") = std::vector<std::string>{})
+      .def_property_readonly("A", [](const StateSpace& s) { return to_numpy(s.A()); })
+      .def_property_readonly("B", [](const StateSpace& s) { return to_numpy(s.B()); })
+      .def_property_readonly("C", [](const StateSpace& s) { return to_numpy(s.C()); })
+      .def_property_readonly("D", [](const StateSpace& s) { return to_numpy(s.D()); })
+      .def_property_readonly("state_names", &StateSpace::state_names)
+      .def_property_readonly("input_names", &StateSpace::input_names)
+      .def_property_readonly("output_names", &StateSpace::output_names)
+      .def(
+          "siso",
+          [](const StateSpace& s, const py::object& input, const py::object& output) {
+            return s.siso(input_arg(s, input), output_arg(s, output));
+          },
+          py::arg("input"), py::arg("output"), "The one-input, one-output subsystem.")
+      .def("__repr__", [](const StateSpace& s) {
+        return fmt::format("<momenta.StateSpace: {} states, {} inputs ({}), {} outputs ({})>",
+                           s.state_count(), s.input_count(), fmt::join(s.input_names(), ", "),
+                           s.output_count(), fmt::join(s.output_names(), ", "));
+      });
+}
+
+void bind_linearization(py::module_& m) {
+  py::class_<LinearModel>(m, "LinearModel", R"doc(
+A model linearized about a point: `system` (A, B, C, D with names), the second-order form over
+the free coordinates (mass, damping, stiffness), the point, its acceleration and output values.)doc")
+      .def_readonly("system", &LinearModel::system)
+      .def_property_readonly("A", [](const LinearModel& l) { return to_numpy(l.system.A()); })
+      .def_property_readonly("B", [](const LinearModel& l) { return to_numpy(l.system.B()); })
+      .def_property_readonly("C", [](const LinearModel& l) { return to_numpy(l.system.C()); })
+      .def_property_readonly("D", [](const LinearModel& l) { return to_numpy(l.system.D()); })
+      .def_property_readonly("state_names",
+                             [](const LinearModel& l) { return l.system.state_names(); })
+      .def_property_readonly("input_names",
+                             [](const LinearModel& l) { return l.system.input_names(); })
+      .def_property_readonly("output_names",
+                             [](const LinearModel& l) { return l.system.output_names(); })
+      .def_property_readonly("mass", [](const LinearModel& l) { return to_numpy(l.mass); })
+      .def_property_readonly("damping", [](const LinearModel& l) { return to_numpy(l.damping); })
+      .def_property_readonly("stiffness",
+                             [](const LinearModel& l) { return to_numpy(l.stiffness); })
+      .def_property_readonly(
+          "q", [](const LinearModel& l) { return to_numpy(l.point.q); },
+          "The operating point's configuration.")
+      .def_property_readonly("v", [](const LinearModel& l) { return to_numpy(l.point.v); })
+      .def_property_readonly("t", [](const LinearModel& l) { return l.point.t; })
+      .def_property_readonly("acceleration",
+                             [](const LinearModel& l) { return to_numpy(l.acceleration); })
+      .def_property_readonly("output_values",
+                             [](const LinearModel& l) { return to_numpy(l.output_values); })
+      .def_readonly("states_shifted", &LinearModel::states_shifted)
+      .def("__repr__", [](const LinearModel& l) {
+        return fmt::format("<momenta.LinearModel: {} states, inputs [{}], outputs [{}]>",
+                           l.system.state_count(), fmt::join(l.system.input_names(), ", "),
+                           fmt::join(l.system.output_names(), ", "));
+      });
+
+  m.def(
+      "linearize",
+      [](const ModelHandle& h, std::vector<std::string> inputs, std::vector<std::string> outputs,
+         const py::object& q, const py::object& v, double t, double angle_step,
+         double length_step) {
+        LinearizationOptions options;
+        options.inputs = std::move(inputs);
+        options.outputs = std::move(outputs);
+        options.output_specs = h.file->outputs;
+        options.angle_step = angle_step;
+        options.length_step = length_step;
+        return linearize(h.model(), point_of(h, q, v, t), options);
+      },
+      py::arg("model"), py::kw_only(), py::arg("inputs") = std::vector<std::string>{},
+      py::arg("outputs") = std::vector<std::string>{}, py::arg("q") = py::none(),
+      py::arg("v") = py::none(), py::arg("t") = 0.0, py::arg("angle_step") = 0.0,
+      py::arg("length_step") = 0.0,
+      R"doc(Linearizes the model about (t, q, v) — its initial state unless given — as
+`momenta linearize` does: states [δq; v] over the free joints, inputs the named signals (all by
+default), outputs the named model outputs, states or coordinates (the model file's outputs, or
+every configuration state, by default). Raises InvalidArgument on an unknown name (with a
+did-you-mean).)doc");
+
+  py::class_<Equilibrium>(m, "Equilibrium", "A static equilibrium and its stability.")
+      .def_property_readonly("q", [](const Equilibrium& e) { return to_numpy(e.point.q); })
+      .def_property_readonly("v", [](const Equilibrium& e) { return to_numpy(e.point.v); })
+      .def_property_readonly("residual", [](const Equilibrium& e) { return to_numpy(e.residual); })
+      .def_readonly("force_scale", &Equilibrium::force_scale)
+      .def_readonly("iterations", &Equilibrium::iterations)
+      .def_readonly("linear", &Equilibrium::linear, "The linearization about the equilibrium.")
+      .def_property_readonly(
+          "unstable_eigenvalues",
+          [](const Equilibrium& e) { return complex_array(e.unstable_eigenvalues); })
+      .def_readonly("stiffness_rank", &Equilibrium::stiffness_rank)
+      .def_property_readonly("stable", &Equilibrium::stable);
+  m.def(
+      "find_equilibrium",
+      [](const ModelHandle& h, const py::object& q_guess, double t, double tolerance,
+         int max_iterations) {
+        EquilibriumOptions options;
+        options.t = t;
+        options.tolerance = tolerance;
+        options.max_iterations = max_iterations;
+        py::array_t<double, py::array::c_style> storage;
+        const VecX guess =
+            q_guess.is_none()
+                ? h.model().initial_q()
+                : VecX(vector_arg(q_guess, "q_guess", h.model().nq(), "the model's nq", storage));
+        return find_equilibrium(h.model(), guess, options);
+      },
+      py::arg("model"), py::kw_only(), py::arg("q_guess") = py::none(), py::arg("t") = 0.0,
+      py::arg("tolerance") = 1e-10, py::arg("max_iterations") = 100,
+      "The static equilibrium nearest (by Newton's method) to q_guess (default the initial "
+      "configuration), with its linearization and stability. Raises NumericalError when there "
+      "is none to be found, naming the largest residual.");
+}
+
+void bind_modes(py::module_& m) {
+  py::class_<Mode>(m, "Mode", "One eigenvalue of A with its shape.")
+      .def_readonly("eigenvalue", &Mode::eigenvalue, "λ, 1/s.")
+      .def_readonly("natural_frequency", &Mode::natural_frequency, "ωn = |λ|, rad/s.")
+      .def_readonly("damping_ratio", &Mode::damping_ratio, "ζ = −Re λ/|λ| (NaN when λ = 0).")
+      .def_readonly("damped_frequency", &Mode::damped_frequency, "|Im λ|, rad/s.")
+      .def_property_readonly(
+          "shape", [](const Mode& mode) { return to_numpy(mode.shape); },
+          "Right eigenvector, unit norm, largest entry real positive.")
+      .def("__repr__", [](const Mode& mode) {
+        return fmt::format("<momenta.Mode λ = {:.6g}{:+.6g}j, ωn = {:.6g} rad/s, ζ = {:.4g}>",
+                           mode.eigenvalue.real(), mode.eigenvalue.imag(), mode.natural_frequency,
+                           mode.damping_ratio);
+      });
+  py::class_<Modes>(m, "Modes", "Every mode of a system, sorted by natural frequency.")
+      .def_readonly("modes", &Modes::modes)
+      .def_readonly("state_names", &Modes::state_names)
+      .def_property_readonly("eigenvalues",
+                             [](const Modes& ms) {
+                               std::vector<Complex> z;
+                               for (const Mode& mode : ms.modes) z.push_back(mode.eigenvalue);
+                               return complex_array(z);
+                             })
+      .def("__len__", [](const Modes& ms) { return ms.modes.size(); })
+      .def("__getitem__", [](const Modes& ms, std::size_t i) {
+        if (i >= ms.modes.size()) throw py::index_error("mode index out of range");
+        return ms.modes[i];
+      });
+  m.def(
+      "modes",
+      [](const py::object& system) {
+        if (py::isinstance<StateSpace>(system)) return modes(system.cast<const StateSpace&>());
+        if (py::isinstance<LinearModel>(system)) {
+          return modes(system.cast<const LinearModel&>().system);
+        }
+        return modes(matrix_arg(system, "A", -1, -1));
+      },
+      py::arg("system"), "Modes of ẋ = A x from a StateSpace, a LinearModel or a square matrix A.");
+
+  py::class_<NormalMode>(m, "NormalMode", "An undamped normal mode, K φ = ω² M φ.")
+      .def_readonly("squared_frequency", &NormalMode::squared_frequency, "ω², rad²/s².")
+      .def_readonly("natural_frequency", &NormalMode::natural_frequency,
+                    "ω, rad/s (NaN for a divergent mode).")
+      .def_property_readonly(
+          "shape", [](const NormalMode& n) { return to_numpy(n.shape); },
+          "Mass-normalized φ (φᵀ M φ = 1).");
+  py::class_<NormalModes>(m, "NormalModes", "Undamped normal modes, frequencies ascending.")
+      .def_readonly("modes", &NormalModes::modes)
+      .def_readonly("coordinate_names", &NormalModes::coordinate_names)
+      .def("__len__", [](const NormalModes& n) { return n.modes.size(); })
+      .def("__getitem__", [](const NormalModes& n, std::size_t i) {
+        if (i >= n.modes.size()) throw py::index_error("mode index out of range");
+        return n.modes[i];
+      });
+  m.def("undamped_modes", &undamped_modes, py::arg("linear"),
+        "Normal modes of M δq̈ + K δq = 0 from a LinearModel (an equilibrium of a conservative "
+        "model).");
+  m.def(
+      "normal_modes",
+      [](const py::object& M, const py::object& K, std::vector<std::string> names) {
+        const MatX mass = matrix_arg(M, "M", -1, -1);
+        return normal_modes(mass, matrix_arg(K, "K", mass.rows(), mass.rows()), std::move(names));
+      },
+      py::arg("M"), py::arg("K"), py::arg("coordinate_names") = std::vector<std::string>{},
+      "Normal modes of M q̈ + K q = 0 (the generalized symmetric eigenproblem).");
+}
+
+void bind_responses(py::module_& m) {
+  py::class_<TransferFunction>(m, "TransferFunction",
+                               "G(s) = gain · ∏(s − zeros) / ∏(s − poles) of one pair.")
+      .def_readonly("input_name", &TransferFunction::input_name)
+      .def_readonly("output_name", &TransferFunction::output_name)
+      .def_readonly("gain", &TransferFunction::gain)
+      .def_property_readonly("zeros",
+                             [](const TransferFunction& g) { return complex_array(g.zeros); })
+      .def_property_readonly("poles",
+                             [](const TransferFunction& g) { return complex_array(g.poles); })
+      .def_property_readonly("cancelled",
+                             [](const TransferFunction& g) { return complex_array(g.cancelled); })
+      .def_readonly("dc_gain", &TransferFunction::dc_gain)
+      .def_property_readonly("relative_degree", &TransferFunction::relative_degree)
+      .def("__call__", &TransferFunction::operator(), py::arg("s"), "G(s) from the factors.")
+      .def("__repr__", [](const TransferFunction& g) {
+        return fmt::format("<momenta.TransferFunction {} → {}: {} zeros, {} poles, K = {:.6g}>",
+                           g.input_name, g.output_name, g.zeros.size(), g.poles.size(), g.gain);
+      });
+  m.def(
+      "transfer_function",
+      [](const StateSpace& s, const py::object& input, const py::object& output,
+         double cancellation_tolerance) {
+        return transfer_function(s, input_arg(s, input), output_arg(s, output),
+                                 cancellation_tolerance);
+      },
+      py::arg("system"), py::arg("input"), py::arg("output"),
+      py::arg("cancellation_tolerance") = kDefaultCancellationTolerance,
+      "Zero-pole-gain transfer function of one pair (input and output by name or index), "
+      "with pole–zero pairs closer than the relative tolerance cancelled.");
+
+  py::class_<FrequencyResponse>(m, "FrequencyResponse", "Bode data of one pair.")
+      .def_readonly("input_name", &FrequencyResponse::input_name)
+      .def_readonly("output_name", &FrequencyResponse::output_name)
+      .def_property_readonly(
+          "frequency", [](const FrequencyResponse& f) { return to_numpy(f.frequency); },
+          "ω, rad/s.")
+      .def_property_readonly(
+          "response", [](const FrequencyResponse& f) { return to_numpy(f.response); },
+          "G(jω), complex.")
+      .def_property_readonly("magnitude",
+                             [](const FrequencyResponse& f) { return to_numpy(f.magnitude); })
+      .def_property_readonly("magnitude_db",
+                             [](const FrequencyResponse& f) { return to_numpy(f.magnitude_db); })
+      .def_property_readonly(
+          "phase_deg", [](const FrequencyResponse& f) { return to_numpy(f.phase_deg); },
+          "Unwrapped phase, degrees.");
+  m.def(
+      "bode",
+      [](const StateSpace& s, const py::object& input, const py::object& output,
+         const py::object& frequencies, double omega_min, double omega_max, std::size_t points) {
+        if (!frequencies.is_none()) {
+          py::array_t<double, py::array::c_style> storage;
+          return frequency_response(s, input_arg(s, input), output_arg(s, output),
+                                    VecX(vector_arg(frequencies, "frequencies", -1, "", storage)));
+        }
+        return frequency_response(s, input_arg(s, input), output_arg(s, output), omega_min,
+                                  omega_max, points);
+      },
+      py::arg("system"), py::arg("input"), py::arg("output"), py::kw_only(),
+      py::arg("frequencies") = py::none(), py::arg("omega_min") = 0.01,
+      py::arg("omega_max") = 100.0, py::arg("points") = 200,
+      "Bode data of one pair at the given frequencies (rad/s) or on a log grid from omega_min to "
+      "omega_max.");
+
+  py::class_<TimeResponse>(m, "TimeResponse", "Response of every output and state to one input.")
+      .def_readonly("input_name", &TimeResponse::input_name)
+      .def_readonly("output_names", &TimeResponse::output_names)
+      .def_readonly("state_names", &TimeResponse::state_names)
+      .def_property_readonly("time", [](const TimeResponse& r) { return to_numpy(r.time); })
+      .def_property_readonly(
+          "outputs", [](const TimeResponse& r) { return to_numpy(r.outputs); },
+          "(samples, outputs).")
+      .def_property_readonly(
+          "states", [](const TimeResponse& r) { return to_numpy(r.states); }, "(samples, states).");
+  m.def(
+      "step_response",
+      [](const StateSpace& s, const py::object& input, std::optional<double> final_time,
+         std::optional<std::size_t> samples, double amplitude) {
+        return step_response(s, input_arg(s, input), grid_of(final_time, samples), amplitude);
+      },
+      py::arg("system"), py::arg("input") = 0, py::kw_only(), py::arg("final_time") = py::none(),
+      py::arg("samples") = py::none(), py::arg("amplitude") = 1.0,
+      "Step response from x(0) = 0, exact at the samples (zero-order hold); automatic horizon "
+      "and sampling unless given.");
+  m.def(
+      "impulse_response",
+      [](const StateSpace& s, const py::object& input, std::optional<double> final_time,
+         std::optional<std::size_t> samples) {
+        return impulse_response(s, input_arg(s, input), grid_of(final_time, samples));
+      },
+      py::arg("system"), py::arg("input") = 0, py::kw_only(), py::arg("final_time") = py::none(),
+      py::arg("samples") = py::none(), "Impulse response, x(t) = e^(At) B.");
+
+  py::class_<StepInfo>(m, "StepInfo", "Step-response figures (MATLAB's stepinfo).")
+      .def_readonly("final_value", &StepInfo::final_value)
+      .def_readonly("rise_time", &StepInfo::rise_time)
+      .def_readonly("settling_time", &StepInfo::settling_time)
+      .def_readonly("overshoot", &StepInfo::overshoot, "%.")
+      .def_readonly("undershoot", &StepInfo::undershoot, "%.")
+      .def_readonly("peak", &StepInfo::peak)
+      .def_readonly("peak_time", &StepInfo::peak_time);
+  m.def(
+      "step_info",
+      [](const StateSpace& s, const py::object& input, const py::object& output,
+         double settling_band) {
+        return step_info(s, input_arg(s, input), output_arg(s, output), TimeGrid{}, settling_band);
+      },
+      py::arg("system"), py::arg("input") = 0, py::arg("output") = 0,
+      py::arg("settling_band") = 0.02,
+      "Rise time (10–90 %), settling time, overshoot and peak of the unit step response.");
+}
+
+}  // namespace
+
+void bind_analysis(py::module_& m) {
+  bind_state_space(m);
+  bind_linearization(m);
+  bind_modes(m);
+  bind_responses(m);
+}
+
+}  // namespace momenta::python

@@ -1,0 +1,63 @@
+#pragma once
+// Shared by the binding files of the `momenta` Python module (momenta._core): how numpy
+// arguments become Eigen views and results become numpy arrays, and the per-area entry points
+// module.cpp calls.
+//
+// Arguments. A vector or matrix argument is any real array-like (lists, numpy arrays of any real
+// dtype); a C-contiguous float64 array is read in place, anything else is converted once. A
+// wrong shape, a complex or non-numeric dtype raises ValueError naming the argument and the
+// size expected, before C++ sees it.
+//
+// Results. Arrays are returned as new numpy arrays owning their data (never views of a
+// workspace that the next call overwrites).
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <string>
+#include <string_view>
+
+#include "momenta/math/types.hpp"
+
+namespace momenta::python {
+
+namespace py = pybind11;
+
+/// A float64, C-contiguous array converted from `object` (no copy when it already is one).
+/// Raises ValueError naming `name` when it is not a real numeric array-like.
+py::array_t<double, py::array::c_style> as_float_array(const py::handle& object,
+                                                       std::string_view name);
+
+/// A read-only view of a 1-D argument of `size` entries (size < 0: any). `storage` keeps a
+/// converted copy alive for as long as the view is used. Raises ValueError naming `name`, the
+/// expected size and what `what` it is ("the model's nq").
+Eigen::Map<const VecX> vector_arg(const py::handle& object, std::string_view name,
+                                  Eigen::Index size, std::string_view what,
+                                  py::array_t<double, py::array::c_style>& storage);
+
+/// A 3-vector argument.
+Vec3 vec3_arg(const py::handle& object, std::string_view name);
+
+/// A rows × cols matrix argument (copied; -1: any size along that dimension).
+MatX matrix_arg(const py::handle& object, std::string_view name, Eigen::Index rows,
+                Eigen::Index cols);
+
+/// A 3 × 3 matrix argument.
+Mat3 mat3_arg(const py::handle& object, std::string_view name);
+
+/// New numpy arrays holding a copy of `x`.
+py::array_t<double> to_numpy(const VecX& x);
+py::array_t<double> to_numpy(const MatX& x);
+py::array_t<double> to_numpy(const Vec3& x);
+py::array_t<double> to_numpy(const Mat3& x);
+py::array_t<std::complex<double>> to_numpy(const Eigen::VectorXcd& x);
+
+// Entry points of each area, called once by module.cpp.
+void bind_errors(py::module_& m);
+void bind_inertia(py::module_& m);
+void bind_model(py::module_& m);
+void bind_dynamics(py::module_& m);
+void bind_simulation(py::module_& m);
+void bind_analysis(py::module_& m);
+
+}  // namespace momenta::python

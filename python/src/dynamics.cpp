@@ -1,0 +1,267 @@
+// momenta.Workspace: the dynamics algorithms on one model with numpy state. A workspace holds
+// the preallocated dynamics::Data, so a loop of calls allocates only the arrays it returns.
+
+#include <fmt/format.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "model_handle.hpp"
+#include "momenta/dynamics/aba.hpp"
+#include "momenta/dynamics/crba.hpp"
+#include "momenta/dynamics/data.hpp"
+#include "momenta/dynamics/energy.hpp"
+#include "momenta/dynamics/kinematics.hpp"
+#include "momenta/dynamics/momentum.hpp"
+#include "momenta/dynamics/point_kinematics.hpp"
+#include "momenta/dynamics/reactions.hpp"
+#include "momenta/dynamics/rnea.hpp"
+
+namespace momenta::python {
+namespace {
+
+using Storage = py::array_t<double, py::array::c_style>;
+
+struct Workspace {
+  explicit Workspace(ModelHandle h) : handle(std::move(h)), data(handle.model()) {}
+  ModelHandle handle;
+  dynamics::Data data;
+  std::vector<Vec6> wrenches;  // external wrenches, one per body, when given
+
+  const model::Model& model() const { return handle.model(); }
+
+  // The state arguments as views (no copy for float64 contiguous arrays).
+  Eigen::Map<const VecX> q(const py::handle& x, Storage& s) const {
+    return vector_arg(x, "q", model().nq(), "the model's nq", s);
+  }
+  Eigen::Map<const VecX> v(const py::handle& x, const char* name, Storage& s) const {
+    return vector_arg(x, name, model().nv(), "the model's nv", s);
+  }
+
+  // f_ext: None, or num_bodies × 6 wrenches [moment; force] on each body in B about Bo.
+  std::span<const Vec6> external(const py::object& f_ext) {
+    if (f_ext.is_none()) return {};
+    const MatX f = matrix_arg(f_ext, "f_ext", model().num_bodies(), 6);
+    wrenches.resize(model().num_bodies());
+    for (int b = 0; b < model().num_bodies(); ++b) wrenches[b] = f.row(b).transpose();
+    return wrenches;
+  }
+
+  // The body's pose after forward_kinematics: (R_WB, p_WoBo_W).
+  py::tuple pose(int b) const {
+    return py::make_tuple(to_numpy(data.X_WB[b].R), to_numpy(data.X_WB[b].p));
+  }
+};
+
+py::dict point_kinematics_dict(const dynamics::PointKinematics& k) {
+  py::dict d;
+  d["position"] = to_numpy(k.p_WoP_W);
+  d["velocity"] = to_numpy(k.v_WP_W);
+  d["acceleration"] = to_numpy(k.a_WP_W);
+  d["origin_acceleration"] = to_numpy(k.a_WBo_W);
+  d["tangential"] = to_numpy(k.tangential);
+  d["centripetal"] = to_numpy(k.centripetal);
+  d["from_vdot"] = to_numpy(k.from_vdot);
+  d["velocity_product"] = to_numpy(k.velocity_product);
+  return d;
+}
+
+model::ReactionFrame reaction_frame(const std::string& frame) {
+  if (frame == "world") return model::ReactionFrame::world;
+  if (frame == "joint") return model::ReactionFrame::joint;
+  if (frame == "child") return model::ReactionFrame::child;
+  if (frame == "parent") return model::ReactionFrame::parent;
+  throw InvalidArgument(
+      fmt::format("frame '{}': expected world, joint (J'), child or parent", frame));
+}
+
+}  // namespace
+
+void bind_dynamics(py::module_& m) {
+  py::class_<Workspace>(m, "Workspace", R"doc(
+The dynamics algorithms on one model (Featherstone 2008), with a preallocated workspace so a
+loop of calls does not allocate beyond the arrays returned. States are numpy arrays (any real
+array-like): q of size nq, v, vdot and tau of size nv; f_ext, where taken, is None or a
+(num_bodies, 6) array of wrenches [moment; force] on each body, in the body frame about its
+origin (row 0, the world, is ignored). Wrong sizes raise ValueError naming the argument.
+Results are new arrays. Not thread-safe: one workspace per thread.)doc")
+      .def(py::init<ModelHandle>(), py::arg("model"))
+      .def_property_readonly("model", [](const Workspace& w) { return w.handle; })
+      .def(
+          "aba",
+          [](Workspace& w, const py::handle& q, const py::handle& v, const py::handle& tau,
+             const py::object& f_ext) {
+            Storage sq, sv, st;
+            return to_numpy(dynamics::aba(w.model(), w.data, w.q(q, sq), w.v(v, "v", sv),
+                                          w.v(tau, "tau", st), w.external(f_ext)));
+          },
+          py::arg("q"), py::arg("v"), py::arg("tau"), py::arg("f_ext") = py::none(),
+          "Forward dynamics by the articulated-body algorithm: v̇ = M⁻¹ (τ − C v − g + Jᵀ f_ext). "
+          "Every joint is driven by its τ (prescription and force elements are the simulator's).")
+      .def(
+          "rnea",
+          [](Workspace& w, const py::handle& q, const py::handle& v, const py::handle& vdot,
+             const py::object& f_ext) {
+            Storage sq, sv, sa;
+            return to_numpy(dynamics::rnea(w.model(), w.data, w.q(q, sq), w.v(v, "v", sv),
+                                           w.v(vdot, "vdot", sa), w.external(f_ext)));
+          },
+          py::arg("q"), py::arg("v"), py::arg("vdot"), py::arg("f_ext") = py::none(),
+          "Inverse dynamics by recursive Newton–Euler: τ = M v̇ + C v + g − Jᵀ f_ext.")
+      .def(
+          "crba",
+          [](Workspace& w, const py::handle& q) {
+            Storage sq;
+            return to_numpy(dynamics::crba(w.model(), w.data, w.q(q, sq)));
+          },
+          py::arg("q"),
+          "The joint-space mass matrix M(q) (nv × nv) by the composite-rigid-body "
+          "algorithm; kinetic energy ½ vᵀ M v.")
+      .def(
+          "nonlinear_effects",
+          [](Workspace& w, const py::handle& q, const py::handle& v) {
+            Storage sq, sv;
+            return to_numpy(
+                dynamics::nonlinear_effects(w.model(), w.data, w.q(q, sq), w.v(v, "v", sv)));
+          },
+          py::arg("q"), py::arg("v"), "Bias forces C(q, v) v + g(q).")
+      .def(
+          "generalized_gravity",
+          [](Workspace& w, const py::handle& q) {
+            Storage sq;
+            return to_numpy(dynamics::generalized_gravity(w.model(), w.data, w.q(q, sq)));
+          },
+          py::arg("q"), "Generalized gravity g(q) = ∂V/∂q.")
+      .def(
+          "joint_reactions",
+          [](Workspace& w, const py::handle& q, const py::handle& v, const py::handle& vdot,
+             const std::string& frame, const py::object& f_ext) {
+            Storage sq, sv, sa;
+            const auto f = w.external(f_ext);
+            dynamics::joint_reactions(w.model(), w.data, w.q(q, sq), w.v(v, "v", sv),
+                                      w.v(vdot, "vdot", sa), f);
+            const model::ReactionFrame in = reaction_frame(frame);
+            const int nj = w.model().num_joints();
+            MatX forces(nj, 3), moments(nj, 3);
+            for (int j = 0; j < nj; ++j) {
+              const dynamics::JointReaction r = dynamics::joint_reaction(w.model(), w.data, j, in);
+              forces.row(j) = r.force.transpose();
+              moments.row(j) = r.moment.transpose();
+            }
+            return py::make_tuple(to_numpy(forces), to_numpy(moments));
+          },
+          py::arg("q"), py::arg("v"), py::arg("vdot"), py::arg("frame") = "world",
+          py::arg("f_ext") = py::none(),
+          "(forces, moments), each (num_joints, 3): the wrench each joint transmits from its "
+          "parent to its child for the motion (q, v, vdot), the moment about the child-side "
+          "joint frame's origin, expressed in `frame` (world, joint, child or parent).")
+      .def(
+          "forward_kinematics",
+          [](Workspace& w, const py::handle& q, const py::object& v, const py::object& vdot) {
+            Storage sq, sv, sa;
+            if (v.is_none() && !vdot.is_none()) {
+              throw py::value_error("vdot: give v as well (the accelerations need velocities)");
+            }
+            if (v.is_none()) {
+              dynamics::forward_kinematics(w.model(), w.data, w.q(q, sq));
+            } else if (vdot.is_none()) {
+              dynamics::forward_kinematics(w.model(), w.data, w.q(q, sq), w.v(v, "v", sv));
+            } else {
+              dynamics::forward_kinematics(w.model(), w.data, w.q(q, sq), w.v(v, "v", sv),
+                                           w.v(vdot, "vdot", sa));
+            }
+          },
+          py::arg("q"), py::arg("v") = py::none(), py::arg("vdot") = py::none(),
+          "Poses (and velocities, accelerations) of every body; read them with body_pose, "
+          "body_velocity, body_acceleration.")
+      .def(
+          "body_pose",
+          [](const Workspace& w, const py::object& body) {
+            return w.pose(body_index_arg(w.handle, body));
+          },
+          py::arg("body"),
+          "(R_WB (3, 3), p_WoBo_W (3,)) after forward_kinematics; body by name or index.")
+      .def(
+          "body_velocity",
+          [](const Workspace& w, const py::object& body) {
+            const Vec6 V = dynamics::body_velocity_in_world(w.data, body_index_arg(w.handle, body));
+            return to_numpy(VecX(V));
+          },
+          py::arg("body"), "[w_WB_W; v_WBo_W] (6,) after forward_kinematics with v.")
+      .def(
+          "body_acceleration",
+          [](const Workspace& w, const py::object& body) {
+            const Vec6 A =
+                dynamics::body_acceleration_in_world(w.data, body_index_arg(w.handle, body));
+            return to_numpy(VecX(A));
+          },
+          py::arg("body"),
+          "[alpha_WB_W; a_WBo_W] (6,), the classical acceleration of Bo, after "
+          "forward_kinematics with v and vdot.")
+      .def(
+          "point_kinematics",
+          [](Workspace& w, const py::object& body, const py::object& point, const py::handle& q,
+             const py::handle& v, const py::handle& vdot) {
+            Storage sq, sv, sa;
+            const int b = body_index_arg(w.handle, body);
+            return point_kinematics_dict(
+                dynamics::point_kinematics(w.model(), w.data, w.q(q, sq), w.v(v, "v", sv),
+                                           w.v(vdot, "vdot", sa), b, vec3_arg(point, "point")));
+          },
+          py::arg("body"), py::arg("point"), py::arg("q"), py::arg("v"), py::arg("vdot"),
+          "Motion of the point p_BoP_B fixed in `body`, in W: a dict of position, velocity, "
+          "acceleration, and the acceleration's terms (origin_acceleration + tangential + "
+          "centripetal, or from_vdot + velocity_product).")
+      .def(
+          "frame_jacobian",
+          [](Workspace& w, const py::object& body, const py::object& point, const py::handle& q) {
+            Storage sq;
+            const int b = body_index_arg(w.handle, body);
+            dynamics::forward_kinematics(w.model(), w.data, w.q(q, sq));
+            MatX J(6, w.model().nv());
+            dynamics::frame_jacobian(w.model(), w.data, b, vec3_arg(point, "point"), J);
+            return to_numpy(J);
+          },
+          py::arg("body"), py::arg("point"), py::arg("q"),
+          "The 6 × nv Jacobian of `body` at the point p_BoP_B, world-aligned: "
+          "[w_WB_W; v_WP_W] = J v.")
+      .def(
+          "kinetic_energy",
+          [](Workspace& w, const py::handle& q, const py::handle& v) {
+            Storage sq, sv;
+            return dynamics::kinetic_energy(w.model(), w.data, w.q(q, sq), w.v(v, "v", sv));
+          },
+          py::arg("q"), py::arg("v"), "T = ½ vᵀ M v, J.")
+      .def(
+          "potential_energy",
+          [](Workspace& w, const py::handle& q) {
+            Storage sq;
+            return dynamics::potential_energy(w.model(), w.data, w.q(q, sq));
+          },
+          py::arg("q"), "Gravitational potential energy −Σ m g · p_cm, J (springs excluded).")
+      .def(
+          "center_of_mass",
+          [](Workspace& w, const py::handle& q) {
+            Storage sq;
+            return to_numpy(dynamics::center_of_mass(w.model(), w.data, w.q(q, sq)));
+          },
+          py::arg("q"), "The system's centre of mass in W, m.")
+      .def(
+          "momentum",
+          [](Workspace& w, const py::handle& q, const py::handle& v) {
+            Storage sq, sv;
+            const dynamics::Momentum p =
+                dynamics::momentum(w.model(), w.data, w.q(q, sq), w.v(v, "v", sv));
+            py::dict d;
+            d["mass"] = p.mass;
+            d["center_of_mass"] = to_numpy(p.p_WoScm_W);
+            d["center_of_mass_velocity"] = to_numpy(p.v_WScm_W);
+            d["linear"] = to_numpy(p.linear);
+            d["angular_about_com"] = to_numpy(p.angular_about_com);
+            return d;
+          },
+          py::arg("q"), py::arg("v"),
+          "A dict: mass, center_of_mass, center_of_mass_velocity, linear momentum and angular "
+          "momentum about the centre of mass, in W.");
+}
+
+}  // namespace momenta::python

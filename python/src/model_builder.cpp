@@ -1,0 +1,322 @@
+// momenta.ModelBuilder: a model made in code, with the model file's vocabulary (keys and type
+// names as docs/model-format.md gives them), built and checked by model::ModelBuilder.
+
+#include <fmt/format.h>
+#include <pybind11/stl.h>
+
+#include <map>
+
+#include "bindings.hpp"
+#include "model_handle.hpp"
+#include "momenta/common/error.hpp"
+#include "momenta/common/suggest.hpp"
+#include "momenta/model/model_builder.hpp"
+#include "momenta/system/multibody_system.hpp"
+
+namespace momenta::python {
+namespace {
+
+using namespace model;
+
+std::string suggestion(std::string_view word, const std::vector<std::string>& known) {
+  const std::vector<std::string_view> views(known.begin(), known.end());
+  return did_you_mean(word, views);
+}
+
+// The builder and the name the model will carry.
+struct Builder {
+  ModelBuilder builder;
+  std::string name;
+};
+
+// A pose {"position": [x, y, z], "rotation": 3 × 3} (either key optional); None: the identity.
+Transform pose_arg(const py::object& pose, std::string_view name) {
+  Transform X;
+  if (pose.is_none()) return X;
+  if (!py::isinstance<py::dict>(pose)) {
+    throw py::type_error(fmt::format(
+        "{}: expected a dict {{'position': [x, y, z], 'rotation': 3 × 3 matrix}}", name));
+  }
+  for (const auto& [key, value] : pose.cast<py::dict>()) {
+    const std::string k = py::str(key);
+    if (k == "position") {
+      X.p = vec3_arg(value, fmt::format("{}['position']", name));
+    } else if (k == "rotation") {
+      X.R = mat3_arg(value, fmt::format("{}['rotation']", name));
+    } else {
+      throw py::value_error(fmt::format("{}: unknown key '{}'{}; expected position, rotation", name,
+                                        k, suggestion(k, {"position", "rotation"})));
+    }
+  }
+  return X;
+}
+
+VecX optional_vector(const py::object& x, std::string_view name) {
+  if (x.is_none()) return {};
+  py::array_t<double, py::array::c_style> storage;
+  return vector_arg(x, name, -1, "", storage);
+}
+
+LoadFrame load_frame(const std::string& frame) {
+  if (frame == "world") return LoadFrame::world;
+  if (frame == "body") return LoadFrame::body;
+  throw InvalidArgument(
+      fmt::format("frame '{}': expected 'world' or 'body' (a follower load)", frame));
+}
+
+// Reads the keyword parameters of one signal shape into its fields; unknown keys are refused
+// with a did-you-mean.
+class SignalParameters {
+ public:
+  SignalParameters(std::string signal, const py::kwargs& kwargs) : signal_(std::move(signal)) {
+    for (const auto& [key, value] : kwargs) values_[py::str(key)] = value;
+  }
+  void read(const char* key, double& field) {
+    known_.push_back(key);
+    if (auto it = values_.find(key); it != values_.end()) {
+      field = it->second.cast<double>();
+      values_.erase(it);
+    }
+  }
+  void read(const char* key, std::vector<double>& field) {
+    known_.push_back(key);
+    if (auto it = values_.find(key); it != values_.end()) {
+      field = it->second.cast<std::vector<double>>();
+      values_.erase(it);
+    }
+  }
+  void finish(const std::string& type) const {
+    if (values_.empty()) return;
+    const std::string key = values_.begin()->first;
+    throw InvalidArgument(
+        fmt::format("signal '{}': a {} signal has no parameter '{}'{}; it takes "
+                    "{}",
+                    signal_, type, key, suggestion(key, known_), fmt::join(known_, ", ")));
+  }
+
+ private:
+  std::string signal_;
+  std::map<std::string, py::handle> values_;
+  std::vector<std::string> known_;
+};
+
+Signal::Shape signal_shape(const std::string& name, const std::string& type,
+                           const py::kwargs& kwargs) {
+  SignalParameters p(name, kwargs);
+  const auto done = [&](auto shape) {
+    p.finish(type);
+    return Signal::Shape(shape);
+  };
+  if (type == "constant") {
+    ConstantSignal s;
+    p.read("value", s.value);
+    return done(s);
+  }
+  if (type == "step") {
+    StepSignal s;
+    p.read("start", s.start), p.read("initial", s.initial), p.read("final", s.final);
+    p.read("rise_time", s.rise_time);
+    return done(s);
+  }
+  if (type == "ramp") {
+    RampSignal s;
+    p.read("start", s.start), p.read("slope", s.slope), p.read("offset", s.offset);
+    p.read("stop", s.stop);
+    return done(s);
+  }
+  if (type == "pulse") {
+    PulseSignal s;
+    p.read("start", s.start), p.read("width", s.width), p.read("amplitude", s.amplitude);
+    p.read("offset", s.offset), p.read("period", s.period);
+    return done(s);
+  }
+  if (type == "sine") {
+    SineSignal s;
+    p.read("amplitude", s.amplitude), p.read("frequency", s.frequency), p.read("phase", s.phase);
+    p.read("offset", s.offset), p.read("start", s.start);
+    return done(s);
+  }
+  if (type == "chirp") {
+    ChirpSignal s;
+    p.read("amplitude", s.amplitude), p.read("f0", s.f0), p.read("f1", s.f1);
+    p.read("start", s.start), p.read("duration", s.duration);
+    return done(s);
+  }
+  if (type == "table") {
+    TableSignal s;
+    p.read("times", s.times), p.read("values", s.values);
+    return done(s);
+  }
+  const std::vector<std::string> types = {"constant", "step",  "ramp", "pulse",
+                                          "sine",     "chirp", "table"};
+  throw InvalidArgument(fmt::format("signal '{}': unknown type '{}'{}; known: {}", name, type,
+                                    suggestion(type, types), fmt::join(types, ", ")));
+}
+
+BodyPoint body_point(const std::string& body, const py::object& point, std::string_view name) {
+  return BodyPoint{body, vec3_arg(point, name)};
+}
+
+}  // namespace
+
+void bind_model_builder(py::module_& m) {
+  py::class_<Builder>(m, "ModelBuilder", R"doc(
+Builds a Model in code with the vocabulary of model files (docs/model-format.md): add bodies,
+joints, force elements and signals in any order, then build(), which checks everything and
+raises InvalidArgument (InvalidInertia for mass properties) naming the item at fault.
+Every add_* method returns the builder, so calls chain.)doc")
+      .def(py::init([](std::string name) {
+             return Builder{{}, std::move(name)};
+           }),
+           py::arg("name") = "model")
+      .def(
+          "set_gravity",
+          [](Builder& b, const py::object& g) -> Builder& {
+            b.builder.set_gravity(vec3_arg(g, "gravity"));
+            return b;
+          },
+          py::arg("gravity"), "Gravitational acceleration in W, m/s² (default [0, 0, -9.81]).")
+      .def(
+          "add_body",
+          [](Builder& b, std::string name,
+             const inertia::MassProperties& mass_properties) -> Builder& {
+            b.builder.add_body(std::move(name), mass_properties);
+            return b;
+          },
+          py::arg("name"), py::arg("mass_properties"),
+          "A body with its mass properties in its own frame (momenta.inertia).")
+      .def(
+          "add_joint",
+          [](Builder& b, std::string name, const std::string& type, std::string parent,
+             std::string child, const py::object& axis, const py::object& axis2,
+             const py::object& in_parent, const py::object& in_child, const py::object& q0,
+             const py::object& v0, double damping,
+             const std::vector<std::string>& prescribed) -> Builder& {
+            Joint j;
+            j.name = std::move(name);
+            j.type = joint_type_from_name(type);
+            j.parent = std::move(parent);
+            j.child = std::move(child);
+            if (!axis.is_none()) j.axis = vec3_arg(axis, "axis");
+            if (!axis2.is_none()) j.axis2 = vec3_arg(axis2, "axis2");
+            j.X_PJ = pose_arg(in_parent, "in_parent");
+            j.X_CJ = pose_arg(in_child, "in_child");
+            j.q0 = optional_vector(q0, "q0");
+            j.v0 = optional_vector(v0, "v0");
+            j.damping = damping;
+            j.prescribed_signals = prescribed;
+            b.builder.add_joint(std::move(j));
+            return b;
+          },
+          py::arg("name"), py::arg("type"), py::kw_only(), py::arg("parent"), py::arg("child"),
+          py::arg("axis") = py::none(), py::arg("axis2") = py::none(),
+          py::arg("in_parent") = py::none(), py::arg("in_child") = py::none(),
+          py::arg("q0") = py::none(), py::arg("v0") = py::none(), py::arg("damping") = 0.0,
+          py::arg("prescribed") = std::vector<std::string>{},
+          R"doc(A joint from `parent` (a body or 'world') to `child`. type: fixed, revolute,
+prismatic, cylindrical, universal, spherical, planar, free (or the aliases weld, hinge, slider,
+ball, floating). axis (in J, default z) and axis2 (universal, in J'); in_parent / in_child: the
+poses of J in the parent and J' in the child, {'position': [x, y, z], 'rotation': R}; q0, v0:
+initial coordinates (default neutral, zero); damping: viscous c on every coordinate;
+prescribed: one signal name per coordinate.)doc")
+      .def(
+          "add_spring_damper",
+          [](Builder& b, std::string name, const std::string& body_a, const py::object& point_a,
+             const std::string& body_b, const py::object& point_b, double stiffness, double damping,
+             double free_length) -> Builder& {
+            b.builder.add_force_element(LinearSpringDamper{
+                std::move(name), body_point(body_a, point_a, "point_a"),
+                body_point(body_b, point_b, "point_b"), stiffness, damping, free_length});
+            return b;
+          },
+          py::arg("name"), py::kw_only(), py::arg("body_a"), py::arg("point_a"), py::arg("body_b"),
+          py::arg("point_b"), py::arg("stiffness") = 0.0, py::arg("damping") = 0.0,
+          py::arg("free_length") = 0.0,
+          "A spring (N/m) and damper (N·s/m) between two body points (p_BoP_B, m): tension "
+          "T = k (ℓ − free_length) + c ℓ̇.")
+      .def(
+          "add_torsional_spring",
+          [](Builder& b, std::string name, std::string joint, std::string body_a,
+             std::string body_b, double stiffness, double damping, double rest_angle) -> Builder& {
+            TorsionalSpringDamper s;
+            s.name = std::move(name);
+            s.joint = std::move(joint);
+            s.body_a = std::move(body_a);
+            s.body_b = std::move(body_b);
+            s.stiffness = stiffness;
+            s.damping = damping;
+            s.rest_angle = rest_angle;
+            b.builder.add_force_element(std::move(s));
+            return b;
+          },
+          py::arg("name"), py::kw_only(), py::arg("joint") = "", py::arg("body_a") = "",
+          py::arg("body_b") = "", py::arg("stiffness") = 0.0, py::arg("damping") = 0.0,
+          py::arg("rest_angle") = 0.0,
+          "On a 1-dof joint, τ = −k (q − rest_angle) − c q̇; or between body_a and body_b, "
+          "relaxed at the initial configuration.")
+      .def(
+          "add_joint_friction",
+          [](Builder& b, std::string name, std::string joint, double viscous) -> Builder& {
+            b.builder.add_force_element(JointFriction{std::move(name), std::move(joint), viscous});
+            return b;
+          },
+          py::arg("name"), py::kw_only(), py::arg("joint"), py::arg("viscous"),
+          "Viscous friction τ = −viscous · v on every coordinate of a joint.")
+      .def(
+          "add_force",
+          [](Builder& b, std::string name, const std::string& body, const py::object& point,
+             const py::object& vector, const std::string& frame, std::string signal) -> Builder& {
+            AppliedForce f;
+            f.name = std::move(name);
+            f.at = body_point(body, point, "point");
+            f.vector = vec3_arg(vector, "vector");
+            f.frame = load_frame(frame);
+            f.signal = std::move(signal);
+            b.builder.add_force_element(std::move(f));
+            return b;
+          },
+          py::arg("name"), py::kw_only(), py::arg("body"),
+          py::arg("point") = py::make_tuple(0, 0, 0), py::arg("vector"), py::arg("frame") = "world",
+          py::arg("signal") = "",
+          "A force (N) at a body point: `vector`, or u(t) · vector with a signal; frame 'world' "
+          "or 'body' (a follower load).")
+      .def(
+          "add_torque",
+          [](Builder& b, std::string name, std::string body, const py::object& vector,
+             const std::string& frame, std::string signal) -> Builder& {
+            AppliedTorque t;
+            t.name = std::move(name);
+            t.body = std::move(body);
+            t.vector = vec3_arg(vector, "vector");
+            t.frame = load_frame(frame);
+            t.signal = std::move(signal);
+            b.builder.add_force_element(std::move(t));
+            return b;
+          },
+          py::arg("name"), py::kw_only(), py::arg("body"), py::arg("vector"),
+          py::arg("frame") = "world", py::arg("signal") = "",
+          "A pure moment (N·m) on a body, constant or u(t) · vector.")
+      .def(
+          "add_signal",
+          [](Builder& b, const std::string& name, const std::string& type,
+             const py::kwargs& parameters) -> Builder& {
+            b.builder.add_signal(Signal(name, signal_shape(name, type, parameters)));
+            return b;
+          },
+          py::arg("name"), py::arg("type"),
+          R"doc(An input signal u(t) with the model file's parameters: constant(value),
+step(final, start, initial, rise_time), ramp(slope, start, offset, stop), pulse(amplitude,
+width, start, offset, period), sine(amplitude, frequency [Hz], phase [rad], offset, start),
+chirp(amplitude, f0, f1, duration, start), table(times, values).)doc")
+      .def(
+          "build",
+          [](const Builder& b) {
+            io::ModelFile file{b.name, "", b.builder.build(), {}, {}, "", {}};
+            // As a model file is accepted: the mass matrix invertible at the initial state.
+            const system::MultibodySystem accepted(file.model);
+            return ModelHandle{std::make_shared<const io::ModelFile>(std::move(file))};
+          },
+          "Checks everything and builds the Model (the builder can be reused).");
+}
+
+}  // namespace momenta::python

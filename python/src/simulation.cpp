@@ -1,0 +1,184 @@
+// momenta.simulate: a run of a model, as `momenta simulate` makes it (the same merge of keyword
+// arguments over the model file's `simulation:` section, the same columns and audit), returned
+// as a SimulationResult whose table is one numpy array.
+
+#include <Python.h>
+#include <fmt/format.h>
+#include <pybind11/stl.h>
+
+#include <atomic>
+#include <memory>
+#include <optional>
+
+#include "bindings.hpp"
+#include "model_handle.hpp"
+#include "momenta/common/error.hpp"
+#include "momenta/simulate/run_request.hpp"
+#include "momenta/simulate/simulation.hpp"
+
+namespace momenta::python {
+namespace {
+
+// Rows appended to one contiguous buffer (row-major), handed to numpy without a copy.
+class BufferSink final : public simulate::RowSink {
+ public:
+  explicit BufferSink(std::size_t expected_rows) : expected_rows_(expected_rows) {}
+  void begin(std::span<const std::string> columns) override {
+    columns_.assign(columns.begin(), columns.end());
+    values_->reserve(expected_rows_ * columns_.size());
+  }
+  void row(std::span<const double> values) override {
+    values_->insert(values_->end(), values.begin(), values.end());
+  }
+  const std::vector<std::string>& columns() const { return columns_; }
+
+  // The table as a rows × columns array owning the buffer.
+  py::array_t<double> release() {
+    auto* owned = values_.release();
+    py::capsule free_when_done(owned, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+    const auto cols = static_cast<py::ssize_t>(columns_.size());
+    const py::ssize_t rows = cols ? static_cast<py::ssize_t>(owned->size()) / cols : 0;
+    return py::array_t<double>({rows, cols}, {cols * sizeof(double), sizeof(double)}, owned->data(),
+                               free_when_done);
+  }
+
+ private:
+  std::size_t expected_rows_;
+  std::vector<std::string> columns_;
+  std::unique_ptr<std::vector<double>> values_ = std::make_unique<std::vector<double>>();
+};
+
+struct SimulationResult {
+  std::vector<std::string> columns;
+  py::array_t<double> data;
+  simulate::SimulationSummary summary;
+  simulate::SimulationOptions options;
+  std::string thinning_note;
+
+  std::size_t column_index(const std::string& name) const {
+    for (std::size_t i = 0; i < columns.size(); ++i) {
+      if (columns[i] == name) return i;
+    }
+    throw py::key_error(
+        fmt::format("no column '{}'; the columns are {}", name, fmt::join(columns, ", ")));
+  }
+  // Column i as a view of the table (no copy).
+  py::array column(std::size_t i) const {
+    return data[py::make_tuple(py::slice(py::none(), py::none(), py::none()), i)];
+  }
+};
+
+py::list audit_of(const simulate::SimulationSummary& s) {
+  py::list out;
+  for (const simulate::AuditEntry& e : s.audit) {
+    py::dict d;
+    d["name"] = e.name;
+    d["initial"] = e.initial;
+    d["scale"] = e.scale;
+    d["final_drift"] = e.final_drift;
+    d["max_drift"] = e.max_drift;
+    d["records"] = e.records;
+    out.append(d);
+  }
+  return out;
+}
+
+py::dict summary_of(const simulate::SimulationSummary& s) {
+  py::dict d;
+  d["integrator"] = s.integrator;
+  d["order"] = s.order;
+  d["adaptive"] = s.adaptive;
+  d["step"] = s.step;
+  d["t_end"] = s.t_end;
+  d["steps"] = s.statistics.steps;
+  d["rejected_steps"] = s.statistics.rejected_steps;
+  d["evaluations"] = s.statistics.evaluations;
+  d["wall_seconds"] = s.wall_seconds;
+  d["rows"] = s.rows;
+  return d;
+}
+
+SimulationResult run_simulation(const ModelHandle& h, std::optional<double> duration,
+                                std::optional<double> dt, std::optional<std::string> integrator,
+                                std::optional<double> rtol, std::optional<double> atol,
+                                std::optional<long> every, bool reactions) {
+  simulate::RunRequest request{duration, dt, rtol, atol, std::move(integrator), every, reactions};
+  simulate::ResolvedRun resolved = simulate::resolve_run(request, h.file->simulation);
+
+  // Ctrl-C: Python's signal handler only sets a flag; check it now and then and end the run.
+  std::atomic<bool> stop{false};
+  resolved.options.stop = &stop;
+  resolved.options.progress = [&stop](double) {
+    if (PyErr_CheckSignals() != 0) stop = true;
+  };
+  simulate::Simulation simulation(h.model(), h.file->outputs, resolved.options);
+
+  const double steps = std::ceil(resolved.options.duration / resolved.options.step);
+  BufferSink sink(static_cast<std::size_t>(std::min(steps / resolved.options.every + 2, 1e6)));
+  SimulationResult result;
+  try {
+    result.summary = simulation.run(sink);
+  } catch (const Interrupted&) {
+    throw py::error_already_set();  // the KeyboardInterrupt PyErr_CheckSignals raised
+  }
+  result.columns = sink.columns();
+  result.data = sink.release();
+  result.options = resolved.options;
+  result.thinning_note = resolved.thinning_note;
+  return result;
+}
+
+}  // namespace
+
+void bind_simulation(py::module_& m) {
+  py::class_<SimulationResult>(m, "SimulationResult", R"doc(
+The table of a run: one row per recorded step, the columns of `momenta simulate` (time,
+<joint>.q<i>, <joint>.v<i>, energies, H, the model's outputs, reactions, audit.*), as one
+(rows, columns) float64 array `data`. result['time'] or result.time gives a column (a view);
+result.audit the conservation audit; result.summary what the run did; to_pandas() a DataFrame.)doc")
+      .def_readonly("columns", &SimulationResult::columns, "Column names, in order.")
+      .def_readonly("data", &SimulationResult::data, "The table, (rows, columns).")
+      .def_property_readonly(
+          "time", [](const SimulationResult& r) { return r.column(0); }, "Times of the rows, s.")
+      .def("__getitem__", [](const SimulationResult& r,
+                             const std::string& name) { return r.column(r.column_index(name)); })
+      .def("__contains__",
+           [](const SimulationResult& r, const std::string& name) {
+             return std::find(r.columns.begin(), r.columns.end(), name) != r.columns.end();
+           })
+      .def("__len__", [](const SimulationResult& r) { return r.data.shape(0); })
+      .def_property_readonly(
+          "audit", [](const SimulationResult& r) { return audit_of(r.summary); },
+          "Conservation audit: a list of dicts (name, initial, scale, final_drift, max_drift, "
+          "records) for energy, |H|, H and the quaternion norm where each is conserved.")
+      .def_property_readonly(
+          "summary", [](const SimulationResult& r) { return summary_of(r.summary); },
+          "integrator, order, adaptive, step, t_end, steps, rejected_steps, evaluations, "
+          "wall_seconds, rows.")
+      .def_property_readonly(
+          "summary_text",
+          [](const SimulationResult& r) { return simulate::format_summary(r.summary); },
+          "The summary as `momenta simulate` prints it.")
+      .def_readonly("thinning_note", &SimulationResult::thinning_note,
+                    "Set when the default row stride thinned a long fixed-step run.")
+      .def("__repr__", [](const SimulationResult& r) {
+        return fmt::format("<momenta.SimulationResult: {} rows × {} columns, t = 0 … {} s, {}>",
+                           r.data.shape(0), r.columns.size(), r.summary.t_end,
+                           r.summary.integrator);
+      });
+
+  m.def("simulate", &run_simulation, py::arg("model"), py::kw_only(),
+        py::arg("duration") = py::none(), py::arg("dt") = py::none(),
+        py::arg("integrator") = py::none(), py::arg("rtol") = py::none(),
+        py::arg("atol") = py::none(), py::arg("every") = py::none(), py::arg("reactions") = false,
+        R"doc(Integrates the model from its initial state, as `momenta simulate` does: keyword
+arguments override the model file's `simulation:` section, which overrides the defaults
+(duration 10 s, rk4 at dt 1 ms; rtol/atol alone choose dopri5; a fixed-step run longer than
+10 000 steps records every n-th so 10 001 rows remain unless `every` is given). integrator: rk4,
+symplectic_euler, dopri5, or a rigid-body method (splitting, splitting4, lie_group, exact).
+reactions=True adds every joint's reaction wrench. Raises InvalidArgument for a bad option,
+NumericalError when the state stops being finite (naming the time and coordinate),
+KeyboardInterrupt on Ctrl-C.)doc");
+}
+
+}  // namespace momenta::python

@@ -1,0 +1,45 @@
+"""Shared fixtures of the Python tests: where the sources and the momenta command are, and how to
+run it, so each binding can be held against the C++ result on the same input."""
+
+import csv
+import io
+import json
+import os
+import pathlib
+import subprocess
+
+import numpy as np
+import pytest
+
+SOURCE_DIR = pathlib.Path(os.environ.get("MOMENTA_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
+EXAMPLES = SOURCE_DIR / "examples"
+
+
+def cli_path():
+    path = os.environ.get("MOMENTA_CLI")
+    if path:
+        return path
+    return str(SOURCE_DIR / "build" / "apps" / "momenta" / "momenta")
+
+
+def run_cli(*args):
+    """Runs the momenta command, returns its standard output; fails the test on a non-zero exit."""
+    result = subprocess.run([cli_path(), *map(str, args)], capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    return result.stdout
+
+
+def cli_json(*args):
+    return json.loads(run_cli(*args, "--json"))
+
+
+def cli_csv(*args):
+    """The CSV the command writes to standard output, as (header, rows × columns array)."""
+    reader = csv.reader(io.StringIO(run_cli(*args)))
+    header = next(reader)
+    return header, np.array([[float(x) for x in row] for row in reader])
+
+
+@pytest.fixture
+def examples():
+    return EXAMPLES

@@ -1,0 +1,123 @@
+"""Linear analysis from Python: linearize against `momenta linearize --json` (bit-identical),
+Franklin's satellite and flexible satellite against their closed forms, Bode and step against
+`momenta response`, equilibria, and StateSpace built from matrices."""
+
+import numpy as np
+import pytest
+
+import momenta
+
+from conftest import EXAMPLES, cli_csv, cli_json
+
+
+@pytest.mark.parametrize("name", ["satellite_attitude", "flexible_satellite", "quarter_car",
+                                  "double_pendulum"])
+def test_linearize_is_the_command_lines(name):
+    path = EXAMPLES / f"{name}.yaml"
+    linear = momenta.linearize(momenta.load_model(path))
+    expected = cli_json("linearize", path)
+    for key in "ABCD":
+        np.testing.assert_array_equal(getattr(linear, key),
+                                      np.array(expected[key]).reshape(getattr(linear, key).shape))
+    assert linear.state_names == expected["state_names"]
+    assert linear.input_names == expected["input_names"]
+    assert linear.output_names == expected["output_names"]
+
+
+def test_franklin_satellite_is_one_over_i_s_squared():
+    linear = momenta.linearize(momenta.load_model(EXAMPLES / "satellite_attitude.yaml"),
+                               outputs=["theta"])
+    g = momenta.transfer_function(linear.system, "thrust", "theta")
+    assert len(g.zeros) == 0 and len(g.poles) == 2
+    np.testing.assert_array_equal(g.poles, [0, 0])
+    assert g.gain == pytest.approx(1 / 5000, rel=1e-15)
+    # G(jω) = −1/(I ω²): −180° and 1/(5000 ω²) at every frequency.
+    bode = momenta.bode(linear.system, "thrust", "theta", frequencies=[0.1, 1.0, 10.0])
+    np.testing.assert_allclose(bode.magnitude, 1 / (5000 * np.array([0.1, 1.0, 10.0])**2), rtol=1e-14)
+    np.testing.assert_allclose(bode.phase_deg, -180.0, atol=1e-12)
+
+
+def test_franklin_flexible_satellite_transfer_function():
+    I1, I2, k, b = 1.0, 0.1, 0.091, 0.0036
+    linear = momenta.linearize(momenta.load_model(EXAMPLES / "flexible_satellite.yaml"),
+                               outputs=["theta2"])
+    g = momenta.transfer_function(linear.system, "tc", "theta2")
+    # θ2/Tc = (b s + k) / (I1 I2 s² (s² + b (I1 + I2)/(I1 I2) s + k (I1 + I2)/(I1 I2))).
+    expected_zero = -k / b
+    np.testing.assert_allclose(g.zeros, [expected_zero], rtol=1e-10)
+    assert g.gain == pytest.approx(b / (I1 * I2), rel=1e-10)
+    wn = np.sqrt(k * (I1 + I2) / (I1 * I2))
+    zeta = b * (I1 + I2) / (2 * I1 * I2 * wn)
+    flexible = [m for m in momenta.modes(linear) if m.natural_frequency > 0.5]
+    assert len(flexible) == 2
+    for mode in flexible:
+        assert mode.natural_frequency == pytest.approx(wn, rel=1e-9)
+        assert mode.damping_ratio == pytest.approx(zeta, rel=1e-8)
+    # Against the closed form at a few frequencies.
+    s = 1j * np.array([0.3, 1.2, 4.0])
+    closed = (b * s + k) / (I1 * I2 * s**2 * (s**2 + b * (I1 + I2) / (I1 * I2) * s + k * (I1 + I2) / (I1 * I2)))
+    bode = momenta.bode(linear.system, "tc", "theta2", frequencies=s.imag)
+    np.testing.assert_allclose(bode.response, closed, rtol=1e-9)
+
+
+def test_bode_and_step_are_the_command_lines():
+    path = EXAMPLES / "quarter_car.yaml"
+    linear = momenta.linearize(momenta.load_model(path))
+    system = linear.system
+    inp, out = system.input_names[0], system.output_names[0]
+    bode = momenta.bode(system, inp, out, omega_min=1.0, omega_max=100.0, points=50)
+    header, table = cli_csv("response", path, "--input", inp, "--output", out, "--bode", 1, 100,
+                            "--points", 50, "--csv", "-")
+    assert header == ["frequency_rad_s", "frequency_hz", "magnitude", "magnitude_db", "phase_deg"]
+    np.testing.assert_array_equal(bode.frequency, table[:, 0])
+    np.testing.assert_array_equal(bode.magnitude, table[:, 2])
+    np.testing.assert_array_equal(bode.magnitude_db, table[:, 3])
+    np.testing.assert_array_equal(bode.phase_deg, table[:, 4])
+    step = momenta.step_response(system, inp)
+    header, table = cli_csv("response", path, "--input", inp, "--output", out, "--step",
+                            "--csv", "-")
+    np.testing.assert_array_equal(step.time, table[:, 0])
+    np.testing.assert_array_equal(step.outputs[:, system.output_names.index(out)], table[:, 1])
+
+
+def test_state_space_from_matrices_mass_spring_damper_step():
+    # m x'' + c x' + k x = u; x(∞) = 1/k; ωn, ζ as the textbook.
+    m, c, k = 2.0, 0.8, 50.0
+    A = [[0, 1], [-k / m, -c / m]]
+    system = momenta.StateSpace(A, [[0], [1 / m]], [[1, 0]], None, ["x", "x_dot"], ["u"], ["x"])
+    wn, zeta = np.sqrt(k / m), c / (2 * np.sqrt(k * m))
+    modes = momenta.modes(system)
+    for mode in modes:
+        assert mode.natural_frequency == pytest.approx(wn, rel=1e-14)
+        assert mode.damping_ratio == pytest.approx(zeta, rel=1e-13)
+    step = momenta.step_response(system, "u", final_time=2.0, samples=401)
+    t = step.time
+    wd = wn * np.sqrt(1 - zeta**2)
+    closed = (1 - np.exp(-zeta * wn * t) * (np.cos(wd * t) + zeta / np.sqrt(1 - zeta**2) * np.sin(wd * t))) / k
+    np.testing.assert_allclose(step.outputs[:, 0], closed, rtol=0, atol=1e-14)
+    info = momenta.step_info(system)
+    assert info.final_value == pytest.approx(1 / k, rel=1e-14)
+    assert info.overshoot == pytest.approx(100 * np.exp(-zeta * np.pi / np.sqrt(1 - zeta**2)), rel=1e-3)
+
+
+def test_state_space_checks_its_sizes():
+    with pytest.raises(ValueError, match=r"B: expected a 2 × n matrix, got shape \(3, 1\)"):
+        momenta.StateSpace(np.eye(2), np.zeros((3, 1)), np.zeros((1, 2)))
+    with pytest.raises(momenta.InvalidArgument, match="did you mean 'road'"):
+        system = momenta.linearize(momenta.load_model(EXAMPLES / "quarter_car.yaml")).system
+        momenta.transfer_function(system, "raod", system.output_names[0])
+
+
+def test_equilibrium_of_the_pendulum_and_its_normal_mode():
+    model = momenta.load_model(EXAMPLES / "pendulum.yaml")
+    eq = momenta.find_equilibrium(model, q_guess=[0.3])
+    np.testing.assert_allclose(eq.q, [0.0], atol=1e-10)
+    assert eq.stable and eq.iterations >= 1
+    normal = momenta.undamped_modes(eq.linear)
+    expected = cli_json("modes", EXAMPLES / "pendulum.yaml", "--about", "equilibrium")
+    assert len(normal) == 1
+    assert normal[0].natural_frequency > 0
+    # The same ωn as the eigenvalues of A at the equilibrium.
+    omega = max(abs(m.eigenvalue.imag) for m in momenta.modes(eq.linear))
+    assert normal[0].natural_frequency == pytest.approx(omega, rel=1e-9)
+    assert expected["model"] == model.name

@@ -1,0 +1,83 @@
+"""momenta.simulate against `momenta simulate` on the same model: the same columns and the same
+numbers, bit for bit (both are the one C++ run loop), the audit, and the options' merge."""
+
+import numpy as np
+import pytest
+
+import momenta
+
+from conftest import EXAMPLES, cli_csv
+
+
+@pytest.mark.parametrize("name, args", [
+    ("double_pendulum", dict(duration=2.0)),
+    ("heavy_top", dict(duration=1.0, integrator="splitting", dt=1e-3)),
+    ("quarter_car", dict(duration=1.0, rtol=1e-9, atol=1e-12)),
+    ("flexible_satellite", dict(duration=3.0, every=10, reactions=True)),
+])
+def test_the_table_is_the_command_lines_bit_for_bit(name, args):
+    path = EXAMPLES / f"{name}.yaml"
+    run = momenta.simulate(momenta.load_model(path), **args)
+    flags = []
+    for key, value in args.items():
+        option = {"dt": "--dt"}.get(key, "--" + key)
+        flags += [option] if value is True else [option, value]
+    header, table = cli_csv("simulate", path, "--quiet", *flags)
+    assert run.columns == header
+    assert run.data.shape == table.shape
+    np.testing.assert_array_equal(run.data, table)
+
+
+def test_columns_are_views_and_named():
+    run = momenta.simulate(momenta.load_model(EXAMPLES / "double_pendulum.yaml"), duration=0.5)
+    assert run.data.dtype == np.float64 and run.data.flags.c_contiguous
+    # The file's step is 0.5 ms.
+    assert run.time[0] == 0.0 and run.time[-1] == 0.5 and len(run) == 1001
+    assert "energy_total" in run and "nothing" not in run
+    np.testing.assert_array_equal(run["upper.q0"], run.data[:, run.columns.index("upper.q0")])
+    with pytest.raises(KeyError, match="no column 'energy'"):
+        run["energy"]
+
+
+def test_energy_audit_of_the_double_pendulum_is_at_round_off():
+    run = momenta.simulate(momenta.load_model(EXAMPLES / "double_pendulum.yaml"), duration=2.0)
+    audit = {entry["name"]: entry for entry in run.audit}
+    # RK4 at the file's 0.5 ms on a motion with periods near 2 s: the energy error is O(h⁴),
+    # 4e-13 of the scale here.
+    assert abs(audit["energy"]["max_drift"]) < 1e-11
+    assert audit["energy"]["records"] == 4001
+    assert run.summary["integrator"] == "rk4" and run.summary["steps"] == 4000
+    assert "energy" in run.summary_text
+
+
+def test_to_pandas_is_indexed_by_time():
+    pandas = pytest.importorskip("pandas")
+    run = momenta.simulate(momenta.load_model(EXAMPLES / "pendulum.yaml"), duration=0.1)
+    frame = run.to_pandas()
+    assert isinstance(frame, pandas.DataFrame)
+    assert frame.index.name == "time" and list(frame.columns) == run.columns[1:]
+    np.testing.assert_array_equal(frame.index.to_numpy(), run.time)
+
+
+def test_options_merge_as_on_the_command_line():
+    model = momenta.load_model(EXAMPLES / "double_pendulum.yaml")
+    assert momenta.simulate(model, duration=0.1, rtol=1e-8).summary["integrator"] == "dopri5"
+    long = momenta.simulate(model, duration=20.0)
+    assert len(long) == 10001 and "every 4 of 40000 steps" in long.thinning_note
+    with pytest.raises(momenta.InvalidArgument, match="fixed step"):
+        momenta.simulate(model, duration=0.1, integrator="rk4", rtol=1e-8)
+    with pytest.raises(momenta.InvalidArgument, match="did you mean 'dopri5'"):
+        momenta.simulate(model, integrator="dopri")
+    with pytest.raises(momenta.InvalidArgument, match="duration"):
+        momenta.simulate(model, duration=-1.0)
+
+
+def test_a_run_that_blows_up_names_the_time(tmp_path):
+    path = tmp_path / "stiff.yaml"
+    path.write_text(
+        "gravity: [0, 0, 0]\n"
+        "bodies:\n  - {name: m, mass: 1}\n"
+        "joints:\n  - {name: x, type: prismatic, parent: world, child: m, axis: [1, 0, 0], q0: 1}\n"
+        "forces:\n  - {name: k, type: torsional_spring, joint: x, stiffness: 1e12}\n")
+    with pytest.raises(momenta.NumericalError, match="t = "):
+        momenta.simulate(momenta.load_model(path), duration=1.0, dt=0.01)
