@@ -12,8 +12,8 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "momenta/frontend/model_loading.hpp"
 #include "momenta/common/error.hpp"
+#include "momenta/frontend/model_loading.hpp"
 #include "momenta/io/model_file.hpp"
 #include "momenta/system/multibody_system.hpp"
 #include "momenta/system/output_set.hpp"

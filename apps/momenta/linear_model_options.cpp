@@ -7,8 +7,8 @@
 
 #include <fmt/format.h>
 
-#include "momenta/frontend/model_loading.hpp"
 #include "momenta/common/error.hpp"
+#include "momenta/frontend/model_loading.hpp"
 
 namespace momenta::cli {
 namespace {

@@ -69,25 +69,6 @@ Mat3 mat3_arg(const py::handle& object, std::string_view name) {
   return matrix_arg(object, name, 3, 3);
 }
 
-py::array_t<double> to_numpy(const VecX& x) {
-  py::array_t<double> out(x.size());
-  std::copy(x.data(), x.data() + x.size(), out.mutable_data());
-  return out;
-}
-
-py::array_t<double> to_numpy(const MatX& x) {
-  py::array_t<double> out({x.rows(), x.cols()});
-  auto view = out.mutable_unchecked<2>();
-  for (Eigen::Index i = 0; i < x.rows(); ++i) {
-    for (Eigen::Index j = 0; j < x.cols(); ++j) view(i, j) = x(i, j);
-  }
-  return out;
-}
-
-py::array_t<double> to_numpy(const Vec3& x) { return to_numpy(VecX(x)); }
-
-py::array_t<double> to_numpy(const Mat3& x) { return to_numpy(MatX(x)); }
-
 py::array_t<std::complex<double>> to_numpy(const Eigen::VectorXcd& x) {
   py::array_t<std::complex<double>> out(x.size());
   std::copy(x.data(), x.data() + x.size(), out.mutable_data());

@@ -14,6 +14,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <complex>
+
 #include <string>
 #include <string_view>
 
@@ -45,11 +47,21 @@ MatX matrix_arg(const py::handle& object, std::string_view name, Eigen::Index ro
 /// A 3 × 3 matrix argument.
 Mat3 mat3_arg(const py::handle& object, std::string_view name);
 
-/// New numpy arrays holding a copy of `x`.
-py::array_t<double> to_numpy(const VecX& x);
-py::array_t<double> to_numpy(const MatX& x);
-py::array_t<double> to_numpy(const Vec3& x);
-py::array_t<double> to_numpy(const Mat3& x);
+/// A new numpy array holding a copy of `x`: 1-D for a vector type (one column at compile time),
+/// 2-D (rows, columns) otherwise.
+template <class Derived>
+py::array_t<double> to_numpy(const Eigen::MatrixBase<Derived>& x) {
+  if constexpr (Derived::ColsAtCompileTime == 1) {
+    py::array_t<double> out(x.size());
+    Eigen::Map<VecX>(out.mutable_data(), x.size()) = x;
+    return out;
+  } else {
+    py::array_t<double> out({x.rows(), x.cols()});
+    using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    Eigen::Map<RowMajor>(out.mutable_data(), x.rows(), x.cols()) = x;
+    return out;
+  }
+}
 py::array_t<std::complex<double>> to_numpy(const Eigen::VectorXcd& x);
 
 // Entry points of each area, called once by module.cpp.

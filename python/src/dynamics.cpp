@@ -184,7 +184,7 @@ Results are new arrays. Not thread-safe: one workspace per thread.)doc")
           "body_velocity",
           [](const Workspace& w, const py::object& body) {
             const Vec6 V = dynamics::body_velocity_in_world(w.data, body_index_arg(w.handle, body));
-            return to_numpy(VecX(V));
+            return to_numpy(V);
           },
           py::arg("body"), "[w_WB_W; v_WBo_W] (6,) after forward_kinematics with v.")
       .def(
@@ -192,7 +192,7 @@ Results are new arrays. Not thread-safe: one workspace per thread.)doc")
           [](const Workspace& w, const py::object& body) {
             const Vec6 A =
                 dynamics::body_acceleration_in_world(w.data, body_index_arg(w.handle, body));
-            return to_numpy(VecX(A));
+            return to_numpy(A);
           },
           py::arg("body"),
           "[alpha_WB_W; a_WBo_W] (6,), the classical acceleration of Bo, after "

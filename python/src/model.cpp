@@ -8,10 +8,7 @@
 
 #include "bindings.hpp"
 #include "model_handle.hpp"
-#include "momenta/common/error.hpp"
-#include "momenta/common/suggest.hpp"
 #include "momenta/frontend/model_loading.hpp"
-#include "momenta/model/model_builder.hpp"
 
 namespace momenta::python {
 namespace {

@@ -10,8 +10,8 @@
 #include "model_handle.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
+#include "momenta/frontend/model_loading.hpp"
 #include "momenta/model/model_builder.hpp"
-#include "momenta/system/multibody_system.hpp"
 
 namespace momenta::python {
 namespace {
@@ -312,8 +312,7 @@ chirp(amplitude, f0, f1, duration, start), table(times, values).)doc")
           "build",
           [](const Builder& b) {
             io::ModelFile file{b.name, "", b.builder.build(), {}, {}, "", {}};
-            // As a model file is accepted: the mass matrix invertible at the initial state.
-            const system::MultibodySystem accepted(file.model);
+            frontend::accept_model(file);
             return ModelHandle{std::make_shared<const io::ModelFile>(std::move(file))};
           },
           "Checks everything and builds the Model (the builder can be reused).");

@@ -69,7 +69,7 @@ def test_external_wrench_enters_as_its_jacobian_transpose():
     model = momenta.load_model(EXAMPLES / "double_pendulum.yaml")
     ws = momenta.Workspace(model)
     q, v = np.array([0.3, -0.4]), np.array([0.1, 0.2])
-    f_ext = np.zeros((model.body_names.__len__(), 6))
+    f_ext = np.zeros((len(model.body_names), 6))
     f_ext[2, 3:] = [1.0, 0.0, 2.0]  # a force on mass2 at its origin, in its frame
     tau0 = ws.rnea(q, v, np.zeros(2))
     tau1 = ws.rnea(q, v, np.zeros(2), f_ext)

@@ -10,7 +10,13 @@
 
 namespace momenta::frontend {
 
-/// Reads `path` and checks that it can be simulated. Throws ParseError
+/// Checks that a model file's model can be simulated (the system layer accepts it: the mass
+/// matrix invertible at the initial state); an error about one of its items is rethrown as
+/// ParseError at the line that declares it, others as they are. A model made in code is wrapped
+/// in a ModelFile with no item locations.
+void accept_model(const io::ModelFile& file);
+
+/// Reads `path` and checks that it can be simulated (accept_model). Throws ParseError
 /// `file:line:column: message` for anything wrong with it, FileError when it cannot be read.
 io::ModelFile load_model(const std::filesystem::path& path);
 
