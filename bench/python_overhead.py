@@ -40,8 +40,8 @@ def chain(n):
     return b.build()
 
 
-def best_median(statement, number, repeat=15):
-    times = timeit.repeat(statement, number=number, repeat=repeat)
+def best_median(statement, number, repeat=15, **names):
+    times = timeit.repeat(statement, number=number, repeat=repeat, globals=names)
     return float(np.median(times)) / number
 
 
@@ -62,7 +62,7 @@ def main():
     ws = momenta.Workspace(model)
     rng = np.random.default_rng(42)
     q, v, tau = rng.uniform(-3.14, 3.14, 7), rng.uniform(-1, 1, 7), rng.uniform(-1, 1, 7)
-    python = best_median(lambda: ws.aba(q, v, tau), number=20000)
+    python = best_median("ws.aba(q, v, tau)", number=20000, ws=ws, q=q, v=v, tau=tau)
     cpp = cpp_aba_seconds()
     print(f"aba, 7-link chain, from Python: {python * 1e9:.0f} ns per call (median of 15 × 20000)")
     if cpp:

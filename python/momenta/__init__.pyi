@@ -32,7 +32,7 @@ class FileError(Error, OSError):
     """A file that cannot be read, or does not exist."""
 
 class NumericalError(Error, ArithmeticError):
-    """A non-finite value or a failure to converge at run time."""
+    """A non-finite value or a failure to converge at run time. Raised by simulate, its attribute result holds the rows recorded up to the failure."""
 
 class Interrupted(Error):
     """A run stopped because it was asked to."""

@@ -47,7 +47,7 @@ TimeGrid grid_of(std::optional<double> final_time, std::optional<std::size_t> sa
 // The operating point: the model's initial state unless q / v are given.
 OperatingPoint point_of(const ModelHandle& h, const py::object& q, const py::object& v, double t) {
   OperatingPoint p = initial_operating_point(h.model());
-  py::array_t<double, py::array::c_style> storage;
+  ArgStorage storage;
   if (!q.is_none()) p.q = vector_arg(q, "q", h.model().nq(), "the model's nq", storage);
   if (!v.is_none()) p.v = vector_arg(v, "v", h.model().nv(), "the model's nv", storage);
   p.t = t;
@@ -170,7 +170,7 @@ did-you-mean).)doc");
         options.t = t;
         options.tolerance = tolerance;
         options.max_iterations = max_iterations;
-        py::array_t<double, py::array::c_style> storage;
+        ArgStorage storage;
         const VecX guess =
             q_guess.is_none()
                 ? h.model().initial_q()
@@ -303,7 +303,7 @@ void bind_responses(py::module_& m) {
       [](const StateSpace& s, const py::object& input, const py::object& output,
          const py::object& frequencies, double omega_min, double omega_max, std::size_t points) {
         if (!frequencies.is_none()) {
-          py::array_t<double, py::array::c_style> storage;
+          ArgStorage storage;
           return frequency_response(s, input_arg(s, input), output_arg(s, output),
                                     VecX(vector_arg(frequencies, "frequencies", -1, "", storage)));
         }

@@ -1,6 +1,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <bit>
 #include <complex>
 
 #include "bindings.hpp"
@@ -16,13 +17,45 @@ std::string shape_text(const py::array& a) {
   return text + (a.ndim() == 1 ? ",)" : ")");
 }
 
+// Already a C-contiguous, aligned float64 array in native byte order: read in place.
+bool is_native_float64_vector(const py::handle& object) {
+  const auto& api = py::detail::npy_api::get();
+  if (!api.PyArray_Check_(object.ptr())) return false;
+  const auto* array = py::detail::array_proxy(object.ptr());
+  const auto* descr = py::detail::array_descriptor_proxy(array->descr);
+  constexpr int kInPlace =
+      py::detail::npy_api::NPY_ARRAY_C_CONTIGUOUS_ | py::detail::npy_api::NPY_ARRAY_ALIGNED_;
+  constexpr char kSwapped = std::endian::native == std::endian::little ? '>' : '<';
+  return descr->type_num == py::detail::npy_api::NPY_DOUBLE_ && descr->byteorder != kSwapped &&
+         (array->flags & kInPlace) == kInPlace;
+}
+
+py::array_t<double> new_array(int ndim, Py_intptr_t* shape) {
+  auto& api = py::detail::npy_api::get();
+  PyObject* descr = api.PyArray_DescrFromType_(py::detail::npy_api::NPY_DOUBLE_);
+  PyObject* array = api.PyArray_NewFromDescr_(api.PyArray_Type_, descr, ndim, shape, nullptr,
+                                              nullptr, 0, nullptr);  // steals descr
+  if (array == nullptr) throw py::error_already_set();
+  return py::reinterpret_steal<py::array_t<double>>(array);
+}
+
 }  // namespace
+
+py::array_t<double> new_float_array(py::ssize_t rows) {
+  Py_intptr_t shape[1] = {rows};
+  return new_array(1, shape);
+}
+
+py::array_t<double> new_float_array(py::ssize_t rows, py::ssize_t cols) {
+  Py_intptr_t shape[2] = {rows, cols};
+  return new_array(2, shape);
+}
 
 py::array_t<double, py::array::c_style> as_float_array(const py::handle& object,
                                                        std::string_view name) {
   // The hot path: already a C-contiguous float64 array, taken as it is.
   using Float64 = py::array_t<double, py::array::c_style>;
-  if (Float64::check_(object)) return py::reinterpret_borrow<Float64>(object);
+  if (is_native_float64_vector(object)) return py::reinterpret_borrow<Float64>(object);
   // Booleans, integers and floats are real numbers; complex numbers, strings and objects are not.
   const py::array raw = py::array::ensure(object);
   const char kind = raw ? raw.dtype().kind() : 'O';
@@ -34,20 +67,20 @@ py::array_t<double, py::array::c_style> as_float_array(const py::handle& object,
 }
 
 Eigen::Map<const VecX> vector_arg(const py::handle& object, std::string_view name,
-                                  Eigen::Index size, std::string_view what,
-                                  py::array_t<double, py::array::c_style>& storage) {
-  storage = as_float_array(object, name);
-  if (storage.ndim() != 1 || (size >= 0 && storage.shape(0) != size)) {
+                                  Eigen::Index size, std::string_view what, ArgStorage& storage) {
+  const auto array = as_float_array(object, name);
+  storage = array;
+  if (array.ndim() != 1 || (size >= 0 && array.shape(0) != size)) {
     const std::string expected =
         size >= 0 ? fmt::format("a vector of {} numbers ({})", size, what) : "a vector";
     throw py::value_error(
-        fmt::format("{}: expected {}, got shape {}", name, expected, shape_text(storage)));
+        fmt::format("{}: expected {}, got shape {}", name, expected, shape_text(array)));
   }
-  return {storage.data(), static_cast<Eigen::Index>(storage.shape(0))};
+  return {array.data(), static_cast<Eigen::Index>(array.shape(0))};
 }
 
 Vec3 vec3_arg(const py::handle& object, std::string_view name) {
-  py::array_t<double, py::array::c_style> storage;
+  ArgStorage storage;
   return vector_arg(object, name, 3, "x, y, z", storage);
 }
 

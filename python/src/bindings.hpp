@@ -19,6 +19,7 @@
 #include <string>
 #include <string_view>
 
+#include "momenta/common/error.hpp"
 #include "momenta/math/types.hpp"
 
 namespace momenta::python {
@@ -30,12 +31,15 @@ namespace py = pybind11;
 py::array_t<double, py::array::c_style> as_float_array(const py::handle& object,
                                                        std::string_view name);
 
+/// What keeps an argument's array alive while a view of it is used: empty until vector_arg fills
+/// it (a default-constructed py::array_t would allocate an empty numpy array on every call).
+using ArgStorage = py::object;
+
 /// A read-only view of a 1-D argument of `size` entries (size < 0: any). `storage` keeps a
 /// converted copy alive for as long as the view is used. Raises ValueError naming `name`, the
 /// expected size and what `what` it is ("the model's nq").
 Eigen::Map<const VecX> vector_arg(const py::handle& object, std::string_view name,
-                                  Eigen::Index size, std::string_view what,
-                                  py::array_t<double, py::array::c_style>& storage);
+                                  Eigen::Index size, std::string_view what, ArgStorage& storage);
 
 /// A 3-vector argument.
 Vec3 vec3_arg(const py::handle& object, std::string_view name);
@@ -47,22 +51,32 @@ MatX matrix_arg(const py::handle& object, std::string_view name, Eigen::Index ro
 /// A 3 × 3 matrix argument.
 Mat3 mat3_arg(const py::handle& object, std::string_view name);
 
+/// A new, uninitialized float64 C-contiguous array of shape (rows,) or (rows, cols), made by
+/// numpy's own constructor (pybind11's builds shape and stride vectors on the heap: the lean
+/// path keeps a small result's cost to the array object itself).
+py::array_t<double> new_float_array(py::ssize_t rows);
+py::array_t<double> new_float_array(py::ssize_t rows, py::ssize_t cols);
+
 /// A new numpy array holding a copy of `x`: 1-D for a vector type (one column at compile time),
 /// 2-D (rows, columns) otherwise.
 template <class Derived>
 py::array_t<double> to_numpy(const Eigen::MatrixBase<Derived>& x) {
   if constexpr (Derived::ColsAtCompileTime == 1) {
-    py::array_t<double> out(x.size());
+    py::array_t<double> out = new_float_array(x.size());
     Eigen::Map<VecX>(out.mutable_data(), x.size()) = x;
     return out;
   } else {
-    py::array_t<double> out({x.rows(), x.cols()});
+    py::array_t<double> out = new_float_array(x.rows(), x.cols());
     using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
     Eigen::Map<RowMajor>(out.mutable_data(), x.rows(), x.cols()) = x;
     return out;
   }
 }
 py::array_t<std::complex<double>> to_numpy(const Eigen::VectorXcd& x);
+
+/// Raises momenta.NumericalError with e's message and the attribute `result` (a run's rows up to
+/// the failure).
+[[noreturn]] void raise_numerical_error(const NumericalError& e, const py::object& partial_result);
 
 // Entry points of each area, called once by module.cpp.
 void bind_errors(py::module_& m);

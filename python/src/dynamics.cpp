@@ -19,7 +19,7 @@
 namespace momenta::python {
 namespace {
 
-using Storage = py::array_t<double, py::array::c_style>;
+using Storage = ArgStorage;
 
 struct Workspace {
   explicit Workspace(ModelHandle h) : handle(std::move(h)), data(handle.model()) {}

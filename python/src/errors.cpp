@@ -8,7 +8,7 @@
 //   ├── MeshError(Error, ValueError)
 //   ├── ParseError(Error, ValueError)     .file, .line, .column
 //   ├── FileError(Error, OSError)
-//   ├── NumericalError(Error, ArithmeticError)
+//   ├── NumericalError(Error, ArithmeticError)   .result: the rows up to the failure, when a run
 //   └── Interrupted(Error)
 //
 // Messages are the C++ ones (file:line:column: key: message for files).
@@ -54,6 +54,13 @@ void raise_parse_error(const ParseError& e) {
 
 }  // namespace
 
+void raise_numerical_error(const NumericalError& e, const py::object& partial_result) {
+  py::object error = py::reinterpret_borrow<py::object>(classes.numerical_error)(e.what());
+  error.attr("result") = partial_result;
+  PyErr_SetObject(classes.numerical_error, error.ptr());
+  throw py::error_already_set();
+}
+
 void bind_errors(py::module_& m) {
   const py::handle exception(PyExc_Exception);
   classes.error =
@@ -78,7 +85,8 @@ void bind_errors(py::module_& m) {
                     "A file that cannot be read, or does not exist.");
   classes.numerical_error =
       new_exception(m, "NumericalError", py::make_tuple(error, py::handle(PyExc_ArithmeticError)),
-                    "A non-finite value or a failure to converge at run time.");
+                    "A non-finite value or a failure to converge at run time. Raised by simulate, "
+                    "its attribute result holds the rows recorded up to the failure.");
   classes.interrupted = new_exception(m, "Interrupted", py::make_tuple(error),
                                       "A run stopped because it was asked to.");
 

@@ -53,7 +53,7 @@ Transform pose_arg(const py::object& pose, std::string_view name) {
 
 VecX optional_vector(const py::object& x, std::string_view name) {
   if (x.is_none()) return {};
-  py::array_t<double, py::array::c_style> storage;
+  ArgStorage storage;
   return vector_arg(x, name, -1, "", storage);
 }
 

@@ -116,15 +116,24 @@ SimulationResult run_simulation(const ModelHandle& h, std::optional<double> dura
   const double steps = std::ceil(resolved.options.duration / resolved.options.step);
   BufferSink sink(static_cast<std::size_t>(std::min(steps / resolved.options.every + 2, 1e6)));
   SimulationResult result;
+  result.options = resolved.options;
+  result.thinning_note = resolved.thinning_note;
   try {
     result.summary = simulation.run(sink);
   } catch (const Interrupted&) {
     throw py::error_already_set();  // the KeyboardInterrupt PyErr_CheckSignals raised
+  } catch (const NumericalError& e) {
+    // The rows up to the failure travel with the error, as the CLI keeps them in its CSV.
+    result.columns = sink.columns();
+    result.data = sink.release();
+    result.summary.integrator = resolved.options.integrator;
+    result.summary.rows = static_cast<long>(result.data.shape(0));
+    result.summary.t_end =
+        result.summary.rows ? *result.data.data(result.summary.rows - 1, 0) : 0.0;
+    raise_numerical_error(e, py::cast(std::move(result)));
   }
   result.columns = sink.columns();
   result.data = sink.release();
-  result.options = resolved.options;
-  result.thinning_note = resolved.thinning_note;
   return result;
 }
 

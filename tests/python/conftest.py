@@ -22,6 +22,18 @@ def cli_path():
     return str(SOURCE_DIR / "build" / "apps" / "momenta" / "momenta")
 
 
+def dynamics_reference(model_path, **state):
+    """The dynamics algorithms called directly from C++ (tests/python/dynamics_reference.cpp) on
+    the model file and the state given (q, v, tau, vdot, body, point): a dict of every result."""
+    exe = os.environ.get("MOMENTA_DYNAMICS_REFERENCE",
+                         str(SOURCE_DIR / "build" / "tests" / "dynamics_reference"))
+    as_lists = {k: np.asarray(x).tolist() for k, x in state.items()}
+    result = subprocess.run([exe, str(model_path)], input=json.dumps(as_lists),
+                            capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    return json.loads(result.stdout)
+
+
 def run_cli(*args):
     """Runs the momenta command, returns its standard output; fails the test on a non-zero exit."""
     result = subprocess.run([cli_path(), *map(str, args)], capture_output=True, text=True)

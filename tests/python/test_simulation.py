@@ -81,3 +81,15 @@ def test_a_run_that_blows_up_names_the_time(tmp_path):
         "forces:\n  - {name: k, type: torsional_spring, joint: x, stiffness: 1e12}\n")
     with pytest.raises(momenta.NumericalError, match="t = "):
         momenta.simulate(momenta.load_model(path), duration=1.0, dt=0.01)
+    # The rows up to the failure come with the error, as the command line keeps them in its CSV:
+    # all finite, ending before the time the message names.
+    with pytest.raises(momenta.NumericalError) as failure:
+        momenta.simulate(momenta.load_model(path), duration=1.0, dt=0.01)
+    partial = failure.value.result
+    assert isinstance(partial, momenta.SimulationResult)
+    assert len(partial) >= 2 and partial.columns[0] == "time"
+    assert np.isfinite(partial.data).all()
+    np.testing.assert_allclose(np.diff(partial.time), 0.01, rtol=1e-12)
+    failed_at = float(str(failure.value).split("t = ")[1].split()[0])
+    assert partial.time[-1] < failed_at
+    assert partial.summary["t_end"] == partial.time[-1]
