@@ -15,6 +15,9 @@ void add_inertia_command(CLI::App& app);
 /// `momenta simulate MODEL`: integrates a model file, CSV out, summary and audit on stderr.
 void add_simulate_command(CLI::App& app);
 
+/// `momenta report MODEL -o FILE`: a run and its HTML report (docs/report.md).
+void add_report_command(CLI::App& app);
+
 /// `momenta info MODEL`: degrees of freedom, bodies, joints, elements, signals, outputs.
 void add_info_command(CLI::App& app);
 

@@ -18,7 +18,9 @@
 #include "momenta/common/error.hpp"
 #include "momenta/inertia/amount.hpp"
 #include "momenta/inertia/mass_properties.hpp"
+#include "momenta/io/mesh_file.hpp"
 #include "momenta/io/part_file.hpp"
+#include "momenta/report/report.hpp"
 #include "option_checks.hpp"
 #include "output_format.hpp"
 
@@ -38,6 +40,8 @@ struct InertiaOptions {
   std::vector<double> about;
   std::string frame = "body";
   bool json = false;
+  std::optional<std::string> report;
+  bool force = false;
 };
 
 // What was read: the composite (or the mesh as one part) and how.
@@ -92,6 +96,16 @@ Result read(const InertiaOptions& o) {
     r.shell = o.shell;
     r.name = path.stem().string();
     r.total = io::read_mesh_mass_properties(path, amount, o.scale.value_or(1.0), o.shell);
+    if (o.report) {
+      // The report draws the mesh: it is the one part.
+      io::PartSummary mesh;
+      mesh.name = r.name;
+      mesh.kind = "mesh";
+      mesh.mass_properties = r.total;
+      mesh.mesh =
+          std::make_shared<inertia::TriangleMesh>(io::read_mesh_file(path, o.scale.value_or(1.0)));
+      r.parts.push_back(std::move(mesh));
+    }
     return r;
   }
   throw InvalidArgument(fmt::format(
@@ -220,6 +234,11 @@ void run(const InertiaOptions& o) {
                "(1 kg/m{}); volume and centre of mass do not depend on it\n",
                r.shell ? "²" : "³");
   }
+  if (o.report) {
+    const io::CompositePart part{r.name, r.total, r.parts};
+    report::write_report(*o.report, report::inertia_report_html(part, o.file, about), o.force);
+    fmt::print(stderr, "momenta: wrote the report {}\n", *o.report);
+  }
 }
 
 }  // namespace
@@ -262,6 +281,12 @@ void add_inertia_command(CLI::App& app) {
       ->check(CLI::IsMember({"body", "principal"}))
       ->capture_default_str();
   command->add_flag("--json", options->json, "Print JSON (SI units) instead of text");
+  command
+      ->add_option("--report", options->report,
+                   "Also write an HTML page of the part: drawn with its centre of mass, principal "
+                   "axes and equivalent ellipsoid, the parts and the tensors (docs/report.md)")
+      ->check(not_a_folder());
+  command->add_flag("--force", options->force, "Overwrite the --report file if it exists");
   command->footer(
       "Examples:\n"
       "  momenta inertia examples/parts/flanged_shaft.yaml\n"

@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
   momenta::cli::add_version_command(app);
   momenta::cli::add_inertia_command(app);
   momenta::cli::add_simulate_command(app);
+  momenta::cli::add_report_command(app);
   momenta::cli::add_info_command(app);
   momenta::cli::add_linearize_command(app);
   momenta::cli::add_modes_command(app);

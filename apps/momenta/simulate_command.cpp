@@ -22,6 +22,7 @@
 #include "momenta/frontend/model_loading.hpp"
 #include "momenta/io/model_file.hpp"
 #include "momenta/model/integrators.hpp"
+#include "momenta/report/report.hpp"
 #include "momenta/simulate/csv_writer.hpp"
 #include "momenta/simulate/run_request.hpp"
 #include "momenta/simulate/simulation.hpp"
@@ -42,6 +43,33 @@ struct SimulateOptions {
   bool force = false;
   bool reactions = false;
   bool quiet = false;
+  // The HTML report (`momenta report`, or `simulate --report`): where, and what its linear
+  // analysis is about.
+  std::optional<std::string> report;
+  report::LinearSettings linear;
+  bool csv = true;  // false for `momenta report`: the table goes to the report only
+};
+
+// Rows to two sinks: the CSV and the table the report is made from.
+class TeeSink final : public simulate::RowSink {
+ public:
+  TeeSink(simulate::RowSink& a, simulate::RowSink& b) : a_(a), b_(b) {}
+  void begin(std::span<const std::string> columns) override {
+    a_.begin(columns);
+    b_.begin(columns);
+  }
+  void row(std::span<const double> values) override {
+    a_.row(values);
+    b_.row(values);
+  }
+  void flush() override {
+    a_.flush();
+    b_.flush();
+  }
+
+ private:
+  simulate::RowSink& a_;
+  simulate::RowSink& b_;
 };
 
 // The command line over the file's `simulation:` section over the defaults (docs/cli.md).
@@ -97,9 +125,25 @@ std::function<void(double)> progress_line(double duration) {
   };
 }
 
+// The report of the rows a run recorded (all of them, or those up to the failure it names).
+void write_run_report(const SimulateOptions& o, const io::ModelFile& file,
+                      const simulate::SimulationOptions& options, simulate::TableSink& table,
+                      const simulate::SimulationSummary& summary, std::string stop_reason) {
+  const report::SimulationRun run =
+      report::make_run(file, options, std::move(table), summary, std::move(stop_reason));
+  if (run.rows.empty()) return;  // nothing was recorded: the error says why
+  report::write_report(*o.report, report::simulation_report_html(run, o.linear), o.force);
+  fmt::print(stderr, "momenta: wrote the report {}\n", *o.report);
+}
+
 void run(const SimulateOptions& o) {
   const io::ModelFile file = frontend::load_model(o.model);
   simulate::SimulationOptions options = merge(o, file.simulation);
+  // The report is refused before the run, not after it, when it would overwrite a file.
+  if (o.report && std::filesystem::exists(*o.report) && !o.force) {
+    throw FileError(
+        fmt::format("{}: the report file exists; pass --force to overwrite it", *o.report));
+  }
   const bool show_progress = !o.quiet && isatty(STDERR_FILENO);
   options.stop = &stop_requested;
   if (show_progress) options.progress = progress_line(options.duration);
@@ -107,7 +151,9 @@ void run(const SimulateOptions& o) {
   simulate::Simulation simulation(file.model, file.outputs, options);
 
   std::unique_ptr<simulate::CsvWriter> writer;
-  if (o.output) {
+  if (!o.csv) {
+    // `momenta report`: no CSV.
+  } else if (o.output) {
     if (std::filesystem::exists(*o.output) && !o.force) {
       throw FileError(
           fmt::format("{}: the output file exists; pass --force to overwrite it", *o.output));
@@ -124,18 +170,83 @@ void run(const SimulateOptions& o) {
     if (show_progress) fmt::print(stderr, "\r\033[K");
   };
   simulate::SimulationSummary summary;
+  simulate::TableSink table;
+  std::unique_ptr<TeeSink> both;
+  if (writer && o.report) both = std::make_unique<TeeSink>(*writer, table);
+  simulate::RowSink& sink = !writer ? static_cast<simulate::RowSink&>(table)
+                            : both  ? static_cast<simulate::RowSink&>(*both)
+                                    : *writer;
   try {
-    summary = simulation.run(*writer);
+    summary = simulation.run(sink);
+  } catch (const NumericalError& e) {
+    clear_progress();
+    writer.reset();
+    if (o.report) write_run_report(o, file, options, table, summary, e.what());
+    throw;
   } catch (...) {
     clear_progress();
     throw;
   }
   clear_progress();
   writer.reset();  // closes the file before the summary says it is written
+  if (o.report) write_run_report(o, file, options, table, summary, "");
+  if (!o.csv) {
+    fmt::print(stderr, "momenta: simulated {} ({}) for {} s; {} rows\n", file.name, o.model,
+               summary.t_end, summary.rows);
+    fmt::print(stderr, "{}", simulate::format_summary(summary));
+    return;
+  }
   fmt::print(stderr, "momenta: simulated {} ({}) for {} s; {} rows, {} columns to {}\n", file.name,
              o.model, summary.t_end, summary.rows, simulation.column_names().size(),
              o.output ? *o.output : std::string("standard output"));
   fmt::print(stderr, "{}", simulate::format_summary(summary));
+}
+
+// The options `simulate` and `report` share: the model, how it is integrated, the progress line.
+void add_run_options(CLI::App* command, SimulateOptions& o) {
+  command->add_option("MODEL", o.model, "A model file (.yaml; docs/model-format.md)")->required();
+  command->add_option("--duration", o.duration, "Simulated time, s (default 10)")
+      ->check(positive_finite());
+  command
+      ->add_option("--dt", o.dt,
+                   "Step, s (default 0.001); with an adaptive integrator its largest step "
+                   "(default duration/1000)")
+      ->check(positive_finite());
+  command
+      ->add_option("--rtol", o.rtol,
+                   "Relative tolerance of an adaptive integrator (default 1e-8; implies dopri5)")
+      ->check(positive_finite());
+  command
+      ->add_option("--atol", o.atol,
+                   "Absolute tolerance of an adaptive integrator (default 1e-10; implies dopri5)")
+      ->check(positive_finite());
+  command->add_option(
+      "--integrator", o.integrator,
+      "rk4 (default), symplectic_euler, dopri5, or a rigid-body method: splitting, splitting4, "
+      "lie_group, exact (a free body or a heavy top only)");
+  command->add_option("--every", o.every, "Record every N-th step (default 1)")
+      ->check(whole_number_from_one());
+  command->add_flag("--quiet,-q", o.quiet,
+                    "No progress line on the terminal (it is shown only when stderr is one)");
+}
+
+// What the report's linear analysis is about: --about, --inputs, --outputs.
+void add_linear_options(CLI::App* command, SimulateOptions& o) {
+  command
+      ->add_option("--about", o.linear.about,
+                   "The report's linear analysis about 'initial' (the initial state) or "
+                   "'equilibrium' (the static equilibrium Newton finds from it)")
+      ->check(CLI::IsMember({"initial", "equilibrium"}))
+      ->capture_default_str();
+  command
+      ->add_option("--inputs", o.linear.inputs,
+                   "Inputs of the linear analysis, comma-separated (default: every signal)")
+      ->delimiter(',');
+  command
+      ->add_option("--outputs", o.linear.outputs,
+                   "Outputs of the linear analysis, comma-separated (default: the file's outputs, "
+                   "else every coordinate)")
+      ->delimiter(',');
 }
 
 }  // namespace
@@ -146,39 +257,21 @@ void add_simulate_command(CLI::App& app) {
       "simulate",
       "Integrate a model file and write time, coordinates, energies, angular momentum and the "
       "model's outputs as CSV; summary and conservation audit on stderr");
-  command->add_option("MODEL", options->model, "A model file (.yaml; docs/model-format.md)")
-      ->required();
-  command->add_option("--duration", options->duration, "Simulated time, s (default 10)")
-      ->check(positive_finite());
-  command
-      ->add_option("--dt", options->dt,
-                   "Step, s (default 0.001); with an adaptive integrator its largest step "
-                   "(default duration/1000)")
-      ->check(positive_finite());
-  command
-      ->add_option("--rtol", options->rtol,
-                   "Relative tolerance of an adaptive integrator (default 1e-8; implies dopri5)")
-      ->check(positive_finite());
-  command
-      ->add_option("--atol", options->atol,
-                   "Absolute tolerance of an adaptive integrator (default 1e-10; implies dopri5)")
-      ->check(positive_finite());
-  command->add_option(
-      "--integrator", options->integrator,
-      "rk4 (default), symplectic_euler, dopri5, or a rigid-body method: splitting, splitting4, "
-      "lie_group, exact (a free body or a heavy top only)");
+  add_run_options(command, *options);
   command
       ->add_option("--output,-o", options->output,
                    "CSV file to write (default: standard output); never overwritten without "
                    "--force")
       ->check(not_a_folder());
-  command->add_flag("--force", options->force, "Overwrite the --output file if it exists");
-  command->add_option("--every", options->every, "Write every N-th step (default 1)")
-      ->check(whole_number_from_one());
-  command->add_flag("--quiet,-q", options->quiet,
-                    "No progress line on the terminal (it is shown only when stderr is one)");
+  command->add_flag("--force", options->force,
+                    "Overwrite the --output and --report files if they exist");
   command->add_flag("--reactions", options->reactions,
                     "Add every joint's reaction force and moment (world frame) to each row");
+  command
+      ->add_option("--report", options->report,
+                   "Also write the run's HTML report (docs/report.md) to this file")
+      ->check(not_a_folder());
+  add_linear_options(command, *options);
   command->footer(
       "Examples:\n"
       "  momenta simulate examples/double_pendulum.yaml --duration 5 --output run.csv\n"
@@ -187,6 +280,30 @@ void add_simulate_command(CLI::App& app) {
       "Options override the model file's `simulation:` section. Columns: time, <joint>.q<i>, "
       "<joint>.v<i>, energy_kinetic, energy_potential, energy_total, H_x, H_y, H_z, the model's "
       "outputs, <joint>.reaction.Fx..Mz (--reactions), audit.* (docs/cli.md).");
+  command->callback([options] { run(*options); });
+}
+
+void add_report_command(CLI::App& app) {
+  auto options = std::make_shared<SimulateOptions>();
+  options->csv = false;
+  options->reactions = true;
+  CLI::App* command = app.add_subcommand(
+      "report",
+      "Simulate a model file (as `simulate` does) and write one self-contained HTML page: the "
+      "motion in 3-D, every column plotted, the linear analysis and the conservation audit");
+  add_run_options(command, *options);
+  command
+      ->add_option("--output,-o", options->report,
+                   "The HTML file to write; never overwritten without --force")
+      ->required()
+      ->check(not_a_folder());
+  command->add_flag("--force", options->force, "Overwrite the --output file if it exists");
+  add_linear_options(command, *options);
+  command->footer(
+      "Examples:\n"
+      "  momenta report examples/double_pendulum.yaml -o pendulum.html\n"
+      "  momenta report examples/quarter_car.yaml --about equilibrium -o car.html\n"
+      "The page opens offline in any browser (docs/report.md).");
   command->callback([options] { run(*options); });
 }
 

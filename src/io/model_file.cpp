@@ -188,9 +188,13 @@ ModelFile compose(const YamlNode& root, const std::filesystem::path& base_dir) {
 
   std::vector<model::OutputSpec> outputs = detail::read_outputs(root, ctx, model);
   model::SimulationSettings simulation = read_simulation(root);
+  std::vector<std::vector<PartSummary>> body_parts(model.bodies().size());
+  for (std::size_t b = 1; b < body_parts.size(); ++b) {
+    body_parts[b] = std::move(ctx.body_parts[model.bodies()[b].name]);
+  }
   return ModelFile{
-      std::move(name), std::move(description), std::move(model), std::move(outputs), simulation,
-      root.file(),     item_locations(ctx)};
+      std::move(name), std::move(description), std::move(model),     std::move(outputs), simulation,
+      root.file(),     item_locations(ctx),    std::move(body_parts)};
 }
 
 }  // namespace

@@ -12,8 +12,10 @@ namespace {
 
 using inertia::MassProperties;
 
-// `part: file.yaml`: a part file's composite, its frame placed in B by the body's pose.
-MassProperties read_part_body(const YamlNode& body, const Context& ctx) {
+// `part: file.yaml`: a part file's composite, its frame placed in B by the body's pose; its parts
+// placed in B go to `parts`.
+MassProperties read_part_body(const YamlNode& body, const Context& ctx,
+                              std::vector<PartSummary>& parts) {
   body.check_keys({"name", "part", "position", "rotation", "quaternion", "euler"});
   const YamlNode ref = body.at("part");
   std::filesystem::path path = ref.as_string();
@@ -27,6 +29,12 @@ MassProperties read_part_body(const YamlNode& body, const Context& ctx) {
   }
   const Mat3 R_BS = read_rotation(body);
   const Vec3 p_BoSo_B = body.find_vec3("position").value_or(Vec3::Zero());
+  for (PartSummary& p : part.parts) {
+    p.mass_properties = p.mass_properties.transformed(R_BS, p_BoSo_B);
+    p.p_BoSo_B = R_BS * p.p_BoSo_B + p_BoSo_B;
+    p.R_BS = R_BS * p.R_BS;
+    parts.push_back(std::move(p));
+  }
   return part.total.transformed(R_BS, p_BoSo_B);
 }
 
@@ -100,14 +108,17 @@ void read_bodies(const YamlNode& root, Context& ctx, model::ModelBuilder& builde
 
     // Mass properties in B: a shape or a mesh (as in part files), a part file, or explicit.
     MassProperties mass_properties;
+    std::vector<PartSummary>& parts = ctx.body_parts[name];
     if (body.has("hole")) {
       body.at("hole").fail("a body cannot be a hole: cut holes in a part file and use 'part'");
     }
     const auto kind = body.which_of({"shape", "mesh", "part"});
     if (kind && *kind != "part") {
-      mass_properties = read_part(body, i, 1.0, std::nullopt, ctx.base_dir).mass_properties;
+      parts.push_back(read_part(body, i, 1.0, std::nullopt, ctx.base_dir));
+      parts.back().name = name;
+      mass_properties = parts.back().mass_properties;
     } else if (kind) {
-      mass_properties = read_part_body(body, ctx);
+      mass_properties = read_part_body(body, ctx, parts);
     } else {
       mass_properties = read_explicit_body(body, name);
     }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "momenta/io/model_file.hpp"
+#include "momenta/io/part_file.hpp"
 #include "momenta/io/yaml_reader.hpp"
 #include "momenta/model/model_builder.hpp"
 #include "one_line.hpp"
@@ -51,6 +52,8 @@ struct Context {
   Declared signals{"signal"};
   /// Joint types by joint name (for checks that need them before the model is built).
   std::map<std::string, model::JointType, std::less<>> joint_types;
+  /// What each body is made of, by body name, placed in its frame (ModelFile::body_parts).
+  std::map<std::string, std::vector<PartSummary>, std::less<>> body_parts;
 };
 
 /// A list section: its elements, or none when the key is absent or empty (`forces:`). Throws

@@ -275,6 +275,33 @@ std::vector<std::string_view> allowed_keys(std::string_view kind_key, const Shap
   return keys;
 }
 
+// A shape's sizes in metres, by key, for drawing it; a 3-vector key gives three entries.
+std::vector<std::pair<std::string, double>> read_sizes(const YamlNode& part, const Shape& shape,
+                                                       double unit) {
+  std::vector<std::pair<std::string, double>> sizes;
+  for (const std::string_view key : shape.size_keys) {
+    const std::string name(key);
+    if (!part.has(name)) continue;
+    const YamlNode node = part.at(name);
+    if (node.is_sequence()) {
+      const Vec3 v = node.as_vec3() * unit;
+      sizes.insert(sizes.end(), {{name + ".x", v.x()}, {name + ".y", v.y()}, {name + ".z", v.z()}});
+    } else {
+      sizes.emplace_back(name, node.as_double() * unit);
+    }
+  }
+  return sizes;
+}
+
+// A mesh's mass properties; a solid's mesh is first checked closed and turned outward.
+inertia::MassProperties mesh_mass_properties(inertia::TriangleMesh& mesh,
+                                             const std::filesystem::path& path,
+                                             inertia::Amount amount, bool shell) {
+  if (shell) return inertia::shell_mesh_mass_properties(mesh, amount);
+  inertia::prepare_solid_mesh(mesh, path.string());
+  return inertia::solid_mesh_mass_properties(mesh, amount);
+}
+
 }  // namespace
 
 // Reads one part in its own frame S and places it in B.
@@ -321,6 +348,7 @@ PartSummary read_part(const YamlNode& part, std::size_t index, double unit,
     } catch (const InvalidArgument& e) {
       part.fail(one_line(e.what()));
     }
+    summary.sizes = read_sizes(part, *it, unit);
   } else if (*kind == "mesh") {
     part.check_keys(allowed_keys("mesh", nullptr));
     summary.kind = "mesh";
@@ -332,7 +360,9 @@ PartSummary read_part(const YamlNode& part, std::size_t index, double unit,
     const Amount amount = read_amount(part, shell ? Measure::kArea : Measure::kVolume,
                                       shell ? "a shell mesh" : "a mesh", default_density);
     try {
-      in_S = read_mesh_mass_properties(path, amount, scale, shell);
+      auto mesh = std::make_shared<inertia::TriangleMesh>(read_mesh_file(path, scale));
+      in_S = mesh_mass_properties(*mesh, path, amount, shell);
+      summary.mesh = std::move(mesh);
     } catch (const Error& e) {
       mesh_node.fail(one_line(e.what()));
     }
@@ -347,6 +377,8 @@ PartSummary read_part(const YamlNode& part, std::size_t index, double unit,
   const Vec3 p_BoSo_B = part.find_vec3("position").value_or(Vec3::Zero()) * unit;
   summary.hole = part.find_bool("hole").value_or(false);
   summary.mass_properties = in_S.transformed(R_BS, p_BoSo_B);
+  summary.R_BS = R_BS;
+  summary.p_BoSo_B = p_BoSo_B;
   return summary;
 }
 
@@ -354,9 +386,7 @@ inertia::MassProperties read_mesh_mass_properties(const std::filesystem::path& p
                                                   inertia::Amount amount, double scale,
                                                   bool shell) {
   inertia::TriangleMesh mesh = read_mesh_file(path, scale);
-  if (shell) return inertia::shell_mesh_mass_properties(mesh, amount);
-  inertia::prepare_solid_mesh(mesh, path.string());
-  return inertia::solid_mesh_mass_properties(mesh, amount);
+  return mesh_mass_properties(mesh, path, amount, shell);
 }
 
 namespace {

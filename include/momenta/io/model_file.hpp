@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "momenta/common/error.hpp"
+#include "momenta/io/part_file.hpp"
 #include "momenta/model/model.hpp"
 #include "momenta/model/output_spec.hpp"
 #include "momenta/model/simulation_settings.hpp"
@@ -30,6 +31,10 @@ struct ModelFile {
   model::SimulationSettings simulation;
   std::string file;                 ///< The file's name as messages give it.
   std::vector<ItemLocation> items;  ///< Where each body, joint, force element, signal is declared.
+  /// What each body is made of, placed in its frame B, for drawing it: indexed like
+  /// model.bodies() (the world's entry empty); one part for a body given by `shape` or `mesh`,
+  /// the file's parts for a `part` file, none for a body given by mass, com and inertia.
+  std::vector<std::vector<PartSummary>> body_parts;
 
   /// The error at the line of the item it is about (Error::item()), as ParseError
   /// `file:line:column: message`; nullopt when it names no item this file declares. For errors

@@ -7,12 +7,14 @@
 // (off-diagonals are minus the products of inertia, docs/conventions.md).
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "momenta/inertia/amount.hpp"
 #include "momenta/inertia/mass_properties.hpp"
+#include "momenta/inertia/triangle_mesh.hpp"
 
 namespace momenta::io {
 
@@ -24,6 +26,14 @@ struct PartSummary {
   int line = 0;       ///< 1-based line of the part in the file.
   /// The part alone, in B (its pose applied). A hole's mass here is positive: the mass removed.
   inertia::MassProperties mass_properties;
+
+  // What the part looks like, for drawing it (the HTML report): its sizes in metres by their
+  // keys ("radius", "length"; a 3-vector key such as "size" gives "size.x", "size.y", "size.z"),
+  // its pose in B, and for a mesh its triangles in the part frame S, in metres.
+  std::vector<std::pair<std::string, double>> sizes;
+  Mat3 R_BS = Mat3::Identity();
+  Vec3 p_BoSo_B = Vec3::Zero();
+  std::shared_ptr<const inertia::TriangleMesh> mesh;
 };
 
 /// What read_part_file returns: the composite and the parts it was built from.

@@ -1,0 +1,66 @@
+#pragma once
+// The HTML report: one self-contained file (every script, style and number inlined; no network)
+// that shows a simulation — the motion in 3-D, every recorded column plotted, the linear
+// analysis, the conservation audit — or a part's mass properties. The page's front-end lives in
+// web/ and is embedded in the library at build time. What each panel shows: docs/report.md.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "momenta/io/model_file.hpp"
+#include "momenta/io/part_file.hpp"
+#include "momenta/math/types.hpp"
+#include "momenta/simulate/simulation.hpp"
+
+namespace momenta::report {
+
+/// A run to report: the model file it came from, its table (the columns of simulate::Simulation,
+/// one row per recorded step) and what the run did.
+struct SimulationRun {
+  const io::ModelFile* file = nullptr;
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+  simulate::SimulationOptions options;
+  simulate::SimulationSummary summary;
+  /// Why the run ended early (a non-finite state, an interrupt); empty when it ran to the end.
+  /// The report then shows the rows up to that time and the reason at the top.
+  std::string stop_reason;
+};
+
+/// What the linear-analysis panel linearizes about, and for which channels.
+struct LinearSettings {
+  std::string about = "initial";     ///< "initial" (the initial state) or "equilibrium"
+  std::vector<std::string> inputs;   ///< as analysis::LinearizationOptions::inputs
+  std::vector<std::string> outputs;  ///< as analysis::LinearizationOptions::outputs
+};
+
+/// The run a simulation left in `table`: with the summary it returned, or — when `stop_reason` is
+/// set (it threw) — a summary of the rows up to the failure (integrator, step, rows, t_end).
+SimulationRun make_run(const io::ModelFile& file, const simulate::SimulationOptions& options,
+                       simulate::TableSink&& table, simulate::SimulationSummary summary,
+                       std::string stop_reason);
+
+/// Runs the model as `momenta simulate` would with `options` (reactions recorded), keeping the
+/// table in memory. A run that stops on a non-finite state returns the rows up to then, with
+/// the error's message as stop_reason; other errors are thrown.
+SimulationRun simulate_for_report(const io::ModelFile& file, simulate::SimulationOptions options);
+
+/// The report page of a run: the summary, the 3-D view, the plots and, when the model can be
+/// linearized about the point `linear` names, the linear analysis (poles and zeros, Bode, step
+/// responses, animated mode shapes); when it cannot, the panel says why.
+std::string simulation_report_html(const SimulationRun& run, const LinearSettings& linear = {});
+
+/// The report page of a part: the composite with its centre of mass, principal axes and
+/// equivalent inertia ellipsoid drawn over its parts (holes shown as holes), the table of parts,
+/// and the inertia tensor about the centre of mass and, when given, about the point `about`
+/// (in the part's frame, m). `source` names the file.
+std::string inertia_report_html(const io::CompositePart& part, const std::string& source,
+                                const std::optional<Vec3>& about = std::nullopt);
+
+/// Writes `html` to `path`. An existing file is kept (FileError naming it and --force) unless
+/// `overwrite`; a failed write leaves no partial file (written to a temporary name, then renamed).
+void write_report(const std::filesystem::path& path, const std::string& html, bool overwrite);
+
+}  // namespace momenta::report

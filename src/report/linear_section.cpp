@@ -1,0 +1,191 @@
+// The linear-analysis panel of a simulation report: the linearization about the initial state
+// or the static equilibrium, its poles, each input–output pair's zeros and Bode data, the step
+// response of each input, and every mode's shape as body poses over one period.
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "momenta/analysis/equilibrium.hpp"
+#include "momenta/analysis/frequency_response.hpp"
+#include "momenta/analysis/modes.hpp"
+#include "momenta/analysis/time_response.hpp"
+#include "momenta/analysis/transfer_function.hpp"
+#include "momenta/common/error.hpp"
+#include "momenta/dynamics/data.hpp"
+#include "momenta/dynamics/kinematics.hpp"
+#include "sections.hpp"
+
+namespace momenta::report::detail {
+namespace {
+
+constexpr int kMaxPairs = 6;  // Bode and zeros: the first pairs, input-major
+constexpr int kMaxModes = 8;  // animated mode shapes, slowest first
+constexpr int kPhases = 48;   // poses per period of a mode's animation
+constexpr int kBodePoints = 400;
+
+json complex_json(std::complex<double> z) { return json::array({z.real(), z.imag()}); }
+
+// Largest displacement of any body's origin or centre of mass between two sets of poses.
+double largest_motion(const model::Model& model, const VecX& q0, const VecX& q1) {
+  dynamics::Data a(model), b(model);
+  dynamics::forward_kinematics(model, a, q0);
+  dynamics::forward_kinematics(model, b, q1);
+  double largest = 0.0;
+  for (int k = 1; k < model.num_bodies(); ++k) {
+    const Vec3 c = model.bodies()[k].mass_properties.center_of_mass();
+    largest = std::max(largest, (a.X_WB[k].p - b.X_WB[k].p).norm());
+    largest =
+        std::max(largest, (a.X_WB[k].p + a.X_WB[k].R * c - b.X_WB[k].p - b.X_WB[k].R * c).norm());
+  }
+  return largest;
+}
+
+// The configuration a mode's shape reaches at phase θ with amplitude a:
+// q = q0 ⊕ a Re(φ_q e^{iθ}), φ_q the shape's configuration entries.
+VecX displaced(const model::Model& model, const analysis::LinearModel& linear,
+               const analysis::Mode& mode, double amplitude, double phase) {
+  VecX tangent = VecX::Zero(model.nv());
+  const std::complex<double> turn = std::polar(1.0, phase);
+  for (std::size_t i = 0; i < linear.coordinates.size(); ++i) {
+    tangent[linear.coordinates[i]] =
+        amplitude * (mode.shape[static_cast<Eigen::Index>(i)] * turn).real();
+  }
+  return model::integrate(model, linear.point.q, tangent, 1.0);
+}
+
+json mode_json(const model::Model& model, const analysis::LinearModel& linear,
+               const analysis::Mode& mode) {
+  // Amplitude: the largest body motion a fifth of the model's characteristic length (linear in
+  // the amplitude, measured at a small one); a mode that moves no point (a spin about a symmetry
+  // axis) turns by 0.3 rad.
+  const double length = analysis::characteristic_length(model);
+  const double probe = 1e-4;
+  double moved = 0.0;
+  for (int k = 0; k < 8; ++k) {
+    moved = std::max(
+        moved, largest_motion(model, linear.point.q,
+                              displaced(model, linear, mode, probe, k * std::numbers::pi / 4)));
+  }
+  const double amplitude = moved > 1e-12 * length ? probe * 0.2 * length / moved : 0.3;
+  std::vector<double> positions, quaternions;
+  for (int k = 0; k < kPhases; ++k) {
+    const VecX q = displaced(model, linear, mode, amplitude, 2 * std::numbers::pi * k / kPhases);
+    append_poses(model, q, positions, quaternions);
+  }
+  return {{"eigenvalue", complex_json(mode.eigenvalue)},
+          {"natural_frequency", mode.natural_frequency},
+          {"damping_ratio",
+           std::isfinite(mode.damping_ratio) ? json(mode.damping_ratio) : json(nullptr)},
+          {"damped_frequency", mode.damped_frequency},
+          {"amplitude", amplitude},
+          {"position", encode_f64(positions)},
+          {"quaternion", encode_f64(quaternions)}};
+}
+
+// The frequency band of the Bode plots: a decade beyond the slowest and fastest nonzero poles.
+std::pair<double, double> bode_band(const analysis::Modes& modes) {
+  double low = INFINITY, high = 0.0;
+  for (const analysis::Mode& m : modes.modes) {
+    if (m.natural_frequency > 1e-9) {
+      low = std::min(low, m.natural_frequency);
+      high = std::max(high, m.natural_frequency);
+    }
+  }
+  if (!(high > 0.0)) return {0.1, 100.0};
+  return {low / 10.0, high * 10.0};
+}
+
+json vector_json(const VecX& x) { return std::vector<double>(x.data(), x.data() + x.size()); }
+
+json analysis_json(const io::ModelFile& file, const analysis::LinearModel& linear,
+                   const std::string& about, double& fastest_rate) {
+  const model::Model& model = file.model;
+  const analysis::StateSpace& sys = linear.system;
+  const analysis::Modes modes = analysis::modes(sys);
+  json poles = json::array(), mode_list = json::array();
+  fastest_rate = 0.0;
+  for (const analysis::Mode& m : modes.modes) {
+    poles.push_back(complex_json(m.eigenvalue));
+    fastest_rate = std::max(fastest_rate, m.natural_frequency);
+    if (m.eigenvalue.imag() >= 0.0 && static_cast<int>(mode_list.size()) < kMaxModes) {
+      mode_list.push_back(mode_json(model, linear, m));
+    }
+  }
+  json pairs = json::array(), steps = json::array();
+  const auto [low, high] = bode_band(modes);
+  const auto m = static_cast<std::size_t>(sys.B().cols());
+  const auto p = static_cast<std::size_t>(sys.C().rows());
+  for (std::size_t i = 0; i < m; ++i) {
+    for (std::size_t o = 0; o < p && static_cast<int>(pairs.size()) < kMaxPairs; ++o) {
+      const analysis::TransferFunction tf = analysis::transfer_function(sys, i, o);
+      const analysis::FrequencyResponse f =
+          analysis::frequency_response(sys, i, o, low, high, kBodePoints);
+      json zeros = json::array();
+      for (const auto& z : tf.zeros) zeros.push_back(complex_json(z));
+      pairs.push_back({{"input", sys.input_names()[i]},
+                       {"output", sys.output_names()[o]},
+                       {"gain", tf.gain},
+                       {"zeros", zeros},
+                       {"frequency", vector_json(f.frequency)},
+                       {"magnitude_db", vector_json(f.magnitude_db)},
+                       {"phase_deg", vector_json(f.phase_deg)}});
+    }
+    if (i < 2 && p > 0) {
+      const analysis::TimeResponse r = analysis::step_response(sys, i);
+      json outputs = json::array();
+      for (std::size_t o = 0; o < p; ++o) {
+        outputs.push_back({{"name", r.output_names[o]},
+                           {"data", encode_f64(std::vector<double>(
+                                        r.outputs.col(static_cast<Eigen::Index>(o)).begin(),
+                                        r.outputs.col(static_cast<Eigen::Index>(o)).end()))}});
+      }
+      steps.push_back({{"input", r.input_name},
+                       {"time", encode_f64(std::vector<double>(r.time.begin(), r.time.end()))},
+                       {"outputs", outputs}});
+    }
+  }
+  return {{"available", true},
+          {"about", about},
+          {"q", vector_json(linear.point.q)},
+          {"states", sys.state_names()},
+          {"inputs", sys.input_names()},
+          {"outputs", sys.output_names()},
+          {"poles", poles},
+          {"modes", mode_list},
+          {"pairs", pairs},
+          {"steps", steps}};
+}
+
+}  // namespace
+
+json linear_json(const io::ModelFile& file, const LinearSettings& settings, double& fastest_rate) {
+  fastest_rate = 0.0;
+  try {
+    analysis::LinearizationOptions options;
+    options.inputs = settings.inputs;
+    options.outputs = settings.outputs;
+    options.output_specs = file.outputs;
+    analysis::OperatingPoint point;
+    std::string about;
+    if (settings.about == "equilibrium") {
+      point = analysis::find_equilibrium(file.model, file.model.initial_q()).point;
+      about = "the static equilibrium";
+    } else if (settings.about == "initial") {
+      point = analysis::initial_operating_point(file.model);
+      about = "the initial state";
+    } else {
+      throw InvalidArgument(
+          fmt::format("about '{}': expected initial or equilibrium", settings.about));
+    }
+    const analysis::LinearModel linear = analysis::linearize(file.model, point, options);
+    return analysis_json(file, linear, about, fastest_rate);
+  } catch (const Error& e) {
+    // The report still stands; the panel says why it is empty.
+    return {{"available", false}, {"reason", e.what()}};
+  }
+}
+
+}  // namespace momenta::report::detail

@@ -1,0 +1,44 @@
+#pragma once
+// Internal to the report: how numbers travel to the page. Long arrays go as base64 of their
+// little-endian IEEE bytes ("f64:" or "f32:" then the text), which the page decodes into typed
+// arrays: exact for float64, a third of the text of decimal, and no parsing of digits.
+// Short arrays and scalars are plain JSON numbers (written to round-trip exactly).
+
+#include <nlohmann/json.hpp>
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "momenta/io/part_file.hpp"
+#include "momenta/math/types.hpp"
+#include "momenta/model/model.hpp"
+
+namespace momenta::report::detail {
+
+using json = nlohmann::ordered_json;
+
+/// "f64:<base64>" of the values (float64, exact).
+std::string encode_f64(std::span<const double> values);
+/// "f32:<base64>" of the values rounded to float32 (for what is only drawn).
+std::string encode_f32(std::span<const double> values);
+
+json vec_json(const Vec3& v);
+/// A 3 × 3 matrix as 9 numbers, row by row.
+json mat_json(const Mat3& m);
+
+/// The drawable description of a part placed in its body frame B: kind, sizes, pose, hole, mesh.
+json part_json(const io::PartSummary& part);
+/// The uniform solid ellipsoid with the same mass, centre of mass and inertia: semi-axes along
+/// the principal axes (columns of R), for bodies given by their inertia alone.
+json equivalent_ellipsoid_json(const inertia::MassProperties& mp);
+
+/// The HTML page: `data` (kind "simulation" or "inertia") with the embedded front-end.
+std::string html_page(const std::string& title, const json& data);
+
+/// The unit of configuration coordinate i and of velocity coordinate i of `model` ("rad", "m",
+/// "1" for quaternion components; "rad/s", "m/s").
+std::string q_unit(const model::Model& model, int i);
+std::string v_unit(const model::Model& model, int i);
+
+}  // namespace momenta::report::detail

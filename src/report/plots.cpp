@@ -1,0 +1,136 @@
+// The plots of a simulation report: every recorded column, grouped by what it is, with its unit,
+// thinned to what a plot's width can show.
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "sections.hpp"
+
+namespace momenta::report::detail {
+namespace {
+
+struct Group {
+  std::string title;
+  std::string unit;
+  bool log = false;  // plotted as |value| on a log axis
+  std::vector<int> columns;
+};
+
+std::string output_unit(model::OutputQuantity quantity) {
+  using Q = model::OutputQuantity;
+  switch (quantity) {
+    case Q::body_position:
+      return "m";
+    case Q::body_velocity:
+      return "m/s";
+    case Q::body_acceleration:
+      return "m/s²";
+    case Q::body_angular_velocity:
+      return "rad/s";
+    case Q::reaction_force:
+      return "N";
+    case Q::reaction_moment:
+      return "N·m";
+    case Q::spring_length:
+      return "m";
+    case Q::spring_tension:
+      return "N";
+    default:
+      return "";
+  }
+}
+
+bool starts_with(const std::string& text, const std::string& prefix) {
+  return text.starts_with(prefix);
+}
+
+// Which group a column belongs to: coordinates and speeds by unit, energies, momentum, each
+// output, reactions, the audit.
+std::vector<Group> group_columns(const io::ModelFile& file,
+                                 const std::vector<std::string>& columns) {
+  const model::Model& model = file.model;
+  std::vector<Group> groups;
+  std::map<std::string, std::size_t> by_title;
+  const auto add = [&](const std::string& title, const std::string& unit, bool log, int c) {
+    auto [it, inserted] = by_title.try_emplace(title, groups.size());
+    if (inserted) groups.push_back({title, unit, log, {}});
+    groups[it->second].columns.push_back(c);
+  };
+  const int nq = model.nq(), nv = model.nv();
+  for (int c = 1; c < static_cast<int>(columns.size()); ++c) {
+    const std::string& name = columns[c];
+    if (c <= nq) {
+      const std::string unit = q_unit(model, c - 1);
+      add("Coordinates (" + unit + ")", unit, false, c);
+    } else if (c <= nq + nv) {
+      const std::string unit = v_unit(model, c - 1 - nq);
+      add("Speeds (" + unit + ")", unit, false, c);
+    } else if (starts_with(name, "energy_")) {
+      add("Energy", "J", false, c);
+    } else if (starts_with(name, "H_")) {
+      add("Angular momentum about the centre of mass, in W", "kg·m²/s", false, c);
+    } else if (starts_with(name, "audit.")) {
+      add("Conservation audit (drift, log scale)", "", true, c);
+    } else if (name.find(".reaction.F") != std::string::npos) {
+      add("Joint reaction forces, in W", "N", false, c);
+    } else if (name.find(".reaction.M") != std::string::npos) {
+      add("Joint reaction moments about J'o, in W", "N·m", false, c);
+    } else {
+      const auto spec = std::find_if(file.outputs.begin(), file.outputs.end(), [&](const auto& s) {
+        return name == s.name || starts_with(name, s.name + ".");
+      });
+      const std::string title = spec != file.outputs.end() ? "Output " + spec->name : name;
+      add(title, spec != file.outputs.end() ? output_unit(spec->quantity) : "", false, c);
+    }
+  }
+  return groups;
+}
+
+}  // namespace
+
+json plots_json(const SimulationRun& run) {
+  const int rows = static_cast<int>(run.rows.size());
+  const int columns = static_cast<int>(run.columns.size());
+  // The rows each plotted point comes from: all, or per bucket the first and last row, with each
+  // column's extremes placed in the order they occur.
+  const bool thinned = rows > 2 * kPlotBuckets;
+  std::vector<std::vector<double>> series(columns);
+  if (!thinned) {
+    for (int c = 0; c < columns; ++c) {
+      for (int r = 0; r < rows; ++r) series[c].push_back(run.rows[r][c]);
+    }
+  } else {
+    for (int b = 0; b < kPlotBuckets; ++b) {
+      const int first = static_cast<int>(static_cast<long>(b) * rows / kPlotBuckets);
+      const int last = static_cast<int>(static_cast<long>(b + 1) * rows / kPlotBuckets) - 1;
+      series[0].push_back(run.rows[first][0]);
+      series[0].push_back(run.rows[last][0]);
+      for (int c = 1; c < columns; ++c) {
+        int low = first, high = first;
+        for (int r = first; r <= last; ++r) {
+          if (run.rows[r][c] < run.rows[low][c]) low = r;
+          if (run.rows[r][c] > run.rows[high][c]) high = r;
+        }
+        const auto [a, z] = std::minmax(low, high);
+        series[c].push_back(run.rows[a][c]);
+        series[c].push_back(run.rows[z][c]);
+      }
+    }
+  }
+  json groups = json::array();
+  for (const Group& g : group_columns(*run.file, run.columns)) {
+    json members = json::array();
+    for (const int c : g.columns) {
+      members.push_back({{"name", run.columns[c]}, {"data", encode_f64(series[c])}});
+    }
+    groups.push_back({{"title", g.title}, {"unit", g.unit}, {"log", g.log}, {"series", members}});
+  }
+  return {{"rows", rows},
+          {"points", series[0].size()},
+          {"thinned", thinned},
+          {"time", encode_f64(series[0])},
+          {"groups", groups}};
+}
+
+}  // namespace momenta::report::detail

@@ -1,0 +1,39 @@
+#pragma once
+// Internal to the report: the sections of a simulation report's data, one function each.
+
+#include <string>
+#include <vector>
+
+#include "momenta/analysis/linearize.hpp"
+#include "momenta/report/report.hpp"
+#include "page_data.hpp"
+
+namespace momenta::report::detail {
+
+/// How many body poses (frames × bodies) the 3-D view keeps at full (float64) precision: the
+/// recorded rows are thinned by a whole stride to stay within it, which keeps a 10 s run of a
+/// small model at every row or every other and a 20-body model near 60 frames per second.
+inline constexpr int kMaxBodyPoses = 12000;
+/// Plot columns hold every row up to twice this; beyond, each of this many buckets keeps its
+/// first and last time and each column's minimum and maximum (the envelope a plot shows).
+inline constexpr int kPlotBuckets = 1000;
+
+/// The scene: bodies with their parts (or equivalent ellipsoids), joints, springs, loads.
+json scene_json(const io::ModelFile& file);
+
+/// Body poses, angular velocities, applied loads and reactions at the kept rows of the run.
+json frames_json(const SimulationRun& run);
+
+/// Every recorded column, grouped and decimated for plotting.
+json plots_json(const SimulationRun& run);
+
+/// The linear analysis about the point `settings` names, or {available: false, reason}.
+/// `fastest_rate` receives the largest |λ| (1/s) when the model was linearized.
+json linear_json(const io::ModelFile& file, const LinearSettings& settings, double& fastest_rate);
+
+/// Body poses of `model` at configuration q: per body (world excluded) position then
+/// quaternion (x, y, z, w), appended to `positions` and `quaternions`.
+void append_poses(const model::Model& model, const VecX& q, std::vector<double>& positions,
+                  std::vector<double>& quaternions);
+
+}  // namespace momenta::report::detail

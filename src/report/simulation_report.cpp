@@ -1,0 +1,125 @@
+// A simulation report's data: the summary panel (model, run, audit verdict) and the sections of
+// sections.hpp, in one page.
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "momenta/common/error.hpp"
+#include "momenta/model/integrators.hpp"
+#include "momenta/report/report.hpp"
+#include "sections.hpp"
+
+namespace momenta::report {
+namespace detail {
+namespace {
+
+// The drift the integrator's accuracy allows over the run (docs/report.md, "Audit verdict"):
+// a fixed-step method of order p, run for T at step h on a model whose fastest rate is ω
+// (the largest |λ| of the linearization; 1/T when there is none), drifts by about
+// ω T (ω h)^p; the verdict allows ten times that. Adaptive methods: a hundred times the larger
+// tolerance. The exact and structure-preserving flows, and every method at the floor: the
+// round-off of the steps taken, 1e-12 per step.
+double expected_drift(const SimulationRun& run, double fastest_rate) {
+  const simulate::SimulationSummary& s = run.summary;
+  const double T = std::max(s.t_end, 1e-300);
+  const double omega = fastest_rate > 0.0 ? fastest_rate : 1.0 / T;
+  const double round_off = 1e-12 * std::max<double>(1.0, static_cast<double>(s.statistics.steps));
+  if (s.adaptive) {
+    return std::max(round_off, 100.0 * std::max(run.options.tolerances.relative,
+                                                run.options.tolerances.absolute));
+  }
+  if (s.order >= model::kExactOrder) return round_off;
+  return std::max(round_off, 10.0 * omega * T * std::pow(omega * s.step, s.order));
+}
+
+json summary_json(const SimulationRun& run, double fastest_rate) {
+  const io::ModelFile& file = *run.file;
+  const simulate::SimulationSummary& s = run.summary;
+  const double allowed = expected_drift(run, fastest_rate);
+  json audit = json::array();
+  bool pass = true;
+  for (const simulate::AuditEntry& e : s.audit) {
+    const bool ok = std::abs(e.max_drift) <= allowed;
+    pass = pass && ok;
+    audit.push_back({{"name", e.name},
+                     {"initial", e.initial},
+                     {"max_drift", e.max_drift},
+                     {"final_drift", e.final_drift},
+                     {"allowed", allowed},
+                     {"verdict", ok ? "pass" : "warn"}});
+  }
+  return {{"model", file.name},
+          {"description", file.description},
+          {"file", file.file},
+          {"bodies", file.model.num_bodies() - 1},
+          {"joints", file.model.num_joints()},
+          {"dof", file.model.nv()},
+          {"nq", file.model.nq()},
+          {"integrator", s.integrator},
+          {"order", s.order >= model::kExactOrder ? json("exact") : json(s.order)},
+          {"adaptive", s.adaptive},
+          {"step", s.step},
+          {"duration", run.options.duration},
+          {"t_end", s.t_end},
+          {"steps", s.statistics.steps},
+          {"rows", run.rows.size()},
+          {"wall_seconds", s.wall_seconds},
+          {"stop_reason", run.stop_reason},
+          {"audit", audit},
+          {"verdict", s.audit.empty() ? "none" : (pass ? "pass" : "warn")}};
+}
+
+}  // namespace
+}  // namespace detail
+
+SimulationRun make_run(const io::ModelFile& file, const simulate::SimulationOptions& options,
+                       simulate::TableSink&& table, simulate::SimulationSummary summary,
+                       std::string stop_reason) {
+  SimulationRun run;
+  run.file = &file;
+  run.options = options;
+  run.summary = std::move(summary);
+  run.stop_reason = std::move(stop_reason);
+  if (!run.stop_reason.empty()) {
+    run.summary.integrator = options.integrator;
+    run.summary.step = options.step;
+    run.summary.rows = static_cast<long>(table.rows.size());
+    run.summary.t_end = table.rows.empty() ? 0.0 : table.rows.back()[0];
+  }
+  run.columns = std::move(table.columns);
+  run.rows = std::move(table.rows);
+  return run;
+}
+
+SimulationRun simulate_for_report(const io::ModelFile& file, simulate::SimulationOptions options) {
+  options.reactions = true;
+  simulate::Simulation simulation(file.model, file.outputs, options);
+  simulate::TableSink table;
+  try {
+    simulate::SimulationSummary summary = simulation.run(table);
+    return make_run(file, options, std::move(table), std::move(summary), "");
+  } catch (const NumericalError& e) {
+    // The rows up to the failure are the report; the reason heads it.
+    return make_run(file, options, std::move(table), {}, e.what());
+  }
+}
+
+std::string simulation_report_html(const SimulationRun& run, const LinearSettings& linear) {
+  if (run.file == nullptr)
+    throw InvalidArgument("simulation_report_html: the run names no model file");
+  if (run.rows.empty() || run.columns.empty()) {
+    throw InvalidArgument("simulation_report_html: the run recorded no rows");
+  }
+  double fastest_rate = 0.0;
+  detail::json linear_section = detail::linear_json(*run.file, linear, fastest_rate);
+  detail::json data = {{"kind", "simulation"},
+                       {"summary", detail::summary_json(run, fastest_rate)},
+                       {"scene", detail::scene_json(*run.file)},
+                       {"frames", detail::frames_json(run)},
+                       {"plots", detail::plots_json(run)},
+                       {"linear", std::move(linear_section)}};
+  return detail::html_page(fmt::format("{} — momenta report", run.file->name), data);
+}
+
+}  // namespace momenta::report

@@ -1,0 +1,62 @@
+// momenta's HTML report: reads the data the library embedded in the page and builds the panels.
+// A small test hook (window.momentaReport) lets the browser tests read back what the page shows.
+
+import 'uplot/dist/uPlot.min.css';
+import './style.css';
+import { decode, element, readData } from './data.js';
+import { inertiaPage } from './inertia.js';
+import { linearSection } from './linear.js';
+import { Motion } from './motion.js';
+import { plotsSection } from './plots.js';
+import { summarySection } from './summary.js';
+import { Timeline } from './timeline.js';
+
+function simulationPage(app, data) {
+  app.append(summarySection(data));
+  const time = decode(data.frames.time);
+  const timeline = new Timeline(time[0], time[time.length - 1]);
+  const view = element('div', { id: 'view', class: 'view' });
+  app.append(element('section', { id: 'motion' }, element('h2', {}, 'Motion'), view, timeline.controls()));
+  const motion = new Motion(view, data, timeline);
+  app.querySelector('#motion').append(motion.controls());
+  const plots = plotsSection(data, timeline);
+  app.append(plots.section);
+  const linear = linearSection(data, motion);
+  app.append(linear.section);
+  let frames = 0;
+  const loop = (now) => {
+    timeline.tick(now);
+    motion.render(now);
+    frames++;
+    requestAnimationFrame(loop);
+  };
+  requestAnimationFrame(loop);
+  return {
+    kind: 'simulation',
+    setTime: (t) => { motion.playMode(null); timeline.set(t); motion.render(performance.now()); },
+    time: () => timeline.time,
+    frameTimes: () => Array.from(motion.time),
+    bodyNames: () => data.scene.bodies.map((b) => b.name),
+    bodyPoint: (name, point, t) => motion.bodyPoint(data.scene.bodies.findIndex((b) => b.name === name), point, t ?? timeline.time),
+    series: () => Object.keys(plots.registry),
+    seriesValues: (name) => Array.from(plots.registry[name] || []),
+    plotTime: () => Array.from(plots.time),
+    linear: () => data.linear,
+    play: (on) => { timeline.playing = on; },
+    playMode: (i) => motion.playMode(data.linear.modes[i]),
+    framesDrawn: () => frames,
+    summary: () => data.summary,
+  };
+}
+
+function start() {
+  const app = document.getElementById('app');
+  const started = performance.now();
+  const data = readData();
+  const hook = data.kind === 'inertia' ? inertiaPage(app, data) : simulationPage(app, data);
+  hook.loadMilliseconds = performance.now() - started;
+  hook.ready = true;
+  window.momentaReport = hook;
+}
+
+start();

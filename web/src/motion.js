@@ -1,0 +1,337 @@
+// The motion of a run in the 3-D view: bodies posed at any time by interpolating the recorded
+// poses (linear in position, slerp in rotation; exact at the recorded times), body frames, joint
+// axes, massless links, springs as coils, and on request each body's ω and H, a body's
+// trajectory, applied loads and joint reactions as arrows scaled with a legend. Mode shapes
+// animate in the same view.
+
+import * as THREE from 'three';
+import { decode, element, formatNumber } from './data.js';
+import { bodyColor, equivalentMesh, partMesh } from './shapes.js';
+import { Viewer, makeArrow, setArrow } from './viewer.js';
+
+// Pose arithmetic in float64 (JavaScript numbers): q = [x, y, z, w].
+function rotate(q, v) {
+  const [x, y, z, w] = q;
+  const tx = 2 * (y * v[2] - z * v[1]);
+  const ty = 2 * (z * v[0] - x * v[2]);
+  const tz = 2 * (x * v[1] - y * v[0]);
+  return [v[0] + w * tx + (y * tz - z * ty), v[1] + w * ty + (z * tx - x * tz),
+    v[2] + w * tz + (x * ty - y * tx)];
+}
+
+function slerp(a, b, t) {
+  if (t === 0) return a.slice();
+  let dot = a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+  const sign = dot < 0 ? -1 : 1;
+  dot *= sign;
+  if (dot > 0.9995) {
+    const q = a.map((x, i) => x + t * (sign * b[i] - x));
+    const n = Math.hypot(...q);
+    return q.map((x) => x / n);
+  }
+  const theta = Math.acos(dot);
+  const s = Math.sin(theta);
+  const wa = Math.sin((1 - t) * theta) / s;
+  const wb = (sign * Math.sin(t * theta)) / s;
+  return a.map((x, i) => wa * x + wb * b[i]);
+}
+
+export class Motion {
+  constructor(container, data, timeline) {
+    this.data = data;
+    this.scene = data.scene;
+    this.timeline = timeline;
+    const frames = data.frames;
+    this.time = decode(frames.time);
+    this.position = decode(frames.position);
+    this.quaternion = decode(frames.quaternion);
+    this.omega = decode(frames.omega);
+    this.bodies = this.scene.bodies;
+    this.nb = this.bodies.length;
+    this.length = this.scene.length;
+    this.viewer = new Viewer(container, this.length);
+    this.mode = null;
+    this.buildBodies();
+    this.buildJoints();
+    this.buildElements();
+    this.buildVectors(frames);
+    this.show(timeline.time);
+    const points = [];
+    for (let k = 0; k < this.time.length; k += Math.max(1, Math.floor(this.time.length / 50))) {
+      for (let b = 0; b < this.nb; b++) points.push(this.bodyPoint(b, this.bodies[b].com, this.time[k]));
+    }
+    points.push([0, 0, 0]);
+    this.viewer.frame(points);
+    timeline.onChange((t) => { if (!this.mode) this.show(t); });
+  }
+
+  // The body's pose at time t: [position, quaternion] (float64).
+  pose(b, t) {
+    const times = this.time;
+    let lo = 0;
+    let hi = times.length - 1;
+    if (t <= times[0]) hi = 0;
+    else if (t >= times[hi]) lo = hi;
+    else {
+      while (hi - lo > 1) {
+        const mid = (lo + hi) >> 1;
+        if (times[mid] <= t) lo = mid; else hi = mid;
+      }
+    }
+    const p0 = this.position.subarray(3 * (lo * this.nb + b), 3 * (lo * this.nb + b) + 3);
+    const q0 = Array.from(this.quaternion.subarray(4 * (lo * this.nb + b), 4 * (lo * this.nb + b) + 4));
+    if (lo === hi || t === times[lo]) return [Array.from(p0), q0];
+    const a = (t - times[lo]) / (times[hi] - times[lo]);
+    const p1 = this.position.subarray(3 * (hi * this.nb + b), 3 * (hi * this.nb + b) + 3);
+    const q1 = Array.from(this.quaternion.subarray(4 * (hi * this.nb + b), 4 * (hi * this.nb + b) + 4));
+    return [[0, 1, 2].map((i) => p0[i] * (1 - a) + p1[i] * a), slerp(q0, q1, a)];
+  }
+
+  // p_WoP_W of the point p_BoP_B of body b at time t.
+  bodyPoint(b, point, t) {
+    const [p, q] = this.pose(b, t);
+    const r = rotate(q, point);
+    return [p[0] + r[0], p[1] + r[1], p[2] + r[2]];
+  }
+
+  frameIndex(t) {
+    let k = 0;
+    while (k + 1 < this.time.length && this.time[k + 1] <= t) k++;
+    return k;
+  }
+
+  buildBodies() {
+    this.groups = this.bodies.map((body, b) => {
+      const group = new THREE.Group();
+      group.matrixAutoUpdate = true;
+      const color = bodyColor(b);
+      if (body.parts.length) {
+        for (const part of body.parts) {
+          const mesh = partMesh(part, color, this.length);
+          if (mesh) group.add(mesh);
+        }
+      } else if (body.equivalent) {
+        group.add(equivalentMesh(body.equivalent, color, this.length));
+      }
+      const axes = new THREE.AxesHelper(0.25 * this.length);
+      axes.userData.kind = 'frame';
+      group.add(axes);
+      this.viewer.scene.add(group);
+      return group;
+    });
+  }
+
+  buildJoints() {
+    // Each joint's axis, drawn at J' on the child; and a link from the parent's joint point to
+    // the child's joint point, so massless rods show.
+    this.jointArrows = this.scene.joints.map((joint) => {
+      const child = this.bodies.findIndex((b) => b.name === joint.child);
+      let arrow = null;
+      if (joint.axis) {
+        arrow = new THREE.ArrowHelper(new THREE.Vector3(...joint.axis), new THREE.Vector3(...joint.origin),
+          0.35 * this.length, 0x333333, 0.06 * this.length, 0.03 * this.length);
+        arrow.userData.kind = 'axis';
+        this.groups[child].add(arrow);
+      }
+      return { joint, child, parent: this.bodies.findIndex((b) => b.name === joint.parent) };
+    });
+    const material = new THREE.LineBasicMaterial({ color: 0x555555 });
+    this.links = [];
+    for (const body of this.bodies.keys()) {
+      // From the body's own joint point through its centre of mass to each child joint point.
+      const geometry = new THREE.BufferGeometry();
+      geometry.setAttribute('position', new THREE.BufferAttribute(new Float32Array(3 * 8), 3));
+      const line = new THREE.Line(geometry, material);
+      line.frustumCulled = false;
+      this.viewer.scene.add(line);
+      this.links.push(line);
+    }
+  }
+
+  buildElements() {
+    const coil = [];
+    const turns = 10;
+    for (let i = 0; i <= 400; i++) {
+      const s = i / 400;
+      const a = 2 * Math.PI * turns * s;
+      const taper = s < 0.05 || s > 0.95 ? 0 : 1;
+      coil.push(new THREE.Vector3(taper * Math.cos(a), taper * Math.sin(a), s));
+    }
+    this.springs = this.scene.elements.filter((e) => e.type === 'spring').map((e) => {
+      const line = new THREE.Line(new THREE.BufferGeometry().setFromPoints(coil),
+        new THREE.LineBasicMaterial({ color: 0x8c564b }));
+      line.frustumCulled = false;
+      this.viewer.scene.add(line);
+      return { e, line, a: this.bodies.findIndex((b) => b.name === e.a), b: this.bodies.findIndex((b) => b.name === e.b) };
+    });
+  }
+
+  buildVectors(frames) {
+    const maxOf = (array) => { let m = 0; for (let i = 0; i < array.length; i += 3) m = Math.max(m, Math.hypot(array[i], array[i + 1], array[i + 2])); return m; };
+    const scaleFor = (maximum) => (maximum > 0 ? (0.6 * this.length) / maximum : 1);
+    this.omegaScale = scaleFor(maxOf(this.omega));
+    // H of each body about its centre of mass: R I_Bcm Rᵀ ω, in W.
+    let hmax = 0;
+    for (let k = 0; k < this.time.length; k++) {
+      for (let b = 0; b < this.nb; b++) hmax = Math.max(hmax, Math.hypot(...this.momentumAt(k, b)));
+    }
+    this.hScale = scaleFor(hmax);
+    this.omegaArrows = this.bodies.map(() => makeArrow(0xd62728));
+    this.hArrows = this.bodies.map(() => makeArrow(0x1f77b4));
+    [...this.omegaArrows, ...this.hArrows].forEach((a) => this.viewer.scene.add(a));
+    this.loads = frames.loads ? { names: frames.loads.names, vector: decode(frames.loads.vector) } : null;
+    this.reactions = frames.reactions ? { force: decode(frames.reactions.force), point: decode(frames.reactions.point) } : null;
+    this.loadScale = this.loads ? scaleFor(maxOf(this.loads.vector)) : 1;
+    this.reactionScale = this.reactions ? scaleFor(maxOf(this.reactions.force)) : 1;
+    this.loadArrows = this.loads ? this.loads.names.map(() => makeArrow(0x2ca02c)) : [];
+    this.reactionArrows = this.reactions ? this.scene.joints.map(() => makeArrow(0x9467bd)) : [];
+    [...this.loadArrows, ...this.reactionArrows].forEach((a) => this.viewer.scene.add(a));
+    this.loadElements = this.scene.elements.filter((e) => e.type === 'force');
+    // A body's trajectory: its centre of mass at every kept frame, shown up to the current time.
+    this.trace = new THREE.Line(new THREE.BufferGeometry(), new THREE.LineBasicMaterial({ color: 0xff7f0e }));
+    this.trace.frustumCulled = false;
+    this.trace.visible = false;
+    this.viewer.scene.add(this.trace);
+    this.toggles = { frames: true, axes: true, omega: false, H: false, loads: false, reactions: false, trace: -1 };
+  }
+
+  momentumAt(k, b) {
+    const q = Array.from(this.quaternion.subarray(4 * (k * this.nb + b), 4 * (k * this.nb + b) + 4));
+    const w = [this.omega[3 * (k * this.nb + b)], this.omega[3 * (k * this.nb + b) + 1], this.omega[3 * (k * this.nb + b) + 2]];
+    const qi = [-q[0], -q[1], -q[2], q[3]];
+    const wB = rotate(qi, w);
+    const I = this.bodies[b].inertia;
+    const hB = [0, 1, 2].map((r) => I[3 * r] * wB[0] + I[3 * r + 1] * wB[1] + I[3 * r + 2] * wB[2]);
+    return rotate(q, hB);
+  }
+
+  setTrace(b) {
+    this.toggles.trace = b;
+    this.trace.visible = b >= 0;
+    if (b < 0) return;
+    const points = [];
+    for (let k = 0; k < this.time.length; k++) points.push(new THREE.Vector3(...this.bodyPoint(b, this.bodies[b].com, this.time[k])));
+    this.trace.geometry.dispose();
+    this.trace.geometry = new THREE.BufferGeometry().setFromPoints(points);
+    this.show(this.timeline.time);
+  }
+
+  placeBodies(poseOf) {
+    const poses = this.bodies.map((_, b) => poseOf(b));
+    poses.forEach(([p, q], b) => {
+      this.groups[b].position.set(p[0], p[1], p[2]);
+      this.groups[b].quaternion.set(q[0], q[1], q[2], q[3]);
+      this.groups[b].traverse((o) => {
+        if (o.userData.kind === 'frame') o.visible = this.toggles.frames;
+        if (o.userData.kind === 'axis') o.visible = this.toggles.axes;
+      });
+    });
+    const world = (b, point) => {
+      if (b < 0) return point;
+      const r = rotate(poses[b][1], point);
+      return [poses[b][0][0] + r[0], poses[b][0][1] + r[1], poses[b][0][2] + r[2]];
+    };
+    // Links: parent joint point → centre of mass → each child's joint point.
+    this.bodies.forEach((body, b) => {
+      const own = this.jointArrows.find((j) => j.child === b);
+      const path = [];
+      if (own) path.push(world(b, own.joint.origin));
+      path.push(world(b, body.com));
+      for (const j of this.jointArrows.filter((x) => x.parent === b)) {
+        path.push(world(b, body.com), world(j.child, j.joint.origin));
+      }
+      const attribute = this.links[b].geometry.getAttribute('position');
+      for (let i = 0; i < 8; i++) {
+        const p = path[Math.min(i, path.length - 1)];
+        attribute.setXYZ(i, p[0], p[1], p[2]);
+      }
+      attribute.needsUpdate = true;
+    });
+    for (const s of this.springs) {
+      const a = world(s.a, s.e.pa);
+      const b = world(s.b, s.e.pb);
+      const d = new THREE.Vector3(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
+      const length = Math.max(d.length(), 1e-9);
+      s.line.position.set(...a);
+      s.line.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), d.clone().normalize());
+      s.line.scale.set(0.06 * this.length, 0.06 * this.length, length);
+    }
+    return world;
+  }
+
+  show(t) {
+    const world = this.placeBodies((b) => this.pose(b, t));
+    const k = this.frameIndex(t);
+    this.bodies.forEach((body, b) => {
+      const c = world(b, body.com);
+      const w = this.omega.subarray(3 * (k * this.nb + b), 3 * (k * this.nb + b) + 3);
+      setArrow(this.omegaArrows[b], c, w, this.omegaScale, this.toggles.omega);
+      setArrow(this.hArrows[b], c, this.momentumAt(k, b), this.hScale, this.toggles.H);
+    });
+    if (this.loads) {
+      this.loadElements.forEach((e, i) => {
+        const b = this.bodies.findIndex((x) => x.name === e.body);
+        const F = this.loads.vector.subarray(3 * (k * this.loadElements.length + i), 3 * (k * this.loadElements.length + i) + 3);
+        setArrow(this.loadArrows[i], world(b, e.point), F, this.loadScale, this.toggles.loads);
+      });
+    }
+    if (this.reactions) {
+      const nj = this.scene.joints.length;
+      this.scene.joints.forEach((_, j) => {
+        const at = this.reactions.point.subarray(3 * (k * nj + j), 3 * (k * nj + j) + 3);
+        const F = this.reactions.force.subarray(3 * (k * nj + j), 3 * (k * nj + j) + 3);
+        setArrow(this.reactionArrows[j], at, F, this.reactionScale, this.toggles.reactions);
+      });
+    }
+    if (this.trace.visible) this.trace.geometry.setDrawRange(0, k + 1);
+  }
+
+  // A mode shape: the body poses over one period, played at the mode's frequency times the speed.
+  playMode(mode) {
+    this.mode = mode ? { mode, position: decode(mode.position), quaternion: decode(mode.quaternion), start: performance.now() } : null;
+    if (!mode) this.show(this.timeline.time);
+  }
+
+  animateMode(now) {
+    const m = this.mode;
+    const phases = m.position.length / (3 * this.nb);
+    const frequency = m.mode.damped_frequency > 0 ? m.mode.damped_frequency : m.mode.natural_frequency;
+    const period = frequency > 0 ? (2 * Math.PI) / frequency : 2;
+    const cycle = (((now - m.start) / 1000) * this.timeline.speed / period) % 1;
+    const k = Math.floor(cycle * phases) % phases;
+    this.placeBodies((b) => [Array.from(m.position.subarray(3 * (k * this.nb + b), 3 * (k * this.nb + b) + 3)),
+      Array.from(m.quaternion.subarray(4 * (k * this.nb + b), 4 * (k * this.nb + b) + 4))]);
+  }
+
+  render(now) {
+    if (this.mode) this.animateMode(now);
+    this.viewer.render();
+  }
+
+  // The toggles and the legend of arrow scales.
+  controls() {
+    const check = (label, key, on) => {
+      const box = element('input', { type: 'checkbox' });
+      box.checked = on;
+      box.addEventListener('change', () => { this.toggles[key] = box.checked; this.show(this.timeline.time); });
+      return element('label', {}, box, ` ${label}`);
+    };
+    const trace = element('select', { 'aria-label': 'trace' }, element('option', { value: -1 }, 'none'),
+      ...this.bodies.map((b, i) => element('option', { value: i }, b.name)));
+    trace.addEventListener('change', () => this.setTrace(Number(trace.value)));
+    const legend = element('div', { class: 'legend' },
+      element('span', { style: 'color:#d62728' }, `ω: 1 m = ${formatNumber(1 / this.omegaScale, 3)} rad/s`), ' · ',
+      element('span', { style: 'color:#1f77b4' }, `H: 1 m = ${formatNumber(1 / this.hScale, 3)} kg·m²/s`),
+      this.loads ? element('span', { style: 'color:#2ca02c' }, ` · loads: 1 m = ${formatNumber(1 / this.loadScale, 3)} N`) : null,
+      this.reactions ? element('span', { style: 'color:#9467bd' }, ` · reactions: 1 m = ${formatNumber(1 / this.reactionScale, 3)} N`) : null);
+    const notes = this.bodies.some((b) => !b.parts.length && b.equivalent)
+      ? element('div', { class: 'note' }, 'Translucent ellipsoids: bodies given by mass and inertia, drawn as the uniform ellipsoid with the same inertia.')
+      : null;
+    return element('div', { class: 'toggles' },
+      check('body frames', 'frames', true), check('joint axes', 'axes', true),
+      check('ω (angular velocity)', 'omega', false), check('H (angular momentum about the centre of mass)', 'H', false),
+      this.loads ? check('applied forces', 'loads', false) : null,
+      this.reactions ? check('joint reactions', 'reactions', false) : null,
+      element('label', {}, 'trace ', trace), legend, notes);
+  }
+}

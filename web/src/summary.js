@@ -1,0 +1,31 @@
+// The summary panel: the model, the run, and the conservation audit with its verdict.
+
+import { element, formatNumber, table } from './data.js';
+
+export function summarySection(data) {
+  const s = data.summary;
+  const section = element('section', { id: 'summary' });
+  if (s.stop_reason) {
+    section.append(element('div', { class: 'stopped', role: 'alert' },
+      element('strong', {}, `The run stopped at t = ${formatNumber(s.t_end)} s: `), s.stop_reason,
+      ' The report shows the rows recorded up to then.'));
+  }
+  section.append(element('h1', {}, s.model), s.description ? element('p', { class: 'description' }, s.description) : null);
+  const facts = [
+    ['file', s.file], ['bodies', s.bodies], ['joints', s.joints], ['degrees of freedom', s.dof],
+    ['integrator', `${s.integrator} (order ${s.order}${s.adaptive ? ', adaptive' : ''})`],
+    [s.adaptive ? 'largest step' : 'step', `${formatNumber(s.step)} s`],
+    ['simulated', `${formatNumber(s.t_end)} s of ${formatNumber(s.duration)} s, ${s.steps} steps, ${s.rows} rows`],
+    ['wall time', `${formatNumber(s.wall_seconds, 3)} s`],
+  ];
+  section.append(element('dl', { class: 'facts' }, ...facts.flatMap(([k, v]) => [element('dt', {}, k), element('dd', {}, String(v))])));
+  const verdict = element('span', { class: `verdict ${s.verdict}` }, s.verdict === 'none' ? 'nothing conserved to audit' : s.verdict);
+  section.append(element('h3', {}, 'Conservation audit ', verdict));
+  if (s.audit.length) {
+    section.append(table(['quantity', 'initial', 'max drift', 'final drift', 'allowed', 'verdict'],
+      s.audit.map((a) => [a.name, formatNumber(a.initial), formatNumber(a.max_drift, 3), formatNumber(a.final_drift, 3),
+        formatNumber(a.allowed, 2), a.verdict])));
+    section.append(element('p', { class: 'note' }, 'Drifts are relative (the quaternion norm error absolute). Allowed: what the integrator\'s order and step imply over the run (docs/report.md).'));
+  }
+  return section;
+}
