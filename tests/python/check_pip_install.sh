@@ -7,7 +7,7 @@ source_dir=$1
 python=$2
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
-cp -r "$source_dir"/{CMakeLists.txt,cmake,include,src,python,pyproject.toml,setup.py,docs} "$scratch"/
+cp -r "$source_dir"/{CMakeLists.txt,cmake,include,src,python,web,pyproject.toml,setup.py,docs} "$scratch"/
 mkdir -p "$scratch/apps" "$scratch/tests" "$scratch/bench"
 cd "$scratch"
 PIP_NO_INDEX=1 "$python" -m pip install --quiet --no-build-isolation --no-deps --target "$scratch/site" .
