@@ -71,9 +71,11 @@ json mode_json(const model::Model& model, const analysis::LinearModel& linear,
   }
   const double amplitude = moved > 1e-12 * length ? probe * 0.2 * length / moved : 0.3;
   std::vector<double> positions, quaternions;
+  dynamics::Data data(model);
   for (int k = 0; k < kPhases; ++k) {
     const VecX q = displaced(model, linear, mode, amplitude, 2 * std::numbers::pi * k / kPhases);
-    append_poses(model, q, positions, quaternions);
+    dynamics::forward_kinematics(model, data, q);
+    append_poses(model, data, positions, quaternions);
   }
   return {{"eigenvalue", complex_json(mode.eigenvalue)},
           {"natural_frequency", mode.natural_frequency},

@@ -94,10 +94,8 @@ json scene_json(const io::ModelFile& file) {
           {"elements", elements}};
 }
 
-void append_poses(const model::Model& model, const VecX& q, std::vector<double>& positions,
-                  std::vector<double>& quaternions) {
-  dynamics::Data data(model);
-  dynamics::forward_kinematics(model, data, q);
+void append_poses(const model::Model& model, const dynamics::Data& data,
+                  std::vector<double>& positions, std::vector<double>& quaternions) {
   for (int b = 1; b < model.num_bodies(); ++b) {
     const Vec3& p = data.X_WB[b].p;
     const Eigen::Quaterniond r(data.X_WB[b].R);
@@ -138,12 +136,8 @@ json frames_json(const SimulationRun& run) {
     const VecX v = Eigen::Map<const VecX>(row.data() + 1 + model.nq(), model.nv());
     time.push_back(row[0]);
     dynamics::forward_kinematics(model, data, q, v);
+    append_poses(model, data, positions, quaternions);
     for (int b = 1; b <= bodies; ++b) {
-      const Vec3& p = data.X_WB[b].p;
-      const Eigen::Quaterniond rotation(data.X_WB[b].R);
-      positions.insert(positions.end(), {p.x(), p.y(), p.z()});
-      quaternions.insert(quaternions.end(),
-                         {rotation.x(), rotation.y(), rotation.z(), rotation.w()});
       const Vec3 w = dynamics::body_velocity_in_world(data, b).head<3>();
       omegas.insert(omegas.end(), {w.x(), w.y(), w.z()});
     }

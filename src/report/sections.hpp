@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "momenta/analysis/linearize.hpp"
+#include "momenta/dynamics/data.hpp"
 #include "momenta/report/report.hpp"
 #include "page_data.hpp"
 
@@ -31,9 +32,9 @@ json plots_json(const SimulationRun& run);
 /// `fastest_rate` receives the largest |λ| (1/s) when the model was linearized.
 json linear_json(const io::ModelFile& file, const LinearSettings& settings, double& fastest_rate);
 
-/// Body poses of `model` at configuration q: per body (world excluded) position then
-/// quaternion (x, y, z, w), appended to `positions` and `quaternions`.
-void append_poses(const model::Model& model, const VecX& q, std::vector<double>& positions,
-                  std::vector<double>& quaternions);
+/// Body poses after forward kinematics in `data`: per body (world excluded) its position, then
+/// its quaternion (x, y, z, w), appended to `positions` and `quaternions`.
+void append_poses(const model::Model& model, const dynamics::Data& data,
+                  std::vector<double>& positions, std::vector<double>& quaternions);
 
 }  // namespace momenta::report::detail

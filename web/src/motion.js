@@ -65,19 +65,24 @@ export class Motion {
     timeline.onChange((t) => { if (!this.mode) this.show(t); });
   }
 
-  // The body's pose at time t: [position, quaternion] (float64).
-  pose(b, t) {
+  // The kept frames around time t: [lo, hi] with time[lo] ≤ t ≤ time[hi] (equal at the ends).
+  bracket(t) {
     const times = this.time;
     let lo = 0;
     let hi = times.length - 1;
-    if (t <= times[0]) hi = 0;
-    else if (t >= times[hi]) lo = hi;
-    else {
-      while (hi - lo > 1) {
-        const mid = (lo + hi) >> 1;
-        if (times[mid] <= t) lo = mid; else hi = mid;
-      }
+    if (t <= times[0]) return [0, 0];
+    if (t >= times[hi]) return [hi, hi];
+    while (hi - lo > 1) {
+      const mid = (lo + hi) >> 1;
+      if (times[mid] <= t) lo = mid; else hi = mid;
     }
+    return [lo, hi];
+  }
+
+  // The body's pose at time t: [position, quaternion] (float64).
+  pose(b, t) {
+    const times = this.time;
+    const [lo, hi] = this.bracket(t);
     const p0 = this.position.subarray(3 * (lo * this.nb + b), 3 * (lo * this.nb + b) + 3);
     const q0 = Array.from(this.quaternion.subarray(4 * (lo * this.nb + b), 4 * (lo * this.nb + b) + 4));
     if (lo === hi || t === times[lo]) return [Array.from(p0), q0];
@@ -94,11 +99,8 @@ export class Motion {
     return [p[0] + r[0], p[1] + r[1], p[2] + r[2]];
   }
 
-  frameIndex(t) {
-    let k = 0;
-    while (k + 1 < this.time.length && this.time[k + 1] <= t) k++;
-    return k;
-  }
+  // The last kept frame at or before t.
+  frameIndex(t) { return this.bracket(t)[0]; }
 
   buildBodies() {
     this.groups = this.bodies.map((body, b) => {
