@@ -25,6 +25,8 @@ constexpr int kMaxPairs = 6;  // Bode and zeros: the first pairs, input-major
 constexpr int kMaxModes = 8;  // animated mode shapes, slowest first
 constexpr int kPhases = 48;   // poses per period of a mode's animation
 constexpr int kBodePoints = 400;
+constexpr std::size_t kMaxStepInputs = 2;   // step responses: of the first inputs,
+constexpr std::size_t kMaxStepOutputs = 6;  // each to its first outputs (a chart apiece)
 
 json complex_json(std::complex<double> z) { return json::array({z.real(), z.imag()}); }
 
@@ -135,10 +137,10 @@ json analysis_json(const io::ModelFile& file, const analysis::LinearModel& linea
                        {"magnitude_db", vector_json(f.magnitude_db)},
                        {"phase_deg", vector_json(f.phase_deg)}});
     }
-    if (i < 2 && p > 0) {
+    if (i < kMaxStepInputs && p > 0) {
       const analysis::TimeResponse r = analysis::step_response(sys, i);
       json outputs = json::array();
-      for (std::size_t o = 0; o < p; ++o) {
+      for (std::size_t o = 0; o < std::min(p, kMaxStepOutputs); ++o) {
         outputs.push_back({{"name", r.output_names[o]},
                            {"data", encode_f64(std::vector<double>(
                                         r.outputs.col(static_cast<Eigen::Index>(o)).begin(),

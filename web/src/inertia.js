@@ -37,7 +37,8 @@ export function inertiaPage(app, data) {
       0.8 * extent, color, 0.1 * extent, 0.05 * extent));
   });
   viewer.frame([data.com, ...data.parts.map((p) => p.p)].map((p) => p.map((x) => x)));
-  const animate = () => { viewer.render(); requestAnimationFrame(animate); };
+  let frames = 0;
+  const animate = () => { viewer.render(); frames++; requestAnimationFrame(animate); };
   requestAnimationFrame(animate);
   app.append(element('p', { class: 'note' }, 'Black dot: centre of mass. Arrows: principal axes 1, 2, 3 (red, green, blue; moments ascending). Gold: the uniform ellipsoid with the same mass and inertia. Dark wireframes: holes.'));
   const facts = element('section', {}, element('h2', {}, 'The part'),
@@ -49,5 +50,5 @@ export function inertiaPage(app, data) {
   facts.append(element('h3', {}, 'Parts'), table(['part', 'kind', 'line', 'mass (kg)', 'centre of mass (m)', ''],
     data.parts.map((p) => [p.name, p.kind, p.line, formatNumber(p.mass), `[${p.com.map((x) => formatNumber(x, 5)).join(', ')}]`, p.hole ? 'hole' : ''])));
   app.append(facts);
-  return { viewer, ready: true };
+  return { kind: 'inertia', framesDrawn: () => frames, ready: true };
 }

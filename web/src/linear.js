@@ -2,7 +2,7 @@
 // input–output pair, step responses, and the modes (ωn, ζ) with their shapes animated in the
 // 3-D view.
 
-import { chart } from './plots.js';
+import { LazyCharts, chart } from './plots.js';
 import { decode, element, formatNumber, table } from './data.js';
 
 function poleZeroMap(poles, zeros) {
@@ -38,7 +38,7 @@ export function linearSection(data, motion) {
   const section = element('section', { id: 'linear' }, element('h2', {}, 'Linear analysis'));
   if (!linear.available) {
     section.append(element('p', { class: 'unavailable' }, `Not available: ${linear.reason}`));
-    return { section };
+    return { section, charts: null };
   }
   section.append(element('p', {}, `Linearized about ${linear.about}: ${linear.states.length} states, inputs `,
     linear.inputs.length ? linear.inputs.join(', ') : 'none (the model has no signals)', '; outputs ',
@@ -61,23 +61,27 @@ export function linearSection(data, motion) {
   section.append(row);
   const bode = element('div', { class: 'plot-grid' });
   section.append(bode);
-  const plots = [];
+  const charts = new LazyCharts();
   for (const pair of linear.pairs) {
     const title = `${pair.output} / ${pair.input}`;
     const w = pair.frequency;
     const m = element('div', { class: 'plot' });
     const p = element('div', { class: 'plot' });
     bode.append(m, p);
-    plots.push(chart(m, { title: `Bode magnitude ${title}`, xLabel: 'ω (rad/s)', yLabel: 'dB', x: w,
+    charts.add(m, () => chart(m, { title: `Bode magnitude ${title}`, xLabel: 'ω (rad/s)', yLabel: 'dB', x: w,
       series: [{ name: 'magnitude (dB)', data: pair.magnitude_db.map((v) => (Number.isFinite(v) ? v : null)) }], logX: true }));
-    plots.push(chart(p, { title: `Bode phase ${title}`, xLabel: 'ω (rad/s)', yLabel: 'deg', x: w,
+    charts.add(p, () => chart(p, { title: `Bode phase ${title}`, xLabel: 'ω (rad/s)', yLabel: 'deg', x: w,
       series: [{ name: 'phase (°)', data: pair.phase_deg }], logX: true }));
   }
+  // One chart per output: the outputs of a model have different units (metres, newtons).
   for (const step of linear.steps) {
-    const holder = element('div', { class: 'plot' });
-    bode.append(holder);
-    plots.push(chart(holder, { title: `Step response to ${step.input}`, xLabel: 't (s)', yLabel: 'output', x: decode(step.time),
-      series: step.outputs.map((o) => ({ name: o.name, data: decode(o.data) })) }));
+    const time = decode(step.time);
+    for (const output of step.outputs) {
+      const holder = element('div', { class: 'plot' });
+      bode.append(holder);
+      charts.add(holder, () => chart(holder, { title: `Step response of ${output.name} to ${step.input}`, xLabel: 't (s)',
+        yLabel: output.name, x: time, series: [{ name: output.name, data: decode(output.data) }] }));
+    }
   }
-  return { section, plots };
+  return { section, charts };
 }

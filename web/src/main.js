@@ -41,6 +41,7 @@ function simulationPage(app, data) {
     series: () => Object.keys(plots.registry),
     seriesValues: (name) => Array.from(plots.registry[name] || []),
     plotTime: () => Array.from(plots.time),
+    drawAllCharts: () => plots.charts.drawAll() + (linear.charts?.drawAll() ?? 0),
     linear: () => data.linear,
     play: (on) => { timeline.playing = on; },
     playMode: (i) => motion.playMode(data.linear.modes[i]),

@@ -1,9 +1,14 @@
 // Every recorded column, one uPlot chart per group (units on the axis, zoom by dragging,
 // double-click to reset, hover read-out in the legend), their cursors linked with each other and
 // with the 3-D view's time: clicking a plot moves the time there; playing moves a marker.
+// A chart is drawn when it comes near the window (a software-rendered browser pays for every
+// line of every canvas), and a group of many columns starts with its first few shown: the
+// others are a click on their legend entry away.
 
 import uPlot from 'uplot';
 import { decode, element } from './data.js';
+
+const SHOWN_AT_FIRST = 8;
 
 const COLORS = ['#4e79a7', '#f28e2b', '#59a14f', '#e15759', '#76b7b2', '#edc948', '#b07aa1',
   '#ff9da7', '#9c755f', '#bab0ac'];
@@ -27,13 +32,40 @@ function timeMarker(timeline) {
   };
 }
 
+// A logarithmic axis ticked and labelled at its decades only (0.01, 0.1, 1, …, and 10⁻¹² beyond
+// 10⁻³ or from 10⁵): uPlot's own labels round values below 10⁻³ to 0.
+const isDecade = (v) => v > 0 && Math.abs(Math.log10(v) - Math.round(Math.log10(v))) < 1e-9;
+const SUPERSCRIPT = { '-': '⁻', 0: '⁰', 1: '¹', 2: '²', 3: '³', 4: '⁴', 5: '⁵', 6: '⁶', 7: '⁷', 8: '⁸', 9: '⁹' };
+const decadeLabel = (v) => (v >= 1e-3 && v < 1e5 ? uPlot.fmtNum(v)
+  : `10${String(Math.round(Math.log10(v))).replace(/./g, (c) => SUPERSCRIPT[c])}`);
+const decades = (u, splits) => splits.map((v) => (v !== null && isDecade(v) ? v : null));
+const logAxis = {
+  filter: decades,
+  grid: { filter: decades },
+  ticks: { filter: decades },
+  values: (u, splits) => splits.map((v) => (v !== null && isDecade(v) ? decadeLabel(v) : '')),
+};
+
+// A linear axis's labels: uPlot's own where they are readable, powers of ten where the values
+// are below 10⁻³ or from 10⁷ on (rounding noise of 10⁻¹⁴ would read as 0 otherwise).
+function linearLabels(u, splits, axis, space, increment) {
+  const scale = Math.max(0, ...splits.filter((v) => v !== null).map(Math.abs));
+  if (scale > 0 && (scale < 1e-3 || scale >= 1e7)) {
+    const digits = Math.min(6, Math.max(0, Math.floor(Math.log10(scale)) - Math.floor(Math.log10(increment))));
+    return splits.map((v) => (v === null ? '' : v === 0 ? '0' : v.toExponential(digits)));
+  }
+  return splits.map((v) => (v === null ? '' : uPlot.fmtNum(v)));
+}
+
 export function chart(container, { title, xLabel, yLabel, x, series, logX = false, logY = false,
   timeline = null, sync = null, width = 560, height = 220 }) {
   const options = {
     title, width, height,
     scales: { x: { time: false, distr: logX ? 3 : 1 }, y: { distr: logY ? 3 : 1 } },
-    axes: [{ label: xLabel }, { label: yLabel, size: 70 }],
-    series: [{ label: xLabel }, ...series.map((s, i) => ({ label: s.name, stroke: COLORS[i % COLORS.length], width: 1.5, points: { show: false } }))],
+    axes: [{ label: xLabel, ...(logX ? logAxis : { values: linearLabels }) },
+      { label: yLabel, size: 82, ...(logY ? logAxis : { values: linearLabels }) }],
+    series: [{ label: xLabel }, ...series.map((s, i) => ({ label: s.name, stroke: COLORS[i % COLORS.length], width: 1.5,
+      points: { show: false }, show: i < SHOWN_AT_FIRST }))],
     cursor: sync ? { sync: { key: sync } } : {},
     plugins: timeline ? [timeMarker(timeline)] : [],
   };
@@ -47,6 +79,36 @@ export function chart(container, { title, xLabel, yLabel, x, series, logX = fals
   return plot;
 }
 
+// Charts drawn when their holder comes within 300 px of the window, or all at once on request
+// (the tests' screenshots).
+export class LazyCharts {
+  constructor() {
+    this.charts = [];
+    this.pending = new Map();
+    this.observer = new IntersectionObserver((entries) => {
+      for (const entry of entries) if (entry.isIntersecting) this.draw(entry.target);
+    }, { rootMargin: '300px' });
+  }
+
+  add(holder, make) {
+    this.pending.set(holder, make);
+    this.observer.observe(holder);
+  }
+
+  draw(holder) {
+    const make = this.pending.get(holder);
+    if (!make) return;
+    this.pending.delete(holder);
+    this.observer.unobserve(holder);
+    this.charts.push(make());
+  }
+
+  drawAll() {
+    for (const holder of [...this.pending.keys()]) this.draw(holder);
+    return this.charts.length;
+  }
+}
+
 export function plotsSection(data, timeline) {
   const section = element('section', { id: 'plots' }, element('h2', {}, 'Plots'));
   const note = data.plots.thinned
@@ -56,8 +118,9 @@ export function plotsSection(data, timeline) {
   const grid = element('div', { class: 'plot-grid' });
   section.append(grid);
   const time = decode(data.plots.time);
-  const plots = [];
+  const charts = new LazyCharts();
   const registry = {};
+  const width = () => Math.max(320, Math.min(640, grid.clientWidth / (grid.clientWidth > 1100 ? 2 : 1) - 16));
   for (const group of data.plots.groups) {
     const holder = element('div', { class: 'plot' });
     grid.append(holder);
@@ -67,13 +130,12 @@ export function plotsSection(data, timeline) {
       registry[s.name] = values;
       return { name: s.name, data: values };
     });
-    plots.push(chart(holder, { title: group.title, xLabel: 't (s)', yLabel: group.unit || (group.log ? '|drift|' : ''),
-      x: time, series, logY: group.log, timeline, sync: 'momenta' }));
+    if (series.length > SHOWN_AT_FIRST) {
+      holder.append(element('p', { class: 'note' }, `${series.length} columns, the first ${SHOWN_AT_FIRST} shown: click a legend entry to show or hide one.`));
+    }
+    charts.add(holder, () => chart(holder, { title: group.title, xLabel: 't (s)', yLabel: group.unit || (group.log ? '|drift|' : ''),
+      x: time, series, logY: group.log, timeline, sync: 'momenta', width: width() }));
   }
-  const resize = () => {
-    const width = Math.max(320, Math.min(640, grid.clientWidth / (grid.clientWidth > 1100 ? 2 : 1) - 16));
-    plots.forEach((p) => p.setSize({ width, height: 220 }));
-  };
-  new ResizeObserver(resize).observe(grid);
-  return { section, plots, registry, time };
+  new ResizeObserver(() => charts.charts.forEach((p) => p.setSize({ width: width(), height: 220 }))).observe(grid);
+  return { section, charts, registry, time };
 }

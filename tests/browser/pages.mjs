@@ -1,0 +1,87 @@
+// What the report's browser tests and its benchmark share: running the momenta CLI, starting
+// the Debian Chromium (software WebGL, no sandbox), opening a report from disk while recording
+// every console error, page error and request beyond the file, and reading the 3-D canvas.
+
+import { execFileSync } from 'node:child_process';
+import fs from 'node:fs';
+import path from 'node:path';
+import puppeteer from 'puppeteer-core';
+
+export const momenta = process.env.MOMENTA_CLI;
+export const examples = path.join(process.env.MOMENTA_SOURCE_DIR, 'examples');
+
+export function run(...args) {
+  return execFileSync(momenta, args, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'], maxBuffer: 1 << 28 });
+}
+
+export async function launchBrowser() {
+  return puppeteer.launch({
+    executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
+    headless: true,
+    args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader',
+      '--window-size=1280,900', '--allow-file-access-from-files'],
+  });
+}
+
+// Opens a report and waits for its test hook. `interactiveMs` runs from the request to the first
+// moment the page's main thread answers after the hook is ready (the first 3-D frame, which
+// compiles the shaders, included).
+export async function openReport(browser, file) {
+  const page = await browser.newPage();
+  await page.setViewport({ width: 1280, height: 900 });
+  const problems = [];
+  page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });
+  page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+  page.on('requestfailed', (r) => problems.push(`failed request: ${r.url()}`));
+  page.on('request', (r) => { if (r.url() !== `file://${file}`) problems.push(`request: ${r.url()}`); });
+  const started = Date.now();
+  await page.goto(`file://${file}`, { waitUntil: 'load' });
+  await page.waitForFunction(() => window.momentaReport && window.momentaReport.ready, { timeout: 20000, polling: 20 });
+  await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => setTimeout(done, 0))));
+  const interactiveMs = Date.now() - started;
+  return { page, problems, interactiveMs };
+}
+
+// A digest of the 3-D canvas's pixels, and how many distinct colours it has.
+export async function canvasDigest(page) {
+  return page.evaluate(() => {
+    const source = document.querySelector('#view canvas');
+    const copy = document.createElement('canvas');
+    copy.width = 320; copy.height = 200;
+    const ctx = copy.getContext('2d');
+    ctx.drawImage(source, 0, 0, copy.width, copy.height);
+    const pixels = ctx.getImageData(0, 0, copy.width, copy.height).data;
+    let hash = 0; const colours = new Set();
+    for (let i = 0; i < pixels.length; i += 4) {
+      const c = (pixels[i] << 16) | (pixels[i + 1] << 8) | pixels[i + 2];
+      colours.add(c);
+      hash = (hash * 31 + c) >>> 0;
+    }
+    return { hash, colours: colours.size };
+  });
+}
+
+// A chain of 20 revolute links (axes alternating x and y), 2 s at 1 ms: the wide model.
+export function chainModel(directory, links = 20) {
+  const lines = [`name: chain of ${links}`, 'bodies:'];
+  for (let k = 0; k < links; k++) lines.push(`  - {name: link${k}, shape: cylinder, mass: 1, radius: 0.02, length: 0.1, position: [0, 0, -0.05]}`);
+  lines.push('joints:');
+  for (let k = 0; k < links; k++) {
+    lines.push(`  - {name: j${k}, type: revolute, parent: ${k ? `link${k - 1}` : 'world'}, child: link${k}, axis: [${k % 2 ? '1, 0, 0' : '0, 1, 0'}], ${k ? 'in_parent: {position: [0, 0, -0.1]}, ' : ''}q0: 0.2}`);
+  }
+  lines.push('simulation: {duration: 2, step: 0.001}');
+  const model = path.join(directory, `chain${links}.yaml`);
+  fs.writeFileSync(model, lines.join('\n') + '\n');
+  return model;
+}
+
+// Frames the page draws per second while playing, over `seconds`.
+export async function framesPerSecond(page, seconds = 2) {
+  return page.evaluate(async (s) => {
+    window.momentaReport.play(true);
+    const start = window.momentaReport.framesDrawn();
+    await new Promise((done) => setTimeout(done, s * 1000));
+    window.momentaReport.play(false);
+    return (window.momentaReport.framesDrawn() - start) / s;
+  }, seconds);
+}
