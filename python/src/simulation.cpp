@@ -5,6 +5,7 @@
 #include <Python.h>
 #include <fmt/format.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <atomic>
 #include <memory>
@@ -13,6 +14,7 @@
 #include "bindings.hpp"
 #include "model_handle.hpp"
 #include "momenta/common/error.hpp"
+#include "momenta/report/report.hpp"
 #include "momenta/simulate/run_request.hpp"
 #include "momenta/simulate/simulation.hpp"
 
@@ -49,11 +51,13 @@ class BufferSink final : public simulate::RowSink {
 };
 
 struct SimulationResult {
+  std::shared_ptr<const io::ModelFile> file;  // the model run, for the report
   std::vector<std::string> columns;
   py::array_t<double> data;
   simulate::SimulationSummary summary;
   simulate::SimulationOptions options;
   std::string thinning_note;
+  std::string stop_reason;  // the NumericalError's message when the run stopped early
 
   std::size_t column_index(const std::string& name) const {
     for (std::size_t i = 0; i < columns.size(); ++i) {
@@ -116,6 +120,7 @@ SimulationResult run_simulation(const ModelHandle& h, std::optional<double> dura
   const double steps = std::ceil(resolved.options.duration / resolved.options.step);
   BufferSink sink(static_cast<std::size_t>(std::min(steps / resolved.options.every + 2, 1e6)));
   SimulationResult result;
+  result.file = h.file;
   result.options = resolved.options;
   result.thinning_note = resolved.thinning_note;
   try {
@@ -126,15 +131,41 @@ SimulationResult run_simulation(const ModelHandle& h, std::optional<double> dura
     // The rows up to the failure travel with the error, as the CLI keeps them in its CSV.
     result.columns = sink.columns();
     result.data = sink.release();
-    result.summary.integrator = resolved.options.integrator;
-    result.summary.rows = static_cast<long>(result.data.shape(0));
-    result.summary.t_end =
-        result.summary.rows ? *result.data.data(result.summary.rows - 1, 0) : 0.0;
+    const auto rows = static_cast<long>(result.data.shape(0));
+    result.summary = simulate::summary_of_stopped_run(resolved.options, rows,
+                                                      rows ? *result.data.data(rows - 1, 0) : 0.0);
+    result.stop_reason = e.what();
     raise_numerical_error(e, py::cast(std::move(result)));
   }
   result.columns = sink.columns();
   result.data = sink.release();
   return result;
+}
+
+// The report page of a result, as `momenta simulate --report` writes it; returns the path.
+std::filesystem::path write_result_report(const SimulationResult& r,
+                                          const std::filesystem::path& path, bool force,
+                                          const std::string& about, std::vector<std::string> inputs,
+                                          std::vector<std::string> outputs) {
+  report::SimulationRun run;
+  run.file = r.file.get();
+  run.columns = r.columns;
+  run.options = r.options;
+  run.summary = r.summary;
+  run.stop_reason = r.stop_reason;
+  const auto rows = static_cast<std::size_t>(r.data.shape(0));
+  const std::size_t cols = r.columns.size();
+  run.rows.reserve(rows);
+  for (std::size_t i = 0; i < rows; ++i) {
+    const double* row = r.data.data(static_cast<py::ssize_t>(i), 0);
+    run.rows.emplace_back(row, row + cols);
+  }
+  const report::LinearSettings linear{about, std::move(inputs), std::move(outputs)};
+  {
+    py::gil_scoped_release unlocked;
+    report::write_report(path, report::simulation_report_html(run, linear), force);
+  }
+  return path;
 }
 
 }  // namespace
@@ -170,6 +201,18 @@ result.audit the conservation audit; result.summary what the run did; to_pandas(
           "The summary as `momenta simulate` prints it.")
       .def_readonly("thinning_note", &SimulationResult::thinning_note,
                     "Set when the default row stride thinned a long fixed-step run.")
+      .def_readonly("stop_reason", &SimulationResult::stop_reason,
+                    "Why the run stopped early (a NumericalError's message); empty when it ran "
+                    "to the end.")
+      .def("report", &write_result_report, py::arg("path"), py::kw_only(), py::arg("force") = false,
+           py::arg("about") = "initial", py::arg("inputs") = std::vector<std::string>{},
+           py::arg("outputs") = std::vector<std::string>{},
+           R"doc(Writes the run's HTML report to `path`, the page `momenta simulate --report`
+writes (docs/report.md): the 3-D motion, every column plotted, the linear analysis about
+`about` ("initial" or "equilibrium", for the `inputs` and `outputs` named, all when empty) and
+the summary with its audit verdict; a run stopped by a non-finite state shows the reason at the
+top. Joint reactions are drawn when the run recorded them (simulate(..., reactions=True)).
+An existing file is kept (FileError) unless force=True. Returns the path.)doc")
       .def("__repr__", [](const SimulationResult& r) {
         return fmt::format("<momenta.SimulationResult: {} rows × {} columns, t = 0 … {} s, {}>",
                            r.data.shape(0), r.columns.size(), r.summary.t_end,

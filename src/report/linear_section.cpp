@@ -167,6 +167,11 @@ json analysis_json(const io::ModelFile& file, const analysis::LinearModel& linea
 
 json linear_json(const io::ModelFile& file, const LinearSettings& settings, double& fastest_rate) {
   fastest_rate = 0.0;
+  if (settings.about != "equilibrium" && settings.about != "initial") {
+    // A caller's mistake, not the model's: no page.
+    throw InvalidArgument(
+        fmt::format("about '{}': expected initial or equilibrium", settings.about));
+  }
   try {
     analysis::LinearizationOptions options;
     options.inputs = settings.inputs;
@@ -177,12 +182,9 @@ json linear_json(const io::ModelFile& file, const LinearSettings& settings, doub
     if (settings.about == "equilibrium") {
       point = analysis::find_equilibrium(file.model, file.model.initial_q()).point;
       about = "the static equilibrium";
-    } else if (settings.about == "initial") {
+    } else {
       point = analysis::initial_operating_point(file.model);
       about = "the initial state";
-    } else {
-      throw InvalidArgument(
-          fmt::format("about '{}': expected initial or equilibrium", settings.about));
     }
     const analysis::LinearModel linear = analysis::linearize(file.model, point, options);
     return analysis_json(file, linear, about, fastest_rate);

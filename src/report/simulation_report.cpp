@@ -79,14 +79,11 @@ SimulationRun make_run(const io::ModelFile& file, const simulate::SimulationOpti
   SimulationRun run;
   run.file = &file;
   run.options = options;
-  run.summary = std::move(summary);
+  run.summary = stop_reason.empty() ? std::move(summary)
+                                    : simulate::summary_of_stopped_run(
+                                          options, static_cast<long>(table.rows.size()),
+                                          table.rows.empty() ? 0.0 : table.rows.back()[0]);
   run.stop_reason = std::move(stop_reason);
-  if (!run.stop_reason.empty()) {
-    run.summary.integrator = options.integrator;
-    run.summary.step = options.step;
-    run.summary.rows = static_cast<long>(table.rows.size());
-    run.summary.t_end = table.rows.empty() ? 0.0 : table.rows.back()[0];
-  }
   run.columns = std::move(table.columns);
   run.rows = std::move(table.rows);
   return run;

@@ -318,6 +318,16 @@ SimulationSummary Simulation::run(RowSink& sink) {
 
 // --- Summary -------------------------------------------------------------------------------------
 
+SimulationSummary summary_of_stopped_run(const SimulationOptions& options, long rows,
+                                         double t_end) {
+  SimulationSummary summary;
+  summary.integrator = options.integrator;
+  summary.step = options.step;
+  summary.rows = rows;
+  summary.t_end = t_end;
+  return summary;
+}
+
 std::string format_summary(const SimulationSummary& s) {
   std::string out;
   const std::string order =

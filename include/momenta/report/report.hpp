@@ -49,7 +49,9 @@ SimulationRun simulate_for_report(const io::ModelFile& file, simulate::Simulatio
 
 /// The report page of a run: the summary, the 3-D view, the plots and, when the model can be
 /// linearized about the point `linear` names, the linear analysis (poles and zeros, Bode, step
-/// responses, animated mode shapes); when it cannot, the panel says why.
+/// responses, animated mode shapes); when it cannot (no free joint, a singular mass matrix, a
+/// channel the model lacks), the panel says why. Throws InvalidArgument for an `about` other
+/// than "initial" or "equilibrium", or a run with no file or no rows.
 std::string simulation_report_html(const SimulationRun& run, const LinearSettings& linear = {});
 
 /// The report page of a part: the composite with its centre of mass, principal axes and

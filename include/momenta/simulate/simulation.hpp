@@ -146,4 +146,9 @@ class Simulation {
 /// audited). Several lines, each ending in '\n'.
 std::string format_summary(const SimulationSummary& summary);
 
+/// What a run that stopped early (a NumericalError from Simulation::run) did, as far as its
+/// recorded rows tell: the integrator and step of `options`, `rows` rows, up to `t_end` (the last
+/// row's time). Counts and audit stay empty.
+SimulationSummary summary_of_stopped_run(const SimulationOptions& options, long rows, double t_end);
+
 }  // namespace momenta::simulate
