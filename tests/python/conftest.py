@@ -13,6 +13,8 @@ import pytest
 
 SOURCE_DIR = pathlib.Path(os.environ.get("MOMENTA_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
 EXAMPLES = SOURCE_DIR / "examples"
+# A 1 kg slider on a 1e8 N/m spring: RK4 at dt = 0.01 s (ω h = 100) overflows within 1 s.
+STIFF_SPRING = SOURCE_DIR / "tests" / "data" / "models" / "stiff_spring.yaml"
 
 
 def cli_path():

@@ -10,7 +10,7 @@ import pytest
 
 import momenta
 
-from conftest import EXAMPLES, run_cli
+from conftest import EXAMPLES, STIFF_SPRING, run_cli
 
 
 def page_data(path):
@@ -74,14 +74,9 @@ def test_an_existing_file_is_kept_without_force(tmp_path):
 
 
 def test_a_stopped_run_reports_its_reason(tmp_path):
-    path = tmp_path / "stiff.yaml"
-    path.write_text(
-        "gravity: [0, 0, 0]\n"
-        "bodies:\n  - {name: m, mass: 1}\n"
-        "joints:\n  - {name: x, type: prismatic, parent: world, child: m, axis: [1, 0, 0], q0: 1}\n"
-        "forces:\n  - {name: k, type: torsional_spring, joint: x, stiffness: 1e12}\n")
+    path = STIFF_SPRING
     with pytest.raises(momenta.NumericalError) as failure:
-        momenta.simulate(momenta.load_model(path), duration=1.0, dt=0.01)
+        momenta.simulate(momenta.load_model(path), duration=2.0, dt=0.01)
     partial = failure.value.result
     assert "non-finite" in partial.stop_reason
     partial.report(tmp_path / "stopped.html")
