@@ -20,8 +20,11 @@ fi
 # Node.js and npm build the HTML report's front-end (web/): from Debian unless a node with npm is
 # already installed (NodeSource's nodejs carries its own npm and conflicts with Debian's).
 if ! command -v node >/dev/null || ! command -v npm >/dev/null; then packages+=(nodejs npm); fi
-# Headless Chromium and fonts for the report's browser tests (tests/browser); not for run-example.
-if [[ "${MOMENTA_WITHOUT_PYTHON:-0}" != 1 ]]; then packages+=(chromium fonts-dejavu-core); fi
+# Headless Chromium and Firefox (run under Xvfb, where Mesa gives it WebGL) and fonts for the
+# report's browser tests (tests/browser); not for run-example.
+if [[ "${MOMENTA_WITHOUT_PYTHON:-0}" != 1 ]]; then
+  packages+=(chromium firefox-esr xvfb xauth fonts-dejavu-core)
+fi
 # Optional: the side-by-side benchmarks against MuJoCo (MOMENTA_BENCH_MUJOCO=ON).
 if [[ "${MOMENTA_WITH_MUJOCO:-0}" == 1 ]]; then packages+=(libmujoco-dev); fi
 # Optional: the libFuzzer harnesses (scripts/fuzz.sh): clang and its sanitizer runtimes.

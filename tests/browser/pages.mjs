@@ -1,6 +1,8 @@
 // What the report's browser tests and its benchmark share: running the momenta CLI, starting
-// the Debian Chromium (software WebGL, no sandbox), opening a report from disk while recording
-// every console error, page error and request beyond the file, and reading the 3-D canvas.
+// the browser — the Debian Chromium (software WebGL through SwiftShader, no sandbox) or, with
+// MOMENTA_BROWSER=firefox, the Debian Firefox ESR (WebDriver BiDi; WebGL through Mesa's llvmpipe,
+// so it runs under xvfb-run) —, opening a report from disk while recording every console error,
+// page error and request beyond the file, and reading the 3-D canvas.
 
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
@@ -14,7 +16,17 @@ export function run(...args) {
   return execFileSync(momenta, args, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'], maxBuffer: 1 << 28 });
 }
 
+export const browserName = process.env.MOMENTA_BROWSER || 'chromium';
+
 export async function launchBrowser() {
+  if (browserName === 'firefox') {
+    return puppeteer.launch({
+      browser: 'firefox',
+      executablePath: process.env.FIREFOX || '/usr/bin/firefox-esr',
+      headless: true,
+      extraPrefsFirefox: { 'webgl.force-enabled': true },
+    });
+  }
   return puppeteer.launch({
     executablePath: process.env.CHROMIUM || '/usr/bin/chromium',
     headless: true,
@@ -26,8 +38,9 @@ export async function launchBrowser() {
 // Opens a report and waits for its test hook. `interactiveMs` runs from the request to the first
 // moment the page's main thread answers after the hook is ready (the first 3-D frame, which
 // compiles the shaders, included).
-export async function openReport(browser, file) {
+export async function openReport(browser, file, { beforeLoad = null } = {}) {
   const page = await browser.newPage();
+  if (beforeLoad) await page.evaluateOnNewDocument(beforeLoad);
   await page.setViewport({ width: 1280, height: 900 });
   const problems = [];
   page.on('console', (m) => { if (m.type() === 'error') problems.push(`console: ${m.text()}`); });

@@ -156,6 +156,29 @@ test('a run that blows up still gives a report, with the reason at the top', asy
   await page.close();
 });
 
+test('without WebGL the 3-D view says why and every other panel works', async () => {
+  const file = path.join(work, 'no_webgl.html');
+  run('report', path.join(examples, 'quarter_car.yaml'), '-o', file, '-q');
+  const { page, problems } = await openReport(browser, file, {
+    beforeLoad: () => {
+      const real = HTMLCanvasElement.prototype.getContext;
+      HTMLCanvasElement.prototype.getContext = function getContext(kind, ...rest) {
+        return /webgl/.test(kind) ? null : real.call(this, kind, ...rest);
+      };
+    },
+  });
+  const notice = await page.$eval('#view .no-webgl', (e) => e.textContent);
+  assert.match(notice, /needs WebGL/);
+  const shown = await page.evaluate(() => ({ series: window.momentaReport.series().length,
+    charts: window.momentaReport.drawAllCharts(), poles: window.momentaReport.linear().poles.length,
+    point: window.momentaReport.bodyPoint('body', [0, 0, 0], 0.5) }));
+  assert.ok(shown.series > 0 && shown.charts > 0 && shown.poles > 0, JSON.stringify(shown));
+  assert.ok(shown.point.every(Number.isFinite));
+  await page.screenshot({ path: path.join(artifacts, 'no_webgl-page.png') });
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
 test('an existing report is never overwritten without --force', () => {
   const file = path.join(work, 'keep.html');
   fs.writeFileSync(file, 'keep me');

@@ -3,6 +3,20 @@
 
 import * as THREE from 'three';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { element } from './data.js';
+
+// No multisampling: software rasterizers (headless browsers, machines without a GPU) pay for it
+// on every pixel, and a report must animate smoothly there too. three.js needs WebGL 2; null
+// when the browser has none (asked first, so three.js logs no error for an expected absence).
+function makeRenderer() {
+  const canvas = document.createElement('canvas');
+  const attributes = { antialias: false, preserveDrawingBuffer: true };
+  const context = canvas.getContext('webgl2', attributes);
+  if (!context) return null;
+  const renderer = new THREE.WebGLRenderer({ canvas, context, ...attributes });
+  renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+  return renderer;
+}
 
 export class Viewer {
   constructor(container, length, up = [0, 0, 1]) {
@@ -11,13 +25,15 @@ export class Viewer {
     this.scene.background = new THREE.Color(0xf7f7f5);
     this.camera = new THREE.PerspectiveCamera(40, 1, length * 1e-3, length * 1e3);
     this.camera.up.set(...up);
-    // No multisampling: software rasterizers (headless browsers, machines without a GPU) pay for
-    // it on every pixel, and a report must animate smoothly there too.
-    this.renderer = new THREE.WebGLRenderer({ antialias: false, preserveDrawingBuffer: true });
-    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
-    container.append(this.renderer.domElement);
     this.container = container;
-    this.controls = new OrbitControls(this.camera, this.renderer.domElement);
+    this.renderer = makeRenderer();
+    // Without WebGL (a locked-down browser, a remote desktop) the view says so and everything
+    // else on the page — the plots, the linear analysis, the numbers — works as before.
+    const surface = this.renderer ? this.renderer.domElement
+      : element('div', { class: 'unavailable no-webgl' }, 'The 3-D view needs WebGL, which this browser could not '
+        + 'provide (it may be turned off, or the graphics driver blocked). Every other panel works without it.');
+    container.append(surface);
+    this.controls = new OrbitControls(this.camera, surface);
     this.controls.enableDamping = false;
     this.scene.add(new THREE.HemisphereLight(0xffffff, 0x888888, 1.6));
     const sun = new THREE.DirectionalLight(0xffffff, 1.4);
@@ -48,10 +64,10 @@ export class Viewer {
     const height = this.container.clientHeight || 420;
     this.camera.aspect = width / height;
     this.camera.updateProjectionMatrix();
-    this.renderer.setSize(width, height, false);
+    if (this.renderer) this.renderer.setSize(width, height, false);
   }
 
-  render() { this.renderer.render(this.scene, this.camera); }
+  render() { if (this.renderer) this.renderer.render(this.scene, this.camera); }
 }
 
 // An arrow from `origin` along `vector`, reused frame to frame.
