@@ -12,6 +12,9 @@ void add_version_command(CLI::App& app);
 /// `momenta inertia FILE`: mass properties of a mesh or a composite part file (docs/cli.md).
 void add_inertia_command(CLI::App& app);
 
+/// `momenta balance ROTOR`: unbalance, bearing reactions, corrections, grade (docs/balancing.md).
+void add_balance_command(CLI::App& app);
+
 /// `momenta simulate MODEL`: integrates a model file, CSV out, summary and audit on stderr.
 void add_simulate_command(CLI::App& app);
 

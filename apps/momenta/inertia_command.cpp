@@ -2,11 +2,7 @@
 // Parses the options, calls momenta::io and momenta::inertia, prints text or JSON. Documented in
 // docs/cli.md; the part-file format in docs/inertia-format.md.
 
-#include <algorithm>
-#include <array>
-#include <cctype>
 #include <cmath>
-#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,13 +12,12 @@
 
 #include "commands.hpp"
 #include "momenta/common/error.hpp"
-#include "momenta/inertia/amount.hpp"
 #include "momenta/inertia/mass_properties.hpp"
-#include "momenta/io/mesh_file.hpp"
 #include "momenta/io/part_file.hpp"
 #include "momenta/report/report.hpp"
 #include "option_checks.hpp"
 #include "output_format.hpp"
+#include "part_input.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -32,87 +27,13 @@ using inertia::MassProperties;
 using json = nlohmann::ordered_json;
 
 struct InertiaOptions {
-  std::string file;
-  std::optional<double> density;
-  std::optional<double> mass;
-  std::optional<double> scale;
-  bool shell = false;
+  PartInput part;
   std::vector<double> about;
   std::string frame = "body";
   bool json = false;
   std::optional<std::string> report;
   bool force = false;
 };
-
-// What was read: the composite (or the mesh as one part) and how.
-struct Result {
-  std::string name;
-  MassProperties total;
-  std::vector<io::PartSummary> parts;  // Empty for a mesh file.
-  std::optional<double> density;       // A mesh file's density (kg/m³, or kg/m² for a shell).
-  bool per_unit_density = false;
-  bool shell = false;
-};
-
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string e = path.extension().string();
-  std::transform(e.begin(), e.end(), e.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return e;
-}
-
-Result read(const InertiaOptions& o) {
-  const std::filesystem::path path = o.file;
-  const std::string extension = lower_extension(path);
-  Result r;
-  if (extension == ".yaml" || extension == ".yml") {
-    // Options that only make sense for a single mesh are usage errors here.
-    if (o.mass)
-      throw CLI::ValidationError("--mass",
-                                 "applies to mesh files; a part file gives masses per part");
-    if (o.scale)
-      throw CLI::ValidationError(
-          "--scale",
-          "applies to mesh files; use 'units:' or a mesh part's 'scale:' in a part file");
-    if (o.shell)
-      throw CLI::ValidationError(
-          "--shell", "applies to mesh files; use a mesh part's 'shell: true' in a part file");
-    io::CompositePart part = io::read_part_file(path, {.default_density = o.density});
-    r.name = part.name;
-    r.total = part.total;
-    r.parts = std::move(part.parts);
-    return r;
-  }
-  if (extension == ".stl" || extension == ".obj") {
-    if (o.density && o.mass) {
-      throw CLI::ValidationError("--density", "give --density or --mass, not both");
-    }
-    // Without a density or mass the result is per unit density: volume and centre of mass are
-    // exact, mass and inertia scale with the density.
-    r.per_unit_density = !o.density && !o.mass;
-    const inertia::Amount amount =
-        o.mass ? inertia::Amount::mass(*o.mass) : inertia::Amount::density(o.density.value_or(1.0));
-    if (!o.mass) r.density = o.density.value_or(1.0);
-    r.shell = o.shell;
-    r.name = path.stem().string();
-    r.total = io::read_mesh_mass_properties(path, amount, o.scale.value_or(1.0), o.shell);
-    if (o.report) {
-      // The report draws the mesh: it is the one part.
-      io::PartSummary mesh;
-      mesh.name = r.name;
-      mesh.kind = "mesh";
-      mesh.mass_properties = r.total;
-      mesh.mesh =
-          std::make_shared<inertia::TriangleMesh>(io::read_mesh_file(path, o.scale.value_or(1.0)));
-      r.parts.push_back(std::move(mesh));
-    }
-    return r;
-  }
-  throw InvalidArgument(fmt::format(
-      "{}: unsupported file extension '{}': expected .yaml or .yml (a part file), .stl or .obj "
-      "(a mesh)",
-      o.file, path.extension().string()));
-}
 
 // x + 0.0 turns −0 into +0 (a zero product of inertia reads better without its sign) and leaves
 // every other value as it is.
@@ -137,7 +58,7 @@ void print_tensor(const Mat3& M, const char* format) {
 }
 
 void run(const InertiaOptions& o) {
-  const Result r = read(o);
+  const ReadPart r = read_part(o.part, o.report.has_value());
   const MassProperties& mp = r.total;
   const inertia::PrincipalAxes principal = mp.principal_axes();
   const Mat3& R_BP = principal.R_BP;
@@ -158,7 +79,7 @@ void run(const InertiaOptions& o) {
 
   if (o.json) {
     json j;
-    j["file"] = o.file;
+    j["file"] = o.part.file;
     j["name"] = r.name;
     j["frame"] = o.frame;
     j["mass"] = mp.mass();
@@ -171,7 +92,7 @@ void run(const InertiaOptions& o) {
       j["about"] = vec_json(*about);
       j["inertia_about"] = matrix_json(*I_about);
     }
-    if (r.parts.empty()) {
+    if (r.is_mesh) {
       j["shell"] = r.shell;
       j["density"] = r.density ? json(*r.density) : json(nullptr);
       j["per_unit_density"] = r.per_unit_density;
@@ -194,11 +115,11 @@ void run(const InertiaOptions& o) {
     // its numbers.
     fmt::print("{}\n", json_text(j, ListSpacing::spaced));
   } else {
-    fmt::print("{} ({})\n", r.name, o.file);
+    fmt::print("{} ({})\n", r.name, o.part.file);
     // Lengths are shown against the body's size: its radius of gyration or its distance from Bo.
     const double length = std::max(mp.center_of_mass().norm(),
                                    std::sqrt(mp.inertia_about_com().trace() / (2 * mp.mass())));
-    if (!r.parts.empty()) {
+    if (!r.is_mesh) {
       fmt::print("\n  {:<24} {:<18} {:>12}  {}\n", "part", "kind", "mass kg", "centre of mass m");
       for (const io::PartSummary& p : r.parts) {
         const double m = p.mass_properties.mass();
@@ -207,7 +128,7 @@ void run(const InertiaOptions& o) {
       }
       fmt::print("\n");
     }
-    if (r.parts.empty() && r.density) {
+    if (r.is_mesh && r.density) {
       fmt::print("density            {:.9g} kg/m{}{}\n", *r.density,
                  r.shell ? "² (thin shell)" : "³",
                  r.per_unit_density ? " — none given: per unit density" : "");
@@ -228,15 +149,10 @@ void run(const InertiaOptions& o) {
       print_tensor(shown(*I_about), " {:>13.6e}");
     }
   }
-  if (r.per_unit_density) {
-    fmt::print(stderr,
-               "momenta: note: no --density or --mass given: mass and inertia are per unit density "
-               "(1 kg/m{}); volume and centre of mass do not depend on it\n",
-               r.shell ? "²" : "³");
-  }
+  note_per_unit_density(r);
   if (o.report) {
     const io::CompositePart part{r.name, r.total, r.parts};
-    report::write_report(*o.report, report::inertia_report_html(part, o.file, about), o.force);
+    report::write_report(*o.report, report::inertia_report_html(part, o.part.file, about), o.force);
     fmt::print(stderr, "momenta: wrote the report {}\n", *o.report);
   }
 }
@@ -249,26 +165,9 @@ void add_inertia_command(CLI::App& app) {
       "inertia",
       "Mass, centre of mass, inertia tensor and principal axes of a mesh file (.stl, .obj) or a "
       "composite part file (.yaml)");
-  command
-      ->add_option("FILE", options->file,
-                   "A part file (.yaml, .yml; format in docs/inertia-format.md) or a closed "
-                   "triangle mesh (.stl, .obj)")
-      ->required();
-  command
-      ->add_option("--density", options->density,
-                   "Density, kg/m³ (kg/m² with --shell). Mesh: its material (default: 1, per unit "
-                   "density). Part file: replaces the file's default density of solids")
-      ->check(positive_finite());
-  command
-      ->add_option("--mass", options->mass, "Mesh only: its total mass, kg (instead of --density)")
-      ->check(positive_finite());
-  command
-      ->add_option("--scale", options->scale,
-                   "Mesh only: multiplies its coordinates into metres (0.001 for millimetres)")
-      ->check(positive_finite());
-  command->add_flag("--shell", options->shell,
-                    "Mesh only: a thin shell of uniform surface density (sheet metal) over its "
-                    "triangles, rather than the solid it bounds");
+  add_part_input_options(command, options->part,
+                         "A part file (.yaml, .yml; format in docs/inertia-format.md) or a closed "
+                         "triangle mesh (.stl, .obj)");
   command
       ->add_option("--about", options->about,
                    "Also the inertia tensor about the point X Y Z (m, in the file's frame)")

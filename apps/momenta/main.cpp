@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", fmt::format("momenta {}", MOMENTA_VERSION));
   momenta::cli::add_version_command(app);
   momenta::cli::add_inertia_command(app);
+  momenta::cli::add_balance_command(app);
   momenta::cli::add_simulate_command(app);
   momenta::cli::add_report_command(app);
   momenta::cli::add_info_command(app);

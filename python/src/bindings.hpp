@@ -81,6 +81,7 @@ py::array_t<std::complex<double>> to_numpy(const Eigen::VectorXcd& x);
 // Entry points of each area, called once by module.cpp.
 void bind_errors(py::module_& m);
 void bind_inertia(py::module_& m);
+void bind_balancing(py::module_& m);
 void bind_model(py::module_& m);
 void bind_dynamics(py::module_& m);
 void bind_simulation(py::module_& m);

@@ -10,6 +10,7 @@ PYBIND11_MODULE(_core, m) {
   bind_errors(m);
   py::module_ inertia = m.def_submodule("inertia", "Mass properties (momenta.inertia).");
   bind_inertia(inertia);
+  bind_balancing(inertia);
   bind_model(m);
   bind_dynamics(m);
   bind_simulation(m);

@@ -126,3 +126,31 @@ def test_a_missing_mesh_is_a_file_error():
         inertia.mesh("nothing.stl", density=1.0)
     with pytest.raises(OSError):
         inertia.mesh("nothing.stl", density=1.0)
+
+
+def test_balancing_is_what_momenta_balance_prints():
+    """The unbalance, reactions, correction and grade equal `momenta balance --json` bit for bit."""
+    path = EXAMPLES / "parts" / "two_disk_shaft.yaml"
+    expected = cli_json("balance", path, "--bearings", 0, 1, "--speed", 3000,
+                        "--planes", 0.25, 0.75, "--radius", 0.15, "--grade", 2.5)
+    u = inertia.unbalance(inertia.part(path).total)
+    assert u.mass == expected["mass"]
+    shown = expected["unbalance"]
+    assert list(u.static_unbalance) == [shown["static_unbalance"]["x"], shown["static_unbalance"]["y"]]
+    assert list(u.couple_unbalance) == [shown["couple_unbalance"]["x"], shown["couple_unbalance"]["y"]]
+    omega = expected["reactions"][0]["omega"]
+    r = inertia.bearing_reactions(u, 0.0, 1.0, omega)
+    assert list(r.A) == [expected["reactions"][0]["A"]["x"], expected["reactions"][0]["A"]["y"]]
+    assert list(r.B) == [expected["reactions"][0]["B"]["x"], expected["reactions"][0]["B"]["y"]]
+    corrections = inertia.two_plane_correction(u, 0.25, 0.75)
+    assert [c.mass_at(0.15) for c in corrections] == [m["mass"] for m in expected["correction"]["masses"]]
+    after = inertia.with_corrections(u, corrections)
+    np.testing.assert_allclose(after.static_unbalance, 0.0, atol=1e-18)
+    np.testing.assert_allclose(after.products, 0.0, atol=1e-18)
+    grade = inertia.check_grade(u, 2.5, omega, 0.0, 1.0)
+    assert grade.permissible == expected["grade"]["permissible"]
+    assert grade.passed is False and inertia.check_grade(after, 2.5, omega, 0.0, 1.0).passed
+    with pytest.raises(momenta.InvalidArgument, match="coincide"):
+        inertia.two_plane_correction(u, 0.5, 0.5)
+    with pytest.raises(ValueError, match="axis"):
+        inertia.unbalance(inertia.part(path).total, axis=[0, 0])
