@@ -42,7 +42,10 @@ nlohmann::ordered_json complex_json(std::complex<double> z);
 /// Prints a matrix with row and column labels, 6 significant digits.
 void print_matrix(const char* name, const MatX& M, const std::vector<std::string>& rows,
                   const std::vector<std::string>& columns);
-/// "−0.5 + 3.1j"
-std::string complex_text(std::complex<double> z);
+/// "−0.5 + 3.1j", parts with `digits` significant digits (0: the shortest that read back exactly).
+std::string complex_text(std::complex<double> z, int digits = 6);
+
+/// x with `digits` significant digits; 0: the shortest text that reads back to the same double.
+std::string number_text(double x, int digits);
 
 }  // namespace momenta::cli

@@ -1,7 +1,7 @@
 // `momenta response MODEL`: step, impulse or frequency response of one input–output pair of a
 // model file linearized about an operating point: a summary on stdout (the transfer function's
-// factors and the step figures) and the samples as CSV (--csv). Calls momenta::analysis;
-// documented in docs/cli.md.
+// factors and the step figures, exact), the samples as CSV (--csv), or everything as JSON
+// (--json, full precision). Calls momenta::analysis; documented in docs/cli.md.
 
 #include <cmath>
 #include <cstdio>
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "linear_model_options.hpp"
@@ -22,6 +23,7 @@
 #include "momenta/analysis/transfer_function.hpp"
 #include "momenta/common/error.hpp"
 #include "option_checks.hpp"
+#include "output_format.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -37,12 +39,38 @@ struct ResponseOptions {
   bool force = false;
   std::optional<double> duration;
   std::optional<std::size_t> points;
+  bool json = false;
+  int digits = 0;  // significant digits of poles, zeros and gains; 0: round-trip
 };
 
-std::string complex_list(const std::vector<analysis::Complex>& zs) {
+using json = nlohmann::ordered_json;
+
+std::string complex_list(const std::vector<analysis::Complex>& zs, int digits) {
   std::vector<std::string> items;
-  for (const auto& z : zs) items.push_back(complex_text(z));
+  for (const auto& z : zs) items.push_back(complex_text(z, digits));
   return items.empty() ? std::string("none") : fmt::format("{}", fmt::join(items, ", "));
+}
+
+json complex_json(const std::vector<analysis::Complex>& zs) {
+  json list = json::array();
+  for (const auto& z : zs) list.push_back({z.real(), z.imag()});
+  return list;
+}
+
+json vector_json(const VecX& x) { return std::vector<double>(x.data(), x.data() + x.size()); }
+
+// A figure for JSON: NaN (undefined) as null.
+json figure(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+json step_info_json(const analysis::StepInfo& info) {
+  return {{"final_value", figure(info.final_value)},
+          {"rise_time", figure(info.rise_time)},
+          {"settling_time", figure(info.settling_time)},
+          {"settling_band", 0.02},
+          {"overshoot_percent", figure(info.overshoot)},
+          {"undershoot_percent", figure(info.undershoot)},
+          {"peak", figure(info.peak)},
+          {"peak_time", figure(info.peak_time)}};
 }
 
 void run(const ResponseOptions& o) {
@@ -56,9 +84,11 @@ void run(const ResponseOptions& o) {
   const analysis::StateSpace& sys = loaded.linear.system;
   const analysis::TransferFunction tf = analysis::transfer_function(sys, 0, 0);
 
-  // The samples, as CSV text.
+  // The samples, as CSV text and as JSON.
   std::string csv;
   std::string summary;
+  json samples;
+  std::optional<analysis::StepInfo> info;
   if (o.bode.empty()) {
     const analysis::TimeGrid grid{o.duration.value_or(0.0), o.points.value_or(0)};
     const analysis::TimeResponse r =
@@ -66,13 +96,16 @@ void run(const ResponseOptions& o) {
     csv = fmt::format("time,{}\n", o.output);
     for (Eigen::Index k = 0; k < r.time.size(); ++k)
       csv += fmt::format("{:.17g},{:.17g}\n", r.time[k], r.outputs(k, 0));
+    samples = {{"time", vector_json(r.time)}, {"output", vector_json(r.outputs.col(0))}};
     if (o.step) {
-      const analysis::StepInfo info = analysis::step_info(r, 0, tf.dc_gain);
+      // The figures of the analytic response, refined from these samples (exact).
+      info = analysis::step_info(sys, 0, 0, grid);
       summary += fmt::format(
-          "unit step: final value {:.6g}, rise time {:.6g} s, settling time (2 %) {:.6g} s, "
-          "overshoot {:.4g} %, peak {:.6g} at {:.6g} s\n",
-          info.final_value, info.rise_time, info.settling_time, info.overshoot, info.peak,
-          info.peak_time);
+          "unit step: final value {}, rise time {} s, settling time (2 %) {} s, "
+          "overshoot {} %, peak {} at {} s\n",
+          number_text(info->final_value, o.digits), number_text(info->rise_time, o.digits),
+          number_text(info->settling_time, o.digits), number_text(info->overshoot, o.digits),
+          number_text(info->peak, o.digits), number_text(info->peak_time, o.digits));
     } else {
       summary += fmt::format("unit impulse: {} samples over {:.6g} s\n", r.time.size(),
                              r.time[r.time.size() - 1]);
@@ -87,12 +120,34 @@ void run(const ResponseOptions& o) {
       csv += fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", f.frequency[k],
                          f.frequency[k] / (2 * std::numbers::pi), f.magnitude[k], f.magnitude_db[k],
                          f.phase_deg[k]);
+    samples = {{"frequency_rad_s", vector_json(f.frequency)},
+               {"magnitude", vector_json(f.magnitude)},
+               {"magnitude_db", vector_json(f.magnitude_db)},
+               {"phase_deg", vector_json(f.phase_deg)}};
     summary += fmt::format(
         "Bode, {} frequencies from {:.6g} to {:.6g} rad/s: peak {:.6g} dB at "
         "{:.6g} rad/s\n",
         f.frequency.size(), o.bode[0], o.bode[1], f.magnitude_db[peak], f.frequency[peak]);
   }
 
+  if (o.json) {
+    json j;
+    j["model"] = loaded.file.name;
+    j["input"] = o.input;
+    j["output"] = o.output;
+    j["about"] = loaded.about;
+    j["response"] = o.step ? "step" : o.impulse ? "impulse" : "bode";
+    j["gain"] = tf.gain;
+    j["relative_degree"] = tf.relative_degree();
+    j["poles"] = complex_json(tf.poles);
+    j["zeros"] = complex_json(tf.zeros);
+    j["cancelled"] = complex_json(tf.cancelled);
+    j["dc_gain"] = figure(tf.dc_gain);
+    if (info) j["step_info"] = step_info_json(*info);
+    j["samples"] = std::move(samples);
+    fmt::print("{}\n", json_text(j, ListSpacing::spaced));
+    return;
+  }
   if (o.csv && *o.csv == "-") {
     fmt::print("{}", csv);
     return;
@@ -104,14 +159,15 @@ void run(const ResponseOptions& o) {
   }
   fmt::print("{}: {} → {}, linearized about {}\n", loaded.file.name, o.input, o.output,
              loaded.about);
-  fmt::print("G(s) = K ∏(s − z)/∏(s − p): K = {:.6g}, relative degree {}\n", tf.gain,
-             tf.relative_degree());
-  fmt::print("poles (1/s): {}\n", complex_list(tf.poles));
-  fmt::print("zeros (1/s): {}\n", complex_list(tf.zeros));
+  fmt::print("G(s) = K ∏(s − z)/∏(s − p): K = {}, relative degree {}\n",
+             number_text(tf.gain, o.digits), tf.relative_degree());
+  fmt::print("poles (1/s): {}\n", complex_list(tf.poles, o.digits));
+  fmt::print("zeros (1/s): {}\n", complex_list(tf.zeros, o.digits));
   if (!tf.cancelled.empty()) {
-    fmt::print("cancelled (uncontrollable or unobservable): {}\n", complex_list(tf.cancelled));
+    fmt::print("cancelled (uncontrollable or unobservable): {}\n",
+               complex_list(tf.cancelled, o.digits));
   }
-  fmt::print("DC gain: {:.6g}\n", tf.dc_gain);
+  fmt::print("DC gain: {}\n", number_text(tf.dc_gain, o.digits));
   fmt::print("{}", summary);
   if (o.csv) fmt::print("samples written to {}\n", *o.csv);
 }
@@ -145,6 +201,16 @@ void add_response_command(CLI::App& app) {
                    "existing file is never overwritten without --force")
       ->check(not_a_folder());
   command->add_flag("--force", options->force, "Overwrite the --csv file if it exists");
+  command
+      ->add_flag("--json", options->json,
+                 "Print everything as JSON at full precision: poles, zeros, gains, the step "
+                 "figures and the samples")
+      ->excludes("--csv");
+  command
+      ->add_option("--digits", options->digits,
+                   "Significant digits of poles, zeros, gains and step figures in the text "
+                   "(default: as many as read back to the same number)")
+      ->check(CLI::Range(1, 17));
   command
       ->add_option("--duration", options->duration,
                    "Step/impulse: last sample time, s (default: from the poles)")

@@ -447,7 +447,7 @@ def simulate(model: Model, *, duration: Optional[float] = None, dt: Optional[flo
     ...
 
 def step_info(system: StateSpace, input: object = 0, output: object = 0, settling_band: float = 0.02) -> StepInfo:
-    """Rise time (10–90 %), settling time, overshoot and peak of the unit step response."""
+    """Rise time (10–90 %), settling time, overshoot and peak of the unit step response, exact: roots of the analytic response y(t) and its rate, not read off samples (docs/analysis.md)."""
     ...
 
 def step_response(system: StateSpace, input: object = 0, *, final_time: Optional[float] = None, samples: Optional[int] = None, amplitude: float = 1.0) -> TimeResponse:

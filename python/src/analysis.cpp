@@ -361,7 +361,9 @@ void bind_responses(py::module_& m) {
       },
       py::arg("system"), py::arg("input") = 0, py::arg("output") = 0,
       py::arg("settling_band") = 0.02,
-      "Rise time (10–90 %), settling time, overshoot and peak of the unit step response.");
+      "Rise time (10–90 %), settling time, overshoot and peak of the unit step response, exact: "
+      "roots of the analytic response y(t) and its rate, not read off samples "
+      "(docs/analysis.md).");
 }
 
 }  // namespace

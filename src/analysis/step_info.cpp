@@ -1,9 +1,12 @@
 #include "momenta/analysis/step_info.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include <fmt/format.h>
+#include <boost/math/tools/toms748_solve.hpp>
 
 #include "momenta/analysis/transfer_function.hpp"
 #include "momenta/common/error.hpp"
@@ -23,6 +26,58 @@ double first_crossing(const VecX& t, const VecX& y, double level) {
     }
   }
   return kNaN;
+}
+
+// The unit step response of one input–output pair, exact at any time: the state is
+// x(t) = Γ(t) b with Γ(t) = ∫₀ᵗ e^{Aτ} dτ and the rate ẏ(t) = C e^{At} b, both from the exponential
+// of [A b; 0 0] t (Van Loan), which zero_order_hold computes.
+class AnalyticStep {
+ public:
+  AnalyticStep(const StateSpace& system, std::size_t input, std::size_t output)
+      : A_(system.A()),
+        b_(system.B().col(static_cast<Eigen::Index>(input))),
+        c_(system.C().row(static_cast<Eigen::Index>(output)).transpose()),
+        d_(system.D()(static_cast<Eigen::Index>(output), static_cast<Eigen::Index>(input))) {}
+
+  double value(double t) const {
+    if (t <= 0.0 || A_.rows() == 0) return d_;
+    return c_.dot(zero_order_hold(A_, b_, t).input.col(0)) + d_;
+  }
+  double rate(double t) const {
+    if (A_.rows() == 0) return 0.0;
+    if (t <= 0.0) return c_.dot(b_);
+    return c_.dot(zero_order_hold(A_, b_, t).transition * b_);
+  }
+
+ private:
+  MatX A_;
+  VecX b_, c_;
+  double d_;
+};
+
+// The root of f in [a, b], where f(a) and f(b) differ in sign, to full double precision (TOMS
+// 748); NaN when they do not bracket one.
+template <class F>
+double root_between(F f, double a, double b) {
+  const double fa = f(a), fb = f(b);
+  if (fa == 0.0) return a;
+  if (fb == 0.0) return b;
+  if ((fa > 0.0) == (fb > 0.0) || !std::isfinite(fa) || !std::isfinite(fb)) return kNaN;
+  std::uintmax_t iterations = 200;
+  const auto [lo, hi] = boost::math::tools::toms748_solve(
+      f, a, b, fa, fb, boost::math::tools::eps_tolerance<double>(), iterations);
+  return 0.5 * (lo + hi);
+}
+
+// The time of the extremum a sampled extreme at sample k stands for: the root of ẏ in the
+// interval on either side of it; the sample's own time at the grid's ends or when ẏ keeps its
+// sign (a corner the grid does not resolve).
+double extremum_time(const AnalyticStep& s, const VecX& t, Eigen::Index k) {
+  if (k == 0 || k + 1 >= t.size()) return t[k];
+  const auto rate = [&](double time) { return s.rate(time); };
+  double at = root_between(rate, t[k - 1], t[k]);
+  if (std::isnan(at)) at = root_between(rate, t[k], t[k + 1]);
+  return std::isnan(at) ? t[k] : at;
 }
 
 }  // namespace
@@ -74,7 +129,56 @@ StepInfo step_info(const TimeResponse& response, std::size_t output, double fina
 StepInfo step_info(const StateSpace& system, std::size_t input, std::size_t output,
                    const TimeGrid& grid, double settling_band) {
   const double final_value = dc_gain(system, input, output);
-  return step_info(step_response(system, input, grid), output, final_value, settling_band);
+  const TimeResponse sampled = step_response(system, input, grid);
+  // The sampled figures (and the argument checks); each is then refined on the exact response.
+  StepInfo info = step_info(sampled, output, final_value, settling_band);
+  const AnalyticStep s(system, input, output);
+  const VecX& t = sampled.time;
+  const VecX y = sampled.outputs.col(static_cast<Eigen::Index>(output));
+
+  // Peak: the largest |y|, at a root of ẏ.
+  Eigen::Index k = 0;
+  y.cwiseAbs().maxCoeff(&k);
+  info.peak_time = extremum_time(s, t, k);
+  info.peak = std::abs(s.value(info.peak_time));
+  if (!std::isfinite(final_value) || final_value == 0.0) return info;
+
+  // Along the direction of the final value, normalized: z → 1.
+  const VecX z = y / final_value;
+  const auto z_at = [&](double time) { return s.value(time) / final_value; };
+  // The first time z reaches `level`: a root of z(t) − level in the first sample interval
+  // that ends at or above it.
+  const auto reaches = [&](double level) {
+    for (Eigen::Index j = 0; j < z.size(); ++j) {
+      if (z[j] < level) continue;
+      if (j == 0) return t[0];
+      const double at =
+          root_between([&](double time) { return z_at(time) - level; }, t[j - 1], t[j]);
+      return std::isnan(at) ? t[j] : at;
+    }
+    return kNaN;
+  };
+  info.rise_time = reaches(0.9) - reaches(0.1);
+  z.maxCoeff(&k);
+  info.overshoot = std::max(0.0, z_at(extremum_time(s, t, k)) - 1.0) * 100.0;
+  z.minCoeff(&k);
+  info.undershoot = std::max(0.0, -z_at(extremum_time(s, t, k))) * 100.0;
+
+  // Settling: the exit from the band after the last sample outside it.
+  Eigen::Index last_outside = -1;
+  for (Eigen::Index j = z.size() - 1; j >= 0; --j) {
+    if (std::abs(z[j] - 1.0) > settling_band) {
+      last_outside = j;
+      break;
+    }
+  }
+  if (last_outside >= 0 && last_outside + 1 < z.size()) {
+    const Eigen::Index j = last_outside;
+    const double edge = z[j] > 1.0 ? 1.0 + settling_band : 1.0 - settling_band;
+    const double at = root_between([&](double time) { return z_at(time) - edge; }, t[j], t[j + 1]);
+    if (!std::isnan(at)) info.settling_time = at;
+  }
+  return info;
 }
 
 }  // namespace momenta::analysis

@@ -90,7 +90,7 @@ TEST_F(AnalysisCli, StepResponseCsvFollowsTheClosedForm) {
   const fs::path csv = dir_ / "step.csv";
   const CliRun r = momenta("response " + example("cruise_control") +
                            " --input u --output speed --step --duration 100 --points 101 --csv '" +
-                           csv.string() + "'");
+                           csv.string() + "' --digits 6");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("poles (1/s): -0.05"), std::string::npos) << r.out;
   std::istringstream in(slurp(csv));
@@ -106,6 +106,31 @@ TEST_F(AnalysisCli, StepResponseCsvFollowsTheClosedForm) {
     ++rows;
   }
   EXPECT_EQ(rows, 101);
+}
+
+// --json: full precision. The step figures are exact (τ ln 9, τ ln 50 for the cruise control's
+// τ = m/b = 20 s, to 1e-12), and the text's default numbers read back to the JSON's doubles.
+TEST_F(AnalysisCli, ResponseJsonIsExactAndTheTextReadsBack) {
+  const std::string args =
+      "response " + example("cruise_control") + " --input u --output speed --step";
+  const CliRun r = momenta(args + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  const json& info = j.at("step_info");
+  EXPECT_NEAR(info.at("rise_time").get<double>(), 20 * std::log(9.0), 1e-12 * 44);
+  EXPECT_NEAR(info.at("settling_time").get<double>(), 20 * std::log(50.0), 1e-12 * 79);
+  EXPECT_EQ(info.at("overshoot_percent").get<double>(), 0.0);
+  EXPECT_EQ(j.at("samples").at("time").size(), j.at("samples").at("output").size());
+  const double pole = j.at("poles").at(0).at(0).get<double>();
+  EXPECT_NEAR(pole, -0.05, 1e-15);
+  const CliRun text = momenta(args);
+  ASSERT_EQ(text.code, 0) << text.err;
+  const std::string line = text.out.substr(text.out.find("poles (1/s): ") + 13);
+  EXPECT_EQ(std::stod(line.substr(0, line.find('\n'))), pole) << text.out;
+  const std::string gain = text.out.substr(text.out.find("DC gain: ") + 9);
+  EXPECT_EQ(std::stod(gain.substr(0, gain.find('\n'))), j.at("dc_gain").get<double>());
+  // --json and --csv are two ways to the samples: one at a time.
+  EXPECT_EQ(momenta(args + " --json --csv -").code, 2);
 }
 
 TEST_F(AnalysisCli, ErrorsAndUsage) {

@@ -97,7 +97,9 @@ def test_state_space_from_matrices_mass_spring_damper_step():
     np.testing.assert_allclose(step.outputs[:, 0], closed, rtol=0, atol=1e-14)
     info = momenta.step_info(system)
     assert info.final_value == pytest.approx(1 / k, rel=1e-14)
-    assert info.overshoot == pytest.approx(100 * np.exp(-zeta * np.pi / np.sqrt(1 - zeta**2)), rel=1e-3)
+    # Exact figures (roots of the analytic response), not sampled ones.
+    assert info.overshoot == pytest.approx(100 * np.exp(-zeta * np.pi / np.sqrt(1 - zeta**2)), rel=1e-12)
+    assert info.peak_time == pytest.approx(np.pi / wd, rel=1e-13)
 
 
 def test_state_space_checks_its_sizes():

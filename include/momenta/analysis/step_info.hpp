@@ -29,8 +29,15 @@ struct StepInfo {
 StepInfo step_info(const TimeResponse& response, std::size_t output, double final_value,
                    double settling_band = 0.02);
 
-/// The unit step response from `input` on the automatic grid (or `grid`), with
-/// y∞ = dc_gain(system, input, output) (±inf for an integrating pair: figures NaN).
+/// The figures of the system's own unit step response from `input`, y∞ = dc_gain(system, input,
+/// output) (±inf for an integrating pair: figures NaN), computed on the analytic response, not
+/// read off samples: y(t) = C Γ(t) b + D b with Γ(t) = ∫₀ᵗ e^{Aτ} dτ (Van Loan's exponential,
+/// exact to round-off at any t), ẏ(t) = C e^{At} b. The samples of the automatic grid (or `grid`)
+/// only bracket each event; each crossing time (10 %, 90 %, the settling band's edge) is then a
+/// root of y(t) − level, and the peak and the extremes a root of ẏ(t), found by TOMS 748 to full
+/// double precision. Peak time π/ω_d and overshoot e^{−ζπ/√(1−ζ²)} of a second-order system come
+/// out to ~1e-15 relative. An event the grid does not bracket (a response faster than the
+/// sampling) keeps its sampled value. Peak and extremes at the grid's end stay sampled.
 StepInfo step_info(const StateSpace& system, std::size_t input, std::size_t output,
                    const TimeGrid& grid = {}, double settling_band = 0.02);
 

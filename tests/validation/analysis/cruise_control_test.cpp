@@ -8,6 +8,7 @@
 
 #include "momenta/analysis/frequency_response.hpp"
 #include "momenta/analysis/modes.hpp"
+#include "momenta/analysis/step_info.hpp"
 #include "momenta/analysis/time_response.hpp"
 #include "momenta/analysis/transfer_function.hpp"
 #include "momenta_test/tolerance.hpp"
@@ -57,6 +58,17 @@ TEST(CruiseControl, StepResponseMatchesTheExponential) {
   for (Eigen::Index k = 0; k < g.time.size(); k += 50) {
     EXPECT_REL_NEAR(g.outputs(k, 0), std::exp(-kDamping * g.time[k] / kMass) / kMass, 1e-12);
   }
+}
+
+TEST(CruiseControl, StepFiguresAreTheTimeConstantsLogarithms) {
+  // v = (u/b)(1 − e^(−t/τ)), τ = m/b = 20 s: rise (10 → 90 %) τ ln 9 = 43.9445 s, settling
+  // (2 %) τ ln 50 = 78.2404 s, no overshoot; exact figures from the analytic response.
+  const StepInfo info = step_info(cruise_control(), 0, 0);
+  const double tau = kMass / kDamping;
+  EXPECT_REL_NEAR(info.rise_time, tau * std::log(9.0), 1e-12);
+  EXPECT_REL_NEAR(info.settling_time, tau * std::log(50.0), 1e-12);
+  EXPECT_EQ(info.overshoot, 0.0);
+  EXPECT_REL_NEAR(info.final_value, 1.0 / kDamping, 1e-15);
 }
 
 TEST(CruiseControl, BodeCornerAtBOverM) {
