@@ -318,7 +318,8 @@ void print_text(const BalanceOptions& o, const Balance& b) {
              degrees(u.principal_axis_tilt));
   if (!b.reactions.empty()) {
     fmt::print(
-        "\nbearing reactions: the bearings' forces on the rotor, turning with it (A at z = {:.6g} m, B at z = {:.6g} m{}):\n",
+        "\nbearing reactions: the bearings' forces on the rotor, turning with it (A at z = {:.6g} "
+        "m, B at z = {:.6g} m{}):\n",
         o.bearings[0], o.bearings[1],
         o.alpha != 0.0 ? fmt::format(", α = {:.6g} rad/s²", o.alpha) : std::string());
     const bool after = !b.reactions_after.empty();

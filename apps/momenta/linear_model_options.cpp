@@ -9,6 +9,7 @@
 
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
+#include "output_format.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -71,7 +72,8 @@ void add_linear_model_options(CLI::App* command, LinearModelOptions& o, bool wit
   command
       ->add_option("--about", o.about,
                    "Operating point: 'initial' (the file's initial state), 'equilibrium' (the "
-                   "static equilibrium Newton finds from it) or a STATE.json file "
+                   "static equilibrium Newton finds from it), 'steady' (a spinning body's steady "
+                   "motion at its initial state: modes and linearize) or a STATE.json file "
                    "{\"q\": [...], \"v\": [...], \"t\": 0}")
       ->capture_default_str();
   if (with_channels) {
@@ -89,6 +91,12 @@ void add_linear_model_options(CLI::App* command, LinearModelOptions& o, bool wit
 }
 
 LoadedLinearModel load_linear_model(const LinearModelOptions& o) {
+  if (o.about == "steady") {
+    throw CLI::ValidationError(
+        "--about",
+        "steady: the steady-motion analysis has no inputs or outputs; use `momenta "
+        "modes` or `momenta linearize` with it");
+  }
   LoadedLinearModel r{frontend::load_model(o.model), {}, {}};
   const model::Model& model = r.file.model;
   analysis::LinearizationOptions options;
@@ -123,6 +131,87 @@ LoadedLinearModel load_linear_model(const LinearModelOptions& o) {
   }
   r.linear = analysis::linearize(model, point, options);
   return r;
+}
+
+LoadedSteadyMotion load_steady_motion(const LinearModelOptions& o) {
+  LoadedSteadyMotion r{frontend::load_model(o.model), {}, {}};
+  r.body = analysis::spinning_body(r.file.model, analysis::initial_operating_point(r.file.model));
+  r.modes = analysis::steady_motion_modes(r.body);
+  return r;
+}
+
+namespace {
+
+void print_steady_motion_text(const LoadedSteadyMotion& s, bool with_matrix) {
+  const analysis::SpinningBody& b = s.body;
+  const analysis::SteadyMotionModes& m = s.modes;
+  fmt::print("{}: steady motion of body '{}' on {} joint '{}' (Euler–Poisson residual {:.3g})\n",
+             s.file.name, b.body, b.fixed_point ? "spherical" : "free", b.joint, m.residual);
+  fmt::print("  ω = [{:.6g}, {:.6g}, {:.6g}] rad/s in the body frame", b.w_B.x(), b.w_B.y(),
+             b.w_B.z());
+  if (b.fixed_point) {
+    fmt::print("; the vertical in it [{:.6g}, {:.6g}, {:.6g}]", b.up_B.x(), b.up_B.y(), b.up_B.z());
+  }
+  fmt::print("\n\n");
+  if (with_matrix) {
+    print_matrix("A (d/dt of the state, Euler–Poisson)", m.A, m.state_names, m.state_names);
+    fmt::print("\n");
+  }
+  fmt::print("eigenvalues seen from the body (1/s; the conserved quantities' zeros left out):\n");
+  for (const auto& lambda : m.eigenvalues) {
+    fmt::print("  {:>26}   {:.6g} rad/s\n", complex_text(lambda, 0), std::abs(lambda.imag()));
+  }
+  if (!m.space_frequencies.empty()) {
+    fmt::print("seen from space (the body is symmetric about its spin axis):\n");
+    for (std::size_t k = 0; k < m.space_frequencies.size(); ++k) {
+      fmt::print("  {:.17g} rad/s ({:.6g} Hz), {} whirl\n", m.space_frequencies[k],
+                 m.space_frequencies[k] / (2 * M_PI), m.whirl[k]);
+    }
+  }
+  fmt::print("\n{}\n", m.verdict);
+}
+
+json steady_motion_json(const LoadedSteadyMotion& s) {
+  const analysis::SteadyMotionModes& m = s.modes;
+  json j;
+  j["model"] = s.file.name;
+  j["about"] = "steady";
+  j["body"] = s.body.body;
+  j["joint"] = s.body.joint;
+  j["residual"] = m.residual;
+  j["w_B"] = {s.body.w_B.x(), s.body.w_B.y(), s.body.w_B.z()};
+  if (s.body.fixed_point) j["up_B"] = {s.body.up_B.x(), s.body.up_B.y(), s.body.up_B.z()};
+  j["state_names"] = m.state_names;
+  json A = json::array();
+  for (Eigen::Index i = 0; i < m.A.rows(); ++i) {
+    json row = json::array();
+    for (Eigen::Index k = 0; k < m.A.cols(); ++k) row.push_back(m.A(i, k));
+    A.push_back(std::move(row));
+  }
+  j["A"] = std::move(A);
+  json eig = json::array();
+  for (const auto& lambda : m.eigenvalues) eig.push_back(complex_json(lambda));
+  j["eigenvalues_body"] = std::move(eig);
+  json space = json::array();
+  for (std::size_t k = 0; k < m.space_frequencies.size(); ++k) {
+    space.push_back({{"frequency_rad_s", m.space_frequencies[k]}, {"whirl", m.whirl[k]}});
+  }
+  j["space_frequencies"] = std::move(space);
+  j["stable"] = m.stable;
+  j["growth_rate"] = m.growth_rate;
+  j["verdict"] = m.verdict;
+  return j;
+}
+
+}  // namespace
+
+void print_steady_motion(const LinearModelOptions& options, bool json, bool with_matrix) {
+  const LoadedSteadyMotion steady = load_steady_motion(options);
+  if (json) {
+    fmt::print("{}\n", json_text(steady_motion_json(steady)));
+  } else {
+    print_steady_motion_text(steady, with_matrix);
+  }
 }
 
 json complex_json(std::complex<double> z) { return json::array({z.real() + 0.0, z.imag() + 0.0}); }

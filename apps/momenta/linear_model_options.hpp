@@ -13,6 +13,7 @@
 
 #include "momenta/analysis/equilibrium.hpp"
 #include "momenta/analysis/linearize.hpp"
+#include "momenta/analysis/steady_motion.hpp"
 #include "momenta/io/model_file.hpp"
 #include "output_format.hpp"
 
@@ -36,6 +37,19 @@ struct LoadedLinearModel {
   std::string about;  // "initial state", "equilibrium", or the state file
 };
 LoadedLinearModel load_linear_model(const LinearModelOptions& options);
+
+/// --about steady: the model's one spinning body at its initial state, checked to be in a
+/// steady motion, and the linear analysis about it (analysis/steady_motion.hpp).
+struct LoadedSteadyMotion {
+  io::ModelFile file;
+  analysis::SpinningBody body;
+  analysis::SteadyMotionModes modes;
+};
+LoadedSteadyMotion load_steady_motion(const LinearModelOptions& options);
+
+/// `modes` and `linearize` with --about steady: loads the steady motion and prints its analysis,
+/// as JSON or as text (with the matrix A when `with_matrix`).
+void print_steady_motion(const LinearModelOptions& options, bool json, bool with_matrix);
 
 /// JSON of a complex number as [re, im].
 nlohmann::ordered_json complex_json(std::complex<double> z);

@@ -21,6 +21,7 @@ struct LinearizeOptions {
 };
 
 void run(const LinearizeOptions& o) {
+  if (o.model.about == "steady") return print_steady_motion(o.model, o.json, true);
   const LoadedLinearModel loaded = load_linear_model(o.model);
   const analysis::LinearModel& lin = loaded.linear;
   const analysis::StateSpace& sys = lin.system;

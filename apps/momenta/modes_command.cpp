@@ -31,6 +31,7 @@ double hz(double omega) { return omega / (2 * std::numbers::pi); }
 json number(double x) { return std::isfinite(x) ? json(x + 0.0) : json(nullptr); }
 
 void run(const ModesOptions& o) {
+  if (o.model.about == "steady") return print_steady_motion(o.model, o.json, false);
   const LoadedLinearModel loaded = load_linear_model(o.model);
   const analysis::LinearModel& lin = loaded.linear;
   const analysis::Modes m = analysis::modes(lin.system);
@@ -85,7 +86,8 @@ void run(const ModesOptions& o) {
   if (worst > 1e-9) {
     fmt::print(
         "note: this state is not an equilibrium (largest acceleration {:.4g}): the modes describe "
-        "the motion linearized at this instant; --about equilibrium finds a state at rest\n",
+        "the motion linearized at this instant; --about equilibrium finds a state at rest, and "
+        "--about steady analyses a spinning body's steady motion\n",
         worst);
   }
   fmt::print("\n");

@@ -12,6 +12,7 @@
 #include "momenta/analysis/linearize.hpp"
 #include "momenta/analysis/modes.hpp"
 #include "momenta/analysis/state_space.hpp"
+#include "momenta/analysis/steady_motion.hpp"
 #include "momenta/analysis/step_info.hpp"
 #include "momenta/analysis/time_response.hpp"
 #include "momenta/analysis/transfer_function.hpp"
@@ -368,11 +369,41 @@ void bind_responses(py::module_& m) {
 
 }  // namespace
 
+void bind_steady_motion(py::module_& m) {
+  py::class_<SteadyMotionModes>(m, "SteadyMotionModes",
+                                "The linear analysis of a spinning body's steady motion "
+                                "(docs/analysis.md, steady motions).")
+      .def_readonly("state_names", &SteadyMotionModes::state_names)
+      .def_property_readonly("A", [](const SteadyMotionModes& r) { return to_numpy(r.A); })
+      .def_readonly("residual", &SteadyMotionModes::residual)
+      .def_readonly("eigenvalues", &SteadyMotionModes::eigenvalues,
+                    "Seen from the body, each conjugate pair once; conserved quantities' zeros "
+                    "left out.")
+      .def_readonly("space_frequencies", &SteadyMotionModes::space_frequencies,
+                    "rad/s, seen from space (a body symmetric about its spin axis)")
+      .def_readonly("whirl", &SteadyMotionModes::whirl, "'forward' or 'backward', per frequency")
+      .def_readonly("stable", &SteadyMotionModes::stable)
+      .def_readonly("growth_rate", &SteadyMotionModes::growth_rate, "1/s")
+      .def_readonly("verdict", &SteadyMotionModes::verdict);
+  m.def(
+      "steady_motion",
+      [](const ModelHandle& h, const py::object& q, const py::object& v, double t) {
+        return steady_motion_modes(spinning_body(h.model(), point_of(h, q, v, t)));
+      },
+      py::arg("model"), py::kw_only(), py::arg("q") = py::none(), py::arg("v") = py::none(),
+      py::arg("t") = 0.0,
+      "The steady motion of a model's one spinning body (a spherical or free joint) at its "
+      "initial state (or q, v), in the variables where it is an equilibrium (ω and the vertical "
+      "in the body frame): eigenvalues, frequencies seen from space, the stability verdict. "
+      "Raises InvalidArgument when the state is not steady or the model not one such body.");
+}
+
 void bind_analysis(py::module_& m) {
   bind_state_space(m);
   bind_linearization(m);
   bind_modes(m);
   bind_responses(m);
+  bind_steady_motion(m);
 }
 
 }  // namespace momenta::python

@@ -2,6 +2,7 @@
 // binary (MOMENTA_CLI_PATH), exit codes (0 ok, 1 user error, 2 usage error) and JSON checked
 // against the library on the example models.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -106,6 +107,44 @@ TEST_F(AnalysisCli, StepResponseCsvFollowsTheClosedForm) {
     ++rows;
   }
   EXPECT_EQ(rows, 101);
+}
+
+// examples/sleeping_top.yaml, --about steady: the cone upright at 300 rad/s is stable (critical
+// 2√(I₁ m g l)/I₃ = 182.63 rad/s) and precesses, seen from space, at the roots of
+// I₁ σ² − I₃ ω₃ σ + m g l = 0; the other commands refuse what the analysis does not cover.
+TEST_F(AnalysisCli, SleepingTopSteadyMotionModes) {
+  const CliRun r = momenta("modes " + example("sleeping_top") + " --about steady --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_TRUE(j.at("stable").get<bool>());
+  EXPECT_EQ(j.at("residual").get<double>(), 0.0);
+  const double I1 = 0.6 * 0.01 + 0.15 * 0.0025, I3 = 0.3 * 0.0025, mgl = 9.81 * 0.075, w = 300;
+  const double D = std::sqrt(I3 * I3 * w * w - 4 * I1 * mgl);
+  std::vector<double> space;
+  for (const json& s : j.at("space_frequencies")) {
+    space.push_back(s.at("frequency_rad_s").get<double>());
+    EXPECT_EQ(s.at("whirl"), "forward");
+  }
+  std::sort(space.begin(), space.end());
+  ASSERT_EQ(space.size(), 2u);
+  EXPECT_NEAR(space[0], (I3 * w - D) / (2 * I1), 1e-10 * 32);
+  EXPECT_NEAR(space[1], (I3 * w + D) / (2 * I1), 1e-10 * 32);
+  EXPECT_NE(j.at("verdict").get<std::string>().find("182.631"), std::string::npos);
+  // The heavy top precesses at a tilt: not a steady motion of these variables, said so.
+  const CliRun tilted = momenta("modes " + example("heavy_top") + " --about steady");
+  EXPECT_EQ(tilted.code, 1);
+  EXPECT_NE(tilted.err.find("not in a steady motion"), std::string::npos) << tilted.err;
+  // Two bodies, revolute joints: not a spinning body.
+  EXPECT_EQ(momenta("modes " + example("double_pendulum") + " --about steady").code, 1);
+  // response has inputs and outputs; the steady-motion analysis has none.
+  EXPECT_EQ(
+      momenta("response " + example("sleeping_top") + " --about steady --input u --output y --step")
+          .code,
+      2);
+  // linearize prints the Euler–Poisson A.
+  const CliRun lin = momenta("linearize " + example("sleeping_top") + " --about steady");
+  ASSERT_EQ(lin.code, 0) << lin.err;
+  EXPECT_NE(lin.out.find("A (d/dt of the state, Euler–Poisson)"), std::string::npos) << lin.out;
 }
 
 // --json: full precision. The step figures are exact (τ ln 9, τ ln 50 for the cruise control's

@@ -123,3 +123,22 @@ def test_equilibrium_of_the_pendulum_and_its_normal_mode():
     omega = max(abs(m.eigenvalue.imag) for m in momenta.modes(eq.linear))
     assert normal[0].natural_frequency == pytest.approx(omega, rel=1e-9)
     assert expected["model"] == model.name
+
+
+def test_steady_motion_of_the_sleeping_top():
+    """examples/sleeping_top.yaml: stable above 2√(I₁ m g l)/I₃, precessing at the roots of
+    I₁ σ² − I₃ ω₃ σ + m g l = 0 seen from space; the same numbers as `modes --about steady`."""
+    model = momenta.load_model(EXAMPLES / "sleeping_top.yaml")
+    r = momenta.steady_motion(model)
+    I1, I3, mgl, w = 0.6 * 0.01 + 0.15 * 0.0025, 0.3 * 0.0025, 9.81 * 0.075, 300.0
+    root = np.sqrt(I3**2 * w**2 - 4 * I1 * mgl)
+    assert r.stable and r.residual == 0.0
+    np.testing.assert_allclose(sorted(r.space_frequencies), [(I3 * w - root) / (2 * I1), (I3 * w + root) / (2 * I1)], rtol=1e-10)
+    assert r.whirl == ["forward", "forward"]
+    assert "gyroscopically stabilized" in r.verdict
+    # Below the critical spin the same top falls: its growth rate is the closed form's.
+    slow = momenta.steady_motion(model, v=[0.0, 0.0, 100.0])
+    assert not slow.stable
+    assert slow.growth_rate == pytest.approx(np.sqrt(4 * I1 * mgl - I3**2 * 100.0**2) / (2 * I1), rel=1e-10)
+    with pytest.raises(momenta.InvalidArgument, match="not in a steady motion"):
+        momenta.steady_motion(momenta.load_model(EXAMPLES / "heavy_top.yaml"))
