@@ -134,13 +134,79 @@ LoadedLinearModel load_linear_model(const LinearModelOptions& o) {
 }
 
 LoadedSteadyMotion load_steady_motion(const LinearModelOptions& o) {
-  LoadedSteadyMotion r{frontend::load_model(o.model), {}, {}};
+  LoadedSteadyMotion r{frontend::load_model(o.model), {}, {}, std::nullopt};
   r.body = analysis::spinning_body(r.file.model, analysis::initial_operating_point(r.file.model));
-  r.modes = analysis::steady_motion_modes(r.body);
+  try {
+    r.modes = analysis::steady_motion_modes(r.body);
+  } catch (const InvalidArgument& not_steady) {
+    // A symmetric top precessing steadily at a tilt is steady in its precessing frame.
+    std::optional<analysis::SteadyPrecession> p;
+    try {
+      p = analysis::steady_precession(r.body);
+    } catch (const InvalidArgument&) {
+      throw not_steady;
+    }
+    if (!(p->residual <= 1e-6)) throw not_steady;
+    r.precession = p;
+  }
   return r;
 }
 
 namespace {
+
+void print_precession_text(const LoadedSteadyMotion& s) {
+  const analysis::SteadyPrecession& p = *s.precession;
+  const double deg = 180.0 / M_PI;
+  fmt::print(
+      "{}: steady precession of the symmetric top '{}' on spherical joint '{}': tilt {:.6g}° from "
+      "the vertical, spin ω₃ = {:.6g} rad/s\n",
+      s.file.name, s.body.body, s.body.joint, p.tilt * deg, p.spin);
+  fmt::print("  I₁ = {:.6g}, I₃ = {:.6g} kg·m² about the fixed point, m g l = {:.6g} N·m\n\n", p.I1,
+             p.I3, p.mgl);
+  fmt::print("precession rates, roots of I₁ cos θ φ̇² − I₃ ω₃ φ̇ + m g l = 0:\n");
+  fmt::print("  slow {} rad/s, fast {} rad/s\n", number_text(p.slow, 0), number_text(p.fast, 0));
+  fmt::print("  the state precesses at {} rad/s (residual {:.3g})\n", number_text(p.precession, 0),
+             p.residual);
+  if (p.minimum_spin > 0.0) {
+    fmt::print("  steady precession at this tilt needs ω₃ ≥ 2√(I₁ m g l cos θ)/I₃ = {:.6g} rad/s\n",
+               p.minimum_spin);
+  }
+  fmt::print(
+      "  gyroscopic approximation m g l/(I₃ ω₃) = {:.6g} rad/s, {:.3g} relative to the slow "
+      "root\n",
+      p.gyroscopic, p.gyroscopic_error);
+  fmt::print(
+      "nutation about it (linearized, Routh's reduction to θ): {:.6g} rad/s about the slow "
+      "precession, {:.6g} rad/s about the fast\n",
+      p.slow_nutation, p.fast_nutation);
+  fmt::print(
+      "\nstable: a steady precession of a symmetric top is a minimum of its effective "
+      "potential in θ; small disturbances nutate about it\n");
+}
+
+json precession_json(const LoadedSteadyMotion& s) {
+  const analysis::SteadyPrecession& p = *s.precession;
+  const auto number = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
+  return {{"model", s.file.name},
+          {"about", "steady"},
+          {"motion", "steady precession"},
+          {"body", s.body.body},
+          {"joint", s.body.joint},
+          {"tilt", p.tilt},
+          {"spin", p.spin},
+          {"I1", p.I1},
+          {"I3", p.I3},
+          {"mgl", p.mgl},
+          {"slow", number(p.slow)},
+          {"fast", number(p.fast)},
+          {"precession", p.precession},
+          {"residual", p.residual},
+          {"minimum_spin", p.minimum_spin},
+          {"gyroscopic", p.gyroscopic},
+          {"gyroscopic_error", number(p.gyroscopic_error)},
+          {"slow_nutation", number(p.slow_nutation)},
+          {"fast_nutation", number(p.fast_nutation)}};
+}
 
 void print_steady_motion_text(const LoadedSteadyMotion& s, bool with_matrix) {
   const analysis::SpinningBody& b = s.body;
@@ -207,6 +273,14 @@ json steady_motion_json(const LoadedSteadyMotion& s) {
 
 void print_steady_motion(const LinearModelOptions& options, bool json, bool with_matrix) {
   const LoadedSteadyMotion steady = load_steady_motion(options);
+  if (steady.precession) {
+    if (json) {
+      fmt::print("{}\n", json_text(precession_json(steady)));
+    } else {
+      print_precession_text(steady);
+    }
+    return;
+  }
   if (json) {
     fmt::print("{}\n", json_text(steady_motion_json(steady)));
   } else {

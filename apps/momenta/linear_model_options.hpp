@@ -44,6 +44,8 @@ struct LoadedSteadyMotion {
   io::ModelFile file;
   analysis::SpinningBody body;
   analysis::SteadyMotionModes modes;
+  /// Set instead of `modes` when the state is a symmetric top's steady precession at a tilt.
+  std::optional<analysis::SteadyPrecession> precession;
 };
 LoadedSteadyMotion load_steady_motion(const LinearModelOptions& options);
 

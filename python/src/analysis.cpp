@@ -398,12 +398,43 @@ void bind_steady_motion(py::module_& m) {
       "Raises InvalidArgument when the state is not steady or the model not one such body.");
 }
 
+void bind_steady_precession(py::module_& m) {
+  py::class_<SteadyPrecession>(m, "SteadyPrecession",
+                               "A symmetric top's steady precession at its tilt and spin "
+                               "(docs/analysis.md, steady motions).")
+      .def_readonly("tilt", &SteadyPrecession::tilt, "θ from the upward vertical, rad")
+      .def_readonly("spin", &SteadyPrecession::spin, "ω₃, rad/s")
+      .def_readonly("I1", &SteadyPrecession::I1)
+      .def_readonly("I3", &SteadyPrecession::I3)
+      .def_readonly("mgl", &SteadyPrecession::mgl)
+      .def_readonly("slow", &SteadyPrecession::slow, "the slow precession root, rad/s")
+      .def_readonly("fast", &SteadyPrecession::fast, "the fast precession root, rad/s")
+      .def_readonly("minimum_spin", &SteadyPrecession::minimum_spin)
+      .def_readonly("gyroscopic", &SteadyPrecession::gyroscopic, "m g l / (I₃ ω₃)")
+      .def_readonly("gyroscopic_error", &SteadyPrecession::gyroscopic_error)
+      .def_readonly("slow_nutation", &SteadyPrecession::slow_nutation)
+      .def_readonly("fast_nutation", &SteadyPrecession::fast_nutation)
+      .def_readonly("precession", &SteadyPrecession::precession, "the state's own φ̇")
+      .def_readonly("residual", &SteadyPrecession::residual);
+  m.def(
+      "steady_precession",
+      [](const ModelHandle& h, const py::object& q, const py::object& v, double t) {
+        return steady_precession(spinning_body(h.model(), point_of(h, q, v, t)));
+      },
+      py::arg("model"), py::kw_only(), py::arg("q") = py::none(), py::arg("v") = py::none(),
+      py::arg("t") = 0.0,
+      "A symmetric top's steady precession at the tilt and spin of its initial state (or q, v): "
+      "both precession roots, the minimum spin, the gyroscopic approximation, the nutation "
+      "frequencies, and how far the state is from the nearer root.");
+}
+
 void bind_analysis(py::module_& m) {
   bind_state_space(m);
   bind_linearization(m);
   bind_modes(m);
   bind_responses(m);
   bind_steady_motion(m);
+  bind_steady_precession(m);
 }
 
 }  // namespace momenta::python

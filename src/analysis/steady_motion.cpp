@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 #include <Eigen/Eigenvalues>
@@ -29,20 +30,6 @@ std::pair<Vec3, Vec3> transverse_basis(const Vec3& e) {
             e * (std::abs(e.x()) < 0.9 ? e.x() : e.y());
   e1.normalize();
   return {e1, e.cross(e1)};
-}
-
-// Whether the body is symmetric about the unit axis e: e principal, the two moments across it
-// equal, the centre of mass on it (to 1e-9).
-bool symmetric_about(const SpinningBody& b, const Vec3& e) {
-  const auto [e1, e2] = transverse_basis(e);
-  const double scale = b.I_B.trace();
-  const Vec3 Ie = b.I_B * e;
-  const bool principal = (Ie - e * e.dot(Ie)).norm() <= 1e-9 * scale;
-  const bool round = std::abs(e1.dot(b.I_B * e1) - e2.dot(b.I_B * e2)) <= 1e-9 * scale &&
-                     std::abs(e1.dot(b.I_B * e2)) <= 1e-9 * scale;
-  const double p = b.p_OBcm_B.norm();
-  const bool on_axis = p == 0.0 || b.p_OBcm_B.cross(e).norm() <= 1e-9 * p;
-  return principal && round && on_axis;
 }
 
 std::string free_body_verdict(const SpinningBody& b, bool stable, double growth) {
@@ -100,6 +87,18 @@ std::string fixed_point_verdict(const SpinningBody& b, bool stable, double growt
 }
 
 }  // namespace
+
+bool symmetric_about(const SpinningBody& b, const Vec3& e) {
+  const auto [e1, e2] = transverse_basis(e);
+  const double scale = b.I_B.trace();
+  const Vec3 Ie = b.I_B * e;
+  const bool principal = (Ie - e * e.dot(Ie)).norm() <= 1e-9 * scale;
+  const bool round = std::abs(e1.dot(b.I_B * e1) - e2.dot(b.I_B * e2)) <= 1e-9 * scale &&
+                     std::abs(e1.dot(b.I_B * e2)) <= 1e-9 * scale;
+  const double p = b.p_OBcm_B.norm();
+  const bool on_axis = p == 0.0 || b.p_OBcm_B.cross(e).norm() <= 1e-9 * p;
+  return principal && round && on_axis;
+}
 
 SpinningBody spinning_body(const model::Model& model, const OperatingPoint& point) {
   if (model.num_joints() != 1 || model.joint(0).parent_index != 0 ||
@@ -227,6 +226,76 @@ SteadyMotionModes steady_motion_modes(const SpinningBody& b) {
   if (r.stable) r.growth_rate = 0.0;
   r.verdict = b.fixed_point ? fixed_point_verdict(b, r.stable, r.growth_rate)
                             : free_body_verdict(b, r.stable, r.growth_rate);
+  return r;
+}
+
+SteadyPrecession steady_precession(const SpinningBody& b) {
+  if (!b.fixed_point || !(b.p_OBcm_B.norm() > 0.0)) {
+    throw InvalidArgument(fmt::format(
+        "body '{}': steady precession is a top's: a body on a fixed point with its centre of mass "
+        "off it",
+        b.body));
+  }
+  const Vec3 e = b.p_OBcm_B.normalized();
+  if (!symmetric_about(b, e)) {
+    throw InvalidArgument(fmt::format(
+        "body '{}' is not symmetric about the axis through its centre of mass (two equal moments "
+        "across it): the steady precession's closed form is a symmetric top's",
+        b.body));
+  }
+  SteadyPrecession r;
+  const auto [e1, e2] = transverse_basis(e);
+  r.I1 = e1.dot(b.I_B * e1);
+  r.I3 = e.dot(b.I_B * e);
+  r.mgl = b.mass * b.g * b.p_OBcm_B.norm();
+  const double c = std::clamp(e.dot(b.up_B), -1.0, 1.0);
+  const double s = std::sqrt(1.0 - c * c);
+  r.tilt = std::acos(c);
+  if (s < 1e-9) {
+    throw InvalidArgument(
+        fmt::format("body '{}' stands on its axis (tilt {:.3g} rad): a sleeping top, not a steady "
+                    "precession — its steady motion is the spin about the vertical",
+                    b.body, r.tilt));
+  }
+  r.spin = b.w_B.dot(e);
+  // The roots of I₁ cos θ φ̇² − I₃ω₃ φ̇ + m g l = 0 (one root where cos θ = 0).
+  const double p = r.I3 * r.spin, a = r.I1 * c;
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  r.minimum_spin = c > 0.0 ? 2.0 * std::sqrt(r.I1 * r.mgl * c) / r.I3 : 0.0;
+  if (std::abs(a) < 1e-12 * std::abs(p)) {
+    r.slow = r.mgl / p;
+    r.fast = kNaN;
+  } else {
+    const double D = p * p - 4.0 * a * r.mgl;
+    if (D < 0.0) {
+      r.slow = r.fast = kNaN;
+    } else {
+      // The smaller root without cancellation: 2 m g l/(p + sign(p)√D).
+      const double q = p + std::copysign(std::sqrt(D), p);
+      r.slow = 2.0 * r.mgl / q;
+      r.fast = q / (2.0 * a);
+    }
+  }
+  r.gyroscopic = r.mgl / p;
+  r.gyroscopic_error = std::isfinite(r.slow) ? (r.gyroscopic - r.slow) / r.slow : kNaN;
+  const auto nutation = [&](double rate) {
+    if (!std::isfinite(rate)) return kNaN;
+    const double t1 = p - 2.0 * r.I1 * rate * c, t2 = r.I1 * rate * s;
+    return std::sqrt(t1 * t1 + t2 * t2) / r.I1;
+  };
+  r.slow_nutation = nutation(r.slow);
+  r.fast_nutation = nutation(r.fast);
+  // The state's ω as φ̇ ẑ + ψ̇ e (least squares in the plane of the vertical and the axis).
+  Eigen::Matrix<double, 3, 2> basis;
+  basis << b.up_B, e;
+  const Eigen::Vector2d split = basis.colPivHouseholderQr().solve(b.w_B);
+  r.precession = split[0];
+  const double w = std::max(b.w_B.norm(), 1e-300);
+  double mismatch = (basis * split - b.w_B).norm();
+  double nearest = std::isfinite(r.slow) ? std::abs(r.precession - r.slow) : 1e300;
+  if (std::isfinite(r.fast)) nearest = std::min(nearest, std::abs(r.precession - r.fast));
+  mismatch = std::max(mismatch, nearest);
+  r.residual = mismatch / w;
   return r;
 }
 

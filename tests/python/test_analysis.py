@@ -140,5 +140,10 @@ def test_steady_motion_of_the_sleeping_top():
     slow = momenta.steady_motion(model, v=[0.0, 0.0, 100.0])
     assert not slow.stable
     assert slow.growth_rate == pytest.approx(np.sqrt(4 * I1 * mgl - I3**2 * 100.0**2) / (2 * I1), rel=1e-10)
+    heavy = momenta.load_model(EXAMPLES / "heavy_top.yaml")
     with pytest.raises(momenta.InvalidArgument, match="not in a steady motion"):
-        momenta.steady_motion(momenta.load_model(EXAMPLES / "heavy_top.yaml"))
+        momenta.steady_motion(heavy)
+    # It precesses steadily at its tilt instead: the slow root its file states.
+    p = momenta.steady_precession(heavy)
+    assert p.slow == pytest.approx(3.618637, abs=5e-7) and p.residual < 1e-15
+    assert p.gyroscopic == pytest.approx(p.mgl / (p.I3 * p.spin), rel=1e-15)

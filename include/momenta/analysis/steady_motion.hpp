@@ -78,4 +78,41 @@ SteadyMotionModes steady_motion_modes(const SpinningBody& body);
 /// The Euler–Poisson rates f = (ω̇, γ̇) at the body's state (ω̇ only for a free body).
 VecX euler_poisson_rates(const SpinningBody& body);
 
+/// Whether the body is symmetric about the unit axis e (in B): e a principal axis, the two
+/// moments across it equal and the centre of mass on it, to 1e-9.
+bool symmetric_about(const SpinningBody& body, const Vec3& e_B);
+
+/// A symmetric top (body on a fixed point, symmetric about its axis e) in steady precession at
+/// the tilt θ from the upward vertical with spin ω₃ = ω·e: with Euler angles, I₁φ̇² cos θ −
+/// I₃ω₃φ̇ + m g l = 0 (Beer & Johnston §18.10, Goldstein §5.7; I₁, I₃ about the fixed point,
+/// l the centre of mass's distance along e). A steady motion of the precessing frame, not of
+/// Euler–Poisson's: the top's axis keeps its tilt while it turns about the vertical.
+struct SteadyPrecession {
+  double tilt = 0.0;  ///< θ, rad
+  double spin = 0.0;  ///< ω₃, rad/s
+  double I1 = 0.0, I3 = 0.0, mgl = 0.0;
+  /// The two precession rates, rad/s, slow ≤ fast in magnitude; NaN when the spin is below
+  /// minimum_spin (no steady precession at this tilt). At θ = 90° the one root m g l/(I₃ω₃).
+  double slow = 0.0, fast = 0.0;
+  /// The spin below which no steady precession exists at this tilt, 2√(I₁ m g l cos θ)/I₃ (0
+  /// when cos θ ≤ 0: a top below its pivot precesses at any spin).
+  double minimum_spin = 0.0;
+  /// The gyroscopic approximation m g l/(I₃ ω₃) of the slow root, and its relative error.
+  double gyroscopic = 0.0;
+  double gyroscopic_error = 0.0;
+  /// Linearized nutation frequency about each steady precession, rad/s (Routh's reduction to θ):
+  /// ω_n² = [(I₃ω₃ − 2 I₁ φ̇ cos θ)² + I₁² φ̇² sin² θ]/I₁².
+  double slow_nutation = 0.0, fast_nutation = 0.0;
+  /// The state's own precession rate: its ω = φ̇ ẑ + ψ̇ e split along the vertical and the axis.
+  double precession = 0.0;
+  /// How far the state is from the nearer steady precession: the part of ω outside span{ẑ, e}
+  /// and the mismatch of φ̇ with the nearer root, relative to |ω|.
+  double residual = 0.0;
+};
+
+/// The steady precession of `body` at its tilt and spin. Throws InvalidArgument unless the body
+/// is on a fixed point, symmetric about an axis (its centre of mass on it) and tilted (the
+/// sleeping top, at θ = 0, is steady_motion_modes' case).
+SteadyPrecession steady_precession(const SpinningBody& body);
+
 }  // namespace momenta::analysis
