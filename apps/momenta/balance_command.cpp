@@ -29,7 +29,6 @@ namespace {
 using inertia::Unbalance;
 using json = nlohmann::ordered_json;
 
-constexpr double kRpm = 2.0 * std::numbers::pi / 60.0;  // rad/s per rev/min
 constexpr double kStandardGravity = 9.80665;
 
 struct BalanceOptions {

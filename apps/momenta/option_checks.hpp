@@ -7,6 +7,9 @@
 
 namespace momenta::cli {
 
+/// Speeds on the command line are in rev/min (as rotor engineers give them): rad/s per rev/min.
+inline constexpr double kRpm = 2.0 * 3.14159265358979323846 / 60.0;
+
 /// A finite number > 0 (a duration, a step, a tolerance, a density).
 CLI::Validator positive_finite();
 

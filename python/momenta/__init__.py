@@ -18,6 +18,9 @@ inertia off the diagonal (docs/conventions.md).
 
 from . import _core
 from ._core import (
+    CampbellDiagram,
+    CampbellPoint,
+    CriticalSpeed,
     Equilibrium,
     Error,
     FileError,
@@ -44,6 +47,7 @@ from ._core import (
     TransferFunction,
     Workspace,
     bode,
+    campbell_diagram,
     find_equilibrium,
     impulse_response,
     linearize,

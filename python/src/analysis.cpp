@@ -428,6 +428,29 @@ void bind_steady_precession(py::module_& m) {
       "frequencies, and how far the state is from the nearer root.");
 }
 
+void bind_campbell(py::module_& m) {
+  py::class_<CampbellPoint>(m, "CampbellPoint", "One speed of a Campbell diagram.")
+      .def_readonly("speed", &CampbellPoint::speed, "rad/s")
+      .def_readonly("frequencies", &CampbellPoint::frequencies, "whirl frequencies, rad/s")
+      .def_readonly("whirl", &CampbellPoint::whirl, "'backward' / 'forward', per frequency")
+      .def_readonly("stable", &CampbellPoint::stable);
+  py::class_<CriticalSpeed>(m, "CriticalSpeed", "A forward whirl on the 1× line.")
+      .def_readonly("speed", &CriticalSpeed::speed, "rad/s")
+      .def_readonly("whirl", &CriticalSpeed::whirl);
+  py::class_<CampbellDiagram>(m, "CampbellDiagram", "Whirl frequencies against spin speed.")
+      .def_readonly("points", &CampbellDiagram::points)
+      .def_readonly("critical_speeds", &CampbellDiagram::critical_speeds);
+  m.def(
+      "campbell_diagram",
+      [](const ModelHandle& h, double speed_from, double speed_to, int points) {
+        return campbell_diagram(spinning_body(h.model(), initial_operating_point(h.model())),
+                                speed_from, speed_to, points);
+      },
+      py::arg("model"), py::arg("speed_from"), py::arg("speed_to"), py::arg("points") = 41,
+      "The Campbell diagram of the model's spinning body from speed_from to speed_to (rad/s), "
+      "as `momenta campbell` (which takes rev/min).");
+}
+
 void bind_analysis(py::module_& m) {
   bind_state_space(m);
   bind_linearization(m);
@@ -435,6 +458,7 @@ void bind_analysis(py::module_& m) {
   bind_responses(m);
   bind_steady_motion(m);
   bind_steady_precession(m);
+  bind_campbell(m);
 }
 
 }  // namespace momenta::python

@@ -229,6 +229,99 @@ SteadyMotionModes steady_motion_modes(const SpinningBody& b) {
   return r;
 }
 
+namespace {
+
+// The body's state with its spin scaled to Ω (about the state's spin axis).
+SpinningBody spun_at(const SpinningBody& b, const Vec3& axis, double speed) {
+  SpinningBody at = b;
+  at.w_B = speed * axis;
+  return at;
+}
+
+// The whirls at speed Ω, ordered backward before forward and by frequency within each, so the
+// k-th stands for the same mode from one speed to the next.
+CampbellPoint whirls_at(const SpinningBody& b, const Vec3& axis, double speed) {
+  const SteadyMotionModes m = steady_motion_modes(spun_at(b, axis, speed));
+  std::vector<std::pair<std::string, double>> sorted;
+  for (std::size_t k = 0; k < m.space_frequencies.size(); ++k) {
+    sorted.emplace_back(m.whirl[k], m.space_frequencies[k]);
+  }
+  std::sort(sorted.begin(), sorted.end());
+  CampbellPoint p{speed, {}, {}, m.stable};
+  for (const auto& [whirl, frequency] : sorted) {
+    p.whirl.push_back(whirl);
+    p.frequencies.push_back(frequency);
+  }
+  return p;
+}
+
+// The k-th whirl's frequency minus Ω, or NaN when the modes change there.
+double off_the_line(const SpinningBody& b, const Vec3& axis, double speed, std::size_t k,
+                    const std::string& whirl) {
+  const CampbellPoint p = whirls_at(b, axis, speed);
+  if (k >= p.frequencies.size() || !p.stable || p.whirl[k] != whirl) {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  return p.frequencies[k] - speed;
+}
+
+}  // namespace
+
+CampbellDiagram campbell_diagram(const SpinningBody& b, double from, double to, int points) {
+  if (!(from > 0.0) || !(to > from) || !std::isfinite(to) || points < 2) {
+    throw InvalidArgument(fmt::format(
+        "Campbell diagram: speeds from {} to {} rad/s in {} points: expected 0 < from < to and "
+        "at least 2 points",
+        from, to, points));
+  }
+  if (!(b.w_B.norm() > 0.0)) {
+    throw InvalidArgument(fmt::format(
+        "body '{}' does not spin at this state: the Campbell diagram scales its spin, and needs "
+        "its axis",
+        b.body));
+  }
+  const Vec3 axis = b.w_B.normalized();
+  if (!symmetric_about(b, axis)) {
+    throw InvalidArgument(fmt::format(
+        "body '{}' is not symmetric about its spin axis: whirl frequencies seen from space are "
+        "those of a symmetric rotor",
+        b.body));
+  }
+  CampbellDiagram d;
+  for (int k = 0; k < points; ++k) {
+    const double speed = from + (to - from) * k / (points - 1);
+    d.points.push_back(whirls_at(b, axis, speed));
+  }
+  // Critical speeds: a sign change of (frequency − Ω) of the same whirl between two speeds.
+  for (std::size_t k = 1; k < d.points.size(); ++k) {
+    const CampbellPoint &a = d.points[k - 1], &c = d.points[k];
+    const std::size_t n = std::min(a.frequencies.size(), c.frequencies.size());
+    if (a.frequencies.size() != c.frequencies.size()) continue;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double fa = a.frequencies[i] - a.speed, fc = c.frequencies[i] - c.speed;
+      // An unbalance turns with the rotor: it drives forward whirl at 1×, so only forward whirls
+      // have critical speeds here.
+      if (!a.stable || !c.stable || (fa > 0.0) == (fc > 0.0) || a.whirl[i] != c.whirl[i] ||
+          a.whirl[i] != "forward")
+        continue;
+      double lo = a.speed, hi = c.speed, flo = fa;
+      while (hi - lo > 1e-12 * hi) {
+        const double mid = 0.5 * (lo + hi);
+        const double fm = off_the_line(b, axis, mid, i, a.whirl[i]);
+        if (std::isnan(fm)) break;
+        if ((fm > 0.0) == (flo > 0.0)) {
+          lo = mid;
+          flo = fm;
+        } else {
+          hi = mid;
+        }
+      }
+      d.critical_speeds.push_back({0.5 * (lo + hi), a.whirl[i]});
+    }
+  }
+  return d;
+}
+
 SteadyPrecession steady_precession(const SpinningBody& b) {
   if (!b.fixed_point || !(b.p_OBcm_B.norm() > 0.0)) {
     throw InvalidArgument(fmt::format(

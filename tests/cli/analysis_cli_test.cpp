@@ -155,6 +155,39 @@ TEST_F(AnalysisCli, SleepingTopSteadyMotionModes) {
   EXPECT_NE(lin.out.find("A (d/dt of the state, Euler–Poisson)"), std::string::npos) << lin.out;
 }
 
+// `momenta campbell`: a top hanging below its ball (l = 0.1 m, I₁ = 0.05, I₃ = 0.02 kg·m² about
+// the ball), spinning about the vertical, has one critical speed, where its forward whirl
+// meets the 1× line: I₁Ω² − I₃Ω² − m g l = 0, Ω_c = √(m g l/(I₁ − I₃)).
+TEST_F(AnalysisCli, CampbellDiagramOfAHangingTop) {
+  const fs::path model = dir_ / "hanging_top.yaml";
+  std::ofstream(model) << "name: hanging top\n"
+                          "gravity: [0, 0, -9.81]\n"
+                          "bodies:\n"
+                          "  - {name: top, mass: 1, com: [0, 0, -0.1], inertia: [0.05, 0.05, 0.02],"
+                          " inertia_about: [0, 0, 0]}\n"
+                          "joints:\n"
+                          "  - {name: ball, type: spherical, parent: world, child: top, v0: [0, 0, "
+                          "10]}\n";
+  const CliRun r = momenta("campbell '" + model.string() + "' --speed-range 10 200 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  ASSERT_EQ(j.at("critical_speeds").size(), 1u);
+  const double expected = std::sqrt(9.81 * 0.1 / (0.05 - 0.02));
+  EXPECT_NEAR(j.at("critical_speeds")[0].at("speed_rad_s").get<double>(), expected,
+              1e-10 * expected);
+  EXPECT_EQ(j.at("critical_speeds")[0].at("whirl"), "forward");
+  EXPECT_EQ(j.at("points").size(), 41u);
+  // The table as CSV, one row per speed; bad ranges and an unsymmetric model are refused.
+  const CliRun csv =
+      momenta("campbell '" + model.string() + "' --speed-range 10 200 --points 5 --csv -");
+  ASSERT_EQ(csv.code, 0) << csv.err;
+  EXPECT_EQ(csv.out.substr(0, csv.out.find('\n')),
+            "speed_rpm,speed_rad_s,backward_1_rad_s,forward_1_rad_s");
+  EXPECT_EQ(momenta("campbell '" + model.string() + "' --speed-range 200 10").code, 2);
+  EXPECT_EQ(momenta("campbell " + example("free_body_tennis_racket") + " --speed-range 10 20").code,
+            1);
+}
+
 // --json: full precision. The step figures are exact (τ ln 9, τ ln 50 for the cruise control's
 // τ = m/b = 20 s, to 1e-12), and the text's default numbers read back to the JSON's doubles.
 TEST_F(AnalysisCli, ResponseJsonIsExactAndTheTextReadsBack) {

@@ -147,3 +147,14 @@ def test_steady_motion_of_the_sleeping_top():
     p = momenta.steady_precession(heavy)
     assert p.slow == pytest.approx(3.618637, abs=5e-7) and p.residual < 1e-15
     assert p.gyroscopic == pytest.approx(p.mgl / (p.I3 * p.spin), rel=1e-15)
+
+
+def test_campbell_diagram_is_momenta_campbells():
+    """The Python diagram equals `momenta campbell --json` (rev/min there) bit for bit."""
+    model = momenta.load_model(EXAMPLES / "sleeping_top.yaml")
+    rpm = 2 * np.pi / 60
+    expected = cli_json("campbell", EXAMPLES / "sleeping_top.yaml", "--speed-range", 2000, 6000, "--points", 9)
+    d = momenta.campbell_diagram(model, 2000 * rpm, 6000 * rpm, 9)
+    assert [p.speed for p in d.points] == [p["speed_rad_s"] for p in expected["points"]]
+    assert [p.frequencies for p in d.points] == [p["frequencies_rad_s"] for p in expected["points"]]
+    assert d.critical_speeds == [] and expected["critical_speeds"] == []

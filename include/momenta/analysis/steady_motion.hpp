@@ -82,6 +82,33 @@ VecX euler_poisson_rates(const SpinningBody& body);
 /// moments across it equal and the centre of mass on it, to 1e-9.
 bool symmetric_about(const SpinningBody& body, const Vec3& e_B);
 
+/// One speed of a Campbell diagram: the whirl frequencies seen from space at spin speed Ω.
+struct CampbellPoint {
+  double speed = 0.0;               ///< Ω, rad/s
+  std::vector<double> frequencies;  ///< rad/s, seen from space
+  std::vector<std::string> whirl;   ///< "forward" / "backward", per frequency
+  bool stable = true;
+};
+
+/// A critical speed: a forward whirl's frequency equals the spin speed (the 1× line, where an
+/// unbalance, which turns with the rotor, excites it).
+struct CriticalSpeed {
+  double speed = 0.0;  ///< rad/s
+  std::string whirl;   ///< of the whirl that crosses
+};
+
+struct CampbellDiagram {
+  std::vector<CampbellPoint> points;
+  std::vector<CriticalSpeed> critical_speeds;
+};
+
+/// The Campbell diagram of a spinning body symmetric about its spin axis (the state's ω, along the
+/// vertical for a top): the state's spin scaled to each of `points` speeds from `from` to `to`
+/// (rad/s, > 0), each analysed by steady_motion_modes; the critical speeds where a whirl frequency
+/// crosses Ω, each refined by bisection to 1e-12 relative. Throws InvalidArgument for a body
+/// that is not symmetric about its spin axis, or a bad range.
+CampbellDiagram campbell_diagram(const SpinningBody& body, double from, double to, int points);
+
 /// A symmetric top (body on a fixed point, symmetric about its axis e) in steady precession at
 /// the tilt θ from the upward vertical with spin ω₃ = ω·e: with Euler angles, I₁φ̇² cos θ −
 /// I₃ω₃φ̇ + m g l = 0 (Beer & Johnston §18.10, Goldstein §5.7; I₁, I₃ about the fixed point,

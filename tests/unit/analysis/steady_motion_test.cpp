@@ -135,6 +135,35 @@ TEST(SteadyMotion, ASymmetricFreeBodyWobblesAtTheEulerFrequency) {
   EXPECT_EQ(r.whirl[0], "forward");
 }
 
+// Campbell diagrams of spinning tops: the whirls seen from space against the spin speed Ω, and
+// the critical speeds where one crosses the 1× line. From I₁σ² − I₃Ωσ + m g l = 0 with σ = Ω:
+// Ω_c² = m g l/(I₃ − I₁) — for a hanging top (l < 0) with I₁ > I₃, and for an upright flat top
+// (I₃ > I₁, above its critical spin); an upright top with I₁ > I₃ has none.
+TEST(SteadyMotion, CampbellDiagramCriticalSpeedsOfSpinningTops) {
+  const double m = 1.0, I1 = 0.05;
+  const auto critical_speeds = [&](double l, double I3, double from, double to) {
+    const model::Model top = upright_top(m, l, I1, I3);
+    const SpinningBody body = spinning_body(top, spinning(top, Vec3(0, 0, 1.0)));
+    return campbell_diagram(body, from, to, 60);
+  };
+  const CampbellDiagram hanging = critical_speeds(-0.1, 0.02, 1.0, 20.0);
+  ASSERT_EQ(hanging.critical_speeds.size(), 1u);
+  EXPECT_REL_NEAR(hanging.critical_speeds[0].speed, std::sqrt(m * kG * 0.1 / (I1 - 0.02)), 1e-10);
+  EXPECT_EQ(hanging.critical_speeds[0].whirl, "forward");
+  // Each point: one backward and one forward whirl, the roots of I₁σ² ∓ I₃Ωσ − m g |l| = 0.
+  const CampbellPoint& p = hanging.points[10];
+  ASSERT_EQ(p.frequencies.size(), 2u);
+  EXPECT_EQ(p.whirl[0], "backward");
+  const double root = std::sqrt(0.02 * 0.02 * p.speed * p.speed + 4 * I1 * m * kG * 0.1);
+  EXPECT_REL_NEAR(p.frequencies[0], (root - 0.02 * p.speed) / (2 * I1), 1e-10);
+  EXPECT_REL_NEAR(p.frequencies[1], (root + 0.02 * p.speed) / (2 * I1), 1e-10);
+  const CampbellDiagram flat = critical_speeds(0.1, 1.5 * I1, 6.0, 30.0);
+  ASSERT_EQ(flat.critical_speeds.size(), 1u);
+  EXPECT_REL_NEAR(flat.critical_speeds[0].speed, std::sqrt(m * kG * 0.1 / (0.5 * I1)), 1e-10);
+  EXPECT_TRUE(critical_speeds(0.1, 0.5 * I1, 30.0, 300.0).critical_speeds.empty());
+  EXPECT_THROW(critical_speeds(0.1, 0.5 * I1, 30.0, 10.0), InvalidArgument);
+}
+
 TEST(SteadyMotion, NotSteadyOrNotApplicableIsNamed) {
   // A tilted top spinning about its own axis is not steady in these variables.
   const model::Model top = upright_top(1.0, 0.1, 0.05, 0.02);

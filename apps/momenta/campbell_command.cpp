@@ -1,0 +1,173 @@
+// `momenta campbell MODEL --speed-range A B`: the Campbell diagram of a model's spinning body —
+// its whirl frequencies seen from space against the spin speed, forward and backward, and the
+// critical speeds where a forward whirl crosses the 1× line. Calls momenta::analysis
+// (steady_motion.hpp); documented in docs/cli.md and docs/analysis.md.
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "linear_model_options.hpp"
+#include "momenta/analysis/steady_motion.hpp"
+#include "momenta/common/error.hpp"
+#include "momenta/frontend/model_loading.hpp"
+#include "option_checks.hpp"
+#include "output_format.hpp"
+
+namespace momenta::cli {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+struct CampbellOptions {
+  std::string model;
+  std::vector<double> speed_range;  // rev/min
+  int points = 41;
+  bool json = false;
+  std::optional<std::string> csv;
+  bool force = false;
+};
+
+// The column name of whirl k at a point: "forward_1", "backward_1", …
+std::vector<std::string> whirl_names(const analysis::CampbellPoint& p) {
+  std::vector<std::string> names;
+  int forward = 0, backward = 0;
+  for (const std::string& w : p.whirl) {
+    names.push_back(fmt::format("{}_{}", w, w == "forward" ? ++forward : ++backward));
+  }
+  return names;
+}
+
+std::string csv_text(const analysis::CampbellDiagram& d) {
+  const std::vector<std::string> names = whirl_names(d.points.front());
+  std::string text = "speed_rpm,speed_rad_s";
+  for (const std::string& n : names) text += fmt::format(",{}_rad_s", n);
+  text += "\n";
+  for (const analysis::CampbellPoint& p : d.points) {
+    text += fmt::format("{:.17g},{:.17g}", p.speed / kRpm, p.speed);
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      if (k < p.frequencies.size() && p.stable) {
+        text += fmt::format(",{:.17g}", p.frequencies[k]);
+      } else {
+        text += ",";  // unstable there: no whirl frequency
+      }
+    }
+    text += "\n";
+  }
+  return text;
+}
+
+void run(const CampbellOptions& o) {
+  if (!(o.speed_range[0] > 0.0) || !(o.speed_range[1] > o.speed_range[0])) {
+    throw CLI::ValidationError("--speed-range", "expects 0 < A < B (rev/min)");
+  }
+  if (o.csv && *o.csv != "-" && std::filesystem::exists(*o.csv) && !o.force) {
+    throw FileError(fmt::format("--csv {}: the file exists; pass --force to overwrite it", *o.csv));
+  }
+  const io::ModelFile file = frontend::load_model(o.model);
+  const analysis::SpinningBody body =
+      analysis::spinning_body(file.model, analysis::initial_operating_point(file.model));
+  const analysis::CampbellDiagram d =
+      analysis::campbell_diagram(body, o.speed_range[0] * kRpm, o.speed_range[1] * kRpm, o.points);
+  if (o.json) {
+    json j;
+    j["model"] = file.name;
+    j["body"] = body.body;
+    json points = json::array();
+    for (const analysis::CampbellPoint& p : d.points) {
+      points.push_back({{"speed_rad_s", p.speed},
+                        {"speed_rpm", p.speed / kRpm},
+                        {"stable", p.stable},
+                        {"frequencies_rad_s", p.frequencies},
+                        {"whirl", p.whirl}});
+    }
+    j["points"] = std::move(points);
+    json critical = json::array();
+    for (const analysis::CriticalSpeed& c : d.critical_speeds) {
+      critical.push_back(
+          {{"speed_rad_s", c.speed}, {"speed_rpm", c.speed / kRpm}, {"whirl", c.whirl}});
+    }
+    j["critical_speeds"] = std::move(critical);
+    fmt::print("{}\n", json_text(j, ListSpacing::spaced));
+    return;
+  }
+  const std::string csv = csv_text(d);
+  if (o.csv && *o.csv == "-") {
+    fmt::print("{}", csv);
+    return;
+  }
+  if (o.csv) {
+    std::ofstream out(*o.csv, std::ios::binary);
+    if (!out) throw FileError(fmt::format("--csv {}: cannot write the file", *o.csv));
+    out << csv;
+  }
+  fmt::print("{}: Campbell diagram of body '{}' ({} speeds), whirl frequencies seen from space\n\n",
+             file.name, body.body, d.points.size());
+  const std::vector<std::string> names = whirl_names(d.points.front());
+  fmt::print("  {:>10} {:>12}", "rev/min", "Ω rad/s");
+  for (const std::string& n : names) fmt::print(" {:>14}", n);
+  fmt::print("\n");
+  for (const analysis::CampbellPoint& p : d.points) {
+    fmt::print("  {:>10.6g} {:>12.6g}", p.speed / kRpm, p.speed);
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      if (p.stable && k < p.frequencies.size()) {
+        fmt::print(" {:>14.6g}", p.frequencies[k]);
+      } else {
+        fmt::print(" {:>14}", "unstable");
+      }
+    }
+    fmt::print("\n");
+  }
+  if (d.critical_speeds.empty()) {
+    fmt::print("\nno critical speed in this range: no forward whirl crosses the 1× line\n");
+  }
+  for (const analysis::CriticalSpeed& c : d.critical_speeds) {
+    fmt::print("\ncritical speed {:.10g} rad/s = {:.10g} rev/min ({} whirl at 1×)\n", c.speed,
+               c.speed / kRpm, c.whirl);
+  }
+  if (o.csv) fmt::print("table written to {}\n", *o.csv);
+}
+
+}  // namespace
+
+void add_campbell_command(CLI::App& app) {
+  auto options = std::make_shared<CampbellOptions>();
+  CLI::App* command = app.add_subcommand(
+      "campbell",
+      "Campbell diagram of a spinning body: its whirl frequencies (forward and backward, seen "
+      "from space) against the spin speed, and the critical speeds");
+  command
+      ->add_option("MODEL", options->model,
+                   "A model file: one body on a spherical or free "
+                   "joint, spinning about its axis of symmetry")
+      ->required();
+  command->add_option("--speed-range", options->speed_range, "From A to B rev/min")
+      ->expected(2)
+      ->required()
+      ->check(finite());
+  command->add_option("--points", options->points, "Speeds in the table (default 41)")
+      ->check(CLI::Range(2, 100000));
+  auto* csv = command
+                  ->add_option("--csv", options->csv,
+                               "Write the table as CSV to FILE ('-': to stdout); an existing file "
+                               "is never overwritten without --force")
+                  ->check(not_a_folder());
+  command->add_flag("--json", options->json, "Print JSON instead of text")->excludes(csv);
+  command->add_flag("--force", options->force, "Overwrite the --csv file if it exists");
+  command->footer(
+      "Example:\n"
+      "  momenta campbell examples/sleeping_top.yaml --speed-range 2000 6000\n"
+      "The body's initial state sets the spin axis (a steady motion: along the vertical for a "
+      "top); its spin is scaled to each speed (docs/analysis.md).");
+  command->callback([options] { run(*options); });
+}
+
+}  // namespace momenta::cli
