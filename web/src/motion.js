@@ -1,8 +1,8 @@
 // The motion of a run in the 3-D view: bodies posed at any time by interpolating the recorded
 // poses (linear in position, slerp in rotation; exact at the recorded times), body frames, joint
-// axes, massless links, springs as coils, and on request each body's ω and H, a body's
-// trajectory, applied loads and joint reactions as arrows scaled with a legend. Mode shapes
-// animate in the same view.
+// axes, massless links, springs as coils and dampers as dashpots, and on request each body's ω
+// and H, a body's trajectory, applied loads and joint reactions as arrows scaled with a legend.
+// Mode shapes animate in the same view.
 
 import * as THREE from 'three';
 import { decode, element, formatNumber } from './data.js';
@@ -159,12 +159,22 @@ export class Motion {
       const taper = s < 0.05 || s > 0.95 ? 0 : 1;
       coil.push(new THREE.Vector3(taper * Math.cos(a), taper * Math.sin(a), s));
     }
+    // A linear spring-damper: a coil where it has stiffness, a dashpot (housing and rod) inside
+    // it where it has damping; drawn from a to b in a frame scaled to their distance.
+    const coilMaterial = new THREE.LineBasicMaterial({ color: 0x8c564b });
+    const dashpotMaterial = new THREE.MeshStandardMaterial({ color: 0x7f7f7f, roughness: 0.5 });
+    const housing = new THREE.CylinderGeometry(0.45, 0.45, 0.55, 16).rotateX(Math.PI / 2).translate(0, 0, 0.325);
+    const rod = new THREE.CylinderGeometry(0.12, 0.12, 0.45, 8).rotateX(Math.PI / 2).translate(0, 0, 0.725);
     this.springs = this.scene.elements.filter((e) => e.type === 'spring').map((e) => {
-      const line = new THREE.Line(new THREE.BufferGeometry().setFromPoints(coil),
-        new THREE.LineBasicMaterial({ color: 0x8c564b }));
-      line.frustumCulled = false;
-      this.viewer.scene.add(line);
-      return { e, line, a: this.bodies.findIndex((b) => b.name === e.a), b: this.bodies.findIndex((b) => b.name === e.b) };
+      const object = new THREE.Group();
+      if (e.stiffness > 0 || !(e.damping > 0)) {
+        const line = new THREE.Line(new THREE.BufferGeometry().setFromPoints(coil), coilMaterial);
+        line.frustumCulled = false;
+        object.add(line);
+      }
+      if (e.damping > 0) object.add(new THREE.Mesh(housing, dashpotMaterial), new THREE.Mesh(rod, dashpotMaterial));
+      this.viewer.scene.add(object);
+      return { e, object, a: this.bodies.findIndex((b) => b.name === e.a), b: this.bodies.findIndex((b) => b.name === e.b) };
     });
   }
 
@@ -254,9 +264,9 @@ export class Motion {
       const b = world(s.b, s.e.pb);
       const d = new THREE.Vector3(b[0] - a[0], b[1] - a[1], b[2] - a[2]);
       const length = Math.max(d.length(), 1e-9);
-      s.line.position.set(...a);
-      s.line.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), d.clone().normalize());
-      s.line.scale.set(0.06 * this.length, 0.06 * this.length, length);
+      s.object.position.set(...a);
+      s.object.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), d.clone().normalize());
+      s.object.scale.set(0.06 * this.length, 0.06 * this.length, length);
     }
     return world;
   }
