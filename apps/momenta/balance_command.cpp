@@ -19,6 +19,7 @@
 #include "momenta/inertia/balancing.hpp"
 #include "momenta/io/yaml_reader.hpp"
 #include "momenta/model/rotor.hpp"
+#include "momenta/report/report.hpp"
 #include "option_checks.hpp"
 #include "output_format.hpp"
 #include "part_input.hpp"
@@ -48,6 +49,8 @@ struct BalanceOptions {
   std::optional<double> grade;
   double gravity = kStandardGravity;
   bool json = false;
+  std::optional<std::string> report;
+  bool force = false;
 };
 
 double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
@@ -152,7 +155,7 @@ Rotor read_rotor(const BalanceOptions& o) {
     return r;
   }
   if (!o.body.empty()) throw CLI::ValidationError("--body", "names a body of a model file");
-  r.part = read_part(o.part, false);
+  r.part = read_part(o.part, o.report.has_value());  // a mesh's triangles, to draw
   r.name = r.part.name;
   r.mass_properties = r.part.total;
   if (!o.axis.empty()) r.axis.direction_B = Vec3(o.axis[0], o.axis[1], o.axis[2]);
@@ -364,6 +367,25 @@ void print_text(const BalanceOptions& o, const Balance& b) {
   }
 }
 
+// The rotor's page: its parts (a model's body as its equivalent ellipsoid) and what was found.
+void write_report(const BalanceOptions& o, const Balance& b) {
+  report::BalanceFindings f;
+  f.axis = b.source.axis;
+  f.unbalance = b.rotor;
+  if (!o.bearings.empty()) f.bearings = std::array<double, 2>{o.bearings[0], o.bearings[1]};
+  f.corrections = b.corrections;
+  f.radius = o.radius;
+  f.remove = o.remove;
+  f.speeds = b.speeds.omega;
+  f.reactions = b.reactions;
+  f.reactions_after = b.reactions_after;
+  f.grade = b.grade;
+  f.grade_after = b.grade_after;
+  const io::CompositePart rotor{b.source.name, b.source.mass_properties, b.source.part.parts};
+  report::write_report(*o.report, report::balance_report_html(rotor, o.part.file, f), o.force);
+  fmt::print(stderr, "momenta: wrote the report {}\n", *o.report);
+}
+
 void run(const BalanceOptions& o) {
   const Balance b = compute(o);
   if (o.json) {
@@ -372,6 +394,7 @@ void run(const BalanceOptions& o) {
     print_text(o, b);
   }
   note_per_unit_density(b.source.part);
+  if (o.report) write_report(o, b);
 }
 
 }  // namespace
@@ -441,6 +464,13 @@ void add_balance_command(CLI::App& app) {
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   command->add_flag("--json", options->json, "Print JSON (SI units, angles in degrees)");
+  command
+      ->add_option("--report", options->report,
+                   "Also write an HTML page: the rotor drawn with its axis, bearings and "
+                   "correction masses, the unbalance, the grade and the bearing forces against "
+                   "speed (docs/balancing.md)")
+      ->check(not_a_folder());
+  command->add_flag("--force", options->force, "Overwrite the --report file if it exists");
   command->footer(
       "Examples:\n"
       "  momenta balance examples/parts/overhung_fan.yaml --bearings 0 0.3 --speed 3000\n"

@@ -8,9 +8,12 @@
 
 namespace momenta::report {
 
-std::string inertia_report_html(const io::CompositePart& part, const std::string& source,
-                                const std::optional<Vec3>& about) {
-  using detail::json;
+namespace {
+
+using detail::json;
+
+json part_page_data(const io::CompositePart& part, const std::string& source,
+                    const std::optional<Vec3>& about) {
   const inertia::MassProperties& total = part.total;
   const inertia::PrincipalAxes axes = total.principal_axes();
   json parts = json::array();
@@ -34,7 +37,71 @@ std::string inertia_report_html(const io::CompositePart& part, const std::string
     data["about"] = detail::vec_json(*about);
     data["inertia_about"] = detail::mat_json(total.inertia_about(*about));
   }
-  return detail::html_page(fmt::format("{} — momenta mass properties", part.name), data);
+  return data;
+}
+
+json vec2_json(const Vec2& v) { return json::array({v.x(), v.y()}); }
+
+json grade_json(const inertia::GradeCheck& g) {
+  return {{"grade", g.grade},
+          {"omega", g.omega},
+          {"permissible", g.permissible},
+          {"plane_A", vec2_json(g.plane_A)},
+          {"plane_B", vec2_json(g.plane_B)},
+          {"permissible_A", g.permissible_A},
+          {"permissible_B", g.permissible_B},
+          {"overhung", g.overhung},
+          {"pass", g.pass}};
+}
+
+json balance_json(const BalanceFindings& f) {
+  const inertia::Unbalance& u = f.unbalance;
+  json corrections = json::array();
+  for (const auto& c : f.corrections) {
+    corrections.push_back({{"z", c.z}, {"mass_radius", vec2_json(c.mass_radius)}});
+  }
+  json reactions = json::array();
+  for (std::size_t k = 0; k < f.speeds.size(); ++k) {
+    json row = {{"omega", f.speeds[k]},
+                {"A", vec2_json(f.reactions[k].A)},
+                {"B", vec2_json(f.reactions[k].B)}};
+    if (k < f.reactions_after.size()) {
+      row["A_after"] = vec2_json(f.reactions_after[k].A);
+      row["B_after"] = vec2_json(f.reactions_after[k].B);
+    }
+    reactions.push_back(std::move(row));
+  }
+  json j = {{"through", detail::vec_json(f.axis.p_BoAo_B)},
+            {"R_BR", detail::mat_json(u.R_BR)},
+            {"mass", u.mass},
+            {"axial_com", u.axial_com},
+            {"eccentricity", u.eccentricity},
+            {"static_unbalance", vec2_json(u.static_unbalance)},
+            {"couple_unbalance", vec2_json(u.couple_unbalance)},
+            {"principal_axis_tilt", u.principal_axis_tilt},
+            {"corrections", std::move(corrections)},
+            {"radius", f.radius ? json(*f.radius) : json(nullptr)},
+            {"remove", f.remove},
+            {"reactions", std::move(reactions)}};
+  if (f.bearings) j["bearings"] = {(*f.bearings)[0], (*f.bearings)[1]};
+  if (f.grade) j["grade"] = grade_json(*f.grade);
+  if (f.grade_after) j["grade_after"] = grade_json(*f.grade_after);
+  return j;
+}
+
+}  // namespace
+
+std::string inertia_report_html(const io::CompositePart& part, const std::string& source,
+                                const std::optional<Vec3>& about) {
+  return detail::html_page(fmt::format("{} — momenta mass properties", part.name),
+                           part_page_data(part, source, about));
+}
+
+std::string balance_report_html(const io::CompositePart& rotor, const std::string& source,
+                                const BalanceFindings& findings) {
+  json data = part_page_data(rotor, source, std::nullopt);
+  data["balance"] = balance_json(findings);
+  return detail::html_page(fmt::format("{} — momenta balancing", rotor.name), data);
 }
 
 }  // namespace momenta::report

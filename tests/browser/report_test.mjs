@@ -227,4 +227,29 @@ test('mass properties page of a mesh and of a part file with a hole', async () =
   }
 });
 
+test('balancing page: the rotor with its axis, bearings and correction masses, the verdicts', async () => {
+  const file = path.join(work, 'balance.html');
+  const args = [path.join(examples, 'parts', 'two_disk_shaft.yaml'), '--bearings', '0', '1', '--speed', '3000',
+    '--speed-range', '0', '3000', '--planes', '0.25', '0.75', '--radius', '0.15', '--grade', '2.5'];
+  const expected = JSON.parse(run('balance', ...args, '--json'));
+  run('balance', ...args, '--report', file);
+  const { page, problems } = await open(file);
+  await firstFrame(page);
+  const shown = await page.evaluate(() => document.getElementById('balance').innerText);
+  // The correction gives back the file's 12 g and 8 g; the grade fails before and passes after.
+  assert.match(shown, /12 g/);
+  assert.match(shown, /8 g/);
+  assert.match(shown, /Balance grade: FAIL/);
+  assert.match(shown, /After the correction: PASS/);
+  const balance = await page.evaluate(() => window.momentaReport.balance());
+  assert.deepEqual(balance.static_unbalance, [expected.unbalance.static_unbalance.x, expected.unbalance.static_unbalance.y]);
+  assert.equal(balance.reactions.length, expected.reactions.length);
+  const digest = await canvasDigest(page);
+  assert.ok(digest.colours > 20, 'blank view');
+  await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+  await page.screenshot({ path: path.join(artifacts, 'balance-page.png'), fullPage: true });
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
 after(() => fs.writeFileSync(path.join(artifacts, 'measured.json'), JSON.stringify(measured, null, 2)));

@@ -4,6 +4,7 @@
 
 import * as THREE from 'three';
 import { element, formatNumber, table } from './data.js';
+import { chart } from './plots.js';
 import { bodyColor, equivalentMesh, partMesh } from './shapes.js';
 import { Viewer } from './viewer.js';
 
@@ -50,5 +51,98 @@ export function inertiaPage(app, data) {
   facts.append(element('h3', {}, 'Parts'), table(['part', 'kind', 'line', 'mass (kg)', 'centre of mass (m)', ''],
     data.parts.map((p) => [p.name, p.kind, p.line, formatNumber(p.mass), `[${p.com.map((x) => formatNumber(x, 5)).join(', ')}]`, p.hole ? 'hole' : ''])));
   app.append(facts);
-  return { kind: 'inertia', framesDrawn: () => frames, ready: true };
+  if (data.balance) app.append(balanceSection(data.balance, viewer, extent));
+  return { kind: 'inertia', framesDrawn: () => frames, balance: () => data.balance, ready: true };
+}
+
+// --- Balancing (momenta balance --report) ------------------------------------------------------
+
+const RPM = (2 * Math.PI) / 60;
+const degrees = (v) => (Math.atan2(v[1], v[0]) * 180) / Math.PI;
+const amplitude = (v) => Math.hypot(v[0], v[1]);
+
+// A point of the rotor's axis frame R (z along the axis from the axis point) in the part frame B.
+function inPart(b, x, y, z) {
+  const R = b.R_BR;
+  return [0, 1, 2].map((i) => b.through[i] + R[3 * i] * x + R[3 * i + 1] * y + R[3 * i + 2] * z);
+}
+
+function rotating(v, unit) {
+  return amplitude(v) === 0 ? `0 ${unit}` : `${formatNumber(amplitude(v), 6)} ${unit} at ${formatNumber(degrees(v), 4)}°`;
+}
+
+// The axis through the bearings, the bearing planes as rings and the correction masses as
+// spheres at their radius and angle, in the 3-D view.
+function drawBalance(b, viewer, extent) {
+  const planes = [...(b.bearings || []), ...b.corrections.map((c) => c.z), b.axial_com];
+  const lo = Math.min(...planes) - 0.2 * extent;
+  const hi = Math.max(...planes) + 0.2 * extent;
+  const axis = new THREE.BufferGeometry().setFromPoints([new THREE.Vector3(...inPart(b, 0, 0, lo)), new THREE.Vector3(...inPart(b, 0, 0, hi))]);
+  viewer.scene.add(new THREE.Line(axis, new THREE.LineDashedMaterial({ color: 0x444444, dashSize: 0.05 * extent, gapSize: 0.03 * extent })).computeLineDistances());
+  const ring = (z, color) => {
+    const points = [];
+    for (let k = 0; k <= 48; k++) {
+      const a = (2 * Math.PI * k) / 48;
+      points.push(new THREE.Vector3(...inPart(b, 0.35 * extent * Math.cos(a), 0.35 * extent * Math.sin(a), z)));
+    }
+    viewer.scene.add(new THREE.Line(new THREE.BufferGeometry().setFromPoints(points), new THREE.LineBasicMaterial({ color })));
+  };
+  (b.bearings || []).forEach((z) => ring(z, 0x1f77b4));
+  for (const c of b.corrections) {
+    const r = b.radius || 0.3 * extent;
+    const sign = b.remove ? -1 : 1;
+    const a = Math.atan2(sign * c.mass_radius[1], sign * c.mass_radius[0]);
+    const sphere = new THREE.Mesh(new THREE.SphereGeometry(0.04 * extent, 16, 8), new THREE.MeshBasicMaterial({ color: b.remove ? 0x555555 : 0xd62728 }));
+    sphere.position.set(...inPart(b, r * Math.cos(a), r * Math.sin(a), c.z));
+    viewer.scene.add(sphere);
+    ring(c.z, 0xd62728);
+  }
+}
+
+function gradeTable(g, title) {
+  const verdict = (ok) => (ok ? 'ok' : 'over');
+  return element('div', {}, element('h3', {}, `${title}: ${g.pass ? 'PASS' : 'FAIL'}`),
+    element('p', {}, `G ${formatNumber(g.grade, 4)} mm/s at ${formatNumber(g.omega / RPM, 6)} rev/min: U_per = ${formatNumber(g.permissible, 6)} kg·m${g.overhung ? ' (overhung rotor: U_per/2 allowed per plane)' : ''}.`),
+    table(['plane', 'residual unbalance', 'allowed (kg·m)', ''], [
+      ['A', rotating(g.plane_A, 'kg·m'), formatNumber(g.permissible_A, 6), verdict(amplitude(g.plane_A) <= g.permissible_A)],
+      ['B', rotating(g.plane_B, 'kg·m'), formatNumber(g.permissible_B, 6), verdict(amplitude(g.plane_B) <= g.permissible_B)]]));
+}
+
+export function balanceSection(b, viewer, extent) {
+  drawBalance(b, viewer, extent);
+  const section = element('section', { id: 'balance' }, element('h2', {}, 'Balancing'),
+    element('p', { class: 'note' }, 'Angles in the rotor, from x_R towards y_R; axial positions z along the axis. Dashed: the axis; blue rings: bearings; red: correction planes and masses (grey: mass to remove).'),
+    element('dl', { class: 'facts' },
+      element('dt', {}, 'eccentricity'), element('dd', {}, `${formatNumber(b.eccentricity, 6)} m (centre of mass at z = ${formatNumber(b.axial_com, 6)} m)`),
+      element('dt', {}, 'static unbalance'), element('dd', {}, rotating(b.static_unbalance, 'kg·m')),
+      element('dt', {}, 'couple unbalance'), element('dd', {}, rotating(b.couple_unbalance, 'kg·m²')),
+      element('dt', {}, 'principal axis tilt'), element('dd', {}, `${formatNumber(b.principal_axis_tilt, 6)} rad`)));
+  if (b.corrections.length) {
+    section.append(element('h3', {}, `${b.corrections.length === 2 ? 'Two' : 'Single'}-plane correction (${b.remove ? 'remove' : 'add'})`),
+      table(['plane z (m)', 'm·r (kg·m)', 'angle', b.radius ? `mass at r = ${formatNumber(b.radius, 4)} m` : ''],
+        b.corrections.map((c) => {
+          const v = b.remove ? c.mass_radius.map((x) => -x) : c.mass_radius;
+          return [formatNumber(c.z, 6), formatNumber(amplitude(v), 6), `${formatNumber(degrees(v), 4)}°`,
+            b.radius ? `${formatNumber((1000 * amplitude(v)) / b.radius, 6)} g` : ''];
+        })));
+  }
+  if (b.grade) section.append(gradeTable(b.grade, 'Balance grade'));
+  if (b.grade_after) section.append(gradeTable(b.grade_after, 'After the correction'));
+  if (b.reactions.length > 1) {
+    const rows = [...b.reactions].sort((p, q) => p.omega - q.omega);
+    const holder = element('div', { class: 'plot' });
+    section.append(element('div', { class: 'plot-grid' }, holder));
+    const series = [{ name: '|A| (N)', data: rows.map((r) => amplitude(r.A)) },
+      { name: '|B| (N)', data: rows.map((r) => amplitude(r.B)) }];
+    if (rows[0].A_after) {
+      series.push({ name: '|A| after (N)', data: rows.map((r) => amplitude(r.A_after)) },
+        { name: '|B| after (N)', data: rows.map((r) => amplitude(r.B_after)) });
+    }
+    requestAnimationFrame(() => chart(holder, { title: 'Bearing forces against speed', xLabel: 'rev/min', yLabel: 'N',
+      x: rows.map((r) => r.omega / RPM), series }));
+  } else if (b.reactions.length === 1) {
+    const r = b.reactions[0];
+    section.append(element('p', {}, `At ${formatNumber(r.omega / RPM, 6)} rev/min the bearings push with A ${rotating(r.A, 'N')} and B ${rotating(r.B, 'N')}, turning with the rotor.`));
+  }
+  return section;
 }

@@ -4,11 +4,13 @@
 // analysis, the conservation audit — or a part's mass properties. The page's front-end lives in
 // web/ and is embedded in the library at build time. What each panel shows: docs/report.md.
 
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "momenta/inertia/balancing.hpp"
 #include "momenta/io/model_file.hpp"
 #include "momenta/io/part_file.hpp"
 #include "momenta/math/types.hpp"
@@ -60,6 +62,25 @@ std::string simulation_report_html(const SimulationRun& run, const LinearSetting
 /// (in the part's frame, m). `source` names the file.
 std::string inertia_report_html(const io::CompositePart& part, const std::string& source,
                                 const std::optional<Vec3>& about = std::nullopt);
+
+/// What `momenta balance` found, for its page.
+struct BalanceFindings {
+  inertia::RotorAxis axis;
+  inertia::Unbalance unbalance;
+  std::optional<std::array<double, 2>> bearings;  ///< z_A, z_B, m
+  std::vector<inertia::CorrectionMass> corrections;
+  std::optional<double> radius;  ///< of the correction masses, m
+  bool remove = false;           ///< corrections drilled out (opposite) rather than added
+  std::vector<double> speeds;    ///< rad/s, with the reactions at each (before, after)
+  std::vector<inertia::BearingReactions> reactions, reactions_after;
+  std::optional<inertia::GradeCheck> grade, grade_after;
+};
+
+/// The rotor's page: the mass-properties page of the part with the rotation axis, the bearing
+/// planes and the correction masses drawn, and a balancing section — the unbalance, the
+/// corrections, the grade verdict and the bearing forces against speed.
+std::string balance_report_html(const io::CompositePart& rotor, const std::string& source,
+                                const BalanceFindings& findings);
 
 /// Writes `html` to `path`. An existing file is kept (FileError naming it and --force) unless
 /// `overwrite`; a failed write leaves no partial file (written to a temporary name, then renamed).
