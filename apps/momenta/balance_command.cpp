@@ -82,19 +82,17 @@ Placement place(const inertia::CorrectionMass& c, const BalanceOptions& o) {
   return p;
 }
 
-struct Speeds {
-  std::vector<double> omega;  // rad/s
-};
-Speeds speeds_of(const BalanceOptions& o) {
-  Speeds s;
-  if (o.speed_rpm) s.omega.push_back(*o.speed_rpm * kRpm);
+// The speeds to tabulate, rad/s: --speed, then the --speed-range rows.
+std::vector<double> speeds_of(const BalanceOptions& o) {
+  std::vector<double> omega;
+  if (o.speed_rpm) omega.push_back(*o.speed_rpm * kRpm);
   if (!o.speed_range.empty()) {
     const double a = o.speed_range[0] * kRpm, b = o.speed_range[1] * kRpm;
     for (int k = 0; k < o.points; ++k) {
-      s.omega.push_back(o.points == 1 ? a : a + (b - a) * k / (o.points - 1));
+      omega.push_back(o.points == 1 ? a : a + (b - a) * k / (o.points - 1));
     }
   }
-  return s;
+  return omega;
 }
 
 void check_options(const BalanceOptions& o) {
@@ -169,7 +167,7 @@ struct Balance {
   Unbalance rotor;
   std::vector<inertia::CorrectionMass> corrections;
   std::optional<Unbalance> corrected;
-  Speeds speeds;
+  std::vector<double> speeds;  // rad/s
   std::vector<inertia::BearingReactions> reactions, reactions_after;
   std::optional<Vec2> static_loads;
   std::optional<inertia::GradeCheck> grade, grade_after;
@@ -190,7 +188,7 @@ Balance compute(const BalanceOptions& o) {
   b.speeds = speeds_of(o);
   if (!o.bearings.empty()) {
     const double zA = o.bearings[0], zB = o.bearings[1];
-    for (double w : b.speeds.omega) {
+    for (double w : b.speeds) {
       b.reactions.push_back(inertia::bearing_reactions(b.rotor, zA, zB, w, o.alpha));
       if (b.corrected) {
         b.reactions_after.push_back(inertia::bearing_reactions(*b.corrected, zA, zB, w, o.alpha));
@@ -243,8 +241,8 @@ void print_json(const BalanceOptions& o, const Balance& b) {
   if (!b.reactions.empty()) {
     json rows = json::array();
     for (std::size_t k = 0; k < b.reactions.size(); ++k) {
-      json row = {{"omega", b.speeds.omega[k]},
-                  {"rpm", b.speeds.omega[k] / kRpm},
+      json row = {{"omega", b.speeds[k]},
+                  {"rpm", b.speeds[k] / kRpm},
                   {"A", rotating_json(b.reactions[k].A)},
                   {"B", rotating_json(b.reactions[k].B)},
                   {"drive_torque", b.reactions[k].drive_torque}};
@@ -328,9 +326,9 @@ void print_text(const BalanceOptions& o, const Balance& b) {
     fmt::print("  {:>10} {:>12}  {:<30} {:<30}{}\n", "rev/min", "ω rad/s", "A", "B",
                after ? "  |A|, |B| after correction N" : "");
     for (std::size_t k = 0; k < b.reactions.size(); ++k) {
-      const double F_floor = U_floor * std::max(1.0, b.speeds.omega[k] * b.speeds.omega[k]);
-      fmt::print("  {:>10.6g} {:>12.6g}  {:<30} {:<30}", b.speeds.omega[k] / kRpm,
-                 b.speeds.omega[k], rotating_text(b.reactions[k].A, "N", F_floor),
+      const double F_floor = U_floor * std::max(1.0, b.speeds[k] * b.speeds[k]);
+      fmt::print("  {:>10.6g} {:>12.6g}  {:<30} {:<30}", b.speeds[k] / kRpm, b.speeds[k],
+                 rotating_text(b.reactions[k].A, "N", F_floor),
                  rotating_text(b.reactions[k].B, "N", F_floor));
       if (after) {
         fmt::print("  {:.3g}, {:.3g}", b.reactions_after[k].A.norm(),
@@ -376,7 +374,7 @@ void write_report(const BalanceOptions& o, const Balance& b) {
   f.corrections = b.corrections;
   f.radius = o.radius;
   f.remove = o.remove;
-  f.speeds = b.speeds.omega;
+  f.speeds = b.speeds;
   f.reactions = b.reactions;
   f.reactions_after = b.reactions_after;
   f.grade = b.grade;

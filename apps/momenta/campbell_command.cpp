@@ -3,11 +3,7 @@
 // critical speeds where a forward whirl crosses the 1× line. Calls momenta::analysis
 // (steady_motion.hpp); documented in docs/cli.md and docs/analysis.md.
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -69,9 +65,7 @@ void run(const CampbellOptions& o) {
   if (!(o.speed_range[0] > 0.0) || !(o.speed_range[1] > o.speed_range[0])) {
     throw CLI::ValidationError("--speed-range", "expects 0 < A < B (rev/min)");
   }
-  if (o.csv && *o.csv != "-" && std::filesystem::exists(*o.csv) && !o.force) {
-    throw FileError(fmt::format("--csv {}: the file exists; pass --force to overwrite it", *o.csv));
-  }
+  check_csv_target(o.csv, o.force);
   const io::ModelFile file = frontend::load_model(o.model);
   const analysis::SpinningBody body =
       analysis::spinning_body(file.model, analysis::initial_operating_point(file.model));
@@ -100,15 +94,7 @@ void run(const CampbellOptions& o) {
     return;
   }
   const std::string csv = csv_text(d);
-  if (o.csv && *o.csv == "-") {
-    fmt::print("{}", csv);
-    return;
-  }
-  if (o.csv) {
-    std::ofstream out(*o.csv, std::ios::binary);
-    if (!out) throw FileError(fmt::format("--csv {}: cannot write the file", *o.csv));
-    out << csv;
-  }
+  if (emit_csv(o.csv, csv)) return;
   fmt::print("{}: Campbell diagram of body '{}' ({} speeds), whirl frequencies seen from space\n\n",
              file.name, body.body, d.points.size());
   const std::vector<std::string> names = whirl_names(d.points.front());

@@ -3,12 +3,14 @@
 // number, got 1e400" rather than CLI11's bounds written out to 309 digits. A failed check is a
 // usage error (exit 2).
 
+#include <numbers>
+
 #include <CLI/CLI.hpp>
 
 namespace momenta::cli {
 
 /// Speeds on the command line are in rev/min (as rotor engineers give them): rad/s per rev/min.
-inline constexpr double kRpm = 2.0 * 3.14159265358979323846 / 60.0;
+inline constexpr double kRpm = 2.0 * std::numbers::pi / 60.0;
 
 /// A finite number > 0 (a duration, a step, a tolerance, a density).
 CLI::Validator positive_finite();

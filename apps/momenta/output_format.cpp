@@ -1,8 +1,12 @@
 #include "output_format.hpp"
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 
 #include <fmt/format.h>
+
+#include "momenta/common/error.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -71,6 +75,24 @@ std::string json_text(const json& j, ListSpacing lists) {
 
 std::string vec_text(const Vec3& v) {
   return fmt::format("[{:.6g}, {:.6g}, {:.6g}]", v.x(), v.y(), v.z());
+}
+
+void check_csv_target(const std::optional<std::string>& csv, bool force) {
+  if (csv && *csv != "-" && std::filesystem::exists(*csv) && !force) {
+    throw FileError(fmt::format("--csv {}: the file exists; pass --force to overwrite it", *csv));
+  }
+}
+
+bool emit_csv(const std::optional<std::string>& csv, const std::string& text) {
+  if (!csv) return false;
+  if (*csv == "-") {
+    fmt::print("{}", text);
+    return true;
+  }
+  std::ofstream out(*csv, std::ios::binary);
+  if (!out) throw FileError(fmt::format("--csv {}: cannot write the file", *csv));
+  out << text;
+  return false;
 }
 
 }  // namespace momenta::cli

@@ -2,6 +2,7 @@
 // How the subcommands print numbers, shared so that one layout serves them all: JSON with every
 // list of numbers (a vector, a matrix row) on one line, matrices as JSON rows, vectors as text.
 
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -25,5 +26,13 @@ std::string json_text(const nlohmann::ordered_json& j, ListSpacing lists = ListS
 
 /// "[x, y, z]", 6 significant digits.
 std::string vec_text(const Vec3& v);
+
+/// `--csv FILE` of a command that prints a summary otherwise: throws FileError, naming --force,
+/// when FILE exists and may not be overwritten — before any work is done. "-" is stdout.
+void check_csv_target(const std::optional<std::string>& csv, bool force);
+
+/// Writes `text` where `--csv` says: to stdout for "-" (then returns true: the summary is not
+/// printed), or to the file (FileError when it cannot be written). Nothing without --csv.
+bool emit_csv(const std::optional<std::string>& csv, const std::string& text);
 
 }  // namespace momenta::cli

@@ -4,9 +4,6 @@
 // (--json, full precision). Calls momenta::analysis; documented in docs/cli.md.
 
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <memory>
 #include <numbers>
 #include <optional>
@@ -74,9 +71,7 @@ json step_info_json(const analysis::StepInfo& info) {
 }
 
 void run(const ResponseOptions& o) {
-  if (o.csv && *o.csv != "-" && std::filesystem::exists(*o.csv) && !o.force) {
-    throw FileError(fmt::format("--csv {}: the file exists; pass --force to overwrite it", *o.csv));
-  }
+  check_csv_target(o.csv, o.force);
   LinearModelOptions model = o.model;
   model.inputs = {o.input};
   model.outputs = {o.output};
@@ -148,15 +143,7 @@ void run(const ResponseOptions& o) {
     fmt::print("{}\n", json_text(j, ListSpacing::spaced));
     return;
   }
-  if (o.csv && *o.csv == "-") {
-    fmt::print("{}", csv);
-    return;
-  }
-  if (o.csv) {
-    std::ofstream out(*o.csv, std::ios::binary);
-    if (!out) throw FileError(fmt::format("--csv {}: cannot write the file", *o.csv));
-    out << csv;
-  }
+  if (emit_csv(o.csv, csv)) return;
   fmt::print("{}: {} → {}, linearized about {}\n", loaded.file.name, o.input, o.output,
              loaded.about);
   fmt::print("G(s) = K ∏(s − z)/∏(s − p): K = {}, relative degree {}\n",

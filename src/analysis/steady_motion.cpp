@@ -62,10 +62,8 @@ std::string free_body_verdict(const SpinningBody& b, bool stable, double growth)
 std::string fixed_point_verdict(const SpinningBody& b, bool stable, double growth) {
   const double lever = b.p_OBcm_B.dot(b.up_B);  // > 0: centre of mass above the fixed point
   const Vec3 e = b.w_B.norm() > 0 ? Vec3(b.w_B.normalized()) : b.up_B;
-  const double I1 = [&] {
-    const auto [e1, e2] = transverse_basis(e);
-    return e1.dot(b.I_B * e1);
-  }();
+  const Vec3 e1 = transverse_basis(e).first;
+  const double I1 = e1.dot(b.I_B * e1);
   const double I3 = e.dot(b.I_B * e);
   const double mgl = b.mass * b.g * lever;
   if (lever > 0.0 && mgl > 0.0) {
@@ -295,9 +293,8 @@ CampbellDiagram campbell_diagram(const SpinningBody& b, double from, double to, 
   // Critical speeds: a sign change of (frequency − Ω) of the same whirl between two speeds.
   for (std::size_t k = 1; k < d.points.size(); ++k) {
     const CampbellPoint &a = d.points[k - 1], &c = d.points[k];
-    const std::size_t n = std::min(a.frequencies.size(), c.frequencies.size());
     if (a.frequencies.size() != c.frequencies.size()) continue;
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < a.frequencies.size(); ++i) {
       const double fa = a.frequencies[i] - a.speed, fc = c.frequencies[i] - c.speed;
       // An unbalance turns with the rotor: it drives forward whirl at 1×, so only forward whirls
       // have critical speeds here.
