@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "linear_model_options.hpp"
+#include "momenta/analysis/joint_steady_motion.hpp"
 #include "momenta/analysis/steady_motion.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
@@ -67,14 +68,13 @@ void run(const CampbellOptions& o) {
   }
   check_csv_target(o.csv, o.force);
   const io::ModelFile file = frontend::load_model(o.model);
-  const analysis::SpinningBody body =
-      analysis::spinning_body(file.model, analysis::initial_operating_point(file.model));
-  const analysis::CampbellDiagram d =
-      analysis::campbell_diagram(body, o.speed_range[0] * kRpm, o.speed_range[1] * kRpm, o.points);
+  const analysis::RotorCampbell rotor = analysis::model_campbell_diagram(
+      file.model, o.speed_range[0] * kRpm, o.speed_range[1] * kRpm, o.points);
+  const analysis::CampbellDiagram& d = rotor.diagram;
   if (o.json) {
     json j;
     j["model"] = file.name;
-    j["body"] = body.body;
+    j[rotor.joint_coordinates ? "turning" : "body"] = rotor.rotor;
     json points = json::array();
     for (const analysis::CampbellPoint& p : d.points) {
       points.push_back({{"speed_rad_s", p.speed},
@@ -95,8 +95,16 @@ void run(const CampbellOptions& o) {
   }
   const std::string csv = csv_text(d);
   if (emit_csv(o.csv, csv)) return;
-  fmt::print("{}: Campbell diagram of body '{}' ({} speeds), whirl frequencies seen from space\n\n",
-             file.name, body.body, d.points.size());
+  if (rotor.joint_coordinates) {
+    fmt::print(
+        "{}: Campbell diagram of the rotor turning on {} ({} speeds), whirl frequencies in the "
+        "joints' frames\n\n",
+        file.name, rotor.rotor, d.points.size());
+  } else {
+    fmt::print(
+        "{}: Campbell diagram of body '{}' ({} speeds), whirl frequencies seen from space\n\n",
+        file.name, rotor.rotor, d.points.size());
+  }
   const std::vector<std::string> names = whirl_names(d.points.front());
   fmt::print("  {:>10} {:>12}", "rev/min", "Ω rad/s");
   for (const std::string& n : names) fmt::print(" {:>14}", n);
@@ -128,12 +136,13 @@ void add_campbell_command(CLI::App& app) {
   auto options = std::make_shared<CampbellOptions>();
   CLI::App* command = app.add_subcommand(
       "campbell",
-      "Campbell diagram of a spinning body: its whirl frequencies (forward and backward, seen "
-      "from space) against the spin speed, and the critical speeds");
+      "Campbell diagram of a rotor: its whirl frequencies (forward and backward) against the "
+      "spin speed, and the critical speeds");
   command
       ->add_option("MODEL", options->model,
-                   "A model file: one body on a spherical or free "
-                   "joint, spinning about its axis of symmetry")
+                   "A model file: one body on a spherical or free joint, spinning about its "
+                   "axis of symmetry, or a rotor turning on its joint (a steady motion in joint "
+                   "coordinates)")
       ->required();
   command->add_option("--speed-range", options->speed_range, "From A to B rev/min")
       ->expected(2)
@@ -151,8 +160,10 @@ void add_campbell_command(CLI::App& app) {
   command->footer(
       "Example:\n"
       "  momenta campbell examples/sleeping_top.yaml --speed-range 2000 6000\n"
-      "The body's initial state sets the spin axis (a steady motion: along the vertical for a "
-      "top); its spin is scaled to each speed (docs/analysis.md).");
+      "  momenta campbell examples/rotor_on_bearings.yaml --speed-range 500 4000\n"
+      "The initial state sets the spin (a steady motion: along the vertical for a top; the "
+      "turning joint's v0 for a rotor in joint coordinates); it is scaled to each speed "
+      "(docs/analysis.md).");
   command->callback([options] { run(*options); });
 }
 

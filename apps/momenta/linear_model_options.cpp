@@ -72,8 +72,9 @@ void add_linear_model_options(CLI::App* command, LinearModelOptions& o, bool wit
   command
       ->add_option("--about", o.about,
                    "Operating point: 'initial' (the file's initial state), 'equilibrium' (the "
-                   "static equilibrium Newton finds from it), 'steady' (a spinning body's steady "
-                   "motion at its initial state: modes and linearize) or a STATE.json file "
+                   "static equilibrium Newton finds from it), 'steady' (the steady motion at "
+                   "the initial state: of one spinning body on a ball or free joint, or of a "
+                   "rotor turning on its joint, its angle left out) or a STATE.json file "
                    "{\"q\": [...], \"v\": [...], \"t\": 0}")
       ->capture_default_str();
   if (with_channels) {
@@ -91,19 +92,33 @@ void add_linear_model_options(CLI::App* command, LinearModelOptions& o, bool wit
 }
 
 LoadedLinearModel load_linear_model(const LinearModelOptions& o) {
-  if (o.about == "steady") {
-    throw CLI::ValidationError(
-        "--about",
-        "steady: the steady-motion analysis has no inputs or outputs; use `momenta "
-        "modes` or `momenta linearize` with it");
-  }
-  LoadedLinearModel r{frontend::load_model(o.model), {}, {}};
+  LoadedLinearModel r{frontend::load_model(o.model), {}, {}, std::nullopt};
   const model::Model& model = r.file.model;
   analysis::LinearizationOptions options;
   options.inputs = o.inputs;
   options.outputs = o.outputs;
   options.output_specs = r.file.outputs;
   analysis::OperatingPoint point;
+  if (o.about == "steady") {
+    if (analysis::euler_poisson_applies(model)) {
+      throw CLI::ValidationError(
+          "--about",
+          "steady: a body spinning on a ball or free joint is analysed in Euler–Poisson "
+          "variables, which have no inputs or outputs (`momenta modes` and `momenta linearize` "
+          "show them); for a response, hold the rotor by a universal joint and a revolute spin "
+          "joint (examples/rotor_on_bearings.yaml)");
+    }
+    r.steady =
+        analysis::joint_steady_motion(model, analysis::initial_operating_point(model), options);
+    r.linear = r.steady->full;
+    r.linear.system = r.steady->reduced;
+    r.about = fmt::format(
+        "the steady motion: {} turning at {:.6g}, the turning position{} left out (residual "
+        "{:.2g}, cyclic to {:.2g})",
+        fmt::join(r.steady->turning_names, ", "), r.steady->speed,
+        r.steady->turning.size() == 1 ? "" : "s", r.steady->residual, r.steady->cyclic_residual);
+    return r;
+  }
   if (o.about == "initial") {
     point = analysis::initial_operating_point(model);
     r.about = "the initial state";
@@ -271,7 +286,40 @@ json steady_motion_json(const LoadedSteadyMotion& s) {
 
 }  // namespace
 
-void print_steady_motion(const LinearModelOptions& options, bool json, bool with_matrix) {
+void print_whirls(const analysis::JointSteadyMotion& steady) {
+  const Vec3& n = steady.spin_axis_W;
+  fmt::print(
+      "\nwhirl of each oscillation about the spin axis [{:.6g}, {:.6g}, {:.6g}] (world), in "
+      "the joints' frames:\n",
+      n.x(), n.y(), n.z());
+  for (const analysis::SteadyMode& mode : steady.modes) {
+    fmt::print("  {:.17g} rad/s ({:.6g} Hz), {}\n", mode.frequency, mode.frequency / (2 * M_PI),
+               mode.whirl == "none" ? std::string("no whirl") : mode.whirl + " whirl");
+  }
+  fmt::print("{}\n", steady.stable ? "stable: no eigenvalue with a positive real part"
+                                   : fmt::format("unstable: perturbations grow like e^({:.6g} t)",
+                                                 steady.growth_rate));
+}
+
+json whirls_json(const analysis::JointSteadyMotion& steady) {
+  json j;
+  j["turning"] = steady.turning_names;
+  j["speed"] = steady.speed;
+  j["spin_axis_W"] = {steady.spin_axis_W.x(), steady.spin_axis_W.y(), steady.spin_axis_W.z()};
+  j["residual"] = steady.residual;
+  j["cyclic_residual"] = steady.cyclic_residual;
+  json modes = json::array();
+  for (const analysis::SteadyMode& mode : steady.modes) {
+    modes.push_back({{"frequency_rad_s", mode.frequency}, {"whirl", mode.whirl}});
+  }
+  j["whirls"] = std::move(modes);
+  j["stable"] = steady.stable;
+  j["growth_rate"] = steady.growth_rate;
+  return j;
+}
+
+bool print_steady_motion(const LinearModelOptions& options, bool json, bool with_matrix) {
+  if (!analysis::euler_poisson_applies(frontend::load_model(options.model).model)) return false;
   const LoadedSteadyMotion steady = load_steady_motion(options);
   if (steady.precession) {
     if (json) {
@@ -279,13 +327,14 @@ void print_steady_motion(const LinearModelOptions& options, bool json, bool with
     } else {
       print_precession_text(steady);
     }
-    return;
+    return true;
   }
   if (json) {
     fmt::print("{}\n", json_text(steady_motion_json(steady)));
   } else {
     print_steady_motion_text(steady, with_matrix);
   }
+  return true;
 }
 
 json complex_json(std::complex<double> z) { return json::array({z.real() + 0.0, z.imag() + 0.0}); }

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "momenta/analysis/equilibrium.hpp"
+#include "momenta/analysis/joint_steady_motion.hpp"
 #include "momenta/analysis/linearize.hpp"
 #include "momenta/analysis/steady_motion.hpp"
 #include "momenta/io/model_file.hpp"
@@ -34,7 +35,10 @@ void add_linear_model_options(CLI::App* command, LinearModelOptions& options, bo
 struct LoadedLinearModel {
   io::ModelFile file;
   analysis::LinearModel linear;
-  std::string about;  // "initial state", "equilibrium", or the state file
+  std::string about;  // "initial state", "equilibrium", "steady motion …" or the state file
+  /// --about steady on a model in joint coordinates: the steady motion; `linear` is its full
+  /// linearization with `system` the reduced one (the turning positions left out).
+  std::optional<analysis::JointSteadyMotion> steady;
 };
 LoadedLinearModel load_linear_model(const LinearModelOptions& options);
 
@@ -49,9 +53,15 @@ struct LoadedSteadyMotion {
 };
 LoadedSteadyMotion load_steady_motion(const LinearModelOptions& options);
 
-/// `modes` and `linearize` with --about steady: loads the steady motion and prints its analysis,
-/// as JSON or as text (with the matrix A when `with_matrix`).
-void print_steady_motion(const LinearModelOptions& options, bool json, bool with_matrix);
+/// `modes` and `linearize` with --about steady on one body on a ball or free joint: loads the
+/// steady motion and prints its analysis in Euler–Poisson variables, as JSON or as text (with the
+/// matrix A when `with_matrix`), and returns true; returns false, printing nothing, for any other
+/// model (a steady motion in joint coordinates: load_linear_model).
+bool print_steady_motion(const LinearModelOptions& options, bool json, bool with_matrix);
+
+/// The whirl of each oscillation of a steady motion in joint coordinates, as text lines and JSON.
+void print_whirls(const analysis::JointSteadyMotion& steady);
+nlohmann::ordered_json whirls_json(const analysis::JointSteadyMotion& steady);
 
 /// JSON of a complex number as [re, im].
 nlohmann::ordered_json complex_json(std::complex<double> z);

@@ -21,7 +21,7 @@ struct LinearizeOptions {
 };
 
 void run(const LinearizeOptions& o) {
-  if (o.model.about == "steady") return print_steady_motion(o.model, o.json, true);
+  if (o.model.about == "steady" && print_steady_motion(o.model, o.json, true)) return;
   const LoadedLinearModel loaded = load_linear_model(o.model);
   const analysis::LinearModel& lin = loaded.linear;
   const analysis::StateSpace& sys = lin.system;
@@ -46,6 +46,7 @@ void run(const LinearizeOptions& o) {
     j["states_shifted"] = lin.states_shifted;
     j["output_values"] = json(std::vector<double>(
         lin.output_values.data(), lin.output_values.data() + lin.output_values.size()));
+    if (loaded.steady) j["steady_motion"] = whirls_json(*loaded.steady);
     fmt::print("{}\n", json_text(j));
     return;
   }

@@ -31,17 +31,21 @@ double hz(double omega) { return omega / (2 * std::numbers::pi); }
 json number(double x) { return std::isfinite(x) ? json(x + 0.0) : json(nullptr); }
 
 void run(const ModesOptions& o) {
-  if (o.model.about == "steady") return print_steady_motion(o.model, o.json, false);
+  if (o.model.about == "steady" && print_steady_motion(o.model, o.json, false)) return;
   const LoadedLinearModel loaded = load_linear_model(o.model);
   const analysis::LinearModel& lin = loaded.linear;
   const analysis::Modes m = analysis::modes(lin.system);
   // Undamped normal modes exist where K is symmetric (a conservative model at an equilibrium).
   std::optional<analysis::NormalModes> normal;
   std::string why_not;
-  try {
-    normal = analysis::undamped_modes(lin);
-  } catch (const InvalidArgument& e) {
-    why_not = e.what();
+  if (loaded.steady) {
+    why_not = "a steady motion: its gyroscopic terms couple the coordinates";
+  } else {
+    try {
+      normal = analysis::undamped_modes(lin);
+    } catch (const InvalidArgument& e) {
+      why_not = e.what();
+    }
   }
   if (o.json) {
     json j;
@@ -61,6 +65,7 @@ void run(const ModesOptions& o) {
                        {"shape", std::move(shape)}});
     }
     j["modes"] = std::move(modes);
+    if (loaded.steady) j["steady_motion"] = whirls_json(*loaded.steady);
     if (normal) {
       j["coordinate_names"] = normal->coordinate_names;
       json nm = json::array();
@@ -131,6 +136,8 @@ void run(const ModesOptions& o) {
                  mode.squared_frequency, mode.natural_frequency, hz(mode.natural_frequency),
                  fmt::join(entries, ", "));
     }
+  } else if (loaded.steady) {
+    print_whirls(*loaded.steady);
   } else {
     fmt::print("\nno undamped normal modes: {}\n", why_not);
   }

@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -234,10 +235,24 @@ void add_run_options(CLI::App* command, SimulateOptions& o) {
 void add_linear_options(CLI::App* command, SimulateOptions& o) {
   command
       ->add_option("--about", o.linear.about,
-                   "The report's linear analysis about 'initial' (the initial state) or "
-                   "'equilibrium' (the static equilibrium Newton finds from it)")
-      ->check(CLI::IsMember({"initial", "equilibrium"}))
+                   "The report's linear analysis about 'initial' (the initial state), "
+                   "'equilibrium' (the static equilibrium Newton finds from it) or 'steady' (a "
+                   "rotor's steady motion in joint coordinates, its turning position left out)")
+      ->check(CLI::IsMember({"initial", "equilibrium", "steady"}))
       ->capture_default_str();
+  command
+      ->add_option_function<std::vector<double>>(
+          "--campbell",
+          [&o](const std::vector<double>& rpm) {
+            if (!(rpm[0] > 0.0) || !(rpm[1] > rpm[0])) {
+              throw CLI::ValidationError("--campbell", "expects 0 < A < B (rev/min)");
+            }
+            o.linear.campbell = std::array<double, 2>{rpm[0] * kRpm, rpm[1] * kRpm};
+          },
+          "Add the rotor's Campbell diagram from A to B rev/min to the report (as `momenta "
+          "campbell`)")
+      ->expected(2)
+      ->check(finite());
   command
       ->add_option("--inputs", o.linear.inputs,
                    "Inputs of the linear analysis, comma-separated (default: every signal)")
@@ -303,6 +318,8 @@ void add_report_command(CLI::App& app) {
       "Examples:\n"
       "  momenta report examples/double_pendulum.yaml -o pendulum.html\n"
       "  momenta report examples/quarter_car.yaml --about equilibrium -o car.html\n"
+      "  momenta report examples/rotor_on_bearings.yaml --about steady --campbell 500 5000 -o "
+      "rotor.html\n"
       "The page opens offline in any browser (docs/report.md).");
   command->callback([options] { run(*options); });
 }

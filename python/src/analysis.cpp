@@ -9,6 +9,7 @@
 #include "model_handle.hpp"
 #include "momenta/analysis/equilibrium.hpp"
 #include "momenta/analysis/frequency_response.hpp"
+#include "momenta/analysis/joint_steady_motion.hpp"
 #include "momenta/analysis/linearize.hpp"
 #include "momenta/analysis/modes.hpp"
 #include "momenta/analysis/state_space.hpp"
@@ -398,6 +399,45 @@ void bind_steady_motion(py::module_& m) {
       "Raises InvalidArgument when the state is not steady or the model not one such body.");
 }
 
+void bind_joint_steady_motion(py::module_& m) {
+  py::class_<SteadyMode>(m, "SteadyMode", "One oscillation of a steady motion.")
+      .def_readonly("eigenvalue", &SteadyMode::eigenvalue, "1/s, imaginary part > 0")
+      .def_readonly("frequency", &SteadyMode::frequency, "rad/s")
+      .def_readonly("whirl", &SteadyMode::whirl, "'forward', 'backward' or 'none'");
+  py::class_<JointSteadyMotion>(m, "JointSteadyMotion",
+                                "A rotor's steady motion in joint coordinates and the linear "
+                                "model about it, its turning positions left out (docs/analysis.md, "
+                                "steady motions).")
+      .def_readonly("turning", &JointSteadyMotion::turning_names, "the turning coordinates")
+      .def_readonly("speed", &JointSteadyMotion::speed, "the first one's rate, rad/s")
+      .def_property_readonly("spin_axis",
+                             [](const JointSteadyMotion& s) { return to_numpy(s.spin_axis_W); })
+      .def_readonly("residual", &JointSteadyMotion::residual)
+      .def_readonly("cyclic_residual", &JointSteadyMotion::cyclic_residual)
+      .def_readonly("full", &JointSteadyMotion::full, "the linearization with every state")
+      .def_readonly("reduced", &JointSteadyMotion::reduced, "without the turning positions")
+      .def_readonly("modes", &JointSteadyMotion::modes, "ascending frequency, with their whirl")
+      .def_readonly("stable", &JointSteadyMotion::stable)
+      .def_readonly("growth_rate", &JointSteadyMotion::growth_rate, "1/s");
+  m.def(
+      "joint_steady_motion",
+      [](const ModelHandle& h, std::vector<std::string> inputs, std::vector<std::string> outputs,
+         const py::object& q, const py::object& v, double t) {
+        LinearizationOptions options;
+        options.inputs = std::move(inputs);
+        options.outputs = std::move(outputs);
+        options.output_specs = h.file->outputs;
+        return joint_steady_motion(h.model(), point_of(h, q, v, t), options);
+      },
+      py::arg("model"), py::kw_only(), py::arg("inputs") = std::vector<std::string>{},
+      py::arg("outputs") = std::vector<std::string>{}, py::arg("q") = py::none(),
+      py::arg("v") = py::none(), py::arg("t") = 0.0,
+      "A rotor turning at constant speed on its joint while everything else rests (its initial "
+      "state, or q, v), checked to be a steady motion with a cyclic angle, and linearized "
+      "without that angle (Routh): as `momenta linearize/modes/response --about steady`. "
+      "Raises InvalidArgument naming why a state is not one.");
+}
+
 void bind_steady_precession(py::module_& m) {
   py::class_<SteadyPrecession>(m, "SteadyPrecession",
                                "A symmetric top's steady precession at its tilt and spin "
@@ -443,12 +483,12 @@ void bind_campbell(py::module_& m) {
   m.def(
       "campbell_diagram",
       [](const ModelHandle& h, double speed_from, double speed_to, int points) {
-        return campbell_diagram(spinning_body(h.model(), initial_operating_point(h.model())),
-                                speed_from, speed_to, points);
+        return model_campbell_diagram(h.model(), speed_from, speed_to, points).diagram;
       },
       py::arg("model"), py::arg("speed_from"), py::arg("speed_to"), py::arg("points") = 41,
-      "The Campbell diagram of the model's spinning body from speed_from to speed_to (rad/s), "
-      "as `momenta campbell` (which takes rev/min).");
+      "The Campbell diagram of the model's rotor — one body on a ball or free joint, or a rotor "
+      "turning on its joint — from speed_from to speed_to (rad/s), as `momenta campbell` (which "
+      "takes rev/min).");
 }
 
 void bind_analysis(py::module_& m) {
@@ -457,6 +497,7 @@ void bind_analysis(py::module_& m) {
   bind_modes(m);
   bind_responses(m);
   bind_steady_motion(m);
+  bind_joint_steady_motion(m);
   bind_steady_precession(m);
   bind_campbell(m);
 }

@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <array>
 #include <atomic>
 #include <memory>
 #include <optional>
@@ -146,7 +147,8 @@ SimulationResult run_simulation(const ModelHandle& h, std::optional<double> dura
 std::filesystem::path write_result_report(const SimulationResult& r,
                                           const std::filesystem::path& path, bool force,
                                           const std::string& about, std::vector<std::string> inputs,
-                                          std::vector<std::string> outputs) {
+                                          std::vector<std::string> outputs,
+                                          const std::optional<std::array<double, 2>>& campbell) {
   report::SimulationRun run;
   run.file = r.file.get();
   run.columns = r.columns;
@@ -160,7 +162,11 @@ std::filesystem::path write_result_report(const SimulationResult& r,
     const double* row = r.data.data(static_cast<py::ssize_t>(i), 0);
     run.rows.emplace_back(row, row + cols);
   }
-  const report::LinearSettings linear{about, std::move(inputs), std::move(outputs)};
+  report::LinearSettings linear;
+  linear.about = about;
+  linear.inputs = std::move(inputs);
+  linear.outputs = std::move(outputs);
+  linear.campbell = campbell;
   {
     py::gil_scoped_release unlocked;
     report::write_report(path, report::simulation_report_html(run, linear), force);
@@ -206,10 +212,11 @@ result.audit the conservation audit; result.summary what the run did; to_pandas(
                     "to the end.")
       .def("report", &write_result_report, py::arg("path"), py::kw_only(), py::arg("force") = false,
            py::arg("about") = "initial", py::arg("inputs") = std::vector<std::string>{},
-           py::arg("outputs") = std::vector<std::string>{},
+           py::arg("outputs") = std::vector<std::string>{}, py::arg("campbell") = py::none(),
            R"doc(Writes the run's HTML report to `path`, the page `momenta simulate --report`
 writes (docs/report.md): the 3-D motion, every column plotted, the linear analysis about
-`about` ("initial" or "equilibrium", for the `inputs` and `outputs` named, all when empty) and
+`about` ("initial", "equilibrium" or "steady", for the `inputs` and `outputs` named, all when
+empty), the Campbell diagram when `campbell` = (from, to) speeds in rad/s is given, and
 the summary with its audit verdict; a run stopped by a non-finite state shows the reason at the
 top. Joint reactions are drawn when the run recorded them (simulate(..., reactions=True)).
 An existing file is kept (FileError) unless force=True. Returns the path.)doc")

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <Eigen/Eigenvalues>
 
+#include "campbell.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/system/multibody_system.hpp"
 
@@ -98,10 +99,14 @@ bool symmetric_about(const SpinningBody& b, const Vec3& e) {
   return principal && round && on_axis;
 }
 
+bool euler_poisson_applies(const model::Model& model) {
+  return model.num_joints() == 1 && model.joint(0).parent_index == 0 &&
+         (model.joint(0).type == model::JointType::spherical ||
+          model.joint(0).type == model::JointType::free);
+}
+
 SpinningBody spinning_body(const model::Model& model, const OperatingPoint& point) {
-  if (model.num_joints() != 1 || model.joint(0).parent_index != 0 ||
-      (model.joint(0).type != model::JointType::spherical &&
-       model.joint(0).type != model::JointType::free)) {
+  if (!euler_poisson_applies(model)) {
     throw InvalidArgument(fmt::format(
         "steady motions are analysed for one rigid body on a spherical joint (a top) or a free "
         "joint (a satellite) to the world; this model has {} joint{}{}",
@@ -236,42 +241,17 @@ SpinningBody spun_at(const SpinningBody& b, const Vec3& axis, double speed) {
   return at;
 }
 
-// The whirls at speed Ω, ordered backward before forward and by frequency within each, so the
-// k-th stands for the same mode from one speed to the next.
+// The whirls at speed Ω, each standing for the same mode from one speed to the next.
 CampbellPoint whirls_at(const SpinningBody& b, const Vec3& axis, double speed) {
   const SteadyMotionModes m = steady_motion_modes(spun_at(b, axis, speed));
-  std::vector<std::pair<std::string, double>> sorted;
-  for (std::size_t k = 0; k < m.space_frequencies.size(); ++k) {
-    sorted.emplace_back(m.whirl[k], m.space_frequencies[k]);
-  }
-  std::sort(sorted.begin(), sorted.end());
-  CampbellPoint p{speed, {}, {}, m.stable};
-  for (const auto& [whirl, frequency] : sorted) {
-    p.whirl.push_back(whirl);
-    p.frequencies.push_back(frequency);
-  }
+  CampbellPoint p{speed, m.space_frequencies, m.whirl, m.stable};
+  detail::sort_whirls(p);
   return p;
-}
-
-// The k-th whirl's frequency minus Ω, or NaN when the modes change there.
-double off_the_line(const SpinningBody& b, const Vec3& axis, double speed, std::size_t k,
-                    const std::string& whirl) {
-  const CampbellPoint p = whirls_at(b, axis, speed);
-  if (k >= p.frequencies.size() || !p.stable || p.whirl[k] != whirl) {
-    return std::numeric_limits<double>::quiet_NaN();
-  }
-  return p.frequencies[k] - speed;
 }
 
 }  // namespace
 
 CampbellDiagram campbell_diagram(const SpinningBody& b, double from, double to, int points) {
-  if (!(from > 0.0) || !(to > from) || !std::isfinite(to) || points < 2) {
-    throw InvalidArgument(fmt::format(
-        "Campbell diagram: speeds from {} to {} rad/s in {} points: expected 0 < from < to and "
-        "at least 2 points",
-        from, to, points));
-  }
   if (!(b.w_B.norm() > 0.0)) {
     throw InvalidArgument(fmt::format(
         "body '{}' does not spin at this state: the Campbell diagram scales its spin, and needs "
@@ -285,38 +265,8 @@ CampbellDiagram campbell_diagram(const SpinningBody& b, double from, double to, 
         "those of a symmetric rotor",
         b.body));
   }
-  CampbellDiagram d;
-  for (int k = 0; k < points; ++k) {
-    const double speed = from + (to - from) * k / (points - 1);
-    d.points.push_back(whirls_at(b, axis, speed));
-  }
-  // Critical speeds: a sign change of (frequency − Ω) of the same whirl between two speeds.
-  for (std::size_t k = 1; k < d.points.size(); ++k) {
-    const CampbellPoint &a = d.points[k - 1], &c = d.points[k];
-    if (a.frequencies.size() != c.frequencies.size()) continue;
-    for (std::size_t i = 0; i < a.frequencies.size(); ++i) {
-      const double fa = a.frequencies[i] - a.speed, fc = c.frequencies[i] - c.speed;
-      // An unbalance turns with the rotor: it drives forward whirl at 1×, so only forward whirls
-      // have critical speeds here.
-      if (!a.stable || !c.stable || (fa > 0.0) == (fc > 0.0) || a.whirl[i] != c.whirl[i] ||
-          a.whirl[i] != "forward")
-        continue;
-      double lo = a.speed, hi = c.speed, flo = fa;
-      while (hi - lo > 1e-12 * hi) {
-        const double mid = 0.5 * (lo + hi);
-        const double fm = off_the_line(b, axis, mid, i, a.whirl[i]);
-        if (std::isnan(fm)) break;
-        if ((fm > 0.0) == (flo > 0.0)) {
-          lo = mid;
-          flo = fm;
-        } else {
-          hi = mid;
-        }
-      }
-      d.critical_speeds.push_back({0.5 * (lo + hi), a.whirl[i]});
-    }
-  }
-  return d;
+  return detail::campbell_sweep([&](double speed) { return whirls_at(b, axis, speed); }, from, to,
+                                points);
 }
 
 SteadyPrecession steady_precession(const SpinningBody& b) {

@@ -10,6 +10,7 @@
 
 #include "momenta/analysis/equilibrium.hpp"
 #include "momenta/analysis/frequency_response.hpp"
+#include "momenta/analysis/joint_steady_motion.hpp"
 #include "momenta/analysis/modes.hpp"
 #include "momenta/analysis/time_response.hpp"
 #include "momenta/analysis/transfer_function.hpp"
@@ -167,10 +168,11 @@ json analysis_json(const io::ModelFile& file, const analysis::LinearModel& linea
 
 json linear_json(const io::ModelFile& file, const LinearSettings& settings, double& fastest_rate) {
   fastest_rate = 0.0;
-  if (settings.about != "equilibrium" && settings.about != "initial") {
+  if (settings.about != "equilibrium" && settings.about != "initial" &&
+      settings.about != "steady") {
     // A caller's mistake, not the model's: no page.
     throw InvalidArgument(
-        fmt::format("about '{}': expected initial or equilibrium", settings.about));
+        fmt::format("about '{}': expected initial, equilibrium or steady", settings.about));
   }
   try {
     analysis::LinearizationOptions options;
@@ -179,6 +181,19 @@ json linear_json(const io::ModelFile& file, const LinearSettings& settings, doub
     options.output_specs = file.outputs;
     analysis::OperatingPoint point;
     std::string about;
+    if (settings.about == "steady") {
+      const analysis::JointSteadyMotion steady = analysis::joint_steady_motion(
+          file.model, analysis::initial_operating_point(file.model), options);
+      // The reduced model, its position states those of the coordinates that do not turn.
+      analysis::LinearModel linear = steady.full;
+      linear.system = steady.reduced;
+      linear.coordinates = steady.reduced_coordinates;
+      return analysis_json(
+          file, linear,
+          fmt::format("the steady motion ({} turning at {:.6g}; its position left out)",
+                      fmt::join(steady.turning_names, ", "), steady.speed),
+          fastest_rate);
+    }
     if (settings.about == "equilibrium") {
       point = analysis::find_equilibrium(file.model, file.model.initial_q()).point;
       about = "the static equilibrium";
@@ -190,6 +205,54 @@ json linear_json(const io::ModelFile& file, const LinearSettings& settings, doub
     return analysis_json(file, linear, about, fastest_rate);
   } catch (const Error& e) {
     // The report still stands; the panel says why it is empty.
+    return {{"available", false}, {"reason", e.what()}};
+  }
+}
+
+json campbell_json(const io::ModelFile& file, const LinearSettings& settings) {
+  if (!settings.campbell) return nullptr;
+  const auto [from, to] = *settings.campbell;
+  try {
+    const analysis::RotorCampbell c =
+        analysis::model_campbell_diagram(file.model, from, to, settings.campbell_points);
+    const std::vector<analysis::CampbellPoint>& points = c.diagram.points;
+    // One series per whirl, named as `momenta campbell` names its columns; a speed where the
+    // motion is unstable, or the modes change in number, has no value.
+    std::vector<std::string> names;
+    int forward = 0, backward = 0, other = 0;
+    for (const std::string& w : points.front().whirl) {
+      names.push_back(w == "forward"    ? fmt::format("forward_{}", ++forward)
+                      : w == "backward" ? fmt::format("backward_{}", ++backward)
+                                        : fmt::format("no_whirl_{}", ++other));
+    }
+    std::vector<double> speeds;
+    json series = json::array();
+    for (const analysis::CampbellPoint& p : points) speeds.push_back(p.speed);
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      json values = json::array();
+      for (const analysis::CampbellPoint& p : points) {
+        const bool same = p.stable && p.frequencies.size() == names.size();
+        values.push_back(same ? json(p.frequencies[k]) : json(nullptr));
+      }
+      series.push_back(
+          {{"name", names[k]}, {"whirl", points.front().whirl[k]}, {"values", values}});
+    }
+    json critical = json::array();
+    for (const analysis::CriticalSpeed& s : c.diagram.critical_speeds) {
+      critical.push_back({{"speed", s.speed}, {"whirl", s.whirl}});
+    }
+    json unstable = json::array();
+    for (const analysis::CampbellPoint& p : points) {
+      if (!p.stable) unstable.push_back(p.speed);
+    }
+    return {{"available", true},
+            {"rotor", c.rotor},
+            {"frame", c.joint_coordinates ? "the joints' frames" : "space"},
+            {"speeds", speeds},
+            {"series", series},
+            {"critical_speeds", critical},
+            {"unstable_speeds", unstable}};
+  } catch (const Error& e) {
     return {{"available", false}, {"reason", e.what()}};
   }
 }

@@ -32,6 +32,8 @@ json plots_json(const SimulationRun& run);
 /// `fastest_rate` receives the largest |λ| (1/s) when the model was linearized.
 json linear_json(const io::ModelFile& file, const LinearSettings& settings, double& fastest_rate);
 
+/// The Campbell diagram over the speeds `settings.campbell` names, or {available: false, reason}.
+json campbell_json(const io::ModelFile& file, const LinearSettings& settings);
 /// Body poses after forward kinematics in `data`: per body (world excluded) its position, then
 /// its quaternion (x, y, z, w), appended to `positions` and `quaternions`.
 void append_poses(const model::Model& model, const dynamics::Data& data,

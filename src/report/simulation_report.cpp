@@ -115,7 +115,8 @@ std::string simulation_report_html(const SimulationRun& run, const LinearSetting
                        {"scene", detail::scene_json(*run.file)},
                        {"frames", detail::frames_json(run)},
                        {"plots", detail::plots_json(run)},
-                       {"linear", std::move(linear_section)}};
+                       {"linear", std::move(linear_section)},
+                       {"campbell", detail::campbell_json(*run.file, linear)}};
   return detail::html_page(fmt::format("{} — momenta report", run.file->name), data);
 }
 

@@ -47,7 +47,7 @@ async function screenshots(page, name) {
   await page.evaluate(() => window.momentaReport.drawAllCharts());
   await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => done())));
   await page.screenshot({ path: path.join(artifacts, `${name}-page.png`), fullPage: true });
-  for (const id of ['summary', 'motion', 'plots', 'linear']) {
+  for (const id of ['summary', 'motion', 'plots', 'linear', 'campbell']) {
     const handle = await page.$(`#${id}`);
     if (handle) await handle.screenshot({ path: path.join(artifacts, `${name}-${id}.png`) });
   }
@@ -140,6 +140,36 @@ test('heavy top: reports its spin, a rigid body drawn as its cone', async () => 
   measured.heavy_top = { bytes: r.size };
   const summary = await r.page.evaluate(() => window.momentaReport.summary());
   assert.equal(summary.verdict, 'pass');
+  await r.page.close();
+});
+
+test('rotor on bearings: modes about the steady motion and the Campbell diagram with its critical speeds', async () => {
+  const model = path.join(examples, 'rotor_on_bearings.yaml');
+  const r = await checkSimulationPage('rotor', model, ['--about', 'steady', '--campbell', '500', '5000', '--duration', '0.1']);
+  // The linear panel: the reduced model's poles, as `modes --about steady` gives them.
+  const linear = await r.page.evaluate(() => window.momentaReport.linear());
+  assert.equal(linear.available, true);
+  assert.match(linear.about, /steady motion \(spin\.angle turning/);
+  const modes = JSON.parse(run('modes', model, '--about', 'steady', '--json'));
+  assert.equal(linear.states.length, modes.state_names.length);
+  const sorted = (list) => [...list].sort((a, b) => a[0] - b[0] || a[1] - b[1]);
+  const reference = sorted(modes.modes.map((m) => m.eigenvalue));
+  sorted(linear.poles).forEach(([re, im], i) => {
+    const [r0, i0] = reference[i];
+    assert.ok(Math.abs(re - r0) <= 1e-9 * (1 + Math.hypot(r0, i0)) && Math.abs(im - i0) <= 1e-9 * (1 + Math.hypot(r0, i0)), `pole ${i}`);
+  });
+  // The Campbell panel: the critical speeds of `momenta campbell`, shown to 8 digits, and a chart.
+  const expected = JSON.parse(run('campbell', model, '--speed-range', '500', '5000', '--json'));
+  const campbell = await r.page.evaluate(() => window.momentaReport.campbell());
+  assert.equal(campbell.available, true);
+  assert.deepEqual(campbell.critical_speeds.map((c) => c.speed), expected.critical_speeds.map((c) => c.speed_rad_s));
+  const shown = await r.page.evaluate(() => document.getElementById('campbell').innerText);
+  assert.match(shown, /1934\.2044/);
+  assert.match(shown, /2835\.0381/);
+  const legend = await r.page.evaluate(() => [...document.querySelectorAll('#campbell .u-legend .u-label')].map((e) => e.textContent));
+  for (const name of ['backward 1 (Hz)', 'backward 2 (Hz)', 'forward 1 (Hz)', 'forward 2 (Hz)', '1× (Hz)', 'critical speeds']) {
+    assert.ok(legend.includes(name), `legend lacks ${name}: ${legend}`);
+  }
   await r.page.close();
 });
 

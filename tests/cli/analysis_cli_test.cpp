@@ -144,11 +144,13 @@ TEST_F(AnalysisCli, SleepingTopSteadyMotionModes) {
   EXPECT_NE(racket.err.find("not in a steady motion"), std::string::npos) << racket.err;
   // Two bodies, revolute joints: not a spinning body.
   EXPECT_EQ(momenta("modes " + example("double_pendulum") + " --about steady").code, 1);
-  // response has inputs and outputs; the steady-motion analysis has none.
-  EXPECT_EQ(
-      momenta("response " + example("sleeping_top") + " --about steady --input u --output y --step")
-          .code,
-      2);
+  // response has inputs and outputs; the Euler–Poisson analysis has none: said so, with the way
+  // to model a rotor that has them.
+  const CliRun response = momenta("response " + example("sleeping_top") +
+                                  " --about steady --input u --output y --step");
+  EXPECT_EQ(response.code, 2);
+  EXPECT_NE(response.err.find("universal joint and a revolute spin joint"), std::string::npos)
+      << response.err;
   // linearize prints the Euler–Poisson A.
   const CliRun lin = momenta("linearize " + example("sleeping_top") + " --about steady");
   ASSERT_EQ(lin.code, 0) << lin.err;
@@ -186,6 +188,47 @@ TEST_F(AnalysisCli, CampbellDiagramOfAHangingTop) {
   EXPECT_EQ(momenta("campbell '" + model.string() + "' --speed-range 200 10").code, 2);
   EXPECT_EQ(momenta("campbell " + example("free_body_tennis_racket") + " --speed-range 10 20").code,
             1);
+}
+
+// A rotor in joint coordinates (examples/rotor_on_bearings.yaml): --about steady leaves the spin
+// angle out; modes name each whirl; campbell finds both critical speeds (the closed forms are
+// checked in tests/validation/examples/campbell_examples_test.cpp); response works about the
+// steady motion — a force at bearing B moves it by 1/k_B at DC, the rotor being rigid.
+TEST_F(AnalysisCli, RotorInJointCoordinatesAboutItsSteadyMotion) {
+  const std::string rotor = example("rotor_on_bearings");
+  const CliRun modes = momenta("modes " + rotor + " --about steady --json");
+  ASSERT_EQ(modes.code, 0) << modes.err;
+  const json m = json::parse(modes.out);
+  EXPECT_EQ(m.at("state_names").size(), 9u);
+  const json& steady = m.at("steady_motion");
+  EXPECT_EQ(steady.at("turning"), json::array({"spin.angle"}));
+  std::vector<std::string> whirls;
+  for (const json& w : steady.at("whirls")) whirls.push_back(w.at("whirl"));
+  EXPECT_EQ(whirls, (std::vector<std::string>{"backward", "forward", "backward", "forward"}));
+  EXPECT_NEAR(steady.at("whirls")[3].at("frequency_rad_s").get<double>(), 281.98997613, 1e-8 * 282);
+  const CliRun text = momenta("modes " + rotor + " --about steady");
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("forward whirl"), std::string::npos) << text.out;
+  EXPECT_EQ(text.out.find("undamped normal modes"), std::string::npos) << text.out;
+
+  const CliRun c = momenta("campbell " + rotor + " --speed-range 500 5000 --json");
+  ASSERT_EQ(c.code, 0) << c.err;
+  const json cj = json::parse(c.out);
+  ASSERT_EQ(cj.at("critical_speeds").size(), 2u);
+  EXPECT_NEAR(cj.at("critical_speeds")[0].at("speed_rpm").get<double>(), 1934.204401, 1e-6);
+  EXPECT_NEAR(cj.at("critical_speeds")[1].at("speed_rpm").get<double>(), 2835.038083, 1e-6);
+  EXPECT_EQ(cj.at("turning"), "spin.angle");
+
+  const CliRun r = momenta("response " + rotor +
+                           " --about steady --input hammer --output bearing_B.x --step --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json rj = json::parse(r.out);
+  EXPECT_NEAR(rj.at("dc_gain").get<double>(), 1 / 3e5, 1e-9 / 3e5);
+  // An output that reads the spin angle is not one of the reduced model.
+  const CliRun angle = momenta("linearize " + rotor + " --about steady --outputs spin.angle");
+  EXPECT_EQ(angle.code, 1);
+  EXPECT_NE(angle.err.find("reads the turning position 'spin.angle'"), std::string::npos)
+      << angle.err;
 }
 
 // --json: full precision. The step figures are exact (τ ln 9, τ ln 50 for the cruise control's

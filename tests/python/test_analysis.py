@@ -158,3 +158,25 @@ def test_campbell_diagram_is_momenta_campbells():
     assert [p.speed for p in d.points] == [p["speed_rad_s"] for p in expected["points"]]
     assert [p.frequencies for p in d.points] == [p["frequencies_rad_s"] for p in expected["points"]]
     assert d.critical_speeds == [] and expected["critical_speeds"] == []
+
+
+def test_rotor_in_joint_coordinates_about_its_steady_motion():
+    """examples/rotor_on_bearings.yaml: the reduced linearization's frequencies and whirls, and its
+    Campbell diagram, equal `momenta modes/campbell --about steady --json` bit for bit; the
+    critical speeds are the closed form's (tests/validation/examples/campbell_examples_test.cpp)."""
+    path = EXAMPLES / "rotor_on_bearings.yaml"
+    model = momenta.load_model(path)
+    s = momenta.joint_steady_motion(model)
+    assert s.turning == ["spin.angle"]
+    assert s.reduced.state_names[:4] == ["x.position", "y.position", "tilt.angle1", "tilt.angle2"]
+    assert len(s.reduced.state_names) == 9 and s.stable
+    expected = cli_json("modes", path, "--about", "steady")["steady_motion"]
+    assert [m.frequency for m in s.modes] == [w["frequency_rad_s"] for w in expected["whirls"]]
+    assert [m.whirl for m in s.modes] == ["backward", "forward", "backward", "forward"]
+    rpm = 2 * np.pi / 60
+    d = momenta.campbell_diagram(model, 500 * rpm, 5000 * rpm, 19)
+    cli = cli_json("campbell", path, "--speed-range", 500, 5000, "--points", 19)
+    assert [c.speed for c in d.critical_speeds] == [c["speed_rad_s"] for c in cli["critical_speeds"]]
+    assert d.critical_speeds[0].speed / rpm == pytest.approx(1934.204401, abs=1e-6)
+    with pytest.raises(momenta.InvalidArgument, match="nothing turns"):
+        momenta.joint_steady_motion(model, v=np.zeros(5))

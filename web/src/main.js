@@ -4,6 +4,7 @@
 import 'uplot/dist/uPlot.min.css';
 import './style.css';
 import { decode, element, readData } from './data.js';
+import { campbellSection } from './campbell.js';
 import { inertiaPage } from './inertia.js';
 import { linearSection } from './linear.js';
 import { Motion } from './motion.js';
@@ -23,6 +24,8 @@ function simulationPage(app, data) {
   app.append(plots.section);
   const linear = linearSection(data, motion);
   app.append(linear.section);
+  const campbell = data.campbell ? campbellSection(data.campbell) : null;
+  if (campbell) app.append(campbell.section);
   let frames = 0;
   const loop = (now) => {
     timeline.tick(now);
@@ -41,7 +44,8 @@ function simulationPage(app, data) {
     series: () => Object.keys(plots.registry),
     seriesValues: (name) => Array.from(plots.registry[name] || []),
     plotTime: () => Array.from(plots.time),
-    drawAllCharts: () => plots.charts.drawAll() + (linear.charts?.drawAll() ?? 0),
+    drawAllCharts: () => plots.charts.drawAll() + (linear.charts?.drawAll() ?? 0) + (campbell?.charts?.drawAll() ?? 0),
+    campbell: () => data.campbell,
     linear: () => data.linear,
     play: (on) => { timeline.playing = on; },
     playMode: (i) => motion.playMode(data.linear.modes[i]),

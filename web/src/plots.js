@@ -58,14 +58,15 @@ function linearLabels(u, splits, axis, space, increment) {
 }
 
 export function chart(container, { title, xLabel, yLabel, x, series, logX = false, logY = false,
-  timeline = null, sync = null, width = 560, height = 220 }) {
+  timeline = null, sync = null, width = 560, height = 220, shown = SHOWN_AT_FIRST }) {
   const options = {
     title, width, height,
     scales: { x: { time: false, distr: logX ? 3 : 1 }, y: { distr: logY ? 3 : 1 } },
     axes: [{ label: xLabel, ...(logX ? logAxis : { values: linearLabels }) },
       { label: yLabel, size: 82, ...(logY ? logAxis : { values: linearLabels }) }],
-    series: [{ label: xLabel }, ...series.map((s, i) => ({ label: s.name, stroke: COLORS[i % COLORS.length], width: 1.5,
-      points: { show: false }, show: i < SHOWN_AT_FIRST }))],
+    series: [{ label: xLabel }, ...series.map((s, i) => ({ label: s.name, stroke: s.color ?? COLORS[i % COLORS.length],
+      width: s.width ?? 1.5, dash: s.dash, spanGaps: s.spanGaps ?? false,
+      points: s.points ? { show: true, size: 9, fill: s.color } : { show: false }, show: i < shown }))],
     cursor: sync ? { sync: { key: sync } } : {},
     plugins: timeline ? [timeMarker(timeline)] : [],
   };

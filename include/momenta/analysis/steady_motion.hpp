@@ -45,6 +45,10 @@ struct SpinningBody {
   Vec3 up_B;                ///< γ: the upward unit vertical in B (−g direction; z when g = 0)
 };
 
+/// True when `model` is one rigid body on a spherical or free joint to the world: the models whose
+/// steady motions are analysed here (others, in joint coordinates: joint_steady_motion.hpp).
+bool euler_poisson_applies(const model::Model& model);
+
 /// The body of `model` as a spinning body at `point`. Throws InvalidArgument unless the model is
 /// one body on a spherical or free joint to the world (naming what it has).
 SpinningBody spinning_body(const model::Model& model, const OperatingPoint& point);

@@ -33,9 +33,15 @@ struct SimulationRun {
 
 /// What the linear-analysis panel linearizes about, and for which channels.
 struct LinearSettings {
-  std::string about = "initial";     ///< "initial" (the initial state) or "equilibrium"
+  /// "initial" (the initial state), "equilibrium", or "steady" (a rotor's steady motion in joint
+  /// coordinates, analysis/joint_steady_motion.hpp: its turning positions left out).
+  std::string about = "initial";
   std::vector<std::string> inputs;   ///< as analysis::LinearizationOptions::inputs
   std::vector<std::string> outputs;  ///< as analysis::LinearizationOptions::outputs
+  /// When set, a Campbell panel: the rotor's whirl frequencies from the first speed to the
+  /// second (rad/s), at `campbell_points` speeds (analysis::model_campbell_diagram).
+  std::optional<std::array<double, 2>> campbell;
+  int campbell_points = 41;
 };
 
 /// The run a simulation left in `table`: with the summary it returned, or — when `stop_reason` is
@@ -52,8 +58,9 @@ SimulationRun simulate_for_report(const io::ModelFile& file, simulate::Simulatio
 /// The report page of a run: the summary, the 3-D view, the plots and, when the model can be
 /// linearized about the point `linear` names, the linear analysis (poles and zeros, Bode, step
 /// responses, animated mode shapes); when it cannot (no free joint, a singular mass matrix, a
-/// channel the model lacks), the panel says why. Throws InvalidArgument for an `about` other
-/// than "initial" or "equilibrium", or a run with no file or no rows.
+/// channel the model lacks, a state that is not a steady motion), the panel says why; with
+/// `linear.campbell`, the Campbell diagram (or why there is none). Throws InvalidArgument for an
+/// `about` other than "initial", "equilibrium" or "steady", or a run with no file or no rows.
 std::string simulation_report_html(const SimulationRun& run, const LinearSettings& linear = {});
 
 /// The report page of a part: the composite with its centre of mass, principal axes and
