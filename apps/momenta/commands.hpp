@@ -32,6 +32,7 @@ void add_modes_command(CLI::App& app);
 
 /// `momenta campbell MODEL --speed-range A B`: whirl frequencies against spin speed.
 void add_campbell_command(CLI::App& app);
+void add_steady_command(CLI::App& app);
 
 /// `momenta response MODEL`: step, impulse or Bode response of one input–output pair.
 void add_response_command(CLI::App& app);

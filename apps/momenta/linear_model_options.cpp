@@ -201,7 +201,6 @@ void print_precession_text(const LoadedSteadyMotion& s) {
 
 json precession_json(const LoadedSteadyMotion& s) {
   const analysis::SteadyPrecession& p = *s.precession;
-  const auto number = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
   return {{"model", s.file.name},
           {"about", "steady"},
           {"motion", "steady precession"},
@@ -212,15 +211,15 @@ json precession_json(const LoadedSteadyMotion& s) {
           {"I1", p.I1},
           {"I3", p.I3},
           {"mgl", p.mgl},
-          {"slow", number(p.slow)},
-          {"fast", number(p.fast)},
+          {"slow", finite_or_null(p.slow)},
+          {"fast", finite_or_null(p.fast)},
           {"precession", p.precession},
           {"residual", p.residual},
           {"minimum_spin", p.minimum_spin},
           {"gyroscopic", p.gyroscopic},
-          {"gyroscopic_error", number(p.gyroscopic_error)},
-          {"slow_nutation", number(p.slow_nutation)},
-          {"fast_nutation", number(p.fast_nutation)}};
+          {"gyroscopic_error", finite_or_null(p.gyroscopic_error)},
+          {"slow_nutation", finite_or_null(p.slow_nutation)},
+          {"fast_nutation", finite_or_null(p.fast_nutation)}};
 }
 
 void print_steady_motion_text(const LoadedSteadyMotion& s, bool with_matrix) {

@@ -53,6 +53,7 @@ int main(int argc, char** argv) {
   momenta::cli::add_modes_command(app);
   momenta::cli::add_response_command(app);
   momenta::cli::add_campbell_command(app);
+  momenta::cli::add_steady_command(app);
 
   if (refuse_unknown_command(app, argc, argv)) return 2;
   try {

@@ -27,9 +27,6 @@ struct ModesOptions {
 
 double hz(double omega) { return omega / (2 * std::numbers::pi); }
 
-// NaN (an undefined damping ratio, a divergent mode's frequency) as JSON null.
-json number(double x) { return std::isfinite(x) ? json(x + 0.0) : json(nullptr); }
-
 void run(const ModesOptions& o) {
   if (o.model.about == "steady" && print_steady_motion(o.model, o.json, false)) return;
   const LoadedLinearModel loaded = load_linear_model(o.model);
@@ -58,10 +55,10 @@ void run(const ModesOptions& o) {
       for (Eigen::Index i = 0; i < mode.shape.size(); ++i)
         shape.push_back(complex_json(mode.shape[i]));
       modes.push_back({{"eigenvalue", complex_json(mode.eigenvalue)},
-                       {"natural_frequency_rad_s", number(mode.natural_frequency)},
-                       {"natural_frequency_hz", number(hz(mode.natural_frequency))},
-                       {"damping_ratio", number(mode.damping_ratio)},
-                       {"damped_frequency_rad_s", number(mode.damped_frequency)},
+                       {"natural_frequency_rad_s", finite_or_null(mode.natural_frequency)},
+                       {"natural_frequency_hz", finite_or_null(hz(mode.natural_frequency))},
+                       {"damping_ratio", finite_or_null(mode.damping_ratio)},
+                       {"damped_frequency_rad_s", finite_or_null(mode.damped_frequency)},
                        {"shape", std::move(shape)}});
     }
     j["modes"] = std::move(modes);
@@ -70,9 +67,9 @@ void run(const ModesOptions& o) {
       j["coordinate_names"] = normal->coordinate_names;
       json nm = json::array();
       for (const analysis::NormalMode& mode : normal->modes) {
-        nm.push_back({{"squared_frequency", number(mode.squared_frequency)},
-                      {"natural_frequency_rad_s", number(mode.natural_frequency)},
-                      {"natural_frequency_hz", number(hz(mode.natural_frequency))},
+        nm.push_back({{"squared_frequency", finite_or_null(mode.squared_frequency)},
+                      {"natural_frequency_rad_s", finite_or_null(mode.natural_frequency)},
+                      {"natural_frequency_hz", finite_or_null(hz(mode.natural_frequency))},
                       {"shape", json(std::vector<double>(mode.shape.data(),
                                                          mode.shape.data() + mode.shape.size()))}});
       }

@@ -1,6 +1,7 @@
 #include "output_format.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -56,6 +57,8 @@ void write_json(std::string& out, const json& j, int indent, ListSpacing lists) 
 }  // namespace
 
 json vec_json(const Vec3& v) { return json::array({v.x() + 0.0, v.y() + 0.0, v.z() + 0.0}); }
+
+json finite_or_null(double x) { return std::isfinite(x) ? json(x + 0.0) : json(nullptr); }
 
 json matrix_json(const MatX& M) {
   json rows = json::array();

@@ -14,6 +14,9 @@ namespace momenta::cli {
 /// JSON of a vector as [x, y, z] (−0 written as 0).
 nlohmann::ordered_json vec_json(const Vec3& v);
 
+/// JSON of a number, or null where it is not finite (an undefined damping ratio, a root that
+/// does not exist); −0 written as 0.
+nlohmann::ordered_json finite_or_null(double x);
 /// JSON of a matrix as an array of rows (−0 written as 0).
 nlohmann::ordered_json matrix_json(const MatX& M);
 

@@ -450,6 +450,8 @@ void bind_steady_precession(py::module_& m) {
       .def_readonly("slow", &SteadyPrecession::slow, "the slow precession root, rad/s")
       .def_readonly("fast", &SteadyPrecession::fast, "the fast precession root, rad/s")
       .def_readonly("minimum_spin", &SteadyPrecession::minimum_spin)
+      .def_readonly("critical_spin", &SteadyPrecession::critical_spin,
+                    "the sleeping top's, 2√(I₁ m g l)/I₃")
       .def_readonly("gyroscopic", &SteadyPrecession::gyroscopic, "m g l / (I₃ ω₃)")
       .def_readonly("gyroscopic_error", &SteadyPrecession::gyroscopic_error)
       .def_readonly("slow_nutation", &SteadyPrecession::slow_nutation)
@@ -466,6 +468,31 @@ void bind_steady_precession(py::module_& m) {
       "A symmetric top's steady precession at the tilt and spin of its initial state (or q, v): "
       "both precession roots, the minimum spin, the gyroscopic approximation, the nutation "
       "frequencies, and how far the state is from the nearer root.");
+}
+
+void bind_find_steady_precession(py::module_& m) {
+  py::class_<FoundPrecession>(m, "FoundPrecession",
+                              "Steady precessions of a symmetric top at a chosen tilt and spin.")
+      .def_readonly("roots", &FoundPrecession::roots,
+                    "SteadyPrecession: both rates, minimum and critical spin, nutation")
+      .def_property_readonly(
+          "states",
+          [](const FoundPrecession& f) {
+            py::list states;
+            for (const OperatingPoint& p : f.states) {
+              states.append(py::make_tuple(to_numpy(p.q), to_numpy(p.v)));
+            }
+            return states;
+          },
+          "(q, v) of the model precessing on each root that exists, slow first");
+  m.def(
+      "find_steady_precession",
+      [](const ModelHandle& h, double tilt, double spin) {
+        return find_steady_precession(h.model(), tilt, spin);
+      },
+      py::arg("model"), py::arg("tilt"), py::arg("spin"),
+      "The steady precessions of the model's symmetric top at tilt (rad) and spin ω₃ (rad/s), "
+      "as `momenta steady` (which takes degrees).");
 }
 
 void bind_campbell(py::module_& m) {
@@ -499,6 +526,7 @@ void bind_analysis(py::module_& m) {
   bind_steady_motion(m);
   bind_joint_steady_motion(m);
   bind_steady_precession(m);
+  bind_find_steady_precession(m);
   bind_campbell(m);
 }
 

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include <fmt/format.h>
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 
 #include "campbell.hpp"
 #include "momenta/common/error.hpp"
@@ -269,14 +271,17 @@ CampbellDiagram campbell_diagram(const SpinningBody& b, double from, double to, 
                                 points);
 }
 
-SteadyPrecession steady_precession(const SpinningBody& b) {
+namespace {
+
+// A symmetric top's data (I₁, I₃, m g l about the fixed point) and its axis e in B, checked.
+SteadyPrecession symmetric_top(const SpinningBody& b, Vec3& e) {
   if (!b.fixed_point || !(b.p_OBcm_B.norm() > 0.0)) {
     throw InvalidArgument(fmt::format(
         "body '{}': steady precession is a top's: a body on a fixed point with its centre of mass "
         "off it",
         b.body));
   }
-  const Vec3 e = b.p_OBcm_B.normalized();
+  e = b.p_OBcm_B.normalized();
   if (!symmetric_about(b, e)) {
     throw InvalidArgument(fmt::format(
         "body '{}' is not symmetric about the axis through its centre of mass (two equal moments "
@@ -284,20 +289,18 @@ SteadyPrecession steady_precession(const SpinningBody& b) {
         b.body));
   }
   SteadyPrecession r;
-  const auto [e1, e2] = transverse_basis(e);
+  const Vec3 e1 = transverse_basis(e).first;
   r.I1 = e1.dot(b.I_B * e1);
   r.I3 = e.dot(b.I_B * e);
   r.mgl = b.mass * b.g * b.p_OBcm_B.norm();
-  const double c = std::clamp(e.dot(b.up_B), -1.0, 1.0);
-  const double s = std::sqrt(1.0 - c * c);
-  r.tilt = std::acos(c);
-  if (s < 1e-9) {
-    throw InvalidArgument(
-        fmt::format("body '{}' stands on its axis (tilt {:.3g} rad): a sleeping top, not a steady "
-                    "precession — its steady motion is the spin about the vertical",
-                    b.body, r.tilt));
-  }
-  r.spin = b.w_B.dot(e);
+  r.critical_spin = r.mgl > 0.0 ? 2.0 * std::sqrt(r.I1 * r.mgl) / r.I3 : 0.0;
+  return r;
+}
+
+// The precession roots, the minimum spin, the gyroscopic approximation and the nutation
+// frequencies at r.tilt and r.spin.
+void precession_roots(SteadyPrecession& r) {
+  const double c = std::cos(r.tilt), s = std::sin(r.tilt);
   // The roots of I₁ cos θ φ̇² − I₃ω₃ φ̇ + m g l = 0 (one root where cos θ = 0).
   const double p = r.I3 * r.spin, a = r.I1 * c;
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -325,6 +328,23 @@ SteadyPrecession steady_precession(const SpinningBody& b) {
   };
   r.slow_nutation = nutation(r.slow);
   r.fast_nutation = nutation(r.fast);
+}
+
+}  // namespace
+
+SteadyPrecession steady_precession(const SpinningBody& b) {
+  Vec3 e;
+  SteadyPrecession r = symmetric_top(b, e);
+  const double c = std::clamp(e.dot(b.up_B), -1.0, 1.0);
+  r.tilt = std::acos(c);
+  if (std::sqrt(1.0 - c * c) < 1e-9) {
+    throw InvalidArgument(
+        fmt::format("body '{}' stands on its axis (tilt {:.3g} rad): a sleeping top, not a steady "
+                    "precession — its steady motion is the spin about the vertical",
+                    b.body, r.tilt));
+  }
+  r.spin = b.w_B.dot(e);
+  precession_roots(r);
   // The state's ω as φ̇ ẑ + ψ̇ e (least squares in the plane of the vertical and the axis).
   Eigen::Matrix<double, 3, 2> basis;
   basis << b.up_B, e;
@@ -337,6 +357,41 @@ SteadyPrecession steady_precession(const SpinningBody& b) {
   mismatch = std::max(mismatch, nearest);
   r.residual = mismatch / w;
   return r;
+}
+
+FoundPrecession find_steady_precession(const model::Model& model, double tilt, double spin) {
+  if (!(tilt >= 0.0) || !(tilt <= std::numbers::pi) || !std::isfinite(spin)) {
+    throw InvalidArgument(fmt::format(
+        "steady precession at tilt {} rad and spin {} rad/s: expected 0 ≤ tilt ≤ π and a finite "
+        "spin",
+        tilt, spin));
+  }
+  SpinningBody b = spinning_body(model, initial_operating_point(model));
+  Vec3 e;
+  FoundPrecession found;
+  found.roots = symmetric_top(b, e);
+  found.roots.tilt = tilt;
+  found.roots.spin = spin;
+  precession_roots(found.roots);
+  // The top's pose: its axis e turned from the upward vertical by the tilt about world x.
+  const Vec3 up = -model.gravity().normalized();
+  const Mat3 R_align = Eigen::Quaterniond::FromTwoVectors(e, up).toRotationMatrix();
+  const Vec3 across = up.unitOrthogonal();
+  const Mat3 R_WB = Eigen::AngleAxisd(tilt, across).toRotationMatrix() * R_align;
+  const model::Joint& joint = model.joint(0);
+  const Mat3 R_JJp = joint.X_PJ.R.transpose() * R_WB * joint.X_CJ.R;
+  for (const double rate : {found.roots.slow, found.roots.fast}) {
+    if (!std::isfinite(rate)) continue;
+    // ω = φ̇ (vertical) + ψ̇ e with ω·e = ω₃: ψ̇ = ω₃ − φ̇ cos θ.
+    const Vec3 w_W = rate * up + (spin - rate * std::cos(tilt)) * (R_WB * e);
+    const Vec3 w_B = R_WB.transpose() * w_W;
+    OperatingPoint point = initial_operating_point(model);
+    const Eigen::Quaterniond q(R_JJp);
+    point.q << q.w(), q.x(), q.y(), q.z();
+    point.v = joint.X_CJ.R.transpose() * w_B;
+    found.states.push_back(point);
+  }
+  return found;
 }
 
 }  // namespace momenta::analysis

@@ -190,6 +190,42 @@ TEST_F(AnalysisCli, CampbellDiagramOfAHangingTop) {
             1);
 }
 
+// `momenta steady`: the heavy top's cone at the file's 20° and 300 rad/s gives the file's slow
+// root 3.618637 rad/s; upright, the sleeping top's precession frequencies 3.6468 and 31.647; the
+// state of a root goes to a file, never over one without --force.
+TEST_F(AnalysisCli, SteadyPrecessionSolver) {
+  const std::string top = example("heavy_top");
+  const CliRun r = momenta("steady " + top + " --tilt 20 --spin 300 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_NEAR(j.at("slow").get<double>(), 3.618637, 5e-7);
+  EXPECT_NEAR(j.at("critical_spin").get<double>(), 182.63, 5e-3);
+  EXPECT_EQ(j.at("states").size(), 2u);
+  const CliRun upright = momenta("steady " + top + " --tilt 0 --spin 300");
+  ASSERT_EQ(upright.code, 0) << upright.err;
+  EXPECT_NE(upright.out.find("slow precession φ̇ = 3.6468"), std::string::npos) << upright.out;
+  EXPECT_NE(upright.out.find("fast precession φ̇ = 31.647"), std::string::npos) << upright.out;
+  // Below the minimum spin at 20°: no root, said so; the state cannot be written.
+  const CliRun slow = momenta("steady " + top + " --tilt 20 --spin 100");
+  ASSERT_EQ(slow.code, 0) << slow.err;
+  EXPECT_NE(slow.out.find("slow precession: none"), std::string::npos) << slow.out;
+  const fs::path state = dir_ / "precessing.json";
+  EXPECT_EQ(
+      momenta("steady " + top + " --tilt 20 --spin 100 --state '" + state.string() + "'").code, 1);
+  ASSERT_EQ(momenta("steady " + top + " --tilt 20 --spin 300 --state '" + state.string() +
+                    "' --root fast")
+                .code,
+            0);
+  const json s = json::parse(std::ifstream(state));
+  EXPECT_EQ(s.at("q").size(), 4u);
+  EXPECT_EQ(s.at("v").size(), 3u);
+  EXPECT_EQ(
+      momenta("steady " + top + " --tilt 20 --spin 300 --state '" + state.string() + "'").code,
+      1);  // exists: --force
+  EXPECT_EQ(momenta("steady " + top + " --tilt 200 --spin 300").code, 2);
+  EXPECT_EQ(momenta("steady " + example("pendulum") + " --tilt 20 --spin 300").code, 1);
+}
+
 // A rotor in joint coordinates (examples/rotor_on_bearings.yaml): --about steady leaves the spin
 // angle out; modes name each whirl; campbell finds both critical speeds (the closed forms are
 // checked in tests/validation/examples/campbell_examples_test.cpp); response works about the

@@ -180,3 +180,18 @@ def test_rotor_in_joint_coordinates_about_its_steady_motion():
     assert d.critical_speeds[0].speed / rpm == pytest.approx(1934.204401, abs=1e-6)
     with pytest.raises(momenta.InvalidArgument, match="nothing turns"):
         momenta.joint_steady_motion(model, v=np.zeros(5))
+
+
+def test_find_steady_precession_is_momenta_steadys():
+    """The solver at a chosen tilt and spin equals `momenta steady --json` bit for bit, and each
+    state it gives is found on its root by steady_precession."""
+    path = EXAMPLES / "heavy_top.yaml"
+    model = momenta.load_model(path)
+    found = momenta.find_steady_precession(model, 20 * np.pi / 180, 300.0)
+    cli = cli_json("steady", path, "--tilt", 20, "--spin", 300)
+    assert found.roots.slow == cli["slow"] and found.roots.fast == cli["fast"]
+    assert found.roots.critical_spin == cli["critical_spin"]
+    q, v = found.states[0]
+    p = momenta.steady_precession(model, q=q, v=v)
+    assert p.precession == pytest.approx(found.roots.slow, rel=1e-13)
+    assert p.residual < 1e-15

@@ -128,6 +128,9 @@ struct SteadyPrecession {
   /// The spin below which no steady precession exists at this tilt, 2√(I₁ m g l cos θ)/I₃ (0
   /// when cos θ ≤ 0: a top below its pivot precesses at any spin).
   double minimum_spin = 0.0;
+  /// The sleeping top's critical spin 2√(I₁ m g l)/I₃: upright, it is stable above it (0 for a
+  /// top whose centre of mass is below the fixed point).
+  double critical_spin = 0.0;
   /// The gyroscopic approximation m g l/(I₃ ω₃) of the slow root, and its relative error.
   double gyroscopic = 0.0;
   double gyroscopic_error = 0.0;
@@ -140,6 +143,23 @@ struct SteadyPrecession {
   /// and the mismatch of φ̇ with the nearer root, relative to |ω|.
   double residual = 0.0;
 };
+
+/// find_steady_precession's answer: the roots at the tilt and spin asked for (`precession` and
+/// `residual` left 0), and a state of the model on each root that exists (slow, then fast).
+struct FoundPrecession {
+  SteadyPrecession roots;
+  std::vector<OperatingPoint> states;
+};
+
+/// The steady precessions of `model`'s symmetric top (one body on a spherical joint to the world,
+/// symmetric about the axis through its centre of mass) at the tilt θ (rad, from the upward
+/// vertical, 0 ≤ θ ≤ π) and spin ω₃ (rad/s) asked for: both roots of I₁ cos θ φ̇² − I₃ω₃ φ̇ +
+/// m g l = 0, the spin range where they exist, the critical spin of the sleeping top, the
+/// gyroscopic approximation with its error and the nutation frequencies; and for each root the
+/// state (q, v) of the model precessing steadily on it, its axis tilted about a horizontal axis.
+/// At θ = 0 the roots are the limit: the sleeping top's precession frequencies for a small tilt.
+/// Throws InvalidArgument for another model, or a tilt or spin out of range.
+FoundPrecession find_steady_precession(const model::Model& model, double tilt, double spin);
 
 /// The steady precession of `body` at its tilt and spin. Throws InvalidArgument unless the body
 /// is on a fixed point, symmetric about an axis (its centre of mass on it) and tilted (the
