@@ -33,18 +33,8 @@ struct CampbellOptions {
   bool force = false;
 };
 
-// The column name of whirl k at a point: "forward_1", "backward_1", …
-std::vector<std::string> whirl_names(const analysis::CampbellPoint& p) {
-  std::vector<std::string> names;
-  int forward = 0, backward = 0;
-  for (const std::string& w : p.whirl) {
-    names.push_back(fmt::format("{}_{}", w, w == "forward" ? ++forward : ++backward));
-  }
-  return names;
-}
-
 std::string csv_text(const analysis::CampbellDiagram& d) {
-  const std::vector<std::string> names = whirl_names(d.points.front());
+  const std::vector<std::string> names = analysis::whirl_column_names(d.points.front());
   std::string text = "speed_rpm,speed_rad_s";
   for (const std::string& n : names) text += fmt::format(",{}_rad_s", n);
   text += "\n";
@@ -105,7 +95,7 @@ void run(const CampbellOptions& o) {
         "{}: Campbell diagram of body '{}' ({} speeds), whirl frequencies seen from space\n\n",
         file.name, rotor.rotor, d.points.size());
   }
-  const std::vector<std::string> names = whirl_names(d.points.front());
+  const std::vector<std::string> names = analysis::whirl_column_names(d.points.front());
   fmt::print("  {:>10} {:>12}", "rev/min", "Ω rad/s");
   for (const std::string& n : names) fmt::print(" {:>14}", n);
   fmt::print("\n");

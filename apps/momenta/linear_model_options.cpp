@@ -92,7 +92,11 @@ void add_linear_model_options(CLI::App* command, LinearModelOptions& o, bool wit
 }
 
 LoadedLinearModel load_linear_model(const LinearModelOptions& o) {
-  LoadedLinearModel r{frontend::load_model(o.model), {}, {}, std::nullopt};
+  return load_linear_model(o, frontend::load_model(o.model));
+}
+
+LoadedLinearModel load_linear_model(const LinearModelOptions& o, io::ModelFile file) {
+  LoadedLinearModel r{std::move(file), {}, {}, std::nullopt};
   const model::Model& model = r.file.model;
   analysis::LinearizationOptions options;
   options.inputs = o.inputs;
@@ -148,8 +152,8 @@ LoadedLinearModel load_linear_model(const LinearModelOptions& o) {
   return r;
 }
 
-LoadedSteadyMotion load_steady_motion(const LinearModelOptions& o) {
-  LoadedSteadyMotion r{frontend::load_model(o.model), {}, {}, std::nullopt};
+LoadedSteadyMotion load_steady_motion(io::ModelFile file) {
+  LoadedSteadyMotion r{std::move(file), {}, {}, std::nullopt};
   r.body = analysis::spinning_body(r.file.model, analysis::initial_operating_point(r.file.model));
   try {
     r.modes = analysis::steady_motion_modes(r.body);
@@ -200,26 +204,15 @@ void print_precession_text(const LoadedSteadyMotion& s) {
 }
 
 json precession_json(const LoadedSteadyMotion& s) {
-  const analysis::SteadyPrecession& p = *s.precession;
-  return {{"model", s.file.name},
-          {"about", "steady"},
-          {"motion", "steady precession"},
-          {"body", s.body.body},
-          {"joint", s.body.joint},
-          {"tilt", p.tilt},
-          {"spin", p.spin},
-          {"I1", p.I1},
-          {"I3", p.I3},
-          {"mgl", p.mgl},
-          {"slow", finite_or_null(p.slow)},
-          {"fast", finite_or_null(p.fast)},
-          {"precession", p.precession},
-          {"residual", p.residual},
-          {"minimum_spin", p.minimum_spin},
-          {"gyroscopic", p.gyroscopic},
-          {"gyroscopic_error", finite_or_null(p.gyroscopic_error)},
-          {"slow_nutation", finite_or_null(p.slow_nutation)},
-          {"fast_nutation", finite_or_null(p.fast_nutation)}};
+  json j = {{"model", s.file.name},
+            {"about", "steady"},
+            {"motion", "steady precession"},
+            {"body", s.body.body},
+            {"joint", s.body.joint}};
+  j.update(precession_roots_json(*s.precession));
+  j["precession"] = s.precession->precession;
+  j["residual"] = s.precession->residual;
+  return j;
 }
 
 void print_steady_motion_text(const LoadedSteadyMotion& s, bool with_matrix) {
@@ -300,6 +293,21 @@ void print_whirls(const analysis::JointSteadyMotion& steady) {
                                                  steady.growth_rate));
 }
 
+json precession_roots_json(const analysis::SteadyPrecession& p) {
+  return {{"tilt", p.tilt},
+          {"spin", p.spin},
+          {"I1", p.I1},
+          {"I3", p.I3},
+          {"mgl", p.mgl},
+          {"slow", finite_or_null(p.slow)},
+          {"fast", finite_or_null(p.fast)},
+          {"minimum_spin", p.minimum_spin},
+          {"gyroscopic", p.gyroscopic},
+          {"gyroscopic_error", finite_or_null(p.gyroscopic_error)},
+          {"slow_nutation", finite_or_null(p.slow_nutation)},
+          {"fast_nutation", finite_or_null(p.fast_nutation)}};
+}
+
 json whirls_json(const analysis::JointSteadyMotion& steady) {
   json j;
   j["turning"] = steady.turning_names;
@@ -317,23 +325,21 @@ json whirls_json(const analysis::JointSteadyMotion& steady) {
   return j;
 }
 
-bool print_steady_motion(const LinearModelOptions& options, bool json, bool with_matrix) {
-  if (!analysis::euler_poisson_applies(frontend::load_model(options.model).model)) return false;
-  const LoadedSteadyMotion steady = load_steady_motion(options);
+void print_steady_motion(io::ModelFile file, bool json, bool with_matrix) {
+  const LoadedSteadyMotion steady = load_steady_motion(std::move(file));
   if (steady.precession) {
     if (json) {
       fmt::print("{}\n", json_text(precession_json(steady)));
     } else {
       print_precession_text(steady);
     }
-    return true;
+    return;
   }
   if (json) {
     fmt::print("{}\n", json_text(steady_motion_json(steady)));
   } else {
     print_steady_motion_text(steady, with_matrix);
   }
-  return true;
 }
 
 json complex_json(std::complex<double> z) { return json::array({z.real() + 0.0, z.imag() + 0.0}); }

@@ -41,6 +41,8 @@ struct LoadedLinearModel {
   std::optional<analysis::JointSteadyMotion> steady;
 };
 LoadedLinearModel load_linear_model(const LinearModelOptions& options);
+/// The same with the model file already read.
+LoadedLinearModel load_linear_model(const LinearModelOptions& options, io::ModelFile file);
 
 /// --about steady: the model's one spinning body at its initial state, checked to be in a
 /// steady motion, and the linear analysis about it (analysis/steady_motion.hpp).
@@ -51,13 +53,18 @@ struct LoadedSteadyMotion {
   /// Set instead of `modes` when the state is a symmetric top's steady precession at a tilt.
   std::optional<analysis::SteadyPrecession> precession;
 };
-LoadedSteadyMotion load_steady_motion(const LinearModelOptions& options);
+LoadedSteadyMotion load_steady_motion(io::ModelFile file);
 
-/// `modes` and `linearize` with --about steady on one body on a ball or free joint: loads the
-/// steady motion and prints its analysis in Euler–Poisson variables, as JSON or as text (with the
-/// matrix A when `with_matrix`), and returns true; returns false, printing nothing, for any other
-/// model (a steady motion in joint coordinates: load_linear_model).
-bool print_steady_motion(const LinearModelOptions& options, bool json, bool with_matrix);
+/// `modes` and `linearize` with --about steady on one body on a ball or free joint
+/// (analysis::euler_poisson_applies): prints the steady motion's analysis in Euler–Poisson
+/// variables, as JSON or as text (with the matrix A when `with_matrix`). Other models' steady
+/// motions are in joint coordinates: load_linear_model.
+void print_steady_motion(io::ModelFile file, bool json, bool with_matrix);
+
+/// JSON of a steady precession's roots at its tilt and spin (shared by `modes --about steady` and
+/// `steady`): tilt, spin, I1, I3, mgl, slow, fast, minimum_spin, gyroscopic, gyroscopic_error,
+/// slow_nutation, fast_nutation (roots that do not exist as null).
+nlohmann::ordered_json precession_roots_json(const analysis::SteadyPrecession& p);
 
 /// The whirl of each oscillation of a steady motion in joint coordinates, as text lines and JSON.
 void print_whirls(const analysis::JointSteadyMotion& steady);

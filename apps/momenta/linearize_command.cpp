@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "linear_model_options.hpp"
 #include "momenta/analysis/modes.hpp"
+#include "momenta/frontend/model_loading.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -21,8 +22,11 @@ struct LinearizeOptions {
 };
 
 void run(const LinearizeOptions& o) {
-  if (o.model.about == "steady" && print_steady_motion(o.model, o.json, true)) return;
-  const LoadedLinearModel loaded = load_linear_model(o.model);
+  io::ModelFile file = frontend::load_model(o.model.model);
+  if (o.model.about == "steady" && analysis::euler_poisson_applies(file.model)) {
+    return print_steady_motion(std::move(file), o.json, true);
+  }
+  const LoadedLinearModel loaded = load_linear_model(o.model, std::move(file));
   const analysis::LinearModel& lin = loaded.linear;
   const analysis::StateSpace& sys = lin.system;
   const analysis::Modes m = analysis::modes(sys);

@@ -14,6 +14,7 @@
 #include "linear_model_options.hpp"
 #include "momenta/analysis/modes.hpp"
 #include "momenta/common/error.hpp"
+#include "momenta/frontend/model_loading.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -28,8 +29,11 @@ struct ModesOptions {
 double hz(double omega) { return omega / (2 * std::numbers::pi); }
 
 void run(const ModesOptions& o) {
-  if (o.model.about == "steady" && print_steady_motion(o.model, o.json, false)) return;
-  const LoadedLinearModel loaded = load_linear_model(o.model);
+  io::ModelFile file = frontend::load_model(o.model.model);
+  if (o.model.about == "steady" && analysis::euler_poisson_applies(file.model)) {
+    return print_steady_motion(std::move(file), o.json, false);
+  }
+  const LoadedLinearModel loaded = load_linear_model(o.model, std::move(file));
   const analysis::LinearModel& lin = loaded.linear;
   const analysis::Modes m = analysis::modes(lin.system);
   // Undamped normal modes exist where K is symmetric (a conservative model at an equilibrium).

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "linear_model_options.hpp"
 #include "momenta/analysis/steady_motion.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
@@ -106,21 +107,9 @@ void run(const SteadyOptions& o) {
       analysis::find_steady_precession(file.model, o.tilt_deg * std::numbers::pi / 180.0, o.spin);
   const analysis::SteadyPrecession& r = found.roots;
   if (o.json) {
-    json j;
-    j["model"] = file.name;
-    j["tilt"] = r.tilt;
-    j["spin"] = r.spin;
-    j["I1"] = r.I1;
-    j["I3"] = r.I3;
-    j["mgl"] = r.mgl;
-    j["slow"] = finite_or_null(r.slow);
-    j["fast"] = finite_or_null(r.fast);
-    j["slow_nutation"] = finite_or_null(r.slow_nutation);
-    j["fast_nutation"] = finite_or_null(r.fast_nutation);
-    j["minimum_spin"] = r.minimum_spin;
+    json j = {{"model", file.name}};
+    j.update(precession_roots_json(r));
     j["critical_spin"] = r.critical_spin;
-    j["gyroscopic"] = r.gyroscopic;
-    j["gyroscopic_error"] = finite_or_null(r.gyroscopic_error);
     json states = json::array();
     for (const analysis::OperatingPoint& p : found.states) states.push_back(state_json(p));
     j["states"] = std::move(states);

@@ -44,6 +44,24 @@ void sort_whirls(CampbellPoint& point) {
   }
 }
 
+}  // namespace momenta::analysis::detail
+
+namespace momenta::analysis {
+
+std::vector<std::string> whirl_column_names(const CampbellPoint& point) {
+  std::vector<std::string> names;
+  int forward = 0, backward = 0, none = 0;
+  for (const std::string& w : point.whirl) {
+    int& count = w == "forward" ? forward : w == "backward" ? backward : none;
+    names.push_back(fmt::format("{}_{}", w, ++count));
+  }
+  return names;
+}
+
+}  // namespace momenta::analysis
+
+namespace momenta::analysis::detail {
+
 CampbellDiagram campbell_sweep(const WhirlsAt& whirls_at, double from, double to, int points) {
   if (!(from > 0.0) || !(to > from) || !std::isfinite(to) || points < 2) {
     throw InvalidArgument(fmt::format(

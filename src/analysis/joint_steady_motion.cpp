@@ -16,13 +16,10 @@
 namespace momenta::analysis {
 namespace {
 
-// Velocity indices of the free (not prescribed) coordinates, in the order of linearize's states.
-std::vector<int> free_coordinates(const model::Model& model) {
-  std::vector<int> free;
-  for (int i = 0; i < model.nv(); ++i) {
-    if (!model.joint(model.joint_of_v(i)).is_prescribed()) free.push_back(i);
-  }
-  return free;
+// The configuration index of velocity coordinate i of a scalar joint (nq = nv).
+int position_index(const model::Model& model, int i) {
+  const model::Joint& joint = model.joint(model.joint_of_v(i));
+  return joint.q_index + (i - joint.v_index);
 }
 
 // The coordinates with a nonzero rate, each a free scalar coordinate.
@@ -55,25 +52,13 @@ std::vector<int> turning_coordinates(const model::Model& model, const OperatingP
   return turning;
 }
 
-// The state indices (into linearize's x = [δq_f; v_f]) of the turning coordinates' positions.
-std::vector<int> turning_states(const std::vector<int>& free, const std::vector<int>& turning) {
-  std::vector<int> states;
-  for (std::size_t k = 0; k < free.size(); ++k) {
-    if (std::find(turning.begin(), turning.end(), free[k]) != turning.end()) {
-      states.push_back(static_cast<int>(k));
-    }
-  }
-  return states;
-}
-
 // Without outputs named or defined in the model: the configuration states that do not turn.
 LinearizationOptions with_default_outputs(const model::Model& model, LinearizationOptions options,
-                                          const std::vector<int>& removed) {
+                                          const std::vector<std::string>& turning) {
   if (!options.outputs.empty() || !options.output_specs.empty()) return options;
   const std::vector<std::string> names = linear_state_names(model);
-  const std::size_t nf = names.size() / 2;
-  for (std::size_t k = 0; k < nf; ++k) {
-    if (std::find(removed.begin(), removed.end(), static_cast<int>(k)) == removed.end()) {
+  for (std::size_t k = 0; k < names.size() / 2; ++k) {
+    if (std::find(turning.begin(), turning.end(), names[k]) == turning.end()) {
       options.outputs.push_back(names[k]);
     }
   }
@@ -162,10 +147,10 @@ class WhirlMeter {
   WhirlMeter(const model::Model& model, const JointSteadyMotion& m)
       : model_(model),
         data_(model),
-        n_(m.spin_axis_W),
         sign_(m.speed >= 0.0 ? 1.0 : -1.0),
         position_of_(m.reduced_coordinates) {
     dynamics::forward_kinematics(model, data_, m.point.q);
+    n_ = spin_axis(model, data_, m.turning.front());
     for (int b = 1; b < model.num_bodies(); ++b) {
       const inertia::MassProperties& p = model.body(b).mass_properties;
       if (!(p.mass() > 0.0)) continue;
@@ -177,6 +162,8 @@ class WhirlMeter {
       bodies_.push_back({p.mass(), transverse, std::move(J)});
     }
   }
+
+  const Vec3& spin_axis_W() const { return n_; }
 
   std::string whirl(const Eigen::VectorXcd& x) const {
     if (n_.isZero()) return "none";
@@ -219,24 +206,26 @@ class WhirlMeter {
 
 // Linearizes at m.point, checks it is steady, reduces and classifies the modes.
 void analyse(const model::Model& model, JointSteadyMotion& m, const LinearizationOptions& options) {
-  const std::vector<int> removed = turning_states(free_coordinates(model), m.turning);
-  m.full = linearize(model, m.point, with_default_outputs(model, options, removed));
+  m.full = linearize(model, m.point, with_default_outputs(model, options, m.turning_names));
   m.point = m.full.point;
-  m.reduced = reduced_system(m.full.system, removed);
+  // The turning positions' states (into x = [δq_f; v_f]) go; the other free coordinates stay.
+  std::vector<int> removed;
   m.reduced_coordinates.clear();
-  for (const int i : m.full.coordinates) {
-    if (std::find(m.turning.begin(), m.turning.end(), i) == m.turning.end()) {
+  for (std::size_t k = 0; k < m.full.coordinates.size(); ++k) {
+    const int i = m.full.coordinates[k];
+    if (std::find(m.turning.begin(), m.turning.end(), i) != m.turning.end()) {
+      removed.push_back(static_cast<int>(k));
+    } else {
       m.reduced_coordinates.push_back(i);
     }
   }
+  m.reduced = reduced_system(m.full.system, removed);
   const double rate = spectral_radius(m.reduced.A());
   m.residual = steady_residual(model, m, rate);
 
-  dynamics::Data data(model);
-  dynamics::forward_kinematics(model, data, m.point.q);
-  m.spin_axis_W = spin_axis(model, data, m.turning.front());
   m.speed = m.point.v[m.turning.front()];
   const WhirlMeter meter(model, m);
+  m.spin_axis_W = meter.spin_axis_W();
 
   const Eigen::EigenSolver<MatX> solver(m.reduced.A());
   const double scale = std::max(rate, std::abs(m.speed));
@@ -254,7 +243,8 @@ void analyse(const model::Model& model, JointSteadyMotion& m, const Linearizatio
   if (m.stable) m.growth_rate = 0.0;
 }
 
-// How much A changes when the turning positions are shifted, relative to its largest entry.
+// How much A changes when the turning positions are shifted, relative to its largest entry (A
+// does not depend on the inputs and outputs `options` names).
 double cyclic_change(const model::Model& model, const JointSteadyMotion& m,
                      const LinearizationOptions& options, std::string& worst) {
   const double length = characteristic_length(model);
@@ -262,8 +252,7 @@ double cyclic_change(const model::Model& model, const JointSteadyMotion& m,
   const double largest = std::max(A0.cwiseAbs().maxCoeff(), 1e-300);
   double change = 0.0;
   for (const int i : m.turning) {
-    const model::Joint& joint = model.joint(model.joint_of_v(i));
-    const int qi = joint.q_index + (i - joint.v_index);  // scalar joints: nq = nv
+    const int qi = position_index(model, i);
     const double unit = detail::is_angle_coordinate(model, i) ? 1.0 : length;
     for (const double shift : {1.0, 2.5}) {
       OperatingPoint shifted = m.point;
@@ -272,7 +261,7 @@ double cyclic_change(const model::Model& model, const JointSteadyMotion& m,
       const double c = (A - A0).cwiseAbs().maxCoeff() / largest;
       if (c > change) {
         change = c;
-        worst = model.v_name(i);
+        worst = model.q_name(qi);
       }
     }
   }
@@ -287,15 +276,10 @@ JointSteadyMotion joint_steady_motion(const model::Model& model, const Operating
   JointSteadyMotion m;
   m.point = point;
   m.turning = turning_coordinates(model, point);
-  for (const int i : m.turning) {
-    const model::Joint& joint = model.joint(model.joint_of_v(i));
-    m.turning_names.push_back(model.q_name(joint.q_index + (i - joint.v_index)));
-  }
+  for (const int i : m.turning) m.turning_names.push_back(model.q_name(position_index(model, i)));
   analyse(model, m, options);
   std::string worst;
-  const LinearizationOptions checked =
-      with_default_outputs(model, options, turning_states(free_coordinates(model), m.turning));
-  m.cyclic_residual = cyclic_change(model, m, checked, worst);
+  m.cyclic_residual = cyclic_change(model, m, options, worst);
   if (!(m.cyclic_residual <= 1e-8)) {
     throw InvalidArgument(fmt::format(
         "'{}' turns, but the dynamics depend on its position (the linearization changes by "

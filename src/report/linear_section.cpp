@@ -218,13 +218,7 @@ json campbell_json(const io::ModelFile& file, const LinearSettings& settings) {
     const std::vector<analysis::CampbellPoint>& points = c.diagram.points;
     // One series per whirl, named as `momenta campbell` names its columns; a speed where the
     // motion is unstable, or the modes change in number, has no value.
-    std::vector<std::string> names;
-    int forward = 0, backward = 0, other = 0;
-    for (const std::string& w : points.front().whirl) {
-      names.push_back(w == "forward"    ? fmt::format("forward_{}", ++forward)
-                      : w == "backward" ? fmt::format("backward_{}", ++backward)
-                                        : fmt::format("no_whirl_{}", ++other));
-    }
+    const std::vector<std::string> names = analysis::whirl_column_names(points.front());
     std::vector<double> speeds;
     json series = json::array();
     for (const analysis::CampbellPoint& p : points) speeds.push_back(p.speed);

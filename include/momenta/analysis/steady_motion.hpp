@@ -94,6 +94,10 @@ struct CampbellPoint {
   bool stable = true;
 };
 
+/// A name for each whirl of a point, as the Campbell table's columns: "backward_1", "forward_1",
+/// "none_1", … numbered within each kind in the point's order.
+std::vector<std::string> whirl_column_names(const CampbellPoint& point);
+
 /// A critical speed: a forward whirl's frequency equals the spin speed (the 1× line, where an
 /// unbalance, which turns with the rotor, excites it).
 struct CriticalSpeed {
