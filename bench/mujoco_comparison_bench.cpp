@@ -31,6 +31,7 @@
 #include "momenta/dynamics/crba.hpp"
 #include "momenta/dynamics/rnea.hpp"
 #include "momenta/integrate/integrator.hpp"
+#include "momenta/io/model_file.hpp"
 #include "momenta/system/multibody_system.hpp"
 #include "momenta/system/rigid_body_integrator.hpp"
 #include "momenta_test/multibody_models.hpp"
@@ -266,6 +267,53 @@ void BM_Momenta_FreeBody(benchmark::State& state) {
   report_drift(state, s.v.head<3>(), model.initial_v().head<3>());
 }
 
+// The double pendulum of examples/double_pendulum.yaml (two 1 kg point masses on 1 m rods, upper
+// rod horizontal, from rest), RK4 at h = 1 ms: one step, the peer figure of a sweep's cost
+// (docs/sweeps.md; bench/sweep_bench.cpp runs the same model through momenta sweep). MuJoCo needs
+// a positive inertia: 1e-9 kg·m², nothing against the 1 kg·m² the masses carry about the pivots.
+void BM_MuJoCo_DoublePendulumRK4(benchmark::State& state) {
+  const char* xml =
+      "<mujoco><option timestep='0.001' integrator='RK4' gravity='0 0 -9.81'/><worldbody>"
+      "<body name='mass1'><joint name='upper' type='hinge' axis='0 1 0'/>"
+      "<inertial pos='0 0 -1' mass='1' diaginertia='1e-9 1e-9 1e-9'/>"
+      "<body name='mass2' pos='0 0 -1'><joint name='lower' type='hinge' axis='0 1 0'/>"
+      "<inertial pos='0 0 -1' mass='1' diaginertia='1e-9 1e-9 1e-9'/></body></body>"
+      "</worldbody></mujoco>";
+  mjVFS vfs;
+  mj_defaultVFS(&vfs);
+  mj_makeEmptyFileVFS(&vfs, "pendulum.xml", static_cast<int>(std::strlen(xml)));
+  std::memcpy(vfs.filedata[mj_findFileVFS(&vfs, "pendulum.xml")], xml, std::strlen(xml));
+  char error[1000] = "";
+  mjModel* m = mj_loadXML("pendulum.xml", &vfs, error, sizeof(error));
+  mj_deleteVFS(&vfs);
+  if (!m) {
+    std::fprintf(stderr, "MuJoCo could not load the double pendulum: %s\n", error);
+    std::exit(1);
+  }
+  mjData* d = mj_makeData(m);
+  d->qpos[0] = M_PI / 2;
+  for (auto _ : state) {
+    mj_step(m, d);
+    benchmark::DoNotOptimize(d->qpos);
+  }
+  mj_deleteData(d);
+  mj_deleteModel(m);
+}
+
+void BM_Momenta_DoublePendulumRK4(benchmark::State& state) {
+  static const io::ModelFile file = io::read_model_file("examples/double_pendulum.yaml");
+  system::MultibodySystem system(file.model);
+  std::unique_ptr<integrate::Integrator> integrator = integrate::make_integrator("rk4");
+  integrate::State s{0.0, file.model.initial_q(), file.model.initial_v()};
+  integrator->initialize(system, s);
+  for (auto _ : state) {
+    integrator->step(system, s, 1e-3);
+    benchmark::DoNotOptimize(s.q.data());
+  }
+}
+
+BENCHMARK(BM_MuJoCo_DoublePendulumRK4)->Iterations(1000000)->Unit(benchmark::kNanosecond);
+BENCHMARK(BM_Momenta_DoublePendulumRK4)->Iterations(1000000)->Unit(benchmark::kNanosecond);
 BENCHMARK(BM_MuJoCo_FreeBodyRK4)->Iterations(kFreeBodySteps)->Unit(benchmark::kNanosecond);
 BENCHMARK(BM_Momenta_FreeBody)
     ->DenseRange(0, 4)

@@ -17,6 +17,11 @@ if [[ "${MOMENTA_WITHOUT_PYTHON:-0}" != 1 ]]; then
              python3-nbclient python3-nbformat python3-ipykernel python3-pip python3-setuptools
              python3-wheel)
 fi
+# Sweeps: trajectories in HDF5 and runs across processes with MPI (both optional in the build;
+# the tests use them), left out by run-example.
+if [[ "${MOMENTA_WITHOUT_PYTHON:-0}" != 1 ]]; then
+  packages+=(libhdf5-dev libopenmpi-dev openmpi-bin)
+fi
 # Node.js and npm build the HTML report's front-end (web/): from Debian unless a node with npm is
 # already installed (NodeSource's nodejs carries its own npm and conflicts with Debian's).
 if ! command -v node >/dev/null || ! command -v npm >/dev/null; then packages+=(nodejs npm); fi

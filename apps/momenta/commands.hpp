@@ -34,6 +34,16 @@ void add_modes_command(CLI::App& app);
 void add_campbell_command(CLI::App& app);
 void add_steady_command(CLI::App& app);
 
+/// `momenta sweep SWEEP -o results.csv` and `momenta sweep-merge`: sweeps and Monte Carlo.
+void add_sweep_command(CLI::App& app);
+void add_sweep_merge_command(CLI::App& app);
+
+/// Thrown by a command that has nothing to add to its exit code (an MPI rank other than 0, whose
+/// error rank 0 reports).
+struct QuietExit {
+  int code = 1;
+};
+
 /// `momenta response MODEL`: step, impulse or Bode response of one input–output pair.
 void add_response_command(CLI::App& app);
 

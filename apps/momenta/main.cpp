@@ -54,6 +54,8 @@ int main(int argc, char** argv) {
   momenta::cli::add_response_command(app);
   momenta::cli::add_campbell_command(app);
   momenta::cli::add_steady_command(app);
+  momenta::cli::add_sweep_command(app);
+  momenta::cli::add_sweep_merge_command(app);
 
   if (refuse_unknown_command(app, argc, argv)) return 2;
   try {
@@ -61,6 +63,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : 2;
+  } catch (const momenta::cli::QuietExit& e) {
+    return e.code;
   } catch (const momenta::Interrupted& e) {
     fmt::print(stderr, "momenta: {}\n", e.what());
     return 130;

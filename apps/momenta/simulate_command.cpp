@@ -19,6 +19,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
 #include "momenta/io/model_file.hpp"
@@ -102,13 +103,6 @@ simulate::SimulationOptions merge(const SimulateOptions& o, const model::Simulat
   return resolved.options;
 }
 
-// SIGINT and SIGTERM end a run on a whole row (the CSV stays readable); a second one kills.
-std::atomic<bool> stop_requested{false};
-extern "C" void request_stop(int signal_number) {
-  stop_requested.store(true);
-  std::signal(signal_number, SIG_DFL);
-}
-
 // A progress line on a terminal: time reached, elapsed, and an estimate of what is left.
 std::function<void(double)> progress_line(double duration) {
   const auto start = std::chrono::steady_clock::now();
@@ -146,7 +140,8 @@ void run(const SimulateOptions& o) {
         fmt::format("{}: the report file exists; pass --force to overwrite it", *o.report));
   }
   const bool show_progress = !o.quiet && isatty(STDERR_FILENO);
-  options.stop = &stop_requested;
+  // SIGINT and SIGTERM end a run on a whole row (the CSV stays readable).
+  options.stop = &stop_on_signals();
   if (show_progress) options.progress = progress_line(options.duration);
   // Built before the output is opened: a bad option or output leaves no empty file behind.
   simulate::Simulation simulation(file.model, file.outputs, options);
@@ -164,9 +159,6 @@ void run(const SimulateOptions& o) {
     writer = std::make_unique<simulate::CsvWriter>(stdout);
   }
 
-  stop_requested.store(false);
-  std::signal(SIGINT, request_stop);
-  std::signal(SIGTERM, request_stop);
   const auto clear_progress = [&] {
     if (show_progress) fmt::print(stderr, "\r\033[K");
   };

@@ -87,38 +87,6 @@ constexpr std::array<std::string_view, 9> kModelFileKeys = {"name",   "descripti
                                                             "bodies", "joints",      "forces",
                                                             "inputs", "outputs",     "simulation"};
 
-// `simulation:` — defaults for `momenta simulate`.
-model::SimulationSettings read_simulation(const YamlNode& root) {
-  model::SimulationSettings s;
-  const auto node = root.find("simulation");
-  if (!node || node->is_null()) return s;
-  node->expect_map("a map {duration, step, integrator, rtol, atol, every}");
-  node->check_keys({"duration", "step", "integrator", "rtol", "atol", "every"});
-  s.duration = node->find_number("duration", Bound::kPositive);
-  s.step = node->find_number("step", Bound::kPositive);
-  s.relative_tolerance = node->find_number("rtol", Bound::kPositive);
-  s.absolute_tolerance = node->find_number("atol", Bound::kPositive);
-  if (const auto integrator = node->find("integrator")) {
-    const std::string name = integrator->as_string();
-    try {
-      model::integrator_info(name);
-    } catch (const InvalidArgument& e) {
-      integrator->fail(e.what());
-    }
-    s.integrator = name;
-  }
-  if (const auto every = node->find("every")) {
-    const long long n = every->as_integer();
-    if (n < 1) every->fail(fmt::format("must be a whole number >= 1, got {}", n));
-    s.every = static_cast<long>(n);
-  }
-  if (s.step && s.duration && *s.step > *s.duration) {
-    node->at("step").fail(
-        fmt::format("step {} s is longer than the duration {} s", *s.step, *s.duration));
-  }
-  return s;
-}
-
 // The declarations of one kind of item.
 const detail::Declared& declared_of(ModelItemRef::Kind kind, const Context& ctx) {
   switch (kind) {
@@ -155,7 +123,41 @@ std::vector<ItemLocation> item_locations(const Context& ctx) {
   return locations;
 }
 
-ModelFile compose(const YamlNode& root, const std::filesystem::path& base_dir) {
+}  // namespace
+
+// `simulation:` — defaults for `momenta simulate`.
+model::SimulationSettings detail::read_simulation(const YamlNode& root) {
+  model::SimulationSettings s;
+  const auto node = root.find("simulation");
+  if (!node || node->is_null()) return s;
+  node->expect_map("a map {duration, step, integrator, rtol, atol, every}");
+  node->check_keys({"duration", "step", "integrator", "rtol", "atol", "every"});
+  s.duration = node->find_number("duration", Bound::kPositive);
+  s.step = node->find_number("step", Bound::kPositive);
+  s.relative_tolerance = node->find_number("rtol", Bound::kPositive);
+  s.absolute_tolerance = node->find_number("atol", Bound::kPositive);
+  if (const auto integrator = node->find("integrator")) {
+    const std::string name = integrator->as_string();
+    try {
+      model::integrator_info(name);
+    } catch (const InvalidArgument& e) {
+      integrator->fail(e.what());
+    }
+    s.integrator = name;
+  }
+  if (const auto every = node->find("every")) {
+    const long long n = every->as_integer();
+    if (n < 1) every->fail(fmt::format("must be a whole number >= 1, got {}", n));
+    s.every = static_cast<long>(n);
+  }
+  if (s.step && s.duration && *s.step > *s.duration) {
+    node->at("step").fail(
+        fmt::format("step {} s is longer than the duration {} s", *s.step, *s.duration));
+  }
+  return s;
+}
+
+ModelFile detail::compose_model_file(const YamlNode& root, const std::filesystem::path& base_dir) {
   root.expect_map("a model file: a map with 'bodies' and 'joints'");
   root.check_keys(kModelFileKeys);
 
@@ -187,7 +189,7 @@ ModelFile compose(const YamlNode& root, const std::filesystem::path& base_dir) {
   }();
 
   std::vector<model::OutputSpec> outputs = detail::read_outputs(root, ctx, model);
-  model::SimulationSettings simulation = read_simulation(root);
+  model::SimulationSettings simulation = detail::read_simulation(root);
   std::vector<std::vector<PartSummary>> body_parts(model.bodies().size());
   for (std::size_t b = 1; b < body_parts.size(); ++b) {
     body_parts[b] = std::move(ctx.body_parts[model.bodies()[b].name]);
@@ -197,10 +199,8 @@ ModelFile compose(const YamlNode& root, const std::filesystem::path& base_dir) {
       root.file(),     item_locations(ctx),    std::move(body_parts)};
 }
 
-}  // namespace
-
 ModelFile read_model_file(const std::filesystem::path& path) {
-  return compose(YamlNode::load_file(path), path.parent_path());
+  return detail::compose_model_file(YamlNode::load_file(path), path.parent_path());
 }
 
 std::optional<ParseError> ModelFile::locate(const Error& error) const {
@@ -215,7 +215,7 @@ std::optional<ParseError> ModelFile::locate(const Error& error) const {
 
 ModelFile parse_model_file(const std::string& text, const std::string& file_name,
                            const std::filesystem::path& base_dir) {
-  return compose(YamlNode::load_string(text, file_name), base_dir);
+  return detail::compose_model_file(YamlNode::load_string(text, file_name), base_dir);
 }
 
 }  // namespace momenta::io

@@ -17,6 +17,13 @@
 
 namespace momenta::io::detail {
 
+/// Reads, checks and builds the model file whose parsed document is `root` (read_model_file
+/// after the parsing); paths inside it are relative to `base_dir`.
+ModelFile compose_model_file(const YamlNode& root, const std::filesystem::path& base_dir);
+
+/// The `simulation:` section of `root` (a model file's, or a sweep file's), checked.
+model::SimulationSettings read_simulation(const YamlNode& root);
+
 /// The things of one kind declared in a file (bodies, joints, force elements, signals): their
 /// names in file order and the node that declared each, for messages at its line.
 class Declared {

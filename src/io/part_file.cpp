@@ -20,6 +20,7 @@
 #include "momenta/io/yaml_reader.hpp"
 #include "momenta/math/rotation.hpp"
 #include "one_line.hpp"
+#include "part_file_internal.hpp"
 
 namespace momenta::io {
 namespace {
@@ -389,11 +390,9 @@ inertia::MassProperties read_mesh_mass_properties(const std::filesystem::path& p
   return mesh_mass_properties(mesh, path, amount, shell);
 }
 
-namespace {
-
 // Reads and composes the parts of a parsed part file.
-CompositePart compose(const YamlNode& root, const std::filesystem::path& base_dir,
-                      const PartFileOptions& options) {
+CompositePart detail::compose_part_file(const YamlNode& root, const std::filesystem::path& base_dir,
+                                        const PartFileOptions& options) {
   root.expect_map("a part file: a map with a 'parts' list");
   root.check_keys(kPartFileKeys);
 
@@ -458,16 +457,14 @@ CompositePart compose(const YamlNode& root, const std::filesystem::path& base_di
   return result;
 }
 
-}  // namespace
-
 CompositePart parse_part_file(const std::string& text, const std::string& file_name,
                               const std::filesystem::path& base_dir,
                               const PartFileOptions& options) {
-  return compose(YamlNode::load_string(text, file_name), base_dir, options);
+  return detail::compose_part_file(YamlNode::load_string(text, file_name), base_dir, options);
 }
 
 CompositePart read_part_file(const std::filesystem::path& path, const PartFileOptions& options) {
-  return compose(YamlNode::load_file(path), path.parent_path(), options);
+  return detail::compose_part_file(YamlNode::load_file(path), path.parent_path(), options);
 }
 
 }  // namespace momenta::io

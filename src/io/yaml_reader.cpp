@@ -12,6 +12,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "momenta/common/suggest.hpp"
+#include "yaml_access.hpp"
 
 namespace momenta::io {
 
@@ -466,3 +467,15 @@ std::optional<Vec3> YamlNode::find_angles(std::string_view key) const {
 }
 
 }  // namespace momenta::io
+
+namespace momenta::io::detail {
+
+YAML::Node YamlAccess::yaml(const YamlNode& node) { return node.impl_->node; }
+
+YamlNode YamlAccess::document(YAML::Node root, const std::string& file_name) {
+  const auto [line, column] = position_of(root.Mark());
+  return YamlNode::make(YamlNode::Impl{
+      std::move(root), std::make_shared<const std::string>(file_name), "", line, column});
+}
+
+}  // namespace momenta::io::detail

@@ -35,6 +35,10 @@
 
 namespace momenta::io {
 
+namespace detail {
+struct YamlAccess;  // the readers' own access to the parsed document (src/io/yaml_access.hpp)
+}  // namespace detail
+
 /// Largest magnitude of a number read from a file (SI units). Products of three such numbers
 /// (m L², k x², ½ m v²) stay finite in double precision; nothing physical comes near it, and a
 /// 1e308 written by mistake is refused at its line instead of overflowing later.
@@ -148,6 +152,7 @@ class YamlNode {
   std::optional<Vec3> find_angles(std::string_view key) const;
 
  private:
+  friend struct detail::YamlAccess;
   struct Impl;
   explicit YamlNode(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
   static YamlNode make(Impl impl);

@@ -1,0 +1,287 @@
+// `momenta sweep SWEEP.yaml -o results.csv` and `momenta sweep-merge`: a sweep's runs on every
+// core, across the ranks of an MPI job, or one shard of them (docs/sweeps.md).
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "interrupt.hpp"
+#include "momenta/common/error.hpp"
+#include "momenta/io/sweep_file.hpp"
+#include "momenta/sweep/distributed.hpp"
+#include "momenta/sweep/execution.hpp"
+#include "momenta/sweep/results_file.hpp"
+#include "momenta/sweep/trajectory_store.hpp"
+#include "option_checks.hpp"
+
+namespace momenta::cli {
+namespace {
+
+struct SweepOptions {
+  std::string sweep;
+  std::string output;
+  int threads = 0;  // 0: every core (shared among the ranks on a host)
+  bool resume = false;
+  bool force = false;
+  bool no_timing = false;
+  bool quiet = false;
+  std::string shard;  // "k/N"
+};
+
+struct Shard {
+  long index = 0;  // 0-based
+  long count = 1;
+};
+
+Shard parse_shard(const std::string& text) {
+  Shard s;
+  long k = 0;
+  char slash = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%ld%c%ld%c", &k, &slash, &s.count, &extra) != 3 || slash != '/' ||
+      s.count < 1 || k < 1 || k > s.count) {
+    throw CLI::ValidationError("--shard",
+                               fmt::format("'{}': give k/N with 1 ≤ k ≤ N (--shard 2/4)", text));
+  }
+  s.index = k - 1;
+  return s;
+}
+
+// The runs this process is responsible for: every run, or those of its shard (run % N == k − 1).
+std::vector<long> runs_of(long run_count, const Shard& shard) {
+  std::vector<long> runs;
+  for (long run = shard.index; run < run_count; run += shard.count) runs.push_back(run);
+  return runs;
+}
+
+// With --resume: the runs the file already holds must be the first of the list.
+std::size_t finished_prefix(const SweepOptions& o, const std::vector<std::string>& header,
+                            const std::vector<long>& runs) {
+  const std::vector<long> finished = sweep::read_finished_runs(o.output, header);
+  for (std::size_t i = 0; i < finished.size(); ++i) {
+    if (i >= runs.size() || finished[i] != runs[i]) {
+      throw FileError(fmt::format(
+          "{}: row {} holds run {}, not run {} that this sweep{} writes there: the file was "
+          "written by another sweep or shard",
+          o.output, i + 2, finished[i], i < runs.size() ? runs[i] : -1,
+          o.shard.empty() ? "" : " shard"));
+    }
+  }
+  return finished.size();
+}
+
+int threads_per_process(int asked) {
+  if (asked > 0) return asked;
+  int on_this_host = 1;
+  if (const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE"))
+    on_this_host = std::atoi(local);
+  return std::max(1, sweep::default_thread_count() / std::max(1, on_this_host));
+}
+
+// A progress line on a terminal: runs done, failures, elapsed, an estimate of what is left.
+class Progress {
+ public:
+  Progress(bool shown, std::size_t total) : shown_(shown), total_(total) {}
+  void count(bool ok) {
+    ++done_;
+    failed_ += ok ? 0 : 1;
+    if (!shown_) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_ < std::chrono::milliseconds(200) && done_ < total_) return;
+    last_ = now;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const double left = elapsed * static_cast<double>(total_ - done_) / static_cast<double>(done_);
+    fmt::print(stderr,
+               "\r  run {} of {} ({:.0f} %), {} failed, {:.1f} s elapsed, about {:.1f} s left   ",
+               done_, total_, 100.0 * static_cast<double>(done_) / static_cast<double>(total_),
+               failed_, elapsed, left);
+  }
+  void clear() const {
+    if (shown_) fmt::print(stderr, "\r\033[K");
+  }
+
+ private:
+  bool shown_;
+  std::size_t total_;
+  std::size_t done_ = 0;
+  std::size_t failed_ = 0;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point last_ = start_;
+};
+
+void print_summary(const sweep::SweepRunner& runner, const std::string& output, double seconds,
+                   const std::string& where) {
+  const sweep::ResultsSummary s = sweep::summarize_results(output, runner.metric_columns());
+  fmt::print(stderr, "momenta: {} runs in {}: {} ok, {} failed; {:.3g} s {}\n", s.runs, output,
+             s.runs - s.failures, s.failures, seconds, where);
+  if (s.failures > 0) fmt::print(stderr, "  first failure: {}\n", s.first_failure);
+  std::size_t width = 6;
+  for (const auto& f : s.figures) width = std::max(width, f.column.size());
+  fmt::print(stderr, "  {:<{}}  {:>6}  {:>13}  {:>13}  {:>13}\n", "metric", width, "runs", "min",
+             "median", "max");
+  for (const auto& f : s.figures) {
+    if (f.count == 0) {
+      fmt::print(stderr, "  {:<{}}  {:>6}  {:>13}\n", f.column, width, 0, "(undefined)");
+      continue;
+    }
+    fmt::print(stderr, "  {:<{}}  {:>6}  {:>13.6g}  {:>13.6g}  {:>13.6g}\n", f.column, width,
+               f.count, f.min, f.median, f.max);
+  }
+}
+
+void run_sweep(const SweepOptions& o) {
+  std::optional<sweep::MpiWorld> world;
+  if (sweep::started_by_mpi_launcher() && sweep::mpi_available()) world.emplace();
+  const bool root = !world || world->rank() == 0;
+  try {
+    const sweep::SweepRunner runner(io::read_sweep_file(o.sweep));
+    const Shard shard = o.shard.empty() ? Shard{} : parse_shard(o.shard);
+    const std::vector<long> all = runs_of(runner.run_count(), shard);
+    const std::vector<std::string> header = sweep::results_header(runner, !o.no_timing);
+    const int threads = threads_per_process(o.threads);
+
+    // Rank 0 (or the one process) opens the outputs; the others work for it.
+    std::unique_ptr<sweep::ResultsWriter> writer;
+    std::unique_ptr<sweep::TrajectoryStore> trajectories;
+    std::size_t skipped = 0;
+    if (root) {
+      try {
+        const bool resuming = o.resume && std::filesystem::exists(o.output);
+        if (resuming) skipped = finished_prefix(o, header, all);
+        writer = std::make_unique<sweep::ResultsWriter>(o.output, header, o.force, resuming);
+        if (const auto& path = runner.spec().trajectories) {
+          std::filesystem::path where = *path;
+          if (shard.count > 1 && (where.extension() == ".h5" || where.extension() == ".hdf5")) {
+            where.replace_extension(fmt::format(".shard{}of{}{}", shard.index + 1, shard.count,
+                                                path->extension().string()));
+          }
+          trajectories = sweep::open_trajectory_store(where, resuming, o.force);
+        }
+      } catch (...) {
+        if (world) world->agree(false);
+        throw;
+      }
+    }
+    if (world && !world->agree(true)) throw Interrupted("rank 0 could not start");
+    const std::span<const long> runs = std::span(all).subspan(root ? skipped : 0);
+
+    Progress progress(root && !o.quiet && isatty(STDERR_FILENO), runs.size());
+    const sweep::Deliver deliver = [&](sweep::RunOutcome&& outcome) {
+      writer->write(sweep::results_row(outcome, !o.no_timing));
+      if (trajectories) trajectories->write(outcome);
+      progress.count(outcome.ok);
+    };
+    const std::atomic<bool>& stop = stop_on_signals();
+    const auto start = std::chrono::steady_clock::now();
+    std::size_t delivered = 0;
+    try {
+      delivered = world ? sweep::run_across_ranks(*world, runner, runs, threads, deliver, &stop)
+                        : sweep::run_in_order(runner, runs, threads, deliver, &stop);
+    } catch (...) {
+      progress.clear();
+      if (world && world->size() > 1) {
+        fmt::print(stderr, "momenta: error on rank 0 during the sweep; ending every rank\n");
+        world->abort(1);
+      }
+      throw;
+    }
+    progress.clear();
+    if (!root) return;
+    if (delivered < runs.size()) {
+      throw Interrupted(fmt::format(
+          "interrupted: {} of {} runs written to {}; `momenta sweep {} -o {} --resume` goes on",
+          skipped + delivered, all.size(), o.output, o.sweep, o.output));
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const std::string where = world
+                                  ? fmt::format("on {} ranks × {} threads", world->size(), threads)
+                                  : fmt::format("on {} thread{}", threads, threads == 1 ? "" : "s");
+    print_summary(
+        runner, o.output, seconds,
+        skipped > 0 ? fmt::format("for the {} runs left, {}", runs.size(), where) : where);
+  } catch (const Error&) {
+    if (!root) throw QuietExit{1};  // rank 0 says it
+    throw;
+  }
+}
+
+}  // namespace
+
+void add_sweep_command(CLI::App& app) {
+  auto o = std::make_shared<SweepOptions>();
+  CLI::App* command = app.add_subcommand(
+      "sweep",
+      "Run a sweep or Monte Carlo study (docs/sweeps.md): one row per run in a CSV file.\n"
+      "Example: momenta sweep examples/sweeps/quarter_car_ride.yaml -o ride.csv\n"
+      "Across machines: mpirun -n 8 momenta sweep SWEEP.yaml -o results.csv");
+  command->add_option("sweep", o->sweep, "The sweep file (YAML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("-o,--output", o->output, "The results file (CSV)")
+      ->required()
+      ->check(not_a_folder());
+  command
+      ->add_option("--threads", o->threads,
+                   "Threads per process (default: every core, shared among the MPI ranks on a "
+                   "host)")
+      ->check(whole_number_from_one());
+  command->add_flag("--resume", o->resume,
+                    "Go on with the runs a killed or interrupted sweep did not write");
+  command->add_flag("--force", o->force, "Replace an existing results file");
+  command->add_flag("--no-timing", o->no_timing,
+                    "Leave out the wall_s column, so that two sweeps' files are identical");
+  command->add_option("--shard", o->shard,
+                      "Run only shard k of N (runs with run % N = k − 1), for schedulers without "
+                      "MPI; `momenta sweep-merge` joins the shards");
+  command->add_flag("-q,--quiet", o->quiet, "No progress line on the terminal");
+  command->callback([o] {
+    if (o->resume && o->force) {
+      throw CLI::ValidationError("--resume", "give --resume or --force, not both");
+    }
+    run_sweep(*o);
+  });
+}
+
+void add_sweep_merge_command(CLI::App& app) {
+  struct MergeOptions {
+    std::string sweep;
+    std::vector<std::string> parts;
+    std::string output;
+    bool force = false;
+    bool no_timing = false;
+  };
+  auto o = std::make_shared<MergeOptions>();
+  CLI::App* command = app.add_subcommand(
+      "sweep-merge",
+      "Join the results of a sweep's shards into one file, in run order, checking that every run "
+      "is there once.\nExample: momenta sweep-merge SWEEP.yaml part1.csv part2.csv -o results.csv");
+  command->add_option("sweep", o->sweep, "The sweep file the shards ran")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("parts", o->parts, "The shards' results files")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("-o,--output", o->output, "The merged results file")
+      ->required()
+      ->check(not_a_folder());
+  command->add_flag("--force", o->force, "Replace an existing output file");
+  command->add_flag("--no-timing", o->no_timing, "The shards were written with --no-timing");
+  command->callback([o] {
+    const sweep::SweepRunner runner(io::read_sweep_file(o->sweep));
+    const std::vector<std::filesystem::path> parts(o->parts.begin(), o->parts.end());
+    sweep::merge_results(parts, sweep::results_header(runner, !o->no_timing), runner.run_count(),
+                         o->output, o->force);
+    fmt::print(stderr, "momenta: {} runs from {} files merged into {}\n", runner.run_count(),
+               parts.size(), o->output);
+  });
+}
+
+}  // namespace momenta::cli

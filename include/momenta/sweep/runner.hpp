@@ -1,0 +1,61 @@
+#pragma once
+// One run of a sweep: the file with the run's parameter values set, the job carried out, the
+// metrics taken (docs/sweeps.md). What a run does depends on the spec and the run's index only.
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "momenta/sweep/sweep_spec.hpp"
+
+namespace momenta::sweep {
+
+/// What one run gave.
+struct RunOutcome {
+  long run = 0;
+  std::vector<double> parameters;  ///< the values it ran with
+  std::vector<double> metrics;     ///< one per metric column; NaN where undefined or failed
+  bool ok = true;
+  std::string message;  ///< why it failed (one line), empty when ok
+  double wall_seconds = 0.0;
+  /// Its whole table when the spec asks for trajectories (simulate jobs), row-major.
+  std::vector<std::string> trajectory_columns;
+  std::vector<double> trajectory;
+};
+
+class SweepRunner {
+ public:
+  /// Reads the model (or part) file and checks everything a run could be refused for before
+  /// any runs: every parameter path (with a did-you-mean), each parameter's extreme values (a
+  /// grid's smallest and largest, a distribution's finite bounds or its median) set in the
+  /// model one at a time, every metric against the job and the columns of the nominal run.
+  /// Throws ParseError at the sweep file's line of the parameter or metric at fault, and what
+  /// the model file's reader throws for the file itself.
+  explicit SweepRunner(SweepSpec spec);
+  ~SweepRunner();
+  SweepRunner(const SweepRunner&) = delete;
+  SweepRunner& operator=(const SweepRunner&) = delete;
+
+  const SweepSpec& spec() const { return spec_; }
+  long run_count() const;
+  /// The results' columns for parameters and metrics, in order.
+  const std::vector<std::string>& parameter_columns() const { return parameter_columns_; }
+  const std::vector<std::string>& metric_columns() const { return metric_columns_; }
+
+  /// Carries out run `run` (0 ≤ run < run_count()). A run that fails (a value the model reader
+  /// refuses, a state that stops being finite, a linearization that does not exist) comes back
+  /// with ok false and the message, its metrics NaN: it does not throw. Safe to call from many
+  /// threads at once.
+  RunOutcome run(long run) const;
+
+ private:
+  struct Job;
+  void run_job(const std::vector<double>& values, RunOutcome& outcome) const;
+
+  SweepSpec spec_;
+  std::unique_ptr<Job> job_;
+  std::vector<std::string> parameter_columns_;
+  std::vector<std::string> metric_columns_;
+};
+
+}  // namespace momenta::sweep

@@ -1,0 +1,29 @@
+#pragma once
+// Where a sweep's whole tables go when its file asks for trajectories (docs/sweeps.md): one HDF5
+// file with a dataset per run (`/run_000042`: rows × columns of doubles, its column names in the
+// attribute `columns`, comma-separated), or a folder with a CSV file per run (run_000042.csv).
+
+#include <filesystem>
+#include <memory>
+
+#include "momenta/sweep/runner.hpp"
+
+namespace momenta::sweep {
+
+class TrajectoryStore {
+ public:
+  virtual ~TrajectoryStore() = default;
+  /// Stores a run's table (a failed run's: nothing). Throws FileError when writing fails.
+  virtual void write(const RunOutcome& outcome) = 0;
+};
+
+/// Whether this build can write HDF5 (MOMENTA_HDF5).
+bool hdf5_available();
+
+/// An HDF5 store for a path ending in .h5 or .hdf5, else a folder of CSV files. Without `keep`
+/// an existing file or non-empty folder is refused unless `overwrite` (FileError); with `keep`
+/// (a resumed sweep) it is added to, a run stored again replacing its old table.
+std::unique_ptr<TrajectoryStore> open_trajectory_store(const std::filesystem::path& path, bool keep,
+                                                       bool overwrite);
+
+}  // namespace momenta::sweep

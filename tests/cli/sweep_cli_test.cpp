@@ -1,0 +1,193 @@
+// `momenta sweep` and `momenta sweep-merge` as a user runs them: the same file from any thread
+// count, MPI rank count or shard split; a killed sweep resumed to the file an uninterrupted one
+// writes; rows equal to `momenta simulate` and `momenta modes` runs of the changed model.
+
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+
+namespace momenta::test {
+namespace {
+
+const std::string kRide = "examples/sweeps/quarter_car_ride.yaml";
+const std::string kPoles = "examples/sweeps/quarter_car_poles.yaml";
+
+class SweepCli : public CliTest {
+ protected:
+  std::string at(const std::string& name) const { return quoted((dir_ / name).string()); }
+  // A shell command line with the momenta binary in front: for mpirun and timeout.
+  int shell(const std::string& before, const std::string& args) const {
+    const std::string command = before + " " + quoted(MOMENTA_CLI_PATH) + " " + args + " >" +
+                                quoted((dir_ / "shell.out").string()) + " 2>&1";
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  std::string file(const std::string& name) const { return slurp(dir_ / name); }
+};
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+std::vector<std::string> cells_of(const std::string& line) {
+  std::vector<std::string> cells;
+  std::istringstream in(line);
+  for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+  return cells;
+}
+
+TEST_F(SweepCli, ThreadCountsRanksAndShardsGiveTheSameFile) {
+  const CliRun one = momenta("sweep " + kRide + " -o " + at("t1.csv") + " --threads 1 --no-timing");
+  ASSERT_EQ(one.code, 0) << one.err;
+  EXPECT_NE(one.err.find("48 runs"), std::string::npos) << one.err;
+  EXPECT_NE(one.err.find("max(body_y)"), std::string::npos) << one.err;  // the summary
+  const std::string whole = file("t1.csv");
+  ASSERT_EQ(lines_of(whole).size(), 49U);
+  for (const char* threads : {"2", "8"}) {
+    const std::string name = std::string("t") + threads + ".csv";
+    ASSERT_EQ(
+        momenta("sweep " + kRide + " -o " + at(name) + " --no-timing --threads " + threads).code,
+        0);
+    EXPECT_EQ(file(name), whole) << threads << " threads";
+  }
+  // Three shards, merged (given out of order).
+  for (int k = 1; k <= 3; ++k) {
+    const std::string name = "s" + std::to_string(k) + ".csv";
+    ASSERT_EQ(momenta("sweep " + kRide + " -o " + at(name) + " --no-timing --shard " +
+                      std::to_string(k) + "/3")
+                  .code,
+              0);
+  }
+  const CliRun merged = momenta("sweep-merge " + kRide + " " + at("s3.csv") + " " + at("s1.csv") +
+                                " " + at("s2.csv") + " -o " + at("merged.csv") + " --no-timing");
+  ASSERT_EQ(merged.code, 0) << merged.err;
+  EXPECT_EQ(file("merged.csv"), whole);
+  const CliRun short_one =
+      momenta("sweep-merge " + kRide + " " + at("s1.csv") + " -o " + at("m2.csv") + " --no-timing");
+  EXPECT_EQ(short_one.code, 1);
+  EXPECT_NE(short_one.err.find("run 1 is in none of the files"), std::string::npos)
+      << short_one.err;
+  // The default file carries each run's wall time: the same rows but for that column.
+  ASSERT_EQ(momenta("sweep " + kRide + " -o " + at("timed.csv")).code, 0);
+  const auto timed = lines_of(file("timed.csv"));
+  EXPECT_EQ(cells_of(timed[0]).at(9), "wall_s");
+}
+
+#ifdef MOMENTA_TEST_MPI
+TEST_F(SweepCli, MpiRanksGiveTheFileOneProcessWrites) {
+  ASSERT_EQ(momenta("sweep " + kRide + " -o " + at("one.csv") + " --no-timing").code, 0);
+  for (const char* ranks : {"1", "2", "3"}) {
+    const std::string name = std::string("mpi") + ranks + ".csv";
+    const int code = shell(std::string("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
+                                       "OMPI_MCA_rmaps_base_oversubscribe=1 timeout 120 mpirun "
+                                       "--oversubscribe -n ") +
+                               ranks,
+                           "sweep " + kRide + " -o " + at(name) + " --no-timing --threads 1");
+    ASSERT_EQ(code, 0) << file("shell.out");
+    EXPECT_EQ(file(name), file("one.csv")) << ranks << " ranks";
+    EXPECT_NE(file("shell.out").find(std::string("on ") + ranks + " ranks"), std::string::npos)
+        << file("shell.out");
+  }
+}
+#endif
+
+TEST_F(SweepCli, AKilledSweepResumesToTheFileAnUninterruptedOneWrites) {
+  // 240 runs of about 15 ms: killed (SIGKILL, no chance to tidy up) after 0.6 s of 2 threads.
+  std::ofstream(dir_ / "long.yaml")
+      << "model: " << std::filesystem::absolute("examples/quarter_car.yaml").string()
+      << "\nsimulation: {duration: 2.0, step: 0.001, integrator: rk4}\n"
+         "parameters:\n"
+         "  - {path: forces.suspension.stiffness, range: {from: 6e4, to: 2e5, count: 40}}\n"
+         "  - {path: forces.suspension.damping, range: {from: 2000, to: 20000, count: 6}}\n"
+         "metrics:\n  - max: body_y\n  - {settling_time: body_y}\n";
+  const std::string sweep = at("long.yaml");
+  ASSERT_EQ(momenta("sweep " + sweep + " -o " + at("whole.csv") + " --no-timing").code, 0);
+  shell("timeout -s KILL 0.6",
+        "sweep " + sweep + " -o " + at("cut.csv") + " --no-timing --threads 2");
+  const std::size_t written = lines_of(file("cut.csv")).size();
+  ASSERT_GT(written, 1U) << "killed before any run was written";
+  ASSERT_LT(written, 241U) << "finished before it was killed: nothing to resume";
+  // Without --resume or --force the file is kept.
+  const CliRun refused = momenta("sweep " + sweep + " -o " + at("cut.csv") + " --no-timing");
+  EXPECT_EQ(refused.code, 1);
+  EXPECT_NE(refused.err.find("--resume continues"), std::string::npos) << refused.err;
+  const CliRun resumed =
+      momenta("sweep " + sweep + " -o " + at("cut.csv") + " --no-timing --resume");
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find("runs left"), std::string::npos) << resumed.err;
+  EXPECT_EQ(file("cut.csv"), file("whole.csv"));
+  // Resuming a finished sweep runs nothing and changes nothing; another sweep's file is refused.
+  ASSERT_EQ(momenta("sweep " + sweep + " -o " + at("cut.csv") + " --no-timing --resume").code, 0);
+  EXPECT_EQ(file("cut.csv"), file("whole.csv"));
+  const CliRun other =
+      momenta("sweep " + kPoles + " -o " + at("cut.csv") + " --no-timing --resume");
+  EXPECT_EQ(other.code, 1);
+  EXPECT_NE(other.err.find("another sweep"), std::string::npos) << other.err;
+  EXPECT_EQ(momenta("sweep " + sweep + " -o " + at("x.csv") + " --resume --force").code, 2);
+}
+
+// A model file with the suspension's numbers set, as a user would edit it by hand.
+std::string edited_quarter_car(double ks, double b) {
+  std::string text = slurp("examples/quarter_car.yaml");
+  text = std::regex_replace(text, std::regex("stiffness: 130000\\.0"),
+                            fmt::format("stiffness: {}", ks));
+  text = std::regex_replace(text, std::regex("damping: 9800\\.0"), fmt::format("damping: {}", b));
+  return text;
+}
+
+TEST_F(SweepCli, RowsEqualSimulateAndModesRunsOfTheEditedModel) {
+  ASSERT_EQ(momenta("sweep " + kRide + " -o " + at("ride.csv") + " --no-timing").code, 0);
+  const auto ride = lines_of(file("ride.csv"));
+  for (std::size_t row : {1U, 20U, 48U}) {
+    const auto cells = cells_of(ride[row]);
+    std::ofstream(dir_ / "car.yaml")
+        << edited_quarter_car(std::stod(cells[1]), std::stod(cells[2]));
+    const CliRun sim = momenta("simulate " + at("car.yaml") +
+                               " --integrator rk4 --dt 0.001 "
+                               "--duration 2 --force -o " +
+                               at("car.csv"));
+    ASSERT_EQ(sim.code, 0) << sim.err;
+    const auto table = lines_of(file("car.csv"));
+    const auto header = cells_of(table[0]);
+    const auto y = static_cast<std::size_t>(std::find(header.begin(), header.end(), "body_y") -
+                                            header.begin());
+    double y_max = -1e300;
+    std::string y_max_text;
+    for (std::size_t r = 1; r < table.size(); ++r) {
+      const std::string cell = cells_of(table[r])[y];
+      if (std::stod(cell) > y_max) {
+        y_max = std::stod(cell);
+        y_max_text = cell;
+      }
+    }
+    EXPECT_EQ(cells[3], y_max_text) << "row " << row;  // the same digits: the same double
+  }
+  ASSERT_EQ(momenta("sweep " + kPoles + " -o " + at("poles.csv") + " --no-timing").code, 0);
+  const auto poles = lines_of(file("poles.csv"));
+  for (std::size_t row : {1U, 100U, 189U}) {
+    const auto cells = cells_of(poles[row]);
+    std::string text = edited_quarter_car(std::stod(cells[1]), std::stod(cells[2]));
+    text = std::regex_replace(text, std::regex("mass: 375\\.0"), "mass: " + cells[3]);
+    std::ofstream(dir_ / "car.yaml") << text;
+    const CliRun modes = momenta("modes " + at("car.yaml") + " --json");
+    ASSERT_EQ(modes.code, 0) << modes.err;
+    const nlohmann::json j = nlohmann::json::parse(modes.out);
+    for (std::size_t i = 0; i < 4; ++i) {
+      const auto& lambda = j.at("modes").at(i).at("eigenvalue");
+      EXPECT_EQ(std::stod(cells[4 + 2 * i]), lambda.at(0).get<double>()) << row << " pole " << i;
+      EXPECT_EQ(std::stod(cells[5 + 2 * i]), lambda.at(1).get<double>()) << row << " pole " << i;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace momenta::test

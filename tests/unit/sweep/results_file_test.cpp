@@ -1,0 +1,115 @@
+// The results file (sweep/results_file.hpp): rows that read back to the same doubles, a partial
+// last row cut on resume, shards merged in run order with every run once.
+
+#include <charconv>
+#include <fstream>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "momenta/common/error.hpp"
+#include "momenta/sweep/results_file.hpp"
+
+namespace momenta::sweep {
+namespace {
+
+const std::vector<std::string> kHeader = {"run", "k", "max(y)", "status", "message"};
+
+std::string read(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+class ResultsFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() / "momenta_results_file_test";
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::filesystem::path dir_;
+};
+
+RunOutcome outcome(long run, double k, double y, bool ok = true, std::string message = "") {
+  RunOutcome o;
+  o.run = run;
+  o.parameters = {k};
+  o.metrics = {y};
+  o.ok = ok;
+  o.message = std::move(message);
+  return o;
+}
+
+TEST_F(ResultsFile, RowsReadBackToTheSameDoublesAndUndefinedFiguresAreEmpty) {
+  const double y = 0.1 + 0.2;  // not a short decimal
+  const std::string row = results_row(outcome(3, 1e-320, y), false);
+  EXPECT_EQ(row, "3,1e-320,0.30000000000000004,ok,\n");
+  double back = 0.0;
+  const std::string cell = "0.30000000000000004";
+  std::from_chars(cell.data(), cell.data() + cell.size(), back);
+  EXPECT_EQ(back, y);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(results_row(outcome(4, 2.0, nan, false, "bad, \"very\" bad"), false),
+            "4,2,,failed,\"bad, \"\"very\"\" bad\"\n");
+}
+
+TEST_F(ResultsFile, ResumingCutsAPartialLastRowAndKnowsTheFinishedRuns) {
+  const auto path = dir_ / "r.csv";
+  {
+    ResultsWriter w(path, kHeader, false, false);
+    w.write(results_row(outcome(0, 1, 2), false));
+    w.write(results_row(outcome(1, 1, 3, false, "diverged, at t = 0.2 s"), false));
+  }
+  std::ofstream(path, std::ios::app) << "2,1,4";  // killed while writing
+  EXPECT_EQ(read_finished_runs(path, kHeader), (std::vector<long>{0, 1}));
+  EXPECT_EQ(read(path).back(), '\n');  // the partial row is gone
+  // Another sweep's file is refused at its header.
+  const std::vector<std::string> other = {"run", "m", "max(y)", "status", "message"};
+  EXPECT_THROW(read_finished_runs(path, other), ParseError);
+  // Without --force an existing file is not replaced.
+  EXPECT_THROW(ResultsWriter(path, kHeader, false, false), FileError);
+}
+
+TEST_F(ResultsFile, ShardsMergeInRunOrderWithEveryRunOnce) {
+  const auto a = dir_ / "a.csv", b = dir_ / "b.csv", whole = dir_ / "whole.csv";
+  {
+    ResultsWriter wa(a, kHeader, false, false), wb(b, kHeader, false, false),
+        ww(whole, kHeader, false, false);
+    for (long run = 0; run < 5; ++run) {
+      const std::string row = results_row(outcome(run, 1.5 * run, run * run), false);
+      (run % 2 == 0 ? wa : wb).write(row);
+      ww.write(row);
+    }
+  }
+  const std::vector<std::filesystem::path> parts = {b, a};
+  merge_results(parts, kHeader, 5, dir_ / "merged.csv", false);
+  EXPECT_EQ(read(dir_ / "merged.csv"), read(whole));
+  const std::vector<std::filesystem::path> missing = {a};
+  EXPECT_THROW(merge_results(missing, kHeader, 5, dir_ / "m2.csv", false), InvalidArgument);
+  const std::vector<std::filesystem::path> twice = {a, b, a};
+  EXPECT_THROW(merge_results(twice, kHeader, 5, dir_ / "m3.csv", false), InvalidArgument);
+}
+
+TEST_F(ResultsFile, TheSummaryGivesMinimumMedianAndMaximumOfTheRunsThatDefineAFigure) {
+  const auto path = dir_ / "s.csv";
+  {
+    ResultsWriter w(path, kHeader, false, false);
+    for (double y : {4.0, 1.0, 3.0, 2.0}) w.write(results_row(outcome(0, 0, y), false));
+    w.write(
+        results_row(outcome(4, 0, std::numeric_limits<double>::quiet_NaN(), false, "x"), false));
+  }
+  const std::vector<std::string> metrics = {"max(y)"};
+  const ResultsSummary s = summarize_results(path, metrics);
+  EXPECT_EQ(s.runs, 5);
+  EXPECT_EQ(s.failures, 1);
+  EXPECT_EQ(s.first_failure, "x");
+  ASSERT_EQ(s.figures.size(), 1U);
+  EXPECT_EQ(s.figures[0].count, 4);
+  EXPECT_EQ(s.figures[0].min, 1.0);
+  EXPECT_EQ(s.figures[0].median, 2.5);
+  EXPECT_EQ(s.figures[0].max, 4.0);
+}
+
+}  // namespace
+}  // namespace momenta::sweep

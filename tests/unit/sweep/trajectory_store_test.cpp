@@ -1,0 +1,107 @@
+// Trajectories of a sweep (sweep/trajectory_store.hpp): each run's whole table, read back from
+// the HDF5 file (a dataset per run, its columns in an attribute) or the folder of CSV files.
+
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "momenta/common/error.hpp"
+#include "momenta/sweep/trajectory_store.hpp"
+
+#ifdef MOMENTA_TEST_HDF5
+#include <hdf5.h>
+#endif
+
+namespace momenta::sweep {
+namespace {
+
+RunOutcome table_of(long run) {
+  RunOutcome o;
+  o.run = run;
+  o.trajectory_columns = {"time", "x"};
+  for (int k = 0; k < 4; ++k) {
+    o.trajectory.push_back(0.5 * k);
+    o.trajectory.push_back(0.1 * k * k + static_cast<double>(run));
+  }
+  return o;
+}
+
+class TrajectoryStoreTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() / "momenta_trajectory_store_test";
+    std::filesystem::remove_all(dir_);
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+  std::filesystem::path dir_;
+};
+
+TEST_F(TrajectoryStoreTest, AFolderGetsACsvFilePerRunWithEveryDigit) {
+  {
+    const auto store = open_trajectory_store(dir_ / "runs", false, false);
+    store->write(table_of(7));
+    RunOutcome failed = table_of(8);
+    failed.ok = false;
+    store->write(failed);  // nothing: a failed run has no table
+  }
+  std::ifstream in(dir_ / "runs" / "run_000007.csv");
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), "time,x\n0,7\n0.5,7.1\n1,7.4\n1.5,7.9\n");
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "runs" / "run_000008.csv"));
+  // A folder with files in it is not written into without --force (or --resume).
+  EXPECT_THROW(open_trajectory_store(dir_ / "runs", false, false), FileError);
+  EXPECT_NO_THROW(open_trajectory_store(dir_ / "runs", true, false));
+}
+
+#ifdef MOMENTA_TEST_HDF5
+TEST_F(TrajectoryStoreTest, AnHdf5FileGetsADatasetPerRunWithItsColumns) {
+  ASSERT_TRUE(hdf5_available());
+  const std::filesystem::path path = dir_ / "runs.h5";
+  {
+    const auto store = open_trajectory_store(path, false, false);
+    store->write(table_of(3));
+    store->write(table_of(4));
+  }
+  {
+    // Resumed: run 4 stored again replaces its table.
+    const auto store = open_trajectory_store(path, true, false);
+    RunOutcome again = table_of(4);
+    again.trajectory[1] = 99.0;
+    store->write(again);
+  }
+  EXPECT_THROW(open_trajectory_store(path, false, false), FileError);
+  const hid_t file = H5Fopen(path.string().c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  for (long run : {3L, 4L}) {
+    const std::string name = run == 3 ? "run_000003" : "run_000004";
+    const hid_t set = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+    ASSERT_GE(set, 0) << name;
+    const hid_t space = H5Dget_space(set);
+    hsize_t dims[2] = {0, 0};
+    H5Sget_simple_extent_dims(space, dims, nullptr);
+    EXPECT_EQ(dims[0], 4U);
+    EXPECT_EQ(dims[1], 2U);
+    std::vector<double> values(8);
+    H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+    std::vector<double> expected = table_of(run).trajectory;
+    if (run == 4) expected[1] = 99.0;
+    EXPECT_EQ(values, expected);
+    const hid_t attribute = H5Aopen(set, "columns", H5P_DEFAULT);
+    const hid_t type = H5Aget_type(attribute);
+    std::string columns(H5Tget_size(type), '\0');
+    H5Aread(attribute, type, columns.data());
+    EXPECT_EQ(std::string(columns.c_str()), "time,x");
+    H5Tclose(type);
+    H5Aclose(attribute);
+    H5Sclose(space);
+    H5Dclose(set);
+  }
+  H5Fclose(file);
+}
+#endif
+
+}  // namespace
+}  // namespace momenta::sweep
