@@ -15,6 +15,7 @@
 #include "interrupt.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/io/sweep_file.hpp"
+#include "momenta/report/report.hpp"
 #include "momenta/sweep/distributed.hpp"
 #include "momenta/sweep/execution.hpp"
 #include "momenta/sweep/results_file.hpp"
@@ -32,7 +33,8 @@ struct SweepOptions {
   bool force = false;
   bool no_timing = false;
   bool quiet = false;
-  std::string shard;  // "k/N"
+  std::string shard;   // "k/N"
+  std::string report;  // the HTML page, when asked
 };
 
 struct Shard {
@@ -136,6 +138,23 @@ void print_summary(const sweep::SweepRunner& runner, const std::string& output, 
   }
 }
 
+// The sweep's HTML page, from every row of its results file.
+void write_sweep_report(const SweepOptions& o, const sweep::SweepRunner& runner) {
+  std::vector<std::string> columns = runner.parameter_columns();
+  columns.insert(columns.end(), runner.metric_columns().begin(), runner.metric_columns().end());
+  sweep::ResultsColumns table = sweep::read_result_columns(o.output, columns);
+  report::SweepResults results;
+  results.title = runner.spec().name;
+  results.source = o.sweep;
+  results.parameters = runner.parameter_columns();
+  results.metrics = runner.metric_columns();
+  results.runs = std::move(table.runs);
+  results.ok = std::move(table.ok);
+  results.values = std::move(table.values);
+  report::write_report(o.report, report::sweep_report_html(results), true);
+  fmt::print(stderr, "momenta: report written to {}\n", o.report);
+}
+
 void run_sweep(const SweepOptions& o) {
   std::optional<sweep::MpiWorld> world;
   if (sweep::started_by_mpi_launcher() && sweep::mpi_available()) world.emplace();
@@ -153,6 +172,11 @@ void run_sweep(const SweepOptions& o) {
     std::size_t skipped = 0;
     if (root) {
       try {
+        // The report is refused before the runs, not after them, when it would overwrite a file.
+        if (!o.report.empty() && std::filesystem::exists(o.report) && !o.force) {
+          throw FileError(
+              fmt::format("{}: the report file exists; pass --force to overwrite it", o.report));
+        }
         const bool resuming = o.resume && std::filesystem::exists(o.output);
         if (resuming) skipped = finished_prefix(o, header, all);
         writer = std::make_unique<sweep::ResultsWriter>(o.output, header, o.force, resuming);
@@ -207,6 +231,7 @@ void run_sweep(const SweepOptions& o) {
     print_summary(
         runner, o.output, seconds,
         skipped > 0 ? fmt::format("for the {} runs left, {}", runs.size(), where) : where);
+    if (!o.report.empty()) write_sweep_report(o, runner);
   } catch (const Error&) {
     if (!root) throw QuietExit{1};  // rank 0 says it
     throw;
@@ -242,6 +267,11 @@ void add_sweep_command(CLI::App& app) {
                       "Run only shard k of N (runs with run % N = k − 1), for schedulers without "
                       "MPI; `momenta sweep-merge` joins the shards");
   command->add_flag("-q,--quiet", o->quiet, "No progress line on the terminal");
+  command
+      ->add_option("--report", o->report,
+                   "Also write the sweep's HTML page: scatter plots and parallel coordinates "
+                   "of parameters and metrics (docs/sweeps.md)")
+      ->check(not_a_folder());
   command->callback([o] {
     if (o->resume && o->force) {
       throw CLI::ValidationError("--resume", "give --resume or --force, not both");

@@ -64,6 +64,7 @@ from ._core import (
     steady_precession,
     step_info,
     step_response,
+    sweep,
     transfer_function,
     undamped_modes,
 )

@@ -600,6 +600,10 @@ def step_response(system: StateSpace, input: object = 0, *, final_time: Optional
     """Step response from x(0) = 0, exact at the samples (zero-order hold); automatic horizon and sampling unless given."""
     ...
 
+def sweep(path: os.PathLike[str] | str, threads: Optional[int] = None) -> dict:
+    """Every run of the sweep file at `path` (docs/sweeps.md) on `threads` threads (default: every core), as columns: 'run', each parameter and metric (float64 arrays, NaN where a run does not define it), 'ok' (bool array) and 'message' (list). The numbers are those `momenta sweep` writes, bit for bit; pan"""
+    ...
+
 def transfer_function(system: StateSpace, input: object, output: object, cancellation_tolerance: float = 1e-06) -> TransferFunction:
     """Zero-pole-gain transfer function of one pair (input and output by name or index), with pole–zero pairs closer than the relative tolerance cancelled."""
     ...

@@ -86,5 +86,6 @@ void bind_model(py::module_& m);
 void bind_dynamics(py::module_& m);
 void bind_simulation(py::module_& m);
 void bind_analysis(py::module_& m);
+void bind_sweep(py::module_& m);
 
 }  // namespace momenta::python

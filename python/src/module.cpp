@@ -15,4 +15,5 @@ PYBIND11_MODULE(_core, m) {
   bind_dynamics(m);
   bind_simulation(m);
   bind_analysis(m);
+  bind_sweep(m);
 }

@@ -198,6 +198,7 @@ sweep::SweepSpec read_sweep_file(const std::filesystem::path& path) {
   const std::filesystem::path dir = path.parent_path();
   sweep::SweepSpec spec;
   spec.file = path.string();
+  spec.name = root.find_string("name").value_or(path.stem().string());
 
   const auto file_key = root.which_of({"model", "part"});
   if (!file_key) root.fail("give the model file (model: FILE) or the part file (part: FILE)");

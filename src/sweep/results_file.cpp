@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -235,35 +236,53 @@ void merge_results(std::span<const std::filesystem::path> parts,
   for (const auto& [run, row] : rows) writer.write(row);
 }
 
-ResultsSummary summarize_results(const std::filesystem::path& path,
-                                 std::span<const std::string> metric_columns) {
+ResultsColumns read_result_columns(const std::filesystem::path& path,
+                                   std::span<const std::string> columns) {
   const Lines file = read_lines(path);
-  if (file.lines.empty()) return {};
+  if (file.lines.empty())
+    throw ParseError(path.string(), 1, 1, "no header: not the results of a sweep");
   const std::vector<std::string> header = fields_of(file.lines[0]);
   const auto index_of = [&](const std::string& name) {
-    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+    const auto it = std::find(header.begin(), header.end(), name);
+    if (it == header.end()) {
+      throw ParseError(path.string(), 1, 1, fmt::format("no column '{}'", name));
+    }
+    return static_cast<std::size_t>(it - header.begin());
   };
   const std::size_t status = index_of("status");
   const std::size_t message = index_of("message");
-  ResultsSummary summary;
-  std::vector<std::vector<double>> values(metric_columns.size());
+  std::vector<std::size_t> indices;
+  for (const std::string& c : columns) indices.push_back(index_of(c));
+  ResultsColumns result;
+  result.values.resize(columns.size());
   for (std::size_t i = 1; i < file.lines.size(); ++i) {
+    result.runs.push_back(run_of(file.lines[i], path, i + 1, header.size()));
     const std::vector<std::string> fields = fields_of(file.lines[i]);
-    if (fields.size() != header.size()) continue;
-    ++summary.runs;
-    if (fields[status] != "ok") {
-      if (summary.failures++ == 0) summary.first_failure = fields[message];
-      continue;
-    }
-    for (std::size_t m = 0; m < metric_columns.size(); ++m) {
-      const std::string& cell = fields[index_of(metric_columns[m])];
-      double value = 0.0;
-      const auto [end, ec] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
-      if (!cell.empty() && ec == std::errc()) values[m].push_back(value);
+    result.ok.push_back(fields[status] == "ok");
+    result.messages.push_back(fields[message]);
+    for (std::size_t c = 0; c < indices.size(); ++c) {
+      const std::string& cell = fields[indices[c]];
+      double value = std::numeric_limits<double>::quiet_NaN();
+      std::from_chars(cell.data(), cell.data() + cell.size(), value);
+      result.values[c].push_back(value);
     }
   }
+  return result;
+}
+
+ResultsSummary summarize_results(const std::filesystem::path& path,
+                                 std::span<const std::string> metric_columns) {
+  const ResultsColumns table = read_result_columns(path, metric_columns);
+  ResultsSummary summary;
+  summary.runs = static_cast<long>(table.runs.size());
+  for (std::size_t r = 0; r < table.runs.size(); ++r) {
+    if (!table.ok[r] && summary.failures++ == 0) summary.first_failure = table.messages[r];
+  }
   for (std::size_t m = 0; m < metric_columns.size(); ++m) {
-    std::vector<double>& v = values[m];
+    std::vector<double> v;
+    for (std::size_t r = 0; r < table.runs.size(); ++r) {
+      if (table.ok[r] && std::isfinite(table.values[m][r])) v.push_back(table.values[m][r]);
+    }
     ResultsSummary::Figure figure{metric_columns[m], static_cast<long>(v.size())};
     if (!v.empty()) {
       std::sort(v.begin(), v.end());

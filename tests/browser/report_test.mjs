@@ -282,4 +282,48 @@ test('balancing page: the rotor with its axis, bearings and correction masses, t
   await page.close();
 });
 
+test('sweep page: a scatter plot and parallel coordinates of every run, the numbers of its CSV', async () => {
+  const results = path.join(work, 'ride.csv');
+  const file = path.join(work, 'ride.html');
+  run('sweep', path.join(examples, 'sweeps', 'quarter_car_ride.yaml'), '-o', results, '--report', file, '-q', '--no-timing');
+  const table = csv(fs.readFileSync(results, 'utf8'));
+  const { page, problems } = await open(file);
+  const hook = await page.evaluate(() => ({
+    names: window.momentaReport.names(), runs: window.momentaReport.runs(),
+    points: window.momentaReport.scatterPoints(), lines: window.momentaReport.parallelLines(),
+    axes: window.momentaReport.scatterAxes(), ks: window.momentaReport.column(0),
+  }));
+  // Every parameter and metric column of the file, every run a point and a line.
+  assert.deepEqual(hook.names, table.header.slice(1, table.header.indexOf('status')));
+  assert.equal(hook.runs, 48);
+  assert.equal(hook.points, 48);
+  assert.equal(hook.lines, 48);
+  assert.deepEqual(hook.ks, table.column('ks'));
+  assert.deepEqual(hook.axes, ['ks', 'max(body_y)']);
+  // What is drawn: 48 circles and 48 polylines, the axis names shown.
+  const drawn = await page.evaluate(() => ({
+    circles: document.querySelectorAll('#sweep-scatter circle').length,
+    polylines: document.querySelectorAll('#sweep-parallel polyline').length,
+    axisNames: Array.from(document.querySelectorAll('#sweep-parallel .axis-name')).map((t) => t.textContent),
+    summary: document.getElementById('sweep-summary').innerText,
+  }));
+  assert.equal(drawn.circles, 48);
+  assert.equal(drawn.polylines, 48);
+  assert.deepEqual(drawn.axisNames, hook.names);
+  assert.match(drawn.summary, /48 runs .*: 48 ok, 0 failed/);
+  // Another pair chosen on the page: the points follow, each where its run's values put it.
+  await page.select('#sweep-x', '1');
+  await page.select('#sweep-y', '5');
+  const chosen = await page.evaluate(() => ({
+    axes: window.momentaReport.scatterAxes(),
+    first: (() => { const c = document.querySelector('#sweep-scatter circle[data-run="0"] title'); return c.textContent; })(),
+  }));
+  assert.deepEqual(chosen.axes, ['b', 'peak_suspension_force']);
+  assert.equal(chosen.first, `run 0: b = ${table.column('b')[0]}, peak_suspension_force = ${table.column('peak_suspension_force')[0]}`);
+  await page.select('#sweep-y', '2');
+  await page.screenshot({ path: path.join(artifacts, 'sweep-page.png'), fullPage: true });
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
 after(() => fs.writeFileSync(path.join(artifacts, 'measured.json'), JSON.stringify(measured, null, 2)));

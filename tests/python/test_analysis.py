@@ -7,7 +7,7 @@ import pytest
 
 import momenta
 
-from conftest import EXAMPLES, cli_csv, cli_json
+from conftest import EXAMPLES, cli_csv, cli_json, run_cli
 
 
 @pytest.mark.parametrize("name", ["satellite_attitude", "flexible_satellite", "quarter_car",
@@ -195,3 +195,23 @@ def test_find_steady_precession_is_momenta_steadys():
     p = momenta.steady_precession(model, q=q, v=v)
     assert p.precession == pytest.approx(found.roots.slow, rel=1e-13)
     assert p.residual < 1e-15
+
+
+def test_a_sweep_from_python_is_the_command_lines_file(tmp_path):
+    """momenta.sweep gives the columns `momenta sweep` writes, every double the same, whatever
+    the thread count; pandas makes a table of them."""
+    path = EXAMPLES / "sweeps" / "quarter_car_poles.yaml"
+    result = momenta.sweep(path, threads=2)
+    assert momenta.sweep(path, threads=1)["pole1.re"].tolist() == result["pole1.re"].tolist()
+    out = tmp_path / "poles.csv"
+    run_cli("sweep", path, "-o", out, "--no-timing", "-q")
+    import csv as csv_module
+    with open(out) as f:
+        rows = list(csv_module.DictReader(f))
+    assert len(rows) == len(result["run"]) == 189
+    assert result["ok"].all()
+    for name in ["ks", "b", "m2", "pole1.re", "pole2.im", "wn4", "zeta3"]:
+        assert [float(r[name]) for r in rows] == result[name].tolist(), name
+    import pandas
+    table = pandas.DataFrame(result)
+    assert list(table.columns[:4]) == ["run", "ks", "b", "m2"]

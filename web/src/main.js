@@ -10,6 +10,7 @@ import { linearSection } from './linear.js';
 import { Motion } from './motion.js';
 import { plotsSection } from './plots.js';
 import { summarySection } from './summary.js';
+import { sweepPage } from './sweep.js';
 import { Timeline } from './timeline.js';
 
 function simulationPage(app, data) {
@@ -58,7 +59,8 @@ function start() {
   const app = document.getElementById('app');
   const started = performance.now();
   const data = readData();
-  const hook = data.kind === 'inertia' ? inertiaPage(app, data) : simulationPage(app, data);
+  const pages = { inertia: inertiaPage, sweep: sweepPage };
+  const hook = (pages[data.kind] ?? simulationPage)(app, data);
   hook.loadMilliseconds = performance.now() - started;
   hook.ready = true;
   window.momentaReport = hook;

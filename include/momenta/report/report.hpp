@@ -89,6 +89,22 @@ struct BalanceFindings {
 std::string balance_report_html(const io::CompositePart& rotor, const std::string& source,
                                 const BalanceFindings& findings);
 
+/// What a sweep's page shows: its columns and rows, read from its results file.
+struct SweepResults {
+  std::string title;                             ///< the sweep's name
+  std::string source;                            ///< the sweep file
+  std::vector<std::string> parameters, metrics;  ///< column names
+  std::vector<long> runs;
+  std::vector<bool> ok;
+  std::vector<std::vector<double>>
+      values;  ///< parameters then metrics, one value per run (NaN: none)
+};
+
+/// The sweep's page (`momenta sweep --report`): runs and failures, a scatter plot of any column
+/// against any other (chosen on the page), and parallel coordinates of every parameter and
+/// metric, one line per run coloured by the first metric.
+std::string sweep_report_html(const SweepResults& results);
+
 /// Writes `html` to `path`. An existing file is kept (FileError naming it and --force) unless
 /// `overwrite`; a failed write leaves no partial file (written to a temporary name, then renamed).
 void write_report(const std::filesystem::path& path, const std::string& html, bool overwrite);

@@ -60,6 +60,19 @@ void merge_results(std::span<const std::filesystem::path> parts,
                    std::span<const std::string> header, long run_count,
                    const std::filesystem::path& output, bool overwrite);
 
+/// Columns of a results file, for the summary and the report: each asked-for column's values
+/// (NaN for an empty cell), and each row's run and whether it is ok.
+struct ResultsColumns {
+  std::vector<long> runs;
+  std::vector<bool> ok;
+  std::vector<std::string> messages;
+  std::vector<std::vector<double>> values;  ///< one per asked column, one value per row
+};
+/// Reads `columns` of the results file at `path`. Throws FileError when it cannot be read,
+/// ParseError when a column is not in its header or a row is not a row of it.
+ResultsColumns read_result_columns(const std::filesystem::path& path,
+                                   std::span<const std::string> columns);
+
 /// Minimum, median and maximum of each metric column over the runs that gave it, with the counts
 /// of runs and failures: the summary `momenta sweep` prints.
 struct ResultsSummary {

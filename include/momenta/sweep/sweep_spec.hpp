@@ -104,6 +104,7 @@ std::optional<Metric::Kind> metric_kind(std::string_view keyword);
 
 /// A whole sweep.
 struct SweepSpec {
+  std::string name;             ///< the file's `name:`, or its stem
   std::string file;             ///< the sweep file's name, for messages
   std::filesystem::path model;  ///< the model file (simulate, linearize) or part file (inertia)
   JobKind job = JobKind::kSimulate;
