@@ -9,6 +9,7 @@
 
 #include "forward_pass.hpp"
 #include "momenta/common/error.hpp"
+#include "momenta/math/sin_cos.hpp"
 #include "spatial_inertia_ops.hpp"
 
 namespace momenta::dynamics {
@@ -54,27 +55,39 @@ const MatX& crba(const Model& model, Data& data, VecRef q) {
   const auto& joints = model.joint_constants();
   const int nj = static_cast<int>(joints.size());
 
+  // The angles of the joints turning about an axis, all first: independent of one another, their
+  // computations overlap.
+  for (int j = 0; j < nj; ++j) {
+    if (!joints[j].turns_about_axis) continue;
+    const auto [s, c] = math::sin_cos(q[joints[j].q_index]);
+    data.axis_sin[j] = s;
+    data.axis_cos[j] = c;
+  }
+
   // Poses, world poses and motion subspaces in W; composite inertias start as each body's own.
   for (int j = 0; j < nj; ++j) {
     const auto& c = joints[j];
     const int i = c.child;
-    detail::position_step(c, j, q.data(), data);
     const Transform& X_WP = data.X_WB[c.parent];
     Transform& X_WB = data.X_WB[i];
     if (c.turns_about_axis) {
-      // R_WB = R_WP Rot_k(q): two columns of R_WP mix; S in W is [R_WB e_k; p_WB × R_WB e_k].
-      const int k = c.S_basis;
-      detail::with_axis_rotation(k, data.X_PB[i].R, [&](auto, double cq, double sq) {
-        detail::multiply_basis_rotation(X_WP.R, k, cq, sq, X_WB.R);
+      // X_PB = (Rot_k(q), p_PJ) and R_WB = R_WP Rot_k(q): two columns of R_WP mix; S in W is
+      // [R_WB e_k; p_WB × R_WB e_k]. k a compile-time index: no general 3 × 3 products.
+      const double sq = data.axis_sin[j], cq = data.axis_cos[j];
+      detail::with_axis(c.S_basis, [&](auto axis) {
+        constexpr int k = decltype(axis)::value;
+        detail::set_axis_rotation<k>(cq, sq, c.X_PJ.p, data.X_PB[i]);
+        detail::mix_columns<k>(X_WP.R, cq, sq, X_WB.R);
       });
-      X_WB.p = X_WP.p + X_WP.R * data.X_PB[i].p;
-      const Vec3 w = X_WB.R.col(k);
+      X_WB.p = X_WP.p + X_WP.R * c.X_PJ.p;
+      const Vec3 w = X_WB.R.col(c.S_basis);
       const Vec3 p_cross_w = X_WB.p.cross(w);
       for (int r = 0; r < 3; ++r) {
         data.S_W(c.v_index, r) = w[r];
         data.S_W(c.v_index, 3 + r) = p_cross_w[r];
       }
     } else {
+      detail::position_step(c, j, q.data(), data);
       X_WB = X_WP * data.X_PB[i];
       for (int k = 0; k < c.nv; ++k) {
         data.S_W.row(c.v_index + k) = X_WB.act_motion(data.S[j].col(k)).transpose();

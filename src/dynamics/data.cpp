@@ -27,6 +27,8 @@ Data::Data(const Model& model) {
   tau = VecX::Zero(nv);
   vdot = VecX::Zero(nv);
   nle = VecX::Zero(nv);
+  axis_cos = VecX::Zero(static_cast<Eigen::Index>(model.joint_constants().size()));
+  axis_sin = VecX::Zero(static_cast<Eigen::Index>(model.joint_constants().size()));
   g = VecX::Zero(nv);
   M = MatX::Zero(nv, nv);
   scratch_nv = VecX::Zero(nv);

@@ -48,17 +48,10 @@ template <int K>
 [[gnu::always_inline]] inline void velocity_step_about_axis(const JointConstants& c,
                                                             const double* q, const double* v,
                                                             Data& data) {
-  constexpr int I = (K + 1) % 3, J = (K + 2) % 3;
   const int i = c.child;
   Transform& X = data.X_PB[i];
-  const double cq = std::cos(q[c.q_index]), sq = std::sin(q[c.q_index]);
-  X.R.setZero();
-  X.R(I, I) = cq;
-  X.R(J, I) = sq;
-  X.R(I, J) = -sq;
-  X.R(J, J) = cq;
-  X.R(K, K) = 1.0;
-  X.p = c.X_PJ.p;
+  const auto [sq, cq] = math::sin_cos(q[c.q_index]);
+  set_axis_rotation<K>(cq, sq, c.X_PJ.p, X);
   const double w = v[c.v_index];
   double V[6];
   double cB[6] = {0, 0, 0, 0, 0, 0};

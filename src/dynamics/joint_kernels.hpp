@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "momenta/dynamics/data.hpp"
+#include "momenta/math/sin_cos.hpp"
 #include "momenta/model/model.hpp"
 
 namespace momenta::dynamics::detail {
@@ -48,6 +49,42 @@ template <class F>
   }
 }
 
+// f(std::integral_constant<int, k>{}) for the coordinate axis k = 0, 1, 2.
+template <class F>
+[[gnu::always_inline]] inline void with_axis(int k, F&& f) {
+  switch (k) {
+    case 0:
+      return f(std::integral_constant<int, 0>{});
+    case 1:
+      return f(std::integral_constant<int, 1>{});
+    default:
+      return f(std::integral_constant<int, 2>{});
+  }
+}
+
+// X = (Rot_K(q), p): the pose of a joint turning about axis K of a child frame on its axis.
+template <int K>
+[[gnu::always_inline]] inline void set_axis_rotation(double c, double s, const Vec3& p,
+                                                     Transform& X) {
+  constexpr int I = (K + 1) % 3, J = (K + 2) % 3;
+  X.R.setZero();
+  X.R(I, I) = c;
+  X.R(J, I) = s;
+  X.R(I, J) = -s;
+  X.R(J, J) = c;
+  X.R(K, K) = 1.0;
+  X.p = p;
+}
+
+// out = A Rot_K(q): columns I and J of A mix, column K stays.
+template <int K>
+[[gnu::always_inline]] inline void mix_columns(const Mat3& A, double c, double s, Mat3& out) {
+  constexpr int I = (K + 1) % 3, J = (K + 2) % 3;
+  out.col(I) = c * A.col(I) + s * A.col(J);
+  out.col(J) = c * A.col(J) - s * A.col(I);
+  out.col(K) = A.col(K);
+}
+
 inline Mat3 quaternion_matrix(const double* wxyz) {
   return Quat(wxyz[0], wxyz[1], wxyz[2], wxyz[3]).normalized().toRotationMatrix();
 }
@@ -62,7 +99,8 @@ inline void joint_position_general(const JointConstants& c, const double* q, Tra
 [[gnu::always_inline]] inline void joint_position(const JointConstants& c, const double* q,
                                                   Transform& X_PB, Mat6& S) {
   if (c.type == JointType::revolute && c.child_at_joint && c.S_basis >= 0) {
-    multiply_basis_rotation(c.X_PJ.R, c.S_basis, std::cos(q[0]), std::sin(q[0]), X_PB.R);
+    const auto [sq, cq] = math::sin_cos(q[0]);
+    multiply_basis_rotation(c.X_PJ.R, c.S_basis, cq, sq, X_PB.R);
     X_PB.p = c.X_PJ.p;
     return;
   }

@@ -67,6 +67,7 @@ class Reader {
 
  private:
   void take(void* to, std::size_t n) {
+    if (n == 0) return;  // an empty list: `to` may be null
     if (at_ + n > bytes_.size()) throw NumericalError("a malformed message between MPI ranks");
     std::memcpy(to, bytes_.data() + at_, n);
     at_ += n;

@@ -2,6 +2,7 @@
 // count, MPI rank count or shard split; a killed sweep resumed to the file an uninterrupted one
 // writes; rows equal to `momenta simulate` and `momenta modes` runs of the changed model.
 
+#include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <regex>
@@ -104,7 +105,7 @@ TEST_F(SweepCli, MpiRanksGiveTheFileOneProcessWrites) {
 #endif
 
 TEST_F(SweepCli, AKilledSweepResumesToTheFileAnUninterruptedOneWrites) {
-  // 240 runs of about 15 ms: killed (SIGKILL, no chance to tidy up) after 0.6 s of 2 threads.
+  // 240 runs of about 11 ms each, killed (SIGKILL, no chance to tidy up) half-way.
   std::ofstream(dir_ / "long.yaml")
       << "model: " << std::filesystem::absolute("examples/quarter_car.yaml").string()
       << "\nsimulation: {duration: 2.0, step: 0.001, integrator: rk4}\n"
@@ -136,6 +137,30 @@ TEST_F(SweepCli, AKilledSweepResumesToTheFileAnUninterruptedOneWrites) {
   EXPECT_EQ(other.code, 1);
   EXPECT_NE(other.err.find("another sweep"), std::string::npos) << other.err;
   EXPECT_EQ(momenta("sweep " + sweep + " -o " + at("x.csv") + " --resume --force").code, 2);
+}
+
+TEST_F(SweepCli, TrajectoriesHoldEveryRunsWholeTable) {
+  std::ofstream(dir_ / "traj.yaml")
+      << "model: " << std::filesystem::absolute("examples/quarter_car.yaml").string()
+      << "\nsimulation: {duration: 0.5, step: 0.001, integrator: rk4, every: 10}\n"
+         "parameters:\n  - {path: bodies.body.mass, name: m2, values: [300, 450]}\n"
+         "metrics:\n  - final: body_y\ntrajectories: runs\n";
+  const CliRun r = momenta("sweep " + at("traj.yaml") + " -o " + at("traj.csv") + " --no-timing");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto rows = lines_of(file("traj.csv"));
+  for (int run = 0; run < 2; ++run) {
+    const auto table = lines_of(slurp(dir_ / "runs" / fmt::format("run_{:06d}.csv", run)));
+    ASSERT_EQ(table.size(), 52U) << run;  // the header and 51 rows: every 10th of 500 steps
+    const auto header = cells_of(table[0]);
+    const auto y = static_cast<std::size_t>(std::find(header.begin(), header.end(), "body_y") -
+                                            header.begin());
+    ASSERT_LT(y, header.size());
+    // The metric is the table's last body_y, the same digits.
+    EXPECT_EQ(cells_of(table.back())[y], cells_of(rows[static_cast<std::size_t>(run) + 1])[2]);
+  }
+  // Run again without --force: the folder with its tables is kept.
+  EXPECT_EQ(momenta("sweep " + at("traj.yaml") + " -o " + at("traj2.csv") + " --no-timing").code,
+            1);
 }
 
 // A model file with the suspension's numbers set, as a user would edit it by hand.

@@ -76,8 +76,11 @@ struct Data {
   VecX tau;   ///< nv: rnea's inverse dynamics; hybrid_dynamics' full generalized forces.
   VecX vdot;  ///< nv: aba's and hybrid_dynamics' accelerations.
   VecX nle;   ///< nv: nonlinear_effects, C(q, v) v + g(q).
-  VecX g;     ///< nv: generalized_gravity, g(q).
-  MatX M;     ///< nv × nv: crba's mass matrix (both triangles filled).
+  /// Per joint: cos q and sin q of a joint turning about an axis (crba takes them all first,
+  /// where their computations overlap).
+  VecX axis_cos, axis_sin;
+  VecX g;  ///< nv: generalized_gravity, g(q).
+  MatX M;  ///< nv × nv: crba's mass matrix (both triangles filled).
 
   // --- Scratch sized nv for the convenience paths (not results) ------------------------------
   VecX scratch_nv;
