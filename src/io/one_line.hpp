@@ -1,16 +1,10 @@
 #pragma once
-// Shared by the file readers (part files, model files): file messages must stay on one line,
-// `file:line:column: message`, and a library message wrapped into one could carry a newline.
+// The file readers' name for momenta::one_line (common/one_line.hpp).
 
-#include <algorithm>
-#include <string>
+#include "momenta/common/one_line.hpp"
 
 namespace momenta::io::detail {
 
-/// `text` with every newline replaced by a space.
-inline std::string one_line(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  return text;
-}
+using ::momenta::one_line;
 
 }  // namespace momenta::io::detail

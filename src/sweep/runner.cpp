@@ -11,6 +11,7 @@
 #include "momenta/analysis/equilibrium.hpp"
 #include "momenta/analysis/linearize.hpp"
 #include "momenta/common/error.hpp"
+#include "momenta/common/one_line.hpp"
 #include "momenta/common/suggest.hpp"
 #include "momenta/frontend/model_loading.hpp"
 #include "momenta/io/file_template.hpp"
@@ -25,11 +26,6 @@ using Kind = Metric::Kind;
 bool is_simulation_metric(Kind k) { return k <= Kind::kMaxAuditDrift; }
 bool is_linear_metric(Kind k) { return k >= Kind::kPoles && k <= Kind::kDampingRatios; }
 bool is_part_metric(Kind k) { return k >= Kind::kMass; }
-
-std::string one_line(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  return text;
-}
 
 std::vector<io::NumberOverride> overrides_of(const SweepSpec& spec,
                                              const std::vector<double>& values) {

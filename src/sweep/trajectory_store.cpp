@@ -1,12 +1,9 @@
 #include "momenta/sweep/trajectory_store.hpp"
 
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
-
 #include <fmt/format.h>
 
 #include "momenta/common/error.hpp"
+#include "momenta/simulate/csv_writer.hpp"
 
 #ifdef MOMENTA_HDF5
 #include <hdf5.h>
@@ -23,21 +20,14 @@ class CsvFolder final : public TrajectoryStore {
 
   void write(const RunOutcome& outcome) override {
     if (!outcome.ok) return;
-    const std::filesystem::path path = folder_ / (run_name(outcome.run) + ".csv");
-    std::FILE* file = std::fopen(path.string().c_str(), "wb");
-    if (file == nullptr) {
-      throw FileError(fmt::format("{}: cannot create: {}", path.string(), std::strerror(errno)));
-    }
-    std::string text = fmt::format("{}\n", fmt::join(outcome.trajectory_columns, ","));
+    // The table as `momenta simulate` writes it; a resumed sweep's run replaces its file.
+    simulate::CsvWriter csv(folder_ / (run_name(outcome.run) + ".csv"), true);
+    csv.begin(outcome.trajectory_columns);
     const std::size_t columns = outcome.trajectory_columns.size();
-    for (std::size_t i = 0; i < outcome.trajectory.size(); ++i) {
-      fmt::format_to(std::back_inserter(text), "{}{}", outcome.trajectory[i],
-                     (i + 1) % columns == 0 ? '\n' : ',');
+    for (std::size_t at = 0; at + columns <= outcome.trajectory.size(); at += columns) {
+      csv.row(std::span(outcome.trajectory).subspan(at, columns));
     }
-    const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
-    if (std::fclose(file) != 0 || !written) {
-      throw FileError(fmt::format("{}: writing failed: {}", path.string(), std::strerror(errno)));
-    }
+    csv.flush();
   }
 
  private:
