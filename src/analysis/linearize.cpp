@@ -502,6 +502,13 @@ std::vector<std::string> linear_state_names(const model::Model& model) {
 LinearModel linearize(const model::Model& model, const OperatingPoint& point,
                       const LinearizationOptions& options) {
   check_arguments(point, options);
+  if (model.has_constraints()) {
+    // The tree's linearization would ignore the constraints: refuse rather than mislead.
+    throw InvalidArgument(fmt::format(
+        "linearization of a model with constraints ('{}', ...) is not available yet: it needs "
+        "the independent coordinates of the constraint Jacobian's null space (docs/constraints.md)",
+        model::constraint_name(model.constraints().front())));
+  }
   ModelResidual residual(model);
   system::MultibodySystem& system = residual.system();
   const double t = point.t;

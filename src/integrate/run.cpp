@@ -125,6 +125,7 @@ RunSummary run(SecondOrderSystem& system, Integrator& integrator, State& state,
       grid_step = false;
     }
     const double h = integrator.step(system, state, t_target - state.t);
+    if (system.project(state.t, state.q, state.v)) integrator.state_changed();
     // Land exactly on the target when the step reached it; an interval h does not divide leaves
     // a last step of round-off size: absorb it.
     if (close(state.t, t_target)) state.t = t_target;

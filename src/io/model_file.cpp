@@ -83,9 +83,9 @@ namespace {
 
 using detail::Context;
 
-constexpr std::array<std::string_view, 9> kModelFileKeys = {"name",   "description", "gravity",
-                                                            "bodies", "joints",      "forces",
-                                                            "inputs", "outputs",     "simulation"};
+constexpr std::array<std::string_view, 10> kModelFileKeys = {
+    "name",   "description", "gravity", "bodies",  "joints",
+    "forces", "constraints", "inputs",  "outputs", "simulation"};
 
 // The declarations of one kind of item.
 const detail::Declared& declared_of(ModelItemRef::Kind kind, const Context& ctx) {
@@ -96,6 +96,8 @@ const detail::Declared& declared_of(ModelItemRef::Kind kind, const Context& ctx)
       return ctx.joints;
     case ModelItemRef::Kind::force_element:
       return ctx.forces;
+    case ModelItemRef::Kind::constraint:
+      return ctx.constraints;
     case ModelItemRef::Kind::signal:
       break;
   }
@@ -113,7 +115,7 @@ std::vector<ItemLocation> item_locations(const Context& ctx) {
   std::vector<ItemLocation> locations;
   for (const ModelItemRef::Kind kind :
        {ModelItemRef::Kind::body, ModelItemRef::Kind::joint, ModelItemRef::Kind::force_element,
-        ModelItemRef::Kind::signal}) {
+        ModelItemRef::Kind::signal, ModelItemRef::Kind::constraint}) {
     const detail::Declared& declared = declared_of(kind, ctx);
     for (const std::string& name : declared.names()) {
       const YamlNode node = *declared.find(name);
@@ -175,6 +177,7 @@ ModelFile detail::compose_model_file(const YamlNode& root, const std::filesystem
   detail::read_bodies(root, ctx, builder);
   detail::read_joints(root, ctx, builder);
   detail::read_forces(root, ctx, builder);
+  detail::read_constraints(root, ctx, builder);
 
   // What the reader did not check itself, the builder does: report it at the line of the item
   // it is about.

@@ -57,6 +57,7 @@ struct Context {
   Declared joints{"joint"};
   Declared forces{"force element"};
   Declared signals{"signal"};
+  Declared constraints{"constraint"};
   /// Joint types by joint name (for checks that need them before the model is built).
   std::map<std::string, model::JointType, std::less<>> joint_types;
   /// What each body is made of, by body name, placed in its frame (ModelFile::body_parts).
@@ -78,6 +79,8 @@ void read_bodies(const YamlNode& root, Context& ctx, model::ModelBuilder& builde
 void read_joints(const YamlNode& root, Context& ctx, model::ModelBuilder& builder);
 /// `forces:` — every force element.
 void read_forces(const YamlNode& root, Context& ctx, model::ModelBuilder& builder);
+/// `constraints:` — every constraint (after the joints, which couplers name).
+void read_constraints(const YamlNode& root, Context& ctx, model::ModelBuilder& builder);
 /// `outputs:` — checked against the built model.
 std::vector<model::OutputSpec> read_outputs(const YamlNode& root, const Context& ctx,
                                             const model::Model& model);

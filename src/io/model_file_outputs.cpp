@@ -9,6 +9,7 @@
 #include <variant>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "model_file_internal.hpp"
 #include "momenta/common/error.hpp"
@@ -26,8 +27,8 @@ struct Target {
   std::vector<std::pair<std::string_view, OutputQuantity>> quantities;
 };
 
-const std::array<Target, 4>& targets() {
-  static const std::array<Target, 4> table = {{
+const std::array<Target, 5>& targets() {
+  static const std::array<Target, 5> table = {{
       {"body",
        {{"position", Q::body_position},
         {"velocity", Q::body_velocity},
@@ -41,6 +42,7 @@ const std::array<Target, 4>& targets() {
         {"reaction_moment", Q::reaction_moment}}},
       {"signal", {{"signal", Q::signal}}},
       {"spring", {{"spring_length", Q::spring_length}, {"spring_tension", Q::spring_tension}}},
+      {"constraint", {{"force", Q::constraint_force}}},
   }};
   return table;
 }
@@ -58,6 +60,7 @@ OutputQuantity read_quantity(const YamlNode& e, const Target& target) {
   const auto node = e.find("quantity");
   if (!node) {
     if (target.key == "signal") return Q::signal;
+    if (target.key == "constraint") return Q::constraint_force;
     e.fail(fmt::format("an output of a {} needs a 'quantity'", target.key));
   }
   const std::string name = node->as_string();
@@ -98,6 +101,15 @@ int read_component(const YamlNode& node, const model::OutputSpec& spec, const mo
       spec.quantity == Q::spring_tension) {
     node.fail("this quantity is a single number: it has no components");
   }
+  if (spec.quantity == Q::constraint_force) {
+    const auto labels =
+        model::constraint_force_labels(model.constraints()[*model.find_constraint(spec.target)]);
+    const std::string label = node.as_string();
+    for (std::size_t i = 0; i < labels.size(); ++i)
+      if (labels[i] == label) return static_cast<int>(i);
+    node.fail(fmt::format("'{}' is not a force of constraint '{}'{}; it has {}", label, spec.target,
+                          did_you_mean(label, labels), fmt::join(labels, ", ")));
+  }
   const model::Joint& joint = model.joint(model.joint_index(spec.target));
   const bool q = spec.quantity == Q::joint_position;
   const int n = q ? joint.nq() : joint.nv();
@@ -115,12 +127,15 @@ int read_component(const YamlNode& node, const model::OutputSpec& spec, const mo
 }
 
 model::OutputSpec read_output(const YamlNode& e, const Context& ctx, const model::Model& model) {
-  e.expect_map("an output: a map with a target ('body', 'joint', 'signal', 'spring')");
-  e.check_keys(
-      {"name", "quantity", "body", "joint", "signal", "spring", "point", "component", "frame"});
-  const auto key = e.which_of({"body", "joint", "signal", "spring"});
+  e.expect_map(
+      "an output: a map with a target ('body', 'joint', 'signal', 'spring', 'constraint')");
+  e.check_keys({"name", "quantity", "body", "joint", "signal", "spring", "constraint", "point",
+                "component", "frame"});
+  const auto key = e.which_of({"body", "joint", "signal", "spring", "constraint"});
   if (!key) {
-    e.fail("an output needs one target: 'body', 'joint', 'signal' or 'spring' (a spring_damper)");
+    e.fail(
+        "an output needs one target: 'body', 'joint', 'signal', 'spring' (a spring_damper) or "
+        "'constraint'");
   }
   const Target& target = *std::find_if(targets().begin(), targets().end(),
                                        [&](const Target& t) { return t.key == *key; });
@@ -135,6 +150,8 @@ model::OutputSpec read_output(const YamlNode& e, const Context& ctx, const model
     spec.target = ctx.joints.resolve(ref);
   } else if (*key == "signal") {
     spec.target = ctx.signals.resolve(ref);
+  } else if (*key == "constraint") {
+    spec.target = ctx.constraints.resolve(ref);
   } else {
     spec.target = ctx.forces.resolve(ref);
     const auto& elements = model.force_elements();
@@ -164,8 +181,9 @@ model::OutputSpec read_output(const YamlNode& e, const Context& ctx, const model
     spec.component = read_component(*component, spec, model);
   }
   spec.name = e.find_string("name").value_or(
-      spec.quantity == Q::signal ? spec.target
-                                 : fmt::format("{}.{}", spec.target, e.at("quantity").as_string()));
+      spec.quantity == Q::signal || spec.quantity == Q::constraint_force
+          ? spec.target
+          : fmt::format("{}.{}", spec.target, e.at("quantity").as_string()));
   return spec;
 }
 

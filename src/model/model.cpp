@@ -60,6 +60,10 @@ std::optional<int> Model::find_joint(std::string_view name) const {
 std::optional<int> Model::find_signal(std::string_view name) const {
   return find_by_name(signals_, name, [](const Signal& s) -> std::string_view { return s.name(); });
 }
+std::optional<int> Model::find_constraint(std::string_view name) const {
+  return find_by_name(constraints_, name,
+                      [](const Constraint& c) -> std::string_view { return constraint_name(c); });
+}
 int Model::body_index(std::string_view name) const {
   return index_or_throw(
       bodies_, name, [](const Body& b) -> std::string_view { return b.name; }, "body");

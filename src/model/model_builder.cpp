@@ -116,6 +116,11 @@ ModelBuilder& ModelBuilder::add_signal(Signal signal) {
   return *this;
 }
 
+ModelBuilder& ModelBuilder::add_constraint(Constraint constraint) {
+  constraints_.push_back(std::move(constraint));
+  return *this;
+}
+
 namespace {
 
 using Kind = ModelItemRef::Kind;
@@ -141,8 +146,12 @@ class ModelAssembler {
  public:
   ModelAssembler(const Vec3& gravity, const std::vector<Body>& bodies,
                  const std::vector<Joint>& joints, const std::vector<ForceElement>& elements,
-                 const std::vector<Signal>& signals)
-      : bodies_(bodies), joints_(joints), elements_(elements), signals_(signals) {
+                 const std::vector<Signal>& signals, const std::vector<Constraint>& constraints)
+      : bodies_(bodies),
+        joints_(joints),
+        elements_(elements),
+        signals_(signals),
+        constraints_(constraints) {
     model_.gravity_ = gravity;
   }
 
@@ -155,6 +164,7 @@ class ModelAssembler {
     fill_state_and_constants();
     check_inertia_along_joints();
     resolve_force_elements();
+    resolve_constraints();
     model_.signals_ = signals_;
     return std::move(model_);
   }
@@ -554,10 +564,87 @@ class ModelAssembler {
     if (!e.signal.empty()) e.signal_index = find_signal(e.signal, who);
   }
 
+  // Constraints: unique names (also among force elements: both name CSV columns), known bodies
+  // and joints, physical sizes.
+  void resolve_constraints() {
+    std::set<std::string, std::less<>> names;
+    for (const ForceElement& e : model_.force_elements_) names.insert(force_element_name(e));
+    for (Constraint constraint : constraints_) {
+      const std::string& name = constraint_name(constraint);
+      require(!name.empty(), "a constraint has an empty name");
+      for_item(Kind::constraint, name, [&] {
+        MOMENTA_REQUIRE(names.insert(name).second,
+                        "two constraints (or a constraint and a force element) are named '{}'",
+                        name);
+        std::visit([&](auto& c) { resolve(c, fmt::format("constraint '{}'", name)); }, constraint);
+      });
+      model_.constraint_rows_ += constraint_rows(constraint);
+      model_.constraints_.push_back(std::move(constraint));
+    }
+  }
+
+  void resolve_frame(BodyFrame& f, const std::string& who) const {
+    f.body_index = body_at(f.body, who);
+    check_transform(f.X_BF, fmt::format("{}: the frame on body '{}'", who, f.body));
+  }
+
+  void resolve_pair(BodyFrame& a, BodyFrame& b, const std::string& who) const {
+    resolve_frame(a, who);
+    resolve_frame(b, who);
+    MOMENTA_REQUIRE(a.body_index != b.body_index,
+                    "{}: both ends are on body '{}'; a constraint joins two bodies", who, a.body);
+  }
+
+  void resolve(LoopClosure& c, const std::string& who) const { resolve_pair(c.a, c.b, who); }
+
+  void resolve(DistanceLink& c, const std::string& who) const {
+    resolve_pair(c.a, c.b, who);
+    MOMENTA_REQUIRE(c.length > 0.0 && std::isfinite(c.length),
+                    "{}: length must be positive and finite, got {} m", who, c.length);
+  }
+
+  void check_plane_normal(const Vec3& n, const std::string& who) const {
+    check_axis(n, who + ": the plane normal");
+  }
+
+  void resolve(RollingContact& c, const std::string& who) const {
+    resolve_frame(c.frame, who);
+    require(c.frame.body_index != 0, who + ": the world cannot roll; name the wheel's body");
+    MOMENTA_REQUIRE(c.radius > 0.0 && std::isfinite(c.radius),
+                    "{}: radius must be positive and finite, got {} m", who, c.radius);
+    check_plane_normal(c.plane_normal, who);
+    MOMENTA_REQUIRE(c.plane_point.allFinite(), "{}: plane point {} is not finite", who,
+                    vec_str(c.plane_point));
+  }
+
+  void resolve(KnifeEdge& c, const std::string& who) const {
+    resolve_frame(c.frame, who);
+    require(c.frame.body_index != 0, who + ": a knife edge on the world does nothing");
+    check_plane_normal(c.plane_normal, who);
+  }
+
+  void resolve(JointCoupler& c, const std::string& who) const {
+    c.joint_a_index = joint_at(c.joint_a, who);
+    c.joint_b_index = joint_at(c.joint_b, who);
+    MOMENTA_REQUIRE(c.joint_a_index != c.joint_b_index, "{}: joint '{}' is coupled to itself", who,
+                    c.joint_a);
+    for (const int j : {c.joint_a_index, c.joint_b_index}) {
+      const Joint& joint = model_.joints_[j];
+      MOMENTA_REQUIRE(joint.nv() == 1,
+                      "{}: joint '{}' is {} with {} degrees of freedom; a coupler relates two "
+                      "1-dof joints (revolute or prismatic)",
+                      who, joint.name, joint_type_name(joint.type), joint.nv());
+    }
+    MOMENTA_REQUIRE(std::isfinite(c.ratio) && c.ratio != 0.0,
+                    "{}: ratio must be finite and non-zero, got {}", who, c.ratio);
+    MOMENTA_REQUIRE(std::isfinite(c.offset), "{}: offset is not finite", who);
+  }
+
   const std::vector<Body>& bodies_;
   const std::vector<Joint>& joints_;
   const std::vector<ForceElement>& elements_;
   const std::vector<Signal>& signals_;
+  const std::vector<Constraint>& constraints_;
   Model model_;
   std::map<std::string, int, std::less<>> body_by_name_;  // index into bodies_ (input order)
   std::vector<std::string_view> body_names_;
@@ -572,7 +659,8 @@ class ModelAssembler {
 }  // namespace detail
 
 Model ModelBuilder::build() const {
-  return detail::ModelAssembler(gravity_, bodies_, joints_, force_elements_, signals_).build();
+  return detail::ModelAssembler(gravity_, bodies_, joints_, force_elements_, signals_, constraints_)
+      .build();
 }
 
 }  // namespace momenta::model

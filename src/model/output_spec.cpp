@@ -20,6 +20,8 @@ OutputTargetKind output_target_kind(OutputQuantity quantity) {
     case OutputQuantity::spring_length:
     case OutputQuantity::spring_tension:
       return OutputTargetKind::force_element;
+    case OutputQuantity::constraint_force:
+      return OutputTargetKind::constraint;
   }
   return OutputTargetKind::joint;
 }
@@ -34,6 +36,8 @@ std::string_view output_target_kind_name(OutputTargetKind kind) {
       return "signal";
     case OutputTargetKind::force_element:
       return "force element";
+    case OutputTargetKind::constraint:
+      return "constraint";
   }
   return "";
 }
@@ -58,6 +62,8 @@ std::string_view output_quantity_name(OutputQuantity quantity) {
       return "reaction_moment";
     case OutputQuantity::signal:
       return "signal";
+    case OutputQuantity::constraint_force:
+      return "force";
     case OutputQuantity::spring_length:
       return "spring_length";
     case OutputQuantity::spring_tension:

@@ -4,13 +4,16 @@
 #include <cmath>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
+#include "momenta/dynamics/constraints.hpp"
 #include "momenta/dynamics/kinematics.hpp"
 #include "momenta/dynamics/momentum.hpp"
 #include "momenta/dynamics/reactions.hpp"
 #include "momenta/integrate/run.hpp"
+#include "momenta/model/integrators.hpp"
 #include "momenta/system/integrators.hpp"
 #include "momenta/system/multibody_system.hpp"
 #include "momenta/system/rigid_body_integrator.hpp"
@@ -74,6 +77,14 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
     : model_(model), options_(std::move(options)), outputs_(model, std::move(outputs)) {
   check_options(options_);
   integrator_ = system::make_integrator(options_.integrator, options_.tolerances);
+  if (model.has_constraints() &&
+      model::integrator_info(options_.integrator).family == model::IntegratorFamily::rigid_body) {
+    throw InvalidArgument(
+        fmt::format("integrator '{}' advances one free body's own flow and cannot keep the model's "
+                    "constraints (each step must end projected onto them): use rk4, dopri5 or "
+                    "symplectic_euler",
+                    options_.integrator));
+  }
 
   // The columns that do not depend on what the model conserves.
   columns_.push_back("time");
@@ -89,6 +100,9 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
     for (const model::Joint& j : model.joints())
       for (const char* suffix : kReactionSuffixes)
         columns_.push_back(fmt::format("{}.reaction.{}", j.name, suffix));
+    for (const model::Constraint& c : model.constraints())
+      for (const std::string_view label : model::constraint_force_labels(c))
+        columns_.push_back(fmt::format("{}.{}", model::constraint_name(c), label));
   }
 
   // The audit columns, where the model should conserve the quantity.
@@ -99,6 +113,10 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
     columns_.push_back("audit.H_drift");
   }
   if (!quaternion_offsets(model).empty()) columns_.push_back("audit.quaternion_norm_error");
+  if (model.has_constraints()) {
+    columns_.push_back("audit.constraint_position");
+    columns_.push_back("audit.constraint_velocity");
+  }
 
   // A name used twice (an output called "time", a joint "a" with a coordinate column that an
   // output also produces) would make the table ambiguous.
@@ -160,6 +178,11 @@ class Simulation::Recorder {
       h_ = audit_.add("H", h.angular_about_com, floor);
     }
     if (summary.quaternions_audited) quaternion_ = audit_.add("quaternion norm", 0.0, 1.0);
+    summary.constraints_audited = model_.has_constraints();
+    if (summary.constraints_audited) {
+      constraint_position_ = audit_.add("constraint position", 0.0, 1.0);
+      constraint_velocity_ = audit_.add("constraint velocity", 0.0, 1.0);
+    }
     sink_.begin(sim_.columns_);
   }
 
@@ -188,6 +211,12 @@ class Simulation::Recorder {
       audit_.record(h_, h.angular_about_com);
     }
     if (quaternion_ >= 0) audit_.record(quaternion_, quaternion_error);
+    system::ConstraintResiduals residuals;
+    if (constraint_position_ >= 0) {
+      residuals = system_.constraints()->residuals(audit_data_, q_, v_);
+      audit_.record(constraint_position_, residuals.position);
+      audit_.record(constraint_velocity_, residuals.velocity);
+    }
     if (!record) return;
 
     // The row, in column order.
@@ -212,6 +241,15 @@ class Simulation::Recorder {
         for (int k = 0; k < 3; ++k) row_[c++] = r.force[k];
         for (int k = 0; k < 3; ++k) row_[c++] = r.moment[k];
       }
+      if (const system::ConstraintSolver* solver = system_.constraints()) {
+        for (int k = 0; k < static_cast<int>(model_.constraints().size()); ++k) {
+          const int n =
+              static_cast<int>(model::constraint_force_labels(model_.constraints()[k]).size());
+          dynamics::constraint_forces(model_, system_.data(), solver->rows(), solver->multipliers(),
+                                      k, std::span<double>(row_).subspan(c, n));
+          c += n;
+        }
+      }
     }
     if (energy_ >= 0) row_[c++] = audit_.entry(energy_).final_drift;
     if (h_ >= 0) {
@@ -219,6 +257,10 @@ class Simulation::Recorder {
       row_[c++] = audit_.entry(h_).final_drift;
     }
     if (quaternion_ >= 0) row_[c++] = quaternion_error;
+    if (constraint_position_ >= 0) {
+      row_[c++] = residuals.position;
+      row_[c++] = residuals.velocity;
+    }
     check_row_finite(state.t);
     sink_.row(row_);
     ++rows_;
@@ -260,7 +302,9 @@ class Simulation::Recorder {
   VecX q_, v_, vdot_;
   std::vector<double> row_;
   ConservationAudit audit_;
-  int energy_ = -1, h_norm_ = -1, h_ = -1, quaternion_ = -1;  // audit entries, −1 if not audited
+  // Audit entries, −1 if not audited.
+  int energy_ = -1, h_norm_ = -1, h_ = -1, quaternion_ = -1;
+  int constraint_position_ = -1, constraint_velocity_ = -1;
   long rows_ = 0;
   long observed_ = 0;
 };
@@ -278,6 +322,9 @@ SimulationSummary Simulation::run(RowSink& sink) {
   model::normalize(model_, state.q);
   if (model_.has_prescribed_joints())
     recorder.system().apply_prescribed_motion(0.0, state.q, state.v);
+  summary.initial_state = recorder.system().make_consistent(0.0, state.q, state.v);
+  if (const system::ConstraintSolver* solver = recorder.system().constraints())
+    summary.redundant_constraint_rows = solver->redundant_rows();
   recorder.start(state, summary);
 
   // integrate::run reports every step (so the audit sees each); rows are kept every n-th, and
@@ -340,6 +387,17 @@ std::string format_summary(const SimulationSummary& s) {
   const double rate = s.wall_seconds > 0.0 ? s.statistics.steps / s.wall_seconds : 0.0;
   out += fmt::format("wall time    {:.3g} s ({:.3g} steps/s); {} rows\n", s.wall_seconds, rate,
                      s.rows);
+  for (const system::CoordinateChange& c : s.initial_state.q_changes)
+    out += fmt::format("initial q    {} {:.9g} -> {:.12g} (made consistent with the constraints)\n",
+                       c.name, c.from, c.to);
+  for (const system::CoordinateChange& c : s.initial_state.v_changes)
+    out += fmt::format("initial v    {} {:.9g} -> {:.12g} (made consistent with the constraints)\n",
+                       c.name, c.from, c.to);
+  if (!s.redundant_constraint_rows.empty()) {
+    out += fmt::format(
+        "constraints  redundant rows (implied by the others; they carry no force): {}\n",
+        fmt::join(s.redundant_constraint_rows, ", "));
+  }
   out += "conservation audit (relative drift: at the end, largest over every step)\n";
   for (const AuditEntry& e : s.audit) {
     out += fmt::format("  {:<16} {:>10.2e}  {:>10.2e}\n", e.name, e.final_drift, e.max_drift);

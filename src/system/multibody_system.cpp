@@ -12,6 +12,7 @@
 #include "momenta/dynamics/force_elements.hpp"
 #include "momenta/dynamics/hybrid_dynamics.hpp"
 #include "momenta/dynamics/kinematics.hpp"
+#include "momenta/dynamics/rnea.hpp"
 
 namespace momenta::system {
 
@@ -69,7 +70,20 @@ MultibodySystem::MultibodySystem(const model::Model& model)
       if (t->joint_index < 0 && (t->body_a_index == 0 || t->body_b_index == 0)) floating = false;
     }
   }
+  // Ideal constraints do no work; those on the world (rolling, knife edges, loops to the
+  // ground) exert external moments.
+  for (const model::Constraint& c : model.constraints()) {
+    if (std::holds_alternative<model::RollingContact>(c) ||
+        std::holds_alternative<model::KnifeEdge>(c)) {
+      floating = false;
+    } else if (const auto* loop = std::get_if<model::LoopClosure>(&c)) {
+      if (loop->a.body_index == 0 || loop->b.body_index == 0) floating = false;
+    } else if (const auto* link = std::get_if<model::DistanceLink>(&c)) {
+      if (link->a.body_index == 0 || link->b.body_index == 0) floating = false;
+    }
+  }
   conserves_angular_momentum_ = conserves_energy_ && floating;
+  if (model.has_constraints()) constraints_ = std::make_unique<ConstraintSolver>(model);
   for (const model::ForceElement& element : model.force_elements()) {
     const auto* t = std::get_if<model::TorsionalSpringDamper>(&element);
     const bool on_joint = std::holds_alternative<model::JointFriction>(element) ||
@@ -119,7 +133,30 @@ const VecX& MultibodySystem::compute(double t, const VecX& q, const VecX& v, mod
     dynamics::aba(model_, data_, q_, v_, tau_elements_, f_ext);
     data_.tau = tau_elements_;
   }
+  if (constraints_) {
+    constraints_->correct_accelerations(t, data_, q_, data_.vdot);
+    constraints_->add_forces(data_, f_ext_, data_.tau);
+    // The drives of prescribed joints also carry the constraint forces.
+    if (prescribed) dynamics::rnea(model_, data_, q_, v_, data_.vdot, f_ext_);
+  }
   return data_.vdot;
+}
+
+bool MultibodySystem::project(double t, VecX& q, VecX& v) {
+  if (!constraints_) return false;
+  apply_prescribed_motion(t, q, v);
+  return constraints_->project(data_, q, v);
+}
+
+ConsistentState MultibodySystem::make_consistent(double t, VecX& q, VecX& v) {
+  if (!constraints_) return {};
+  apply_prescribed_motion(t, q, v);
+  std::vector<char> q_given(model_.num_joints()), v_given(model_.num_joints());
+  for (const model::Joint& j : model_.joints()) {
+    q_given[j.index] = j.q0.size() > 0 || j.is_prescribed();
+    v_given[j.index] = j.v0.size() > 0 || j.is_prescribed();
+  }
+  return constraints_->consistent_state(data_, q, v, q_given, v_given);
 }
 
 const VecX& MultibodySystem::evaluate(double t, const VecX& q, const VecX& v) {

@@ -10,6 +10,7 @@
 
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
+#include "momenta/dynamics/constraints.hpp"
 #include "momenta/dynamics/point_kinematics.hpp"
 #include "momenta/dynamics/reactions.hpp"
 #include "momenta/system/multibody_system.hpp"
@@ -44,6 +45,10 @@ std::vector<std::string_view> candidate_names(const model::Model& model,
     case model::OutputTargetKind::force_element:
       for (const model::ForceElement& e : model.force_elements())
         names.push_back(model::force_element_name(e));
+      break;
+    case model::OutputTargetKind::constraint:
+      for (const model::Constraint& c : model.constraints())
+        names.push_back(model::constraint_name(c));
       break;
   }
   return names;
@@ -99,7 +104,11 @@ OutputSet::OutputSet(const model::Model& model, std::vector<OutputSpec> specs)
     // How many values the quantity has, and how its columns are suffixed.
     int count = 1;
     bool by_axis = false;
-    if (is_vector(spec.quantity)) {
+    std::vector<std::string_view> labels;  // a constraint's force labels
+    if (kind == model::OutputTargetKind::constraint) {
+      labels = model::constraint_force_labels(model.constraints()[index]);
+      count = static_cast<int>(labels.size());
+    } else if (is_vector(spec.quantity)) {
       count = 3;
       by_axis = true;
     } else if (kind == model::OutputTargetKind::joint) {
@@ -130,8 +139,11 @@ OutputSet::OutputSet(const model::Model& model, std::vector<OutputSpec> specs)
     const int last = spec.component >= 0 ? spec.component + 1 : count;
     for (int k = first; k < last; ++k) {
       std::string column = spec.name;
-      if (spec.component < 0 && count > 1)
-        column += by_axis ? fmt::format(".{}", kAxes[k]) : fmt::format(".{}", k);
+      if (spec.component < 0 && count > 1) {
+        column += !labels.empty() ? fmt::format(".{}", labels[k])
+                  : by_axis       ? fmt::format(".{}", kAxes[k])
+                                  : fmt::format(".{}", k);
+      }
       if (!seen.insert(column).second) {
         throw InvalidArgument(fmt::format(
             "output '{}': column '{}' is already taken by another output", spec.name, column));
@@ -220,6 +232,14 @@ void OutputSet::evaluate(MultibodySystem& system, double t, const VecX& q, const
           const double rate = length > 0.0 ? d.dot(v_b - v_a) / length : 0.0;
           out = spring.stiffness * (length - spring.free_length) + spring.damping * rate;
         }
+        break;
+      }
+      case OutputQuantity::constraint_force: {
+        const ConstraintSolver& solver = *system.constraints();
+        std::array<double, 6> forces{};
+        dynamics::constraint_forces(model, data, solver.rows(), solver.multipliers(), column.index,
+                                    forces);
+        out = forces[k];
         break;
       }
       case OutputQuantity::reaction_force:

@@ -116,7 +116,8 @@ struct LinearModel {
 
 /// Linearizes `model` about `point` (q nq, v nv; quaternions unit to 1e-6) with respect to the
 /// inputs and outputs of `options`.
-/// Throws InvalidArgument when no joint is free (all fixed or prescribed), on a state of the wrong
+/// Throws InvalidArgument for a model with constraints (not available yet), when no joint is
+/// free (all fixed or prescribed), on a state of the wrong
 /// size, an unknown input or output name (with a "did you mean"), a repeated name, an input that
 /// drives nothing, or an output that feels a prescribed input's rate or acceleration directly (an
 /// improper transfer function, named); NumericalError when the mass matrix of the free coordinates

@@ -50,6 +50,10 @@ class Integrator {
   /// underflow).
   virtual double step(SecondOrderSystem& system, State& state, double h) = 0;
 
+  /// The state was changed between steps (projected onto constraints): forget anything kept
+  /// from the last step's end (dopri5's first-same-as-last derivative). The default keeps nothing.
+  virtual void state_changed() {}
+
   const IntegratorStatistics& statistics() const { return statistics_; }
 
  protected:

@@ -57,6 +57,7 @@ class DormandPrince5 final : public Integrator {
   bool adaptive() const override { return true; }
   void initialize(SecondOrderSystem& system, const State& state) override;
   double step(SecondOrderSystem& system, State& state, double h_max) override;
+  void state_changed() override { have_last_acceleration_ = false; }
 
   /// The state at time t within the last accepted step [t_prev, t] from the dense output (fourth
   /// order); `out` must be sized like the state. Throws InvalidArgument outside that interval.

@@ -58,6 +58,17 @@ class SecondOrderSystem {
     (void)t1;
   }
 
+  /// Moves a state that has just been stepped to back onto the system's invariant manifold (the
+  /// constraints of a constrained model) and returns true when it changed it; integrate::run
+  /// calls it after every step and then tells the integrator (Integrator::state_changed). The
+  /// default does nothing.
+  virtual bool project(double t, VecX& q, VecX& v) {
+    (void)t;
+    (void)q;
+    (void)v;
+    return false;
+  }
+
   /// A name for configuration coordinate i (velocity coordinate i when `velocity`), used in
   /// error messages: "hinge.q0". The default is "q[i]" / "v[i]".
   virtual std::string coordinate_name(int i, bool velocity) const {

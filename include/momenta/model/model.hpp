@@ -19,6 +19,7 @@
 
 #include "momenta/math/spatial.hpp"
 #include "momenta/model/body.hpp"
+#include "momenta/model/constraint.hpp"
 #include "momenta/model/force_element.hpp"
 #include "momenta/model/joint.hpp"
 #include "momenta/model/signal.hpp"
@@ -76,6 +77,10 @@ class Model {
   const Joint& joint(int j) const { return joints_[j]; }
   const std::vector<ForceElement>& force_elements() const { return force_elements_; }
   const std::vector<Signal>& signals() const { return signals_; }
+  /// Constraints beyond the tree (model/constraint.hpp), and the total rows they add.
+  const std::vector<Constraint>& constraints() const { return constraints_; }
+  bool has_constraints() const { return !constraints_.empty(); }
+  int num_constraint_rows() const { return constraint_rows_; }
 
   /// Parent body index of body b (−1 for the world).
   int parent(int b) const { return bodies_[b].parent_index; }
@@ -89,6 +94,7 @@ class Model {
   std::optional<int> find_body(std::string_view name) const;
   std::optional<int> find_joint(std::string_view name) const;
   std::optional<int> find_signal(std::string_view name) const;
+  std::optional<int> find_constraint(std::string_view name) const;
   /// Index of the body, joint or signal with that name; throws InvalidArgument with a "did you
   /// mean" suggestion if there is none.
   int body_index(std::string_view name) const;
@@ -124,6 +130,8 @@ class Model {
   std::vector<SpatialInertia> inertias_;
   std::vector<ForceElement> force_elements_;
   std::vector<Signal> signals_;
+  std::vector<Constraint> constraints_;
+  int constraint_rows_ = 0;
   std::vector<int> joint_of_q_;
   std::vector<int> joint_of_v_;
   std::vector<std::string> q_names_;

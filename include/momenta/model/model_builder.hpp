@@ -22,6 +22,8 @@ class ModelBuilder {
   ModelBuilder& add_joint(Joint joint);
   ModelBuilder& add_force_element(ForceElement element);
   ModelBuilder& add_signal(Signal signal);
+  /// Adds a constraint closing a loop, a link, a rolling contact, a knife edge or a coupler.
+  ModelBuilder& add_constraint(Constraint constraint);
 
   /// Validates and builds the Model. Throws InvalidArgument (InvalidInertia for mass properties)
   /// naming the offending body, joint, element or signal, with the values, when:
@@ -37,7 +39,10 @@ class ModelBuilder {
   /// - a prescribed joint has not one signal per coordinate or nq ≠ nv, or a signal is unknown;
   /// - a force element names an unknown body, joint or signal, or has a negative stiffness,
   ///   damping or free length, a torsional spring's joint is not 1-dof, or a loaded vector is not
-  ///   finite.
+  ///   finite;
+  /// - a constraint names an unknown body or joint, joins a body to itself, has a non-positive
+  ///   length or radius, a non-unit plane normal, a coupler's joint that is not 1-dof, or a
+  ///   ratio that is zero or not finite.
   Model build() const;
 
  private:
@@ -46,6 +51,7 @@ class ModelBuilder {
   std::vector<Joint> joints_;
   std::vector<ForceElement> force_elements_;
   std::vector<Signal> signals_;
+  std::vector<Constraint> constraints_;
 };
 
 }  // namespace momenta::model

@@ -29,16 +29,17 @@ enum class OutputQuantity {
   signal,                 ///< an input signal's value
   spring_length,          ///< a linear spring-damper's length ℓ (m)
   spring_tension,         ///< its tension k (ℓ − ℓ0) + c ℓ̇ (N)
+  constraint_force,       ///< a constraint's forces (dynamics::constraint_force_labels)
 };
 
 /// What kind of model item a quantity is of.
-enum class OutputTargetKind { joint, body, signal, force_element };
+enum class OutputTargetKind { joint, body, signal, force_element, constraint };
 
 /// The kind of item `quantity` is of (a reaction is of a joint, a spring length of a force
 /// element).
 OutputTargetKind output_target_kind(OutputQuantity quantity);
 
-/// "joint", "body", "signal", "force element".
+/// "joint", "body", "signal", "force element", "constraint".
 std::string_view output_target_kind_name(OutputTargetKind kind);
 
 /// The name used in model files: "position", "velocity", "effort", "reaction_force", ...

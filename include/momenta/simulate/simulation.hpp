@@ -15,8 +15,12 @@
 //   with options.reactions: <joint>.reaction.Fx .Fy .Fz .Mx .My .Mz for every joint: the
 //                  wrench it transmits to its child, in W, the moment about the child-side joint
 //                  frame's origin J'o (dynamics/reactions.hpp)
+//                  and every constraint's forces, <constraint>.<label>
+//                  (dynamics::constraint_force_labels: reaction.Fx ... of a loop, tension,
+//                  normal/longitudinal/lateral of a rolling contact, ...)
 //   the audit, where audited (see below): audit.energy_drift, audit.H_norm_drift, audit.H_drift,
-//                  audit.quaternion_norm_error
+//                  audit.quaternion_norm_error, audit.constraint_position,
+//                  audit.constraint_velocity
 //
 // Conservation audit. Evaluated after every step (not only at recorded rows), without
 // allocation: the relative drift of the total energy where MultibodySystem::conserves_energy(),
@@ -25,7 +29,14 @@
 // (E − E0) / max(|E0|, E_scale) with E_scale = T0 + V_springs0 + Σ_b m_b |g| |p_WoBcm_W| (the
 // energy the motion could exchange, so that a model starting at E0 = 0 is not divided by zero);
 // |H| and H drift are (|H| − |H0|) / S and |H − H0| / S with S = max(|H0|, sqrt(2 T0 Σ_b
-// tr I_Bcm / 3)). The quaternion norm error is absolute.
+// tr I_Bcm / 3)). The quaternion norm error is absolute, and so are the constraint residuals of
+// a constrained model: the largest |φ| of its position rows (m or rad) and |G v| of all rows
+// (m/s or rad/s), after the step's projection.
+//
+// Constraints. The run starts from the model's initial state made consistent with them
+// (MultibodySystem::make_consistent: what changed is in the summary), and every step ends with
+// the projection onto them. The rigid-body integrators (splitting, exact, lie_group) advance a
+// free body's own flow and cannot honour constraints: they are refused.
 //
 // Prescribed joints. After every step the recorded copy of the state gets the prescribed
 // coordinates' exact values (MultibodySystem::apply_prescribed_motion); the integrator's own
@@ -42,6 +53,7 @@
 #include "momenta/integrate/integrator.hpp"
 #include "momenta/model/model.hpp"
 #include "momenta/simulate/conservation_audit.hpp"
+#include "momenta/system/constraint_solver.hpp"
 #include "momenta/system/output_set.hpp"
 
 namespace momenta::simulate {
@@ -98,9 +110,15 @@ struct SimulationSummary {
   bool energy_audited = false;
   bool momentum_audited = false;
   bool quaternions_audited = false;
+  bool constraints_audited = false;
   /// The audited quantities, in this order where audited: "energy", "|H|", "H", "quaternion
-  /// norm". final_drift is at t_end, max_drift the largest over every step.
+  /// norm", "constraint position", "constraint velocity". final_drift is at t_end, max_drift the
+  /// largest over every step.
   std::vector<AuditEntry> audit;
+  /// Constrained models: the rows implied by the others (they carry no force), and what making
+  /// the initial state consistent changed.
+  std::vector<std::string> redundant_constraint_rows;
+  system::ConsistentState initial_state;
 };
 
 class Simulation {

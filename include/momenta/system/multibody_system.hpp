@@ -3,6 +3,11 @@
 // gravity, force elements (dynamics/force_elements.hpp) and prescribed joints (hybrid dynamics,
 // Featherstone 2008 §9.2).
 //
+// Constraints (model/constraint.hpp). The accelerations are the constrained ones and the
+// constraint forces join the force elements' wrenches (external_wrenches(), so joint reactions
+// include them); project() puts a stepped state back onto the constraints
+// (system/constraint_solver.hpp).
+//
 // Prescribed joints. Their coordinates stay in q and v (so the state has the model's layout), but
 // every evaluation first overwrites them with their signals' values at t, and their acceleration
 // is the signals' second derivative: the prescribed motion is exact whatever the integrator's
@@ -10,6 +15,7 @@
 // recorded is exact too.
 
 #include <limits>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -17,6 +23,7 @@
 #include "momenta/dynamics/data.hpp"
 #include "momenta/integrate/second_order_system.hpp"
 #include "momenta/model/model.hpp"
+#include "momenta/system/constraint_solver.hpp"
 
 namespace momenta::system {
 
@@ -57,6 +64,19 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   /// The model's coordinate names ("hinge.q0", "base.v3").
   std::string coordinate_name(int i, bool velocity) const override;
 
+  /// Projects (q, v) onto the model's constraints after a step (prescribed coordinates from
+  /// their signals at t first). False, and nothing done, without constraints.
+  bool project(double t, VecX& q, VecX& v) override;
+
+  /// The constraint solver, or nullptr for a model without constraints.
+  ConstraintSolver* constraints() { return constraints_.get(); }
+  const ConstraintSolver* constraints() const { return constraints_.get(); }
+
+  /// Makes the state at t consistent with the constraints, keeping the coordinates of joints
+  /// whose q0 / v0 the model gives (and prescribed ones) where the others can take up the
+  /// residual (ConstraintSolver::consistent_state). Nothing to do without constraints.
+  ConsistentState make_consistent(double t, VecX& q, VecX& v);
+
   /// Sets the prescribed joints' coordinates of q and v to their signals' value and rate at t
   /// (offsets included). No allocation.
   void apply_prescribed_motion(double t, VecX& q, VecX& v) const;
@@ -73,7 +93,8 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   /// After evaluate(): the workspace with every quantity of that instant.
   const dynamics::Data& data() const { return data_; }
   dynamics::Data& data() { return data_; }
-  /// After evaluate(): the force elements' generalized forces (size nv) and body wrenches.
+  /// After evaluate(): the force elements' generalized forces (size nv) and body wrenches (the
+  /// wrenches include the constraint forces).
   const VecX& element_forces() const { return tau_elements_; }
   std::span<const Vec6> external_wrenches() const { return f_ext_; }
 
@@ -111,6 +132,7 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   std::vector<double> signal_values_;         // samples_[i].value, for force_element_forces
   std::vector<model::SignalSample> offsets_;  // see set_signal_offsets
   double step_end_ = std::numeric_limits<double>::infinity();  // see begin_step
+  std::unique_ptr<ConstraintSolver> constraints_;              // null without constraints
   bool body_loads_ = false;  // some element acts on bodies (needs poses; f_ext is not zero)
   bool conserves_energy_ = false;
   bool conserves_angular_momentum_ = false;

@@ -1,0 +1,144 @@
+#pragma once
+// Constraints: what a tree of joints cannot express — loops closed between two bodies, rigid
+// links and taut wires, wheels rolling without slipping, knife edges, gears — as data.
+//
+// These structs describe the constraints; ModelBuilder::build() checks them and fills the
+// resolved indices; dynamics/constraints.hpp turns them into rows of the constraint equations
+// and system::MultibodySystem enforces them (docs/constraints.md).
+//
+// Frames and points are fixed in their body and given in its frame; "world" is the ground. Every
+// constraint acts on body b and, equal and opposite, on body a (or the ground), so that the
+// forces it reports are those on b.
+//
+// | type        | rows | position rows | what it keeps                                          |
+// |-------------|------|---------------|--------------------------------------------------------|
+// | weld        | 6    | 6             | frame B coincides with frame A                         |
+// | point       | 3    | 3             | the origins of A and B coincide (a ball joint)          |
+// | hinge       | 5    | 5             | origins coincide, B's z axis stays along A's z axis     |
+// | slider      | 5    | 5             | B's origin on A's z axis, orientations equal            |
+// | distance    | 1    | 1             | |p_b − p_a| = length (a rigid link, a taut wire)       |
+// | rolling     | 3    | 1             | the body's contact point with a plane has no velocity   |
+// | knife_edge  | 1    | 0             | a body point does not slide across its blade            |
+// | coupler     | 1    | 1             | q_a = ratio · q_b + offset between two 1-dof joints    |
+//
+// Rolling and knife-edge constraints are nonholonomic: besides the rolling contact's height they
+// restrict velocities only, never positions.
+
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "momenta/math/spatial.hpp"
+
+namespace momenta::model {
+
+/// A frame F fixed in a body: the body's name and X_BF (its pose in the body frame).
+struct BodyFrame {
+  std::string body;
+  Transform X_BF;
+  int body_index = -1;  ///< Set by ModelBuilder::build().
+};
+
+/// Which relative motions a loop closure removes.
+enum class LoopType {
+  weld,    ///< all six
+  point,   ///< the three translations (a ball joint)
+  hinge,   ///< the three translations and the two rotations about axes ⊥ z_A (a revolute joint)
+  slider,  ///< the translations ⊥ z_A and all three rotations (a prismatic joint along z_A)
+};
+
+/// Closes a kinematic loop between frame `a` (on body a) and frame `b` (on body b): a joint that
+/// the tree does not carry. Rows are expressed in frame A's axes: translations e_k·(p_Bo − p_Ao)
+/// (all three, or the two ⊥ z_A for a slider), rotations as the dot products of the two frames'
+/// axes that vanish when they are aligned (x_A·y_B, y_A·z_B, z_A·x_B for a weld or slider;
+/// x_A·z_B, y_A·z_B for a hinge).
+struct LoopClosure {
+  std::string name;
+  LoopType type = LoopType::point;
+  BodyFrame a;
+  BodyFrame b;
+};
+
+/// A massless rigid link, or a taut wire, of `length` between point a and point b:
+/// |p_b − p_a| = length. Its tension T > 0 pulls the points together.
+struct DistanceLink {
+  std::string name;
+  BodyFrame a;  ///< only the frame's origin is used
+  BodyFrame b;
+  double length = 0.0;  ///< m, > 0
+};
+
+enum class RollingShape {
+  disk,    ///< a thin disk or wheel: touches the plane at one point of its rim
+  sphere,  ///< a ball: touches the plane straight below its centre
+};
+
+/// Rolling without slipping of a disk or sphere of `radius` fixed in `body` on a fixed plane
+/// (the ground): the body's material point at the contact has zero velocity. The disk's centre is
+/// frame.p and its axis frame's z axis; the sphere's centre is frame.p. The plane passes through
+/// plane_point with unit normal plane_normal (world), the side the body is on.
+///
+/// Rows: the contact's height (holonomic: the centre stays `radius` above the plane, less for a
+/// tilted disk), then the no-slip rows along the rolling direction and sideways. The forces on
+/// the body at the contact: normal (along the normal; > 0 pushes the body off the plane),
+/// longitudinal (along the rolling direction z_B × n / |z_B × n| for a disk, world x projected
+/// on the plane for a sphere) and lateral (n × longitudinal).
+struct RollingContact {
+  std::string name;
+  BodyFrame frame;
+  RollingShape shape = RollingShape::disk;
+  double radius = 0.0;  ///< m, > 0
+  Vec3 plane_normal = Vec3::UnitZ();
+  Vec3 plane_point = Vec3::Zero();
+};
+
+/// A knife edge (a sled's runner, the Chaplygin sleigh's blade) at point frame.p of `body`
+/// along its frame's x axis, on a plane of unit normal plane_normal: the point has no velocity
+/// across the blade within the plane, s · v_P = 0 with s = n × x_B / |n × x_B|. Nonholonomic.
+/// Reports the lateral force along s.
+struct KnifeEdge {
+  std::string name;
+  BodyFrame frame;
+  Vec3 plane_normal = Vec3::UnitZ();
+};
+
+/// A gear pair, belt or lever between two 1-dof joints: q_a = ratio · q_b + offset (rad or m).
+/// Reports the generalized force it applies on each joint (effort_a on joint a, effort_b =
+/// −ratio · effort_a on joint b).
+struct JointCoupler {
+  std::string name;
+  std::string joint_a;
+  std::string joint_b;
+  double ratio = 1.0;
+  double offset = 0.0;
+  int joint_a_index = -1;  ///< Set by ModelBuilder::build().
+  int joint_b_index = -1;
+};
+
+using Constraint = std::variant<LoopClosure, DistanceLink, RollingContact, KnifeEdge, JointCoupler>;
+
+/// The constraint's name.
+const std::string& constraint_name(const Constraint& constraint);
+
+/// "weld", "point", "hinge", "slider", "distance", "rolling", "knife_edge", "coupler".
+std::string_view constraint_type_name(const Constraint& constraint);
+std::string_view loop_type_name(LoopType type);
+
+/// Number of scalar equations (rows) the constraint adds, and how many of them restrict
+/// positions (the others restrict velocities only).
+int constraint_rows(const Constraint& constraint);
+int constraint_position_rows(const Constraint& constraint);
+
+/// What a constraint reports as its forces, by label (CSV columns "<constraint>.<label>"):
+///   weld, point, hinge, slider  reaction.Fx .Fy .Fz .Mx .My .Mz — the wrench on body b, in W,
+///                               the moment about frame B's origin (as joint reactions are)
+///   distance                    tension (N; > 0 pulls the points together)
+///   rolling                     normal, longitudinal, lateral (N; forces on the body at the
+///                               contact, along the plane normal, the rolling direction and n ×
+///                               that)
+///   knife_edge                  lateral (N, along n × blade on the body)
+///   coupler                     effort_a, effort_b (generalized forces on joint a and b: N·m or N)
+std::vector<std::string_view> constraint_force_labels(const Constraint& constraint);
+
+}  // namespace momenta::model

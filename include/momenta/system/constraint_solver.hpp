@@ -1,0 +1,128 @@
+#pragma once
+// Enforces a model's constraints (model/constraint.hpp, rows from dynamics/constraints.hpp) on
+// its motion: the constrained accelerations and the multipliers (the constraint forces), the
+// projection of a state back onto the constraints after each step, and consistent initial
+// states.
+//
+// Accelerations (Lagrange multipliers on the joint-space equations). With M the mass matrix of
+// the free (not prescribed) coordinates, v̇₀ the unconstrained accelerations (ABA or hybrid
+// dynamics), G the rows' Jacobian and k their velocity-product term:
+//
+//     M v̇ = τ − h + Gᵀλ,  G v̇ + k = 0   ⇒   (G M⁻¹ Gᵀ) λ = −k − G v̇₀,   v̇ = v̇₀ + M⁻¹ Gᵀ λ,
+//
+// M by CRBA and its Cholesky factor, G M⁻¹ Gᵀ by a Cholesky factorization in row order that
+// skips rows depending on earlier ones (they carry no force: λ = 0; dependent rows are redundant
+// and name themselves, see redundant_rows()).
+//
+// Projection (Hairer, Lubich & Wanner, Geometric Numerical Integration, §IV.4; Ascher et al.
+// 1995), after every step: positions by Newton's method on φ(q) = 0 with the step of least
+// kinetic metric, q ← q ⊕ −M⁻¹Gᵀ(G M⁻¹ Gᵀ)⁻¹ φ over the holonomic rows, until |φ| stops
+// decreasing or is below 1e-14 (m or rad); then velocities onto G v = 0 by the same M-orthogonal
+// projection, which removes the kinetic energy of the violation only. The residuals stay at
+// round-off; no Baumgarte terms, nothing to tune.
+
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "momenta/dynamics/constraints.hpp"
+#include "momenta/dynamics/data.hpp"
+
+namespace momenta::system {
+
+namespace detail {
+class OrderedCholesky;
+}
+
+/// A coordinate that consistent_state() changed.
+struct CoordinateChange {
+  std::string name;  ///< model::Model::q_name or v_name
+  double from = 0.0;
+  double to = 0.0;
+};
+
+/// What consistent_state() did.
+struct ConsistentState {
+  std::vector<CoordinateChange> q_changes;  ///< configuration coordinates moved (tangent ones
+                                            ///< for quaternions: named by v_name, from 0)
+  std::vector<CoordinateChange> v_changes;
+  int newton_iterations = 0;
+};
+
+/// The largest constraint residuals of a state: |φ| over position rows (m or rad) and |G v|
+/// over every row (m/s or rad/s).
+struct ConstraintResiduals {
+  double position = 0.0;
+  double velocity = 0.0;
+};
+
+class ConstraintSolver {
+ public:
+  /// Sizes every workspace for `model` (which must outlive the solver) and finds the rows that
+  /// are redundant at its initial configuration.
+  explicit ConstraintSolver(const model::Model& model);
+  ~ConstraintSolver();
+  ConstraintSolver(const ConstraintSolver&) = delete;
+  ConstraintSolver& operator=(const ConstraintSolver&) = delete;
+
+  /// The rows of the last evaluation and their multipliers λ (one per row; 0 on a redundant
+  /// row): the force along a translation row's axis on body b (N), the moment about a rotation
+  /// row's axis (N·m), a coupler's generalized force on joint a.
+  const dynamics::ConstraintRows& rows() const { return rows_; }
+  const VecX& multipliers() const { return lambda_; }
+
+  /// Names of the rows implied by earlier rows at the reference configuration (the model's
+  /// initial one, or the last consistent_state()): redundant, they carry no force.
+  const std::vector<std::string>& redundant_rows() const { return redundant_; }
+
+  /// Corrects the unconstrained accelerations vdot (size nv; prescribed coordinates kept) at
+  /// (t, q, v) to the constrained ones and stores λ. `data` holds the kinematics of (q, v)
+  /// as aba or hybrid_dynamics leave them; crba overwrites its mass matrix. Throws
+  /// NumericalError at a singular configuration — fewer independent rows than at the reference
+  /// (a four-bar at a dead point) — naming the time and the row. No allocation.
+  void correct_accelerations(double t, dynamics::Data& data, VecRef q, VecX& vdot);
+
+  /// Adds the forces of the last multipliers to f_ext (body wrenches) and tau (couplers), see
+  /// dynamics::add_constraint_forces. `data` must hold the poses of the same instant.
+  void add_forces(const dynamics::Data& data, std::span<Vec6> f_ext, VecX& tau) const;
+
+  /// Projects (q, v) onto the constraints (see the header comment); prescribed coordinates are
+  /// not moved. Returns true when the state changed. Throws NumericalError when Newton's method
+  /// does not bring |φ| below 1e-6 (the step left the constraints too far behind). No
+  /// allocation.
+  bool project(dynamics::Data& data, VecX& q, VecX& v);
+
+  /// The residuals of (q, v). Overwrites data's poses and velocities. No allocation.
+  ConstraintResiduals residuals(dynamics::Data& data, VecRef q, VecRef v);
+
+  /// Makes (q, v) satisfy the constraints, keeping the coordinates marked `given` (per joint,
+  /// 1 where the user set q0 or v0; prescribed joints always) where the others can absorb the
+  /// residual, moving every free coordinate least otherwise. Resets the reference rank to the
+  /// consistent state's. Throws InvalidArgument naming the row with the largest residual when
+  /// no consistent state is near (Newton's method fails to converge in 50 iterations), or when
+  /// rows conflict (a residual remains along dependent rows). Allocates.
+  ConsistentState consistent_state(dynamics::Data& data, VecX& q, VecX& v,
+                                   std::span<const char> q_given, std::span<const char> v_given);
+
+ private:
+  // Mass matrix of the free coordinates at data's configuration, factorized; G_f too.
+  void factor_mass_matrix(dynamics::Data& data, VecRef q);
+  void gather_free_columns();
+  // (G_f M⁻¹ G_fᵀ) over the rows in `mask` (others zeroed), factorized in row order.
+  void factor_rows(std::span<const char> mask);
+  void find_redundant_rows(dynamics::Data& data, VecRef q);
+
+  const model::Model& model_;
+  dynamics::ConstraintRows rows_;
+  std::vector<int> free_;  // velocity indices not prescribed
+  std::vector<char> all_rows_, position_rows_;
+  MatX M_ff_, G_f_, Y_, A_;
+  Eigen::LLT<MatX> llt_;
+  VecX lambda_, rhs_, dv_, delta_, q_saved_;
+  std::unique_ptr<detail::OrderedCholesky> cholesky_;
+  int reference_rank_ = 0;
+  std::vector<std::string> redundant_;
+};
+
+}  // namespace momenta::system

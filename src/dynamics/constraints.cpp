@@ -1,0 +1,372 @@
+#include "momenta/dynamics/constraints.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "momenta/common/error.hpp"
+
+namespace momenta::dynamics {
+namespace {
+
+using model::Constraint;
+using model::DistanceLink;
+using model::JointCoupler;
+using model::KnifeEdge;
+using model::LoopClosure;
+using model::LoopType;
+using model::RollingContact;
+using model::RollingShape;
+
+// Below this the direction a constraint acts along is not defined (a unit vector from a
+// difference or cross product of near-parallel ones).
+constexpr double kDegenerate = 1e-9;
+
+std::vector<std::string_view> row_labels(const Constraint& c) {
+  if (const auto* loop = std::get_if<LoopClosure>(&c)) {
+    switch (loop->type) {
+      case LoopType::weld:
+        return {"x", "y", "z", "rx", "ry", "rz"};
+      case LoopType::point:
+        return {"x", "y", "z"};
+      case LoopType::hinge:
+        return {"x", "y", "z", "rx", "ry"};
+      case LoopType::slider:
+        return {"x", "y", "rx", "ry", "rz"};
+    }
+  }
+  if (std::holds_alternative<DistanceLink>(c)) return {"length"};
+  if (std::holds_alternative<RollingContact>(c)) return {"normal", "longitudinal", "lateral"};
+  if (std::holds_alternative<KnifeEdge>(c)) return {"lateral"};
+  return {"ratio"};
+}
+
+// The motion of a frame fixed in a body at one instant, in W: its pose, the body's spatial
+// velocity and velocity-product acceleration about Wo, and the frame origin's velocity.
+struct FrameMotion {
+  Transform X_WF;
+  Vec6 V = Vec6::Zero();  // [ω; velocity of the body point at Wo]
+  Vec6 A = Vec6::Zero();  // its rate with v̇ = 0
+  Vec3 w() const { return V.head<3>(); }
+  Vec3 point_velocity(const Vec3& p) const { return V.tail<3>() + V.head<3>().cross(p); }
+};
+
+FrameMotion frame_motion(const Data& data, int body, const Transform& X_BF, bool velocities) {
+  FrameMotion m;
+  const Transform& X_WB = data.X_WB[body];
+  m.X_WF = X_WB * X_BF;
+  if (velocities && body != 0) {
+    m.V = X_WB.act_motion(data.V_WB_B[body]);
+    m.A = X_WB.act_motion(data.A_bias_B[body]);
+  }
+  return m;
+}
+
+// Writes rows one at a time: φ, the wrench w and its rate ẇ (the rate only with velocities).
+class RowWriter {
+ public:
+  RowWriter(ConstraintRows& rows, bool velocities) : rows_(rows), velocities_(velocities) {}
+
+  // A row whose wrench acts on body b (and its opposite on body a).
+  void wrench_row(double phi, bool holonomic, int a, int b, const Vec6& w, const Vec6& w_rate,
+                  const FrameMotion& ma, const FrameMotion& mb) {
+    rows_.position[i_] = holonomic ? phi : 0.0;
+    rows_.wrench_W[i_] = w;
+    rows_.body_a[i_] = a;
+    rows_.body_b[i_] = b;
+    if (velocities_) {
+      rows_.bias[i_] = w_rate.dot(mb.V - ma.V) + w.dot(mb.A - ma.A);
+    }
+    ++i_;
+  }
+  // A row of G written directly (a coupler): no wrench, no velocity-product term.
+  void joint_row(double phi, int v_a, double g_a, int v_b, double g_b) {
+    rows_.position[i_] = phi;
+    rows_.wrench_W[i_].setZero();
+    rows_.body_a[i_] = rows_.body_b[i_] = 0;
+    rows_.G.row(i_).setZero();
+    rows_.G(i_, v_a) = g_a;
+    rows_.G(i_, v_b) = g_b;
+    if (velocities_) rows_.bias[i_] = 0.0;
+    ++i_;
+  }
+
+ private:
+  ConstraintRows& rows_;
+  bool velocities_;
+  int i_ = 0;
+};
+
+Vec6 force_at(const Vec3& p, const Vec3& f) { return spatial(p.cross(f), f); }
+
+// ẇ of a force f at a point p, with rates ṗ and ḟ.
+Vec6 force_rate(const Vec3& p, const Vec3& p_rate, const Vec3& f, const Vec3& f_rate) {
+  return spatial(p_rate.cross(f) + p.cross(f_rate), f_rate);
+}
+
+// The rate of a unit vector u = x / |x| given ẋ and |x|.
+Vec3 unit_rate(const Vec3& u, const Vec3& x_rate, double norm) {
+  return (x_rate - u * u.dot(x_rate)) / norm;
+}
+
+[[noreturn]] void degenerate(const std::string& name, const std::string& why) {
+  throw NumericalError(fmt::format("constraint '{}': {}", name, why));
+}
+
+void write_loop(const LoopClosure& c, const Data& data, bool vel, RowWriter& out) {
+  const FrameMotion ma = frame_motion(data, c.a.body_index, c.a.X_BF, vel);
+  const FrameMotion mb = frame_motion(data, c.b.body_index, c.b.X_BF, vel);
+  const Mat3& RA = ma.X_WF.R;
+  const Mat3& RB = mb.X_WF.R;
+  const Vec3& pB = mb.X_WF.p;
+  const Vec3 d = pB - ma.X_WF.p;
+  const Vec3 pB_rate = mb.point_velocity(pB);
+  const int a = c.a.body_index, b = c.b.body_index;
+
+  // Translations along A's axes (all three, or the two across a slider's axis).
+  const int translations = c.type == LoopType::slider ? 2 : 3;
+  for (int k = 0; k < translations; ++k) {
+    const Vec3 e = RA.col(k);
+    const Vec3 e_rate = ma.w().cross(e);
+    out.wrench_row(e.dot(d), true, a, b, force_at(pB, e), force_rate(pB, pB_rate, e, e_rate), ma,
+                   mb);
+  }
+  // Rotations: n_A · m_B = 0 for the pairs of axes that are perpendicular when aligned. A unit
+  // multiplier is the moment −(n × m) on B.
+  static constexpr int kAligned[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+  static constexpr int kHinge[2][2] = {{0, 2}, {1, 2}};
+  const auto rotation_row = [&](int i, int j) {
+    const Vec3 n = RA.col(i);
+    const Vec3 m = RB.col(j);
+    const Vec3 n_rate = ma.w().cross(n);
+    const Vec3 m_rate = mb.w().cross(m);
+    const Vec3 moment = -n.cross(m);
+    const Vec3 moment_rate = -(n_rate.cross(m) + n.cross(m_rate));
+    out.wrench_row(n.dot(m), true, a, b, spatial(moment, Vec3::Zero()),
+                   spatial(moment_rate, Vec3::Zero()), ma, mb);
+  };
+  if (c.type == LoopType::hinge) {
+    for (const auto& pair : kHinge) rotation_row(pair[0], pair[1]);
+  } else if (c.type != LoopType::point) {
+    for (const auto& pair : kAligned) rotation_row(pair[0], pair[1]);
+  }
+}
+
+void write_distance(const DistanceLink& c, const Data& data, bool vel, RowWriter& out) {
+  const FrameMotion ma = frame_motion(data, c.a.body_index, c.a.X_BF, vel);
+  const FrameMotion mb = frame_motion(data, c.b.body_index, c.b.X_BF, vel);
+  const Vec3& pa = ma.X_WF.p;
+  const Vec3& pb = mb.X_WF.p;
+  const Vec3 d = pb - pa;
+  const double length = d.norm();
+  if (!(length > kDegenerate * c.length)) {
+    degenerate(c.name, fmt::format("its two points coincide (distance {:.3g} m of {} m): the "
+                                   "link has no direction",
+                                   length, c.length));
+  }
+  const Vec3 e = d / length;
+  const Vec3 pb_rate = mb.point_velocity(pb);
+  const Vec3 e_rate = unit_rate(e, pb_rate - ma.point_velocity(pa), length);
+  out.wrench_row(length - c.length, true, c.a.body_index, c.b.body_index, force_at(pb, e),
+                 force_rate(pb, pb_rate, e, e_rate), ma, mb);
+}
+
+void write_rolling(const RollingContact& c, const Data& data, bool vel, RowWriter& out) {
+  const FrameMotion world;
+  const FrameMotion mb = frame_motion(data, c.frame.body_index, c.frame.X_BF, vel);
+  const Vec3& n = c.plane_normal;
+  const Vec3& centre = mb.X_WF.p;
+  Vec3 u = -n, u_rate = Vec3::Zero();         // from the centre to the contact
+  Vec3 forward, forward_rate = Vec3::Zero();  // rolling direction
+  if (c.shape == RollingShape::disk) {
+    const Vec3 axis = mb.X_WF.R.col(2);
+    const Vec3 axis_rate = mb.w().cross(axis);
+    const Vec3 w = n - n.dot(axis) * axis;  // the normal's part in the disk's plane
+    const double s = w.norm();
+    if (!(s > kDegenerate)) {
+      degenerate(c.name,
+                 "the disk lies flat on the plane (its axis is along the normal): its "
+                 "rim touches everywhere and no rolling direction exists");
+    }
+    const Vec3 w_rate = -n.dot(axis_rate) * axis - n.dot(axis) * axis_rate;
+    u = -w / s;
+    u_rate = -unit_rate(w / s, w_rate, s);
+    forward = axis.cross(n) / s;  // |axis × n| = s
+    forward_rate = unit_rate(forward, axis_rate.cross(n), s);
+  } else {
+    // A sphere: any fixed tangent basis of the plane.
+    const Vec3 x = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+    forward = (x - n * n.dot(x)).normalized();
+  }
+  const Vec3 lateral = n.cross(forward);
+  const Vec3 lateral_rate = n.cross(forward_rate);
+  const Vec3 contact = centre + c.radius * u;
+  const Vec3 contact_rate = mb.point_velocity(centre) + c.radius * u_rate;
+  const int b = c.frame.body_index;
+  out.wrench_row(n.dot(contact - c.plane_point), true, 0, b, force_at(contact, n),
+                 force_rate(contact, contact_rate, n, Vec3::Zero()), world, mb);
+  out.wrench_row(0.0, false, 0, b, force_at(contact, forward),
+                 force_rate(contact, contact_rate, forward, forward_rate), world, mb);
+  out.wrench_row(0.0, false, 0, b, force_at(contact, lateral),
+                 force_rate(contact, contact_rate, lateral, lateral_rate), world, mb);
+}
+
+void write_knife_edge(const KnifeEdge& c, const Data& data, bool vel, RowWriter& out) {
+  const FrameMotion world;
+  const FrameMotion mb = frame_motion(data, c.frame.body_index, c.frame.X_BF, vel);
+  const Vec3& n = c.plane_normal;
+  const Vec3 blade = mb.X_WF.R.col(0);
+  const Vec3 across = n.cross(blade);
+  const double s = across.norm();
+  if (!(s > kDegenerate)) {
+    degenerate(c.name, "the blade stands along the plane's normal: no direction across it");
+  }
+  const Vec3 side = across / s;
+  const Vec3 side_rate = unit_rate(side, n.cross(mb.w().cross(blade)), s);
+  const Vec3& p = mb.X_WF.p;
+  out.wrench_row(0.0, false, 0, c.frame.body_index, force_at(p, side),
+                 force_rate(p, mb.point_velocity(p), side, side_rate), world, mb);
+}
+
+void write_coupler(const JointCoupler& c, const Model& model, VecRef q, RowWriter& out) {
+  const model::Joint& ja = model.joint(c.joint_a_index);
+  const model::Joint& jb = model.joint(c.joint_b_index);
+  out.joint_row(q[ja.q_index] - c.ratio * q[jb.q_index] - c.offset, ja.v_index, 1.0, jb.v_index,
+                -c.ratio);
+}
+
+// G's rows of the wrench rows: G_i = Σ over the joints supporting b of wᵀ s − the same for a.
+void assemble_jacobian(const Model& model, const Data& data, ConstraintRows& rows) {
+  for (int j = 0; j < model.num_joints(); ++j) {
+    const auto& c = model.joint_constants()[j];
+    for (int k = 0; k < c.nv; ++k) {
+      rows.S_world.col(c.v_index + k) = data.X_WB[c.child].act_motion(data.S[j].col(k));
+    }
+  }
+  for (int i = 0; i < rows.count; ++i) {
+    if (rows.body_a[i] == rows.body_b[i]) continue;  // a coupler's row is written already
+    auto g = rows.G.row(i);
+    g.setZero();
+    const Vec6& w = rows.wrench_W[i];
+    const auto add_support = [&](int body, double sign) {
+      for (; body > 0; body = model.parent(body)) {
+        const auto& c = model.joint_constants()[body - 1];
+        for (int k = 0; k < c.nv; ++k)
+          g[c.v_index + k] += sign * w.dot(rows.S_world.col(c.v_index + k));
+      }
+    };
+    add_support(rows.body_b[i], 1.0);
+    add_support(rows.body_a[i], -1.0);
+  }
+}
+
+void world_poses(const Model& model, Data& data) {
+  for (const auto& c : model.joint_constants()) {
+    data.X_WB[c.child] = data.X_WB[c.parent] * data.X_PB[c.child];
+  }
+}
+
+void bias_accelerations(const Model& model, Data& data) {
+  for (const auto& c : model.joint_constants()) {
+    data.A_bias_B[c.child] =
+        data.X_PB[c.child].act_motion_inverse(data.A_bias_B[c.parent]) + data.c_B[c.child];
+  }
+}
+
+void write_rows(const Model& model, const Data& data, VecRef q, bool velocities,
+                ConstraintRows& rows) {
+  RowWriter out(rows, velocities);
+  for (const Constraint& constraint : model.constraints()) {
+    if (const auto* c = std::get_if<LoopClosure>(&constraint))
+      write_loop(*c, data, velocities, out);
+    if (const auto* c = std::get_if<DistanceLink>(&constraint))
+      write_distance(*c, data, velocities, out);
+    if (const auto* c = std::get_if<RollingContact>(&constraint))
+      write_rolling(*c, data, velocities, out);
+    if (const auto* c = std::get_if<KnifeEdge>(&constraint))
+      write_knife_edge(*c, data, velocities, out);
+    if (const auto* c = std::get_if<JointCoupler>(&constraint)) write_coupler(*c, model, q, out);
+  }
+  assemble_jacobian(model, data, rows);
+}
+
+}  // namespace
+
+ConstraintRows::ConstraintRows(const Model& model)
+    : count(model.num_constraint_rows()),
+      position(VecX::Zero(count)),
+      G(MatX::Zero(count, model.nv())),
+      bias(VecX::Zero(count)),
+      wrench_W(count, Vec6::Zero()),
+      body_a(count, 0),
+      body_b(count, 0),
+      S_world(MatX::Zero(6, model.nv())) {
+  for (int k = 0; k < static_cast<int>(model.constraints().size()); ++k) {
+    const Constraint& c = model.constraints()[k];
+    first_row.push_back(static_cast<int>(constraint.size()));
+    const std::vector<std::string_view> labels = row_labels(c);
+    const int position_rows = model::constraint_position_rows(c);
+    for (int r = 0; r < static_cast<int>(labels.size()); ++r) {
+      constraint.push_back(k);
+      // Rolling: the height row first; a knife edge has none.
+      holonomic.push_back(r < position_rows ? 1 : 0);
+      names.push_back(fmt::format("{}.{}", model::constraint_name(c), labels[r]));
+    }
+  }
+}
+
+void constraint_equations(const Model& model, Data& data, VecRef q, ConstraintRows& rows,
+                          RowTerms terms) {
+  const bool velocities = terms == RowTerms::with_velocity_products;
+  world_poses(model, data);
+  if (velocities) bias_accelerations(model, data);
+  write_rows(model, data, q, velocities, rows);
+}
+
+void constraint_forces(const Model& model, const Data& data, const ConstraintRows& rows,
+                       VecRef lambda, int k, std::span<double> out) {
+  const Constraint& constraint = model.constraints()[k];
+  const int first = rows.first_row[k];
+  if (const auto* loop = std::get_if<LoopClosure>(&constraint)) {
+    Vec6 w = Vec6::Zero();  // in W about Wo
+    for (int i = first; i < first + model::constraint_rows(constraint); ++i)
+      w += rows.wrench_W[i] * lambda[i];
+    const Vec3 p = (data.X_WB[loop->b.body_index] * loop->b.X_BF).p;
+    const Vec3 force = w.tail<3>();
+    const Vec3 moment = w.head<3>() - p.cross(force);
+    for (int j = 0; j < 3; ++j) {
+      out[j] = force[j];
+      out[3 + j] = moment[j];
+    }
+  } else if (std::holds_alternative<DistanceLink>(constraint)) {
+    out[0] = -lambda[first];  // λ pushes b away from a along e; tension pulls them together
+  } else if (std::holds_alternative<RollingContact>(constraint)) {
+    for (int j = 0; j < 3; ++j) out[j] = lambda[first + j];
+  } else if (std::holds_alternative<KnifeEdge>(constraint)) {
+    out[0] = lambda[first];
+  } else {
+    const auto& coupler = std::get<JointCoupler>(constraint);
+    out[0] = lambda[first];
+    out[1] = -coupler.ratio * lambda[first];
+  }
+}
+
+void add_constraint_forces(const Model& model, const Data& data, const ConstraintRows& rows,
+                           VecRef lambda, std::span<Vec6> f_ext, VecX& tau) {
+  (void)model;
+  for (int i = 0; i < rows.count; ++i) {
+    const Vec6& w = rows.wrench_W[i];
+    if (rows.body_a[i] == rows.body_b[i]) {  // a coupler: a generalized force
+      tau.noalias() += rows.G.row(i).transpose() * lambda[i];
+      continue;
+    }
+    const Vec6 f = w * lambda[i];
+    // W about Wo → B about Bo.
+    if (rows.body_b[i] != 0)
+      f_ext[rows.body_b[i]] += data.X_WB[rows.body_b[i]].act_force_inverse(f);
+    if (rows.body_a[i] != 0)
+      f_ext[rows.body_a[i]] -= data.X_WB[rows.body_a[i]].act_force_inverse(f);
+  }
+}
+
+}  // namespace momenta::dynamics

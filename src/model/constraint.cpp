@@ -1,0 +1,76 @@
+#include "momenta/model/constraint.hpp"
+
+namespace momenta::model {
+
+const std::string& constraint_name(const Constraint& constraint) {
+  return std::visit([](const auto& c) -> const std::string& { return c.name; }, constraint);
+}
+
+std::string_view loop_type_name(LoopType type) {
+  switch (type) {
+    case LoopType::weld:
+      return "weld";
+    case LoopType::point:
+      return "point";
+    case LoopType::hinge:
+      return "hinge";
+    case LoopType::slider:
+      return "slider";
+  }
+  return "";
+}
+
+namespace {
+struct TypeName {
+  std::string_view operator()(const LoopClosure& c) const { return loop_type_name(c.type); }
+  std::string_view operator()(const DistanceLink&) const { return "distance"; }
+  std::string_view operator()(const RollingContact&) const { return "rolling"; }
+  std::string_view operator()(const KnifeEdge&) const { return "knife_edge"; }
+  std::string_view operator()(const JointCoupler&) const { return "coupler"; }
+};
+
+struct Rows {
+  int operator()(const LoopClosure& c) const {
+    switch (c.type) {
+      case LoopType::weld:
+        return 6;
+      case LoopType::point:
+        return 3;
+      case LoopType::hinge:
+      case LoopType::slider:
+        return 5;
+    }
+    return 0;
+  }
+  int operator()(const DistanceLink&) const { return 1; }
+  int operator()(const RollingContact&) const { return 3; }
+  int operator()(const KnifeEdge&) const { return 1; }
+  int operator()(const JointCoupler&) const { return 1; }
+};
+}  // namespace
+
+std::string_view constraint_type_name(const Constraint& constraint) {
+  return std::visit(TypeName{}, constraint);
+}
+
+int constraint_rows(const Constraint& constraint) { return std::visit(Rows{}, constraint); }
+
+int constraint_position_rows(const Constraint& constraint) {
+  if (std::holds_alternative<RollingContact>(constraint)) return 1;
+  if (std::holds_alternative<KnifeEdge>(constraint)) return 0;
+  return constraint_rows(constraint);
+}
+
+std::vector<std::string_view> constraint_force_labels(const Constraint& constraint) {
+  if (std::holds_alternative<LoopClosure>(constraint)) {
+    return {"reaction.Fx", "reaction.Fy", "reaction.Fz",
+            "reaction.Mx", "reaction.My", "reaction.Mz"};
+  }
+  if (std::holds_alternative<DistanceLink>(constraint)) return {"tension"};
+  if (std::holds_alternative<RollingContact>(constraint))
+    return {"normal", "longitudinal", "lateral"};
+  if (std::holds_alternative<KnifeEdge>(constraint)) return {"lateral"};
+  return {"effort_a", "effort_b"};
+}
+
+}  // namespace momenta::model

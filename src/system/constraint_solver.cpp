@@ -1,0 +1,325 @@
+#include "momenta/system/constraint_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "momenta/common/error.hpp"
+#include "momenta/dynamics/crba.hpp"
+#include "momenta/dynamics/kinematics.hpp"
+#include "ordered_cholesky.hpp"
+
+namespace momenta::system {
+namespace {
+
+// A row whose remaining pivot in G M⁻¹ Gᵀ is below this fraction of its diagonal is taken as
+// dependent on the rows before it: the squared sine of its angle to their span (round-off in
+// an exactly redundant row is ~1e-16; a four-bar 1e-5 rad from its dead point is ~1e-10).
+constexpr double kDependentRow = 1e-10;
+// Newton on φ(q) = 0 stops below this residual (m or rad), or when the residual stops shrinking.
+constexpr double kPositionTolerance = 1e-14;
+constexpr int kProjectionIterations = 8;
+constexpr double kProjectionFailure = 1e-6;
+
+double max_abs_over(const VecX& x, std::span<const char> mask) {
+  double m = 0.0;
+  for (int i = 0; i < x.size(); ++i)
+    if (mask[i]) m = std::max(m, std::abs(x[i]));
+  return m;
+}
+
+}  // namespace
+
+ConstraintSolver::ConstraintSolver(const model::Model& model)
+    : model_(model),
+      rows_(model),
+      lambda_(VecX::Zero(rows_.count)),
+      rhs_(VecX::Zero(rows_.count)),
+      delta_(VecX::Zero(model.nv())),
+      q_saved_(VecX::Zero(model.nq())),
+      cholesky_(std::make_unique<detail::OrderedCholesky>(rows_.count)) {
+  for (const model::Joint& j : model.joints()) {
+    if (j.is_prescribed()) continue;
+    for (int k = 0; k < j.nv(); ++k) free_.push_back(j.v_index + k);
+  }
+  const int nf = static_cast<int>(free_.size());
+  const int m = rows_.count;
+  M_ff_ = MatX::Zero(nf, nf);
+  llt_ = Eigen::LLT<MatX>(nf);
+  G_f_ = MatX::Zero(m, nf);
+  Y_ = MatX::Zero(nf, m);
+  A_ = MatX::Zero(m, m);
+  dv_ = VecX::Zero(nf);
+  all_rows_.assign(m, 1);
+  position_rows_.assign(rows_.holonomic.begin(), rows_.holonomic.end());
+  if (m > 0) {
+    dynamics::Data data(model);
+    VecX q = model.initial_q();
+    model::normalize(model, q);
+    find_redundant_rows(data, q);
+  }
+}
+
+ConstraintSolver::~ConstraintSolver() = default;
+
+void ConstraintSolver::gather_free_columns() {
+  const int nf = static_cast<int>(free_.size());
+  for (int c = 0; c < nf; ++c) G_f_.col(c) = rows_.G.col(free_[c]);
+}
+
+void ConstraintSolver::factor_mass_matrix(dynamics::Data& data, VecRef q) {
+  const MatX& M = dynamics::crba(model_, data, q);
+  const int nf = static_cast<int>(free_.size());
+  for (int c = 0; c < nf; ++c)
+    for (int r = 0; r < nf; ++r) M_ff_(r, c) = M(free_[r], free_[c]);
+  llt_.compute(M_ff_);
+  if (llt_.info() != Eigen::Success) {
+    throw NumericalError(
+        "the constraint solver found the mass matrix of the free coordinates not positive "
+        "definite: a massless body carries degrees of freedom");
+  }
+}
+
+void ConstraintSolver::factor_rows(std::span<const char> mask) {
+  // Y = M⁻¹ G_fᵀ over the rows in mask, A = G_f Y.
+  Y_ = G_f_.transpose();
+  for (int i = 0; i < rows_.count; ++i)
+    if (!mask[i]) Y_.col(i).setZero();
+  llt_.solveInPlace(Y_);
+  A_.noalias() = G_f_ * Y_;
+  for (int i = 0; i < rows_.count; ++i) {
+    if (mask[i]) continue;
+    A_.row(i).setZero();
+    A_.col(i).setZero();
+  }
+  cholesky_->factorize(A_, kDependentRow);
+}
+
+void ConstraintSolver::find_redundant_rows(dynamics::Data& data, VecRef q) {
+  dynamics::forward_kinematics(model_, data, q);
+  dynamics::constraint_equations(model_, data, q, rows_);
+  gather_free_columns();
+  factor_mass_matrix(data, q);
+  factor_rows(all_rows_);
+  reference_rank_ = cholesky_->rank();
+  redundant_.clear();
+  for (int i = 0; i < rows_.count; ++i)
+    if (cholesky_->dependent(i)) redundant_.push_back(rows_.names[i]);
+}
+
+void ConstraintSolver::correct_accelerations(double t, dynamics::Data& data, VecRef q, VecX& vdot) {
+  dynamics::constraint_equations(model_, data, q, rows_,
+                                 dynamics::RowTerms::with_velocity_products);
+  gather_free_columns();
+  factor_mass_matrix(data, q);
+  factor_rows(all_rows_);
+  if (cholesky_->rank() < reference_rank_) {
+    int row = 0;
+    while (row < rows_.count && !cholesky_->dependent(row)) ++row;
+    for (int i = 0; i < rows_.count; ++i) {
+      if (cholesky_->dependent(i) &&
+          std::find(redundant_.begin(), redundant_.end(), rows_.names[i]) == redundant_.end()) {
+        row = i;
+        break;
+      }
+    }
+    throw NumericalError(fmt::format(
+        "singular configuration at t = {:.9g} s: constraint row '{}' became dependent on the "
+        "others ({} independent rows, {} at the start) — the mechanism is at a dead point or "
+        "locks, and the constraint forces are not determined there",
+        t, rows_.names[row], cholesky_->rank(), reference_rank_));
+  }
+  // λ from (G M⁻¹ Gᵀ) λ = −k − G v̇₀ (the full G: prescribed accelerations enter too).
+  rhs_.noalias() = -rows_.bias;
+  rhs_.noalias() -= rows_.G * vdot;
+  cholesky_->solve_in_place(rhs_);
+  lambda_ = rhs_;
+  dv_.noalias() = Y_ * lambda_;
+  for (int c = 0; c < static_cast<int>(free_.size()); ++c) vdot[free_[c]] += dv_[c];
+}
+
+void ConstraintSolver::add_forces(const dynamics::Data& data, std::span<Vec6> f_ext,
+                                  VecX& tau) const {
+  dynamics::add_constraint_forces(model_, data, rows_, lambda_, f_ext, tau);
+}
+
+bool ConstraintSolver::project(dynamics::Data& data, VecX& q, VecX& v) {
+  if (rows_.count == 0) return false;
+  bool changed = false;
+  // Positions: Newton with the mass metric (M at the step's end state, kept through the
+  // iterations), until round-off.
+  dynamics::forward_kinematics(model_, data, q);
+  factor_mass_matrix(data, q);
+  dynamics::constraint_equations(model_, data, q, rows_);
+  double residual = max_abs_over(rows_.position, position_rows_);
+  for (int it = 0; it < kProjectionIterations && residual > kPositionTolerance; ++it) {
+    gather_free_columns();
+    factor_rows(position_rows_);
+    rhs_ = -rows_.position;
+    cholesky_->solve_in_place(rhs_);
+    dv_.noalias() = Y_ * rhs_;
+    delta_.setZero();
+    for (int c = 0; c < static_cast<int>(free_.size()); ++c) delta_[free_[c]] = dv_[c];
+    q_saved_ = q;
+    model::integrate(model_, q_saved_, delta_, 1.0, q);
+    dynamics::forward_kinematics(model_, data, q);
+    dynamics::constraint_equations(model_, data, q, rows_);
+    const double next = max_abs_over(rows_.position, position_rows_);
+    if (!(next < residual)) {  // round-off reached: keep the better state
+      if (!(next <= residual)) {
+        q = q_saved_;
+        dynamics::forward_kinematics(model_, data, q);
+        dynamics::constraint_equations(model_, data, q, rows_);
+      }
+      break;
+    }
+    residual = next;
+    changed = true;
+  }
+  if (!(residual <= kProjectionFailure)) {
+    throw NumericalError(fmt::format(
+        "the state left the constraints too far to project back: residual {:.3g} (m or rad) "
+        "after {} Newton steps; take a smaller step",
+        residual, kProjectionIterations));
+  }
+  // Velocities: v ← v − M⁻¹Gᵀ (G M⁻¹ Gᵀ)⁻¹ G v over every row.
+  gather_free_columns();
+  factor_rows(all_rows_);
+  rhs_.noalias() = -rows_.G * v;
+  if (rhs_.cwiseAbs().maxCoeff() > 0.0) {
+    cholesky_->solve_in_place(rhs_);
+    dv_.noalias() = Y_ * rhs_;
+    for (int c = 0; c < static_cast<int>(free_.size()); ++c) v[free_[c]] += dv_[c];
+    changed = true;
+  }
+  return changed;
+}
+
+ConstraintResiduals ConstraintSolver::residuals(dynamics::Data& data, VecRef q, VecRef v) {
+  ConstraintResiduals r;
+  if (rows_.count == 0) return r;
+  dynamics::forward_kinematics(model_, data, q);
+  dynamics::constraint_equations(model_, data, q, rows_);
+  r.position = max_abs_over(rows_.position, position_rows_);
+  rhs_.noalias() = rows_.G * v;
+  r.velocity = rhs_.cwiseAbs().maxCoeff();
+  return r;
+}
+
+namespace {
+
+// Least-change corrections over a set of columns: Δx_S = −G_Sᵀ (G_S G_Sᵀ)⁻¹ r over the rows in
+// `rows` (dependent rows skipped), zero elsewhere. Also returns the rank G_S has there.
+int least_change(const MatX& G, std::span<const char> rows, const std::vector<int>& columns,
+                 const VecX& residual, VecX& correction) {
+  const int m = static_cast<int>(G.rows());
+  MatX G_S = MatX::Zero(m, static_cast<int>(columns.size()));
+  for (int c = 0; c < static_cast<int>(columns.size()); ++c) G_S.col(c) = G.col(columns[c]);
+  for (int i = 0; i < m; ++i)
+    if (!rows[i]) G_S.row(i).setZero();
+  detail::OrderedCholesky cholesky(m);
+  cholesky.factorize(G_S * G_S.transpose(), kDependentRow);
+  VecX y = -residual;
+  for (int i = 0; i < m; ++i)
+    if (!rows[i]) y[i] = 0.0;
+  cholesky.solve_in_place(y);
+  const VecX dx = G_S.transpose() * y;
+  correction.setZero();
+  for (int c = 0; c < static_cast<int>(columns.size()); ++c) correction[columns[c]] = dx[c];
+  return cholesky.rank();
+}
+
+// The free velocity coordinates of the joints not marked in `given`, or every free one when
+// those alone cannot satisfy the rows (a smaller rank than all free coordinates have).
+std::vector<int> columns_to_move(const model::Model& model, const MatX& G,
+                                 std::span<const char> rows, const std::vector<int>& free,
+                                 std::span<const char> given, const VecX& residual) {
+  std::vector<int> preferred;
+  for (int c : free)
+    if (!given[model.joint_of_v(c)]) preferred.push_back(c);
+  if (preferred.empty() || preferred.size() == free.size()) return free;
+  VecX scratch(G.cols());
+  const int rank_all = least_change(G, rows, free, residual, scratch);
+  const int rank_preferred = least_change(G, rows, preferred, residual, scratch);
+  return rank_preferred == rank_all ? preferred : free;
+}
+
+}  // namespace
+
+ConsistentState ConstraintSolver::consistent_state(dynamics::Data& data, VecX& q, VecX& v,
+                                                   std::span<const char> q_given,
+                                                   std::span<const char> v_given) {
+  ConsistentState report;
+  if (rows_.count == 0) return report;
+  constexpr int kMaxIterations = 50;
+  constexpr double kConsistent = 1e-12;  // m or rad, m/s or rad/s
+  const VecX q_start = q, v_start = v;
+
+  // Positions: Newton on φ(q) = 0 over the coordinates to move.
+  dynamics::forward_kinematics(model_, data, q);
+  dynamics::constraint_equations(model_, data, q, rows_);
+  const std::vector<int> q_columns =
+      columns_to_move(model_, rows_.G, position_rows_, free_, q_given, rows_.position);
+  VecX correction(model_.nv());
+  double residual = max_abs_over(rows_.position, position_rows_);
+  int it = 0;
+  for (; it < kMaxIterations && residual > kPositionTolerance; ++it) {
+    least_change(rows_.G, position_rows_, q_columns, rows_.position, correction);
+    q = model::integrate(model_, q, correction, 1.0);
+    dynamics::forward_kinematics(model_, data, q);
+    dynamics::constraint_equations(model_, data, q, rows_);
+    const double next = max_abs_over(rows_.position, position_rows_);
+    if (!(next < residual) && next <= kConsistent) break;
+    residual = next;
+  }
+  report.newton_iterations = it;
+  residual = max_abs_over(rows_.position, position_rows_);
+  if (!(residual <= kConsistent)) {
+    int worst = 0;
+    for (int i = 0; i < rows_.count; ++i)
+      if (position_rows_[i] && std::abs(rows_.position[i]) > std::abs(rows_.position[worst]))
+        worst = i;
+    if (!position_rows_[worst]) worst = 0;
+    q = q_start;
+    throw InvalidArgument(fmt::format(
+        "no consistent initial state near the given one: constraint row '{}' keeps a residual "
+        "of {:.3g} (m or rad) after {} Newton steps. The constraints conflict, or the initial "
+        "configuration is far from any assembled one: give q0 closer to it",
+        rows_.names[worst], rows_.position[worst], it));
+  }
+
+  // Velocities: the least change onto G v = 0.
+  dynamics::forward_kinematics(model_, data, q);
+  dynamics::constraint_equations(model_, data, q, rows_);
+  VecX velocity_residual = rows_.G * v;
+  const std::vector<int> v_columns =
+      columns_to_move(model_, rows_.G, all_rows_, free_, v_given, velocity_residual);
+  least_change(rows_.G, all_rows_, v_columns, velocity_residual, correction);
+  v += correction;
+  velocity_residual = rows_.G * v;
+  const double scale = std::max(1.0, v.cwiseAbs().maxCoeff());
+  int worst = 0;
+  velocity_residual.cwiseAbs().maxCoeff(&worst);
+  if (!(std::abs(velocity_residual[worst]) <= kConsistent * scale)) {
+    v = v_start;
+    throw InvalidArgument(fmt::format(
+        "the initial velocities cannot satisfy the constraints: row '{}' keeps a velocity "
+        "residual of {:.3g} (m/s or rad/s) — the constraints conflict",
+        rows_.names[worst], velocity_residual[worst]));
+  }
+
+  // What changed, coordinate by coordinate.
+  for (int i = 0; i < model_.nq(); ++i) {
+    if (q[i] != q_start[i] && std::abs(q[i] - q_start[i]) > 1e-15 * (1 + std::abs(q_start[i])))
+      report.q_changes.push_back({model_.q_name(i), q_start[i], q[i]});
+  }
+  for (int i = 0; i < model_.nv(); ++i) {
+    if (std::abs(v[i] - v_start[i]) > 1e-15 * (1 + std::abs(v_start[i])))
+      report.v_changes.push_back({model_.v_name(i), v_start[i], v[i]});
+  }
+  find_redundant_rows(data, q);
+  return report;
+}
+
+}  // namespace momenta::system

@@ -1,0 +1,336 @@
+// The bundled constrained examples (examples/constraints/) simulated through momenta::simulate
+// and compared with their closed forms: Beer & Johnston 18.3 and 18.2, the four-bar against
+// Freudenstein, the slider-crank, the rolling coin, the Chaplygin sleigh and a geared pair; and
+// constraint forces against the same system built as a tree.
+//
+// Tolerances. Positions and velocities of the 0-dof mechanisms (driven four-bar, slider-crank,
+// rod held by its wire) are fixed by the constraints alone: the projection solves them to
+// round-off, so they match to 1e-10 whatever the integrator's error. Motions that integrate
+// (coin, sleigh, disk, gears) carry RK4's global error, ~1e-12 here (h = 1 ms; the energy audits
+// below read it).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <string>
+
+#include "momenta/common/error.hpp"
+#include "momenta/inertia/primitives.hpp"
+#include "momenta/io/model_file.hpp"
+#include "momenta/model/model_builder.hpp"
+#include "momenta/simulate/simulation.hpp"
+
+namespace momenta {
+namespace {
+
+constexpr double kG = 9.81;
+
+struct ExampleRun {
+  simulate::TableSink table;
+  simulate::SimulationSummary summary;
+  double at(std::size_t row, const std::string& column) const {
+    return table.rows[row][table.column(column)];
+  }
+  std::size_t rows() const { return table.rows.size(); }
+};
+
+ExampleRun simulate_example(const std::string& name, double duration = 0.0,
+                            bool reactions = false) {
+  static std::map<std::string, io::ModelFile> files;  // the Model must outlive the Simulation
+  auto it = files.find(name);
+  if (it == files.end())
+    it = files.emplace(name, io::read_model_file("examples/constraints/" + name + ".yaml")).first;
+  const io::ModelFile& file = it->second;
+  simulate::SimulationOptions options;
+  options.duration = duration > 0 ? duration : *file.simulation.duration;
+  options.step = *file.simulation.step;
+  options.reactions = reactions;
+  simulate::Simulation simulation(file.model, file.outputs, options);
+  ExampleRun run;
+  run.summary = simulation.run(run.table);
+  return run;
+}
+
+double relative(double value, double reference) {
+  return std::abs(value - reference) / std::abs(reference);
+}
+
+// Beer & Johnston SP 18.3: T = m ω² L sin β / 3 + m g tan β / 2, A = (T − m ω² (L/2) sin β, 0, mg).
+TEST(ClassicConstraints, RodOnRotatingShaftWireTensionAndPinReaction) {
+  const double m = 20, L = 2, w = 15, beta = std::numbers::pi / 6;
+  const double T = m * w * w * L * std::sin(beta) / 3 + m * kG * std::tan(beta) / 2;
+  const double Ax = T - m * w * w * L / 2 * std::sin(beta);
+  const ExampleRun run = simulate_example("rod_on_rotating_shaft");
+  ASSERT_EQ(run.rows(), 1001u);
+  for (std::size_t r = 0; r < run.rows(); ++r) {
+    EXPECT_LT(relative(run.at(r, "tension"), T), 1e-10) << r;
+    EXPECT_LT(relative(run.at(r, "reaction_A.x"), Ax), 1e-10) << r;
+    EXPECT_LT(std::abs(run.at(r, "reaction_A.y")), 1e-10 * T) << r;
+    EXPECT_LT(relative(run.at(r, "reaction_A.z"), m * kG), 1e-10) << r;
+    EXPECT_LT(std::abs(run.at(r, "beta") - beta), 1e-12) << r;
+  }
+}
+
+// Beer & Johnston SP 18.2: Ω = −r ω1 / L, H_O = (½mr²ω1, 0, (¼mr² + mL²)Ω), T = ½ ω·H_O,
+// N = mg + ½ m r³ ω1² / L².
+TEST(ClassicConstraints, RollingDiskOnPivotedAxle) {
+  const double m = 4, r = 0.15, L = 0.45, w1 = 20, W = -r * w1 / L;
+  const double T = 0.5 * (w1 * 0.5 * m * r * r * w1 + W * (0.25 * m * r * r + m * L * L) * W);
+  const double N = m * kG + 0.5 * m * r * r * r * w1 * w1 / (L * L);
+  const ExampleRun run = simulate_example("rolling_disk_on_axle");
+  EXPECT_EQ(run.summary.redundant_constraint_rows, std::vector<std::string>{"floor.lateral"});
+  for (std::size_t i = 0; i < run.rows(); ++i) {
+    EXPECT_LT(relative(run.at(i, "contact.normal"), N), 1e-10) << i;
+    EXPECT_LT(std::abs(run.at(i, "contact.longitudinal")), 1e-10 * N) << i;
+    EXPECT_EQ(run.at(i, "contact.lateral"), 0.0) << i;  // redundant: no force
+    EXPECT_LT(relative(run.at(i, "energy_kinetic"), T), 1e-10) << i;
+    // The axle precesses at Ω about the vertical: ω_z = Ω, |ω_horizontal| = ω1.
+    EXPECT_LT(relative(run.at(i, "omega.z"), W), 1e-10) << i;
+    EXPECT_LT(relative(std::hypot(run.at(i, "omega.x"), run.at(i, "omega.y")), w1), 1e-10) << i;
+    // H about G's... about O: its vertical component (¼mr² + mL²)Ω; the axle's ½mr²ω1 turns.
+  }
+  EXPECT_GT(run.rows(), 4000u);
+}
+
+// Freudenstein: K1 cos θ4 − K2 cos θ2 + K3 = cos(θ2 − θ4), solved for the open branch.
+double freudenstein_theta4(double a, double b, double c, double d, double t2) {
+  const double K1 = d / a, K2 = d / c, K3 = (a * a - b * b + c * c + d * d) / (2 * a * c);
+  const double A = std::cos(t2) - K1 - K2 * std::cos(t2) + K3;
+  const double B = -2 * std::sin(t2);
+  const double C = K1 - (K2 + 1) * std::cos(t2) + K3;
+  return 2 * std::atan2(-B - std::sqrt(B * B - 4 * A * C), 2 * A);  // the open branch
+}
+
+TEST(ClassicConstraints, FourBarFollowsFreudenstein) {
+  const double a = 0.10, b = 0.30, c = 0.25, d = 0.30, w2 = 2 * std::numbers::pi;
+  const ExampleRun run = simulate_example("four_bar");
+  EXPECT_EQ(run.summary.redundant_constraint_rows,
+            (std::vector<std::string>{"closure.z", "closure.rx", "closure.ry"}));
+  ASSERT_EQ(run.rows(), 1001u);
+  double worst_angle = 0, worst_rate = 0;
+  for (std::size_t i = 0; i < run.rows(); ++i) {
+    const double t2 = run.at(i, "crank_pin.q0");
+    const double t4 = freudenstein_theta4(a, b, c, d, t2);
+    // θ3 (absolute) from the crank and coupler angles; ω4 = a ω2 sin(θ2 − θ3) / (c sin(θ4 − θ3)).
+    const double t3 = t2 + run.at(i, "coupler_pin.q0");
+    const double w4 = a * w2 * std::sin(t2 - t3) / (c * std::sin(t4 - t3));
+    worst_angle = std::max(
+        worst_angle, std::abs(std::remainder(run.at(i, "theta4") - t4, 2 * std::numbers::pi)));
+    worst_rate = std::max(worst_rate, std::abs(run.at(i, "omega4") - w4) / w2);
+  }
+  EXPECT_LT(worst_angle, 1e-10);
+  EXPECT_LT(worst_rate, 1e-10);
+  EXPECT_LT(run.summary.audit.back().max_drift, 1e-10);  // constraint velocity
+}
+
+TEST(ClassicConstraints, SliderCrankPistonPositionAndAcceleration) {
+  const double r = 0.05, l = 0.20, w = 100;
+  const ExampleRun run = simulate_example("slider_crank");
+  double worst_x = 0, worst_a = 0;
+  for (std::size_t i = 0; i < run.rows(); ++i) {
+    const double th = w * run.at(i, "time");
+    const double S = std::sqrt(l * l - r * r * std::sin(th) * std::sin(th));
+    const double x = r * std::cos(th) + S;
+    const double s = std::sin(th), co = std::cos(th);
+    const double acc =
+        w * w *
+        (-r * co - r * r * std::cos(2 * th) / S - std::pow(r, 4) * s * s * co * co / (S * S * S));
+    worst_x = std::max(worst_x, std::abs(run.at(i, "piston_x") - x) / r);
+    worst_a = std::max(worst_a, std::abs(run.at(i, "piston_a") - acc) / (r * w * w));
+  }
+  EXPECT_LT(worst_x, 1e-10);
+  EXPECT_LT(worst_a, 1e-10);
+}
+
+// Steady circular rolling: ω = Ω z + s e3 with ω3 = ρΩ/R, so ω_z = Ω + s sin φ and |ω_h| =
+// s cos φ; the floor pushes m g up and m ρ Ω² towards the centre. Held for 100 s.
+TEST(ClassicConstraints, RollingCoinHoldsItsSteadyCircle) {
+  const double m = 1, R = 0.1, rho = 0.5, phi = -20 * std::numbers::pi / 180;
+  const double W =
+      std::sqrt(-kG * std::sin(phi) / (std::cos(phi) * (1.5 * rho - 0.25 * R * std::sin(phi))));
+  const double s = rho * W / R - W * std::sin(phi);
+  const ExampleRun run = simulate_example("rolling_coin", 100.0);
+  double worst = 0, worst_force = 0;
+  for (std::size_t i = 0; i < run.rows(); i += 10) {
+    worst = std::max(
+        {worst, relative(run.at(i, "omega.z"), W + s * std::sin(phi)),
+         relative(std::hypot(run.at(i, "omega.x"), run.at(i, "omega.y")), s * std::cos(phi)),
+         relative(run.at(i, "free.q2"), R * std::cos(phi))});
+    worst_force = std::max({worst_force, relative(run.at(i, "contact.normal"), m * kG),
+                            relative(std::abs(run.at(i, "contact.lateral")), m * rho * W * W)});
+  }
+  EXPECT_LT(worst, 1e-8);  // RK4 over 10⁵ steps
+  EXPECT_LT(worst_force, 1e-8);
+  for (const simulate::AuditEntry& e : run.summary.audit) {
+    if (e.name == "energy") {
+      EXPECT_LT(std::abs(e.max_drift), 1e-10);
+    }
+    if (e.name.rfind("constraint", 0) == 0) {
+      EXPECT_LT(e.max_drift, 1e-10) << e.name;
+    }
+  }
+}
+
+// u(t) = U tanh(k t), ω(t) = ω0 / cosh(k t).
+TEST(ClassicConstraints, ChaplyginSleighClosedForm) {
+  const double m = 2, a = 0.2, IG = m * (0.25 + 0.04) / 12, w0 = 2;
+  const double E = 0.5 * (IG + m * a * a) * w0 * w0;
+  const double U = std::sqrt(2 * E / m), k = m * a * U / (IG + m * a * a);
+  const ExampleRun run = simulate_example("chaplygin_sleigh", 100.0);
+  double worst = 0;
+  for (std::size_t i = 0; i < run.rows(); i += 10) {
+    const double t = run.at(i, "time"), th = run.at(i, "floor_plane.q2");
+    const double u =
+        run.at(i, "floor_plane.v0") * std::cos(th) + run.at(i, "floor_plane.v1") * std::sin(th);
+    worst = std::max({worst, std::abs(u - U * std::tanh(k * t)) / U,
+                      std::abs(run.at(i, "floor_plane.v2") - w0 / std::cosh(k * t)) / w0});
+  }
+  EXPECT_LT(worst, 1e-10);
+  for (const simulate::AuditEntry& e : run.summary.audit) {
+    if (e.name.rfind("constraint", 0) == 0) {
+      EXPECT_LT(e.max_drift, 1e-10) << e.name;
+    }
+  }
+}
+
+TEST(ClassicConstraints, GearedPairAccelerationsAndMeshEffort) {
+  const ExampleRun run = simulate_example("geared_pair");
+  const std::size_t last = run.rows() - 1;
+  EXPECT_NEAR(run.at(last, "wheel_axle.v0"), 40.0, 40.0 * 1e-12);
+  EXPECT_NEAR(run.at(last, "pinion_axle.v0"), -80.0, 80.0 * 1e-12);
+  for (std::size_t i = 0; i < run.rows(); ++i) {
+    EXPECT_NEAR(run.at(i, "mesh_effort.effort_a"), -0.1, 1e-13);
+    EXPECT_NEAR(run.at(i, "mesh_effort.effort_b"), -0.2, 1e-13);
+  }
+}
+
+// A pendulum as a free body held at its pivot by a `point` constraint moves as the same
+// pendulum on a ball joint, and the constraint's force is that joint's reaction.
+TEST(ClassicConstraints, PointConstraintEqualsBallJointTree) {
+  const auto build = [](bool as_loop) {
+    model::ModelBuilder builder;
+    builder.add_body("bob", inertia::box(inertia::Amount::mass(2.0), Vec3(0.05, 0.08, 0.8))
+                                .transformed(Mat3::Identity(), Vec3(0, 0, -0.4)));
+    model::Joint j;
+    j.name = "hold";
+    j.parent = "world";
+    j.child = "bob";
+    const Mat3 R = (Eigen::AngleAxisd(0.7, Vec3::UnitX()) * Eigen::AngleAxisd(0.3, Vec3::UnitY()))
+                       .toRotationMatrix();
+    const Quat qr(R);
+    if (as_loop) {
+      j.type = model::JointType::free;
+      j.q0 = (VecX(7) << 0, 0, 0, qr.w(), qr.x(), qr.y(), qr.z()).finished();
+      j.v0 = (VecX(6) << 1.0, -0.5, 2.0, 0, 0, 0).finished();
+      j.v0.tail<3>() = Vec3::Zero();
+      builder.add_constraint(
+          model::LoopClosure{"pivot", model::LoopType::point, {"world", {}}, {"bob", {}}});
+    } else {
+      j.type = model::JointType::spherical;
+      j.q0 = (VecX(4) << qr.w(), qr.x(), qr.y(), qr.z()).finished();
+      j.v0 = (VecX(3) << 1.0, -0.5, 2.0).finished();
+    }
+    builder.add_joint(j);
+    return builder.build();
+  };
+  const model::Model loop = build(true), tree = build(false);
+  simulate::SimulationOptions options;
+  options.duration = 2.0;
+  options.step = 1e-3;
+  options.reactions = true;
+  simulate::TableSink a, b;
+  simulate::Simulation(loop, {}, options).run(a);
+  simulate::Simulation(tree, {}, options).run(b);
+  ASSERT_EQ(a.rows.size(), b.rows.size());
+  double worst_q = 0, worst_f = 0;
+  for (std::size_t i = 0; i < a.rows.size(); ++i) {
+    for (int k = 0; k < 4; ++k)
+      worst_q = std::max(worst_q, std::abs(a.rows[i][a.column("hold.q" + std::to_string(3 + k))] -
+                                           b.rows[i][b.column("hold.q" + std::to_string(k))]));
+    for (const char* f : {"Fx", "Fy", "Fz"}) {
+      worst_f = std::max(worst_f, std::abs(a.rows[i][a.column(std::string("pivot.reaction.") + f)] -
+                                           b.rows[i][b.column(std::string("hold.reaction.") + f)]));
+    }
+  }
+  EXPECT_LT(worst_q, 1e-10);
+  EXPECT_LT(worst_f, 1e-8);  // N, of forces ~50 N
+}
+
+}  // namespace
+}  // namespace momenta
+
+namespace momenta {
+namespace {
+
+TEST(ConstraintErrors, RigidBodyIntegratorsAreRefused) {
+  const io::ModelFile file = io::read_model_file("examples/constraints/rolling_coin.yaml");
+  simulate::SimulationOptions options;
+  options.integrator = "splitting";
+  try {
+    simulate::Simulation simulation(file.model, {}, options);
+    FAIL() << "splitting accepted on a constrained model";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot keep the model's constraints"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(ConstraintErrors, ModelFileNamesTheLineAndSuggests) {
+  const std::string text = R"(bodies:
+  - {name: arm, shape: box, mass: 1, size: [0.1, 0.1, 1]}
+joints:
+  - {name: pin, type: revolute, parent: world, child: arm}
+constraints:
+  - {name: tie, type: distance, body_a: world, body_b: amr, length: 1.0}
+)";
+  try {
+    io::parse_model_file(text, "m.yaml", ".");
+    FAIL() << "accepted";
+  } catch (const ParseError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("m.yaml:6:"), std::string::npos) << what;
+    EXPECT_NE(what.find("did you mean 'arm'"), std::string::npos) << what;
+  }
+  try {
+    io::parse_model_file(R"(bodies:
+  - {name: arm, shape: box, mass: 1, size: [0.1, 0.1, 1]}
+joints:
+  - {name: pin, type: revolute, parent: world, child: arm}
+constraints:
+  - {name: tie, type: distnce, body_a: world, body_b: arm, length: 1.0}
+)",
+                         "m.yaml", ".");
+    FAIL() << "accepted";
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("did you mean 'distance'"), std::string::npos) << e.what();
+  }
+}
+
+// Two wires of different lengths from the same point to the same body point cannot both hold.
+TEST(ConstraintErrors, ConflictingConstraintsAreRefusedWithTheResidual) {
+  const std::string text = R"(bodies:
+  - {name: arm, shape: box, mass: 1, size: [0.1, 0.1, 1], position: [0, 0, -0.5]}
+joints:
+  - {name: pin, type: ball, parent: world, child: arm}
+constraints:
+  - {name: short, type: distance, body_a: world, point_a: [0, 0, -2], body_b: arm, point_b: [0, 0, -1], length: 1.0}
+  - {name: long, type: distance, body_a: world, point_a: [0, 0, -2], body_b: arm, point_b: [0, 0, -1], length: 1.5}
+)";
+  const io::ModelFile file = io::parse_model_file(text, "m.yaml", ".");
+  simulate::SimulationOptions options;
+  options.duration = 0.1;
+  simulate::Simulation simulation(file.model, {}, options);
+  simulate::TableSink table;
+  try {
+    simulation.run(table);
+    FAIL() << "conflicting constraints accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("no consistent initial state"), std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace momenta
