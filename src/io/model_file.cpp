@@ -49,6 +49,11 @@ std::string Declared::resolve(const YamlNode& ref, bool allow_world) const {
                        known));
 }
 
+std::string moving_body(const YamlNode& ref, const Context& ctx, std::string_view why_not_world) {
+  if (ref.as_string() == model::kWorldBodyName) ref.fail(std::string(why_not_world));
+  return ctx.bodies.resolve(ref);
+}
+
 std::vector<YamlNode> list_section(const YamlNode& root, std::string_view key) {
   const auto node = root.find(key);
   if (!node || node->is_null()) return {};

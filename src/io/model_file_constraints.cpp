@@ -89,10 +89,10 @@ model::Constraint read_constraint(const YamlNode& e, std::string_view type, cons
   if (type == "weld" || type == "point" || type == "hinge" || type == "slider") {
     model::LoopClosure c;
     c.name = name;
-    c.type = type == "weld"    ? model::LoopType::weld
-             : type == "point" ? model::LoopType::point
-             : type == "hinge" ? model::LoopType::hinge
-                               : model::LoopType::slider;
+    for (const model::LoopType t : {model::LoopType::weld, model::LoopType::point,
+                                    model::LoopType::hinge, model::LoopType::slider}) {
+      if (model::loop_type_name(t) == type) c.type = t;
+    }
     c.a = read_end(e, ctx, "a");
     c.b = read_end(e, ctx, "b");
     if (c.a.body == c.b.body)
@@ -114,10 +114,7 @@ model::Constraint read_constraint(const YamlNode& e, std::string_view type, cons
   if (type == "rolling") {
     model::RollingContact c;
     c.name = name;
-    const YamlNode body = e.at("body");
-    if (body.as_string() == model::kWorldBodyName)
-      body.fail("the world cannot roll: name the wheel's body");
-    c.frame.body = ctx.bodies.resolve(body);
+    c.frame.body = moving_body(e.at("body"), ctx, "the world cannot roll: name the wheel's body");
     const std::string shape = e.find_string("shape").value_or("disk");
     if (shape == "sphere") {
       c.shape = model::RollingShape::sphere;
@@ -137,10 +134,7 @@ model::Constraint read_constraint(const YamlNode& e, std::string_view type, cons
   if (type == "knife_edge") {
     model::KnifeEdge c;
     c.name = name;
-    const YamlNode body = e.at("body");
-    if (body.as_string() == model::kWorldBodyName)
-      body.fail("a knife edge on the world does nothing");
-    c.frame.body = ctx.bodies.resolve(body);
+    c.frame.body = moving_body(e.at("body"), ctx, "a knife edge on the world does nothing");
     // The blade along the frame's x axis.
     const Vec3 blade = e.has("direction") ? read_unit(e.at("direction")) : Vec3::UnitX();
     const Mat3 R = z_along(blade) * rotation_from_axis_angle(Vec3::UnitY(), -std::numbers::pi / 2);

@@ -38,11 +38,8 @@ double nonnegative(const YamlNode& e, std::string_view key) {
 
 // A load's body: declared, and not the world (a load on the ground does nothing).
 std::string loaded_body(const YamlNode& e, const Context& ctx) {
-  const YamlNode ref = e.at("body");
-  if (ref.as_string() == model::kWorldBodyName) {
-    ref.fail("a load on the world does nothing: name the body it acts on");
-  }
-  return ctx.bodies.resolve(ref);
+  return moving_body(e.at("body"), ctx,
+                     "a load on the world does nothing: name the body it acts on");
 }
 
 model::LoadFrame read_frame(const YamlNode& e) {

@@ -64,6 +64,10 @@ struct Context {
   std::map<std::string, std::vector<PartSummary>, std::less<>> body_parts;
 };
 
+/// The body `ref` names, which must be declared and may not be the world: a load, a wheel or a
+/// blade on the ground does nothing. Throws at `ref` with `why_not_world` for the world.
+std::string moving_body(const YamlNode& ref, const Context& ctx, std::string_view why_not_world);
+
 /// A list section: its elements, or none when the key is absent or empty (`forces:`). Throws
 /// unless it is a list.
 std::vector<YamlNode> list_section(const YamlNode& root, std::string_view key);

@@ -115,15 +115,13 @@ void ConstraintSolver::correct_accelerations(double t, dynamics::Data& data, Vec
   factor_mass_matrix(data, q);
   factor_rows(all_rows_);
   if (cholesky_->rank() < reference_rank_) {
+    // The first dependent row that was independent at the start.
     int row = 0;
-    while (row < rows_.count && !cholesky_->dependent(row)) ++row;
-    for (int i = 0; i < rows_.count; ++i) {
-      if (cholesky_->dependent(i) &&
-          std::find(redundant_.begin(), redundant_.end(), rows_.names[i]) == redundant_.end()) {
-        row = i;
-        break;
-      }
-    }
+    while (row < rows_.count &&
+           !(cholesky_->dependent(row) &&
+             std::find(redundant_.begin(), redundant_.end(), rows_.names[row]) == redundant_.end()))
+      ++row;
+    if (row == rows_.count) row = 0;
     throw NumericalError(fmt::format(
         "singular configuration at t = {:.9g} s: constraint row '{}' became dependent on the "
         "others ({} independent rows, {} at the start) — the mechanism is at a dead point or "
