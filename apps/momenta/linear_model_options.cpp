@@ -77,6 +77,11 @@ void add_linear_model_options(CLI::App* command, LinearModelOptions& o, bool wit
                    "rotor turning on its joint, its angle left out) or a STATE.json file "
                    "{\"q\": [...], \"v\": [...], \"t\": 0}")
       ->capture_default_str();
+  command
+      ->add_option("--independent", o.independent,
+                   "Models with constraints: coordinates to keep as states where the "
+                   "constraints allow, comma-separated (default: the first joints')")
+      ->delimiter(',');
   if (with_channels) {
     command
         ->add_option("--inputs", o.inputs,
@@ -101,6 +106,7 @@ LoadedLinearModel load_linear_model(const LinearModelOptions& o, io::ModelFile f
   analysis::LinearizationOptions options;
   options.inputs = o.inputs;
   options.outputs = o.outputs;
+  options.independent = o.independent;
   options.output_specs = r.file.outputs;
   analysis::OperatingPoint point;
   if (o.about == "steady") {

@@ -25,9 +25,11 @@ struct LinearModelOptions {
   std::string about = "initial";  // initial | equilibrium | STATE.json
   std::vector<std::string> inputs;
   std::vector<std::string> outputs;
+  std::vector<std::string> independent;  // constrained models: coordinates to keep as states
 };
 
-/// Adds MODEL and --about (and --inputs/--outputs when `with_channels`) to a command.
+/// Adds MODEL, --about and --independent (and --inputs/--outputs when `with_channels`) to a
+/// command.
 void add_linear_model_options(CLI::App* command, LinearModelOptions& options, bool with_channels);
 
 /// The model file and its linearization about the point --about names. An unstable equilibrium

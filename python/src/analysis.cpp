@@ -123,6 +123,12 @@ the free coordinates (mass, damping, stiffness), the point, its acceleration and
       .def_property_readonly("output_values",
                              [](const LinearModel& l) { return to_numpy(l.output_values); })
       .def_readonly("states_shifted", &LinearModel::states_shifted)
+      .def_readonly("coordinates", &LinearModel::coordinates,
+                    "Velocity index of each configuration state.")
+      .def_readonly("velocity_coordinates", &LinearModel::velocity_coordinates,
+                    "Velocity index of each velocity state.")
+      .def_readonly("dependent_coordinates", &LinearModel::dependent_coordinates,
+                    "Velocity indices the constraints determine (empty without constraints).")
       .def("__repr__", [](const LinearModel& l) {
         return fmt::format("<momenta.LinearModel: {} states, inputs [{}], outputs [{}]>",
                            l.system.state_count(), fmt::join(l.system.input_names(), ", "),
@@ -132,11 +138,12 @@ the free coordinates (mass, damping, stiffness), the point, its acceleration and
   m.def(
       "linearize",
       [](const ModelHandle& h, std::vector<std::string> inputs, std::vector<std::string> outputs,
-         const py::object& q, const py::object& v, double t, double angle_step,
-         double length_step) {
+         const py::object& q, const py::object& v, double t, double angle_step, double length_step,
+         std::vector<std::string> independent) {
         LinearizationOptions options;
         options.inputs = std::move(inputs);
         options.outputs = std::move(outputs);
+        options.independent = std::move(independent);
         options.output_specs = h.file->outputs;
         options.angle_step = angle_step;
         options.length_step = length_step;
@@ -145,12 +152,13 @@ the free coordinates (mass, damping, stiffness), the point, its acceleration and
       py::arg("model"), py::kw_only(), py::arg("inputs") = std::vector<std::string>{},
       py::arg("outputs") = std::vector<std::string>{}, py::arg("q") = py::none(),
       py::arg("v") = py::none(), py::arg("t") = 0.0, py::arg("angle_step") = 0.0,
-      py::arg("length_step") = 0.0,
+      py::arg("length_step") = 0.0, py::arg("independent") = std::vector<std::string>{},
       R"doc(Linearizes the model about (t, q, v) — its initial state unless given — as
 `momenta linearize` does: states [δq; v] over the free joints, inputs the named signals (all by
 default), outputs the named model outputs, states or coordinates (the model file's outputs, or
-every configuration state, by default). Raises InvalidArgument on an unknown name (with a
-did-you-mean).)doc");
+every configuration state, by default). With constraints the states are independent coordinates
+(docs/constraints.md); `independent` names coordinates to keep as states. Raises
+InvalidArgument on an unknown name (with a did-you-mean).)doc");
 
   py::class_<Equilibrium>(m, "Equilibrium", "A static equilibrium and its stability.")
       .def_property_readonly("q", [](const Equilibrium& e) { return to_numpy(e.point.q); })

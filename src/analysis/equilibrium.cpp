@@ -2,12 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
 #include <variant>
+#include <vector>
 
 #include <fmt/format.h>
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
 
+#include "constraint_chart.hpp"
+#include "linearize_parts.hpp"
 #include "model_residual.hpp"
 #include "momenta/common/error.hpp"
 
@@ -57,6 +62,92 @@ std::string largest_entry(const VecX& r, const std::vector<std::string>& names) 
   return fmt::format("'{}' = {:.6g}", names[static_cast<std::size_t>(i)], r[i]);
 }
 
+// What Newton's method balances: the generalized forces r (n of them) of a configuration, and
+// how a step in the n unknowns moves it. Without constraints the unknowns are the free
+// coordinates' tangents and r = r_f; with constraints they are the independent coordinates of a
+// chart anchored at the current configuration (re-anchored after every step) and r = Tᵀ M_ff v̇_f,
+// the generalized forces along them (Gᵀλ drops out: G T = 0).
+class StaticProblem {
+ public:
+  StaticProblem(const model::Model& model, ModelResidual& residual, double t, const VecX& v)
+      : model_(model), residual_(residual), t_(t), v_(v), a_zero_(VecX::Zero(residual.nf())) {}
+
+  int unknowns() const {
+    return chart_ ? static_cast<int>(chart_->positions().size()) : residual_.nf();
+  }
+  // Velocity index of unknown k.
+  int coordinate(int k) const {
+    return (chart_ ? chart_->positions() : residual_.free())[static_cast<std::size_t>(k)];
+  }
+  std::vector<std::string> names() const {
+    std::vector<std::string> out;
+    for (int k = 0; k < unknowns(); ++k) out.push_back(detail::tangent_name(model_, coordinate(k)));
+    return out;
+  }
+
+  // Anchors the unknowns at q (a consistent configuration).
+  void anchor(const VecX& q) {
+    if (model_.has_constraints())
+      chart_.emplace(model_, residual_.free(), q, v_, std::vector<std::string>{});
+  }
+
+  // q_out = q moved by α·step (in the unknowns).
+  void move(const VecX& q, const VecX& step, double alpha, VecX& q_out) {
+    if (chart_) {
+      chart_->configuration(alpha * step, q_out, delta_);
+      return;
+    }
+    delta_ = VecX::Zero(model_.nv());
+    for (int k = 0; k < unknowns(); ++k) delta_[coordinate(k)] = step[k];
+    model::integrate(model_, q, delta_, alpha, q_out);
+  }
+
+  void residual(const VecX& q, VecX& r) {
+    if (!chart_) {
+      residual_.residual(t_, q, v_, a_zero_, r);
+      return;
+    }
+    const MatX T = tangent_map(q);
+    const VecX& vdot = residual_.system().evaluate(t_, q, v_);
+    VecX a_f(residual_.nf());
+    for (int k = 0; k < residual_.nf(); ++k)
+      a_f[k] = vdot[residual_.free()[static_cast<std::size_t>(k)]];
+    r = T.transpose() * (residual_.free_mass(t_, q) * a_f);
+  }
+
+  MatX mass(const VecX& q) {
+    const MatX M = residual_.free_mass(t_, q);
+    if (!chart_) return M;
+    const MatX T = tangent_map(q);
+    return T.transpose() * M * T;
+  }
+
+ private:
+  // T = ∂v_f/∂ζ at q (the chart's velocity map at rest).
+  MatX tangent_map(const VecX& q) {
+    const int n = static_cast<int>(chart_->velocities().size()), nf = residual_.nf();
+    MatX T(nf, n);
+    VecX unit, v_zero, v_unit;
+    chart_->velocity(q, VecX::Zero(n), v_zero);
+    for (int k = 0; k < n; ++k) {
+      unit = VecX::Zero(n);
+      unit[k] = 1.0;
+      chart_->velocity(q, unit, v_unit);
+      for (int a = 0; a < nf; ++a) {
+        const int i = residual_.free()[static_cast<std::size_t>(a)];
+        T(a, k) = v_unit[i] - v_zero[i];
+      }
+    }
+    return T;
+  }
+
+  const model::Model& model_;
+  ModelResidual& residual_;
+  double t_;
+  VecX v_, a_zero_, delta_;
+  std::optional<detail::ConstraintChart> chart_;
+};
+
 }  // namespace
 
 Equilibrium find_equilibrium(const model::Model& model, const VecX& q_guess,
@@ -70,18 +161,21 @@ Equilibrium find_equilibrium(const model::Model& model, const VecX& q_guess,
   }
   ModelResidual residual(model);
   const double t = options.t;
-  const int nf = residual.nf();
-  const std::vector<int>& free = residual.free();
-  const std::vector<std::string> state_names = linear_state_names(model);
 
-  // At rest: v = 0 on the free coordinates, prescribed ones from their signals, v̇_f = 0.
+  // At rest: v = 0 on the free coordinates, prescribed ones from their signals, v̇_f = 0; on the
+  // constraints (the guess made consistent as a simulation's first state is).
   VecX v = VecX::Zero(model.nv());
   VecX q = detail::checked_configuration(model, q_guess, v, "find_equilibrium: initial guess");
   residual.system().apply_prescribed_motion(t, q, v);
-  const VecX a_zero = VecX::Zero(nf);
+  residual.system().make_consistent(t, q, v);
+  StaticProblem problem(model, residual, t, v);
+  problem.anchor(q);
+  const int n = problem.unknowns();
+  const std::vector<std::string> names = problem.names();
   VecX r;
   double guess_scale = 0.0;
-  residual.residual_and_scale(t, q, v, a_zero, r, guess_scale);
+  residual.residual_and_scale(t, q, v, VecX::Zero(residual.nf()), r, guess_scale);
+  problem.residual(q, r);
   double F = std::max(model_force_scale(model, t), guess_scale);
   if (!(F > 0.0) || !std::isfinite(F)) F = 1.0;
   const double allowed = options.tolerance * F;
@@ -91,24 +185,26 @@ Equilibrium find_equilibrium(const model::Model& model, const VecX& q_guess,
 
   // Configuration steps as linearize() takes them.
   const double length = characteristic_length(model);
-  const auto step = [&](int i) {
-    return detail::is_angle_coordinate(model, i) ? 1e-3 : 1e-3 * length;
+  const auto is_angle = [&](int k) {
+    return detail::is_angle_coordinate(model, problem.coordinate(k));
   };
+  const auto step = [&](int k) { return is_angle(k) ? 1e-3 : 1e-3 * length; };
 
   Equilibrium result;
-  MatX K(nf, nf);
-  VecX plus, minus, coarse, d, tangent, q_step, r_trial, delta_f, delta(model.nv()), q_trial;
+  MatX K(r.size(), n);  // square unless nonholonomic rows leave fewer velocities than unknowns
+  VecX plus, minus, coarse, d, q_step, r_trial, delta, q_trial, unit;
   int iteration = 0;
   for (; iteration < options.max_iterations && !converged(r); ++iteration) {
-    // K = ∂r/∂δq at q.
-    for (int k = 0; k < nf; ++k) {
-      const int i = free[static_cast<std::size_t>(k)];
+    // K = ∂r/∂(unknowns) at q.
+    for (int k = 0; k < n; ++k) {
       detail::richardson_difference(
           [&](double s, VecX& out) {
-            detail::displace(model, q, i, s, tangent, q_step);
-            residual.residual(t, q_step, v, a_zero, out);
+            unit = VecX::Zero(n);
+            unit[k] = 1.0;
+            problem.move(q, unit, s, q_step);
+            problem.residual(q_step, out);
           },
-          step(i), plus, minus, coarse, d);
+          step(k), plus, minus, coarse, d);
       K.col(k) = d;
     }
     if (!K.allFinite()) {
@@ -118,14 +214,10 @@ Equilibrium find_equilibrium(const model::Model& model, const VecX& q_guess,
     // Newton step, least squares and minimum norm where K is singular.
     Eigen::CompleteOrthogonalDecomposition<MatX> cod(K);
     cod.setThreshold(kRankThreshold);
-    delta_f = -cod.solve(r);
-    delta.setZero();
+    delta = -cod.solve(r);
     double turn = 0.0;
-    for (int k = 0; k < nf; ++k) {
-      const int i = free[static_cast<std::size_t>(k)];
-      delta[i] = delta_f[k];
-      if (detail::is_angle_coordinate(model, i)) turn = std::max(turn, std::abs(delta_f[k]));
-    }
+    for (int k = 0; k < n; ++k)
+      if (is_angle(k)) turn = std::max(turn, std::abs(delta[k]));
     if (turn > kLargestTurn) delta *= kLargestTurn / turn;
 
     // Backtracking line search on ½‖r‖²; where the Newton step fails (K singular along r, as
@@ -134,8 +226,12 @@ Equilibrium find_equilibrium(const model::Model& model, const VecX& q_guess,
     const double merit = r.squaredNorm();
     const auto accept = [&](const VecX& direction, double armijo) {
       for (double alpha = 1.0; alpha >= kSmallestFraction; alpha *= 0.5) {
-        model::integrate(model, q, direction, alpha, q_trial);
-        residual.residual(t, q_trial, v, a_zero, r_trial);
+        try {
+          problem.move(q, direction, alpha, q_trial);
+        } catch (const NumericalError&) {
+          continue;  // a chart cannot reach that far: a shorter step
+        }
+        problem.residual(q_trial, r_trial);
         const double trial = r_trial.squaredNorm();
         if (std::isfinite(trial) && trial < merit && trial <= (1.0 - armijo * alpha) * merit)
           return true;
@@ -143,17 +239,12 @@ Equilibrium find_equilibrium(const model::Model& model, const VecX& q_guess,
       return false;
     };
     bool moved = delta.allFinite() && accept(delta, kArmijo);
-    if (!moved) {
-      const Eigen::LLT<MatX> llt(residual.free_mass(t, q));
-      const VecX fall_f = -llt.solve(r);
-      VecX fall = VecX::Zero(model.nv());
+    if (!moved && r.size() == n) {
+      const Eigen::LLT<MatX> llt(problem.mass(q));
+      VecX fall = -llt.solve(r);
       double largest = 0.0;
-      for (int k = 0; k < nf; ++k) {
-        const int i = free[static_cast<std::size_t>(k)];
-        fall[i] = fall_f[k];
-        largest = std::max(
-            largest, std::abs(fall_f[k]) / (detail::is_angle_coordinate(model, i) ? 1.0 : length));
-      }
+      for (int k = 0; k < n; ++k)
+        largest = std::max(largest, std::abs(fall[k]) / (is_angle(k) ? 1.0 : length));
       if (largest > 0.0 && fall.allFinite()) {
         fall *= 0.5 * kLargestTurn / largest;
         moved = accept(fall, 0.0);
@@ -165,16 +256,17 @@ Equilibrium find_equilibrium(const model::Model& model, const VecX& q_guess,
           "near this configuration (the line search stalls after {} iterations with largest "
           "residual {} against tolerance {:.3g}; ∂r/∂q has rank {} of {}) — a constant load on a "
           "coordinate without a restoring force has no static equilibrium",
-          iteration, largest_entry(r, state_names), allowed, cod.rank(), nf));
+          iteration, largest_entry(r, names), allowed, cod.rank(), n));
     }
     q = q_trial;
-    r = r_trial;
+    problem.anchor(q);
+    problem.residual(q, r);
   }
   if (!converged(r)) {
     throw NumericalError(fmt::format(
         "find_equilibrium: no equilibrium found in {} Newton iterations: largest residual {} "
         "against tolerance {:.3g}",
-        options.max_iterations, largest_entry(r, state_names), allowed));
+        options.max_iterations, largest_entry(r, names), allowed));
   }
 
   // The equilibrium, its linearization, rank and stability.
@@ -183,7 +275,7 @@ Equilibrium find_equilibrium(const model::Model& model, const VecX& q_guess,
   result.force_scale = F;
   result.iterations = iteration;
   result.linear = linearize(model, result.point);
-  if (nf > 0) {
+  if (result.linear.stiffness.size() > 0) {
     Eigen::CompleteOrthogonalDecomposition<MatX> cod(result.linear.stiffness);
     cod.setThreshold(kRankThreshold);
     result.stiffness_rank = static_cast<int>(cod.rank());

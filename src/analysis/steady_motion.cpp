@@ -102,7 +102,7 @@ bool symmetric_about(const SpinningBody& b, const Vec3& e) {
 }
 
 bool euler_poisson_applies(const model::Model& model) {
-  return model.num_joints() == 1 && model.joint(0).parent_index == 0 &&
+  return model.num_joints() == 1 && model.joint(0).parent_index == 0 && !model.has_constraints() &&
          (model.joint(0).type == model::JointType::spherical ||
           model.joint(0).type == model::JointType::free);
 }

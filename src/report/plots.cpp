@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <string_view>
+#include <variant>
 
 #include "sections.hpp"
 
@@ -57,10 +59,28 @@ std::vector<Group> group_columns(const io::ModelFile& file,
     if (inserted) groups.push_back({title, unit, log, {}});
     groups[it->second].columns.push_back(c);
   };
+  // Constraint force columns ("<constraint>.<label>"): moments by their label, a coupler's
+  // efforts in the unit of its joints' coordinates.
+  std::map<std::string, std::string> constraint_units;
+  for (const model::Constraint& constraint : model.constraints()) {
+    const std::string name = model::constraint_name(constraint);
+    for (const std::string_view label : model::constraint_force_labels(constraint)) {
+      std::string unit = label.starts_with("reaction.M") ? "N·m" : "N";
+      if (const auto* coupler = std::get_if<model::JointCoupler>(&constraint)) {
+        const model::Joint& joint =
+            model.joint(label == "effort_a" ? coupler->joint_a_index : coupler->joint_b_index);
+        unit = q_unit(model, joint.q_index) == "rad" ? "N·m" : "N";
+      }
+      constraint_units[name + "." + std::string(label)] = unit;
+    }
+  }
   const int nq = model.nq(), nv = model.nv();
   for (int c = 1; c < static_cast<int>(columns.size()); ++c) {
     const std::string& name = columns[c];
-    if (c <= nq) {
+    if (const auto force = constraint_units.find(name); force != constraint_units.end()) {
+      add(force->second == "N" ? "Constraint forces (N)" : "Constraint moments and efforts (N·m)",
+          force->second, false, c);
+    } else if (c <= nq) {
       const std::string unit = q_unit(model, c - 1);
       add("Coordinates (" + unit + ")", unit, false, c);
     } else if (c <= nq + nv) {

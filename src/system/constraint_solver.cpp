@@ -46,9 +46,9 @@ ConstraintSolver::ConstraintSolver(const model::Model& model)
   const int nf = static_cast<int>(free_.size());
   const int m = rows_.count;
   M_ff_ = MatX::Zero(nf, nf);
-  llt_ = Eigen::LLT<MatX>(nf);
+  llt_.compute(MatX::Identity(nf, nf));  // sizes its storage (and its info) once
   G_f_ = MatX::Zero(m, nf);
-  Y_ = MatX::Zero(nf, m);
+  W_ = MatX::Zero(nf, m);
   A_ = MatX::Zero(m, m);
   dv_ = VecX::Zero(nf);
   all_rows_.assign(m, 1);
@@ -71,8 +71,12 @@ void ConstraintSolver::gather_free_columns() {
 void ConstraintSolver::factor_mass_matrix(dynamics::Data& data, VecRef q) {
   const MatX& M = dynamics::crba(model_, data, q);
   const int nf = static_cast<int>(free_.size());
-  for (int c = 0; c < nf; ++c)
-    for (int r = 0; r < nf; ++r) M_ff_(r, c) = M(free_[r], free_[c]);
+  if (nf == model_.nv()) {
+    M_ff_ = M;  // nothing prescribed: a straight copy into the sized workspace
+  } else {
+    for (int c = 0; c < nf; ++c)
+      for (int r = 0; r < nf; ++r) M_ff_(r, c) = M(free_[r], free_[c]);
+  }
   llt_.compute(M_ff_);
   if (llt_.info() != Eigen::Success) {
     throw NumericalError(
@@ -82,18 +86,27 @@ void ConstraintSolver::factor_mass_matrix(dynamics::Data& data, VecRef q) {
 }
 
 void ConstraintSolver::factor_rows(std::span<const char> mask) {
-  // Y = M⁻¹ G_fᵀ over the rows in mask, A = G_f Y.
-  Y_ = G_f_.transpose();
+  // With M = L Lᵀ: W = L⁻¹ G_fᵀ over the rows in mask, A = G_f M⁻¹ G_fᵀ = Wᵀ W (one triangular
+  // solve with the rows instead of two).
+  W_ = G_f_.transpose();
   for (int i = 0; i < rows_.count; ++i)
-    if (!mask[i]) Y_.col(i).setZero();
-  llt_.solveInPlace(Y_);
-  A_.noalias() = G_f_ * Y_;
+    if (!mask[i]) W_.col(i).setZero();
+  llt_.matrixL().solveInPlace(W_);
+  A_.setZero();
+  A_.selfadjointView<Eigen::Lower>().rankUpdate(W_.transpose());
+  A_.triangularView<Eigen::StrictlyUpper>() = A_.transpose();
   for (int i = 0; i < rows_.count; ++i) {
     if (mask[i]) continue;
     A_.row(i).setZero();
     A_.col(i).setZero();
   }
   cholesky_->factorize(A_, kDependentRow);
+}
+
+void ConstraintSolver::apply_row_forces(const VecX& lambda) {
+  // dv = M⁻¹ G_fᵀ λ = L⁻ᵀ (W λ).
+  dv_.noalias() = W_ * lambda;
+  llt_.matrixU().solveInPlace(dv_);
 }
 
 void ConstraintSolver::find_redundant_rows(dynamics::Data& data, VecRef q) {
@@ -133,7 +146,7 @@ void ConstraintSolver::correct_accelerations(double t, dynamics::Data& data, Vec
   rhs_.noalias() -= rows_.G * vdot;
   cholesky_->solve_in_place(rhs_);
   lambda_ = rhs_;
-  dv_.noalias() = Y_ * lambda_;
+  apply_row_forces(lambda_);
   for (int c = 0; c < static_cast<int>(free_.size()); ++c) vdot[free_[c]] += dv_[c];
 }
 
@@ -142,7 +155,7 @@ void ConstraintSolver::add_forces(const dynamics::Data& data, std::span<Vec6> f_
   dynamics::add_constraint_forces(model_, data, rows_, lambda_, f_ext, tau);
 }
 
-bool ConstraintSolver::project(dynamics::Data& data, VecX& q, VecX& v) {
+bool ConstraintSolver::project(double t, dynamics::Data& data, VecX& q, VecX& v) {
   if (rows_.count == 0) return false;
   bool changed = false;
   // Positions: Newton with the mass metric (M at the step's end state, kept through the
@@ -156,7 +169,7 @@ bool ConstraintSolver::project(dynamics::Data& data, VecX& q, VecX& v) {
     factor_rows(position_rows_);
     rhs_ = -rows_.position;
     cholesky_->solve_in_place(rhs_);
-    dv_.noalias() = Y_ * rhs_;
+    apply_row_forces(rhs_);
     delta_.setZero();
     for (int c = 0; c < static_cast<int>(free_.size()); ++c) delta_[free_[c]] = dv_[c];
     q_saved_ = q;
@@ -176,10 +189,17 @@ bool ConstraintSolver::project(dynamics::Data& data, VecX& q, VecX& v) {
     changed = true;
   }
   if (!(residual <= kProjectionFailure)) {
+    int worst = 0;
+    for (int r = 0; r < rows_.count; ++r) {
+      if (position_rows_[r] && !(std::abs(rows_.position[r]) <= std::abs(rows_.position[worst])))
+        worst = r;
+    }
     throw NumericalError(fmt::format(
-        "the state left the constraints too far to project back: residual {:.3g} (m or rad) "
-        "after {} Newton steps; take a smaller step",
-        residual, kProjectionIterations));
+        "at t = {:.9g} s the state left constraint row '{}' too far to project back: residual "
+        "{:.3g} (m or rad) after Newton's method; the mechanism has reached a limit of its motion "
+        "(a dead point, or a driven link past where the loop can close), or the step is too "
+        "large — take a smaller step",
+        t, rows_.names[static_cast<std::size_t>(worst)], residual));
   }
   // Velocities: v ← v − M⁻¹Gᵀ (G M⁻¹ Gᵀ)⁻¹ G v over every row.
   gather_free_columns();
@@ -187,7 +207,7 @@ bool ConstraintSolver::project(dynamics::Data& data, VecX& q, VecX& v) {
   rhs_.noalias() = -rows_.G * v;
   if (rhs_.cwiseAbs().maxCoeff() > 0.0) {
     cholesky_->solve_in_place(rhs_);
-    dv_.noalias() = Y_ * rhs_;
+    apply_row_forces(rhs_);
     for (int c = 0; c < static_cast<int>(free_.size()); ++c) v[free_[c]] += dv_[c];
     changed = true;
   }

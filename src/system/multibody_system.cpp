@@ -145,7 +145,7 @@ const VecX& MultibodySystem::compute(double t, const VecX& q, const VecX& v, mod
 bool MultibodySystem::project(double t, VecX& q, VecX& v) {
   if (!constraints_) return false;
   apply_prescribed_motion(t, q, v);
-  return constraints_->project(data_, q, v);
+  return constraints_->project(t, data_, q, v);
 }
 
 ConsistentState MultibodySystem::make_consistent(double t, VecX& q, VecX& v) {

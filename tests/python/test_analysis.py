@@ -215,3 +215,20 @@ def test_a_sweep_from_python_is_the_command_lines_file(tmp_path):
     import pandas
     table = pandas.DataFrame(result)
     assert list(table.columns[:4]) == ["run", "ks", "b", "m2"]
+
+
+def test_constrained_swing_in_its_independent_coordinate():
+    """examples/constraints/parallelogram_swing.yaml: one coordinate, ω² = g (m₁/2 + m₃/2 + m₂) /
+    (L (m₁/3 + m₃/3 + m₂)) from its energy; the same as `momenta modes --about equilibrium`."""
+    path = EXAMPLES / "constraints" / "parallelogram_swing.yaml"
+    model = momenta.load_model(path)
+    equilibrium = momenta.find_equilibrium(model)
+    g, L, m1, m2, m3 = 9.81, 0.25, 1.0, 2.0, 1.5
+    w2 = g * (m1 / 2 + m3 / 2 + m2) / (L * (m1 / 3 + m3 / 3 + m2))
+    linear = momenta.linearize(model, q=equilibrium.q, independent=["pivot2.angle"])
+    assert linear.state_names == ["pivot2.angle", "pivot2.angle_rate"]
+    assert len(linear.dependent_coordinates) == 2
+    assert linear.A[1, 0] == pytest.approx(-w2, rel=1e-9)
+    expected = cli_json("modes", path, "--about", "equilibrium")
+    assert expected["state_names"] == ["pivot1.angle", "pivot1.angle_rate"]
+    assert expected["modes"][0]["natural_frequency_rad_s"] == pytest.approx(w2 ** 0.5, rel=1e-9)

@@ -9,6 +9,12 @@
 // singular K gives the least-squares, minimum-norm step), and a backtracking (Armijo) line search
 // on ½‖r‖²: α = 1, ½, ¼, … until ‖r(q ⊕ αΔ)‖² ≤ (1 − 10⁻⁴ α) ‖r(q)‖² (Nocedal & Wright 2006,
 // §3.1 and §11.2). A step turning any angle by more than 1 rad is first scaled down to 1 rad.
+//
+// With constraints (model/constraint.hpp) the guess is first made consistent, and Newton works
+// in the independent coordinates of linearize() (linearize.hpp), re-chosen at every iterate: the
+// residual is r = Tᵀ M_ff v̇_f, the generalized force along the independent velocities (T =
+// ∂v_f/∂ζ; the constraint forces Gᵀλ drop out since G T = 0), zero exactly where the constrained
+// accelerations at rest vanish.
 
 #include <vector>
 
@@ -33,7 +39,8 @@ struct Equilibrium {
   /// The equilibrium: t, q (prescribed coordinates from their signals) and v = 0 on the free
   /// coordinates (a prescribed joint's rate as its signal gives it).
   OperatingPoint point;
-  /// r_f at the point (nf: N on lengths, N·m on angles), max |r_i| ≤ tolerance · force_scale.
+  /// r_f at the point (nf: N on lengths, N·m on angles; with constraints one per independent
+  /// velocity), max |r_i| ≤ tolerance · force_scale.
   VecX residual;
   /// F of EquilibriumOptions::tolerance.
   double force_scale = 0.0;

@@ -80,6 +80,9 @@ struct LinearizationOptions {
   double angle_step = 0.0;
   /// The same on lengths, m; 0: automatic (1e-3 · characteristic_length(model)).
   double length_step = 0.0;
+  /// Models with constraints: coordinates (model::Model::q_name, or a rotation tangent's
+  /// "<joint>.rx") to keep as states where the constraints allow; empty: automatic.
+  std::vector<std::string> independent;
 };
 
 /// The linear model about one operating point.
@@ -95,9 +98,15 @@ struct LinearModel {
   VecX acceleration;
   /// y at the point (one per output).
   VecX output_values;
-  /// The velocity index (into v) of each free coordinate; state i and state nf + i belong to
-  /// free coordinate i.
+  /// The velocity index (into v) of each configuration state; without constraints every free
+  /// coordinate, and state i and state nf + i belong to free coordinate i.
   std::vector<int> coordinates;
+  /// The velocity index of each velocity state (state coordinates.size() + k); the same as
+  /// `coordinates` unless nonholonomic constraints remove velocities.
+  std::vector<int> velocity_coordinates;
+  /// The velocity indices of the coordinates the constraints determine (empty without
+  /// constraints): configuration ones, then the velocities that nonholonomic rows add.
+  std::vector<int> dependent_coordinates, dependent_velocities;
   /// Second-order form over the nf free coordinates,
   ///   M δv̇ + damping δv + stiffness δq = −(∂r/∂u) δu − (∂r/∂u̇) δu̇ − (∂r/∂ü) δü,
   /// mass = M_ff(q₀) (symmetric positive definite), stiffness = ∂r_f/∂δq and damping = ∂r_f/∂v
@@ -116,8 +125,9 @@ struct LinearModel {
 
 /// Linearizes `model` about `point` (q nq, v nv; quaternions unit to 1e-6) with respect to the
 /// inputs and outputs of `options`.
-/// Throws InvalidArgument for a model with constraints (not available yet), when no joint is
-/// free (all fixed or prescribed), on a state of the wrong
+/// Throws InvalidArgument when no joint is free (all fixed or prescribed), when the constraints
+/// leave no state or conflict at the point, on a prescribed-motion input of a constrained model,
+/// on a state of the wrong
 /// size, an unknown input or output name (with a "did you mean"), a repeated name, an input that
 /// drives nothing, or an output that feels a prescribed input's rate or acceleration directly (an
 /// improper transfer function, named); NumericalError when the mass matrix of the free coordinates

@@ -88,10 +88,11 @@ class ConstraintSolver {
   void add_forces(const dynamics::Data& data, std::span<Vec6> f_ext, VecX& tau) const;
 
   /// Projects (q, v) onto the constraints (see the header comment); prescribed coordinates are
-  /// not moved. Returns true when the state changed. Throws NumericalError when Newton's method
-  /// does not bring |φ| below 1e-6 (the step left the constraints too far behind). No
-  /// allocation.
-  bool project(dynamics::Data& data, VecX& q, VecX& v);
+  /// not moved. Returns true when the state changed. Throws NumericalError naming the time t
+  /// and the row with the largest residual when Newton's method does not bring |φ| below 1e-6
+  /// (the step left the constraints too far behind: a limit of the motion, or too large a
+  /// step). No allocation.
+  bool project(double t, dynamics::Data& data, VecX& q, VecX& v);
 
   /// The residuals of (q, v). Overwrites data's poses and velocities. No allocation.
   ConstraintResiduals residuals(dynamics::Data& data, VecRef q, VecRef v);
@@ -112,12 +113,14 @@ class ConstraintSolver {
   // (G_f M⁻¹ G_fᵀ) over the rows in `mask` (others zeroed), factorized in row order.
   void factor_rows(std::span<const char> mask);
   void find_redundant_rows(dynamics::Data& data, VecRef q);
+  // dv_ = M⁻¹ G_fᵀ λ (the free coordinates' accelerations of row forces λ).
+  void apply_row_forces(const VecX& lambda);
 
   const model::Model& model_;
   dynamics::ConstraintRows rows_;
   std::vector<int> free_;  // velocity indices not prescribed
   std::vector<char> all_rows_, position_rows_;
-  MatX M_ff_, G_f_, Y_, A_;
+  MatX M_ff_, G_f_, W_, A_;  // W = L⁻¹ G_fᵀ with M_ff = L Lᵀ; A = Wᵀ W
   Eigen::LLT<MatX> llt_;
   VecX lambda_, rhs_, dv_, delta_, q_saved_;
   std::unique_ptr<detail::OrderedCholesky> cholesky_;
