@@ -96,7 +96,10 @@ LinearModel linearize_constrained(const model::Model& model, const OperatingPoin
   system::MultibodySystem& system = residual.system();
   const double t = point.t;
 
-  const std::vector<Input> inputs = resolve_inputs(model, options.inputs);
+  // By default the load signals only: a prescribed motion stays at its signal's value.
+  std::vector<Input> inputs = resolve_inputs(model, options.inputs);
+  if (options.inputs.empty())
+    std::erase_if(inputs, [](const Input& input) { return input.prescribed; });
   for (const Input& input : inputs) {
     if (input.prescribed) {
       throw InvalidArgument(fmt::format(

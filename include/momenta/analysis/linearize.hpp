@@ -41,6 +41,28 @@
 // joint), E₁ = E₂ = 0 and the states are unchanged. An output that would feel δṗ or δp̈
 // directly (C E₂ + D₁ ≠ 0 or D₂ ≠ 0: a velocity carried by the prescribed joint) makes the
 // transfer function improper and is refused.
+//
+// Models with constraints (model/constraint.hpp): the states are independent coordinates, by
+// coordinate partitioning (Wehage & Haug 1982). At the operating point (made consistent first,
+// as a simulation's initial state is) the independent rows of the constraint Jacobian G split
+// the free coordinates: the configuration states ξ are the coordinates left after choosing, for
+// the holonomic rows, dependent ones whose columns of G are well conditioned (taken from the last
+// joint back, so the first joints' coordinates — a crank's angle — stay states; those named in
+// LinearizationOptions::independent are kept whenever possible); the velocity states ζ are the
+// configuration states left after choosing dependent velocities for the nonholonomic rows too
+// (a rolling disk's x and y are configuration states, their rates are not). The motion in these
+// states is exact: q(ξ) = q₀ ⊕ δ with δ_ξ = ξ and δ_dependent solved by Newton on φ = 0, v(q, ζ)
+// with v_ζ = ζ and v_dependent from G v = 0, and
+//
+//     ξ̇ = [δ̇(δ, v)]_ξ,     ζ̇ = [v̇(q, v)]_ζ (the constrained forward dynamics),
+//
+// differentiated as above (Richardson on ξ; ζ̇ is quadratic and ξ̇ linear in ζ, so their ζ
+// differences are exact). For holonomic constraints the second-order form is the reduced one:
+// mass = Tᵀ M_ff T with T = ∂v_f/∂ζ, stiffness = −mass ∂ζ̇/∂ξ, damping = −mass ∂ζ̇/∂ζ (at an
+// equilibrium the stiffness is the Hessian of the potential in ξ, symmetric). With nonholonomic
+// rows there are more configuration than velocity states and no such form: mass, damping and
+// stiffness are empty. Prescribed-motion inputs on a constrained model are refused when named
+// (they move the constraint manifold) and left out of the default inputs.
 
 #include <string>
 #include <vector>

@@ -207,6 +207,15 @@ TEST(ConstrainedLinearization, PrescribedInputsAreRefused) {
   EXPECT_THROW(
       analysis::linearize(file.model, analysis::initial_operating_point(file.model), options),
       InvalidArgument);
+  // By default they are left out: Beer 18.3's rod on its driven shaft is refused for what it is,
+  // a mechanism its wire leaves no freedom, not for its drive's signal.
+  const io::ModelFile rod = io::read_model_file("examples/constraints/rod_on_rotating_shaft.yaml");
+  try {
+    analysis::linearize(rod.model, analysis::initial_operating_point(rod.model));
+    FAIL() << "a mechanism without freedom linearized";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("no freedom"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace
