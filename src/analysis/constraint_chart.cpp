@@ -109,7 +109,13 @@ int coordinate_named(const model::Model& model, const std::vector<int>& free,
 ConstraintChart::ConstraintChart(const model::Model& model, const std::vector<int>& free,
                                  const VecX& q0, const VecX& v0,
                                  const std::vector<std::string>& preferred)
-    : model_(model), data_(model), rows_(model), q0_(q0), v0_(v0), free_(free) {
+    : model_(model),
+      data_(model),
+      rows_(model),
+      q0_(q0),
+      v0_(v0),
+      length_(characteristic_length(model)),
+      free_(free) {
   for (int i = 0; i < model.nv(); ++i)
     if (std::find(free.begin(), free.end(), i) == free.end()) prescribed_.push_back(i);
   evaluate_rows(q0);
@@ -158,7 +164,6 @@ void ConstraintChart::configuration(const VecX& xi, VecX& q, VecX& delta) {
   delta = VecX::Zero(model_.nv());
   for (std::size_t k = 0; k < position_independent_.size(); ++k)
     delta[position_independent_[k]] = xi[static_cast<Eigen::Index>(k)];
-  const double length = characteristic_length(model_);
   const auto residual = [&] {
     double largest = 0.0;
     for (int r : holonomic_rows_) largest = std::max(largest, std::abs(rows_.position[r]));
@@ -173,7 +178,7 @@ void ConstraintChart::configuration(const VecX& xi, VecX& q, VecX& delta) {
     if (!(norm < best)) break;  // no progress (or NaN): keep the best
     best = norm;
     best_delta = delta;
-    if (norm <= kConverged * std::max(1.0, length)) break;
+    if (norm <= kConverged * std::max(1.0, length_)) break;
     for (std::size_t r = 0; r < holonomic_rows_.size(); ++r)
       phi[static_cast<Eigen::Index>(r)] = rows_.position[holonomic_rows_[r]];
     const VecX step =
@@ -183,7 +188,7 @@ void ConstraintChart::configuration(const VecX& xi, VecX& q, VecX& delta) {
   }
   delta = best_delta;
   model::integrate(model_, q0_, delta, 1.0, q);
-  if (!holonomic_rows_.empty() && !(best <= kFailed * std::max(1.0, length))) {
+  if (!holonomic_rows_.empty() && !(best <= kFailed * std::max(1.0, length_))) {
     throw NumericalError(fmt::format(
         "linearize: the constraints cannot be closed {} from the operating point (residual "
         "{:.3g}): the step reaches past where the dependent coordinates follow; try a smaller "
@@ -204,6 +209,24 @@ void ConstraintChart::velocity(const VecX& q, const VecX& zeta, VecX& v) {
       block_of(rows_.G, velocity_rows_, velocity_dependent_).partialPivLu().solve(rhs);
   for (std::size_t k = 0; k < velocity_dependent_.size(); ++k)
     v[velocity_dependent_[k]] = dependent[static_cast<Eigen::Index>(k)];
+}
+
+MatX ConstraintChart::velocity_map(const VecX& q) {
+  const auto nz = static_cast<Eigen::Index>(velocity_independent_.size());
+  const auto nf = static_cast<Eigen::Index>(free_.size());
+  MatX T(nf, nz);
+  VecX v_zero, v_unit, unit;
+  velocity(q, VecX::Zero(nz), v_zero);
+  for (Eigen::Index k = 0; k < nz; ++k) {
+    unit = VecX::Zero(nz);
+    unit[k] = 1.0;
+    velocity(q, unit, v_unit);
+    for (Eigen::Index a = 0; a < nf; ++a) {
+      const int i = free_[static_cast<std::size_t>(a)];
+      T(a, k) = v_unit[i] - v_zero[i];
+    }
+  }
+  return T;
 }
 
 }  // namespace momenta::analysis::detail

@@ -40,6 +40,10 @@ class ConstraintChart {
   /// velocities from the independent rows of G(q) v = 0.
   void velocity(const VecX& q, const VecX& zeta, VecX& v);
 
+  /// T = ∂v_f/∂ζ at q (free coordinates × velocity states): the velocities of unit ζ at rest,
+  /// so that G T = 0 and v_f = T ζ plus the prescribed coordinates' share.
+  MatX velocity_map(const VecX& q);
+
  private:
   void evaluate_rows(const VecX& q);
 
@@ -47,6 +51,7 @@ class ConstraintChart {
   dynamics::Data data_;
   dynamics::ConstraintRows rows_;
   VecX q0_, v0_;
+  double length_;  // characteristic length, m: scales the Newton tolerances
   std::vector<int> free_, prescribed_;
   std::vector<int> holonomic_rows_, velocity_rows_;  // independent rows of each kind
   std::vector<int> position_independent_, position_dependent_;

@@ -107,7 +107,7 @@ class StaticProblem {
       residual_.residual(t_, q, v_, a_zero_, r);
       return;
     }
-    const MatX T = tangent_map(q);
+    const MatX T = chart_->velocity_map(q);
     const VecX& vdot = residual_.system().evaluate(t_, q, v_);
     VecX a_f(residual_.nf());
     for (int k = 0; k < residual_.nf(); ++k)
@@ -118,29 +118,11 @@ class StaticProblem {
   MatX mass(const VecX& q) {
     const MatX M = residual_.free_mass(t_, q);
     if (!chart_) return M;
-    const MatX T = tangent_map(q);
+    const MatX T = chart_->velocity_map(q);
     return T.transpose() * M * T;
   }
 
  private:
-  // T = ∂v_f/∂ζ at q (the chart's velocity map at rest).
-  MatX tangent_map(const VecX& q) {
-    const int n = static_cast<int>(chart_->velocities().size()), nf = residual_.nf();
-    MatX T(nf, n);
-    VecX unit, v_zero, v_unit;
-    chart_->velocity(q, VecX::Zero(n), v_zero);
-    for (int k = 0; k < n; ++k) {
-      unit = VecX::Zero(n);
-      unit[k] = 1.0;
-      chart_->velocity(q, unit, v_unit);
-      for (int a = 0; a < nf; ++a) {
-        const int i = residual_.free()[static_cast<std::size_t>(a)];
-        T(a, k) = v_unit[i] - v_zero[i];
-      }
-    }
-    return T;
-  }
-
   const model::Model& model_;
   ModelResidual& residual_;
   double t_;

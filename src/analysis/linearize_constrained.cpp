@@ -60,23 +60,9 @@ class ChartedMotion {
 // T = ∂v_f/∂ζ, stiffness = −mass ∂ζ̇/∂ξ, damping = −mass ∂ζ̇/∂ζ.
 void reduced_second_order_form(LinearModel& result, ModelResidual& residual, ConstraintChart& chart,
                                const MatX& A) {
-  const std::vector<int>& free = residual.free();
   const auto nz = static_cast<Eigen::Index>(chart.velocities().size());
-  const auto nf = static_cast<Eigen::Index>(free.size());
   const OperatingPoint& p = result.point;
-  VecX zeta = VecX::Zero(nz), v_zero, v_unit;
-  for (Eigen::Index k = 0; k < nz; ++k)
-    zeta[k] = p.v[chart.velocities()[static_cast<std::size_t>(k)]];
-  MatX T(nf, nz);
-  chart.velocity(p.q, VecX::Zero(nz), v_zero);
-  for (Eigen::Index k = 0; k < nz; ++k) {
-    VecX unit = VecX::Zero(nz);
-    unit[k] = 1.0;
-    chart.velocity(p.q, unit, v_unit);
-    for (Eigen::Index a = 0; a < nf; ++a)
-      T(a, k) =
-          v_unit[free[static_cast<std::size_t>(a)]] - v_zero[free[static_cast<std::size_t>(a)]];
-  }
+  const MatX T = chart.velocity_map(p.q);
   const MatX M = residual.free_mass(p.t, p.q);
   result.mass = T.transpose() * M * T;
   if (Eigen::LLT<MatX>(result.mass).info() != Eigen::Success) {

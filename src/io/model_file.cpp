@@ -6,6 +6,7 @@
 #include <utility>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "model_file_internal.hpp"
 #include "momenta/common/error.hpp"
@@ -64,6 +65,24 @@ YamlNode name_node(const YamlNode& entry) {
   const YamlNode name = entry.at("name");
   if (!name.is_scalar()) name.fail("expected a name");
   return name;
+}
+
+const EntryType& entry_type(const YamlNode& entry, const std::vector<EntryType>& types,
+                            std::string_view what) {
+  const YamlNode type_node = entry.at("type");
+  const std::string type = type_node.as_string();
+  const auto it =
+      std::find_if(types.begin(), types.end(), [&](const EntryType& t) { return t.name == type; });
+  if (it == types.end()) {
+    std::vector<std::string_view> names;
+    for (const EntryType& t : types) names.push_back(t.name);
+    type_node.fail(fmt::format("unknown {} type '{}'{}; known: {}", what, type,
+                               did_you_mean(type, names), fmt::join(names, ", ")));
+  }
+  std::vector<std::string_view> keys = {"name", "type"};
+  keys.insert(keys.end(), it->keys.begin(), it->keys.end());
+  entry.check_keys(keys);
+  return *it;
 }
 
 std::optional<VecX> find_coordinates(const YamlNode& map, std::string_view key,

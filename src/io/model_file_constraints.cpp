@@ -18,15 +18,10 @@
 namespace momenta::io::detail {
 namespace {
 
-struct ConstraintType {
-  std::string_view name;
-  std::vector<std::string_view> keys;
-};
-
-const std::vector<ConstraintType>& constraint_types() {
+const std::vector<EntryType>& constraint_types() {
   static const std::vector<std::string_view> loop = {"body_a",  "body_b",  "frame_a", "frame_b",
                                                      "point_a", "point_b", "axis_a",  "axis_b"};
-  static const std::vector<ConstraintType> types = {
+  static const std::vector<EntryType> types = {
       {"weld", loop},
       {"point", loop},
       {"hinge", loop},
@@ -158,20 +153,7 @@ void read_constraints(const YamlNode& root, Context& ctx, model::ModelBuilder& b
   for (const YamlNode& e : list_section(root, "constraints")) {
     e.expect_map("a constraint: a map with 'name' and 'type'");
     const YamlNode name = name_node(e);
-    const YamlNode type_node = e.at("type");
-    const std::string type = type_node.as_string();
-    const auto& types = constraint_types();
-    const auto it = std::find_if(types.begin(), types.end(),
-                                 [&](const ConstraintType& t) { return t.name == type; });
-    if (it == types.end()) {
-      std::vector<std::string_view> names;
-      for (const ConstraintType& t : types) names.push_back(t.name);
-      type_node.fail(fmt::format("unknown constraint type '{}'{}; known: {}", type,
-                                 did_you_mean(type, names), fmt::join(names, ", ")));
-    }
-    std::vector<std::string_view> keys = {"name", "type"};
-    keys.insert(keys.end(), it->keys.begin(), it->keys.end());
-    e.check_keys(keys);
+    const std::string_view type = entry_type(e, constraint_types(), "constraint").name;
     if (ctx.forces.contains(name.as_string())) {
       name.fail(fmt::format("a force element is already named '{}' (their CSV columns would clash)",
                             name.as_string()));

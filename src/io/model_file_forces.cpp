@@ -14,13 +14,8 @@ namespace momenta::io::detail {
 namespace {
 
 // Each force element type and the keys it takes (besides `name` and `type`).
-struct ForceType {
-  std::string_view name;
-  std::vector<std::string_view> keys;
-};
-
-const std::vector<ForceType>& force_types() {
-  static const std::vector<ForceType> types = {
+const std::vector<EntryType>& force_types() {
+  static const std::vector<EntryType> types = {
       {"spring_damper",
        {"body_a", "point_a", "body_b", "point_b", "stiffness", "damping", "free_length"}},
       {"torsional_spring",
@@ -150,20 +145,7 @@ void read_forces(const YamlNode& root, Context& ctx, model::ModelBuilder& builde
   for (const YamlNode& e : list_section(root, "forces")) {
     e.expect_map("a force element: a map with 'name' and 'type'");
     const YamlNode name = name_node(e);
-    const YamlNode type_node = e.at("type");
-    const std::string type = type_node.as_string();
-    const auto& types = force_types();
-    const auto it = std::find_if(types.begin(), types.end(),
-                                 [&](const ForceType& f) { return f.name == type; });
-    if (it == types.end()) {
-      std::vector<std::string_view> names;
-      for (const ForceType& f : types) names.push_back(f.name);
-      type_node.fail(fmt::format("unknown force element type '{}'{}; known: {}", type,
-                                 did_you_mean(type, names), fmt::join(names, ", ")));
-    }
-    std::vector<std::string_view> keys = {"name", "type"};
-    keys.insert(keys.end(), it->keys.begin(), it->keys.end());
-    e.check_keys(keys);
+    const std::string_view type = entry_type(e, force_types(), "force element").name;
     ctx.forces.add(name.as_string(), e, name);
     builder.add_force_element(read_element(e, type, name.as_string(), ctx));
   }

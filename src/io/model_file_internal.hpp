@@ -75,6 +75,18 @@ std::vector<YamlNode> list_section(const YamlNode& root, std::string_view key);
 /// An entry's `name:` node (required, a non-empty scalar).
 YamlNode name_node(const YamlNode& entry);
 
+/// One `type:` of a typed list entry (a signal, a force element, a constraint) and the keys it
+/// takes besides 'name' and 'type'.
+struct EntryType {
+  std::string_view name;
+  std::vector<std::string_view> keys;
+};
+
+/// The type `entry` names by its `type:`, after checking the entry's keys against it. Throws at
+/// `type:` for an unknown one: "unknown <what> type '…'" with a did-you-mean and the known types.
+const EntryType& entry_type(const YamlNode& entry, const std::vector<EntryType>& types,
+                            std::string_view what);
+
 /// `inputs:` — every signal, added to the builder and to ctx.signals.
 void read_signals(const YamlNode& root, Context& ctx, model::ModelBuilder& builder);
 /// `bodies:` and `joints:` — added to the builder and ctx; the joints are checked to form a tree

@@ -20,13 +20,8 @@ namespace {
 using model::Signal;
 
 // Each signal type and the keys it takes (besides `name` and `type`).
-struct SignalType {
-  std::string_view name;
-  std::vector<std::string_view> keys;
-};
-
-const std::vector<SignalType>& signal_types() {
-  static const std::vector<SignalType> types = {
+const std::vector<EntryType>& signal_types() {
+  static const std::vector<EntryType> types = {
       {"constant", {"value"}},
       {"step", {"start", "initial", "final", "rise_time"}},
       {"ramp", {"start", "slope", "offset", "stop"}},
@@ -180,20 +175,7 @@ void read_signals(const YamlNode& root, Context& ctx, model::ModelBuilder& build
   for (const YamlNode& e : list_section(root, "inputs")) {
     e.expect_map("a signal: a map with 'name' and 'type'");
     const YamlNode name = name_node(e);
-    const YamlNode type_node = e.at("type");
-    const std::string type = type_node.as_string();
-    const auto& types = signal_types();
-    const auto it = std::find_if(types.begin(), types.end(),
-                                 [&](const SignalType& s) { return s.name == type; });
-    if (it == types.end()) {
-      std::vector<std::string_view> names;
-      for (const SignalType& s : types) names.push_back(s.name);
-      type_node.fail(fmt::format("unknown signal type '{}'{}; known: {}", type,
-                                 did_you_mean(type, names), fmt::join(names, ", ")));
-    }
-    std::vector<std::string_view> keys = {"name", "type"};
-    keys.insert(keys.end(), it->keys.begin(), it->keys.end());
-    e.check_keys(keys);
+    const std::string_view type = entry_type(e, signal_types(), "signal").name;
     ctx.signals.add(name.as_string(), e, name);
     Signal::Shape shape = read_shape(e, type, ctx);
     try {
