@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include "momenta_test/scratch_dir.hpp"
+
 #ifndef MOMENTA_CLI_PATH
 #error "MOMENTA_CLI_PATH must name the built momenta binary"
 #endif
@@ -46,13 +48,7 @@ inline std::string quoted(const std::string& s) {
 /// and `momenta(args)`, which runs the binary there.
 class CliTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = std::filesystem::temp_directory_path() /
-           (std::string("momenta_cli_") + info->test_suite_name() + "_" + info->name());
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = test::make_scratch_dir("cli"); }
   void TearDown() override { std::filesystem::remove_all(dir_); }
 
   /// Runs `momenta <args>` (`args` as the shell reads them) with stdout and stderr captured apart.

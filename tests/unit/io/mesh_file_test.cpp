@@ -1,6 +1,5 @@
 #include "momenta/io/mesh_file.hpp"
 
-#include <unistd.h>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -16,6 +15,7 @@
 #include "momenta/inertia/primitives.hpp"
 #include "momenta/math/rotation.hpp"
 #include "momenta_test/meshes.hpp"
+#include "momenta_test/scratch_dir.hpp"
 #include "momenta_test/tolerance.hpp"
 
 namespace momenta::io {
@@ -29,13 +29,7 @@ using inertia::TriangleMesh;
 // A fresh directory per test for the files it writes, removed afterwards.
 class MeshFile : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           fmt::format("momenta_mesh_file_{}_{}", ::getpid(),
-                       ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = test::make_scratch_dir("mesh_file"); }
   void TearDown() override { fs::remove_all(dir_); }
   fs::path file(const std::string& name) const { return dir_ / name; }
   fs::path dir_;

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "momenta/common/error.hpp"
+#include "momenta_test/scratch_dir.hpp"
 
 namespace momenta::simulate {
 namespace {
@@ -28,12 +29,7 @@ std::string slurp(const fs::path& path) {
 
 class CsvWriterTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / (std::string("momenta_csv_") + info->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = test::make_scratch_dir("csv"); }
   void TearDown() override { fs::remove_all(dir_); }
   fs::path dir_;
 };

@@ -9,6 +9,7 @@
 
 #include "momenta/common/error.hpp"
 #include "momenta/sweep/results_file.hpp"
+#include "momenta_test/scratch_dir.hpp"
 
 namespace momenta::sweep {
 namespace {
@@ -20,16 +21,7 @@ std::string read(const std::filesystem::path& p) {
   return {std::istreambuf_iterator<char>(in), {}};
 }
 
-class ResultsFile : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() / "momenta_results_file_test";
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::filesystem::path dir_;
-};
+using ResultsFile = test::ScratchDirTest;
 
 RunOutcome outcome(long run, double k, double y, bool ok = true, std::string message = "") {
   RunOutcome o;

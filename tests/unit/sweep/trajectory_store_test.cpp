@@ -8,6 +8,7 @@
 
 #include "momenta/common/error.hpp"
 #include "momenta/sweep/trajectory_store.hpp"
+#include "momenta_test/scratch_dir.hpp"
 
 #ifdef MOMENTA_TEST_HDF5
 #include <hdf5.h>
@@ -27,16 +28,7 @@ RunOutcome table_of(long run) {
   return o;
 }
 
-class TrajectoryStoreTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() / "momenta_trajectory_store_test";
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-  std::filesystem::path dir_;
-};
+using TrajectoryStoreTest = test::ScratchDirTest;
 
 TEST_F(TrajectoryStoreTest, AFolderGetsACsvFilePerRunWithEveryDigit) {
   {
