@@ -44,6 +44,9 @@ struct QuietExit {
   int code = 1;
 };
 
+/// `momenta kinematics MODEL --point BODY:x,y,z --frame BODY`: rotating-frame kinematics.
+void add_kinematics_command(CLI::App& app);
+
 /// `momenta response MODEL`: step, impulse or Bode response of one input–output pair.
 void add_response_command(CLI::App& app);
 

@@ -9,6 +9,7 @@
 #include <variant>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
@@ -300,12 +301,17 @@ void print_text(const json& j, const io::ModelFile& file) {
     fmt::print("\n");
     for (int i = 0; i < joint.nq(); ++i) {
       fmt::print("    {}.q{}  {}", joint.name, i, m.q_name(joint.q_index + i));
-      if (joint.is_prescribed())
+      if (joint.is_prescribed() && joint.nq() == joint.nv())
         fmt::print("  prescribed by signal {}", joint.prescribed_signals[i]);
       fmt::print("\n");
     }
     for (int i = 0; i < joint.nv(); ++i)
       fmt::print("    {}.v{}  {}\n", joint.name, i, m.v_name(joint.v_index + i));
+    if (joint.is_prescribed() && joint.nq() != joint.nv()) {
+      fmt::print("    prescribed by signals {} ({})\n", fmt::join(joint.prescribed_signals, ", "),
+                 joint.type == model::JointType::free ? "rotation vector, then position"
+                                                      : "rotation vector");
+    }
   }
 
   fmt::print("\nforce elements ({})\n", m.force_elements().size());

@@ -10,60 +10,11 @@
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
 #include "output_format.hpp"
+#include "state_file.hpp"
 
 namespace momenta::cli {
 namespace {
-
 using json = nlohmann::ordered_json;
-
-// A STATE.json: {"q": [...], "v": [...], "t": 0}.
-analysis::OperatingPoint read_state_file(const std::string& path, const model::Model& model) {
-  std::ifstream in(path);
-  if (!in) throw FileError(fmt::format("{}: cannot open the state file", path));
-  json j;
-  try {
-    j = json::parse(in);
-  } catch (const json::exception& e) {
-    // Malformed text, or a number beyond double precision ("t": 1e400).
-    throw InvalidArgument(fmt::format("{}: not a valid state file: {}", path, e.what()));
-  }
-  if (!j.is_object()) {
-    throw InvalidArgument(
-        fmt::format("{}: expected an object {{\"q\": [...], \"v\": [...]}}", path));
-  }
-  for (const auto& [key, value] : j.items()) {
-    if (key != "q" && key != "v" && key != "t") {
-      throw InvalidArgument(
-          fmt::format("{}: unknown key '{}' (expected q, v and optionally t)", path, key));
-    }
-  }
-  const auto vector = [&](const char* key, int size) {
-    if (!j.contains(key)) {
-      throw InvalidArgument(fmt::format("{}: missing '{}' ({} numbers)", path, key, size));
-    }
-    const json& a = j.at(key);
-    if (!a.is_array() || static_cast<int>(a.size()) != size ||
-        !std::all_of(a.begin(), a.end(), [](const json& x) { return x.is_number(); })) {
-      throw InvalidArgument(
-          fmt::format("{}: '{}' must be a list of {} numbers (the model's {}); "
-                      "got {}",
-                      path, key, size, key[0] == 'q' ? "nq" : "nv", a.dump()));
-    }
-    VecX x(size);
-    for (int i = 0; i < size; ++i) x[i] = a.at(static_cast<std::size_t>(i)).get<double>();
-    return x;
-  };
-  analysis::OperatingPoint p;
-  p.q = vector("q", model.nq());
-  p.v = vector("v", model.nv());
-  if (j.contains("t")) {
-    if (!j.at("t").is_number())
-      throw InvalidArgument(fmt::format("{}: 't' must be a number", path));
-    p.t = j.at("t").get<double>();
-  }
-  return p;
-}
-
 }  // namespace
 
 void add_linear_model_options(CLI::App* command, LinearModelOptions& o, bool with_channels) {

@@ -54,6 +54,7 @@ int main(int argc, char** argv) {
   momenta::cli::add_response_command(app);
   momenta::cli::add_campbell_command(app);
   momenta::cli::add_steady_command(app);
+  momenta::cli::add_kinematics_command(app);
   momenta::cli::add_sweep_command(app);
   momenta::cli::add_sweep_merge_command(app);
 

@@ -36,6 +36,16 @@ CLI::Validator positive_finite() {
       "POSITIVE");
 }
 
+CLI::Validator non_negative_finite() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const auto value = parse_double(text);
+        if (value && std::isfinite(*value) && *value >= 0) return {};
+        return fmt::format("must be a finite number, zero or more, got {}", text);
+      },
+      "NONNEGATIVE");
+}
+
 CLI::Validator finite() {
   return CLI::Validator(
       [](std::string& text) -> std::string {

@@ -15,6 +15,9 @@ inline constexpr double kRpm = 2.0 * std::numbers::pi / 60.0;
 /// A finite number > 0 (a duration, a step, a tolerance, a density).
 CLI::Validator positive_finite();
 
+/// A finite number ≥ 0 (an instant).
+CLI::Validator non_negative_finite();
+
 /// Any finite number (a coordinate of a point).
 CLI::Validator finite();
 

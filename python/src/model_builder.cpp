@@ -218,7 +218,8 @@ prismatic, cylindrical, universal, spherical, planar, free (or the aliases weld,
 ball, floating). axis (in J, default z) and axis2 (universal, in J'); in_parent / in_child: the
 poses of J in the parent and J' in the child, {'position': [x, y, z], 'rotation': R}; q0, v0:
 initial coordinates (default neutral, zero); damping: viscous c on every coordinate;
-prescribed: one signal name per coordinate.)doc")
+prescribed: one signal name per velocity coordinate (a ball joint: its rotation vector; a
+free joint: rotation vector, then position; model/prescribed_motion.hpp).)doc")
       .def(
           "add_spring_damper",
           [](Builder& b, std::string name, const std::string& body_a, const py::object& point_a,

@@ -72,9 +72,10 @@ struct Differentiated {
       for (int k = 0; k < static_cast<int>(joint.prescribed_signal_indices.size()); ++k) {
         if (joint.prescribed_signal_indices[static_cast<std::size_t>(k)] != signal) continue;
         const int i = joint.v_index + k;
-        h = std::min(h, detail::is_angle_coordinate(model, i)
-                            ? steps.angle_step
-                            : steps.of_length(q0[joint.q_index + k]));
+        // A free joint's position signals (k ≥ 3) move q_index + k − 3; the others q_index + k.
+        const int position = joint.q_index + (joint.type == model::JointType::free ? k - 3 : k);
+        h = std::min(h, detail::is_angle_coordinate(model, i) ? steps.angle_step
+                                                              : steps.of_length(q0[position]));
       }
     }
     return h;

@@ -40,6 +40,13 @@ std::vector<SignalUse> signal_uses(const model::Model& model) {
   return use;
 }
 
+// The name that stands for a prescribed joint's k-th signal as an input: its coordinate, or for a
+// ball or free joint (whose signals are a rotation vector, and a position) its velocity
+// coordinate.
+std::string prescribed_input_name(const model::Model& model, const model::Joint& j, int k) {
+  return j.nq() == j.nv() ? model.q_name(j.q_index + k) : model.v_name(j.v_index + k);
+}
+
 }  // namespace
 
 std::vector<Input> resolve_inputs(const model::Model& model,
@@ -64,7 +71,7 @@ std::vector<Input> resolve_inputs(const model::Model& model,
     if (!signal) {
       for (const model::Joint& j : model.joints()) {
         for (int k = 0; k < static_cast<int>(j.prescribed_signal_indices.size()); ++k) {
-          if (model.q_name(j.q_index + k) == name) signal = j.prescribed_signal_indices[k];
+          if (prescribed_input_name(model, j, k) == name) signal = j.prescribed_signal_indices[k];
         }
       }
     }
@@ -73,7 +80,7 @@ std::vector<Input> resolve_inputs(const model::Model& model,
       for (const model::Signal& s : model.signals()) candidates.push_back(s.name());
       for (const model::Joint& j : model.joints()) {
         for (int k = 0; k < static_cast<int>(j.prescribed_signal_indices.size()); ++k)
-          candidates.push_back(model.q_name(j.q_index + k));
+          candidates.push_back(prescribed_input_name(model, j, k));
       }
       const std::vector<std::string_view> views(candidates.begin(), candidates.end());
       throw InvalidArgument(fmt::format(
@@ -143,14 +150,16 @@ std::vector<OutputRow> resolve_outputs(const model::Model& model,
     for (int i = 0; i < model.nq() && !spec; ++i) {
       if (model.q_name(i) != name) continue;
       const model::Joint& j = model.joint(model.joint_of_q(i));
-      spec = model::OutputSpec{name, model::OutputQuantity::joint_position, j.name, Vec3::Zero(),
-                               i - j.q_index};
+      spec = model::OutputSpec{
+          name,          model::OutputQuantity::joint_position, j.name, Vec3::Zero(),
+          i - j.q_index, model::ReactionFrame::world,           ""};
     }
     for (int i = 0; i < model.nv() && !spec; ++i) {
       if (model.v_name(i) != name) continue;
       const model::Joint& j = model.joint(model.joint_of_v(i));
-      spec = model::OutputSpec{name, model::OutputQuantity::joint_velocity, j.name, Vec3::Zero(),
-                               i - j.v_index};
+      spec = model::OutputSpec{
+          name,          model::OutputQuantity::joint_velocity, j.name, Vec3::Zero(),
+          i - j.v_index, model::ReactionFrame::world,           ""};
     }
     if (spec) {
       specs.push_back(*spec);

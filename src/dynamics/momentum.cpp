@@ -1,5 +1,8 @@
 #include "momenta/dynamics/momentum.hpp"
 
+#include <fmt/format.h>
+
+#include "momenta/common/error.hpp"
 #include "momenta/dynamics/kinematics.hpp"
 
 namespace momenta::dynamics {
@@ -21,6 +24,26 @@ Momentum momentum(const Model& model, const Data& data) {
   m.v_WScm_W = m.mass > 0 ? Vec3(m.linear / m.mass) : Vec3::Zero();
   // H_Scm = H_Wo − p_Scm × L.
   m.angular_about_com = h.head<3>() - m.p_WoScm_W.cross(m.linear);
+  return m;
+}
+
+BodyMomentum body_momentum(const Model& model, const Data& data, int b) {
+  if (b < 1 || b >= model.num_bodies()) {
+    throw InvalidArgument(
+        fmt::format("body_momentum: body index {} outside [1, {})", b, model.num_bodies()));
+  }
+  const inertia::MassProperties& mp = model.body(b).mass_properties;
+  const Mat3& R = data.X_WB[b].R;
+  const Vec3 w_WB_B = data.V_WB_B[b].head<3>();
+  BodyMomentum m;
+  m.mass = mp.mass();
+  m.p_WoBcm_W = data.X_WB[b].apply(mp.center_of_mass());
+  m.v_WBcm_W = R * (data.V_WB_B[b].tail<3>() + w_WB_B.cross(mp.center_of_mass()));
+  m.linear = m.mass * m.v_WBcm_W;
+  const Vec3 H_B = mp.inertia_about_com() * w_WB_B;
+  m.angular_about_com = R * H_B;
+  m.kinetic_translation = 0.5 * m.mass * m.v_WBcm_W.squaredNorm();
+  m.kinetic_rotation = 0.5 * w_WB_B.dot(H_B);
   return m;
 }
 

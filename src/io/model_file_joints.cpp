@@ -130,16 +130,12 @@ void read_initial_state(const YamlNode& e, model::Joint& j) {
   }
 }
 
-// `prescribed: signal` or `prescribed: [s1, s2]`: one signal per coordinate.
+// `prescribed: signal` or `prescribed: [s1, s2]`: one signal per velocity coordinate (a ball
+// joint's rotation vector; a free joint's rotation vector then position).
 void read_prescribed(const YamlNode& e, model::Joint& j, const Context& ctx) {
   const YamlNode node = e.at("prescribed");
   const std::string type(model::joint_type_name(j.type));
-  if (j.nq() != j.nv() || j.nv() == 0) {
-    node.fail(
-        fmt::format("a {} joint cannot be prescribed (only revolute, prismatic, "
-                    "cylindrical, universal and planar joints can)",
-                    type));
-  }
+  if (j.nv() == 0) node.fail("a fixed joint has no motion to prescribe");
   for (const std::string_view key : {"q0", "q0_deg", "v0", "v0_deg"}) {
     if (e.has(key)) {
       e.at(key).fail("a prescribed joint takes its initial state from its signals: remove it");
@@ -147,8 +143,13 @@ void read_prescribed(const YamlNode& e, model::Joint& j, const Context& ctx) {
   }
   const std::vector<YamlNode> refs = node.is_sequence() ? node.elements() : std::vector{node};
   if (static_cast<int>(refs.size()) != j.nv()) {
-    node.fail(fmt::format("{} signals given; a {} joint needs one per coordinate, {}", refs.size(),
-                          type, j.nv()));
+    const char* hint = j.type == model::JointType::spherical
+                           ? " (its rotation vector φx, φy, φz)"
+                       : j.type == model::JointType::free
+                           ? " (its rotation vector φx, φy, φz, then its position x, y, z)"
+                           : "";
+    node.fail(fmt::format("{} signals given; a {} joint needs {}{}", refs.size(), type, j.nv(),
+                          hint));
   }
   for (const YamlNode& ref : refs) j.prescribed_signals.push_back(ctx.signals.resolve(ref));
 }

@@ -33,7 +33,12 @@ const std::array<Target, 5>& targets() {
        {{"position", Q::body_position},
         {"velocity", Q::body_velocity},
         {"acceleration", Q::body_acceleration},
-        {"angular_velocity", Q::body_angular_velocity}}},
+        {"angular_velocity", Q::body_angular_velocity},
+        {"transport_velocity", Q::transport_velocity},
+        {"transport_acceleration", Q::transport_acceleration},
+        {"coriolis_acceleration", Q::coriolis_acceleration},
+        {"centripetal_acceleration", Q::centripetal_acceleration},
+        {"euler_acceleration", Q::euler_acceleration}}},
       {"joint",
        {{"position", Q::joint_position},
         {"velocity", Q::joint_velocity},
@@ -47,14 +52,14 @@ const std::array<Target, 5>& targets() {
   return table;
 }
 
+bool is_body(OutputQuantity q) {
+  return model::output_target_kind(q) == model::OutputTargetKind::body;
+}
 bool is_vector(OutputQuantity q) {
-  return q == Q::body_position || q == Q::body_velocity || q == Q::body_acceleration ||
-         q == Q::body_angular_velocity || q == Q::reaction_force || q == Q::reaction_moment;
+  return is_body(q) || q == Q::reaction_force || q == Q::reaction_moment;
 }
 bool is_reaction(OutputQuantity q) { return q == Q::reaction_force || q == Q::reaction_moment; }
-bool at_point(OutputQuantity q) {
-  return q == Q::body_position || q == Q::body_velocity || q == Q::body_acceleration;
-}
+bool at_point(OutputQuantity q) { return is_body(q) && q != Q::body_angular_velocity; }
 
 OutputQuantity read_quantity(const YamlNode& e, const Target& target) {
   const auto node = e.find("quantity");
@@ -169,13 +174,26 @@ model::OutputSpec read_output(const YamlNode& e, const Context& ctx, const model
   // Where, in which frame, which component.
   if (const auto point = e.find("point")) {
     if (!at_point(spec.quantity)) {
-      point->fail("only a body's position, velocity and acceleration are taken at a point");
+      point->fail(
+          "only a body's position, velocity and acceleration (and their rotating-frame terms) are "
+          "taken at a point");
     }
     spec.point = point->as_vec3();
   }
   if (const auto frame = e.find("frame")) {
-    if (!is_reaction(spec.quantity)) frame->fail("only reactions take a 'frame'");
-    spec.frame = read_reaction_frame(*frame);
+    if (is_reaction(spec.quantity)) {
+      spec.frame = read_reaction_frame(*frame);
+    } else if (is_body(spec.quantity)) {
+      spec.relative_to = ctx.bodies.resolve(*frame, true);
+      if (spec.relative_to == model::kWorldBodyName) spec.relative_to.clear();
+    } else {
+      frame->fail("only body quantities (a body's frame) and reactions take a 'frame'");
+    }
+  } else if (model::is_rotating_frame_term(spec.quantity)) {
+    e.fail(
+        fmt::format("'{}' is a term of the motion seen from a moving frame: give the body "
+                    "whose frame that is, 'frame: <body>'",
+                    model::output_quantity_name(spec.quantity)));
   }
   if (const auto component = e.find("component")) {
     spec.component = read_component(*component, spec, model);

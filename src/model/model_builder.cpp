@@ -277,12 +277,10 @@ class ModelAssembler {
     MOMENTA_REQUIRE(j.damping >= 0 && std::isfinite(j.damping),
                     "{}: damping {} must be zero or positive", who, j.damping);
     if (j.is_prescribed()) {
-      MOMENTA_REQUIRE(j.nq() == j.nv() && j.nv() > 0,
-                      "{}: a {} joint cannot be prescribed by signals (only joints with "
-                      "nq == nv: revolute, prismatic, cylindrical, universal, planar)",
-                      who, joint_type_name(t));
+      MOMENTA_REQUIRE(j.nv() > 0, "{}: a fixed joint has no motion to prescribe", who);
       MOMENTA_REQUIRE(static_cast<int>(j.prescribed_signals.size()) == j.nv(),
-                      "{}: {} prescribed signals given; a {} joint needs one per coordinate, {}",
+                      "{}: {} prescribed signals given; a {} joint needs {} (one per velocity "
+                      "coordinate; model/prescribed_motion.hpp)",
                       who, j.prescribed_signals.size(), joint_type_name(t), j.nv());
     }
   }

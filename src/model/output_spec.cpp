@@ -14,6 +14,11 @@ OutputTargetKind output_target_kind(OutputQuantity quantity) {
     case OutputQuantity::body_velocity:
     case OutputQuantity::body_acceleration:
     case OutputQuantity::body_angular_velocity:
+    case OutputQuantity::transport_velocity:
+    case OutputQuantity::transport_acceleration:
+    case OutputQuantity::coriolis_acceleration:
+    case OutputQuantity::centripetal_acceleration:
+    case OutputQuantity::euler_acceleration:
       return OutputTargetKind::body;
     case OutputQuantity::signal:
       return OutputTargetKind::signal;
@@ -24,6 +29,14 @@ OutputTargetKind output_target_kind(OutputQuantity quantity) {
       return OutputTargetKind::constraint;
   }
   return OutputTargetKind::joint;
+}
+
+bool is_rotating_frame_term(OutputQuantity quantity) {
+  return quantity == OutputQuantity::transport_velocity ||
+         quantity == OutputQuantity::transport_acceleration ||
+         quantity == OutputQuantity::coriolis_acceleration ||
+         quantity == OutputQuantity::centripetal_acceleration ||
+         quantity == OutputQuantity::euler_acceleration;
 }
 
 std::string_view output_target_kind_name(OutputTargetKind kind) {
@@ -56,6 +69,16 @@ std::string_view output_quantity_name(OutputQuantity quantity) {
       return "acceleration";
     case OutputQuantity::body_angular_velocity:
       return "angular_velocity";
+    case OutputQuantity::transport_velocity:
+      return "transport_velocity";
+    case OutputQuantity::transport_acceleration:
+      return "transport_acceleration";
+    case OutputQuantity::coriolis_acceleration:
+      return "coriolis_acceleration";
+    case OutputQuantity::centripetal_acceleration:
+      return "centripetal_acceleration";
+    case OutputQuantity::euler_acceleration:
+      return "euler_acceleration";
     case OutputQuantity::reaction_force:
       return "reaction_force";
     case OutputQuantity::reaction_moment:

@@ -27,7 +27,13 @@ std::string output_unit(model::OutputQuantity quantity) {
     case Q::body_velocity:
       return "m/s";
     case Q::body_acceleration:
+    case Q::transport_acceleration:
+    case Q::coriolis_acceleration:
+    case Q::centripetal_acceleration:
+    case Q::euler_acceleration:
       return "m/s²";
+    case Q::transport_velocity:
+      return "m/s";
     case Q::body_angular_velocity:
       return "rad/s";
     case Q::reaction_force:

@@ -13,6 +13,7 @@
 #include "momenta/dynamics/hybrid_dynamics.hpp"
 #include "momenta/dynamics/kinematics.hpp"
 #include "momenta/dynamics/rnea.hpp"
+#include "momenta/model/prescribed_motion.hpp"
 
 namespace momenta::system {
 
@@ -25,16 +26,14 @@ model::SignalSample offset_sample(const model::Signal& signal, const model::Sign
   return {s.value + offset.value, s.rate + offset.rate, s.acceleration + offset.acceleration};
 }
 
-// Writes a prescribed joint's signals (value, rate) into its coordinates of q and v.
-template <class Samples>
-void write_prescribed(const model::Model& model, const Samples& sample_of, VecX& q, VecX& v) {
+// Writes every prescribed joint's coordinates of q and v (and of vdot, when not null) from the
+// samples of every signal.
+void write_prescribed(const model::Model& model, std::span<const model::SignalSample> samples,
+                      VecX& q, VecX& v, VecX* vdot) {
   for (const model::Joint& j : model.joints()) {
     if (!j.is_prescribed()) continue;
-    for (int k = 0; k < j.nv(); ++k) {
-      const model::SignalSample s = sample_of(j.prescribed_signal_indices[k]);
-      q[j.q_index + k] = s.value;
-      v[j.v_index + k] = s.rate;
-    }
+    model::prescribed_joint_motion(j, samples, q.data() + j.q_index, v.data() + j.v_index,
+                                   vdot != nullptr ? vdot->data() + j.v_index : nullptr);
   }
 }
 
@@ -50,7 +49,8 @@ MultibodySystem::MultibodySystem(const model::Model& model)
       f_ext_(model.num_bodies(), Vec6::Zero()),
       samples_(model.signals().size(), model::SignalSample{0.0, 0.0, 0.0}),
       signal_values_(model.signals().size(), 0.0),
-      offsets_(model.signals().size(), model::SignalSample{0.0, 0.0, 0.0}) {
+      offsets_(model.signals().size(), model::SignalSample{0.0, 0.0, 0.0}),
+      applied_samples_(model.signals().size(), model::SignalSample{0.0, 0.0, 0.0}) {
   // Forward dynamics needs an invertible mass matrix: say which coordinate has no inertia now,
   // rather than return NaN accelerations later.
   dynamics::check_mass_matrix(model, model.initial_q());
@@ -108,13 +108,7 @@ const VecX& MultibodySystem::compute(double t, const VecX& q, const VecX& v, mod
   v_ = v;
   const bool prescribed = model_.has_prescribed_joints();
   if (prescribed) {
-    write_prescribed(
-        model_, [this](int s) { return samples_[s]; }, q_, v_);
-    for (const model::Joint& j : model_.joints()) {
-      for (int k = 0; k < static_cast<int>(j.prescribed_signal_indices.size()); ++k) {
-        vdot_prescribed_[j.v_index + k] = samples_[j.prescribed_signal_indices[k]].acceleration;
-      }
-    }
+    write_prescribed(model_, samples_, q_, v_, &vdot_prescribed_);
   }
 
   // The force elements. Those on bodies read the poses and velocities of forward kinematics;
@@ -219,8 +213,10 @@ std::string MultibodySystem::coordinate_name(int i, bool velocity) const {
 
 void MultibodySystem::apply_prescribed_motion(double t, VecX& q, VecX& v) const {
   if (!model_.has_prescribed_joints()) return;
-  write_prescribed(
-      model_, [&](int s) { return offset_sample(model_.signals()[s], offsets_[s], t); }, q, v);
+  const auto& signals = model_.signals();
+  for (std::size_t i = 0; i < signals.size(); ++i)
+    applied_samples_[i] = offset_sample(signals[i], offsets_[i], t);
+  write_prescribed(model_, applied_samples_, q, v, nullptr);
 }
 
 void MultibodySystem::set_signal_offsets(std::span<const double> value,

@@ -13,6 +13,7 @@
 #include "momenta/dynamics/constraints.hpp"
 #include "momenta/dynamics/point_kinematics.hpp"
 #include "momenta/dynamics/reactions.hpp"
+#include "momenta/dynamics/relative_kinematics.hpp"
 #include "momenta/system/multibody_system.hpp"
 
 namespace momenta::system {
@@ -74,6 +75,31 @@ void point_motion(const dynamics::Data& data, int b, const Vec3& p_BoP_B, Vec3& 
   v_WP_W = X.R * (V.tail<3>() + V.head<3>().cross(p_BoP_B));
 }
 
+// The point quantity an output asks for, from P's motion seen in its frame (the world by
+// default, where the relative terms are the absolute motion).
+Vec3 point_quantity(OutputQuantity quantity, const dynamics::RelativeKinematics& k) {
+  switch (quantity) {
+    case OutputQuantity::body_position:
+      return k.p_FoP_F;
+    case OutputQuantity::body_velocity:
+      return k.v_relative;
+    case OutputQuantity::body_acceleration:
+      return k.a_relative;
+    case OutputQuantity::transport_velocity:
+      return k.v_transport();
+    case OutputQuantity::transport_acceleration:
+      return k.a_transport();
+    case OutputQuantity::coriolis_acceleration:
+      return k.a_coriolis;
+    case OutputQuantity::centripetal_acceleration:
+      return k.a_centripetal;
+    case OutputQuantity::euler_acceleration:
+      return k.a_euler;
+    default:
+      return Vec3::Zero();
+  }
+}
+
 }  // namespace
 
 OutputSet::OutputSet(const model::Model& model, std::vector<OutputSpec> specs)
@@ -95,6 +121,28 @@ OutputSet::OutputSet(const model::Model& model, std::vector<OutputSpec> specs)
           "'{}'",
           spec.name, spec.point.x(), spec.point.y(), spec.point.z(), quantity,
           model::output_target_kind_name(kind), spec.target));
+    }
+    int frame = 0;  // the world
+    if (!spec.relative_to.empty()) {
+      if (kind != model::OutputTargetKind::body) {
+        throw InvalidArgument(fmt::format(
+            "output '{}': frame '{}' applies only to body quantities, not to the {} of {} '{}'",
+            spec.name, spec.relative_to, quantity, model::output_target_kind_name(kind),
+            spec.target));
+      }
+      const std::optional<int> f = model.find_body(spec.relative_to);
+      if (!f) {
+        std::vector<std::string_view> names;
+        for (const model::Body& b : model.bodies()) names.push_back(b.name);
+        throw InvalidArgument(fmt::format("output '{}': frame of unknown body '{}'{}", spec.name,
+                                          spec.relative_to, did_you_mean(spec.relative_to, names)));
+      }
+      frame = *f;
+    } else if (model::is_rotating_frame_term(spec.quantity)) {
+      throw InvalidArgument(fmt::format(
+          "output '{}': the {} is a term of the motion seen from a moving frame; name the body "
+          "whose frame that is (OutputSpec::relative_to, 'frame:' in a model file)",
+          spec.name, quantity));
     }
     if (!spec.point.allFinite()) {
       throw InvalidArgument(fmt::format("output '{}': the point [{}, {}, {}] is not finite",
@@ -149,7 +197,7 @@ OutputSet::OutputSet(const model::Model& model, std::vector<OutputSpec> specs)
             "output '{}': column '{}' is already taken by another output", spec.name, column));
       }
       columns_.push_back(std::move(column));
-      resolved_.push_back({s, index, k});
+      resolved_.push_back({s, index, k, frame});
     }
     needs_reactions_ = needs_reactions_ || spec.quantity == OutputQuantity::reaction_force ||
                        spec.quantity == OutputQuantity::reaction_moment;
@@ -179,18 +227,12 @@ void OutputSet::evaluate(MultibodySystem& system, double t, const VecX& q, const
     switch (spec.quantity) {
       case OutputQuantity::joint_position: {
         const model::Joint& joint = model.joint(column.index);
-        const int i = joint.q_index + k;
-        out = joint.is_prescribed()
-                  ? system.signal_samples()[joint.prescribed_signal_indices[k]].value
-                  : q[i];
+        out = system.evaluated_q()[joint.q_index + k];
         break;
       }
       case OutputQuantity::joint_velocity: {
         const model::Joint& joint = model.joint(column.index);
-        const int i = joint.v_index + k;
-        out = joint.is_prescribed()
-                  ? system.signal_samples()[joint.prescribed_signal_indices[k]].rate
-                  : v[i];
+        out = system.evaluated_v()[joint.v_index + k];
         break;
       }
       case OutputQuantity::joint_effort: {
@@ -202,17 +244,25 @@ void OutputSet::evaluate(MultibodySystem& system, double t, const VecX& q, const
         break;
       }
       case OutputQuantity::body_position:
-        out = data.X_WB[column.index].apply(spec.point)[k];
-        break;
       case OutputQuantity::body_velocity:
-        out = dynamics::point_kinematics(model, data, column.index, spec.point).v_WP_W[k];
-        break;
       case OutputQuantity::body_acceleration:
-        out = dynamics::point_kinematics(model, data, column.index, spec.point).a_WP_W[k];
+      case OutputQuantity::transport_velocity:
+      case OutputQuantity::transport_acceleration:
+      case OutputQuantity::coriolis_acceleration:
+      case OutputQuantity::centripetal_acceleration:
+      case OutputQuantity::euler_acceleration:
+        out = point_quantity(
+            spec.quantity,
+            dynamics::relative_kinematics(model, data, column.index, spec.point, column.frame))[k];
         break;
-      case OutputQuantity::body_angular_velocity:
-        out = (data.X_WB[column.index].R * data.V_WB_B[column.index].head<3>())[k];
+      case OutputQuantity::body_angular_velocity: {
+        // w_FB = w_WB − w_WF, in F.
+        const Mat3& R_WF = data.X_WB[column.frame].R;
+        const Vec3 w_WB_W = data.X_WB[column.index].R * data.V_WB_B[column.index].head<3>();
+        const Vec3 w_WF_W = R_WF * data.V_WB_B[column.frame].head<3>();
+        out = (R_WF.transpose() * (w_WB_W - w_WF_W))[k];
         break;
+      }
       case OutputQuantity::signal:
         out = system.signal_samples()[column.index].value;
         break;

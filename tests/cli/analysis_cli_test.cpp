@@ -69,6 +69,44 @@ TEST_F(AnalysisCli, LinearizeJsonMatchesTheLibrary) {
   EXPECT_EQ(j.at("eigenvalues").at(0).size(), 2u);
 }
 
+// The bead on the turntable at t = 1 s, seen from the turntable: x = x0 cosh Ω t, ẋ = x0 Ω sinh Ω t
+// (Ω = 2 rad/s, x0 = 0.05 m; RK4 at 1 ms: 1e-12), Coriolis 2 Ω ẋ, centripetal −Ω² x; from a
+// state file the instant is the file's.
+TEST_F(AnalysisCli, KinematicsOfTheTurntableBead) {
+  const std::string model = "'" + test::source_dir() + "/examples/kinematics/turntable_bead.yaml'";
+  const CliRun r =
+      momenta("kinematics " + model + " --point bead --frame turntable --time 1 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  const double W = 2.0, x = 0.05 * std::cosh(W), x_dot = 0.05 * W * std::sinh(W);
+  const auto vec = [&](const json& a) {
+    return Vec3(a.at(0).get<double>(), a.at(1).get<double>(), a.at(2).get<double>());
+  };
+  EXPECT_MATRIX_NEAR(vec(j.at("position")), Vec3(x, 0, 0), 1e-12);
+  EXPECT_MATRIX_NEAR(vec(j.at("velocity").at("relative")), Vec3(x_dot, 0, 0), 1e-11);
+  EXPECT_MATRIX_NEAR(vec(j.at("acceleration").at("coriolis")), Vec3(0, 2 * W * x_dot, 0), 1e-10);
+  EXPECT_MATRIX_NEAR(vec(j.at("acceleration").at("centripetal")), Vec3(-W * W * x, 0, 0), 1e-11);
+  // T = ½ m (ẋ² + (Ω x)²) + ½ (2/5 m r²) Ω² for the 0.02 kg, 4 mm bead.
+  const double m = 0.02, I = 0.4 * m * 0.004 * 0.004;
+  EXPECT_NEAR(j.at("kinetic_energy").at("translation").get<double>(),
+              0.5 * m * (x_dot * x_dot + W * W * x * x), 1e-13);
+  EXPECT_NEAR(j.at("kinetic_energy").at("rotation").get<double>(), 0.5 * I * W * W, 1e-16);
+
+  // The text form, and a state file's instant: q = (angle, x), v = (Ω, ẋ).
+  std::ofstream(dir_ / "s.json") << R"({"q": [0.3, 0.1], "v": [2.0, 0.5], "t": 0.15})";
+  const CliRun text = momenta("kinematics " + model + " --point bead --frame turntable --state '" +
+                              (dir_ / "s.json").string() + "'");
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("at t = 0.15 s"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("Coriolis     2 Ω × v_rel    [0, 2, 0]"), std::string::npos) << text.out;
+
+  const CliRun bad = momenta("kinematics " + model + " --point bead:1,2 --frame turntable");
+  EXPECT_NE(bad.code, 0);
+  EXPECT_NE(bad.err.find("expected BODY:x,y,z"), std::string::npos) << bad.err;
+  const CliRun unknown = momenta("kinematics " + model + " --point bead --frame turntabel");
+  EXPECT_NE(unknown.err.find("did you mean 'turntable'"), std::string::npos) << unknown.err;
+}
+
 TEST_F(AnalysisCli, ModesOfThePendulumAboutItsEquilibriumFromAState) {
   // A state file at the bottom: ω = √(g/L) = 3.1321 rad/s = 0.49849 Hz.
   std::ofstream(dir_ / "bottom.json") << R"({"q": [0.0], "v": [0.0]})";

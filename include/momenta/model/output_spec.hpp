@@ -20,16 +20,23 @@ enum class OutputQuantity {
   joint_position,         ///< joint coordinates q (nq; quaternions as w, x, y, z)
   joint_velocity,         ///< joint speeds v (nv)
   joint_effort,           ///< generalized force on the joint: element forces + prescribed drive
-  body_position,          ///< p_WoP_W of a point P fixed in the body (m)
-  body_velocity,          ///< v_WP_W (m/s)
-  body_acceleration,      ///< a_WP_W (m/s²)
-  body_angular_velocity,  ///< w_WB_W (rad/s)
-  reaction_force,         ///< force the joint transmits to its child (N), in `frame`
-  reaction_moment,        ///< moment about the child-side joint frame's origin (N·m), in `frame`
-  signal,                 ///< an input signal's value
-  spring_length,          ///< a linear spring-damper's length ℓ (m)
-  spring_tension,         ///< its tension k (ℓ − ℓ0) + c ℓ̇ (N)
-  constraint_force,       ///< a constraint's forces (dynamics::constraint_force_labels)
+  body_position,          ///< p_WoP_W of a point P fixed in the body (m); p_FoP_F with a frame
+  body_velocity,          ///< v_WP_W (m/s); with a frame F, v_rel: P's velocity seen in F
+  body_acceleration,      ///< a_WP_W (m/s²); with a frame F, a_rel: P's acceleration seen in F
+  body_angular_velocity,  ///< w_WB_W (rad/s); with a frame F, w_FB_F
+  // Rotating-frame terms of P's motion seen from a frame F (dynamics/relative_kinematics.hpp);
+  // they need a frame.
+  transport_velocity,        ///< v_Fo + Ω × r (m/s)
+  transport_acceleration,    ///< a_Fo + Ω̇ × r + Ω × (Ω × r) (m/s²)
+  coriolis_acceleration,     ///< 2 Ω × v_rel (m/s²)
+  centripetal_acceleration,  ///< Ω × (Ω × r) (m/s²)
+  euler_acceleration,        ///< Ω̇ × r (m/s²)
+  reaction_force,            ///< force the joint transmits to its child (N), in `frame`
+  reaction_moment,   ///< moment about the child-side joint frame's origin (N·m), in `frame`
+  signal,            ///< an input signal's value
+  spring_length,     ///< a linear spring-damper's length ℓ (m)
+  spring_tension,    ///< its tension k (ℓ − ℓ0) + c ℓ̇ (N)
+  constraint_force,  ///< a constraint's forces (dynamics::constraint_force_labels)
 };
 
 /// What kind of model item a quantity is of.
@@ -38,6 +45,10 @@ enum class OutputTargetKind { joint, body, signal, force_element, constraint };
 /// The kind of item `quantity` is of (a reaction is of a joint, a spring length of a force
 /// element).
 OutputTargetKind output_target_kind(OutputQuantity quantity);
+
+/// True for the rotating-frame terms (transport_velocity ... euler_acceleration), which need a
+/// frame to be seen from.
+bool is_rotating_frame_term(OutputQuantity quantity);
 
 /// "joint", "body", "signal", "force element", "constraint".
 std::string_view output_target_kind_name(OutputTargetKind kind);
@@ -54,6 +65,10 @@ struct OutputSpec {
   Vec3 point = Vec3::Zero();  ///< body quantities: the point, p_BoP_B (m)
   int component = -1;         ///< 0, 1, 2 for x, y, z (or one coordinate); −1: all
   ReactionFrame frame = ReactionFrame::world;  ///< reactions only
+  /// Body quantities: the body whose frame F they are seen from and expressed in (empty: the
+  /// world). The position is then p_FoP_F, the velocity and acceleration are relative to F
+  /// (v_rel, a_rel) and the angular velocity is w_FB_F; every vector is in F's axes.
+  std::string relative_to = {};
 };
 
 }  // namespace momenta::model

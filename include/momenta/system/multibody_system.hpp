@@ -103,6 +103,9 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   /// these; a simulation leaves them at zero. Throws InvalidArgument on a size mismatch.
   void set_signal_offsets(std::span<const double> value, std::span<const double> rate,
                           std::span<const double> acceleration);
+  /// After evaluate(): the state it evaluated, q and v with the prescribed coordinates applied.
+  const VecX& evaluated_q() const { return q_; }
+  const VecX& evaluated_v() const { return v_; }
   /// The signals' samples (with offsets) at the last evaluated instant.
   std::span<const model::SignalSample> signal_samples() const { return samples_; }
 
@@ -131,6 +134,7 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   std::vector<model::SignalSample> samples_;  // every signal at the current instant
   std::vector<double> signal_values_;         // samples_[i].value, for force_element_forces
   std::vector<model::SignalSample> offsets_;  // see set_signal_offsets
+  mutable std::vector<model::SignalSample> applied_samples_;  // apply_prescribed_motion's
   double step_end_ = std::numeric_limits<double>::infinity();  // see begin_step
   std::unique_ptr<ConstraintSolver> constraints_;              // null without constraints
   bool body_loads_ = false;  // some element acts on bodies (needs poses; f_ext is not zero)

@@ -43,6 +43,7 @@ class OutputSet {
     int spec = 0;       // index into specs_
     int index = 0;      // resolved joint, body, signal or element
     int component = 0;  // coordinate or axis
+    int frame = 0;      // body quantities: the body whose frame they are seen from (0: world)
   };
   std::vector<model::OutputSpec> specs_;
   std::vector<Column> resolved_;

@@ -227,6 +227,30 @@ joints:
   EXPECT_EQ(file.model.body(1).mass_properties.mass(), 0.0);
 }
 
+// A ball joint is prescribed by its rotation vector (three signals), a free joint by six; the
+// count is checked at the key with what the signals stand for.
+TEST(ModelFileJoints, BallAndFreeJointsArePrescribedByRotationVectors) {
+  const ModelFile file = parse(R"(
+inputs:
+  - {name: zero, type: constant, value: 0}
+  - {name: spin, type: ramp, slope: 3}
+bodies:
+  - {name: table, mass: 1}
+joints:
+  - {name: ball, type: ball, parent: world, child: table, prescribed: [zero, zero, spin]}
+)");
+  EXPECT_TRUE(file.model.joint(0).is_prescribed());
+  EXPECT_ERROR_AT(error_of(R"(
+inputs:
+  - {name: spin, type: ramp, slope: 3}
+bodies:
+  - {name: table, mass: 1}
+joints:
+  - {name: ball, type: free, parent: world, child: table, prescribed: [spin, spin, spin]}
+)"),
+                  "m.yaml:7:", "3 signals given; a free joint needs 6 (its rotation vector");
+}
+
 TEST(ModelFileBodies, PartFileIsReadRelativeToTheModel) {
   const auto dir = scratch_dir();
   std::ofstream(dir / "ball.yaml") << "parts:\n  - {shape: sphere, radius: 0.1, mass: 4}\n";

@@ -26,6 +26,20 @@ TEST(LieGroup, RightJacobianMatchesFiniteDifferences) {
   }
 }
 
+// J̇_r along δ(t) = δ0 + t δ̇ against central differences of J_r itself (truncation h² times the
+// third derivative, about 1e-10; round-off ε_mach/h ≈ 2e-11), on both sides of the series
+// switch-over at θ = 0.1 and at rest (θ = 0, where only the −½ K̇ term is left).
+TEST(LieGroup, RightJacobianRateMatchesFiniteDifferences) {
+  const Vec3 rate(-0.3, 1.1, 0.45);
+  for (const double scale : {0.0, 1e-7, 0.0999, 0.1001, 0.7, 3.0}) {
+    const Vec3 delta = scale * Vec3(0.6, -0.48, 0.64);
+    const double h = 1e-5;
+    const Mat3 fd =
+        (so3_right_jacobian(delta + h * rate) - so3_right_jacobian(delta - h * rate)) / (2 * h);
+    EXPECT_MATRIX_NEAR(so3_right_jacobian_rate(delta, rate), fd, 1e-9) << "scale " << scale;
+  }
+}
+
 TEST(LieGroup, InverseIsTheInverse) {
   for (const double scale : {0.0, 1e-8, 0.9e-4, 1.1e-4, 1.0, 3.0, 6.0}) {
     const Vec3 delta = scale * Vec3(0.36, 0.48, -0.8);
