@@ -47,6 +47,9 @@ struct QuietExit {
 /// `momenta kinematics MODEL --point BODY:x,y,z --frame BODY`: rotating-frame kinematics.
 void add_kinematics_command(CLI::App& app);
 
+/// `momenta equations MODEL`: equations of motion in symbols (docs/equations.md).
+void add_equations_command(CLI::App& app);
+
 /// `momenta response MODEL`: step, impulse or Bode response of one input–output pair.
 void add_response_command(CLI::App& app);
 

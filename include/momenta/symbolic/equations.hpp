@@ -1,0 +1,110 @@
+#pragma once
+// Equations of motion in symbols: a model's M(q) v̇ + C(q, v) v + g(q) = Q(q, v, u) derived
+// by computer algebra (GiNaC), its parameters left as numbers or turned into named symbols.
+//
+// Derivation. The recursive Newton–Euler algorithm (Featherstone 2008, §5.3) run on symbolic
+// expressions, in body frames (so a chain's entries depend on its relative joint angles, as a
+// textbook writes them): τ(q, v, v̇) = M v̇ + C v + g with gravity as an upward acceleration of
+// the base; M_kj = ∂τ_k/∂v̇_j, g = τ(q, 0, 0), C v = τ(q, v, 0) − g. The force elements' generalized
+// forces Q are a second pass with their wrenches as the only loads, plus the joint-space terms.
+// Entries are expanded, sin² θ folded into 1 − cos² θ, and collected.
+//
+// Coordinates. A joint with nq == nv contributes its coordinates as symbols named after it (a
+// 1-dof joint by its own name, "pivot"; several as "<joint>_<coordinate>", "base_x"); their rates
+// are "<name>_dot" and accelerations "<name>_ddot" (LaTeX \dot{}, \ddot{}). A ball or free joint
+// contributes its quaternion "<joint>_qw" ... and its body-frame angular velocity "<joint>_wx" ...
+// (and the free joint's position "<joint>_x" ... with rates "<joint>_x_dot" ...): its speeds are
+// not the rates of its coordinates. A prescribed joint's coordinate is its signal's value, rate
+// and acceleration: "<signal>", "<signal>_dot", "<signal>_ddot"; every signal that scales a load
+// is a symbol of its own name. Only the free (not prescribed) speeds get an equation.
+//
+// Parameters. With `symbols` (or all_symbols) a parameter becomes a symbol named:
+//   m_<body>, I_<body>_xx … I_<body>_xy (inertia about the centre of mass, off-diagonals as
+//   stored: minus the products of inertia), c_<body>_x … (centre of mass), g (gravity's size),
+//   l_<joint>_x … (the joint frame's position in its parent), c_<joint> (joint damping),
+//   k_<element>, c_<element>, l0_<element> (springs, dampers, friction), F_<element> (the size of
+//   an applied force or torque).
+// A parameter whose value is zero stays 0. Other numbers print as short decimals where they are
+// one (9.81), else with 17 significant digits.
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "momenta/math/types.hpp"
+#include "momenta/model/model.hpp"
+
+namespace momenta::symbolic {
+
+struct EquationOptions {
+  std::vector<std::string> symbols;  ///< parameters to keep as symbols, by the names above
+  bool all_symbols = false;          ///< every nonzero parameter a symbol
+};
+
+/// How an expression prints.
+enum class Format { text, latex, cpp, python };
+
+/// One parameter turned into a symbol: its name and the model's value.
+struct Parameter {
+  std::string name;
+  double value = 0.0;
+};
+
+/// A model's equations of motion in symbols (see the file comment). Holds GiNaC expressions
+/// behind an opaque pointer; copies share them.
+class Equations {
+ public:
+  ~Equations();
+  Equations(const Equations&);
+  Equations& operator=(const Equations&);
+
+  /// The names of the configuration symbols (model q order), the speed symbols (model v order)
+  /// and the acceleration symbols (model v order). Prescribed coordinates appear under their
+  /// signal's names.
+  const std::vector<std::string>& configuration_names() const;
+  const std::vector<std::string>& speed_names() const;
+  const std::vector<std::string>& acceleration_names() const;
+  /// The model v indices that have an equation (those not prescribed), in order.
+  const std::vector<int>& free_speeds() const;
+  /// The symbols standing for signals (inputs u), their names.
+  const std::vector<std::string>& input_names() const;
+  /// The parameters kept as symbols, with the model's values.
+  const std::vector<Parameter>& parameters() const;
+
+  /// Entries as text in `format`: M (free × free), C v, g, Q (each of size free), and the
+  /// equation of each free speed, "M v̇ + C v + g = Q" written out and collected by acceleration.
+  std::string mass_matrix_entry(int row, int column, Format format) const;
+  std::string velocity_product(int row, Format format) const;
+  std::string gravity(int row, Format format) const;
+  std::string generalized_force(int row, Format format) const;
+  std::string equation(int row, Format format) const;
+
+  /// Evaluates M, C v + g − Q (the bias b) at a state, the parameters at their model values and
+  /// the signals at `u` (one per input_names(), in that order): M v̇_free + b = 0 is the motion.
+  /// q and v are the model's (prescribed coordinates taken from them too, with their
+  /// accelerations in vdot). Slow (substitution): for tests and checks, not simulation.
+  void evaluate(const VecX& q, const VecX& v, const VecX& vdot, const VecX& u, MatX& M,
+                VecX& bias) const;
+
+  /// A C++ or Python source that computes M(q) and b(q, v, u) (as `evaluate`, without the
+  /// substitution), in a namespace or module named `name`. See docs/equations.md.
+  std::string generate_code(Format language, const std::string& name) const;
+
+  struct Impl;
+
+ private:
+  friend Equations derive_equations(const model::Model&, const EquationOptions&);
+  explicit Equations(std::shared_ptr<const Impl> impl);
+  std::shared_ptr<const Impl> impl_;
+};
+
+/// Derives the equations of `model`. Throws InvalidArgument for what it cannot write yet (a
+/// constraint, a two-body torsional spring, a prescribed ball or free joint), naming it, and for
+/// a name in options.symbols that is no parameter of the model (with the names it has).
+Equations derive_equations(const model::Model& model, const EquationOptions& options = {});
+
+/// Every parameter name the model has (what EquationOptions::symbols may name), in order.
+std::vector<std::string> parameter_names(const model::Model& model);
+
+}  // namespace momenta::symbolic

@@ -1,0 +1,37 @@
+#pragma once
+// Straight-line code for expressions: every distinct compound subexpression (a sum, product,
+// power or function) computed once into a temporary, in dependency order. The equations' entries
+// share most of their subexpressions (the recursion builds them as a graph), so this code grows
+// with the model, where printing each entry as a tree would grow exponentially.
+
+#include <map>
+#include <string>
+
+#include <ginac/ginac.h>
+
+namespace momenta::symbolic::detail {
+
+class CodeEmitter {
+ public:
+  enum class Language { cpp, python };
+  /// `symbols`: what each symbol is called in the code (q[0], u[1], ...); others keep their names.
+  CodeEmitter(Language language, std::string indent, const GiNaC::exmap& symbols)
+      : language_(language), indent_(std::move(indent)), symbols_(symbols) {}
+
+  /// The code (a temporary's name, a symbol or a literal) of `e`; its temporaries are appended to
+  /// lines().
+  std::string operator()(const GiNaC::ex& e);
+  const std::string& lines() const { return lines_; }
+
+ private:
+  std::string literal(const GiNaC::numeric& n) const;
+  std::string compound(const GiNaC::ex& e);
+  Language language_;
+  std::string indent_;
+  const GiNaC::exmap& symbols_;
+  std::string lines_;
+  std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> names_;
+  int next_ = 0;
+};
+
+}  // namespace momenta::symbolic::detail

@@ -1,0 +1,624 @@
+// The derivation: symbols for coordinates, signals and parameters; the symbolic Newton–Euler
+// passes in body frames; M, g, the rest and Q split and tidied (equations.hpp).
+
+#include <algorithm>
+#include <cctype>
+#include <set>
+#include <variant>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "equations_impl.hpp"
+#include "expression_algebra.hpp"
+#include "momenta/common/error.hpp"
+#include "momenta/common/suggest.hpp"
+
+namespace momenta::symbolic {
+namespace {
+
+using GiNaC::ex;
+using GiNaC::symbol;
+using namespace detail;
+
+// A name fit for code and for GiNaC's parser: letters, digits and '_'.
+std::string identifier(const std::string& name) {
+  std::string s = name;
+  for (char& c : s)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) s = "_" + s;
+  return s;
+}
+
+std::string latex_name(const std::string& name) {
+  std::string s;
+  for (char c : name) s += c == '_' ? std::string("\\_") : std::string(1, c);
+  return "\\mathrm{" + s + "}";
+}
+
+symbol make_symbol(const std::string& name, const std::string& latex) {
+  return symbol(name, latex);
+}
+
+// Parameters: a symbol where the options ask for one, else the number.
+class Parameters {
+ public:
+  explicit Parameters(const EquationOptions& options)
+      : all_(options.all_symbols), asked_(options.symbols.begin(), options.symbols.end()) {}
+
+  ex operator()(const std::string& raw_name, double value) {
+    const std::string name = identifier(raw_name);
+    names_.push_back(name);
+    if (value == 0.0) return 0;
+    if (!all_ && asked_.count(name) == 0) return exact_number(value);
+    used_.insert(name);
+    const symbol s = make_symbol(name, latex_name(name));
+    symbols_.push_back(s);
+    values_.push_back({name, value});
+    return s;
+  }
+  V3 vector(const std::string& stem, const Vec3& value) {
+    return {{(*this)(stem + "_x", value.x()), (*this)(stem + "_y", value.y()),
+             (*this)(stem + "_z", value.z())}};
+  }
+  // Every name asked for must be a parameter of the model.
+  void check() const {
+    for (const std::string& name : asked_) {
+      if (std::find(names_.begin(), names_.end(), name) != names_.end()) continue;
+      const std::vector<std::string_view> views(names_.begin(), names_.end());
+      throw InvalidArgument(
+          fmt::format("equations: no parameter named '{}'{}; the model's parameters are {}", name,
+                      did_you_mean(name, views), fmt::join(names_, ", ")));
+    }
+  }
+  const std::vector<std::string>& names() const { return names_; }
+  std::vector<symbol> symbols_;
+  std::vector<Parameter> values_;
+
+ private:
+  bool all_;
+  std::set<std::string> asked_, used_;
+  std::vector<std::string> names_;
+};
+
+// One joint's motion in J': its rotation and translation, and the columns of S.
+struct JointMotion {
+  M3 R;
+  V3 p;
+  std::vector<Motion> S;
+};
+
+Motion unit_motion(const V3& w, const V3& v) { return {w, v}; }
+
+JointMotion joint_motion(const model::Joint& j, const std::vector<ex>& q, int qi) {
+  const V3 a = to_v3(j.axis), a2 = to_v3(j.axis2), zero;
+  JointMotion m;
+  m.R = M3::identity();
+  switch (j.type) {
+    case model::JointType::fixed:
+      break;
+    case model::JointType::revolute:
+      m.R = axis_rotation(a, q[qi]);
+      m.S = {unit_motion(a, zero)};
+      break;
+    case model::JointType::prismatic:
+      m.p = q[qi] * a;
+      m.S = {unit_motion(zero, a)};
+      break;
+    case model::JointType::cylindrical:
+      m.R = axis_rotation(a, q[qi]);
+      m.p = q[qi + 1] * a;
+      m.S = {unit_motion(a, zero), unit_motion(zero, a)};
+      break;
+    case model::JointType::universal: {
+      const M3 R2 = axis_rotation(a2, q[qi + 1]);
+      m.R = axis_rotation(a, q[qi]) * R2;
+      m.S = {unit_motion(transpose(R2) * a, zero), unit_motion(a2, zero)};
+      break;
+    }
+    case model::JointType::spherical:
+      m.R = quaternion_rotation(q[qi], q[qi + 1], q[qi + 2], q[qi + 3]);
+      for (int k = 0; k < 3; ++k) {
+        V3 e;
+        e[k] = 1;
+        m.S.push_back(unit_motion(e, zero));
+      }
+      break;
+    case model::JointType::planar: {
+      const M3 Rt = transpose(axis_rotation(to_v3(Vec3::UnitZ()), q[qi + 2]));
+      m.R = transpose(Rt);
+      m.p = {{q[qi], q[qi + 1], 0}};
+      V3 c0, c1, z;
+      for (int r = 0; r < 3; ++r) {
+        c0[r] = Rt(r, 0);
+        c1[r] = Rt(r, 1);
+      }
+      z[2] = 1;
+      m.S = {unit_motion(zero, c0), unit_motion(zero, c1), unit_motion(z, zero)};
+      break;
+    }
+    case model::JointType::free: {
+      m.R = quaternion_rotation(q[qi + 3], q[qi + 4], q[qi + 5], q[qi + 6]);
+      m.p = {{q[qi], q[qi + 1], q[qi + 2]}};
+      const M3 Rt = transpose(m.R);
+      for (int k = 0; k < 3; ++k) {
+        V3 e;
+        e[k] = 1;
+        m.S.push_back(unit_motion(e, zero));
+      }
+      for (int k = 0; k < 3; ++k) {
+        V3 c;
+        for (int r = 0; r < 3; ++r) c[r] = Rt(r, k);
+        m.S.push_back(unit_motion(zero, c));
+      }
+      break;
+    }
+  }
+  return m;
+}
+
+class Derivation {
+ public:
+  Derivation(const model::Model& model, const EquationOptions& options)
+      : model_(model), params_(options) {}
+
+  Equations::Impl run() {
+    refuse_what_is_not_written_yet();
+    make_coordinate_symbols();
+    make_input_symbols();
+    newton_euler();
+    element_forces();
+    params_.check();
+    split();
+    impl_.parameter_symbols = params_.symbols_;
+    impl_.parameters = params_.values_;
+    return std::move(impl_);
+  }
+  const std::vector<std::string>& parameter_names() {
+    make_coordinate_symbols();
+    make_input_symbols();
+    newton_euler();
+    element_forces();
+    return params_.names();
+  }
+
+ private:
+  void refuse_what_is_not_written_yet() {
+    if (!model_.constraints().empty()) {
+      throw InvalidArgument(fmt::format(
+          "equations: constraint '{}': equations of constrained models are not written yet; "
+          "derive the tree's and add the constraint by hand (docs/equations.md)",
+          model::constraint_name(model_.constraints().front())));
+    }
+    for (const model::Joint& j : model_.joints()) {
+      if (j.is_prescribed() && j.nq() != j.nv()) {
+        throw InvalidArgument(
+            fmt::format("equations: joint '{}': a prescribed {} joint is not written yet", j.name,
+                        model::joint_type_name(j.type)));
+      }
+    }
+    for (const model::ForceElement& e : model_.force_elements()) {
+      if (const auto* t = std::get_if<model::TorsionalSpringDamper>(&e); t && t->joint.empty()) {
+        throw InvalidArgument(fmt::format(
+            "equations: force element '{}': a torsional spring between two bodies is not "
+            "written yet",
+            t->name));
+      }
+    }
+  }
+
+  // q, v, v̇ of every coordinate: symbols, or the prescribing signal's.
+  void make_coordinate_symbols() {
+    const int nq = model_.nq(), nv = model_.nv();
+    impl_.nq = nq;
+    impl_.nv = nv;
+    impl_.q.assign(nq, 0);
+    impl_.v.assign(nv, 0);
+    impl_.vdot.assign(nv, 0);
+    impl_.q_names.assign(nq, "");
+    impl_.v_names.assign(nv, "");
+    impl_.a_names.assign(nv, "");
+    impl_.free.clear();
+    rates_.clear();
+    for (const model::Joint& j : model_.joints()) {
+      const std::string base = identifier(j.name);
+      if (j.nq() == j.nv()) {
+        for (int k = 0; k < j.nv(); ++k) {
+          const int qi = j.q_index + k, vi = j.v_index + k;
+          std::string name = base;
+          if (j.nv() > 1) {
+            const std::string& full = model_.q_name(qi);
+            name = base + "_" + identifier(full.substr(full.find('.') + 1));
+          }
+          if (j.is_prescribed()) {
+            const model::Signal& s = model_.signals()[j.prescribed_signal_indices[k]];
+            name = identifier(s.name());
+          }
+          const symbol q(name, latex_name(name)),
+              v(name + "_dot", "\\dot{" + latex_name(name) + "}"),
+              a(name + "_ddot", "\\ddot{" + latex_name(name) + "}");
+          set_coordinate(qi, vi, q, v, a, name);
+          rates_.push_back({q, v});
+          if (!j.is_prescribed()) impl_.free.push_back(vi);
+        }
+        continue;
+      }
+      // Ball and free joints: quaternion, body angular velocity (and position, its rate).
+      const int quat = j.q_index + (j.type == model::JointType::free ? 3 : 0);
+      const char* parts[] = {"qw", "qx", "qy", "qz"};
+      std::array<symbol, 4> Q;
+      for (int k = 0; k < 4; ++k) {
+        const std::string name = base + "_" + parts[k];
+        Q[static_cast<std::size_t>(k)] = symbol(name, latex_name(name));
+        impl_.q[quat + k] = Q[static_cast<std::size_t>(k)];
+        impl_.q_names[quat + k] = name;
+      }
+      std::array<ex, 3> w;
+      const char* axes[] = {"x", "y", "z"};
+      for (int k = 0; k < 3; ++k) {
+        const std::string name = base + "_w" + axes[k];
+        const symbol s(name, "\\omega_{" + latex_name(base) + "," + axes[k] + "}");
+        const symbol sd(name + "_dot", "\\dot\\omega_{" + latex_name(base) + "," + axes[k] + "}");
+        const int vi = j.v_index + k;
+        impl_.v[vi] = s;
+        impl_.vdot[vi] = sd;
+        impl_.v_names[vi] = name;
+        impl_.a_names[vi] = name + "_dot";
+        impl_.free.push_back(vi);
+        w[static_cast<std::size_t>(k)] = s;
+      }
+      // q̇ = ½ q ⊗ [0; ω].
+      const ex qw = Q[0], qx = Q[1], qy = Q[2], qz = Q[3];
+      rates_.push_back({Q[0], -(qx * w[0] + qy * w[1] + qz * w[2]) / 2});
+      rates_.push_back({Q[1], (qw * w[0] + qy * w[2] - qz * w[1]) / 2});
+      rates_.push_back({Q[2], (qw * w[1] + qz * w[0] - qx * w[2]) / 2});
+      rates_.push_back({Q[3], (qw * w[2] + qx * w[1] - qy * w[0]) / 2});
+      if (j.type == model::JointType::free) {
+        for (int k = 0; k < 3; ++k) {
+          const std::string name = base + "_" + axes[k];
+          const symbol q(name, latex_name(name)),
+              v(name + "_dot", "\\dot{" + latex_name(name) + "}"),
+              a(name + "_ddot", "\\ddot{" + latex_name(name) + "}");
+          set_coordinate(j.q_index + k, j.v_index + 3 + k, q, v, a, name);
+          rates_.push_back({q, v});
+          impl_.free.push_back(j.v_index + 3 + k);
+        }
+      }
+    }
+    std::sort(impl_.free.begin(), impl_.free.end());
+  }
+
+  void set_coordinate(int qi, int vi, const symbol& q, const symbol& v, const symbol& a,
+                      const std::string& name) {
+    impl_.q[qi] = q;
+    impl_.v[vi] = v;
+    impl_.vdot[vi] = a;
+    impl_.q_names[qi] = name;
+    impl_.v_names[vi] = name + "_dot";
+    impl_.a_names[vi] = name + "_ddot";
+  }
+
+  // Signals that scale a load are inputs, symbols of their own names.
+  void make_input_symbols() {
+    impl_.inputs.clear();
+    impl_.input_names.clear();
+    input_of_signal_.assign(model_.signals().size(), ex(0));
+    for (const model::ForceElement& e : model_.force_elements()) {
+      int s = -1;
+      if (const auto* f = std::get_if<model::AppliedForce>(&e)) s = f->signal_index;
+      if (const auto* t = std::get_if<model::AppliedTorque>(&e)) s = t->signal_index;
+      if (s < 0 || !input_of_signal_[static_cast<std::size_t>(s)].is_zero()) continue;
+      const std::string name = identifier(model_.signals()[static_cast<std::size_t>(s)].name());
+      const symbol u(name, latex_name(name));
+      input_of_signal_[static_cast<std::size_t>(s)] = u;
+      impl_.inputs.push_back(u);
+      impl_.input_names.push_back(name);
+    }
+  }
+
+  // d/dt of an expression of the coordinates: the chain rule with q̇ from the speeds.
+  ex rate(const ex& e) const {
+    ex d = 0;
+    for (const auto& [q, q_dot] : rates_) d += GiNaC::diff(e, GiNaC::ex_to<symbol>(q)) * q_dot;
+    return d;
+  }
+  Motion rate(const Motion& m) const {
+    Motion r;
+    for (int k = 0; k < 3; ++k) {
+      r.w[k] = rate(m.w[k]);
+      r.v[k] = rate(m.v[k]);
+    }
+    return r;
+  }
+
+  // The body frames' poses, the joints' subspaces in the body frames and their rates, the
+  // inertias: what every Newton–Euler pass shares.
+  void kinematics() {
+    const int nb = model_.num_bodies();
+    R_PC_.assign(nb, M3::identity());
+    p_PC_.assign(nb, V3{});
+    R_WB_.assign(nb, M3::identity());
+    p_WB_.assign(nb, V3{});
+    S_.assign(nb, {});
+    dS_.assign(nb, {});
+    inertias_.assign(nb, Inertia{});
+    for (const model::Joint& j : model_.joints()) {
+      const int i = j.child_index, p = j.parent_index;
+      const JointMotion jm = joint_motion(j, impl_.q, j.q_index);
+      const M3 R_PJ = to_m3(j.X_PJ.R), R_CJ = to_m3(j.X_CJ.R);
+      const V3 p_PJ = params_.vector("l_" + j.name, j.X_PJ.p);
+      const V3 p_CJ = params_.vector("l_" + j.name + "_child", j.X_CJ.p);
+      R_PC_[i] = R_PJ * jm.R * transpose(R_CJ);
+      p_PC_[i] = p_PJ + R_PJ * jm.p - R_PC_[i] * p_CJ;
+      R_WB_[i] = R_WB_[p] * R_PC_[i];
+      p_WB_[i] = p_WB_[p] + R_WB_[p] * p_PC_[i];
+      for (int k = 0; k < j.nv(); ++k) {
+        const Motion S = motion_to_body(R_CJ, p_CJ, jm.S[static_cast<std::size_t>(k)]);
+        S_[i].push_back(S);
+        dS_[i].push_back(rate(S));
+      }
+      inertias_[i] = inertia(i);
+    }
+    const Vec3 gravity = model_.gravity();
+    const double g_size = gravity.norm();
+    const ex g = params_("g", g_size);
+    if (g_size > 0) base_acceleration_ = (-g) * to_v3(gravity / g_size);
+  }
+
+  // One Newton–Euler pass: τ for the speeds `v` and accelerations `vdot` (expressions per model
+  // coordinate), with or without gravity; the body velocities into `velocities` when asked.
+  std::vector<ex> newton_euler(const std::vector<ex>& v, const std::vector<ex>& vdot, bool gravity,
+                               std::vector<Motion>* velocities = nullptr) const {
+    const int nb = model_.num_bodies();
+    std::vector<Motion> V(nb), A(nb);
+    std::vector<Force> f(nb);
+    if (gravity) A[0].v = base_acceleration_;
+    for (const model::Joint& j : model_.joints()) {
+      const int i = j.child_index, p = j.parent_index;
+      Motion vJ, cJ, aJ;
+      for (int k = 0; k < j.nv(); ++k) {
+        const Motion& S = S_[i][static_cast<std::size_t>(k)];
+        const Motion& dS = dS_[i][static_cast<std::size_t>(k)];
+        const ex& vk = v[static_cast<std::size_t>(j.v_index + k)];
+        const ex& ak = vdot[static_cast<std::size_t>(j.v_index + k)];
+        if (!vk.is_zero()) {
+          vJ = vJ + Motion{vk * S.w, vk * S.v};
+          cJ = cJ + Motion{vk * dS.w, vk * dS.v};
+        }
+        if (!ak.is_zero()) aJ = aJ + Motion{ak * S.w, ak * S.v};
+      }
+      V[i] = motion_to_child(R_PC_[i], p_PC_[i], V[p]) + vJ;
+      A[i] = motion_to_child(R_PC_[i], p_PC_[i], A[p]) + aJ + cJ + cross_motion(V[i], vJ);
+      const Inertia& I = inertias_[i];
+      f[i] = I.apply(A[i]) + cross_force(V[i], I.apply(V[i]));
+    }
+    std::vector<ex> tau(static_cast<std::size_t>(model_.nv()), 0);
+    project_down(f, tau);
+    if (velocities) *velocities = std::move(V);
+    return tau;
+  }
+
+  // The passes: τ with the free accelerations zero (C v + g and the prescribed motion's terms),
+  // g at rest, and each column of M (a unit free acceleration, nothing else).
+  void newton_euler() {
+    kinematics();
+    const std::size_t nv = static_cast<std::size_t>(model_.nv());
+    std::vector<ex> vdot_prescribed = impl_.vdot;
+    for (int vi : impl_.free) vdot_prescribed[static_cast<std::size_t>(vi)] = 0;
+    tau_no_acceleration_ = newton_euler(impl_.v, vdot_prescribed, true, &V_);
+    const std::vector<ex> zero(nv, ex(0));
+    tau_gravity_ = newton_euler(zero, zero, true);
+    mass_columns_.clear();
+    for (int vi : impl_.free) {
+      std::vector<ex> unit = zero;
+      unit[static_cast<std::size_t>(vi)] = 1;
+      mass_columns_.push_back(newton_euler(zero, unit, false));
+    }
+  }
+
+  // τ_j = S_jᵀ f_i from the leaves to the root, f_p += ᵖX_i* f_i.
+  void project_down(std::vector<Force>& f, std::vector<ex>& out) const {
+    const auto& joints = model_.joints();
+    for (auto it = joints.rbegin(); it != joints.rend(); ++it) {
+      const int i = it->child_index, p = it->parent_index;
+      for (int k = 0; k < it->nv(); ++k) {
+        const Motion& S = S_[i][static_cast<std::size_t>(k)];
+        out[it->v_index + k] += dot(S.w, f[i].n) + dot(S.v, f[i].f);
+      }
+      if (p > 0) f[p] = f[p] + force_to_parent(R_PC_[i], p_PC_[i], f[i]);
+    }
+  }
+
+  Inertia inertia(int b) {
+    const model::Body& body = model_.body(b);
+    const inertia::MassProperties& mp = body.mass_properties;
+    const ex m = params_("m_" + body.name, mp.mass());
+    const V3 c = params_.vector("c_" + body.name, mp.center_of_mass());
+    const Mat3& Ic = mp.inertia_about_com();
+    const char* axes = "xyz";
+    M3 I;
+    for (int r = 0; r < 3; ++r) {
+      for (int col = r; col < 3; ++col) {
+        const ex e = params_(fmt::format("I_{}_{}{}", body.name, axes[r], axes[col]), Ic(r, col));
+        I(r, col) = e;
+        I(col, r) = e;
+      }
+    }
+    Inertia out;
+    out.mass = m;
+    out.h = m * c;
+    const ex cc = dot(c, c);
+    for (int r = 0; r < 3; ++r)
+      for (int col = 0; col < 3; ++col)
+        out.I_o(r, col) = I(r, col) + m * ((r == col ? cc : ex(0)) - c[r] * c[col]);
+    return out;
+  }
+
+  // Q: the elements' wrenches projected on the speeds, and the joint-space terms.
+  void element_forces() {
+    const int nb = model_.num_bodies();
+    std::vector<Force> f(nb);
+    Q_.assign(model_.nv(), 0);
+    const auto world_point = [&](int b, const V3& p) { return p_WB_[b] + R_WB_[b] * p; };
+    const auto world_velocity = [&](int b, const V3& p) {
+      return R_WB_[b] * (V_[b].v + cross(V_[b].w, p));
+    };
+    // A force F (in W) at p (in B) on body b.
+    const auto push = [&](int b, const V3& p, const V3& F_W) {
+      if (b == 0) return;
+      const V3 F = transpose(R_WB_[b]) * F_W;
+      f[b] = f[b] + Force{cross(p, F), F};
+    };
+    for (const model::Joint& j : model_.joints()) {
+      const ex c = params_("c_" + j.name, j.damping);
+      for (int k = 0; k < j.nv(); ++k) Q_[j.v_index + k] -= c * impl_.v[j.v_index + k];
+    }
+    for (const model::ForceElement& element : model_.force_elements()) {
+      const std::string name = model::force_element_name(element);
+      if (const auto* s = std::get_if<model::LinearSpringDamper>(&element)) {
+        const ex k = params_("k_" + name, s->stiffness), c = params_("c_" + name, s->damping),
+                 l0 = params_("l0_" + name, s->free_length);
+        const int a = s->a.body_index, b = s->b.body_index;
+        const V3 pa = to_v3(s->a.p_BoP_B), pb = to_v3(s->b.p_BoP_B);
+        const V3 d = world_point(b, pb) - world_point(a, pa);
+        const ex length = line_length(d);
+        const ex length_rate = dot(d, world_velocity(b, pb) - world_velocity(a, pa)) / length;
+        const ex T = k * (length - l0) + c * length_rate;
+        push(b, pb, (-T / length) * d);
+        push(a, pa, (T / length) * d);
+      } else if (const auto* t = std::get_if<model::TorsionalSpringDamper>(&element)) {
+        const model::Joint& j = model_.joint(t->joint_index);
+        const ex k = params_("k_" + name, t->stiffness), c = params_("c_" + name, t->damping),
+                 rest = params_("rest_" + name, t->rest_angle);
+        Q_[j.v_index] -= k * (impl_.q[j.q_index] - rest) + c * impl_.v[j.v_index];
+      } else if (const auto* fr = std::get_if<model::JointFriction>(&element)) {
+        const model::Joint& j = model_.joint(fr->joint_index);
+        const ex c = params_("c_" + name, fr->viscous);
+        for (int k = 0; k < j.nv(); ++k) Q_[j.v_index + k] -= c * impl_.v[j.v_index + k];
+      } else if (const auto* F = std::get_if<model::AppliedForce>(&element)) {
+        const V3 F_W = load(name, F->vector, F->signal_index, F->frame, F->at.body_index);
+        push(F->at.body_index, to_v3(F->at.p_BoP_B), F_W);
+      } else if (const auto* T = std::get_if<model::AppliedTorque>(&element)) {
+        const V3 M_W = load(name, T->vector, T->signal_index, T->frame, T->body_index);
+        if (T->body_index > 0) {
+          f[T->body_index] = f[T->body_index] + Force{transpose(R_WB_[T->body_index]) * M_W, V3{}};
+        }
+      }
+    }
+    project_down(f, Q_);
+  }
+
+  // |d|. Where the line keeps one direction (d has one nonzero component, as a suspension's
+  // vertical spring) it is ±d_k with the sign d_k has at the initial configuration — a spring
+  // that does not pass through zero length, as a textbook writes k (x_b − x_a) — else √(d·d).
+  ex line_length(const V3& d) {
+    int nonzero = -1, count = 0;
+    for (int k = 0; k < 3; ++k) {
+      if (!GiNaC::expand(d[k]).is_zero()) {
+        nonzero = k;
+        ++count;
+      }
+    }
+    if (count != 1) return GiNaC::sqrt(dot(d, d));
+    const ex component = GiNaC::expand(d[nonzero]);
+    const double at_start = initial_value(component);
+    if (at_start == 0.0) return GiNaC::sqrt(dot(d, d));
+    return at_start > 0 ? component : -component;
+  }
+
+  // An expression's value at the model's initial configuration, parameters at their values.
+  double initial_value(const ex& e) const {
+    GiNaC::exmap numbers;
+    const VecX q0 = model_.initial_q();
+    for (int i = 0; i < model_.nq(); ++i) {
+      if (GiNaC::is_a<symbol>(impl_.q[i])) numbers[impl_.q[i]] = GiNaC::numeric(q0[i]);
+    }
+    for (const model::Joint& j : model_.joints()) {
+      for (int k = 0; k < static_cast<int>(j.prescribed_signal_indices.size()); ++k) {
+        const double u = model_
+                             .signals()[static_cast<std::size_t>(
+                                 j.prescribed_signal_indices[static_cast<std::size_t>(k)])]
+                             .value(0.0);
+        numbers[impl_.q[j.q_index + k]] = GiNaC::numeric(u);
+      }
+    }
+    for (std::size_t k = 0; k < params_.symbols_.size(); ++k)
+      numbers[params_.symbols_[k]] = GiNaC::numeric(params_.values_[k].value);
+    const ex x = GiNaC::evalf(e.subs(numbers));
+    return GiNaC::is_a<GiNaC::numeric>(x) ? GiNaC::ex_to<GiNaC::numeric>(x).to_double() : 0.0;
+  }
+
+  // An applied load's vector in W: size (a parameter F_<name>) × direction × signal.
+  V3 load(const std::string& name, const Vec3& vector, int signal, model::LoadFrame frame,
+          int body) {
+    const double size = vector.norm();
+    const ex magnitude = params_("F_" + name, size);
+    V3 v = size > 0 ? magnitude * to_v3(vector / size) : V3{};
+    if (signal >= 0) v = input_of_signal_[static_cast<std::size_t>(signal)] * v;
+    if (frame == model::LoadFrame::body) v = R_WB_[body] * v;
+    return v;
+  }
+
+  // M, g, the rest and Q of each free speed; tidied where small enough to expand (a general 3-D
+  // tree's entries multiply out into more terms than any reader wants, and than time allows: they
+  // are kept as the recursion built them, exact all the same).
+  void split() {
+    const auto& free = impl_.free;
+    const int n = static_cast<int>(free.size());
+    impl_.M = GiNaC::matrix(static_cast<unsigned>(n), static_cast<unsigned>(n));
+    impl_.rest.clear();
+    impl_.g.clear();
+    impl_.Q.clear();
+    for (int r = 0; r < n; ++r) {
+      const auto row = static_cast<std::size_t>(free[r]);
+      for (int c = 0; c < n; ++c) {
+        impl_.M(static_cast<unsigned>(r), static_cast<unsigned>(c)) =
+            tidy_if_small(mass_columns_[static_cast<std::size_t>(c)][row]);
+      }
+      const ex g = tidy_if_small(tau_gravity_[row]);
+      impl_.g.push_back(g);
+      impl_.rest.push_back(tidy_if_small(tau_no_acceleration_[row] - tau_gravity_[row]));
+      impl_.Q.push_back(tidy_if_small(Q_[row]));
+    }
+  }
+
+  const model::Model& model_;
+  Parameters params_;
+  Equations::Impl impl_;
+  std::vector<std::pair<ex, ex>> rates_;  // (coordinate symbol, its rate)
+  std::vector<ex> input_of_signal_;
+  std::vector<M3> R_PC_, R_WB_;
+  std::vector<V3> p_PC_, p_WB_;
+  std::vector<Motion> V_;  // body velocities (in B), for the elements
+  std::vector<std::vector<Motion>> S_, dS_;
+  std::vector<Inertia> inertias_;
+  V3 base_acceleration_;
+  std::vector<ex> tau_no_acceleration_, tau_gravity_, Q_;
+  std::vector<std::vector<ex>> mass_columns_;
+};
+
+}  // namespace
+
+Equations::Equations(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
+Equations::~Equations() = default;
+Equations::Equations(const Equations&) = default;
+Equations& Equations::operator=(const Equations&) = default;
+
+const std::vector<std::string>& Equations::configuration_names() const { return impl_->q_names; }
+const std::vector<std::string>& Equations::speed_names() const { return impl_->v_names; }
+const std::vector<std::string>& Equations::acceleration_names() const { return impl_->a_names; }
+const std::vector<int>& Equations::free_speeds() const { return impl_->free; }
+const std::vector<std::string>& Equations::input_names() const { return impl_->input_names; }
+const std::vector<Parameter>& Equations::parameters() const { return impl_->parameters; }
+
+Equations derive_equations(const model::Model& model, const EquationOptions& options) {
+  Derivation derivation(model, options);
+  return Equations(std::make_shared<const Equations::Impl>(derivation.run()));
+}
+
+std::vector<std::string> parameter_names(const model::Model& model) {
+  Derivation derivation(model, {});
+  return derivation.parameter_names();
+}
+
+}  // namespace momenta::symbolic

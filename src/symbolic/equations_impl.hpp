@@ -1,0 +1,31 @@
+#pragma once
+// What symbolic::Equations holds: the symbols and the derived expressions (equations.cpp derives
+// them, printing.cpp prints them and generates code).
+
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+
+#include "momenta/symbolic/equations.hpp"
+
+namespace momenta::symbolic {
+
+struct Equations::Impl {
+  // Per model coordinate: the expression standing for q_i, v_i and v̇_i (a symbol of its own, or
+  // a prescribing signal's value, rate and acceleration).
+  std::vector<GiNaC::ex> q, v, vdot;
+  std::vector<std::string> q_names, v_names, a_names;
+  std::vector<int> free;  // model v indices with an equation
+  // Signals that scale loads (inputs u), and the parameters kept as symbols.
+  std::vector<GiNaC::symbol> inputs;
+  std::vector<std::string> input_names;
+  std::vector<GiNaC::symbol> parameter_symbols;
+  std::vector<Parameter> parameters;
+  // The equations: for each free speed k, Σ_j M(k, j) v̇_j + rest[k] + g[k] = Q[k].
+  GiNaC::matrix M;
+  std::vector<GiNaC::ex> rest, g, Q;
+  int nq = 0, nv = 0;
+};
+
+}  // namespace momenta::symbolic

@@ -1,0 +1,292 @@
+// Printing the equations (text, LaTeX, C++, Python), evaluating them at a state, and generating
+// code (equations.hpp).
+
+#include <iostream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "code_emitter.hpp"
+#include "equations_impl.hpp"
+#include "momenta/common/error.hpp"
+
+namespace momenta::symbolic {
+namespace detail {
+
+// The parent's name as GiNaC registered it, unqualified: the macros look the parent up by it.
+using GiNaC::print_dflt;
+using GiNaC::print_latex;
+
+// Text and LaTeX with numbers as decimals: an exact rational that came from a short decimal
+// prints as that decimal (981/100 as 9.81), a float with the shortest digits that read back.
+class decimal_text : public print_dflt {
+  GINAC_DECLARE_PRINT_CONTEXT(decimal_text, print_dflt)
+ public:
+  explicit decimal_text(std::ostream& os, unsigned flags = 0) : print_dflt(os, flags) {}
+};
+GINAC_IMPLEMENT_PRINT_CONTEXT(decimal_text, print_dflt)
+
+class decimal_latex : public print_latex {
+  GINAC_DECLARE_PRINT_CONTEXT(decimal_latex, print_latex)
+ public:
+  explicit decimal_latex(std::ostream& os, unsigned flags = 0) : print_latex(os, flags) {}
+};
+GINAC_IMPLEMENT_PRINT_CONTEXT(decimal_latex, print_latex)
+
+decimal_text::decimal_text() : print_dflt(std::cout) {}
+decimal_latex::decimal_latex() : print_latex(std::cout) {}
+
+}  // namespace detail
+
+namespace {
+
+using detail::decimal_latex;
+using detail::decimal_text;
+
+using GiNaC::ex;
+using GiNaC::symbol;
+
+void print_decimal(const GiNaC::numeric& n, const GiNaC::print_context& c, unsigned level) {
+  if (n.is_integer()) {
+    c.s << n;
+    return;
+  }
+  // An exact rational (from a short decimal) reads back exactly; a float shows 12 digits (the
+  // generated code keeps all 17).
+  const double x = n.to_double();
+  const bool parenthesize = x < 0 && level > 0;
+  if (parenthesize) c.s << "(";
+  c.s << (n.is_rational() ? fmt::format("{}", x) : fmt::format("{:.12g}", x));
+  if (parenthesize) c.s << ")";
+}
+
+// Registered once, before the first print.
+void register_printers() {
+  static const bool done = [] {
+    GiNaC::set_print_func<GiNaC::numeric, decimal_text>(print_decimal);
+    GiNaC::set_print_func<GiNaC::numeric, decimal_latex>(print_decimal);
+    return true;
+  }();
+  (void)done;
+}
+
+std::string print(const ex& e, Format format) {
+  register_printers();
+  std::ostringstream os;
+  switch (format) {
+    case Format::text:
+      e.print(decimal_text(os));
+      break;
+    case Format::latex:
+      e.print(decimal_latex(os));
+      break;
+    case Format::cpp:
+      e.print(GiNaC::print_csrc_double(os));
+      break;
+    case Format::python:
+      e.print(GiNaC::print_python(os));
+      break;
+  }
+  return os.str();
+}
+
+// Splits Q into the terms with an input (the right-hand side, as a textbook writes u) and the
+// rest (moved to the left).
+std::pair<ex, ex> split_inputs(const ex& Q, const std::vector<symbol>& inputs) {
+  ex with = 0, without = 0;
+  const ex e = GiNaC::expand(Q);
+  const auto has_input = [&](const ex& term) {
+    for (const symbol& u : inputs)
+      if (term.has(u)) return true;
+    return false;
+  };
+  if (GiNaC::is_a<GiNaC::add>(e)) {
+    for (const ex& term : e) (has_input(term) ? with : without) += term;
+  } else {
+    (has_input(e) ? with : without) += e;
+  }
+  return {with, without};
+}
+
+void check_row(const Equations::Impl& impl, int row, const char* what) {
+  if (row < 0 || row >= static_cast<int>(impl.free.size())) {
+    throw InvalidArgument(
+        fmt::format("Equations::{}: row {} outside [0, {})", what, row, impl.free.size()));
+  }
+}
+
+// The map from every symbol to numbers: coordinates, speeds, accelerations, inputs, parameters.
+GiNaC::exmap numbers_for(const Equations::Impl& impl, const VecX& q, const VecX& v,
+                         const VecX& vdot, const VecX& u) {
+  GiNaC::exmap m;
+  const auto put = [&](const ex& s, double x) {
+    if (GiNaC::is_a<symbol>(s)) m[s] = GiNaC::numeric(x);
+  };
+  for (int i = 0; i < impl.nq; ++i) put(impl.q[i], q[i]);
+  for (int i = 0; i < impl.nv; ++i) {
+    put(impl.v[i], v[i]);
+    put(impl.vdot[i], vdot[i]);
+  }
+  for (std::size_t k = 0; k < impl.inputs.size(); ++k)
+    put(impl.inputs[k], u[static_cast<Eigen::Index>(k)]);
+  for (std::size_t k = 0; k < impl.parameters.size(); ++k)
+    put(impl.parameter_symbols[k], impl.parameters[k].value);
+  return m;
+}
+
+double to_double(const ex& e) {
+  const ex x = GiNaC::evalf(e);
+  if (!GiNaC::is_a<GiNaC::numeric>(x)) {
+    throw NumericalError(fmt::format("Equations::evaluate: '{}' did not reduce to a number",
+                                     print(e, Format::text)));
+  }
+  return GiNaC::ex_to<GiNaC::numeric>(x).to_double();
+}
+
+// Code symbols: q[i], v[i], vdot[i], u[k]; parameters keep their names (declared as constants).
+GiNaC::exmap code_symbols(const Equations::Impl& impl) {
+  GiNaC::exmap m;
+  const auto put = [&](const ex& s, const std::string& name) {
+    if (GiNaC::is_a<symbol>(s) && m.count(s) == 0) m[s] = symbol(name);
+  };
+  for (int i = 0; i < impl.nq; ++i) put(impl.q[i], fmt::format("q[{}]", i));
+  for (int i = 0; i < impl.nv; ++i) {
+    put(impl.v[i], fmt::format("v[{}]", i));
+    put(impl.vdot[i], fmt::format("vdot[{}]", i));
+  }
+  for (std::size_t k = 0; k < impl.inputs.size(); ++k) put(impl.inputs[k], fmt::format("u[{}]", k));
+  return m;
+}
+
+}  // namespace
+
+std::string Equations::mass_matrix_entry(int row, int column, Format format) const {
+  check_row(*impl_, row, "mass_matrix_entry");
+  check_row(*impl_, column, "mass_matrix_entry");
+  return print(impl_->M(static_cast<unsigned>(row), static_cast<unsigned>(column)), format);
+}
+
+std::string Equations::velocity_product(int row, Format format) const {
+  check_row(*impl_, row, "velocity_product");
+  return print(impl_->rest[static_cast<std::size_t>(row)], format);
+}
+
+std::string Equations::gravity(int row, Format format) const {
+  check_row(*impl_, row, "gravity");
+  return print(impl_->g[static_cast<std::size_t>(row)], format);
+}
+
+std::string Equations::generalized_force(int row, Format format) const {
+  check_row(*impl_, row, "generalized_force");
+  return print(impl_->Q[static_cast<std::size_t>(row)], format);
+}
+
+std::string Equations::equation(int row, Format format) const {
+  check_row(*impl_, row, "equation");
+  const auto r = static_cast<std::size_t>(row);
+  const auto [right, moved] = split_inputs(impl_->Q[r], impl_->inputs);
+  ex left = impl_->rest[r] + impl_->g[r] - moved;
+  GiNaC::lst accelerations;
+  for (std::size_t c = 0; c < impl_->free.size(); ++c) {
+    left += impl_->M(static_cast<unsigned>(row), static_cast<unsigned>(c)) *
+            impl_->vdot[static_cast<std::size_t>(impl_->free[c])];
+    accelerations.append(impl_->vdot[static_cast<std::size_t>(impl_->free[c])]);
+  }
+  left = GiNaC::collect(GiNaC::expand(left), accelerations);
+  return print(left, format) + (format == Format::latex ? " = " : " = ") + print(right, format);
+}
+
+void Equations::evaluate(const VecX& q, const VecX& v, const VecX& vdot, const VecX& u, MatX& M,
+                         VecX& bias) const {
+  const Impl& impl = *impl_;
+  if (q.size() != impl.nq || v.size() != impl.nv || vdot.size() != impl.nv ||
+      u.size() != static_cast<Eigen::Index>(impl.inputs.size())) {
+    throw InvalidArgument(fmt::format(
+        "Equations::evaluate: q, v, vdot, u have {}, {}, {}, {} values; expected {}, {}, {}, {}",
+        q.size(), v.size(), vdot.size(), u.size(), impl.nq, impl.nv, impl.nv, impl.inputs.size()));
+  }
+  const GiNaC::exmap numbers = numbers_for(impl, q, v, vdot, u);
+  const auto n = static_cast<Eigen::Index>(impl.free.size());
+  M.resize(n, n);
+  bias.resize(n);
+  for (Eigen::Index r = 0; r < n; ++r) {
+    for (Eigen::Index c = 0; c < n; ++c)
+      M(r, c) = to_double(impl.M(static_cast<unsigned>(r), static_cast<unsigned>(c)).subs(numbers));
+    const auto k = static_cast<std::size_t>(r);
+    bias[r] = to_double((impl.rest[k] + impl.g[k] - impl.Q[k]).subs(numbers));
+  }
+}
+
+std::string Equations::generate_code(Format language, const std::string& name) const {
+  if (language != Format::cpp && language != Format::python) {
+    throw InvalidArgument("Equations::generate_code: the language is cpp or python");
+  }
+  const Impl& impl = *impl_;
+  const GiNaC::exmap code = code_symbols(impl);
+  const std::size_t n = impl.free.size();
+  const bool cpp = language == Format::cpp;
+  using detail::CodeEmitter;
+  const CodeEmitter::Language lang =
+      cpp ? CodeEmitter::Language::cpp : CodeEmitter::Language::python;
+  const std::string indent = cpp ? "  " : "    ";
+
+  // M's entries and b's, each function's shared subexpressions computed once.
+  CodeEmitter mass(lang, indent, code), bias(lang, indent, code);
+  std::vector<std::string> M_entries, b_entries;
+  for (std::size_t r = 0; r < n; ++r)
+    for (std::size_t c = 0; c < n; ++c)
+      M_entries.push_back(mass(impl.M(static_cast<unsigned>(r), static_cast<unsigned>(c))));
+  for (std::size_t r = 0; r < n; ++r)
+    b_entries.push_back(bias(impl.rest[r] + impl.g[r] - impl.Q[r]));
+
+  std::string out;
+  if (cpp) {
+    out += fmt::format(
+        "// Generated by `momenta equations --cpp`: M(q) vdot_free + b(q, v, vdot, u) = 0 "
+        "(docs/equations.md).\n// q, v, vdot: the model's coordinates, speeds and accelerations "
+        "(prescribed ones included); u: the inputs.\n#pragma once\n#include <cmath>\n\nnamespace "
+        "{} {{\n\ninline constexpr int nq = {}, nv = {}, nfree = {}, nu = {};\n",
+        name, impl.nq, impl.nv, n, impl.inputs.size());
+    out += fmt::format("// Speeds with an equation (indices into v): {}\n",
+                       fmt::join(impl.free, ", "));
+    for (const Parameter& p : impl.parameters)
+      out += fmt::format("inline constexpr double {} = {:.17g};\n", p.name, p.value);
+    out +=
+        "\n// M: nfree × nfree, row-major.\ninline void mass_matrix(const double* q, double* M) {\n"
+        "  (void)q;\n" +
+        mass.lines();
+    for (std::size_t k = 0; k < M_entries.size(); ++k)
+      out += fmt::format("  M[{}] = {};\n", k, M_entries[k]);
+    out +=
+        "}\n\n// b = C(q, v) v + g(q) − Q(q, v, u), with the prescribed accelerations' terms.\n"
+        "inline void bias(const double* q, const double* v, const double* vdot, const double* "
+        "u, double* b) {\n  (void)q; (void)v; (void)vdot; (void)u;\n" +
+        bias.lines();
+    for (std::size_t k = 0; k < b_entries.size(); ++k)
+      out += fmt::format("  b[{}] = {};\n", k, b_entries[k]);
+    out += fmt::format("}}\n\n}}  // namespace {}\n", name);
+    return out;
+  }
+  out += fmt::format(
+      "\"\"\"{}: generated by `momenta equations --python`. M(q) vdot_free + b(q, v, vdot, u) = 0 "
+      "(docs/equations.md).\n\nq, v, vdot: the model's coordinates, speeds and accelerations "
+      "(prescribed ones included); u: the inputs.\n\"\"\"\nfrom math import cos, sin, sqrt\n\n"
+      "nq, nv, nfree, nu = {}, {}, {}, {}\nfree_speeds = [{}]\n",
+      name, impl.nq, impl.nv, n, impl.inputs.size(), fmt::join(impl.free, ", "));
+  for (const Parameter& p : impl.parameters) out += fmt::format("{} = {:.17g}\n", p.name, p.value);
+  out += "\n\ndef mass_matrix(q):\n    \"\"\"M as a list of rows.\"\"\"\n" + mass.lines() +
+         "    return [\n";
+  for (std::size_t r = 0; r < n; ++r) {
+    out += "        [";
+    for (std::size_t c = 0; c < n; ++c) out += (c ? ", " : "") + M_entries[r * n + c];
+    out += "],\n";
+  }
+  out +=
+      "    ]\n\n\ndef bias(q, v, vdot, u):\n    \"\"\"b = C v + g - Q, one per free "
+      "speed.\"\"\"\n" +
+      bias.lines() + "    return [" + fmt::format("{}", fmt::join(b_entries, ", ")) + "]\n";
+  return out;
+}
+
+}  // namespace momenta::symbolic

@@ -1,0 +1,268 @@
+// Symbolic equations of motion (symbolic/equations.hpp) against the numeric engine: M against
+// CRBA and M v̇ + b = 0 with v̇ from forward dynamics (ABA, hybrid where joints are prescribed,
+// the force elements included) at random states of every bundled example it writes and of random
+// trees of every joint type; the lumped classics against their textbook forms; the generated C++
+// (compiled into this test) and Python against the same numbers.
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <ginac/ginac.h>
+#include <gtest/gtest.h>
+
+#include "momenta/common/error.hpp"
+#include "momenta/dynamics/crba.hpp"
+#include "momenta/io/model_file.hpp"
+#include "momenta/symbolic/equations.hpp"
+#include "momenta/system/multibody_system.hpp"
+#include "momenta_test/multibody_models.hpp"
+#include "momenta_test/scratch_dir.hpp"
+#include "momenta_test/tolerance.hpp"
+
+// Generated at build time by `momenta equations --cpp` (tests/CMakeLists.txt).
+#include "double_pendulum_eom.hpp"
+#include "quarter_car_eom.hpp"
+
+namespace momenta {
+namespace {
+
+using test::random_configuration;
+using test::random_vector;
+
+// The instant (q, v, v̇, u) a model is at: a random state, prescribed coordinates from their
+// signals at t, v̇ from the numeric forward dynamics, u the signals that scale loads.
+struct NumericInstant {
+  VecX q, v, vdot, u;
+  MatX M_free;  // CRBA's mass matrix on the free speeds
+};
+
+NumericInstant numeric_instant(const model::Model& model, const symbolic::Equations& e,
+                               std::mt19937& rng, double t) {
+  system::MultibodySystem system(model);
+  NumericInstant s;
+  // Quaternions anywhere; the other coordinates within 0.05 of the initial ones (a spring along
+  // a fixed line is written as ±(x_b − x_a) with the sign at the initial configuration: valid
+  // while it does not pass through zero length, which ±1 m of travel in a quarter car would).
+  VecX q = random_configuration(model, rng), v = random_vector(model.nv(), rng, 2.0);
+  const VecX q0 = model.initial_q(), dq = random_vector(model.nq(), rng, 0.05);
+  for (const model::Joint& j : model.joints()) {
+    if (j.nq() != j.nv()) continue;
+    for (int k = 0; k < j.nq(); ++k) q[j.q_index + k] = q0[j.q_index + k] + dq[j.q_index + k];
+  }
+  system.evaluate(t, q, v);
+  s.q = system.evaluated_q();
+  s.v = system.evaluated_v();
+  s.vdot = system.data().vdot;
+  s.u.resize(static_cast<Eigen::Index>(e.input_names().size()));
+  for (std::size_t k = 0; k < e.input_names().size(); ++k) {
+    s.u[static_cast<Eigen::Index>(k)] =
+        model.signals()[*model.find_signal(e.input_names()[k])].value(t);
+  }
+  dynamics::Data data(model);
+  const MatX& M = dynamics::crba(model, data, s.q);
+  const auto& free = e.free_speeds();
+  const auto n = static_cast<Eigen::Index>(free.size());
+  s.M_free.resize(n, n);
+  for (Eigen::Index r = 0; r < n; ++r)
+    for (Eigen::Index c = 0; c < n; ++c)
+      s.M_free(r, c) = M(free[static_cast<std::size_t>(r)], free[static_cast<std::size_t>(c)]);
+  return s;
+}
+
+VecX free_part(const VecX& x, const std::vector<int>& free) {
+  VecX y(static_cast<Eigen::Index>(free.size()));
+  for (std::size_t k = 0; k < free.size(); ++k) y[static_cast<Eigen::Index>(k)] = x[free[k]];
+  return y;
+}
+
+// M to 1e-12 of its largest entry; the residual M v̇ + b to 1e-12 of the largest of |M v̇| and
+// |b| (the terms that cancel): both sides are sums of O(10) products evaluated in double, where
+// a wrong term shows at O(1).
+void expect_matches_numerics(const model::Model& model, const symbolic::Equations& e, unsigned seed,
+                             int states) {
+  if (e.free_speeds().empty()) return;  // all motion prescribed: no equation to check
+  std::mt19937 rng(seed);
+  for (int k = 0; k < states; ++k) {
+    const double t = 0.37 * k;
+    const NumericInstant s = numeric_instant(model, e, rng, t);
+    MatX M;
+    VecX bias;
+    e.evaluate(s.q, s.v, s.vdot, s.u, M, bias);
+    const double M_scale = s.M_free.cwiseAbs().maxCoeff();
+    EXPECT_MATRIX_NEAR(M, s.M_free, 1e-12 * M_scale) << "state " << k;
+    const VecX Mv = M * free_part(s.vdot, e.free_speeds());
+    const double scale = std::max({Mv.cwiseAbs().maxCoeff(), bias.cwiseAbs().maxCoeff(), 1e-300});
+    EXPECT_MATRIX_NEAR(Mv + bias, VecX::Zero(bias.size()), 1e-12 * scale) << "state " << k;
+  }
+}
+
+std::string example(const std::string& name) {
+  return std::string(MOMENTA_SOURCE_DIR) + "/examples/" + name + ".yaml";
+}
+
+TEST(SymbolicEquations, BundledExamplesEqualCrbaAndForwardDynamics) {
+  for (const char* name : {"cruise_control", "quarter_car", "satellite_attitude", "pendulum",
+                           "compound_pendulum", "double_pendulum", "free_body_tennis_racket",
+                           "heavy_top", "sleeping_top", "gyroscope", "rotating_shaft_bent_rod",
+                           "rotor_on_bearings", "unbalanced_rotor", "kinematics/turntable_bead"}) {
+    SCOPED_TRACE(name);
+    const io::ModelFile file = io::read_model_file(example(name));
+    const symbolic::Equations e = symbolic::derive_equations(file.model);
+    expect_matches_numerics(file.model, e, 7, 3);
+  }
+}
+
+TEST(SymbolicEquations, RandomTreesOfEveryJointTypeEqualCrbaAndForwardDynamics) {
+  using model::JointType;
+  const std::vector<std::vector<JointType>> families = {
+      {JointType::revolute, JointType::prismatic, JointType::universal, JointType::fixed},
+      {JointType::cylindrical, JointType::planar, JointType::revolute},
+      {JointType::spherical, JointType::revolute, JointType::prismatic},
+      {JointType::free, JointType::universal, JointType::spherical}};
+  unsigned seed = 11;
+  for (const auto& types : families) {
+    SCOPED_TRACE(seed);
+    const model::Model model = test::random_tree(2, seed++, types);
+    const symbolic::Equations e = symbolic::derive_equations(model);
+    expect_matches_numerics(model, e, seed, 2);
+  }
+}
+
+// Parameters as symbols evaluate to the same numbers as the numbers themselves.
+TEST(SymbolicEquations, SymbolsEvaluateAtTheModelsValues) {
+  const io::ModelFile file = io::read_model_file(example("double_pendulum"));
+  symbolic::EquationOptions options;
+  options.all_symbols = true;
+  const symbolic::Equations e = symbolic::derive_equations(file.model, options);
+  EXPECT_GE(e.parameters().size(), 5u);
+  expect_matches_numerics(file.model, e, 3, 2);
+}
+
+// A textbook form and the printed equation are the same expression: both parsed by GiNaC and
+// subtracted, lhs − rhs of each, the difference expands to 0.
+void expect_same_equation(const std::string& printed, const std::string& expected) {
+  GiNaC::parser reader;
+  const auto sides = [&](const std::string& equation) {
+    const auto eq = equation.find(" = ");
+    return reader(equation.substr(0, eq)) - reader(equation.substr(eq + 3));
+  };
+  EXPECT_TRUE(GiNaC::expand(sides(printed) - sides(expected)).is_zero())
+      << "printed: " << printed << "\nexpected: " << expected;
+}
+
+symbolic::Equations symbols_of(const std::string& name) {
+  symbolic::EquationOptions options;
+  options.all_symbols = true;
+  return symbolic::derive_equations(io::read_model_file(example(name)).model, options);
+}
+
+TEST(SymbolicEquations, LumpedClassicsReadAsTheTextbookWritesThem) {
+  // Cruise control (FPE ch. 2): m v̇ + b v = u, the engine's force u(t) on the right.
+  const symbolic::Equations cruise = symbols_of("cruise_control");
+  ASSERT_EQ(cruise.free_speeds().size(), 1u);
+  expect_same_equation(cruise.equation(0, symbolic::Format::text),
+                       "m_car*road_ddot + c_road*road_dot = F_engine*u");
+  // Satellite attitude: I θ̈ = F_c d (the thrusters' couple scaled by the signal).
+  expect_same_equation(symbols_of("satellite_attitude").equation(0, symbolic::Format::text),
+                       "I_satellite_zz*attitude_ddot = F_thrusters*thrust");
+  // Pendulum: I θ̈ + m g l sin θ = 0 with the bob at c_z = −l below the pivot.
+  expect_same_equation(symbols_of("pendulum").equation(0, symbolic::Format::text),
+                       "m_bob*c_bob_z^2*pivot_ddot - g*m_bob*c_bob_z*sin(pivot) = 0");
+  // Quarter car (FPE ch. 2), in numbers: the wheel and the body.
+  const symbolic::Equations car =
+      symbolic::derive_equations(io::read_model_file(example("quarter_car")).model);
+  expect_same_equation(car.equation(0, symbolic::Format::text),
+                       "20*wheel_travel_ddot + 9800*(wheel_travel_dot - body_travel_dot) + "
+                       "130000*(wheel_travel - body_travel) + 1000000*(wheel_travel - road) = 0");
+  expect_same_equation(car.equation(1, symbolic::Format::text),
+                       "375*body_travel_ddot + 9800*(body_travel_dot - wheel_travel_dot) + "
+                       "130000*(body_travel - wheel_travel) = 0");
+}
+
+TEST(SymbolicEquations, RefusesWhatItDoesNotWriteAndUnknownSymbols) {
+  EXPECT_THROW(
+      symbolic::derive_equations(io::read_model_file(example("constraints/four_bar")).model),
+      InvalidArgument);
+  symbolic::EquationOptions options;
+  options.symbols = {"m_bobb"};
+  try {
+    symbolic::derive_equations(io::read_model_file(example("pendulum")).model, options);
+    ADD_FAILURE() << "no error";
+  } catch (const InvalidArgument& error) {
+    EXPECT_NE(std::string(error.what()).find("did you mean 'm_bob'"), std::string::npos)
+        << error.what();
+  }
+}
+
+// The generated C++ (compiled in) computes the same M and b as the numeric engine.
+template <class Mass, class Bias>
+void expect_generated_code_matches(const std::string& name, int nfree, int nu, Mass mass_matrix,
+                                   Bias bias) {
+  const io::ModelFile file = io::read_model_file(example(name));
+  const symbolic::Equations e = symbolic::derive_equations(file.model);
+  std::mt19937 rng(5);
+  for (int k = 0; k < 3; ++k) {
+    const NumericInstant s = numeric_instant(file.model, e, rng, 0.2 * k);
+    std::vector<double> M(static_cast<std::size_t>(nfree * nfree)),
+        b(static_cast<std::size_t>(nfree));
+    mass_matrix(s.q.data(), M.data());
+    bias(s.q.data(), s.v.data(), s.vdot.data(), nu > 0 ? s.u.data() : nullptr, b.data());
+    const MatX M_code =
+        Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+            M.data(), nfree, nfree);
+    EXPECT_MATRIX_NEAR(M_code, s.M_free, 1e-12 * s.M_free.cwiseAbs().maxCoeff());
+    const VecX Mv = M_code * free_part(s.vdot, e.free_speeds());
+    const VecX b_code = Eigen::Map<const VecX>(b.data(), nfree);
+    const double scale = std::max(Mv.cwiseAbs().maxCoeff(), b_code.cwiseAbs().maxCoeff());
+    EXPECT_MATRIX_NEAR(Mv + b_code, VecX::Zero(nfree), 1e-12 * scale);
+  }
+}
+
+TEST(SymbolicEquations, GeneratedCppEqualsTheNumericEngine) {
+  expect_generated_code_matches("double_pendulum", double_pendulum_eom::nfree,
+                                double_pendulum_eom::nu, double_pendulum_eom::mass_matrix,
+                                double_pendulum_eom::bias);
+  expect_generated_code_matches("quarter_car", quarter_car_eom::nfree, quarter_car_eom::nu,
+                                quarter_car_eom::mass_matrix, quarter_car_eom::bias);
+}
+
+// The generated Python, run by python3, prints the same M and b as Equations::evaluate.
+TEST(SymbolicEquations, GeneratedPythonEqualsTheLibrary) {
+  const auto dir = test::make_scratch_dir("equations_python");
+  const io::ModelFile file = io::read_model_file(example("double_pendulum"));
+  const symbolic::Equations e = symbolic::derive_equations(file.model);
+  std::ofstream(dir / "eom.py") << e.generate_code(symbolic::Format::python, "eom");
+  std::ofstream(dir / "run.py") << "import eom\n"
+                                   "q = [0.3, -1.1]; v = [0.7, 2.2]; a = [0.0, 0.0]\n"
+                                   "for row in eom.mass_matrix(q): print(*[repr(x) for x in row])\n"
+                                   "print(*[repr(x) for x in eom.bias(q, v, a, [])])\n";
+  const std::string command = "cd '" + dir.string() + "' && python3 run.py > out.txt";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  std::ifstream in(dir / "out.txt");
+  VecX q(2), v(2), a = VecX::Zero(2);
+  q << 0.3, -1.1;
+  v << 0.7, 2.2;
+  MatX M;
+  VecX b;
+  e.evaluate(q, v, a, VecX(), M, b);
+  double x;
+  for (int r = 0; r < 2; ++r)
+    for (int c = 0; c < 2; ++c) {
+      ASSERT_TRUE(in >> x);
+      EXPECT_NEAR(x, M(r, c), 1e-13 * M.cwiseAbs().maxCoeff());
+    }
+  for (int r = 0; r < 2; ++r) {
+    ASSERT_TRUE(in >> x);
+    EXPECT_NEAR(x, b[r], 1e-13 * b.cwiseAbs().maxCoeff());
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace momenta
