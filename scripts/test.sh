@@ -7,6 +7,7 @@ cd "$(dirname "$0")/.."
 scripts/bootstrap.sh
 if [[ "${1:-}" == "--sanitize" ]]; then
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan-suppressions.txt"
   # -O1 -g1 (line tables for the reports' stack traces): what the sanitizers recommend, and half
   # the compile time of -O2 -g on this 2-core machine.
   BUILD_TYPE=RelWithDebInfo scripts/build.sh build-sanitize -DMOMENTA_SANITIZE=ON \

@@ -1,7 +1,9 @@
 // Printing the equations (text, LaTeX, C++, Python), evaluating them at a state, and generating
 // code (equations.hpp).
 
+#include <cmath>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -135,14 +137,51 @@ GiNaC::exmap numbers_for(const Equations::Impl& impl, const VecX& q, const VecX&
   return m;
 }
 
-double to_double(const ex& e) {
-  const ex x = GiNaC::evalf(e);
-  if (!GiNaC::is_a<GiNaC::numeric>(x)) {
-    throw NumericalError(fmt::format("Equations::evaluate: '{}' did not reduce to a number",
-                                     print(e, Format::text)));
+// The value of an expression with every symbol given a number, each distinct subexpression
+// evaluated once (the entries share most of theirs: substituting into each as a tree would take
+// time exponential in the depth of the tree of bodies).
+class Evaluator {
+ public:
+  explicit Evaluator(const GiNaC::exmap& numbers) : numbers_(numbers) {}
+  double operator()(const ex& e) {
+    if (GiNaC::is_a<GiNaC::numeric>(e)) return GiNaC::ex_to<GiNaC::numeric>(e).to_double();
+    if (const auto it = memo_.find(e); it != memo_.end()) return it->second;
+    const double x = compute(e);
+    memo_.emplace(e, x);
+    return x;
   }
-  return GiNaC::ex_to<GiNaC::numeric>(x).to_double();
-}
+
+ private:
+  double compute(const ex& e) {
+    if (GiNaC::is_a<symbol>(e)) {
+      const auto it = numbers_.find(e);
+      if (it == numbers_.end()) {
+        throw InvalidArgument(fmt::format("Equations::evaluate: no value for '{}'",
+                                          GiNaC::ex_to<symbol>(e).get_name()));
+      }
+      return GiNaC::ex_to<GiNaC::numeric>(it->second).to_double();
+    }
+    if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
+      const bool sum = GiNaC::is_a<GiNaC::add>(e);
+      double x = sum ? 0.0 : 1.0;
+      for (std::size_t i = 0; i < e.nops(); ++i)
+        x = sum ? x + (*this)(e.op(i)) : x * (*this)(e.op(i));
+      return x;
+    }
+    if (GiNaC::is_a<GiNaC::power>(e)) return std::pow((*this)(e.op(0)), (*this)(e.op(1)));
+    if (GiNaC::is_a<GiNaC::function>(e)) {
+      const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+      const double x = (*this)(e.op(0));
+      if (name == "sin") return std::sin(x);
+      if (name == "cos") return std::cos(x);
+      if (name == "sqrt") return std::sqrt(x);
+    }
+    throw InvalidArgument(
+        fmt::format("Equations::evaluate: cannot evaluate '{}'", print(e, Format::text)));
+  }
+  const GiNaC::exmap& numbers_;
+  std::map<ex, double, GiNaC::ex_is_less> memo_;
+};
 
 // Code symbols: q[i], v[i], vdot[i], u[k]; parameters keep their names (declared as constants).
 GiNaC::exmap code_symbols(const Equations::Impl& impl) {
@@ -207,14 +246,15 @@ void Equations::evaluate(const VecX& q, const VecX& v, const VecX& vdot, const V
         q.size(), v.size(), vdot.size(), u.size(), impl.nq, impl.nv, impl.nv, impl.inputs.size()));
   }
   const GiNaC::exmap numbers = numbers_for(impl, q, v, vdot, u);
+  Evaluator value(numbers);
   const auto n = static_cast<Eigen::Index>(impl.free.size());
   M.resize(n, n);
   bias.resize(n);
   for (Eigen::Index r = 0; r < n; ++r) {
     for (Eigen::Index c = 0; c < n; ++c)
-      M(r, c) = to_double(impl.M(static_cast<unsigned>(r), static_cast<unsigned>(c)).subs(numbers));
+      M(r, c) = value(impl.M(static_cast<unsigned>(r), static_cast<unsigned>(c)));
     const auto k = static_cast<std::size_t>(r);
-    bias[r] = to_double((impl.rest[k] + impl.g[k] - impl.Q[k]).subs(numbers));
+    bias[r] = value(impl.rest[k]) + value(impl.g[k]) - value(impl.Q[k]);
   }
 }
 
