@@ -7,7 +7,8 @@ cd "$(dirname "$0")/.."
 scripts/bootstrap.sh
 if [[ "${1:-}" == "--sanitize" ]]; then
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-  export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan-suppressions.txt"
+  # print_suppressions=0: the summary of what was suppressed would add lines to every stderr.
+  export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan-suppressions.txt:print_suppressions=0"
   # -O1 -g1 (line tables for the reports' stack traces): what the sanitizers recommend, and half
   # the compile time of -O2 -g on this 2-core machine.
   BUILD_TYPE=RelWithDebInfo scripts/build.sh build-sanitize -DMOMENTA_SANITIZE=ON \
