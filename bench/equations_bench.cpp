@@ -26,9 +26,10 @@ using namespace momenta;
 model::Model n_link_pendulum(int n) {
   std::string text = "name: pendulum chain\ngravity: [0, -9.81, 0]\nbodies:\n";
   for (int i = 0; i < n; ++i)
-    text += fmt::format("  - {{name: link{}, mass: 1, com: [0.5, 0, 0], inertia: [0.001, "
-                        "0.0833, 0.0833]}}\n",
-                        i);
+    text += fmt::format(
+        "  - {{name: link{}, mass: 1, com: [0.5, 0, 0], inertia: [0.001, "
+        "0.0833, 0.0833]}}\n",
+        i);
   text += "joints:\n";
   for (int i = 0; i < n; ++i) {
     text += fmt::format(

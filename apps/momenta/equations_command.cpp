@@ -2,7 +2,6 @@
 // [--latex|--json|--cpp|--python]`: a model's equations of motion in symbols. Calls
 // momenta::symbolic (equations.hpp); documented in docs/equations.md and docs/cli.md.
 
-#include <cctype>
 #include <memory>
 #include <string>
 #include <vector>
@@ -90,12 +89,8 @@ void run(const EquationsOptions& o) {
   options.all_symbols = o.all_symbols;
   const symbolic::Equations e = symbolic::derive_equations(file.model, options);
   if (o.cpp || o.python) {
-    std::string name = o.name;
-    if (name.empty()) {
-      for (char c : file.name) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-    }
-    fmt::print("{}",
-               e.generate_code(o.cpp ? symbolic::Format::cpp : symbolic::Format::python, name));
+    fmt::print("{}", e.generate_code(o.cpp ? symbolic::Format::cpp : symbolic::Format::python,
+                                     o.name.empty() ? file.name : o.name));
   } else if (o.json) {
     fmt::print("{}\n", json_text(equations_json(file, e), ListSpacing::spaced));
   } else {

@@ -143,13 +143,12 @@ void read_prescribed(const YamlNode& e, model::Joint& j, const Context& ctx) {
   }
   const std::vector<YamlNode> refs = node.is_sequence() ? node.elements() : std::vector{node};
   if (static_cast<int>(refs.size()) != j.nv()) {
-    const char* hint = j.type == model::JointType::spherical
-                           ? " (its rotation vector φx, φy, φz)"
+    const char* hint = j.type == model::JointType::spherical ? " (its rotation vector φx, φy, φz)"
                        : j.type == model::JointType::free
                            ? " (its rotation vector φx, φy, φz, then its position x, y, z)"
                            : "";
-    node.fail(fmt::format("{} signals given; a {} joint needs {}{}", refs.size(), type, j.nv(),
-                          hint));
+    node.fail(
+        fmt::format("{} signals given; a {} joint needs {}{}", refs.size(), type, j.nv(), hint));
   }
   for (const YamlNode& ref : refs) j.prescribed_signals.push_back(ctx.signals.resolve(ref));
 }

@@ -15,13 +15,8 @@
 #include "momenta/common/suggest.hpp"
 
 namespace momenta::symbolic {
-namespace {
 
-using GiNaC::ex;
-using GiNaC::symbol;
-using namespace detail;
-
-// A name fit for code and for GiNaC's parser: letters, digits and '_'.
+namespace detail {
 std::string identifier(const std::string& name) {
   std::string s = name;
   for (char& c : s)
@@ -29,15 +24,18 @@ std::string identifier(const std::string& name) {
   if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) s = "_" + s;
   return s;
 }
+}  // namespace detail
+
+namespace {
+
+using GiNaC::ex;
+using GiNaC::symbol;
+using namespace detail;
 
 std::string latex_name(const std::string& name) {
   std::string s;
   for (char c : name) s += c == '_' ? std::string("\\_") : std::string(1, c);
   return "\\mathrm{" + s + "}";
-}
-
-symbol make_symbol(const std::string& name, const std::string& latex) {
-  return symbol(name, latex);
 }
 
 // Parameters: a symbol where the options ask for one, else the number.
@@ -51,8 +49,7 @@ class Parameters {
     names_.push_back(name);
     if (value == 0.0) return 0;
     if (!all_ && asked_.count(name) == 0) return exact_number(value);
-    used_.insert(name);
-    const symbol s = make_symbol(name, latex_name(name));
+    const symbol s(name, latex_name(name));
     symbols_.push_back(s);
     values_.push_back({name, value});
     return s;
@@ -71,13 +68,12 @@ class Parameters {
                       did_you_mean(name, views), fmt::join(names_, ", ")));
     }
   }
-  const std::vector<std::string>& names() const { return names_; }
   std::vector<symbol> symbols_;
   std::vector<Parameter> values_;
 
  private:
   bool all_;
-  std::set<std::string> asked_, used_;
+  std::set<std::string> asked_;
   std::vector<std::string> names_;
 };
 
@@ -88,8 +84,6 @@ struct JointMotion {
   std::vector<Motion> S;
 };
 
-Motion unit_motion(const V3& w, const V3& v) { return {w, v}; }
-
 JointMotion joint_motion(const model::Joint& j, const std::vector<ex>& q, int qi) {
   const V3 a = to_v3(j.axis), a2 = to_v3(j.axis2), zero;
   JointMotion m;
@@ -99,21 +93,21 @@ JointMotion joint_motion(const model::Joint& j, const std::vector<ex>& q, int qi
       break;
     case model::JointType::revolute:
       m.R = axis_rotation(a, q[qi]);
-      m.S = {unit_motion(a, zero)};
+      m.S = {Motion{a, zero}};
       break;
     case model::JointType::prismatic:
       m.p = q[qi] * a;
-      m.S = {unit_motion(zero, a)};
+      m.S = {Motion{zero, a}};
       break;
     case model::JointType::cylindrical:
       m.R = axis_rotation(a, q[qi]);
       m.p = q[qi + 1] * a;
-      m.S = {unit_motion(a, zero), unit_motion(zero, a)};
+      m.S = {Motion{a, zero}, Motion{zero, a}};
       break;
     case model::JointType::universal: {
       const M3 R2 = axis_rotation(a2, q[qi + 1]);
       m.R = axis_rotation(a, q[qi]) * R2;
-      m.S = {unit_motion(transpose(R2) * a, zero), unit_motion(a2, zero)};
+      m.S = {Motion{transpose(R2) * a, zero}, Motion{a2, zero}};
       break;
     }
     case model::JointType::spherical:
@@ -121,7 +115,7 @@ JointMotion joint_motion(const model::Joint& j, const std::vector<ex>& q, int qi
       for (int k = 0; k < 3; ++k) {
         V3 e;
         e[k] = 1;
-        m.S.push_back(unit_motion(e, zero));
+        m.S.push_back(Motion{e, zero});
       }
       break;
     case model::JointType::planar: {
@@ -134,7 +128,7 @@ JointMotion joint_motion(const model::Joint& j, const std::vector<ex>& q, int qi
         c1[r] = Rt(r, 1);
       }
       z[2] = 1;
-      m.S = {unit_motion(zero, c0), unit_motion(zero, c1), unit_motion(z, zero)};
+      m.S = {Motion{zero, c0}, Motion{zero, c1}, Motion{z, zero}};
       break;
     }
     case model::JointType::free: {
@@ -144,12 +138,12 @@ JointMotion joint_motion(const model::Joint& j, const std::vector<ex>& q, int qi
       for (int k = 0; k < 3; ++k) {
         V3 e;
         e[k] = 1;
-        m.S.push_back(unit_motion(e, zero));
+        m.S.push_back(Motion{e, zero});
       }
       for (int k = 0; k < 3; ++k) {
         V3 c;
         for (int r = 0; r < 3; ++r) c[r] = Rt(r, k);
-        m.S.push_back(unit_motion(zero, c));
+        m.S.push_back(Motion{zero, c});
       }
       break;
     }
@@ -173,13 +167,6 @@ class Derivation {
     impl_.parameter_symbols = params_.symbols_;
     impl_.parameters = params_.values_;
     return std::move(impl_);
-  }
-  const std::vector<std::string>& parameter_names() {
-    make_coordinate_symbols();
-    make_input_symbols();
-    newton_euler();
-    element_forces();
-    return params_.names();
   }
 
  private:
@@ -614,11 +601,6 @@ const std::vector<Parameter>& Equations::parameters() const { return impl_->para
 Equations derive_equations(const model::Model& model, const EquationOptions& options) {
   Derivation derivation(model, options);
   return Equations(std::make_shared<const Equations::Impl>(derivation.run()));
-}
-
-std::vector<std::string> parameter_names(const model::Model& model) {
-  Derivation derivation(model, {});
-  return derivation.parameter_names();
 }
 
 }  // namespace momenta::symbolic

@@ -11,6 +11,11 @@
 
 namespace momenta::symbolic {
 
+namespace detail {
+/// A name fit for code and for GiNaC's parser: letters, digits and '_' (others become '_').
+std::string identifier(const std::string& name);
+}  // namespace detail
+
 struct Equations::Impl {
   // Per model coordinate: the expression standing for q_i, v_i and v̇_i (a symbol of its own, or
   // a prescribing signal's value, rate and acceleration).

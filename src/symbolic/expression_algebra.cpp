@@ -149,8 +149,7 @@ int expression_size(const ex& e, int cap) {
 
 ex tidy_if_small(const ex& e) {
   if (expression_size(e, kTidyNodes) > kTidyNodes) return e;
-  const ex t = tidy(e);
-  return t;
+  return tidy(e);
 }
 
 }  // namespace momenta::symbolic::detail

@@ -258,10 +258,11 @@ void Equations::evaluate(const VecX& q, const VecX& v, const VecX& vdot, const V
   }
 }
 
-std::string Equations::generate_code(Format language, const std::string& name) const {
+std::string Equations::generate_code(Format language, const std::string& module) const {
   if (language != Format::cpp && language != Format::python) {
     throw InvalidArgument("Equations::generate_code: the language is cpp or python");
   }
+  const std::string name = detail::identifier(module);
   const Impl& impl = *impl_;
   const GiNaC::exmap code = code_symbols(impl);
   const std::size_t n = impl.free.size();

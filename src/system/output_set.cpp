@@ -132,10 +132,9 @@ OutputSet::OutputSet(const model::Model& model, std::vector<OutputSpec> specs)
       }
       const std::optional<int> f = model.find_body(spec.relative_to);
       if (!f) {
-        std::vector<std::string_view> names;
-        for (const model::Body& b : model.bodies()) names.push_back(b.name);
-        throw InvalidArgument(fmt::format("output '{}': frame of unknown body '{}'{}", spec.name,
-                                          spec.relative_to, did_you_mean(spec.relative_to, names)));
+        throw InvalidArgument(fmt::format(
+            "output '{}': frame of unknown body '{}'{}", spec.name, spec.relative_to,
+            did_you_mean(spec.relative_to, candidate_names(model, model::OutputTargetKind::body))));
       }
       frame = *f;
     } else if (model::is_rotating_frame_term(spec.quantity)) {

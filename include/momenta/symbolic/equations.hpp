@@ -88,7 +88,8 @@ class Equations {
                 VecX& bias) const;
 
   /// A C++ or Python source that computes M(q) and b(q, v, u) (as `evaluate`, without the
-  /// substitution), in a namespace or module named `name`. See docs/equations.md.
+  /// substitution), in a namespace or module named `name` (made an identifier: other characters
+  /// become '_'). See docs/equations.md.
   std::string generate_code(Format language, const std::string& name) const;
 
   struct Impl;
@@ -103,8 +104,5 @@ class Equations {
 /// constraint, a two-body torsional spring, a prescribed ball or free joint), naming it, and for
 /// a name in options.symbols that is no parameter of the model (with the names it has).
 Equations derive_equations(const model::Model& model, const EquationOptions& options = {});
-
-/// Every parameter name the model has (what EquationOptions::symbols may name), in order.
-std::vector<std::string> parameter_names(const model::Model& model);
 
 }  // namespace momenta::symbolic

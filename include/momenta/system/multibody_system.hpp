@@ -134,7 +134,7 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   std::vector<model::SignalSample> samples_;  // every signal at the current instant
   std::vector<double> signal_values_;         // samples_[i].value, for force_element_forces
   std::vector<model::SignalSample> offsets_;  // see set_signal_offsets
-  mutable std::vector<model::SignalSample> applied_samples_;  // apply_prescribed_motion's
+  mutable std::vector<model::SignalSample> applied_samples_;   // apply_prescribed_motion's
   double step_end_ = std::numeric_limits<double>::infinity();  // see begin_step
   std::unique_ptr<ConstraintSolver> constraints_;              // null without constraints
   bool body_loads_ = false;  // some element acts on bodies (needs poses; f_ext is not zero)
