@@ -55,6 +55,7 @@ int main(int argc, char** argv) {
   momenta::cli::add_campbell_command(app);
   momenta::cli::add_steady_command(app);
   momenta::cli::add_kinematics_command(app);
+  momenta::cli::add_diagram_command(app);
   momenta::cli::add_equations_command(app);
   momenta::cli::add_sweep_command(app);
   momenta::cli::add_sweep_merge_command(app);

@@ -77,7 +77,8 @@ std::string json_text(const json& j, ListSpacing lists) {
 }
 
 std::string vec_text(const Vec3& v) {
-  return fmt::format("[{:.6g}, {:.6g}, {:.6g}]", v.x(), v.y(), v.z());
+  // + 0.0 writes a negative zero (a product's sign, not a value) as 0.
+  return fmt::format("[{:.6g}, {:.6g}, {:.6g}]", v.x() + 0.0, v.y() + 0.0, v.z() + 0.0);
 }
 
 void check_csv_target(const std::optional<std::string>& csv, bool force) {

@@ -87,6 +87,52 @@ void check_sizes(const Model& model, std::span<const double> signal_values,
   }
 }
 
+// Adds one element's generalized forces to tau and its wrenches to f_ext.
+void add_element(const Model& model, const Data& data, const model::ForceElement& element,
+                 std::span<const double> signal_values, VecRef q, VecRef v, VecX& tau,
+                 std::span<Vec6> f_ext) {
+  std::visit(
+      [&](const auto& e) {
+        using T = std::decay_t<decltype(e)>;
+        if constexpr (std::is_same_v<T, JointFriction>) {
+          const model::Joint& j = model.joint(e.joint_index);
+          tau.segment(j.v_index, j.nv()) -= e.viscous * v.segment(j.v_index, j.nv());
+        } else if constexpr (std::is_same_v<T, TorsionalSpringDamper>) {
+          if (e.joint_index >= 0) {
+            // On a 1-dof joint: τ = −k (q − rest) − c q̇.
+            const model::Joint& j = model.joint(e.joint_index);
+            tau[j.v_index] -=
+                e.stiffness * (q[j.q_index] - e.rest_angle) + e.damping * v[j.v_index];
+          } else {
+            // Between two bodies: n_B = −k θ − c (ω_B − ω_A) on b, in B; −n_B on a.
+            const int a = e.body_a_index, b = e.body_b_index;
+            const Mat3 R_BA = data.X_WB[b].R.transpose() * data.X_WB[a].R;
+            const Vec3 w_AB_B = data.V_WB_B[b].head<3>() - R_BA * data.V_WB_B[a].head<3>();
+            const Vec3 n_B = -e.stiffness * relative_rotation_vector(data, e) - e.damping * w_AB_B;
+            if (b != 0) f_ext[b].head<3>() += n_B;
+            if (a != 0) f_ext[a].head<3>() -= R_BA.transpose() * n_B;
+          }
+        } else if constexpr (std::is_same_v<T, LinearSpringDamper>) {
+          const Vec3 f_b_W = linear_spring_force_on_b(data, e);
+          add_force_at(data, e.b, f_b_W, f_ext);
+          add_force_at(data, e.a, -f_b_W, f_ext);
+        } else if constexpr (std::is_same_v<T, AppliedForce>) {
+          // A follower load turns with the body; a world load keeps its direction.
+          const int b = e.at.body_index;
+          const Vec3 f = load_scale(e.signal_index, signal_values) * e.vector;
+          const Vec3 f_B = e.frame == LoadFrame::body ? f : Vec3(data.X_WB[b].R.transpose() * f);
+          f_ext[b].head<3>() += e.at.p_BoP_B.cross(f_B);
+          f_ext[b].tail<3>() += f_B;
+        } else if constexpr (std::is_same_v<T, AppliedTorque>) {
+          const int b = e.body_index;
+          const Vec3 n = load_scale(e.signal_index, signal_values) * e.vector;
+          f_ext[b].head<3>() +=
+              e.frame == LoadFrame::body ? n : Vec3(data.X_WB[b].R.transpose() * n);
+        }
+      },
+      element);
+}
+
 }  // namespace
 
 void force_element_forces(const Model& model, const Data& data,
@@ -102,49 +148,21 @@ void force_element_forces(const Model& model, const Data& data,
       tau.segment(j.v_index, j.nv()) -= j.damping * v.segment(j.v_index, j.nv());
   }
 
-  for (const model::ForceElement& element : model.force_elements()) {
-    std::visit(
-        [&](const auto& e) {
-          using T = std::decay_t<decltype(e)>;
-          if constexpr (std::is_same_v<T, JointFriction>) {
-            const model::Joint& j = model.joint(e.joint_index);
-            tau.segment(j.v_index, j.nv()) -= e.viscous * v.segment(j.v_index, j.nv());
-          } else if constexpr (std::is_same_v<T, TorsionalSpringDamper>) {
-            if (e.joint_index >= 0) {
-              // On a 1-dof joint: τ = −k (q − rest) − c q̇.
-              const model::Joint& j = model.joint(e.joint_index);
-              tau[j.v_index] -=
-                  e.stiffness * (q[j.q_index] - e.rest_angle) + e.damping * v[j.v_index];
-            } else {
-              // Between two bodies: n_B = −k θ − c (ω_B − ω_A) on b, in B; −n_B on a.
-              const int a = e.body_a_index, b = e.body_b_index;
-              const Mat3 R_BA = data.X_WB[b].R.transpose() * data.X_WB[a].R;
-              const Vec3 w_AB_B = data.V_WB_B[b].head<3>() - R_BA * data.V_WB_B[a].head<3>();
-              const Vec3 n_B =
-                  -e.stiffness * relative_rotation_vector(data, e) - e.damping * w_AB_B;
-              if (b != 0) f_ext[b].head<3>() += n_B;
-              if (a != 0) f_ext[a].head<3>() -= R_BA.transpose() * n_B;
-            }
-          } else if constexpr (std::is_same_v<T, LinearSpringDamper>) {
-            const Vec3 f_b_W = linear_spring_force_on_b(data, e);
-            add_force_at(data, e.b, f_b_W, f_ext);
-            add_force_at(data, e.a, -f_b_W, f_ext);
-          } else if constexpr (std::is_same_v<T, AppliedForce>) {
-            // A follower load turns with the body; a world load keeps its direction.
-            const int b = e.at.body_index;
-            const Vec3 f = load_scale(e.signal_index, signal_values) * e.vector;
-            const Vec3 f_B = e.frame == LoadFrame::body ? f : Vec3(data.X_WB[b].R.transpose() * f);
-            f_ext[b].head<3>() += e.at.p_BoP_B.cross(f_B);
-            f_ext[b].tail<3>() += f_B;
-          } else if constexpr (std::is_same_v<T, AppliedTorque>) {
-            const int b = e.body_index;
-            const Vec3 n = load_scale(e.signal_index, signal_values) * e.vector;
-            f_ext[b].head<3>() +=
-                e.frame == LoadFrame::body ? n : Vec3(data.X_WB[b].R.transpose() * n);
-          }
-        },
-        element);
+  for (const model::ForceElement& element : model.force_elements())
+    add_element(model, data, element, signal_values, q, v, tau, f_ext);
+}
+
+void force_element_forces_of(const Model& model, const Data& data, int element,
+                             std::span<const double> signal_values, VecRef q, VecRef v, VecX& tau,
+                             std::span<Vec6> f_ext) {
+  check_sizes(model, signal_values, f_ext);
+  if (element < 0 || element >= static_cast<int>(model.force_elements().size())) {
+    throw InvalidArgument(fmt::format("force_element_forces_of: element {} outside [0, {})",
+                                      element, model.force_elements().size()));
   }
+  tau.setZero(model.nv());
+  for (Vec6& f : f_ext) f.setZero();
+  add_element(model, data, model.force_elements()[element], signal_values, q, v, tau, f_ext);
 }
 
 double spring_potential_energy(const Model& model, const Data& data, VecRef q) {

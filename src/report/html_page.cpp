@@ -14,12 +14,6 @@
 namespace momenta::report {
 namespace detail {
 
-// Defined in the generated report_bundle.cpp.
-extern const char* const kReportScript;
-extern const char* const kReportStyle;
-
-namespace {
-
 std::string escape_html(const std::string& text) {
   std::string out;
   for (const char c : text) {
@@ -42,6 +36,12 @@ std::string escape_html(const std::string& text) {
   }
   return out;
 }
+
+// Defined in the generated report_bundle.cpp.
+extern const char* const kReportScript;
+extern const char* const kReportStyle;
+
+namespace {
 
 // Text inside <script>: "</script" would end the element early. In JSON "</" only occurs inside
 // strings, where "<\/" means the same; the bundle's own "</script" can only be inside strings too.

@@ -33,6 +33,9 @@ json part_json(const io::PartSummary& part);
 /// the principal axes (columns of R), for bodies given by their inertia alone.
 json equivalent_ellipsoid_json(const inertia::MassProperties& mp);
 
+/// Text made safe inside HTML or SVG markup and attribute values (& < > " escaped).
+std::string escape_html(const std::string& text);
+
 /// The HTML page: `data` (kind "simulation" or "inertia") with the embedded front-end.
 std::string html_page(const std::string& title, const json& data);
 

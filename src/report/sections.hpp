@@ -19,6 +19,16 @@ inline constexpr int kMaxBodyPoses = 12000;
 /// first and last time and each column's minimum and maximum (the envelope a plot shows).
 inline constexpr int kPlotBuckets = 1000;
 
+/// Free-body diagrams: at this many instants of the run (evenly spread rows, the first and last
+/// among them), for the first kMaxDiagramBodies bodies (each picture is some 10 kB).
+inline constexpr int kDiagramInstants = 5;
+inline constexpr int kMaxDiagramBodies = 12;
+
+/// Each body's free-body and kinetic diagrams (SVG) at kDiagramInstants rows of the run:
+/// {times, bodies: [{name, svg: [...], residuals: [[|ΣF − m a_G|, |ΣM_G − Ḣ_G|] or the reason
+/// there is no diagram]}], omitted}.
+json diagrams_json(const SimulationRun& run);
+
 /// The scene: bodies with their parts (or equivalent ellipsoids), joints, springs, loads.
 json scene_json(const io::ModelFile& file);
 

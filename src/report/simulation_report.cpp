@@ -116,7 +116,8 @@ std::string simulation_report_html(const SimulationRun& run, const LinearSetting
                        {"frames", detail::frames_json(run)},
                        {"plots", detail::plots_json(run)},
                        {"linear", std::move(linear_section)},
-                       {"campbell", detail::campbell_json(*run.file, linear)}};
+                       {"campbell", detail::campbell_json(*run.file, linear)},
+                       {"diagrams", detail::diagrams_json(run)}};
   return detail::html_page(fmt::format("{} — momenta report", run.file->name), data);
 }
 

@@ -107,6 +107,38 @@ TEST_F(AnalysisCli, KinematicsOfTheTurntableBead) {
   EXPECT_NE(unknown.err.find("did you mean 'turntable'"), std::string::npos) << unknown.err;
 }
 
+TEST_F(AnalysisCli, DiagramOfThePendulumBobWritesTheSvgAndKeepsTheUsersFile) {
+  // The bob of examples/pendulum.yaml from a state file at θ = 60°, θ̇ = 2 rad/s: the rod pulls
+  // with T = m g cos θ + m L θ̇² = 4.905 + 4 = 8.905 N.
+  std::ofstream(dir_ / "s.json") << R"({"q": [1.0471975511965976], "v": [2.0]})";
+  const std::string svg = (dir_ / "fbd.svg").string();
+  const std::string args = "diagram " + example("pendulum") + " --body bob --state '" +
+                           (dir_ / "s.json").string() + "' -o '" + svg + "'";
+  const CliRun r = momenta(args + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  ASSERT_EQ(j.at("loads").size(), 2U);
+  const json& pin = j.at("loads").at(1);
+  EXPECT_EQ(pin.at("name"), "pivot");
+  EXPECT_EQ(pin.at("kind"), "reaction");
+  const Vec3 F(pin.at("force").at(0).get<double>(), pin.at("force").at(1).get<double>(),
+               pin.at("force").at(2).get<double>());
+  EXPECT_NEAR(F.norm(), 9.81 * 0.5 + 4.0, 1e-12);
+  const std::string picture = slurp(dir_ / "fbd.svg");
+  EXPECT_EQ(picture.rfind("<svg", 0), 0U);
+  EXPECT_NE(picture.find("data-name=\"pivot\""), std::string::npos);
+  // The text form names the balance; the SVG is not overwritten without --force.
+  const CliRun again = momenta(args);
+  EXPECT_EQ(again.code, 1);
+  EXPECT_NE(again.err.find("pass --force"), std::string::npos) << again.err;
+  const CliRun text = momenta(args + " --force");
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("ΣF − m a_G"), std::string::npos) << text.out;
+  const CliRun unknown = momenta("diagram " + example("pendulum") + " --body bobb");
+  EXPECT_EQ(unknown.code, 1);
+  EXPECT_NE(unknown.err.find("did you mean 'bob'"), std::string::npos) << unknown.err;
+}
+
 TEST_F(AnalysisCli, ModesOfThePendulumAboutItsEquilibriumFromAState) {
   // A state file at the bottom: ω = √(g/L) = 3.1321 rad/s = 0.49849 Hz.
   std::ofstream(dir_ / "bottom.json") << R"({"q": [0.0], "v": [0.0]})";

@@ -5,6 +5,7 @@ import 'uplot/dist/uPlot.min.css';
 import './style.css';
 import { decode, element, readData } from './data.js';
 import { campbellSection } from './campbell.js';
+import { diagramsSection } from './diagrams.js';
 import { inertiaPage } from './inertia.js';
 import { linearSection } from './linear.js';
 import { Motion } from './motion.js';
@@ -27,6 +28,8 @@ function simulationPage(app, data) {
   app.append(linear.section);
   const campbell = data.campbell ? campbellSection(data.campbell) : null;
   if (campbell) app.append(campbell.section);
+  const diagrams = diagramsSection(data.diagrams, timeline);
+  app.append(diagrams.section);
   let frames = 0;
   const loop = (now) => {
     timeline.tick(now);
@@ -52,6 +55,8 @@ function simulationPage(app, data) {
     playMode: (i) => motion.playMode(data.linear.modes[i]),
     framesDrawn: () => frames,
     summary: () => data.summary,
+    diagrams: () => data.diagrams && { times: data.diagrams.times, bodies: data.diagrams.bodies.map((b) => b.name) },
+    showDiagram: (body, k) => diagrams.select(body, k),
   };
 }
 

@@ -33,6 +33,14 @@ void force_element_forces(const Model& model, const Data& data,
                           std::span<const double> signal_values, VecRef q, VecRef v, VecX& tau,
                           std::span<Vec6> f_ext);
 
+/// The generalized forces and body wrenches of model.force_elements()[element] alone (the joints'
+/// own damping left out), in the outputs and conventions of force_element_forces: what a
+/// free-body diagram draws element by element. Throws InvalidArgument for an index out of range.
+/// No allocation.
+void force_element_forces_of(const Model& model, const Data& data, int element,
+                             std::span<const double> signal_values, VecRef q, VecRef v, VecX& tau,
+                             std::span<Vec6> f_ext);
+
 /// Potential energy stored in the springs (linear and torsional) at configuration q (J).
 /// Preconditions: forward_kinematics(model, data, q) has run.
 double spring_potential_energy(const Model& model, const Data& data, VecRef q);

@@ -1,0 +1,133 @@
+// `momenta diagram MODEL --body NAME [--time T | --state FILE] [-o fbd.svg] [--json]`: a body's
+// free-body and kinetic diagrams at one instant — every load with its point, the kinetic terms
+// and the balance residuals printed; the picture written as SVG. Calls
+// analysis::free_body_diagram and report::free_body_svg; documented in docs/cli.md and
+// docs/diagrams.md.
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "momenta/analysis/free_body.hpp"
+#include "momenta/common/error.hpp"
+#include "momenta/frontend/model_loading.hpp"
+#include "momenta/report/free_body_svg.hpp"
+#include "momenta/report/report.hpp"
+#include "output_format.hpp"
+#include "state_file.hpp"
+
+namespace momenta::cli {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+struct DiagramOptions {
+  std::string model;
+  std::string body;
+  InstantOptions instant;
+  std::optional<std::string> output;
+  bool force = false;
+  bool json = false;
+};
+
+void print_text(const std::string& model_name, const analysis::FreeBodyDiagram& d) {
+  fmt::print("{}: body {} at t = {:.6g} s, m = {:.6g} kg, G at {} m\n", model_name, d.body, d.t,
+             d.mass, vec_text(d.p_WoG_W));
+  if (d.plane_normal) {
+    fmt::print("planar: every force in the plane normal to {}\n", vec_text(*d.plane_normal));
+  } else {
+    fmt::print("three-dimensional\n");
+  }
+  fmt::print("free-body diagram (world axes; forces N at points m, couples N·m)\n");
+  for (const analysis::Load& load : d.loads) {
+    fmt::print("  {:<9} {}\n", analysis::load_kind_name(load.kind), load.description);
+    fmt::print("            F = {} at {}", vec_text(load.force_W), vec_text(load.p_WoP_W));
+    if (!load.couple_W.isZero(0.0)) fmt::print(", couple {}", vec_text(load.couple_W));
+    fmt::print("\n");
+  }
+  fmt::print("kinetic diagram\n");
+  fmt::print("  m a_G     = {} N\n", vec_text(d.m_a_G()));
+  fmt::print("  Ī α       = {} N·m\n", vec_text(d.I_alpha()));
+  fmt::print("  ω × H_G   = {} N·m\n", vec_text(d.w_cross_H()));
+  fmt::print("balance\n");
+  fmt::print("  ΣF        = {} N,   ΣF − m a_G = {} N\n", vec_text(d.sum_of_forces()),
+             vec_text(d.force_residual()));
+  fmt::print("  ΣM_G      = {} N·m, ΣM_G − Ḣ_G = {} N·m\n", vec_text(d.sum_of_moments_about_G()),
+             vec_text(d.moment_residual()));
+}
+
+json diagram_json(const std::string& model_name, const analysis::FreeBodyDiagram& d) {
+  json loads = json::array();
+  for (const analysis::Load& load : d.loads) {
+    loads.push_back({{"kind", analysis::load_kind_name(load.kind)},
+                     {"name", load.name},
+                     {"description", load.description},
+                     {"point", vec_json(load.p_WoP_W)},
+                     {"force", vec_json(load.force_W)},
+                     {"couple", vec_json(load.couple_W)}});
+  }
+  return {{"model", model_name},
+          {"body", d.body},
+          {"t", d.t},
+          {"mass", d.mass},
+          {"com", vec_json(d.p_WoG_W)},
+          {"plane_normal", d.plane_normal ? vec_json(*d.plane_normal) : json()},
+          {"loads", loads},
+          {"kinetic",
+           {{"m_a_G", vec_json(d.m_a_G())},
+            {"I_alpha", vec_json(d.I_alpha())},
+            {"omega_cross_H", vec_json(d.w_cross_H())}}},
+          {"residual",
+           {{"force", vec_json(d.force_residual())}, {"moment", vec_json(d.moment_residual())}}}};
+}
+
+void run(const DiagramOptions& o) {
+  // Refused before any work: the user's file is never overwritten without --force.
+  if (o.output && std::filesystem::exists(*o.output) && !o.force) {
+    throw FileError(
+        fmt::format("{}: the output file exists; pass --force to overwrite it", *o.output));
+  }
+  const io::ModelFile file = frontend::load_model(o.model);
+  const integrate::State state = instant_of(file, o.instant);
+  system::MultibodySystem system(file.model);
+  const analysis::FreeBodyDiagram d =
+      analysis::free_body_diagram(system, o.body, state.t, state.q, state.v);
+  if (o.json) {
+    fmt::print("{}\n", json_text(diagram_json(file.name, d), ListSpacing::spaced));
+  } else {
+    print_text(file.name, d);
+  }
+  if (o.output) {
+    report::write_report(*o.output, report::free_body_svg(d, file.name), o.force);
+    if (!o.json) fmt::print("wrote {}\n", *o.output);
+  }
+}
+
+}  // namespace
+
+void add_diagram_command(CLI::App& app) {
+  auto options = std::make_shared<DiagramOptions>();
+  CLI::App* command = app.add_subcommand(
+      "diagram",
+      "A body's free-body and kinetic diagrams at one instant: every force and couple on it "
+      "(gravity, joint and constraint reactions, springs, loads), m a_G and Ḣ_G, and the "
+      "residuals of ΣF = m a_G and ΣM_G = Ḣ_G");
+  command->add_option("MODEL", options->model, "A model file (.yaml)")->required();
+  command->add_option("--body", options->body, "The body to isolate")->required();
+  add_instant_options(command, options->instant);
+  command->add_option("-o,--output", options->output,
+                      "Write the diagrams as SVG to this file (never overwritten without --force)");
+  command->add_flag("--force", options->force, "Overwrite the --output file if it exists");
+  command->add_flag("--json", options->json, "Print JSON instead of text");
+  command->footer(
+      "Example:\n"
+      "  momenta diagram examples/pendulum.yaml --body bob --time 0.5 -o fbd.svg\n"
+      "What is drawn and the conventions: docs/diagrams.md.");
+  command->callback([options] { run(*options); });
+}
+
+}  // namespace momenta::cli

@@ -1,0 +1,96 @@
+#pragma once
+// Free-body and kinetic diagrams (Beer & Johnston §16.1, §18.1): one body isolated from a model
+// at one instant, with every force and moment the rest of the system and the world put on it,
+// beside the kinetic terms they must equal,
+//
+//     ΣF = m a_G,      ΣM_G = Ḣ_G = Ī_G α + ω × (Ī_G ω).
+//
+// What acts on the body, each as a force through a point plus a couple:
+//  - gravity, m g at G;
+//  - the joint that carries it: the constraint reaction at the joint centre J' (the transmitted
+//    wrench less its part along the joint's free motions) and, along those motions, each joint
+//    element (torsional spring, friction, the joint's own damping) and, on a prescribed joint,
+//    the drive's effort;
+//  - the joints it carries: the same items of each child joint, with the opposite sign;
+//  - springs and dampers at their attachment points, applied forces and moments;
+//  - constraint forces (loops, wires, rolling contacts), each drawn on its line of action.
+// The split of a joint's wrench into "along the free motions" and "reaction" uses the joint's
+// motion subspace S in J' about J'o: w_motion = S (SᵀS)⁻¹ Sᵀ w (a moment about a hinge's axis,
+// a force along a slider's), so the reaction does no work on any motion the joint allows.
+//
+// The numbers are those of the simulation: system::MultibodySystem::evaluate at the state, and
+// the joint reactions of dynamics::joint_reactions. All vectors are in the world frame W (SI).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "momenta/math/types.hpp"
+#include "momenta/system/multibody_system.hpp"
+
+namespace momenta::analysis {
+
+/// What puts a load on the body, for its colour and legend.
+enum class LoadKind {
+  gravity,   ///< the body's weight
+  reaction,  ///< a joint's or a constraint's reaction (does no work on the allowed motion)
+  element,   ///< a spring, damper or friction element (a joint's own damping included)
+  applied,   ///< an applied force or moment (model loads)
+  drive,     ///< a prescribed joint's effort
+};
+
+/// The name of a load kind: "gravity", "reaction", ...
+const char* load_kind_name(LoadKind kind);
+
+/// One force through a point plus one couple, acting on the body.
+struct Load {
+  LoadKind kind = LoadKind::gravity;
+  std::string name;         ///< the joint, element or constraint ("gravity" for the weight)
+  std::string description;  ///< what it is, for a legend: "reaction of joint hinge (from world)"
+  Vec3 p_WoP_W = Vec3::Zero();   ///< where the force acts (m)
+  Vec3 force_W = Vec3::Zero();   ///< N
+  Vec3 couple_W = Vec3::Zero();  ///< N·m: a couple (free vector), zero for a plain force
+  /// The joint it acts through (its reaction, its elements, its drive), −1 for none: the loads of
+  /// one joint sum to the wrench dynamics::joint_reaction gives (reversed on the parent).
+  int joint_index = -1;
+};
+
+/// The body's diagrams at one instant.
+struct FreeBodyDiagram {
+  std::string body;
+  double t = 0.0;
+  double mass = 0.0;               ///< kg
+  Vec3 p_WoG_W = Vec3::Zero();     ///< centre of mass G (m)
+  Vec3 p_WoBo_W = Vec3::Zero();    ///< body frame origin (m)
+  Mat3 R_WB = Mat3::Identity();    ///< body axes
+  Vec3 w_WB_W = Vec3::Zero();      ///< ω (rad/s)
+  Vec3 alpha_WB_W = Vec3::Zero();  ///< α (rad/s²)
+  Vec3 a_WG_W = Vec3::Zero();      ///< a_G (m/s²)
+  Mat3 I_G_W = Mat3::Zero();       ///< Ī_G in W (kg·m²)
+  std::vector<Load> loads;
+
+  // --- the kinetic diagram ------------------------------------------------------------------
+  Vec3 m_a_G() const { return mass * a_WG_W; }
+  Vec3 I_alpha() const { return I_G_W * alpha_WB_W; }              ///< Ī_G α
+  Vec3 w_cross_H() const { return w_WB_W.cross(I_G_W * w_WB_W); }  ///< ω × H_G
+  Vec3 H_G_dot() const { return I_alpha() + w_cross_H(); }
+
+  // --- the balance ---------------------------------------------------------------------------
+  Vec3 sum_of_forces() const;           ///< ΣF (N)
+  Vec3 sum_of_moments_about_G() const;  ///< ΣM_G: Σ (p − G) × F + couples (N·m)
+  Vec3 force_residual() const { return sum_of_forces() - m_a_G(); }              ///< ΣF − m a_G
+  Vec3 moment_residual() const { return sum_of_moments_about_G() - H_G_dot(); }  ///< ΣM_G − Ḣ_G
+
+  /// The unit normal of the plane of motion when the diagram is planar: every force and m a_G
+  /// lie in the plane, every couple and Ḣ_G are normal to it (to 1e-9 of the largest). Tried in
+  /// turn: the world's z, y and x axes, then the body's joint axis. Empty otherwise (a 3-D view).
+  std::optional<Vec3> plane_normal;
+};
+
+/// The diagrams of body `body` (a name; not the world) at time t and state (q, v) of `system`'s
+/// model (prescribed coordinates are set from their signals). Throws InvalidArgument for an
+/// unknown body (with a did-you-mean) or the world, and what evaluate() throws. Allocates.
+FreeBodyDiagram free_body_diagram(system::MultibodySystem& system, const std::string& body,
+                                  double t, const VecX& q, const VecX& v);
+
+}  // namespace momenta::analysis
