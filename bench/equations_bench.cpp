@@ -3,8 +3,11 @@
 // for n = 10): n uniform links of 1 kg and 1 m on revolute joints about z, gravity −y.
 //   BM_Derive/n      derive_equations with every parameter a symbol (m, I, c, l, g per link)
 //   BM_GenerateC/n   generate_code(cpp) of the derived equations (M and b)
-//   BM_Evaluate...   evaluating the equations is the generated code's job (compiled by the user):
-//                    the numeric engine's RNEA is the reference, BM_Rnea/n
+//   BM_GeneratedForwardDynamics/n   the generated C++ (momenta equations --cpp, compiled in):
+//                    M(q) and b(q, v), then v̇ = −M⁻¹ b by Cholesky (Eigen, fixed size)
+//   BM_Aba/n         the numeric engine's forward dynamics on the same model and state
+//   BM_GeneratedBias/n, BM_Rnea/n    b(q, v) alone against RNEA's τ(q, v, v̇)
+// The models are bench/models/chain<n>.yaml.
 //
 // Run: build-bench/bench/equations_bench --benchmark_repetitions=5
 //      --benchmark_report_aggregates_only=true
@@ -14,6 +17,13 @@
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
+#include <Eigen/Cholesky>
+
+#include "chain10.hpp"
+#include "chain2.hpp"
+#include "chain20.hpp"
+#include "chain5.hpp"
+#include "momenta/dynamics/aba.hpp"
 #include "momenta/dynamics/data.hpp"
 #include "momenta/dynamics/rnea.hpp"
 #include "momenta/io/model_file.hpp"
@@ -24,20 +34,7 @@ namespace {
 using namespace momenta;
 
 model::Model n_link_pendulum(int n) {
-  std::string text = "name: pendulum chain\ngravity: [0, -9.81, 0]\nbodies:\n";
-  for (int i = 0; i < n; ++i)
-    text += fmt::format(
-        "  - {{name: link{}, mass: 1, com: [0.5, 0, 0], inertia: [0.001, "
-        "0.0833, 0.0833]}}\n",
-        i);
-  text += "joints:\n";
-  for (int i = 0; i < n; ++i) {
-    text += fmt::format(
-        "  - {{name: j{}, type: revolute, parent: {}, child: link{}, axis: [0, 0, 1], "
-        "in_parent: {{position: [{}, 0, 0]}}}}\n",
-        i, i == 0 ? std::string("world") : fmt::format("link{}", i - 1), i, i == 0 ? 0 : 1);
-  }
-  return io::parse_model_file(text, "chain.yaml", ".").model;
+  return io::read_model_file(fmt::format("{}/chain{}.yaml", MOMENTA_BENCH_MODELS, n)).model;
 }
 
 symbolic::EquationOptions every_symbol() {
@@ -68,6 +65,59 @@ void BM_Rnea(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(dynamics::rnea(model, data, q, v, a).data());
 }
 
+void BM_Aba(benchmark::State& state) {
+  const model::Model model = n_link_pendulum(static_cast<int>(state.range(0)));
+  dynamics::Data data(model);
+  const VecX q = VecX::Constant(model.nq(), 0.3), v = VecX::Constant(model.nv(), 0.2),
+             tau = VecX::Zero(model.nv());
+  for (auto _ : state) benchmark::DoNotOptimize(dynamics::aba(model, data, q, v, tau).data());
+}
+
+// The generated functions of one chain, for the templates below.
+template <int N>
+struct Generated {
+  void (*mass_matrix)(const double*, double*);
+  void (*bias)(const double*, const double*, const double*, const double*, double*);
+};
+
+template <int N>
+void generated_forward_dynamics(benchmark::State& state, Generated<N> g) {
+  using Vec = Eigen::Matrix<double, N, 1>;
+  const Vec q = Vec::Constant(0.3), v = Vec::Constant(0.2), no_vdot = Vec::Zero();
+  Eigen::Matrix<double, N, N> M;  // symmetric: its row-major entries are its column-major ones
+  Vec b, vdot;
+  for (auto _ : state) {
+    g.mass_matrix(q.data(), M.data());
+    g.bias(q.data(), v.data(), no_vdot.data(), nullptr, b.data());
+    vdot = M.llt().solve(-b);
+    benchmark::DoNotOptimize(vdot.data());
+  }
+}
+
+template <int N>
+void generated_bias(benchmark::State& state, Generated<N> g) {
+  using Vec = Eigen::Matrix<double, N, 1>;
+  const Vec q = Vec::Constant(0.3), v = Vec::Constant(0.2), vdot = Vec::Constant(0.1);
+  Vec b;
+  for (auto _ : state) {
+    g.bias(q.data(), v.data(), vdot.data(), nullptr, b.data());
+    benchmark::DoNotOptimize(b.data());
+  }
+}
+
+#define MOMENTA_GENERATED_BENCHMARKS(n)                                                     \
+  BENCHMARK_CAPTURE(generated_forward_dynamics, n,                                          \
+                    Generated<n>{chain##n::mass_matrix, chain##n::bias})                    \
+      ->Name("BM_GeneratedForwardDynamics/" #n);                                            \
+  BENCHMARK_CAPTURE(generated_bias, n, Generated<n>{chain##n::mass_matrix, chain##n::bias}) \
+      ->Name("BM_GeneratedBias/" #n);
+
+MOMENTA_GENERATED_BENCHMARKS(2)
+MOMENTA_GENERATED_BENCHMARKS(5)
+MOMENTA_GENERATED_BENCHMARKS(10)
+MOMENTA_GENERATED_BENCHMARKS(20)
+
+BENCHMARK(BM_Aba)->Arg(2)->Arg(5)->Arg(10)->Arg(20);
 BENCHMARK(BM_Derive)->Arg(2)->Arg(5)->Arg(10)->Arg(20)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GenerateC)->Arg(2)->Arg(5)->Arg(10)->Arg(20)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Rnea)->Arg(2)->Arg(5)->Arg(10)->Arg(20);

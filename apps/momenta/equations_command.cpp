@@ -1,18 +1,24 @@
-// `momenta equations MODEL [--symbols NAME,...|--all-symbols] [--form lagrange|matrix]
-// [--latex|--json|--cpp|--python]`: a model's equations of motion in symbols. Calls
-// momenta::symbolic (equations.hpp); documented in docs/equations.md and docs/cli.md.
+// `momenta equations MODEL [--symbols NAME,...|--all-symbols] [--form lagrange|matrix|linear]
+// [--transfer INPUT:OUTPUT] [--time T|--state FILE] [--text|--latex|--json|--cpp|--python]`: a
+// model's equations of motion in symbols, their linearization and transfer functions. Calls
+// momenta::symbolic (equations.hpp, linear_equations.hpp); documented in docs/equations.md and
+// docs/cli.md.
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "commands.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
 #include "momenta/symbolic/equations.hpp"
+#include "momenta/symbolic/linear_equations.hpp"
 #include "output_format.hpp"
+#include "state_file.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -24,9 +30,106 @@ struct EquationsOptions {
   std::vector<std::string> symbols;
   bool all_symbols = false;
   std::string form = "lagrange";
-  bool latex = false, json = false, cpp = false, python = false;
-  std::string name;  // the generated code's namespace or module name
+  bool text = false, latex = false, json = false, cpp = false, python = false;
+  std::string name;        // the generated code's namespace or module name
+  std::string transfer;    // INPUT:OUTPUT
+  InstantOptions instant;  // the operating point of --form linear and --transfer
 };
+
+// The linearization about the instant the options name (the initial state by default).
+symbolic::LinearEquations linear_equations(const io::ModelFile& file, const symbolic::Equations& e,
+                                           const EquationsOptions& o) {
+  const integrate::State point = instant_of(file, o.instant);
+  std::vector<model::SignalSample> signals;
+  for (const model::Signal& signal : file.model.signals())
+    signals.push_back(signal.sample(point.t));
+  return symbolic::linearize_equations(e, file.model, point.q, point.v, signals);
+}
+
+const char* matrix_name(symbolic::LinearMatrix which) {
+  static const char* const names[] = {"M", "D", "K", "B0", "B1", "B2", "A", "B"};
+  return names[static_cast<int>(which)];
+}
+
+void print_linear(const io::ModelFile& file, const symbolic::LinearEquations& l,
+                  symbolic::Format f) {
+  using symbolic::LinearMatrix;
+  fmt::print(
+      "{}: linearized about the operating point, M δq̈ + D δq̇ + K δq = B0 δu + B1 δu̇ + "
+      "B2 δü\n",
+      file.name);
+  fmt::print("coordinates δq = [{}], inputs u = [{}]\n", fmt::join(l.coordinate_names(), ", "),
+             fmt::join(l.input_names(), ", "));
+  std::vector<LinearMatrix> shown = {LinearMatrix::M, LinearMatrix::D, LinearMatrix::K,
+                                     LinearMatrix::B0};
+  if (l.has_input_rates()) {
+    shown.push_back(LinearMatrix::B1);
+    shown.push_back(LinearMatrix::B2);
+  }
+  if (l.has_state_space()) {
+    shown.push_back(LinearMatrix::A);
+    shown.push_back(LinearMatrix::B);
+  }
+  for (const LinearMatrix which : shown) {
+    for (int r = 0; r < l.rows(which); ++r)
+      for (int c = 0; c < l.columns(which); ++c)
+        fmt::print("{}[{},{}] = {}\n", matrix_name(which), r, c, l.entry(which, r, c, f));
+  }
+  if (!l.has_state_space()) {
+    fmt::print("(no A, B: {})\n", l.has_input_rates()
+                                      ? "an input's rate enters; use the second-order form"
+                                      : "more than four coordinates");
+  }
+}
+
+// --transfer INPUT:OUTPUT: the input by signal name; the output an `outputs:` entry of a joint's
+// position or velocity, or a coordinate's name (its rate with "_dot").
+void print_transfer(const io::ModelFile& file, const symbolic::LinearEquations& l,
+                    const EquationsOptions& o, symbolic::Format f) {
+  const auto colon = o.transfer.find(':');
+  if (colon == std::string::npos) {
+    throw CLI::ValidationError("--transfer",
+                               fmt::format("'{}': expected INPUT:OUTPUT", o.transfer));
+  }
+  const std::string input = o.transfer.substr(0, colon), output = o.transfer.substr(colon + 1);
+  const auto& inputs = l.input_names();
+  const auto in = std::find(inputs.begin(), inputs.end(), input);
+  if (in == inputs.end()) {
+    throw CLI::ValidationError("--transfer", fmt::format("no input '{}'; the inputs are {}", input,
+                                                         fmt::join(inputs, ", ")));
+  }
+  // The coordinate and whether the rate is meant.
+  std::string coordinate = output;
+  bool rate = false;
+  for (const model::OutputSpec& spec : file.outputs) {
+    if (spec.name != output) continue;
+    if (spec.quantity != model::OutputQuantity::joint_position &&
+        spec.quantity != model::OutputQuantity::joint_velocity) {
+      throw CLI::ValidationError(
+          "--transfer", fmt::format("output '{}' is not a joint's position or velocity", output));
+    }
+    coordinate = spec.target;
+    rate = spec.quantity == model::OutputQuantity::joint_velocity;
+  }
+  if (coordinate.size() > 4 && coordinate.ends_with("_dot")) {
+    coordinate.resize(coordinate.size() - 4);
+    rate = true;
+  }
+  const auto& names = l.coordinate_names();
+  const auto k = std::find(names.begin(), names.end(), coordinate);
+  if (k == names.end()) {
+    throw CLI::ValidationError(
+        "--transfer", fmt::format("no free coordinate or joint output '{}'; the coordinates are {}",
+                                  output, fmt::join(names, ", ")));
+  }
+  const std::string G = l.transfer_function(static_cast<int>(in - inputs.begin()),
+                                            static_cast<int>(k - names.begin()), rate, f);
+  if (f == symbolic::Format::latex) {
+    fmt::print("G(s) = {}\n", G);
+  } else {
+    fmt::print("{}: G(s) = {}(s) / {}(s) = {}\n", file.name, output, input, G);
+  }
+}
 
 void print_equations(const io::ModelFile& file, const symbolic::Equations& e,
                      const EquationsOptions& o) {
@@ -34,6 +137,21 @@ void print_equations(const io::ModelFile& file, const symbolic::Equations& e,
   const auto& free = e.free_speeds();
   const int n = static_cast<int>(free.size());
   if (!o.latex) fmt::print("{}: equations of motion\n", file.name);
+  if (o.form == "newton-euler") {
+    fmt::print(
+        "{}per body, in its own axes: ΣF = m a_G, ΣM_G = Ī α + ω × Ī ω; unknown reactions "
+        "R_<joint> (force on the child), N_<joint> (moment about J'), in the child's axes\n",
+        o.latex ? "% " : "");
+    std::string group;
+    for (int r = 0; r < e.newton_euler_rows(); ++r) {
+      if (e.newton_euler_group(r) != group) {
+        group = e.newton_euler_group(r);
+        fmt::print("{}{}\n", o.latex ? "% " : "", group);
+      }
+      fmt::print("  {}\n", e.newton_euler_equation(r, f));
+    }
+    return;
+  }
   if (o.form == "matrix") {
     fmt::print("{}M(q) v̇ + C(q, v) v + g(q) = Q(q, v, u), v̇ = [", o.latex ? "% " : "");
     for (int r = 0; r < n; ++r)
@@ -87,8 +205,14 @@ void run(const EquationsOptions& o) {
   symbolic::EquationOptions options;
   options.symbols = o.symbols;
   options.all_symbols = o.all_symbols;
+  options.newton_euler = o.form == "newton-euler";
   const symbolic::Equations e = symbolic::derive_equations(file.model, options);
-  if (o.cpp || o.python) {
+  const symbolic::Format f = o.latex ? symbolic::Format::latex : symbolic::Format::text;
+  if (!o.transfer.empty()) {
+    print_transfer(file, linear_equations(file, e, o), o, f);
+  } else if (o.form == "linear") {
+    print_linear(file, linear_equations(file, e, o), f);
+  } else if (o.cpp || o.python) {
     fmt::print("{}", e.generate_code(o.cpp ? symbolic::Format::cpp : symbolic::Format::python,
                                      o.name.empty() ? file.name : o.name));
   } else if (o.json) {
@@ -115,8 +239,15 @@ void add_equations_command(CLI::App& app) {
       ->excludes(symbols);
   command
       ->add_option("--form", options->form,
-                   "lagrange: one equation per coordinate (default); matrix: M, C v, g and Q")
-      ->check(CLI::IsMember({"lagrange", "matrix"}));
+                   "lagrange: one equation per coordinate (default); matrix: M, C v, g and Q; "
+                   "newton-euler: each body's ΣF = m a_G and ΣM_G = Ḣ_G with the reactions; "
+                   "linear: M, D, K, B (and A, B) about the operating point")
+      ->check(CLI::IsMember({"lagrange", "matrix", "newton-euler", "linear"}));
+  command->add_option("--transfer", options->transfer,
+                      "INPUT:OUTPUT — the transfer function in s from a signal to a joint "
+                      "output (or a coordinate, its rate with _dot), about the operating point");
+  add_instant_options(command, options->instant);
+  CLI::Option* text = command->add_flag("--text", options->text, "Print text (the default)");
   CLI::Option* latex = command->add_flag("--latex", options->latex, "Print LaTeX");
   CLI::Option* json_flag =
       command->add_flag("--json", options->json, "Print JSON (text and LaTeX strings)");
@@ -124,6 +255,7 @@ void add_equations_command(CLI::App& app) {
       command->add_flag("--cpp", options->cpp, "Print a C++ header computing M and b");
   CLI::Option* python =
       command->add_flag("--python", options->python, "Print a Python module computing M and b");
+  text->excludes(latex)->excludes(json_flag)->excludes(cpp)->excludes(python);
   latex->excludes(json_flag)->excludes(cpp)->excludes(python);
   json_flag->excludes(cpp)->excludes(python);
   cpp->excludes(python);
@@ -133,6 +265,7 @@ void add_equations_command(CLI::App& app) {
   command->footer(
       "Example:\n"
       "  momenta equations examples/cruise_control.yaml --all-symbols\n"
+      "  momenta equations examples/cruise_control.yaml --all-symbols --transfer u:speed\n"
       "Conventions and proofs: docs/equations.md.");
   command->callback([options] { run(*options); });
 }

@@ -154,7 +154,7 @@ JointMotion joint_motion(const model::Joint& j, const std::vector<ex>& q, int qi
 class Derivation {
  public:
   Derivation(const model::Model& model, const EquationOptions& options)
-      : model_(model), params_(options) {}
+      : model_(model), params_(options), newton_euler_(options.newton_euler) {}
 
   Equations::Impl run() {
     refuse_what_is_not_written_yet();
@@ -164,6 +164,7 @@ class Derivation {
     element_forces();
     params_.check();
     split();
+    if (newton_euler_) newton_euler_form();
     impl_.parameter_symbols = params_.symbols_;
     impl_.parameters = params_.values_;
     return std::move(impl_);
@@ -328,6 +329,9 @@ class Derivation {
     p_WB_.assign(nb, V3{});
     S_.assign(nb, {});
     dS_.assign(nb, {});
+    p_CJ_.assign(nb, V3{});
+    com_.assign(nb, V3{});
+    I_com_.assign(nb, M3{});
     inertias_.assign(nb, Inertia{});
     for (const model::Joint& j : model_.joints()) {
       const int i = j.child_index, p = j.parent_index;
@@ -335,6 +339,7 @@ class Derivation {
       const M3 R_PJ = to_m3(j.X_PJ.R), R_CJ = to_m3(j.X_CJ.R);
       const V3 p_PJ = params_.vector("l_" + j.name, j.X_PJ.p);
       const V3 p_CJ = params_.vector("l_" + j.name + "_child", j.X_CJ.p);
+      p_CJ_[i] = p_CJ;
       R_PC_[i] = R_PJ * jm.R * transpose(R_CJ);
       p_PC_[i] = p_PJ + R_PJ * jm.p - R_PC_[i] * p_CJ;
       R_WB_[i] = R_WB_[p] * R_PC_[i];
@@ -355,7 +360,8 @@ class Derivation {
   // One Newton–Euler pass: τ for the speeds `v` and accelerations `vdot` (expressions per model
   // coordinate), with or without gravity; the body velocities into `velocities` when asked.
   std::vector<ex> newton_euler(const std::vector<ex>& v, const std::vector<ex>& vdot, bool gravity,
-                               std::vector<Motion>* velocities = nullptr) const {
+                               std::vector<Motion>* velocities = nullptr,
+                               std::vector<Motion>* accelerations = nullptr) const {
     const int nb = model_.num_bodies();
     std::vector<Motion> V(nb), A(nb);
     std::vector<Force> f(nb);
@@ -382,6 +388,7 @@ class Derivation {
     std::vector<ex> tau(static_cast<std::size_t>(model_.nv()), 0);
     project_down(f, tau);
     if (velocities) *velocities = std::move(V);
+    if (accelerations) *accelerations = std::move(A);
     return tau;
   }
 
@@ -431,6 +438,8 @@ class Derivation {
         I(col, r) = e;
       }
     }
+    com_[b] = c;
+    I_com_[b] = I;
     Inertia out;
     out.mass = m;
     out.h = m * c;
@@ -492,6 +501,8 @@ class Derivation {
         }
       }
     }
+    body_loads_ = f;
+    joint_space_ = Q_;
     project_down(f, Q_);
   }
 
@@ -546,6 +557,81 @@ class Derivation {
     return v;
   }
 
+  // Per body, Newton's and Euler's equations in its own axes with the joint reactions as
+  // unknowns (symbols R_<joint>_x … for the force on the child, N_<joint>_x … for the moment
+  // about J'o, both in the child's axes): ΣF = m a_G, ΣM_G = Ī α + ω × Ī ω; then each free
+  // joint's reaction along its motion equals its elements' generalized force.
+  void newton_euler_form() {
+    std::vector<Motion> V, A;
+    newton_euler(impl_.v, impl_.vdot, false, &V, &A);
+    const int nb = model_.num_bodies();
+    std::vector<V3> R(nb), N(nb);  // per child body: its joint's reaction
+    for (const model::Joint& j : model_.joints()) {
+      const int i = j.child_index;
+      const char* axes = "xyz";
+      for (int k = 0; k < 3; ++k) {
+        const symbol r(fmt::format("R_{}_{}", identifier(j.name), axes[k]),
+                       fmt::format("R_{{\\mathrm{{{}}},{}}}", latex_name(j.name), axes[k]));
+        const symbol n(fmt::format("N_{}_{}", identifier(j.name), axes[k]),
+                       fmt::format("N_{{\\mathrm{{{}}},{}}}", latex_name(j.name), axes[k]));
+        R[i][k] = r;
+        N[i][k] = n;
+        impl_.reaction_symbols.push_back(r);
+      }
+      for (int k = 0; k < 3; ++k) impl_.reaction_symbols.push_back(GiNaC::ex_to<symbol>(N[i][k]));
+    }
+    const V3 gravity_W = ex(-1) * base_acceleration_;
+    for (const model::Joint& j : model_.joints()) {
+      const int i = j.child_index;
+      const Inertia& I = inertias_[i];
+      const V3& c = com_[i];
+      const V3 w = V[i].w, alpha = A[i].w;
+      // Loads: weight, own joint, the joints it carries (reversed), the elements.
+      V3 F = I.mass * (transpose(R_WB_[i]) * gravity_W) + R[i];
+      V3 M = N[i] + cross(p_CJ_[i] - c, R[i]);
+      for (const model::Joint& child : model_.joints()) {
+        if (child.parent_index != i) continue;
+        const int k = child.child_index;
+        const V3 Rk = R_PC_[k] * R[k];
+        F = F - Rk;
+        M = M - (R_PC_[k] * N[k]) - cross(p_PC_[k] + R_PC_[k] * p_CJ_[k] - c, Rk);
+      }
+      F = F + body_loads_[i].f;
+      M = M + body_loads_[i].n - cross(c, body_loads_[i].f);
+      // Kinetics: a_G = a_Bo + α × c + ω × (ω × c), a_Bo = A.v + ω × V.v (Featherstone's
+      // spatial acceleration to the classical one).
+      const V3 a_G = A[i].v + cross(w, V[i].v) + cross(alpha, c) + cross(w, cross(w, c));
+      const V3 ma = I.mass * a_G;
+      const V3 H_dot = I_com_[i] * alpha + cross(w, I_com_[i] * w);
+      const std::string& body = model_.body(i).name;
+      const char* axes = "xyz";
+      for (int k = 0; k < 3; ++k)
+        add_newton_euler_row(body, fmt::format("ΣF_{} = m a_G{}", axes[k], axes[k]), F[k], ma[k]);
+      for (int k = 0; k < 3; ++k) {
+        add_newton_euler_row(body, fmt::format("ΣM_G{} = (Ī α + ω × Ī ω)_{}", axes[k], axes[k]),
+                             M[k], H_dot[k]);
+      }
+      // Along the free motions: the reaction's generalized force is the elements'.
+      if (j.is_prescribed()) continue;
+      const V3 n_o = N[i] + cross(p_CJ_[i], R[i]);
+      for (int k = 0; k < j.nv(); ++k) {
+        const Motion& Sk = S_[i][static_cast<std::size_t>(k)];
+        add_newton_euler_row(
+            fmt::format("joint {}", j.name),
+            fmt::format("along {}", impl_.v_names[static_cast<std::size_t>(j.v_index + k)]),
+            dot(Sk.w, n_o) + dot(Sk.v, R[i]),
+            joint_space_[static_cast<std::size_t>(j.v_index + k)]);
+      }
+    }
+  }
+
+  void add_newton_euler_row(const std::string& body, const std::string& label, const ex& loads,
+                            const ex& kinetic) {
+    const ex l = tidy_if_small(loads), r = tidy_if_small(kinetic);
+    if (l.is_zero() && r.is_zero()) return;  // 0 = 0: nothing to say
+    impl_.newton_euler.push_back({body, label, l, r});
+  }
+
   // M, g, the rest and Q of each free speed; tidied where small enough to expand (a general 3-D
   // tree's entries multiply out into more terms than any reader wants, and than time allows: they
   // are kept as the recursion built them, exact all the same).
@@ -571,6 +657,7 @@ class Derivation {
 
   const model::Model& model_;
   Parameters params_;
+  bool newton_euler_ = false;  // derive the Newton–Euler form too
   Equations::Impl impl_;
   std::vector<std::pair<ex, ex>> rates_;  // (coordinate symbol, its rate)
   std::vector<ex> input_of_signal_;
@@ -582,6 +669,10 @@ class Derivation {
   V3 base_acceleration_;
   std::vector<ex> tau_no_acceleration_, tau_gravity_, Q_;
   std::vector<std::vector<ex>> mass_columns_;
+  std::vector<V3> p_CJ_, com_;     // per body: its joint's J'o and its centre of mass, in B
+  std::vector<M3> I_com_;          // per body: Ī about the centre of mass, in B
+  std::vector<Force> body_loads_;  // per body: the elements' wrench, in B about Bo
+  std::vector<ex> joint_space_;    // per speed: the elements' joint-space terms
 };
 
 }  // namespace

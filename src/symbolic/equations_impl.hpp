@@ -14,6 +14,8 @@ namespace momenta::symbolic {
 namespace detail {
 /// A name fit for code and for GiNaC's parser: letters, digits and '_' (others become '_').
 std::string identifier(const std::string& name);
+/// An expression printed in `format`: numbers as short decimals in text and LaTeX.
+std::string print(const GiNaC::ex& e, Format format);
 }  // namespace detail
 
 struct Equations::Impl {
@@ -31,6 +33,14 @@ struct Equations::Impl {
   GiNaC::matrix M;
   std::vector<GiNaC::ex> rest, g, Q;
   int nq = 0, nv = 0;
+  // The Newton–Euler form: per body six rows (those not 0 = 0), then each free joint's rows
+  // along its motion; the reactions' symbols per joint R_x, R_y, R_z, N_x, N_y, N_z.
+  struct NewtonEulerRow {
+    std::string body, label;
+    GiNaC::ex loads, kinetic;
+  };
+  std::vector<NewtonEulerRow> newton_euler;
+  std::vector<GiNaC::symbol> reaction_symbols;
 };
 
 }  // namespace momenta::symbolic

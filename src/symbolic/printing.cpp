@@ -45,13 +45,19 @@ namespace {
 
 using detail::decimal_latex;
 using detail::decimal_text;
+using detail::print;
 
 using GiNaC::ex;
 using GiNaC::symbol;
 
 void print_decimal(const GiNaC::numeric& n, const GiNaC::print_context& c, unsigned level) {
   if (n.is_integer()) {
-    c.s << n;
+    // A negative integer inside a product or power keeps its parentheses (x^(-1), not x^-1).
+    if (n.is_negative() && level > 0) {
+      c.s << "(" << n << ")";
+    } else {
+      c.s << n;
+    }
     return;
   }
   // An exact rational (from a short decimal) reads back exactly; a float shows 12 digits (the
@@ -71,26 +77,6 @@ void register_printers() {
     return true;
   }();
   (void)done;
-}
-
-std::string print(const ex& e, Format format) {
-  register_printers();
-  std::ostringstream os;
-  switch (format) {
-    case Format::text:
-      e.print(decimal_text(os));
-      break;
-    case Format::latex:
-      e.print(decimal_latex(os));
-      break;
-    case Format::cpp:
-      e.print(GiNaC::print_csrc_double(os));
-      break;
-    case Format::python:
-      e.print(GiNaC::print_python(os));
-      break;
-  }
-  return os.str();
 }
 
 // Splits Q into the terms with an input (the right-hand side, as a textbook writes u) and the
@@ -200,6 +186,26 @@ GiNaC::exmap code_symbols(const Equations::Impl& impl) {
 
 }  // namespace
 
+std::string detail::print(const ex& e, Format format) {
+  register_printers();
+  std::ostringstream os;
+  switch (format) {
+    case Format::text:
+      e.print(decimal_text(os));
+      break;
+    case Format::latex:
+      e.print(decimal_latex(os));
+      break;
+    case Format::cpp:
+      e.print(GiNaC::print_csrc_double(os));
+      break;
+    case Format::python:
+      e.print(GiNaC::print_python(os));
+      break;
+  }
+  return os.str();
+}
+
 std::string Equations::mass_matrix_entry(int row, int column, Format format) const {
   check_row(*impl_, row, "mass_matrix_entry");
   check_row(*impl_, column, "mass_matrix_entry");
@@ -234,6 +240,42 @@ std::string Equations::equation(int row, Format format) const {
   }
   left = GiNaC::collect(GiNaC::expand(left), accelerations);
   return print(left, format) + (format == Format::latex ? " = " : " = ") + print(right, format);
+}
+
+int Equations::newton_euler_rows() const { return static_cast<int>(impl_->newton_euler.size()); }
+
+std::string Equations::newton_euler_group(int row) const {
+  return impl_->newton_euler.at(static_cast<std::size_t>(row)).body;
+}
+
+std::string Equations::newton_euler_equation(int row, Format format) const {
+  const auto& r = impl_->newton_euler.at(static_cast<std::size_t>(row));
+  return r.label + ":  " + print(r.loads, format) + " = " + print(r.kinetic, format);
+}
+
+std::vector<std::string> Equations::reaction_names() const {
+  std::vector<std::string> names;
+  for (const symbol& s : impl_->reaction_symbols) names.push_back(s.get_name());
+  return names;
+}
+
+VecX Equations::newton_euler_residuals(const VecX& q, const VecX& v, const VecX& vdot,
+                                       const VecX& u, const VecX& reactions) const {
+  const Impl& impl = *impl_;
+  if (reactions.size() != static_cast<Eigen::Index>(impl.reaction_symbols.size())) {
+    throw InvalidArgument(fmt::format("Equations::newton_euler_residuals: {} reactions for {}",
+                                      reactions.size(), impl.reaction_symbols.size()));
+  }
+  GiNaC::exmap numbers = numbers_for(impl, q, v, vdot, u);
+  for (std::size_t k = 0; k < impl.reaction_symbols.size(); ++k)
+    numbers[impl.reaction_symbols[k]] = GiNaC::numeric(reactions[static_cast<Eigen::Index>(k)]);
+  Evaluator value(numbers);
+  VecX residuals(static_cast<Eigen::Index>(impl.newton_euler.size()));
+  for (std::size_t k = 0; k < impl.newton_euler.size(); ++k) {
+    residuals[static_cast<Eigen::Index>(k)] =
+        value(impl.newton_euler[k].loads) - value(impl.newton_euler[k].kinetic);
+  }
+  return residuals;
 }
 
 void Equations::evaluate(const VecX& q, const VecX& v, const VecX& vdot, const VecX& u, MatX& M,

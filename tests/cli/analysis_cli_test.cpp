@@ -107,6 +107,95 @@ TEST_F(AnalysisCli, KinematicsOfTheTurntableBead) {
   EXPECT_NE(unknown.err.find("did you mean 'turntable'"), std::string::npos) << unknown.err;
 }
 
+// An expression as GiNaC prints it, in a canonical order: the terms of each sum and the factors
+// of each product sorted (GiNaC orders them by its symbols' creation, which can differ from run
+// to run), parenthesized groups likewise. Enough for the sums of products the CLI prints.
+std::string canonical(const std::string& text) {
+  const auto split = [](const std::string& s, char separator) {
+    std::vector<std::string> parts(1);
+    int depth = 0;
+    for (const char c : s) {
+      depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+      if (c == separator && depth == 0) {
+        parts.emplace_back();
+      } else {
+        parts.back() += c;
+      }
+    }
+    return parts;
+  };
+  const auto within = [&](const std::string& factor) {  // groups canonical, recursively
+    std::string out;
+    for (std::size_t i = 0; i < factor.size(); ++i) {
+      if (factor[i] != '(') {
+        out += factor[i];
+        continue;
+      }
+      int depth = 1;
+      std::size_t j = i + 1;
+      for (; j < factor.size() && depth > 0; ++j)
+        depth += factor[j] == '(' ? 1 : factor[j] == ')' ? -1 : 0;
+      out += '(';
+      out += canonical(factor.substr(i + 1, j - i - 2));
+      out += ')';
+      i = j - 1;
+    }
+    return out;
+  };
+  std::vector<std::string> terms;
+  for (const std::string& term : split(text, '+')) {
+    std::vector<std::string> factors;
+    for (const std::string& f : split(term, '*')) factors.push_back(within(f));
+    std::sort(factors.begin(), factors.end());
+    std::string joined;
+    for (const std::string& f : factors) {
+      if (!joined.empty()) joined += '*';
+      joined += f;
+    }
+    terms.push_back(joined);
+  }
+  std::sort(terms.begin(), terms.end());
+  std::string out;
+  for (const std::string& t : terms) {
+    if (!out.empty()) out += '+';
+    out += t;
+  }
+  return out;
+}
+
+// The text after `prefix` on the line that starts with it, canonical.
+std::string canonical_after(const std::string& out, const std::string& prefix) {
+  const auto at = out.find(prefix);
+  if (at == std::string::npos) return "(no line " + prefix + ")";
+  const auto start = at + prefix.size();
+  return canonical(out.substr(start, out.find('\n', start) - start));
+}
+
+TEST_F(AnalysisCli, EquationsTheirLinearizationAndATransferFunctionInSymbols) {
+  // The cruise control (FPE ch. 2): m v̇ + b v = F u, and V(s)/U(s) = F/(m s + b).
+  const CliRun eom = momenta("equations " + example("cruise_control") + " --all-symbols --text");
+  ASSERT_EQ(eom.code, 0) << eom.err;
+  const auto line = eom.out.substr(eom.out.find('\n') + 1);
+  const auto equals = line.find(" = ");
+  EXPECT_EQ(canonical(line.substr(0, equals)), canonical("m_car*road_ddot+c_road*road_dot"))
+      << eom.out;
+  EXPECT_EQ(canonical_after(line, " = "), canonical("F_engine*u")) << eom.out;
+  const CliRun tf =
+      momenta("equations " + example("cruise_control") + " --all-symbols --transfer u:speed");
+  ASSERT_EQ(tf.code, 0) << tf.err;
+  EXPECT_EQ(canonical_after(tf.out, "G(s) = speed(s) / u(s) = "),
+            canonical("F_engine/(m_car*s+c_road)"))
+      << tf.out;
+  const CliRun linear =
+      momenta("equations " + example("cruise_control") + " --all-symbols --form linear");
+  ASSERT_EQ(linear.code, 0) << linear.err;
+  EXPECT_EQ(canonical_after(linear.out, "A[1,1] = "), "-c_road/m_car") << linear.out;
+  EXPECT_EQ(canonical_after(linear.out, "B[1,0] = "), "F_engine/m_car") << linear.out;
+  const CliRun bad = momenta("equations " + example("cruise_control") + " --transfer x:speed");
+  EXPECT_NE(bad.code, 0);
+  EXPECT_NE(bad.err.find("no input 'x'; the inputs are u"), std::string::npos) << bad.err;
+}
+
 TEST_F(AnalysisCli, DiagramOfThePendulumBobWritesTheSvgAndKeepsTheUsersFile) {
   // The bob of examples/pendulum.yaml from a state file at θ = 60°, θ̇ = 2 rad/s: the rod pulls
   // with T = m g cos θ + m L θ̇² = 4.905 + 4 = 8.905 N.

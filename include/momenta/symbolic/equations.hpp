@@ -35,11 +35,18 @@
 #include "momenta/math/types.hpp"
 #include "momenta/model/model.hpp"
 
+#include <span>
+
+#include "momenta/model/signal.hpp"
+
 namespace momenta::symbolic {
+
+class LinearEquations;
 
 struct EquationOptions {
   std::vector<std::string> symbols;  ///< parameters to keep as symbols, by the names above
   bool all_symbols = false;          ///< every nonzero parameter a symbol
+  bool newton_euler = false;         ///< derive the Newton–Euler form too (newton_euler_rows)
 };
 
 /// How an expression prints.
@@ -80,6 +87,26 @@ class Equations {
   std::string generalized_force(int row, Format format) const;
   std::string equation(int row, Format format) const;
 
+  /// The Newton–Euler form (--form newton-euler): for each body, Newton's and Euler's equations
+  /// in the body's own axes, ΣF = m a_G and ΣM_G = Ī α + ω × Ī ω (Euler's equations; the body's
+  /// axes are its principal axes when its inertia is diagonal there), with the reactions of the
+  /// joints as unknowns — R_<joint>_x, _y, _z the force the joint puts on its child and
+  /// N_<joint>_x, _y, _z its moment about the child-side joint frame's origin J', both in the
+  /// child's axes (dynamics::joint_reaction with ReactionFrame::child) — and, for each free joint,
+  /// the reaction along its motion equal to its elements' generalized force. Rows that read
+  /// 0 = 0 are left out. `newton_euler_group` names the body ("link1") or the joint ("joint j1").
+  /// Empty unless derived with EquationOptions::newton_euler.
+  int newton_euler_rows() const;
+  std::string newton_euler_group(int row) const;
+  /// "ΣF_x = m a_Gx: loads = kinetic term" in `format` (text or latex).
+  std::string newton_euler_equation(int row, Format format) const;
+  /// The reaction symbols' names, per joint in model order: R_x, R_y, R_z, N_x, N_y, N_z.
+  std::vector<std::string> reaction_names() const;
+  /// Each row's loads − kinetic term at a state (as `evaluate`) with the reactions' values (6 per
+  /// joint, in reaction_names() order): zero for the motion and the reactions of the dynamics.
+  VecX newton_euler_residuals(const VecX& q, const VecX& v, const VecX& vdot, const VecX& u,
+                              const VecX& reactions) const;
+
   /// Evaluates M, C v + g − Q (the bias b) at a state, the parameters at their model values and
   /// the signals at `u` (one per input_names(), in that order): M v̇_free + b = 0 is the motion.
   /// q and v are the model's (prescribed coordinates taken from them too, with their
@@ -96,6 +123,8 @@ class Equations {
 
  private:
   friend Equations derive_equations(const model::Model&, const EquationOptions&);
+  friend LinearEquations linearize_equations(const Equations&, const model::Model&, const VecX&,
+                                             const VecX&, std::span<const model::SignalSample>);
   explicit Equations(std::shared_ptr<const Impl> impl);
   std::shared_ptr<const Impl> impl_;
 };

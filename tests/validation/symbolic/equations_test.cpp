@@ -4,7 +4,9 @@
 // trees of every joint type; the lumped classics against their textbook forms; the generated C++
 // (compiled into this test) and Python against the same numbers.
 
+#include <algorithm>
 #include <cmath>
+#include <complex>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -16,10 +18,14 @@
 #include <ginac/ginac.h>
 #include <gtest/gtest.h>
 
+#include "momenta/analysis/linearize.hpp"
+#include "momenta/analysis/transfer_function.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/dynamics/crba.hpp"
+#include "momenta/dynamics/reactions.hpp"
 #include "momenta/io/model_file.hpp"
 #include "momenta/symbolic/equations.hpp"
+#include "momenta/symbolic/linear_equations.hpp"
 #include "momenta/system/multibody_system.hpp"
 #include "momenta_test/multibody_models.hpp"
 #include "momenta_test/scratch_dir.hpp"
@@ -39,7 +45,8 @@ using test::random_vector;
 // signals at t, v̇ from the numeric forward dynamics, u the signals that scale loads.
 struct NumericInstant {
   VecX q, v, vdot, u;
-  MatX M_free;  // CRBA's mass matrix on the free speeds
+  MatX M_free;     // CRBA's mass matrix on the free speeds
+  VecX reactions;  // per joint: force on the child and moment about J', in the child's axes
 };
 
 NumericInstant numeric_instant(const model::Model& model, const symbolic::Equations& e,
@@ -59,6 +66,16 @@ NumericInstant numeric_instant(const model::Model& model, const symbolic::Equati
   s.q = system.evaluated_q();
   s.v = system.evaluated_v();
   s.vdot = system.data().vdot;
+  // The joints' reactions of that motion (RNEA's backward pass with the elements' wrenches).
+  const VecX vdot = s.vdot;
+  dynamics::joint_reactions(model, system.data(), s.q, s.v, vdot, system.external_wrenches());
+  s.reactions.resize(6 * model.num_joints());
+  for (int j = 0; j < model.num_joints(); ++j) {
+    const dynamics::JointReaction r =
+        dynamics::joint_reaction(model, system.data(), j, model::ReactionFrame::child);
+    s.reactions.segment<3>(6 * j) = r.force;
+    s.reactions.segment<3>(6 * j + 3) = r.moment;
+  }
   s.u.resize(static_cast<Eigen::Index>(e.input_names().size()));
   for (std::size_t k = 0; k < e.input_names().size(); ++k) {
     s.u[static_cast<Eigen::Index>(k)] =
@@ -83,7 +100,8 @@ VecX free_part(const VecX& x, const std::vector<int>& free) {
 
 // M to 1e-12 of its largest entry; the residual M v̇ + b to 1e-12 of the largest of |M v̇| and
 // |b| (the terms that cancel): both sides are sums of O(10) products evaluated in double, where
-// a wrong term shows at O(1).
+// a wrong term shows at O(1). `e` is derived with its Newton–Euler form, checked with the
+// numeric joint reactions.
 void expect_matches_numerics(const model::Model& model, const symbolic::Equations& e, unsigned seed,
                              int states) {
   if (e.free_speeds().empty()) return;  // all motion prescribed: no equation to check
@@ -99,6 +117,12 @@ void expect_matches_numerics(const model::Model& model, const symbolic::Equation
     const VecX Mv = M * free_part(s.vdot, e.free_speeds());
     const double scale = std::max({Mv.cwiseAbs().maxCoeff(), bias.cwiseAbs().maxCoeff(), 1e-300});
     EXPECT_MATRIX_NEAR(Mv + bias, VecX::Zero(bias.size()), 1e-12 * scale) << "state " << k;
+    // The Newton–Euler form holds with the numeric reactions: each row is a sum of products of
+    // the loads, accelerations and geometry (of the size of `scale` and the reactions).
+    const VecX residuals = e.newton_euler_residuals(s.q, s.v, s.vdot, s.u, s.reactions);
+    const double ne_scale = std::max(scale, s.reactions.cwiseAbs().maxCoeff());
+    EXPECT_GE(e.newton_euler_rows(), 3);
+    EXPECT_MATRIX_NEAR(residuals, VecX::Zero(residuals.size()), 1e-12 * ne_scale) << "state " << k;
   }
 }
 
@@ -113,7 +137,9 @@ TEST(SymbolicEquations, BundledExamplesEqualCrbaAndForwardDynamics) {
                            "rotor_on_bearings", "unbalanced_rotor", "kinematics/turntable_bead"}) {
     SCOPED_TRACE(name);
     const io::ModelFile file = io::read_model_file(example(name));
-    const symbolic::Equations e = symbolic::derive_equations(file.model);
+    symbolic::EquationOptions options;
+    options.newton_euler = true;
+    const symbolic::Equations e = symbolic::derive_equations(file.model, options);
     expect_matches_numerics(file.model, e, 7, 3);
   }
 }
@@ -129,7 +155,9 @@ TEST(SymbolicEquations, RandomTreesOfEveryJointTypeEqualCrbaAndForwardDynamics) 
   for (const auto& types : families) {
     SCOPED_TRACE(seed);
     const model::Model model = test::random_tree(4, seed++, types);
-    const symbolic::Equations e = symbolic::derive_equations(model);
+    symbolic::EquationOptions options;
+    options.newton_euler = true;
+    const symbolic::Equations e = symbolic::derive_equations(model, options);
     expect_matches_numerics(model, e, seed, 3);
   }
 }
@@ -139,6 +167,7 @@ TEST(SymbolicEquations, SymbolsEvaluateAtTheModelsValues) {
   const io::ModelFile file = io::read_model_file(example("double_pendulum"));
   symbolic::EquationOptions options;
   options.all_symbols = true;
+  options.newton_euler = true;
   const symbolic::Equations e = symbolic::derive_equations(file.model, options);
   EXPECT_GE(e.parameters().size(), 5u);
   expect_matches_numerics(file.model, e, 3, 2);
@@ -183,6 +212,114 @@ TEST(SymbolicEquations, LumpedClassicsReadAsTheTextbookWritesThem) {
   expect_same_equation(car.equation(1, symbolic::Format::text),
                        "375*body_travel_ddot + 9800*(body_travel_dot - wheel_travel_dot) + "
                        "130000*(body_travel - wheel_travel) = 0");
+}
+
+// The numeric linearization of the same model about the same point, with its inputs and outputs.
+analysis::LinearModel numeric_linearization(const io::ModelFile& file, const VecX& q, const VecX& v,
+                                            std::vector<std::string> inputs,
+                                            std::vector<std::string> outputs) {
+  analysis::LinearizationOptions options;
+  options.inputs = std::move(inputs);
+  options.outputs = std::move(outputs);
+  options.output_specs = file.outputs;
+  return analysis::linearize(file.model, {0.0, q, v}, options);
+}
+
+std::vector<model::SignalSample> signals_at(const model::Model& m, double t) {
+  std::vector<model::SignalSample> samples;
+  for (const model::Signal& s : m.signals()) samples.push_back(s.sample(t));
+  return samples;
+}
+
+TEST(SymbolicLinearization, CruiseControlTransferFunctionIsOneOverMsPlusB) {
+  // FPE ch. 2: V(s)/U(s) = 1/(m s + b) per unit of force; the model's force is F_engine u.
+  const io::ModelFile file = io::read_model_file(example("cruise_control"));
+  const symbolic::Equations e = symbols_of("cruise_control");
+  const VecX q = file.model.initial_q(), v = file.model.initial_v();
+  const symbolic::LinearEquations l =
+      symbolic::linearize_equations(e, file.model, q, v, signals_at(file.model, 0.0));
+  ASSERT_EQ(l.input_names(), std::vector<std::string>{"u"});
+  const std::string G = l.transfer_function(0, 0, true, symbolic::Format::text);
+  GiNaC::parser reader;
+  EXPECT_TRUE(GiNaC::normal(reader(G) - reader("F_engine/(m_car*s + c_road)")).is_zero()) << G;
+  ASSERT_TRUE(l.has_state_space());
+  EXPECT_TRUE(
+      GiNaC::normal(reader(l.entry(symbolic::LinearMatrix::A, 1, 1, symbolic::Format::text)) +
+                    reader("c_road/m_car"))
+          .is_zero());
+}
+
+// G(jω) of the symbolic linearization, parameters at their values, against the numeric
+// linearization's (the one `momenta response` plots) at frequencies across the model's poles.
+// The numeric one's velocity and input columns are exact (central differences of quadratics) and
+// its configuration columns carry the Richardson-extrapolated differences' ~1e-10 relative error
+// (analysis/linearize.hpp): 1e-8 of |G| covers both.
+void expect_transfer_functions_agree(const std::string& name, const std::string& input,
+                                     const std::string& output, int coordinate, bool rate,
+                                     const VecX& q, const VecX& v) {
+  const io::ModelFile file = io::read_model_file(example(name));
+  symbolic::EquationOptions options;
+  options.all_symbols = true;
+  const symbolic::Equations e = symbolic::derive_equations(file.model, options);
+  const symbolic::LinearEquations l =
+      symbolic::linearize_equations(e, file.model, q, v, signals_at(file.model, 0.0));
+  const auto& inputs = l.input_names();
+  const int i = static_cast<int>(std::find(inputs.begin(), inputs.end(), input) - inputs.begin());
+  const analysis::LinearModel numeric = numeric_linearization(file, q, v, {input}, {output});
+  for (const double w : {0.1, 1.0, 3.7, 10.0, 55.0, 300.0}) {
+    const std::complex<double> s(0.0, w);
+    const std::complex<double> symbolic_G = l.transfer_function_at(i, coordinate, rate, s);
+    const std::complex<double> numeric_G = analysis::evaluate(numeric.system, 0, 0, s);
+    EXPECT_LE(std::abs(symbolic_G - numeric_G), 1e-8 * std::abs(numeric_G))
+        << name << " at ω = " << w << ": " << symbolic_G << " vs " << numeric_G;
+  }
+}
+
+TEST(SymbolicLinearization, TransferFunctionsEqualTheNumericLinearizations) {
+  const io::ModelFile cruise = io::read_model_file(example("cruise_control"));
+  expect_transfer_functions_agree("cruise_control", "u", "speed", 0, true, cruise.model.initial_q(),
+                                  cruise.model.initial_v());
+  // The quarter car from the road (a prescribed input) to the body's travel (FPE Example 2.2).
+  const io::ModelFile car = io::read_model_file(example("quarter_car"));
+  expect_transfer_functions_agree("quarter_car", "road", "body_y", 1, false, car.model.initial_q(),
+                                  car.model.initial_v());
+  // The satellite (1/(I s²) per unit torque) and the flexible satellite's two-mode plant.
+  const io::ModelFile sat = io::read_model_file(example("satellite_attitude"));
+  expect_transfer_functions_agree("satellite_attitude", "thrust", "theta", 0, false,
+                                  sat.model.initial_q(), sat.model.initial_v());
+}
+
+TEST(SymbolicLinearization, PendulumAndDoublePendulumStateMatricesEqualTheNumericOnes) {
+  // About the bottom (and, for the pendulum, about 40° where it is not at rest: v̇0 ≠ 0 enters K).
+  for (const auto& [name, angle] :
+       {std::pair{"pendulum", 0.0}, {"pendulum", 0.7}, {"double_pendulum", 0.0}}) {
+    const io::ModelFile file = io::read_model_file(example(name));
+    symbolic::EquationOptions options;
+    options.all_symbols = true;
+    const symbolic::Equations e = symbolic::derive_equations(file.model, options);
+    VecX q = VecX::Constant(file.model.nq(), angle), v = VecX::Zero(file.model.nv());
+    const symbolic::LinearEquations l =
+        symbolic::linearize_equations(e, file.model, q, v, signals_at(file.model, 0.0));
+    ASSERT_TRUE(l.has_state_space());
+    const analysis::LinearModel numeric = numeric_linearization(file, q, v, {}, {});
+    const MatX& A = numeric.system.A();
+    ASSERT_EQ(A.rows(), l.rows(symbolic::LinearMatrix::A));
+    // Parameters at their values: each entry parsed, its symbols substituted, evaluated.
+    GiNaC::parser reader;
+    GiNaC::exmap values;
+    for (const symbolic::Parameter& p : e.parameters())
+      values[reader(p.name)] = GiNaC::numeric(p.value);
+    for (int r = 0; r < A.rows(); ++r) {
+      for (int c = 0; c < A.cols(); ++c) {
+        const GiNaC::ex entry = GiNaC::evalf(
+            reader(l.entry(symbolic::LinearMatrix::A, r, c, symbolic::Format::text)).subs(values));
+        ASSERT_TRUE(GiNaC::is_a<GiNaC::numeric>(entry)) << entry;
+        EXPECT_NEAR(GiNaC::ex_to<GiNaC::numeric>(entry).to_double(), A(r, c),
+                    1e-8 * A.cwiseAbs().maxCoeff())
+            << name << " A(" << r << ", " << c << ")";
+      }
+    }
+  }
 }
 
 TEST(SymbolicEquations, RefusesWhatItDoesNotWriteAndUnknownSymbols) {
