@@ -554,12 +554,20 @@ def campbell_diagram(model: Model, speed_from: float, speed_to: float, points: i
     """The Campbell diagram of the model's rotor — one body on a ball or free joint, or a rotor turning on its joint — from speed_from to speed_to (rad/s), as `momenta campbell` (which takes rev/min)."""
     ...
 
+def equations(model: Model, *, symbols: List[str] = [], all_symbols: bool = False, form: str = 'lagrange', format: str = 'text') -> List[str]:
+    """The model's equations of motion in symbols, one string per equation, as `momenta equations` prints them: 'lagrange' (one per free speed) or 'newton-euler' (each body's ΣF = m a_G and ΣM_G = Ī α + ω × Ī ω with the joint reactions, prefixed with the body); 'text' or 'latex'. `symbols` names the parame"""
+    ...
+
 def find_equilibrium(model: Model, *, q_guess: object = None, t: float = 0.0, tolerance: float = 1e-10, max_iterations: int = 100) -> Equilibrium:
     """The static equilibrium nearest (by Newton's method) to q_guess (default the initial configuration), with its linearization and stability. Raises NumericalError when there is none to be found, naming the largest residual."""
     ...
 
 def find_steady_precession(model: Model, tilt: float, spin: float) -> FoundPrecession:
     """The steady precessions of the model's symmetric top at tilt (rad) and spin ω₃ (rad/s), as `momenta steady` (which takes degrees)."""
+    ...
+
+def free_body_diagram(model: Model, body: ArrayLike, *, q: object = None, v: object = None, t: float = 0.0) -> dict:
+    """The body's free-body and kinetic diagrams at (t, q, v) — without q and v, the state the model's own run reaches at t (its initial state at t = 0) — as `momenta diagram` computes them: a dict with `loads` (each a dict: kind, name, description, point, force, couple in the world's axes, and the joint i"""
     ...
 
 def impulse_response(system: StateSpace, input: object = 0, *, final_time: Optional[float] = None, samples: Optional[int] = None) -> TimeResponse:
@@ -586,6 +594,10 @@ def normal_modes(M: object, K: object, coordinate_names: List[str] = []) -> Norm
     """Normal modes of M q̈ + K q = 0 (the generalized symmetric eigenproblem)."""
     ...
 
+def relative_kinematics(model: Model, body: ArrayLike, *, point: object = None, frame: ArrayLike = 'world', q: object = None, v: object = None, t: float = 0.0) -> dict:
+    """The motion of the point `point` (m, in the body's frame; its origin by default) of `body` seen from the frame of body `frame` at (t, q, v) (without q and v, the state its run reaches at t), split into relative, frame-origin, Euler, centripetal and Coriolis terms, every vector in the frame's axes, as"""
+    ...
+
 def simulate(model: Model, *, duration: Optional[float] = None, dt: Optional[float] = None, integrator: Optional[str] = None, rtol: Optional[float] = None, atol: Optional[float] = None, every: Optional[int] = None, reactions: bool = False) -> SimulationResult:
     """Integrates the model from its initial state, as `momenta simulate` does: keyword arguments override the model file's `simulation:` section, which overrides the defaults (duration 10 s, rk4 at dt 1 ms; rtol/atol alone choose dopri5; a fixed-step run longer than 10 000 steps records every n-th so 10 0"""
     ...
@@ -608,6 +620,10 @@ def step_response(system: StateSpace, input: object = 0, *, final_time: Optional
 
 def sweep(path: os.PathLike[str] | str, threads: Optional[int] = None) -> dict:
     """Every run of the sweep file at `path` (docs/sweeps.md) on `threads` threads (default: every core), as columns: 'run', each parameter and metric (float64 arrays, NaN where a run does not define it), 'ok' (bool array) and 'message' (list). The numbers are those `momenta sweep` writes, bit for bit; pan"""
+    ...
+
+def symbolic_transfer_function(model: Model, input: str, coordinate: str, *, rate: bool = False, symbols: List[str] = [], all_symbols: bool = False, q: object = None, v: object = None, t: float = 0.0, format: str = 'text') -> str:
+    """The transfer function in s from a signal to a free coordinate (or its rate) of the equations linearized in symbols about (t, q, v) (without q and v, the state the model's run reaches at t), as `momenta equations --transfer` prints it: 'F_engine/(m_car*s+c_road)' for the cruise control's u to road ra"""
     ...
 
 def transfer_function(system: StateSpace, input: object, output: object, cancellation_tolerance: float = 1e-06) -> TransferFunction:

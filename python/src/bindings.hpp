@@ -87,5 +87,6 @@ void bind_dynamics(py::module_& m);
 void bind_simulation(py::module_& m);
 void bind_analysis(py::module_& m);
 void bind_sweep(py::module_& m);
+void bind_mechanics(py::module_& m);
 
 }  // namespace momenta::python

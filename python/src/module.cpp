@@ -16,4 +16,5 @@ PYBIND11_MODULE(_core, m) {
   bind_simulation(m);
   bind_analysis(m);
   bind_sweep(m);
+  bind_mechanics(m);
 }

@@ -1,0 +1,213 @@
+// The textbook's method from Python: free-body diagrams (`momenta diagram`), rotating-frame
+// kinematics (`momenta kinematics`) and equations of motion in symbols (`momenta equations`),
+// each returning what the command prints, as Python values.
+
+#include <fmt/format.h>
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "model_handle.hpp"
+#include "momenta/analysis/free_body.hpp"
+#include "momenta/dynamics/momentum.hpp"
+#include "momenta/dynamics/relative_kinematics.hpp"
+#include "momenta/report/free_body_svg.hpp"
+#include "momenta/simulate/run_request.hpp"
+#include "momenta/simulate/state_at.hpp"
+#include "momenta/symbolic/equations.hpp"
+#include "momenta/symbolic/linear_equations.hpp"
+#include "momenta/system/multibody_system.hpp"
+
+namespace momenta::python {
+
+namespace {
+
+// The state (t, q, v) a call looks at: as `--time t` on the command line, the model run from
+// its initial state (made consistent with its constraints) to t with its file's simulation
+// settings, unless q or v is given (the other then the initial one).
+struct Instant {
+  double t;
+  VecX q, v;
+};
+
+Instant instant_of(const ModelHandle& h, const py::object& q, const py::object& v, double t) {
+  if (q.is_none() && v.is_none()) {
+    const simulate::ResolvedRun run = simulate::resolve_run({}, h.file->simulation);
+    const integrate::State s = simulate::state_at(h.model(), t, run.options);
+    return {s.t, s.q, s.v};
+  }
+  Instant s{t, h.model().initial_q(), h.model().initial_v()};
+  ArgStorage storage;
+  if (!q.is_none()) s.q = vector_arg(q, "q", h.model().nq(), "the model's nq", storage);
+  if (!v.is_none()) s.v = vector_arg(v, "v", h.model().nv(), "the model's nv", storage);
+  return s;
+}
+
+py::dict load_dict(const model::Model& model, const analysis::Load& load) {
+  py::dict d;
+  d["kind"] = analysis::load_kind_name(load.kind);
+  d["name"] = load.name;
+  d["description"] = load.description;
+  d["point"] = to_numpy(load.p_WoP_W);
+  d["force"] = to_numpy(load.force_W);
+  d["couple"] = to_numpy(load.couple_W);
+  d["joint"] = load.joint_index >= 0 ? py::object(py::str(model.joint(load.joint_index).name))
+                                     : py::object(py::none());
+  return d;
+}
+
+symbolic::Format format_arg(const std::string& format) {
+  if (format == "text") return symbolic::Format::text;
+  if (format == "latex") return symbolic::Format::latex;
+  throw InvalidArgument(fmt::format("format '{}': expected 'text' or 'latex'", format));
+}
+
+symbolic::EquationOptions equation_options(std::vector<std::string> symbols, bool all_symbols,
+                                           bool newton_euler) {
+  symbolic::EquationOptions o;
+  o.symbols = std::move(symbols);
+  o.all_symbols = all_symbols;
+  o.newton_euler = newton_euler;
+  return o;
+}
+
+}  // namespace
+
+void bind_mechanics(py::module_& m) {
+  m.def(
+      "free_body_diagram",
+      [](const ModelHandle& h, const py::handle& body, const py::object& q, const py::object& v,
+         double t) {
+        const Instant s = instant_of(h, q, v, t);
+        system::MultibodySystem system(h.model());
+        const int b = body_index_arg(h, body);
+        const analysis::FreeBodyDiagram d =
+            analysis::free_body_diagram(system, h.model().body(b).name, s.t, s.q, s.v);
+        py::list loads;
+        for (const analysis::Load& load : d.loads) loads.append(load_dict(h.model(), load));
+        py::dict out;
+        out["body"] = d.body;
+        out["t"] = d.t;
+        out["mass"] = d.mass;
+        out["com"] = to_numpy(d.p_WoG_W);
+        out["plane_normal"] =
+            d.plane_normal ? py::object(to_numpy(*d.plane_normal)) : py::object(py::none());
+        out["loads"] = loads;
+        out["m_a_G"] = to_numpy(d.m_a_G());
+        out["I_alpha"] = to_numpy(d.I_alpha());
+        out["omega_cross_H"] = to_numpy(d.w_cross_H());
+        out["force_residual"] = to_numpy(d.force_residual());
+        out["moment_residual"] = to_numpy(d.moment_residual());
+        out["svg"] = report::free_body_svg(d, h.file->name);
+        return out;
+      },
+      py::arg("model"), py::arg("body"), py::kw_only(), py::arg("q") = py::none(),
+      py::arg("v") = py::none(), py::arg("t") = 0.0,
+      R"doc(The body's free-body and kinetic diagrams at (t, q, v) — without q and v, the state
+the model's own run reaches at t (its initial state at t = 0) — as `momenta diagram` computes
+them: a dict with `loads` (each a dict: kind, name,
+description, point, force, couple in the world's axes, and the joint it acts through), the kinetic
+terms m_a_G, I_alpha, omega_cross_H, the residuals of ΣF = m a_G and ΣM_G = Ḣ_G, the plane normal
+when the diagram is planar, and `svg`, the picture (docs/diagrams.md).)doc");
+
+  m.def(
+      "relative_kinematics",
+      [](const ModelHandle& h, const py::handle& body, const py::object& point,
+         const py::handle& frame, const py::object& q, const py::object& v, double t) {
+        const Instant s = instant_of(h, q, v, t);
+        system::MultibodySystem system(h.model());
+        system.evaluate(s.t, s.q, s.v);
+        const int b = body_index_arg(h, body), f = body_index_arg(h, frame);
+        const Vec3 p = point.is_none() ? Vec3::Zero() : vec3_arg(point, "point");
+        const dynamics::RelativeKinematics k =
+            dynamics::relative_kinematics(h.model(), system.data(), b, p, f);
+        py::dict out;
+        out["omega"] = to_numpy(k.w_WF_F);
+        out["omega_dot"] = to_numpy(k.alpha_WF_F);
+        out["position"] = to_numpy(k.p_FoP_F);
+        out["v_relative"] = to_numpy(k.v_relative);
+        out["v_frame_origin"] = to_numpy(k.v_WFo_F);
+        out["v_rotation"] = to_numpy(k.v_rotation);
+        out["v_absolute"] = to_numpy(k.v_WP_F);
+        out["a_relative"] = to_numpy(k.a_relative);
+        out["a_frame_origin"] = to_numpy(k.a_WFo_F);
+        out["a_euler"] = to_numpy(k.a_euler);
+        out["a_centripetal"] = to_numpy(k.a_centripetal);
+        out["a_coriolis"] = to_numpy(k.a_coriolis);
+        out["a_transport"] = to_numpy(k.a_transport());
+        out["a_absolute"] = to_numpy(k.a_WP_F);
+        return out;
+      },
+      py::arg("model"), py::arg("body"), py::kw_only(), py::arg("point") = py::none(),
+      py::arg("frame") = "world", py::arg("q") = py::none(), py::arg("v") = py::none(),
+      py::arg("t") = 0.0,
+      R"doc(The motion of the point `point` (m, in the body's frame; its origin by default) of
+`body` seen from the frame of body `frame` at (t, q, v) (without q and v, the state its run
+reaches at t), split into relative, frame-origin, Euler, centripetal
+and Coriolis terms, every vector in the frame's axes, as `momenta kinematics` gives them
+(docs/kinematics.md).)doc");
+
+  m.def(
+      "equations",
+      [](const ModelHandle& h, std::vector<std::string> symbols, bool all_symbols,
+         const std::string& form, const std::string& format) {
+        const symbolic::Format f = format_arg(format);
+        if (form != "lagrange" && form != "newton-euler") {
+          throw InvalidArgument(
+              fmt::format("form '{}': expected 'lagrange' or 'newton-euler'", form));
+        }
+        const symbolic::Equations e = symbolic::derive_equations(
+            h.model(), equation_options(std::move(symbols), all_symbols, form == "newton-euler"));
+        std::vector<std::string> lines;
+        if (form == "lagrange") {
+          for (int r = 0; r < static_cast<int>(e.free_speeds().size()); ++r)
+            lines.push_back(e.equation(r, f));
+        } else {
+          for (int r = 0; r < e.newton_euler_rows(); ++r)
+            lines.push_back(e.newton_euler_group(r) + ": " + e.newton_euler_equation(r, f));
+        }
+        return lines;
+      },
+      py::arg("model"), py::kw_only(), py::arg("symbols") = std::vector<std::string>{},
+      py::arg("all_symbols") = false, py::arg("form") = "lagrange", py::arg("format") = "text",
+      R"doc(The model's equations of motion in symbols, one string per equation, as
+`momenta equations` prints them: 'lagrange' (one per free speed) or 'newton-euler' (each body's
+ΣF = m a_G and ΣM_G = Ī α + ω × Ī ω with the joint reactions, prefixed with the body); 'text' or
+'latex'. `symbols` names the parameters to keep as symbols (docs/equations.md).)doc");
+
+  m.def(
+      "symbolic_transfer_function",
+      [](const ModelHandle& h, const std::string& input, const std::string& coordinate, bool rate,
+         std::vector<std::string> symbols, bool all_symbols, const py::object& q,
+         const py::object& v, double t, const std::string& format) {
+        const Instant s = instant_of(h, q, v, t);
+        const symbolic::Equations e = symbolic::derive_equations(
+            h.model(), equation_options(std::move(symbols), all_symbols, false));
+        std::vector<model::SignalSample> signals;
+        for (const model::Signal& signal : h.model().signals())
+          signals.push_back(signal.sample(s.t));
+        const symbolic::LinearEquations l =
+            symbolic::linearize_equations(e, h.model(), s.q, s.v, signals);
+        const auto& inputs = l.input_names();
+        const auto& names = l.coordinate_names();
+        const auto i = std::find(inputs.begin(), inputs.end(), input);
+        const auto k = std::find(names.begin(), names.end(), coordinate);
+        if (i == inputs.end() || k == names.end()) {
+          throw InvalidArgument(fmt::format(
+              "symbolic_transfer_function: input '{}' (the inputs are {}), coordinate '{}' (the "
+              "coordinates are {})",
+              input, fmt::join(inputs, ", "), coordinate, fmt::join(names, ", ")));
+        }
+        return l.transfer_function(static_cast<int>(i - inputs.begin()),
+                                   static_cast<int>(k - names.begin()), rate, format_arg(format));
+      },
+      py::arg("model"), py::arg("input"), py::arg("coordinate"), py::kw_only(),
+      py::arg("rate") = false, py::arg("symbols") = std::vector<std::string>{},
+      py::arg("all_symbols") = false, py::arg("q") = py::none(), py::arg("v") = py::none(),
+      py::arg("t") = 0.0, py::arg("format") = "text",
+      R"doc(The transfer function in s from a signal to a free coordinate (or its rate) of the
+equations linearized in symbols about (t, q, v) (without q and v, the state the model's run
+reaches at t), as `momenta equations --transfer` prints it:
+'F_engine/(m_car*s+c_road)' for the cruise control's u to road rate (docs/equations.md).)doc");
+}
+
+}  // namespace momenta::python

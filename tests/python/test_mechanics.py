@@ -1,0 +1,85 @@
+"""The textbook's method from Python: free-body diagrams against `momenta diagram --json`
+(bit-identical) and the pendulum's rod tension, rotating-frame kinematics against
+`momenta kinematics --json`, equations and transfer functions in symbols against the command
+line and the numeric linearization."""
+
+import json
+
+import numpy as np
+import pytest
+
+import momenta
+
+from conftest import EXAMPLES, run_cli
+
+
+def test_free_body_diagram_is_the_command_lines():
+    # The four-bar's coupler at its initial state: pin, closure and weight.
+    path = EXAMPLES / "constraints" / "four_bar.yaml"
+    d = momenta.free_body_diagram(momenta.load_model(path), "coupler")
+    expected = json.loads(run_cli("diagram", path, "--body", "coupler", "--json"))
+    assert [load["name"] for load in d["loads"]] == [load["name"] for load in expected["loads"]]
+    for mine, theirs in zip(d["loads"], expected["loads"]):
+        assert mine["kind"] == theirs["kind"]
+        np.testing.assert_array_equal(mine["force"], theirs["force"])
+        np.testing.assert_array_equal(mine["point"], theirs["point"])
+        np.testing.assert_array_equal(mine["couple"], theirs["couple"])
+    np.testing.assert_array_equal(d["m_a_G"], expected["kinetic"]["m_a_G"])
+    assert d["svg"].startswith("<svg")
+
+
+def test_pendulum_rod_pulls_with_mg_cos_theta_plus_ml_theta_dot_squared():
+    model = momenta.load_model(EXAMPLES / "pendulum.yaml")
+    theta, rate = 0.9, -1.7
+    d = momenta.free_body_diagram(model, "bob", q=[theta], v=[rate])
+    pin = next(load for load in d["loads"] if load["name"] == "pivot")
+    assert pin["kind"] == "reaction" and pin["joint"] == "pivot"
+    tension = 9.81 * np.cos(theta) + rate**2
+    np.testing.assert_allclose(pin["force"], -tension * d["com"], rtol=1e-13, atol=1e-13)
+    assert np.linalg.norm(d["force_residual"]) <= 1e-13 * 10
+    assert abs(abs(d["plane_normal"][1]) - 1) <= 1e-15
+
+
+def test_relative_kinematics_is_the_command_lines():
+    path = EXAMPLES / "kinematics" / "turntable_bead.yaml"
+    model = momenta.load_model(path)
+    k = momenta.relative_kinematics(model, "bead", frame="turntable", q=[0.3, 0.1], v=[2.0, 0.5],
+                                    t=0.15)
+    # v_rel = [0.5, 0, 0] in the slot, Coriolis 2 Ω × v_rel = [0, 2, 0].
+    np.testing.assert_allclose(k["v_relative"], [0.5, 0, 0], atol=1e-15)
+    np.testing.assert_allclose(k["a_coriolis"], [0, 2.0, 0], atol=1e-14)
+    np.testing.assert_allclose(k["a_centripetal"], [-0.4, 0, 0], atol=1e-14)
+
+
+def same_expression(a, b, names):
+    """Two expressions as GiNaC prints them are equal at random values of their symbols (GiNaC's
+    order of terms can differ from process to process)."""
+    rng = np.random.default_rng(3)
+    for _ in range(3):
+        values = {name: complex(*rng.uniform(0.5, 2.0, 2)) for name in names}
+        left = eval(a.replace("^", "**"), {}, values)
+        right = eval(b.replace("^", "**"), {}, values)
+        if abs(left - right) > 1e-12 * abs(right):
+            return False
+    return True
+
+
+def test_equations_and_transfer_functions_in_symbols():
+    path = EXAMPLES / "cruise_control.yaml"
+    model = momenta.load_model(path)
+    names = ["m_car", "c_road", "F_engine", "u", "road_dot", "road_ddot", "s"]
+    (equation,) = momenta.equations(model, all_symbols=True)
+    printed = run_cli("equations", path, "--all-symbols").splitlines()[1]
+    for mine, theirs in zip(equation.split(" = "), printed.split(" = ")):
+        assert same_expression(mine, theirs, names), (equation, printed)
+    # F/(m s + b), as the command line prints it and as Franklin writes it.
+    g = momenta.symbolic_transfer_function(model, "u", "road", rate=True, all_symbols=True)
+    line = run_cli("equations", path, "--all-symbols", "--transfer", "u:speed").strip()
+    assert same_expression(g, line.split(" = ")[-1], names)
+    assert same_expression(g, "F_engine/(m_car*s + c_road)", names)
+    assert same_expression(momenta.symbolic_transfer_function(model, "u", "road", rate=True),
+                           "1/(1000*s + 50)", names)
+    rows = momenta.equations(momenta.load_model(EXAMPLES / "pendulum.yaml"), form="newton-euler")
+    assert any(row.startswith("joint pivot: along pivot_dot") for row in rows)
+    with pytest.raises(momenta.InvalidArgument, match="no parameter named 'm'"):
+        momenta.equations(model, symbols=["m"])
