@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <optional>
 #include <set>
 #include <variant>
 
@@ -183,14 +184,6 @@ class Derivation {
         throw InvalidArgument(
             fmt::format("equations: joint '{}': a prescribed {} joint is not written yet", j.name,
                         model::joint_type_name(j.type)));
-      }
-    }
-    for (const model::ForceElement& e : model_.force_elements()) {
-      if (const auto* t = std::get_if<model::TorsionalSpringDamper>(&e); t && t->joint.empty()) {
-        throw InvalidArgument(fmt::format(
-            "equations: force element '{}': a torsional spring between two bodies is not "
-            "written yet",
-            t->name));
       }
     }
   }
@@ -482,7 +475,10 @@ class Derivation {
         const ex T = k * (length - l0) + c * length_rate;
         push(b, pb, (-T / length) * d);
         push(a, pa, (T / length) * d);
-      } else if (const auto* t = std::get_if<model::TorsionalSpringDamper>(&element)) {
+      } else if (const auto* t = std::get_if<model::TorsionalSpringDamper>(&element);
+                 t && t->joint_index < 0) {
+        add_two_body_torsion(*t, f);
+      } else if (t) {
         const model::Joint& j = model_.joint(t->joint_index);
         const ex k = params_("k_" + name, t->stiffness), c = params_("c_" + name, t->damping),
                  rest = params_("rest_" + name, t->rest_angle);
@@ -504,6 +500,75 @@ class Derivation {
     body_loads_ = f;
     joint_space_ = Q_;
     project_down(f, Q_);
+  }
+
+  // A torsional spring between two bodies whose relative rotation turns about one axis n: every
+  // joint on the tree path between them is revolute about an axis parallel to n, or does not
+  // turn (fixed, prismatic). Its angle from the rest orientation is φ = Σ ±(q_j − q_j0) (+ on the
+  // way down to b, − down to a) and it puts the moment −(k φ + c φ̇) n on b and the opposite on
+  // a, n being fixed in both. Other paths (a ball joint between them, two axes) are refused.
+  void add_two_body_torsion(const model::TorsionalSpringDamper& t, std::vector<Force>& f) {
+    const std::string& name = t.name;
+    // Every body's orientation at the initial configuration, numerically.
+    const VecX q0 = model_.initial_q();
+    std::vector<Mat3> R_W(static_cast<std::size_t>(model_.num_bodies()), Mat3::Identity());
+    for (const model::Joint& j : model_.joints()) {
+      const Transform X_JJc = model::joint_transform(j, q0.data() + j.q_index);
+      R_W[static_cast<std::size_t>(j.child_index)] =
+          R_W[static_cast<std::size_t>(j.parent_index)] * j.X_PJ.R * X_JJc.R * j.X_CJ.R.transpose();
+    }
+    // The joints from each body up to the first body both reach.
+    const auto ancestors = [&](int body) {
+      std::vector<int> chain = {body};
+      while (body != 0) chain.push_back(body = model_.body(body).parent_index);
+      return chain;
+    };
+    const std::vector<int> from_a = ancestors(t.body_a_index), from_b = ancestors(t.body_b_index);
+    int common = 0;
+    for (const int body : from_a) {
+      if (std::find(from_b.begin(), from_b.end(), body) != from_b.end()) {
+        common = body;
+        break;
+      }
+    }
+    std::optional<Vec3> axis;  // n in W at the initial configuration
+    ex phi = 0, phi_rate = 0;
+    const auto walk = [&](const std::vector<int>& chain, int sign) {
+      for (const int body : chain) {
+        if (body == common) return;
+        const model::Joint& j = model_.joint(model_.body(body).joint_index);
+        if (j.type == model::JointType::fixed || j.type == model::JointType::prismatic) continue;
+        if (j.type != model::JointType::revolute) {
+          throw InvalidArgument(fmt::format(
+              "equations: force element '{}': a torsional spring across the {} joint '{}' is not "
+              "written yet (only revolute joints about one axis between its bodies)",
+              name, model::joint_type_name(j.type), j.name));
+        }
+        const Vec3 n_W = R_W[static_cast<std::size_t>(j.parent_index)] * j.X_PJ.R * j.axis;
+        if (!axis) axis = n_W;
+        if (n_W.cross(*axis).norm() > 1e-9) {
+          throw InvalidArgument(fmt::format(
+              "equations: force element '{}': its bodies turn about more than one axis relative "
+              "to each other (joint '{}'); not written yet",
+              name, j.name));
+        }
+        const int s = sign * (n_W.dot(*axis) > 0 ? 1 : -1);
+        phi += s * (impl_.q[static_cast<std::size_t>(j.q_index)] - exact_number(q0[j.q_index]));
+        phi_rate += s * impl_.v[static_cast<std::size_t>(j.v_index)];
+      }
+    };
+    walk(from_b, +1);
+    walk(from_a, -1);
+    if (!axis) return;  // nothing turns between them: the spring stays relaxed
+    const ex k = params_("k_" + name, t.stiffness), c = params_("c_" + name, t.damping);
+    const ex moment = k * phi + c * phi_rate;
+    const auto push_moment = [&](int body, double sign) {
+      if (body == 0) return;
+      const V3 n = to_v3(R_W[static_cast<std::size_t>(body)].transpose() * *axis);
+      f[body] = f[body] + Force{(ex(sign) * moment) * n, V3{}};
+    };
+    push_moment(t.body_b_index, -1.0);
+    push_moment(t.body_a_index, +1.0);
   }
 
   // |d|. Where the line keeps one direction (d has one nonzero component, as a suspension's

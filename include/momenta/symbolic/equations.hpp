@@ -130,7 +130,8 @@ class Equations {
 };
 
 /// Derives the equations of `model`. Throws InvalidArgument for what it cannot write yet (a
-/// constraint, a two-body torsional spring, a prescribed ball or free joint), naming it, and for
+/// constraint, a two-body torsional spring whose bodies turn about more than one axis relative
+/// to each other, a prescribed ball or free joint), naming it, and for
 /// a name in options.symbols that is no parameter of the model (with the names it has).
 Equations derive_equations(const model::Model& model, const EquationOptions& options = {});
 

@@ -131,10 +131,11 @@ std::string example(const std::string& name) {
 }
 
 TEST(SymbolicEquations, BundledExamplesEqualCrbaAndForwardDynamics) {
-  for (const char* name : {"cruise_control", "quarter_car", "satellite_attitude", "pendulum",
-                           "compound_pendulum", "double_pendulum", "free_body_tennis_racket",
-                           "heavy_top", "sleeping_top", "gyroscope", "rotating_shaft_bent_rod",
-                           "rotor_on_bearings", "unbalanced_rotor", "kinematics/turntable_bead"}) {
+  for (const char* name :
+       {"cruise_control", "quarter_car", "satellite_attitude", "pendulum", "compound_pendulum",
+        "double_pendulum", "free_body_tennis_racket", "heavy_top", "sleeping_top", "gyroscope",
+        "rotating_shaft_bent_rod", "rotor_on_bearings", "unbalanced_rotor",
+        "kinematics/turntable_bead", "flexible_satellite"}) {
     SCOPED_TRACE(name);
     const io::ModelFile file = io::read_model_file(example(name));
     symbolic::EquationOptions options;
@@ -203,6 +204,15 @@ TEST(SymbolicEquations, LumpedClassicsReadAsTheTextbookWritesThem) {
   // Pendulum: I θ̈ + m g l sin θ = 0 with the bob at c_z = −l below the pivot.
   expect_same_equation(symbols_of("pendulum").equation(0, symbolic::Format::text),
                        "m_bob*c_bob_z^2*pivot_ddot - g*m_bob*c_bob_z*sin(pivot) = 0");
+  // Flexible satellite (FPE ch. 2): I1 θ̈1 + b (θ̇1 − θ̇2) + k (θ1 − θ2) = Tc and
+  // I2 θ̈2 + b (θ̇2 − θ̇1) + k (θ2 − θ1) = 0, the boom a torsional spring between the bodies.
+  const symbolic::Equations flexible = symbols_of("flexible_satellite");
+  expect_same_equation(flexible.equation(0, symbolic::Format::text),
+                       "I_hub_zz*theta1_ddot + c_boom*(theta1_dot - theta2_dot) + "
+                       "k_boom*(theta1 - theta2) = F_control*tc");
+  expect_same_equation(flexible.equation(1, symbolic::Format::text),
+                       "I_appendage_zz*theta2_ddot + c_boom*(theta2_dot - theta1_dot) + "
+                       "k_boom*(theta2 - theta1) = 0");
   // Quarter car (FPE ch. 2), in numbers: the wheel and the body.
   const symbolic::Equations car =
       symbolic::derive_equations(io::read_model_file(example("quarter_car")).model);
@@ -287,6 +297,9 @@ TEST(SymbolicLinearization, TransferFunctionsEqualTheNumericLinearizations) {
   const io::ModelFile sat = io::read_model_file(example("satellite_attitude"));
   expect_transfer_functions_agree("satellite_attitude", "thrust", "theta", 0, false,
                                   sat.model.initial_q(), sat.model.initial_v());
+  const io::ModelFile flexible = io::read_model_file(example("flexible_satellite"));
+  expect_transfer_functions_agree("flexible_satellite", "tc", "theta2", 1, false,
+                                  flexible.model.initial_q(), flexible.model.initial_v());
 }
 
 TEST(SymbolicLinearization, PendulumAndDoublePendulumStateMatricesEqualTheNumericOnes) {
@@ -333,6 +346,23 @@ TEST(SymbolicEquations, RefusesWhatItDoesNotWriteAndUnknownSymbols) {
     ADD_FAILURE() << "no error";
   } catch (const InvalidArgument& error) {
     EXPECT_NE(std::string(error.what()).find("did you mean 'm_bob'"), std::string::npos)
+        << error.what();
+  }
+  // A torsional spring across a ball joint: its angle is no sum of joint angles.
+  const std::string ball =
+      "name: ball\nbodies:\n  - {name: a, mass: 1, inertia: [1, 1, 1]}\n"
+      "  - {name: b, mass: 1, inertia: [1, 1, 1]}\njoints:\n"
+      "  - {name: ja, type: revolute, parent: world, child: a, axis: [0, 0, 1]}\n"
+      "  - {name: jb, type: ball, parent: a, child: b}\n"
+      "forces:\n  - {name: twist, type: torsional_spring, body_a: a, body_b: b, stiffness: 1}\n";
+  try {
+    symbolic::derive_equations(io::parse_model_file(ball, "ball.yaml", ".").model);
+    ADD_FAILURE() << "no error";
+  } catch (const InvalidArgument& error) {
+    EXPECT_NE(std::string(error.what())
+                  .find("'twist': a torsional spring across the spherical "
+                        "joint 'jb'"),
+              std::string::npos)
         << error.what();
   }
 }
