@@ -40,10 +40,7 @@ struct EquationsOptions {
 symbolic::LinearEquations linear_equations(const io::ModelFile& file, const symbolic::Equations& e,
                                            const EquationsOptions& o) {
   const integrate::State point = instant_of(file, o.instant);
-  std::vector<model::SignalSample> signals;
-  for (const model::Signal& signal : file.model.signals())
-    signals.push_back(signal.sample(point.t));
-  return symbolic::linearize_equations(e, file.model, point.q, point.v, signals);
+  return symbolic::linearize_equations(e, file.model, point.t, point.q, point.v);
 }
 
 const char* matrix_name(symbolic::LinearMatrix which) {

@@ -182,11 +182,8 @@ and Coriolis terms, every vector in the frame's axes, as `momenta kinematics` gi
         const Instant s = instant_of(h, q, v, t);
         const symbolic::Equations e = symbolic::derive_equations(
             h.model(), equation_options(std::move(symbols), all_symbols, false));
-        std::vector<model::SignalSample> signals;
-        for (const model::Signal& signal : h.model().signals())
-          signals.push_back(signal.sample(s.t));
         const symbolic::LinearEquations l =
-            symbolic::linearize_equations(e, h.model(), s.q, s.v, signals);
+            symbolic::linearize_equations(e, h.model(), s.t, s.q, s.v);
         const auto& inputs = l.input_names();
         const auto& names = l.coordinate_names();
         const auto i = std::find(inputs.begin(), inputs.end(), input);

@@ -34,8 +34,6 @@ constexpr double kCharWidth = 6.6;  // of the 12 px label font, for placing labe
 // Below this fraction of the largest force (or moment) a vector is not drawn (it is listed).
 constexpr double kNegligible = 1e-9;
 
-std::string escaped(const std::string& text) { return detail::escape_html(text); }
-
 const char* colour(const std::string& kind) {
   if (kind == "gravity") return "#2e7d32";
   if (kind == "reaction") return "#c62828";
@@ -247,7 +245,7 @@ class Canvas {
         "<g class=\"force\" data-name=\"{}\" data-kind=\"{}\" data-value=\"{:.17g}\">"
         "<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" "
         "stroke-width=\"2.2\"/>{}",
-        escaped(name), kind, f.norm(), tail.x(), tail.y(), head.x(), head.y(), c,
+        detail::escape_html(name), kind, f.norm(), tail.x(), tail.y(), head.x(), head.y(), c,
         arrow_head(head, dir, c));
     // The label beyond the free end, on the side the arrow points away from the body.
     const Vec2 outward = push ? Vec2(-dir) : dir;
@@ -264,7 +262,7 @@ class Canvas {
     const Vec2 p = at.at(point);
     svg_ +=
         fmt::format("<g class=\"couple\" data-name=\"{}\" data-kind=\"{}\" data-value=\"{:.17g}\">",
-                    escaped(name), kind, m.norm());
+                    detail::escape_html(name), kind, m.norm());
     if (view.planar) {
       const double r = size;
       const bool ccw = m.dot(view.out) > 0.0;
@@ -301,7 +299,7 @@ class Canvas {
   void text(double x, double y, const std::string& content, const std::string& attributes = "") {
     const Vec2 p = clamp_to_page({x, y}, height_);
     svg_ += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" {}>{}</text>\n", p.x(), p.y(), attributes,
-                        escaped(content));
+                        detail::escape_html(content));
   }
 
   void axes(const View& view, double x, double y) {
@@ -337,7 +335,7 @@ class Canvas {
     anchor = clamp_to_page(anchor, height_);
     svg_ += fmt::format(
         "<text x=\"{:.1f}\" y=\"{:.1f}\" font-size=\"12\" fill=\"{}\" text-anchor=\"{}\">{}</text>",
-        anchor.x(), anchor.y(), c, to_left ? "end" : "start", escaped(label));
+        anchor.x(), anchor.y(), c, to_left ? "end" : "start", detail::escape_html(label));
   }
 
   static std::vector<Vec2> convex_hull(std::vector<Vec2> points) {

@@ -148,15 +148,16 @@ ex derivative(const ex& e, const ex& x) {
 
 }  // namespace
 
-LinearEquations linearize_equations(const Equations& equations, const model::Model& model,
-                                    const VecX& q0, const VecX& v0,
-                                    std::span<const model::SignalSample> signals) {
+LinearEquations linearize_equations(const Equations& equations, const model::Model& model, double t,
+                                    const VecX& q0, const VecX& v0) {
   const Equations::Impl& e = *equations.impl_;
-  if (q0.size() != e.nq || v0.size() != e.nv || signals.size() != model.signals().size()) {
-    throw InvalidArgument(fmt::format(
-        "linearize_equations: q0, v0, signals have {}, {}, {} values; expected {}, {}, {}",
-        q0.size(), v0.size(), signals.size(), e.nq, e.nv, model.signals().size()));
+  if (q0.size() != e.nq || v0.size() != e.nv) {
+    throw InvalidArgument(
+        fmt::format("linearize_equations: q0, v0 have {}, {} values; expected {}, {}", q0.size(),
+                    v0.size(), e.nq, e.nv));
   }
+  std::vector<model::SignalSample> signals;
+  for (const model::Signal& signal : model.signals()) signals.push_back(signal.sample(t));
   const FreeSymbols x = free_symbols(e, model);
   GiNaC::exmap point;
   for (std::size_t k = 0; k < e.free.size(); ++k) {

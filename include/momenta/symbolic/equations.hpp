@@ -35,10 +35,6 @@
 #include "momenta/math/types.hpp"
 #include "momenta/model/model.hpp"
 
-#include <span>
-
-#include "momenta/model/signal.hpp"
-
 namespace momenta::symbolic {
 
 class LinearEquations;
@@ -123,8 +119,8 @@ class Equations {
 
  private:
   friend Equations derive_equations(const model::Model&, const EquationOptions&);
-  friend LinearEquations linearize_equations(const Equations&, const model::Model&, const VecX&,
-                                             const VecX&, std::span<const model::SignalSample>);
+  friend LinearEquations linearize_equations(const Equations&, const model::Model&, double,
+                                             const VecX&, const VecX&);
   explicit Equations(std::shared_ptr<const Impl> impl);
   std::shared_ptr<const Impl> impl_;
 };

@@ -20,13 +20,11 @@
 
 #include <complex>
 #include <memory>
-#include <span>
 #include <string>
 #include <vector>
 
 #include "momenta/math/types.hpp"
 #include "momenta/model/model.hpp"
-#include "momenta/model/signal.hpp"
 #include "momenta/symbolic/equations.hpp"
 
 namespace momenta::symbolic {
@@ -67,19 +65,17 @@ class LinearEquations {
   struct Impl;
 
  private:
-  friend LinearEquations linearize_equations(const Equations&, const model::Model&, const VecX&,
-                                             const VecX&, std::span<const model::SignalSample>);
+  friend LinearEquations linearize_equations(const Equations&, const model::Model&, double,
+                                             const VecX&, const VecX&);
   explicit LinearEquations(std::shared_ptr<const Impl> impl);
   std::shared_ptr<const Impl> impl_;
 };
 
 /// Linearizes `equations` (derived from `model`) about q0, v0 (model sizes; prescribed
-/// coordinates as given) with the signals at `signals` (value, rate and acceleration of every
-/// model signal, model order). Throws InvalidArgument when a free joint has nq ≠ nv (a ball or
-/// free joint: its quaternion has no δq of its own here; use `momenta linearize`), or on a size
-/// mismatch.
-LinearEquations linearize_equations(const Equations& equations, const model::Model& model,
-                                    const VecX& q0, const VecX& v0,
-                                    std::span<const model::SignalSample> signals);
+/// coordinates as given) at time t, the signals' values, rates and accelerations taken there.
+/// Throws InvalidArgument when a free joint has nq ≠ nv (a ball or free joint: its quaternion has
+/// no δq of its own here; use `momenta linearize`), or on a size mismatch.
+LinearEquations linearize_equations(const Equations& equations, const model::Model& model, double t,
+                                    const VecX& q0, const VecX& v0);
 
 }  // namespace momenta::symbolic

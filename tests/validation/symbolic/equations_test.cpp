@@ -235,19 +235,12 @@ analysis::LinearModel numeric_linearization(const io::ModelFile& file, const Vec
   return analysis::linearize(file.model, {0.0, q, v}, options);
 }
 
-std::vector<model::SignalSample> signals_at(const model::Model& m, double t) {
-  std::vector<model::SignalSample> samples;
-  for (const model::Signal& s : m.signals()) samples.push_back(s.sample(t));
-  return samples;
-}
-
 TEST(SymbolicLinearization, CruiseControlTransferFunctionIsOneOverMsPlusB) {
   // FPE ch. 2: V(s)/U(s) = 1/(m s + b) per unit of force; the model's force is F_engine u.
   const io::ModelFile file = io::read_model_file(example("cruise_control"));
   const symbolic::Equations e = symbols_of("cruise_control");
   const VecX q = file.model.initial_q(), v = file.model.initial_v();
-  const symbolic::LinearEquations l =
-      symbolic::linearize_equations(e, file.model, q, v, signals_at(file.model, 0.0));
+  const symbolic::LinearEquations l = symbolic::linearize_equations(e, file.model, 0.0, q, v);
   ASSERT_EQ(l.input_names(), std::vector<std::string>{"u"});
   const std::string G = l.transfer_function(0, 0, true, symbolic::Format::text);
   GiNaC::parser reader;
@@ -271,8 +264,7 @@ void expect_transfer_functions_agree(const std::string& name, const std::string&
   symbolic::EquationOptions options;
   options.all_symbols = true;
   const symbolic::Equations e = symbolic::derive_equations(file.model, options);
-  const symbolic::LinearEquations l =
-      symbolic::linearize_equations(e, file.model, q, v, signals_at(file.model, 0.0));
+  const symbolic::LinearEquations l = symbolic::linearize_equations(e, file.model, 0.0, q, v);
   const auto& inputs = l.input_names();
   const int i = static_cast<int>(std::find(inputs.begin(), inputs.end(), input) - inputs.begin());
   const analysis::LinearModel numeric = numeric_linearization(file, q, v, {input}, {output});
@@ -311,8 +303,7 @@ TEST(SymbolicLinearization, PendulumAndDoublePendulumStateMatricesEqualTheNumeri
     options.all_symbols = true;
     const symbolic::Equations e = symbolic::derive_equations(file.model, options);
     VecX q = VecX::Constant(file.model.nq(), angle), v = VecX::Zero(file.model.nv());
-    const symbolic::LinearEquations l =
-        symbolic::linearize_equations(e, file.model, q, v, signals_at(file.model, 0.0));
+    const symbolic::LinearEquations l = symbolic::linearize_equations(e, file.model, 0.0, q, v);
     ASSERT_TRUE(l.has_state_space());
     const analysis::LinearModel numeric = numeric_linearization(file, q, v, {}, {});
     const MatX& A = numeric.system.A();
