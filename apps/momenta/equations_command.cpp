@@ -30,6 +30,7 @@ struct EquationsOptions {
   std::vector<std::string> symbols;
   bool all_symbols = false;
   std::string form = "lagrange";
+  bool principal_axes = false;
   bool text = false, latex = false, json = false, cpp = false, python = false;
   std::string name;        // the generated code's namespace or module name
   std::string transfer;    // INPUT:OUTPUT
@@ -128,6 +129,30 @@ void print_transfer(const io::ModelFile& file, const symbolic::LinearEquations& 
   }
 }
 
+// The constraints' rows after the equations: φ = 0 (or G v = 0 on velocity rows), and with
+// --form matrix G's entries and k.
+void print_constraint_rows(const symbolic::Equations& e, const EquationsOptions& o,
+                           symbolic::Format f) {
+  if (e.constraint_rows() == 0) return;
+  const char* comment = o.latex ? "% " : "";
+  fmt::print("{}constraints: M v̇ + C v + g = Q + Gᵀλ, G v̇ + k = 0; λ the rows' forces [{}]\n",
+             comment, fmt::join(e.multiplier_names(), ", "));
+  for (int r = 0; r < e.constraint_rows(); ++r) {
+    const std::string equation = e.constraint_equation(r, f);
+    fmt::print("{}{} ({}):\n  {}{}\n", comment, e.constraint_row_name(r),
+               e.constraint_row_holonomic(r) ? "position" : "velocity", equation,
+               equation == "0 = 0" ? "  (identically: the tree's joints impose it)" : "");
+  }
+  if (o.form != "matrix") return;
+  const int n = static_cast<int>(e.free_speeds().size());
+  for (int r = 0; r < e.constraint_rows(); ++r) {
+    for (int c = 0; c < n; ++c)
+      fmt::print("G[{},{}] = {}\n", r, c, e.constraint_jacobian_entry(r, c, f));
+  }
+  for (int r = 0; r < e.constraint_rows(); ++r)
+    fmt::print("k[{}] = {}\n", r, e.constraint_bias(r, f));
+}
+
 void print_equations(const io::ModelFile& file, const symbolic::Equations& e,
                      const EquationsOptions& o) {
   const symbolic::Format f = o.latex ? symbolic::Format::latex : symbolic::Format::text;
@@ -137,8 +162,9 @@ void print_equations(const io::ModelFile& file, const symbolic::Equations& e,
   if (o.form == "newton-euler") {
     fmt::print(
         "{}per body, in its own axes: ΣF = m a_G, ΣM_G = Ī α + ω × Ī ω; unknown reactions "
-        "R_<joint> (force on the child), N_<joint> (moment about J'), in the child's axes\n",
-        o.latex ? "% " : "");
+        "R_<joint> (force on the child), N_<joint> (moment about J'), in the child's axes{}\n",
+        o.latex ? "% " : "",
+        e.constraint_rows() > 0 ? "; the constraints' forces by their multipliers λ" : "");
     std::string group;
     for (int r = 0; r < e.newton_euler_rows(); ++r) {
       if (e.newton_euler_group(r) != group) {
@@ -159,9 +185,11 @@ void print_equations(const io::ModelFile& file, const symbolic::Equations& e,
     for (int r = 0; r < n; ++r) fmt::print("(C v)[{}] = {}\n", r, e.velocity_product(r, f));
     for (int r = 0; r < n; ++r) fmt::print("g[{}] = {}\n", r, e.gravity(r, f));
     for (int r = 0; r < n; ++r) fmt::print("Q[{}] = {}\n", r, e.generalized_force(r, f));
+    print_constraint_rows(e, o, f);
     return;
   }
   for (int r = 0; r < n; ++r) fmt::print("{}\n", e.equation(r, f));
+  print_constraint_rows(e, o, f);
 }
 
 json equations_json(const io::ModelFile& file, const symbolic::Equations& e) {
@@ -183,6 +211,19 @@ json equations_json(const io::ModelFile& file, const symbolic::Equations& e) {
   }
   std::vector<std::string> accelerations;
   for (int i : free) accelerations.push_back(e.acceleration_names()[static_cast<std::size_t>(i)]);
+  json constraints = json::array();
+  for (int r = 0; r < e.constraint_rows(); ++r) {
+    json G = json::array();
+    for (int c = 0; c < n; ++c)
+      G.push_back(e.constraint_jacobian_entry(r, c, symbolic::Format::text));
+    constraints.push_back({{"name", e.constraint_row_name(r)},
+                           {"multiplier", e.multiplier_names()[static_cast<std::size_t>(r)]},
+                           {"holonomic", e.constraint_row_holonomic(r)},
+                           {"equation", e.constraint_equation(r, symbolic::Format::text)},
+                           {"equation_latex", e.constraint_equation(r, symbolic::Format::latex)},
+                           {"G", std::move(G)},
+                           {"k", e.constraint_bias(r, symbolic::Format::text)}});
+  }
   return {{"model", file.name},
           {"coordinates", e.configuration_names()},
           {"speeds", e.speed_names()},
@@ -194,7 +235,8 @@ json equations_json(const io::ModelFile& file, const symbolic::Equations& e) {
           {"M", M},
           {"velocity_product", rest},
           {"gravity", g},
-          {"generalized_force", Q}};
+          {"generalized_force", Q},
+          {"constraints", constraints}};
 }
 
 void run(const EquationsOptions& o) {
@@ -203,6 +245,7 @@ void run(const EquationsOptions& o) {
   options.symbols = o.symbols;
   options.all_symbols = o.all_symbols;
   options.newton_euler = o.form == "newton-euler";
+  options.principal_axes = o.principal_axes;
   const symbolic::Equations e = symbolic::derive_equations(file.model, options);
   const symbolic::Format f = o.latex ? symbolic::Format::latex : symbolic::Format::text;
   if (!o.transfer.empty()) {
@@ -240,6 +283,9 @@ void add_equations_command(CLI::App& app) {
                    "newton-euler: each body's ΣF = m a_G and ΣM_G = Ḣ_G with the reactions; "
                    "linear: M, D, K, B (and A, B) about the operating point")
       ->check(CLI::IsMember({"lagrange", "matrix", "newton-euler", "linear"}));
+  command->add_flag("--principal-axes", options->principal_axes,
+                    "With --form newton-euler: a body with products of inertia in its principal "
+                    "axes at G (Euler's equations I1 α1 − (I2 − I3) ω2 ω3 = ΣM_G1 ...)");
   command->add_option("--transfer", options->transfer,
                       "INPUT:OUTPUT — the transfer function in s from a signal to a joint "
                       "output (or a coordinate, its rate with _dot), about the operating point");

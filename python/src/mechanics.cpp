@@ -62,11 +62,12 @@ symbolic::Format format_arg(const std::string& format) {
 }
 
 symbolic::EquationOptions equation_options(std::vector<std::string> symbols, bool all_symbols,
-                                           bool newton_euler) {
+                                           bool newton_euler, bool principal_axes = false) {
   symbolic::EquationOptions o;
   o.symbols = std::move(symbols);
   o.all_symbols = all_symbols;
   o.newton_euler = newton_euler;
+  o.principal_axes = principal_axes;
   return o;
 }
 
@@ -149,18 +150,21 @@ and Coriolis terms, every vector in the frame's axes, as `momenta kinematics` gi
   m.def(
       "equations",
       [](const ModelHandle& h, std::vector<std::string> symbols, bool all_symbols,
-         const std::string& form, const std::string& format) {
+         const std::string& form, const std::string& format, bool principal_axes) {
         const symbolic::Format f = format_arg(format);
         if (form != "lagrange" && form != "newton-euler") {
           throw InvalidArgument(
               fmt::format("form '{}': expected 'lagrange' or 'newton-euler'", form));
         }
         const symbolic::Equations e = symbolic::derive_equations(
-            h.model(), equation_options(std::move(symbols), all_symbols, form == "newton-euler"));
+            h.model(), equation_options(std::move(symbols), all_symbols, form == "newton-euler",
+                                        principal_axes));
         std::vector<std::string> lines;
         if (form == "lagrange") {
           for (int r = 0; r < static_cast<int>(e.free_speeds().size()); ++r)
             lines.push_back(e.equation(r, f));
+          for (int r = 0; r < e.constraint_rows(); ++r)
+            lines.push_back(e.constraint_row_name(r) + ": " + e.constraint_equation(r, f));
         } else {
           for (int r = 0; r < e.newton_euler_rows(); ++r)
             lines.push_back(e.newton_euler_group(r) + ": " + e.newton_euler_equation(r, f));
@@ -169,10 +173,14 @@ and Coriolis terms, every vector in the frame's axes, as `momenta kinematics` gi
       },
       py::arg("model"), py::kw_only(), py::arg("symbols") = std::vector<std::string>{},
       py::arg("all_symbols") = false, py::arg("form") = "lagrange", py::arg("format") = "text",
+      py::arg("principal_axes") = false,
       R"doc(The model's equations of motion in symbols, one string per equation, as
-`momenta equations` prints them: 'lagrange' (one per free speed) or 'newton-euler' (each body's
-ΣF = m a_G and ΣM_G = Ī α + ω × Ī ω with the joint reactions, prefixed with the body); 'text' or
-'latex'. `symbols` names the parameters to keep as symbols (docs/equations.md).)doc");
+`momenta equations` prints them: 'lagrange' (one per free speed, each with its constraint forces
+G^T lambda, then each constraint row as '<row>: phi = 0' or '<row>: G v = 0') or 'newton-euler'
+(each body's ΣF = m a_G and ΣM_G = Ī α + ω × Ī ω with the joint reactions and constraint
+multipliers, prefixed with the body; `principal_axes` writes a body with products of inertia in
+its principal axes); 'text' or 'latex'. `symbols` names the parameters to keep as symbols
+(docs/equations.md).)doc");
 
   m.def(
       "symbolic_transfer_function",

@@ -22,25 +22,6 @@ using model::RollingShape;
 // difference or cross product of near-parallel ones).
 constexpr double kDegenerate = 1e-9;
 
-std::vector<std::string_view> row_labels(const Constraint& c) {
-  if (const auto* loop = std::get_if<LoopClosure>(&c)) {
-    switch (loop->type) {
-      case LoopType::weld:
-        return {"x", "y", "z", "rx", "ry", "rz"};
-      case LoopType::point:
-        return {"x", "y", "z"};
-      case LoopType::hinge:
-        return {"x", "y", "z", "rx", "ry"};
-      case LoopType::slider:
-        return {"x", "y", "rx", "ry", "rz"};
-    }
-  }
-  if (std::holds_alternative<DistanceLink>(c)) return {"length"};
-  if (std::holds_alternative<RollingContact>(c)) return {"normal", "longitudinal", "lateral"};
-  if (std::holds_alternative<KnifeEdge>(c)) return {"lateral"};
-  return {"ratio"};
-}
-
 // The motion of a frame fixed in a body at one instant, in W: its pose, the body's spatial
 // velocity and velocity-product acceleration about Wo, and the frame origin's velocity.
 struct FrameMotion {
@@ -304,7 +285,7 @@ ConstraintRows::ConstraintRows(const Model& model)
   for (int k = 0; k < static_cast<int>(model.constraints().size()); ++k) {
     const Constraint& c = model.constraints()[k];
     first_row.push_back(static_cast<int>(constraint.size()));
-    const std::vector<std::string_view> labels = row_labels(c);
+    const std::vector<std::string_view> labels = model::constraint_row_labels(c);
     const int position_rows = model::constraint_position_rows(c);
     for (int r = 0; r < static_cast<int>(labels.size()); ++r) {
       constraint.push_back(k);

@@ -61,6 +61,26 @@ int constraint_position_rows(const Constraint& constraint) {
   return constraint_rows(constraint);
 }
 
+std::vector<std::string_view> constraint_row_labels(const Constraint& constraint) {
+  if (const auto* loop = std::get_if<LoopClosure>(&constraint)) {
+    switch (loop->type) {
+      case LoopType::weld:
+        return {"x", "y", "z", "rx", "ry", "rz"};
+      case LoopType::point:
+        return {"x", "y", "z"};
+      case LoopType::hinge:
+        return {"x", "y", "z", "rx", "ry"};
+      case LoopType::slider:
+        return {"x", "y", "rx", "ry", "rz"};
+    }
+  }
+  if (std::holds_alternative<DistanceLink>(constraint)) return {"length"};
+  if (std::holds_alternative<RollingContact>(constraint))
+    return {"normal", "longitudinal", "lateral"};
+  if (std::holds_alternative<KnifeEdge>(constraint)) return {"lateral"};
+  return {"ratio"};
+}
+
 std::vector<std::string_view> constraint_force_labels(const Constraint& constraint) {
   if (std::holds_alternative<LoopClosure>(constraint)) {
     return {"reaction.Fx", "reaction.Fy", "reaction.Fz",

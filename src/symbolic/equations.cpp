@@ -9,7 +9,9 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <Eigen/Eigenvalues>
 
+#include "constraint_rows.hpp"
 #include "equations_impl.hpp"
 #include "expression_algebra.hpp"
 #include "momenta/common/error.hpp"
@@ -155,14 +157,17 @@ JointMotion joint_motion(const model::Joint& j, const std::vector<ex>& q, int qi
 class Derivation {
  public:
   Derivation(const model::Model& model, const EquationOptions& options)
-      : model_(model), params_(options), newton_euler_(options.newton_euler) {}
+      : model_(model),
+        params_(options),
+        newton_euler_(options.newton_euler),
+        principal_axes_(options.principal_axes) {}
 
   Equations::Impl run() {
-    refuse_what_is_not_written_yet();
     make_coordinate_symbols();
     make_input_symbols();
     newton_euler();
     element_forces();
+    constraint_equations();
     params_.check();
     split();
     if (newton_euler_) newton_euler_form();
@@ -172,22 +177,6 @@ class Derivation {
   }
 
  private:
-  void refuse_what_is_not_written_yet() {
-    if (!model_.constraints().empty()) {
-      throw InvalidArgument(fmt::format(
-          "equations: constraint '{}': equations of constrained models are not written yet; "
-          "derive the tree's and add the constraint by hand (docs/equations.md)",
-          model::constraint_name(model_.constraints().front())));
-    }
-    for (const model::Joint& j : model_.joints()) {
-      if (j.is_prescribed() && j.nq() != j.nv()) {
-        throw InvalidArgument(
-            fmt::format("equations: joint '{}': a prescribed {} joint is not written yet", j.name,
-                        model::joint_type_name(j.type)));
-      }
-    }
-  }
-
   // q, v, v̇ of every coordinate: symbols, or the prescribing signal's.
   void make_coordinate_symbols() {
     const int nq = model_.nq(), nv = model_.nv();
@@ -224,7 +213,9 @@ class Derivation {
         }
         continue;
       }
-      // Ball and free joints: quaternion, body angular velocity (and position, its rate).
+      // Ball and free joints: quaternion, body angular velocity (and position, its rate). A
+      // prescribed one's are known functions of time (from its signals' rotation vector and
+      // position): the same symbols, without an equation.
       const int quat = j.q_index + (j.type == model::JointType::free ? 3 : 0);
       const char* parts[] = {"qw", "qx", "qy", "qz"};
       std::array<symbol, 4> Q;
@@ -245,7 +236,7 @@ class Derivation {
         impl_.vdot[vi] = sd;
         impl_.v_names[vi] = name;
         impl_.a_names[vi] = name + "_dot";
-        impl_.free.push_back(vi);
+        if (!j.is_prescribed()) impl_.free.push_back(vi);
         w[static_cast<std::size_t>(k)] = s;
       }
       // q̇ = ½ q ⊗ [0; ω].
@@ -262,7 +253,7 @@ class Derivation {
               a(name + "_ddot", "\\ddot{" + latex_name(name) + "}");
           set_coordinate(j.q_index + k, j.v_index + 3 + k, q, v, a, name);
           rates_.push_back({q, v});
-          impl_.free.push_back(j.v_index + 3 + k);
+          if (!j.is_prescribed()) impl_.free.push_back(j.v_index + 3 + k);
         }
       }
     }
@@ -622,6 +613,74 @@ class Derivation {
     return v;
   }
 
+  // The constraints' rows (constraint_rows.hpp): φ(q) on holonomic rows; G_ij = w·S_j over the
+  // joints that support body b, minus those supporting a, with S_j in W about Wo (as
+  // dynamics::constraint_equations assembles it); k = Ġ v, the rate of G v at v̇ = 0; a multiplier
+  // λ per row. Each wrench row's force λ w joins the loads of body b (−λ w those of a) for the
+  // Newton–Euler form, in B about Bo; a coupler's λ G joins the joints' generalized forces.
+  void constraint_equations() {
+    const auto rows = constraint_rows(
+        model_, R_WB_, p_WB_, impl_.q,
+        [this](const std::string& name, double value) { return params_(name, value); });
+    const int nb = model_.num_bodies();
+    const std::size_t nv = static_cast<std::size_t>(model_.nv());
+    // Every motion-subspace column in W about Wo: [R s_w; R s_v + p × R s_w].
+    std::vector<Motion> S_W(nv);
+    for (const model::Joint& j : model_.joints()) {
+      const int i = j.child_index;
+      for (int k = 0; k < j.nv(); ++k) {
+        const Motion& S = S_[i][static_cast<std::size_t>(k)];
+        const V3 w = R_WB_[i] * S.w;
+        S_W[static_cast<std::size_t>(j.v_index + k)] = {w, R_WB_[i] * S.v + cross(p_WB_[i], w)};
+      }
+    }
+    constraint_loads_.assign(nb, Force{});
+    constraint_joint_forces_.assign(nv, 0);
+    for (const SymbolicRow& row : rows) {
+      Equations::Impl::ConstraintRow out;
+      out.name = row.name;
+      out.holonomic = row.holonomic;
+      out.position = tidy_if_small(row.position);
+      out.G.assign(nv, 0);
+      const std::string id = identifier(row.name);
+      out.multiplier = symbol("lambda_" + id, "\\lambda_{" + latex_name(row.name) + "}");
+      if (row.joint_row.empty()) {
+        const auto add_support = [&](int body, int sign) {
+          for (; body > 0; body = model_.body(body).parent_index) {
+            const model::Joint& j = model_.joint(model_.body(body).joint_index);
+            for (int k = 0; k < j.nv(); ++k) {
+              const auto vi = static_cast<std::size_t>(j.v_index + k);
+              out.G[vi] += sign * (dot(row.moment, S_W[vi].w) + dot(row.force, S_W[vi].v));
+            }
+          }
+        };
+        add_support(row.body_b, +1);
+        add_support(row.body_a, -1);
+        const auto push = [&](int body, const ex& sign) {
+          if (body == 0) return;
+          const M3 Rt = transpose(R_WB_[body]);
+          const V3 f = (sign * out.multiplier) * row.force;
+          const V3 n = (sign * out.multiplier) * (row.moment - cross(p_WB_[body], row.force));
+          constraint_loads_[body] = constraint_loads_[body] + Force{Rt * n, Rt * f};
+        };
+        push(row.body_b, 1);
+        push(row.body_a, -1);
+      } else {
+        for (const auto& [vi, coefficient] : row.joint_row) {
+          out.G[static_cast<std::size_t>(vi)] += coefficient;
+          constraint_joint_forces_[static_cast<std::size_t>(vi)] += coefficient * out.multiplier;
+        }
+      }
+      ex Gv = 0;
+      for (std::size_t vi = 0; vi < nv; ++vi) {
+        out.G[vi] = tidy_if_small(out.G[vi]);
+        Gv += out.G[vi] * impl_.v[vi];
+      }
+      out.bias = tidy_if_small(rate(Gv));
+      impl_.constraints.push_back(std::move(out));
+    }
+  }
+
   // Per body, Newton's and Euler's equations in its own axes with the joint reactions as
   // unknowns (symbols R_<joint>_x … for the force on the child, N_<joint>_x … for the moment
   // about J'o, both in the child's axes): ΣF = m a_G, ΣM_G = Ī α + ω × Ī ω; then each free
@@ -645,6 +704,7 @@ class Derivation {
       }
       for (int k = 0; k < 3; ++k) impl_.reaction_symbols.push_back(GiNaC::ex_to<symbol>(N[i][k]));
     }
+    for (const auto& row : impl_.constraints) impl_.reaction_symbols.push_back(row.multiplier);
     const V3 gravity_W = ex(-1) * base_acceleration_;
     for (const model::Joint& j : model_.joints()) {
       const int i = j.child_index;
@@ -661,20 +721,41 @@ class Derivation {
         F = F - Rk;
         M = M - (R_PC_[k] * N[k]) - cross(p_PC_[k] + R_PC_[k] * p_CJ_[k] - c, Rk);
       }
-      F = F + body_loads_[i].f;
-      M = M + body_loads_[i].n - cross(c, body_loads_[i].f);
+      const Force loads = body_loads_[i] + constraint_loads_[i];
+      F = F + loads.f;
+      M = M + loads.n - cross(c, loads.f);
       // Kinetics: a_G = a_Bo + α × c + ω × (ω × c), a_Bo = A.v + ω × V.v (Featherstone's
       // spatial acceleration to the classical one).
       const V3 a_G = A[i].v + cross(w, V[i].v) + cross(alpha, c) + cross(w, cross(w, c));
       const V3 ma = I.mass * a_G;
-      const V3 H_dot = I_com_[i] * alpha + cross(w, I_com_[i] * w);
-      const std::string& body = model_.body(i).name;
+      std::string body = model_.body(i).name;
       const char* axes = "xyz";
-      for (int k = 0; k < 3; ++k)
-        add_newton_euler_row(body, fmt::format("ΣF_{} = m a_G{}", axes[k], axes[k]), F[k], ma[k]);
-      for (int k = 0; k < 3; ++k) {
-        add_newton_euler_row(body, fmt::format("ΣM_G{} = (Ī α + ω × Ī ω)_{}", axes[k], axes[k]),
-                             M[k], H_dot[k]);
+      const std::optional<PrincipalAxes> principal =
+          principal_axes_ ? principal_axes_of(i) : std::nullopt;
+      if (principal) {
+        // Every vector in the principal axes P: F_P = R_BPᵀ F, and Euler's equations with
+        // Ī_P diagonal: I1 α1 − (I2 − I3) ω2 ω3 = M1 and the two like it.
+        const M3 R_PB = transpose(principal->R_BP);
+        const V3 w_P = R_PB * w, alpha_P = R_PB * alpha;
+        const V3 H_dot = principal->I * alpha_P + cross(w_P, principal->I * w_P);
+        F = R_PB * F;
+        M = R_PB * M;
+        const V3 ma_P = R_PB * ma;
+        body += principal->description;
+        for (int k = 0; k < 3; ++k)
+          add_newton_euler_row(body, fmt::format("ΣF_{} = m a_G{}", k + 1, k + 1), F[k], ma_P[k]);
+        for (int k = 0; k < 3; ++k) {
+          add_newton_euler_row(body, fmt::format("ΣM_G{} = (Ī α + ω × Ī ω)_{}", k + 1, k + 1), M[k],
+                               H_dot[k]);
+        }
+      } else {
+        const V3 H_dot = I_com_[i] * alpha + cross(w, I_com_[i] * w);
+        for (int k = 0; k < 3; ++k)
+          add_newton_euler_row(body, fmt::format("ΣF_{} = m a_G{}", axes[k], axes[k]), F[k], ma[k]);
+        for (int k = 0; k < 3; ++k) {
+          add_newton_euler_row(body, fmt::format("ΣM_G{} = (Ī α + ω × Ī ω)_{}", axes[k], axes[k]),
+                               M[k], H_dot[k]);
+        }
       }
       // Along the free motions: the reaction's generalized force is the elements'.
       if (j.is_prescribed()) continue;
@@ -685,9 +766,43 @@ class Derivation {
             fmt::format("joint {}", j.name),
             fmt::format("along {}", impl_.v_names[static_cast<std::size_t>(j.v_index + k)]),
             dot(Sk.w, n_o) + dot(Sk.v, R[i]),
-            joint_space_[static_cast<std::size_t>(j.v_index + k)]);
+            joint_space_[static_cast<std::size_t>(j.v_index + k)] +
+                constraint_joint_forces_[static_cast<std::size_t>(j.v_index + k)]);
       }
     }
+  }
+
+  // A body's principal axes at its centre of mass where its axes are not (Ī has products of
+  // inertia): R_BP (columns e1, e2, e3 in B: the eigenvectors of Ī by increasing moment, right-
+  // handed) and Ī_P = R_BPᵀ Ī R_BP — diagonal, the principal moments, when Ī is numbers; the
+  // rotated matrix of symbols when its entries are symbols (then still exact, not diagonal).
+  struct PrincipalAxes {
+    M3 R_BP, I;
+    std::string description;  // " (principal axes e1 = [..], e2, e3 in B)"
+  };
+  std::optional<PrincipalAxes> principal_axes_of(int b) const {
+    const Mat3& Ic = model_.body(b).mass_properties.inertia_about_com();
+    const Mat3 off = Ic - Mat3(Ic.diagonal().asDiagonal());
+    if (off.cwiseAbs().maxCoeff() <= 1e-12 * Ic.cwiseAbs().maxCoeff()) return std::nullopt;
+    const Eigen::SelfAdjointEigenSolver<Mat3> eigen(Ic);
+    Mat3 R = eigen.eigenvectors();
+    if (R.determinant() < 0) R.col(2) = -R.col(2);
+    PrincipalAxes p;
+    p.R_BP = to_m3(R);
+    bool numbers = true;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) numbers = numbers && GiNaC::is_a<GiNaC::numeric>(I_com_[b](r, c));
+    if (numbers) {
+      for (int k = 0; k < 3; ++k) p.I(k, k) = exact_number(eigen.eigenvalues()[k]);
+    } else {
+      p.I = transpose(p.R_BP) * I_com_[b] * p.R_BP;
+    }
+    const auto column = [&](int k) {
+      return fmt::format("[{:.6g}, {:.6g}, {:.6g}]", R(0, k), R(1, k), R(2, k));
+    };
+    p.description = fmt::format(" (principal axes e1 = {}, e2 = {}, e3 = {} in B)", column(0),
+                                column(1), column(2));
+    return p;
   }
 
   void add_newton_euler_row(const std::string& body, const std::string& label, const ex& loads,
@@ -722,7 +837,8 @@ class Derivation {
 
   const model::Model& model_;
   Parameters params_;
-  bool newton_euler_ = false;  // derive the Newton–Euler form too
+  bool newton_euler_ = false;    // derive the Newton–Euler form too
+  bool principal_axes_ = false;  // its rows in each body's principal axes
   Equations::Impl impl_;
   std::vector<std::pair<ex, ex>> rates_;  // (coordinate symbol, its rate)
   std::vector<ex> input_of_signal_;
@@ -734,10 +850,12 @@ class Derivation {
   V3 base_acceleration_;
   std::vector<ex> tau_no_acceleration_, tau_gravity_, Q_;
   std::vector<std::vector<ex>> mass_columns_;
-  std::vector<V3> p_CJ_, com_;     // per body: its joint's J'o and its centre of mass, in B
-  std::vector<M3> I_com_;          // per body: Ī about the centre of mass, in B
-  std::vector<Force> body_loads_;  // per body: the elements' wrench, in B about Bo
-  std::vector<ex> joint_space_;    // per speed: the elements' joint-space terms
+  std::vector<V3> p_CJ_, com_;           // per body: its joint's J'o and its centre of mass, in B
+  std::vector<M3> I_com_;                // per body: Ī about the centre of mass, in B
+  std::vector<Force> body_loads_;        // per body: the elements' wrench, in B about Bo
+  std::vector<ex> joint_space_;          // per speed: the elements' joint-space terms
+  std::vector<Force> constraint_loads_;  // per body: Σ λ w of the constraint rows, in B about Bo
+  std::vector<ex> constraint_joint_forces_;  // per speed: Σ λ G of the couplers' rows
 };
 
 }  // namespace

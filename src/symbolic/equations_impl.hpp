@@ -40,7 +40,18 @@ struct Equations::Impl {
     GiNaC::ex loads, kinetic;
   };
   std::vector<NewtonEulerRow> newton_euler;
-  std::vector<GiNaC::symbol> reaction_symbols;
+  std::vector<GiNaC::symbol> reaction_symbols;  // the joints', then the multipliers
+  // The constraints (model order, the rows of dynamics::ConstraintRows): φ(q) on holonomic rows,
+  // G over every model speed, k = Ġ v at v̇ = 0, the multiplier λ. The equations above read
+  // M v̇ + C v + g = Q + Gᵀλ (free columns of G) with G v̇ + k = 0.
+  struct ConstraintRow {
+    std::string name;
+    bool holonomic = false;
+    GiNaC::ex position, bias;
+    std::vector<GiNaC::ex> G;
+    GiNaC::symbol multiplier;
+  };
+  std::vector<ConstraintRow> constraints;
 };
 
 }  // namespace momenta::symbolic

@@ -123,6 +123,13 @@ Inputs inputs_of(const Equations::Impl& e, const model::Model& model,
     point[e.inputs[k]] = operating_number(signals[static_cast<std::size_t>(signal)].value);
   }
   for (const model::Joint& j : model.joints()) {
+    if (j.is_prescribed() && j.nq() != j.nv()) {
+      throw InvalidArgument(fmt::format(
+          "the prescribed {} joint {} enters its equations by its quaternion and ω, not by its "
+          "signals: its linearization in symbols is not written; `momenta linearize` gives the "
+          "numbers",
+          model::joint_type_name(j.type), j.name));
+    }
     for (int k = 0; k < static_cast<int>(j.prescribed_signal_indices.size()); ++k) {
       const model::SignalSample& sample = signals[static_cast<std::size_t>(
           j.prescribed_signal_indices[static_cast<std::size_t>(k)])];
@@ -155,6 +162,13 @@ LinearEquations linearize_equations(const Equations& equations, const model::Mod
     throw InvalidArgument(
         fmt::format("linearize_equations: q0, v0 have {}, {} values; expected {}, {}", q0.size(),
                     v0.size(), e.nq, e.nv));
+  }
+  if (!e.constraints.empty()) {
+    throw InvalidArgument(fmt::format(
+        "linearize_equations: constraint '{}': a constrained model linearizes in independent "
+        "coordinates chosen at the operating point; `momenta linearize` does that numerically "
+        "(docs/constraints.md)",
+        model::constraint_name(model.constraints().front())));
   }
   std::vector<model::SignalSample> signals;
   for (const model::Signal& signal : model.signals()) signals.push_back(signal.sample(t));

@@ -104,6 +104,16 @@ void check_row(const Equations::Impl& impl, int row, const char* what) {
   }
 }
 
+void check_sizes(const Equations::Impl& impl, const VecX& q, const VecX& v, const VecX& vdot,
+                 const VecX& u, const char* what) {
+  if (q.size() != impl.nq || v.size() != impl.nv || vdot.size() != impl.nv ||
+      u.size() != static_cast<Eigen::Index>(impl.inputs.size())) {
+    throw InvalidArgument(fmt::format(
+        "Equations::{}: q, v, vdot, u have {}, {}, {}, {} values; expected {}, {}, {}, {}", what,
+        q.size(), v.size(), vdot.size(), u.size(), impl.nq, impl.nv, impl.nv, impl.inputs.size()));
+  }
+}
+
 // The map from every symbol to numbers: coordinates, speeds, accelerations, inputs, parameters.
 GiNaC::exmap numbers_for(const Equations::Impl& impl, const VecX& q, const VecX& v,
                          const VecX& vdot, const VecX& u) {
@@ -239,7 +249,76 @@ std::string Equations::equation(int row, Format format) const {
     accelerations.append(impl_->vdot[static_cast<std::size_t>(impl_->free[c])]);
   }
   left = GiNaC::collect(GiNaC::expand(left), accelerations);
-  return print(left, format) + (format == Format::latex ? " = " : " = ") + print(right, format);
+  // The constraint forces' generalized forces Gᵀλ on the right, each λ once.
+  ex constraint_force = 0;
+  for (const auto& c : impl_->constraints)
+    constraint_force += c.G[static_cast<std::size_t>(impl_->free[r])] * c.multiplier;
+  std::string right_text = print(right, format);
+  if (!constraint_force.is_zero()) {
+    GiNaC::lst multipliers;
+    for (const auto& c : impl_->constraints) multipliers.append(c.multiplier);
+    const std::string forces = print(GiNaC::collect(constraint_force, multipliers), format);
+    right_text = right.is_zero() ? forces : right_text + " + " + forces;
+  }
+  return print(left, format) + " = " + right_text;
+}
+
+int Equations::constraint_rows() const { return static_cast<int>(impl_->constraints.size()); }
+
+const std::string& Equations::constraint_row_name(int row) const {
+  return impl_->constraints.at(static_cast<std::size_t>(row)).name;
+}
+
+bool Equations::constraint_row_holonomic(int row) const {
+  return impl_->constraints.at(static_cast<std::size_t>(row)).holonomic;
+}
+
+std::string Equations::constraint_equation(int row, Format format) const {
+  const auto& c = impl_->constraints.at(static_cast<std::size_t>(row));
+  if (c.holonomic) return print(c.position, format) + " = 0";
+  ex Gv = 0;
+  GiNaC::lst speeds;
+  for (std::size_t i = 0; i < c.G.size(); ++i) {
+    Gv += c.G[i] * impl_->v[i];
+    if (!c.G[i].is_zero()) speeds.append(impl_->v[i]);
+  }
+  return print(GiNaC::collect(GiNaC::expand(Gv), speeds), format) + " = 0";
+}
+
+std::string Equations::constraint_jacobian_entry(int row, int column, Format format) const {
+  check_row(*impl_, column, "constraint_jacobian_entry");
+  const auto& c = impl_->constraints.at(static_cast<std::size_t>(row));
+  return print(c.G[static_cast<std::size_t>(impl_->free[static_cast<std::size_t>(column)])],
+               format);
+}
+
+std::string Equations::constraint_bias(int row, Format format) const {
+  return print(impl_->constraints.at(static_cast<std::size_t>(row)).bias, format);
+}
+
+std::vector<std::string> Equations::multiplier_names() const {
+  std::vector<std::string> names;
+  for (const auto& c : impl_->constraints) names.push_back(c.multiplier.get_name());
+  return names;
+}
+
+void Equations::evaluate_constraints(const VecX& q, const VecX& v, const VecX& u, VecX& position,
+                                     MatX& G, VecX& k) const {
+  const Impl& impl = *impl_;
+  const VecX vdot = VecX::Zero(impl.nv);
+  check_sizes(impl, q, v, vdot, u, "evaluate_constraints");
+  const GiNaC::exmap numbers = numbers_for(impl, q, v, vdot, u);
+  Evaluator value(numbers);
+  const auto rows = static_cast<Eigen::Index>(impl.constraints.size());
+  position.resize(rows);
+  G.resize(rows, impl.nv);
+  k.resize(rows);
+  for (Eigen::Index r = 0; r < rows; ++r) {
+    const auto& c = impl.constraints[static_cast<std::size_t>(r)];
+    position[r] = value(c.position);
+    for (int i = 0; i < impl.nv; ++i) G(r, i) = value(c.G[static_cast<std::size_t>(i)]);
+    k[r] = value(c.bias);
+  }
 }
 
 int Equations::newton_euler_rows() const { return static_cast<int>(impl_->newton_euler.size()); }
@@ -281,12 +360,7 @@ VecX Equations::newton_euler_residuals(const VecX& q, const VecX& v, const VecX&
 void Equations::evaluate(const VecX& q, const VecX& v, const VecX& vdot, const VecX& u, MatX& M,
                          VecX& bias) const {
   const Impl& impl = *impl_;
-  if (q.size() != impl.nq || v.size() != impl.nv || vdot.size() != impl.nv ||
-      u.size() != static_cast<Eigen::Index>(impl.inputs.size())) {
-    throw InvalidArgument(fmt::format(
-        "Equations::evaluate: q, v, vdot, u have {}, {}, {}, {} values; expected {}, {}, {}, {}",
-        q.size(), v.size(), vdot.size(), u.size(), impl.nq, impl.nv, impl.nv, impl.inputs.size()));
-  }
+  check_sizes(impl, q, v, vdot, u, "evaluate");
   const GiNaC::exmap numbers = numbers_for(impl, q, v, vdot, u);
   Evaluator value(numbers);
   const auto n = static_cast<Eigen::Index>(impl.free.size());
@@ -322,6 +396,25 @@ std::string Equations::generate_code(Format language, const std::string& module)
       M_entries.push_back(mass(impl.M(static_cast<unsigned>(r), static_cast<unsigned>(c))));
   for (std::size_t r = 0; r < n; ++r)
     b_entries.push_back(bias(impl.rest[r] + impl.g[r] - impl.Q[r]));
+  // The constraints: φ, G on the free speeds (row-major), and k with the prescribed speeds'
+  // accelerations in it, so that G vdot_free + k = 0.
+  CodeEmitter rows(lang, indent, code);
+  std::vector<std::string> phi_entries, G_entries, k_entries;
+  for (const auto& c : impl.constraints) {
+    phi_entries.push_back(rows(c.position));
+    ex k = c.bias;
+    std::vector<bool> is_free(static_cast<std::size_t>(impl.nv), false);
+    for (const int vi : impl.free) is_free[static_cast<std::size_t>(vi)] = true;
+    for (int vi = 0; vi < impl.nv; ++vi) {
+      if (!is_free[static_cast<std::size_t>(vi)])
+        k += c.G[static_cast<std::size_t>(vi)] * impl.vdot[static_cast<std::size_t>(vi)];
+    }
+    for (const int vi : impl.free) G_entries.push_back(rows(c.G[static_cast<std::size_t>(vi)]));
+    k_entries.push_back(rows(k));
+  }
+  const std::size_t m = impl.constraints.size();
+  std::vector<std::string> row_names;
+  for (const auto& c : impl.constraints) row_names.push_back(c.name);
 
   std::string out;
   if (cpp) {
@@ -348,7 +441,24 @@ std::string Equations::generate_code(Format language, const std::string& module)
         bias.lines();
     for (std::size_t k = 0; k < b_entries.size(); ++k)
       out += fmt::format("  b[{}] = {};\n", k, b_entries[k]);
-    out += fmt::format("}}\n\n}}  // namespace {}\n", name);
+    out += "}\n";
+    if (m > 0) {
+      out += fmt::format(
+          "\n// The constraints' {} rows ({}): M vdot_free + b = G^T lambda, G vdot_free + k = 0;\n"
+          "// phi (0 on velocity-only rows), G: rows x nfree, row-major; k with the prescribed\n"
+          "// accelerations' terms.\ninline constexpr int nrows = {};\n"
+          "inline void constraints(const double* q, const double* v, const double* vdot, const "
+          "double* u, double* phi, double* G, double* k) {{\n  (void)q; (void)v; (void)vdot; "
+          "(void)u;\n",
+          m, fmt::join(row_names, ", "), m);
+      out += rows.lines();
+      for (std::size_t k = 0; k < m; ++k)
+        out += fmt::format("  phi[{}] = {};\n  k[{}] = {};\n", k, phi_entries[k], k, k_entries[k]);
+      for (std::size_t k = 0; k < G_entries.size(); ++k)
+        out += fmt::format("  G[{}] = {};\n", k, G_entries[k]);
+      out += "}\n";
+    }
+    out += fmt::format("\n}}  // namespace {}\n", name);
     return out;
   }
   out += fmt::format(
@@ -369,6 +479,22 @@ std::string Equations::generate_code(Format language, const std::string& module)
       "    ]\n\n\ndef bias(q, v, vdot, u):\n    \"\"\"b = C v + g - Q, one per free "
       "speed.\"\"\"\n" +
       bias.lines() + "    return [" + fmt::format("{}", fmt::join(b_entries, ", ")) + "]\n";
+  if (m > 0) {
+    out += fmt::format(
+        "\n\ndef constraints(q, v, vdot, u):\n    \"\"\"The constraints' rows ({}): phi (0 on "
+        "velocity-only rows),\n    G (rows of the free speeds) and k, with M vdot_free + b = G^T "
+        "lambda and\n    G vdot_free + k = 0.\"\"\"\n",
+        fmt::join(row_names, ", "));
+    out += rows.lines() + "    phi = [" + fmt::format("{}", fmt::join(phi_entries, ", ")) +
+           "]\n    G = [\n";
+    for (std::size_t r = 0; r < m; ++r) {
+      out += "        [";
+      for (std::size_t c = 0; c < n; ++c) out += (c ? ", " : "") + G_entries[r * n + c];
+      out += "],\n";
+    }
+    out += "    ]\n    k = [" + fmt::format("{}", fmt::join(k_entries, ", ")) +
+           "]\n    return phi, G, k\n";
+  }
   return out;
 }
 

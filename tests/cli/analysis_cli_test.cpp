@@ -196,6 +196,35 @@ TEST_F(AnalysisCli, EquationsTheirLinearizationAndATransferFunctionInSymbols) {
   EXPECT_NE(bad.err.find("no input 'x'; the inputs are u"), std::string::npos) << bad.err;
 }
 
+TEST_F(AnalysisCli, EquationsOfAConstrainedModelPrintItsForcesAndRows) {
+  // The Chaplygin sleigh: the blade's force λ on the right of the equations, then its row.
+  const CliRun sleigh =
+      momenta("equations " + example("constraints/chaplygin_sleigh") + " --all-symbols");
+  ASSERT_EQ(sleigh.code, 0) << sleigh.err;
+  EXPECT_NE(sleigh.out.find("λ the rows' forces [lambda_blade_lateral]"), std::string::npos)
+      << sleigh.out;
+  // ẏ cos φ − ẋ sin φ = 0 (the expression itself is checked in equations_test.cpp).
+  const auto row = sleigh.out.find("blade.lateral (velocity):\n  ");
+  ASSERT_NE(row, std::string::npos) << sleigh.out;
+  const std::string line = sleigh.out.substr(row, sleigh.out.find('\n', row + 30) - row);
+  for (const char* part : {"floor_plane_y_dot", "cos(floor_plane_angle)", "sin(floor_plane_angle)",
+                           "floor_plane_x_dot", " = 0"})
+    EXPECT_NE(line.find(part), std::string::npos) << line;
+  // The four-bar's hinge rows out of the plane hold identically; --form matrix adds G and k.
+  const CliRun four_bar =
+      momenta("equations " + example("constraints/four_bar") + " --form matrix");
+  ASSERT_EQ(four_bar.code, 0) << four_bar.err;
+  EXPECT_NE(four_bar.out.find("closure.z (position):\n  0 = 0  (identically"), std::string::npos)
+      << four_bar.out;
+  EXPECT_NE(four_bar.out.find("G[4,1] = "), std::string::npos) << four_bar.out;
+  EXPECT_NE(four_bar.out.find("k[0] = "), std::string::npos) << four_bar.out;
+  // The linearization in symbols of a constrained model points to the numeric one.
+  const CliRun linear = momenta("equations " + example("constraints/four_bar") + " --form linear");
+  EXPECT_NE(linear.code, 0);
+  EXPECT_NE(linear.err.find("`momenta linearize` does that numerically"), std::string::npos)
+      << linear.err;
+}
+
 TEST_F(AnalysisCli, DiagramOfThePendulumBobWritesTheSvgAndKeepsTheUsersFile) {
   // The bob of examples/pendulum.yaml from a state file at θ = 60°, θ̇ = 2 rad/s: the rod pulls
   // with T = m g cos θ + m L θ̇² = 4.905 + 4 = 8.905 N.

@@ -83,3 +83,36 @@ def test_equations_and_transfer_functions_in_symbols():
     assert any(row.startswith("joint pivot: along pivot_dot") for row in rows)
     with pytest.raises(momenta.InvalidArgument, match="no parameter named 'm'"):
         momenta.equations(model, symbols=["m"])
+
+
+def test_equations_of_a_constrained_model_carry_its_forces_and_rows():
+    # The geared pair: I_p θ̈_p = λ, I_w θ̈_w − T = −n λ, then the coupler's row θ_p − n θ_w = 0.
+    path = EXAMPLES / "constraints" / "geared_pair.yaml"
+    lines = momenta.equations(momenta.load_model(path), all_symbols=True)
+    names = ["I_pinion_zz", "I_wheel_zz", "F_drive", "n_mesh", "lambda_mesh_ratio",
+             "pinion_axle", "wheel_axle", "pinion_axle_ddot", "wheel_axle_ddot"]
+    expected = ["I_pinion_zz*pinion_axle_ddot = lambda_mesh_ratio",
+                "I_wheel_zz*wheel_axle_ddot - F_drive = -n_mesh*lambda_mesh_ratio",
+                "pinion_axle - n_mesh*wheel_axle = 0"]
+    assert len(lines) == 3 and lines[2].startswith("mesh.ratio: "), lines
+    for line, textbook in zip(lines, expected):
+        mine_left, mine_right = line.split(": ", 1)[-1].split(" = ")
+        book_left, book_right = textbook.split(" = ")
+        assert same_expression(f"({mine_left})-({mine_right})", f"({book_left})-({book_right})",
+                               names), (line, textbook)
+
+
+def test_newton_euler_rows_in_principal_axes(tmp_path):
+    # A plate with products of inertia: its rows in its principal axes, named after the body.
+    path = tmp_path / "plate.yaml"
+    path.write_text(
+        "name: skewed plate\n"
+        "bodies:\n"
+        "  - {name: plate, mass: 3, inertia: [[0.3, -0.05, 0], [-0.05, 0.4, 0], [0, 0, 0.6]]}\n"
+        "joints:\n"
+        "  - {name: bearing, type: revolute, parent: world, child: plate, axis: [0, 0, 1]}\n")
+    model = momenta.load_model(path)
+    body_axes = momenta.equations(model, form="newton-euler")
+    principal = momenta.equations(model, form="newton-euler", principal_axes=True)
+    assert not any("principal axes" in row for row in body_axes)
+    assert sum(row.startswith("plate (principal axes e1 = ") for row in principal) >= 3, principal

@@ -130,6 +130,12 @@ std::string_view loop_type_name(LoopType type);
 int constraint_rows(const Constraint& constraint);
 int constraint_position_rows(const Constraint& constraint);
 
+/// Each row's label, in row order (rows are named "<constraint>.<label>"): a loop closure's x, y,
+/// z, rx, ry, rz (those it has: a hinge x … ry, a slider x, y, rx … rz), a distance link's
+/// length, a rolling contact's normal, longitudinal, lateral, a knife edge's lateral, a
+/// coupler's ratio.
+std::vector<std::string_view> constraint_row_labels(const Constraint& constraint);
+
 /// What a constraint reports as its forces, by label (CSV columns "<constraint>.<label>"):
 ///   weld, point, hinge, slider  reaction.Fx .Fy .Fz .Mx .My .Mz — the wrench on body b, in W,
 ///                               the moment about frame B's origin (as joint reactions are)

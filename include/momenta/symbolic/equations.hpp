@@ -9,14 +9,22 @@
 // forces Q are a second pass with their wrenches as the only loads, plus the joint-space terms.
 // Entries are expanded, sin² θ folded into 1 − cos² θ, and collected.
 //
+// Constraints (model/constraint.hpp) add a multiplier λ per row (lambda_<constraint>_<label>)
+// and their rows: M v̇ + C v + g = Q + Gᵀλ with G v̇ + k = 0, and φ(q) = 0 on holonomic rows —
+// the rows of dynamics/constraints.hpp, the same in number, order, sign and meaning (a unit λ
+// is the same force), so λ is the constraint force momenta simulate reports.
+//
 // Coordinates. A joint with nq == nv contributes its coordinates as symbols named after it (a
 // 1-dof joint by its own name, "pivot"; several as "<joint>_<coordinate>", "base_x"); their rates
 // are "<name>_dot" and accelerations "<name>_ddot" (LaTeX \dot{}, \ddot{}). A ball or free joint
 // contributes its quaternion "<joint>_qw" ... and its body-frame angular velocity "<joint>_wx" ...
 // (and the free joint's position "<joint>_x" ... with rates "<joint>_x_dot" ...): its speeds are
 // not the rates of its coordinates. A prescribed joint's coordinate is its signal's value, rate
-// and acceleration: "<signal>", "<signal>_dot", "<signal>_ddot"; every signal that scales a load
-// is a symbol of its own name. Only the free (not prescribed) speeds get an equation.
+// and acceleration: "<signal>", "<signal>_dot", "<signal>_ddot" — a prescribed ball or free
+// joint's keep the names above (its quaternion, ω and ω̇, known functions of time from its
+// signals' rotation vector: the values `evaluate` takes from q, v and v̇); every signal that
+// scales a load is a symbol of its own name. Only the free (not prescribed) speeds get an
+// equation.
 //
 // Parameters. With `symbols` (or all_symbols) a parameter becomes a symbol named:
 //   m_<body>, I_<body>_xx … I_<body>_xy (inertia about the centre of mass, off-diagonals as
@@ -24,6 +32,10 @@
 //   l_<joint>_x … (the joint frame's position in its parent), c_<joint> (joint damping),
 //   k_<element>, c_<element>, l0_<element> (springs, dampers, friction), F_<element> (the size of
 //   an applied force or torque).
+//   Constraints: p_<constraint>_a_x … / _b_ (a loop's or link's frame origins in their bodies),
+//   p_<constraint>_centre_x … and p_<constraint>_point_x … (a rolling body's centre, a knife
+//   edge's point), L_<link> (a link's length), r_<contact> (a rolling radius), n_<coupler> and
+//   q0_<coupler> (ratio and offset).
 // A parameter whose value is zero stays 0. Other numbers print as short decimals where they are
 // one (9.81), else with 17 significant digits.
 
@@ -43,6 +55,9 @@ struct EquationOptions {
   std::vector<std::string> symbols;  ///< parameters to keep as symbols, by the names above
   bool all_symbols = false;          ///< every nonzero parameter a symbol
   bool newton_euler = false;         ///< derive the Newton–Euler form too (newton_euler_rows)
+  /// The Newton–Euler rows of a body with products of inertia in its principal axes at G (e1,
+  /// e2, e3 by increasing moment, named in the row's group) instead of its own axes.
+  bool principal_axes = false;
 };
 
 /// How an expression prints.
@@ -89,22 +104,45 @@ class Equations {
   /// joints as unknowns — R_<joint>_x, _y, _z the force the joint puts on its child and
   /// N_<joint>_x, _y, _z its moment about the child-side joint frame's origin J', both in the
   /// child's axes (dynamics::joint_reaction with ReactionFrame::child) — and, for each free joint,
-  /// the reaction along its motion equal to its elements' generalized force. Rows that read
-  /// 0 = 0 are left out. `newton_euler_group` names the body ("link1") or the joint ("joint j1").
-  /// Empty unless derived with EquationOptions::newton_euler.
+  /// the reaction along its motion equal to its elements' generalized force. With
+  /// EquationOptions::principal_axes, a body whose axes are not principal has its rows in its
+  /// principal axes (ΣF_1 … ΣM_G3, Euler's equations I1 α1 − (I2 − I3) ω2 ω3 = ΣM_G1 …). Rows that
+  /// read 0 = 0 are left out. `newton_euler_group` names the body ("link1") or the joint ("joint
+  /// j1"). Empty unless derived with EquationOptions::newton_euler.
   int newton_euler_rows() const;
   std::string newton_euler_group(int row) const;
   /// "ΣF_x = m a_Gx: loads = kinetic term" in `format` (text or latex).
   std::string newton_euler_equation(int row, Format format) const;
-  /// The reaction symbols' names, per joint in model order: R_x, R_y, R_z, N_x, N_y, N_z.
+  /// The reaction symbols' names, per joint in model order: R_x, R_y, R_z, N_x, N_y, N_z; then
+  /// the constraints' multipliers (multiplier_names()), whose forces join the bodies' loads.
   std::vector<std::string> reaction_names() const;
   /// Each row's loads − kinetic term at a state (as `evaluate`) with the reactions' values (6 per
-  /// joint, in reaction_names() order): zero for the motion and the reactions of the dynamics.
+  /// joint, then one per constraint row, in reaction_names() order): zero for the motion and the
+  /// reactions of the dynamics.
   VecX newton_euler_residuals(const VecX& q, const VecX& v, const VecX& vdot, const VecX& u,
                               const VecX& reactions) const;
 
+  /// The constraints' rows (none without constraints): the row's name ("closure.x"), whether it
+  /// restricts positions, its equation — φ(q) = 0 on a holonomic row, G(q) v = 0 on the others —,
+  /// an entry of G (a free speed's column, as the equations' rows), k = Ġ v, and the multipliers'
+  /// names (lambda_closure_x, one per row).
+  int constraint_rows() const;
+  const std::string& constraint_row_name(int row) const;
+  bool constraint_row_holonomic(int row) const;
+  std::string constraint_equation(int row, Format format) const;
+  std::string constraint_jacobian_entry(int row, int column, Format format) const;
+  std::string constraint_bias(int row, Format format) const;
+  std::vector<std::string> multiplier_names() const;
+
+  /// Evaluates φ (0 on velocity rows), G (rows × nv: every model speed, as
+  /// dynamics::ConstraintRows::G) and k (= Ġ v at v̇ = 0, as ConstraintRows::bias) at a state,
+  /// as `evaluate`.
+  void evaluate_constraints(const VecX& q, const VecX& v, const VecX& u, VecX& position, MatX& G,
+                            VecX& k) const;
+
   /// Evaluates M, C v + g − Q (the bias b) at a state, the parameters at their model values and
-  /// the signals at `u` (one per input_names(), in that order): M v̇_free + b = 0 is the motion.
+  /// the signals at `u` (one per input_names(), in that order): M v̇_free + b = 0 is the motion
+  /// (M v̇_free + b = G_freeᵀ λ with constraints).
   /// q and v are the model's (prescribed coordinates taken from them too, with their
   /// accelerations in vdot). Slow (substitution): for tests and checks, not simulation.
   void evaluate(const VecX& q, const VecX& v, const VecX& vdot, const VecX& u, MatX& M,
@@ -126,8 +164,8 @@ class Equations {
 };
 
 /// Derives the equations of `model`. Throws InvalidArgument for what it cannot write yet (a
-/// constraint, a two-body torsional spring whose bodies turn about more than one axis relative
-/// to each other, a prescribed ball or free joint), naming it, and for
+/// two-body torsional spring whose bodies turn about more than one axis relative
+/// to each other), naming it, and for
 /// a name in options.symbols that is no parameter of the model (with the names it has).
 Equations derive_equations(const model::Model& model, const EquationOptions& options = {});
 

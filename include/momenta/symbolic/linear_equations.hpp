@@ -74,7 +74,9 @@ class LinearEquations {
 /// Linearizes `equations` (derived from `model`) about q0, v0 (model sizes; prescribed
 /// coordinates as given) at time t, the signals' values, rates and accelerations taken there.
 /// Throws InvalidArgument when a free joint has nq ≠ nv (a ball or free joint: its quaternion has
-/// no δq of its own here; use `momenta linearize`), or on a size mismatch.
+/// no δq of its own here; use `momenta linearize`), for a constrained model (its linearization
+/// lives in independent coordinates chosen at the operating point: `momenta linearize`, which
+/// does that numerically), or on a size mismatch.
 LinearEquations linearize_equations(const Equations& equations, const model::Model& model, double t,
                                     const VecX& q0, const VecX& v0);
 

@@ -33,6 +33,7 @@
 
 // Generated at build time by `momenta equations --cpp` (tests/CMakeLists.txt).
 #include "double_pendulum_eom.hpp"
+#include "four_bar_eom.hpp"
 #include "quarter_car_eom.hpp"
 
 namespace momenta {
@@ -47,6 +48,9 @@ struct NumericInstant {
   VecX q, v, vdot, u;
   MatX M_free;     // CRBA's mass matrix on the free speeds
   VecX reactions;  // per joint: force on the child and moment about J', in the child's axes
+  // With constraints: the solver's rows (φ, G, k) and multipliers λ at the state.
+  VecX phi, k, lambda;
+  MatX G;
 };
 
 NumericInstant numeric_instant(const model::Model& model, const symbolic::Equations& e,
@@ -66,7 +70,14 @@ NumericInstant numeric_instant(const model::Model& model, const symbolic::Equati
   s.q = system.evaluated_q();
   s.v = system.evaluated_v();
   s.vdot = system.data().vdot;
-  // The joints' reactions of that motion (RNEA's backward pass with the elements' wrenches).
+  if (const system::ConstraintSolver* solver = system.constraints()) {
+    s.phi = solver->rows().position;
+    s.G = solver->rows().G;
+    s.k = solver->rows().bias;
+    s.lambda = solver->multipliers();
+  }
+  // The joints' reactions of that motion (RNEA's backward pass with the elements' wrenches, the
+  // constraint forces among them).
   const VecX vdot = s.vdot;
   dynamics::joint_reactions(model, system.data(), s.q, s.v, vdot, system.external_wrenches());
   s.reactions.resize(6 * model.num_joints());
@@ -98,6 +109,23 @@ VecX free_part(const VecX& x, const std::vector<int>& free) {
   return y;
 }
 
+// The constraint rows in symbols against the solver's at the same state: φ to 1e-12 m (or rad,
+// or of the largest), G to 1e-12 of its largest entry, k to 1e-12 of the largest |k| and
+// |G|·|v|² (its terms are velocity products).
+void expect_rows_match(const symbolic::Equations& e, const NumericInstant& s) {
+  VecX phi, k;
+  MatX G;
+  e.evaluate_constraints(s.q, s.v, s.u, phi, G, k);
+  ASSERT_EQ(phi.size(), s.phi.size());
+  ASSERT_EQ(G.rows(), s.G.rows());
+  ASSERT_EQ(G.cols(), s.G.cols());
+  EXPECT_MATRIX_NEAR(phi, s.phi, 1e-12 * std::max(1.0, s.phi.cwiseAbs().maxCoeff()));
+  const double G_scale = s.G.cwiseAbs().maxCoeff();
+  EXPECT_MATRIX_NEAR(G, s.G, 1e-12 * G_scale);
+  const double v2 = s.v.squaredNorm();
+  EXPECT_MATRIX_NEAR(k, s.k, 1e-12 * std::max(s.k.cwiseAbs().maxCoeff(), G_scale * v2));
+}
+
 // M to 1e-12 of its largest entry; the residual M v̇ + b to 1e-12 of the largest of |M v̇| and
 // |b| (the terms that cancel): both sides are sums of O(10) products evaluated in double, where
 // a wrong term shows at O(1). `e` is derived with its Newton–Euler form, checked with the
@@ -115,12 +143,26 @@ void expect_matches_numerics(const model::Model& model, const symbolic::Equation
     const double M_scale = s.M_free.cwiseAbs().maxCoeff();
     EXPECT_MATRIX_NEAR(M, s.M_free, 1e-12 * M_scale) << "state " << k;
     const VecX Mv = M * free_part(s.vdot, e.free_speeds());
-    const double scale = std::max({Mv.cwiseAbs().maxCoeff(), bias.cwiseAbs().maxCoeff(), 1e-300});
-    EXPECT_MATRIX_NEAR(Mv + bias, VecX::Zero(bias.size()), 1e-12 * scale) << "state " << k;
-    // The Newton–Euler form holds with the numeric reactions: each row is a sum of products of
-    // the loads, accelerations and geometry (of the size of `scale` and the reactions).
-    const VecX residuals = e.newton_euler_residuals(s.q, s.v, s.vdot, s.u, s.reactions);
-    const double ne_scale = std::max(scale, s.reactions.cwiseAbs().maxCoeff());
+    VecX constraint_force = VecX::Zero(bias.size());
+    VecX reactions = s.reactions;
+    if (e.constraint_rows() > 0) {
+      expect_rows_match(e, s);
+      MatX G_free(s.G.rows(), bias.size());
+      for (Eigen::Index c = 0; c < bias.size(); ++c)
+        G_free.col(c) = s.G.col(e.free_speeds()[static_cast<std::size_t>(c)]);
+      constraint_force = G_free.transpose() * s.lambda;
+      reactions.conservativeResize(s.reactions.size() + s.lambda.size());
+      reactions.tail(s.lambda.size()) = s.lambda;
+    }
+    const double scale = std::max({Mv.cwiseAbs().maxCoeff(), bias.cwiseAbs().maxCoeff(),
+                                   constraint_force.cwiseAbs().maxCoeff(), 1e-300});
+    EXPECT_MATRIX_NEAR(Mv + bias - constraint_force, VecX::Zero(bias.size()), 1e-12 * scale)
+        << "state " << k;
+    // The Newton–Euler form holds with the numeric reactions (and multipliers): each row is a sum
+    // of products of the loads, accelerations and geometry (of the size of `scale` and the
+    // reactions).
+    const VecX residuals = e.newton_euler_residuals(s.q, s.v, s.vdot, s.u, reactions);
+    const double ne_scale = std::max(scale, reactions.cwiseAbs().maxCoeff());
     EXPECT_GE(e.newton_euler_rows(), 3);
     EXPECT_MATRIX_NEAR(residuals, VecX::Zero(residuals.size()), 1e-12 * ne_scale) << "state " << k;
   }
@@ -145,6 +187,25 @@ TEST(SymbolicEquations, BundledExamplesEqualCrbaAndForwardDynamics) {
   }
 }
 
+// Constrained models: φ, G and k against the constraint solver's rows, M v̇ + b = G_freeᵀ λ with
+// the solver's v̇ and λ, the Newton–Euler form with the joints' reactions and the multipliers —
+// at random states (the equations hold off the constraint manifold too: λ and v̇ are those
+// that keep the state's constraint accelerations zero).
+TEST(SymbolicEquations, ConstrainedExamplesEqualTheConstraintSolver) {
+  for (const char* name :
+       {"constraints/four_bar", "constraints/slider_crank", "constraints/parallelogram_swing",
+        "constraints/rod_on_rotating_shaft", "constraints/rolling_disk_on_axle",
+        "constraints/rolling_coin", "constraints/chaplygin_sleigh", "constraints/geared_pair"}) {
+    SCOPED_TRACE(name);
+    const io::ModelFile file = io::read_model_file(example(name));
+    symbolic::EquationOptions options;
+    options.newton_euler = true;
+    const symbolic::Equations e = symbolic::derive_equations(file.model, options);
+    EXPECT_EQ(e.constraint_rows(), file.model.num_constraint_rows());
+    expect_matches_numerics(file.model, e, 19, 3);
+  }
+}
+
 TEST(SymbolicEquations, RandomTreesOfEveryJointTypeEqualCrbaAndForwardDynamics) {
   using model::JointType;
   const std::vector<std::vector<JointType>> families = {
@@ -161,6 +222,84 @@ TEST(SymbolicEquations, RandomTreesOfEveryJointTypeEqualCrbaAndForwardDynamics) 
     const symbolic::Equations e = symbolic::derive_equations(model, options);
     expect_matches_numerics(model, e, seed, 3);
   }
+}
+
+// Prescribed ball and free joints: their quaternion, ω and ω̇ (and position) are known functions
+// of time, taken from the state; the bodies they carry get their equations. A pendulum hung from
+// a body tumbling on a ball joint by three sines of its rotation vector, and a universal-joint
+// arm on a body moved by a prescribed free joint.
+TEST(SymbolicEquations, PrescribedBallAndFreeJointsMoveTheBodiesTheyCarry) {
+  const std::string signals =
+      "inputs:\n"
+      "  - {name: ax, type: sine, amplitude: 0.7, frequency: 0.2, phase: 0.1, offset: 0.2}\n"
+      "  - {name: ay, type: sine, amplitude: -0.5, frequency: 0.35, offset: 0.1}\n"
+      "  - {name: az, type: sine, amplitude: 1.2, frequency: 0.15, phase: 0.5, offset: -0.3}\n";
+  const std::string bodies =
+      "bodies:\n"
+      "  - {name: frame, mass: 2, inertia: [0.3, 0.5, 0.7], com: [0.1, 0, 0.05]}\n"
+      "  - {name: arm, mass: 0.8, inertia: [0.02, 0.03, 0.01], com: [0, 0, -0.3]}\n";
+  const std::string ball = "name: tumbling pendulum\n" + signals + bodies +
+                           "joints:\n"
+                           "  - {name: gimbal, type: ball, parent: world, child: frame, "
+                           "prescribed: [ax, ay, az]}\n"
+                           "  - {name: hinge, type: revolute, parent: frame, child: arm, "
+                           "axis: [0, 1, 0], in_parent: {position: [0.2, 0.1, 0]}}\n";
+  const std::string free = "name: carried arm\n" + signals + bodies +
+                           "joints:\n"
+                           "  - {name: carrier, type: free, parent: world, child: frame, "
+                           "prescribed: [ax, ay, az, az, ax, ay]}\n"
+                           "  - {name: joint, type: universal, parent: frame, child: arm, "
+                           "axis: [1, 0, 0], axis2: [0, 1, 0]}\n";
+  const std::vector<std::pair<std::string, std::size_t>> models = {{ball, 1}, {free, 2}};
+  for (const auto& [text, free_speeds] : models) {
+    const io::ModelFile file = io::parse_model_file(text, "prescribed.yaml", ".");
+    SCOPED_TRACE(file.name);
+    symbolic::EquationOptions options;
+    options.newton_euler = true;
+    const symbolic::Equations e = symbolic::derive_equations(file.model, options);
+    EXPECT_EQ(e.free_speeds().size(), free_speeds);
+    expect_matches_numerics(file.model, e, 29, 3);
+  }
+}
+
+// The Newton–Euler rows in principal axes: a skewed plate on a shaft (products of inertia in its
+// own axes) and random bodies get their rows in e1, e2, e3 (named in the group), Euler's
+// equations with the principal moments, and still balance with the numeric reactions; the
+// shaft, whose axes are principal, keeps them. With the inertia's entries as symbols the
+// rotated Ī is exact too.
+TEST(SymbolicEquations, NewtonEulerRowsInPrincipalAxes) {
+  const auto groups_in_principal_axes = [](const symbolic::Equations& e) {
+    int count = 0;
+    for (int r = 0; r < e.newton_euler_rows(); ++r)
+      count += e.newton_euler_group(r).find("(principal axes e1 = ") != std::string::npos;
+    return count;
+  };
+  const std::string plate =
+      "name: skewed plate\n"
+      "bodies:\n"
+      "  - {name: shaft, mass: 1, inertia: [0.01, 0.01, 0.002]}\n"
+      "  - {name: plate, mass: 3, com: [0.02, 0, 0.1],\n"
+      "     inertia: [[0.3, -0.05, 0.01], [-0.05, 0.4, 0.02], [0.01, 0.02, 0.6]]}\n"
+      "joints:\n"
+      "  - {name: bearing, type: revolute, parent: world, child: shaft, axis: [0, 0, 1]}\n"
+      "  - {name: weld, type: fixed, parent: shaft, child: plate}\n";
+  const io::ModelFile file = io::parse_model_file(plate, "plate.yaml", ".");
+  symbolic::EquationOptions options;
+  options.newton_euler = true;
+  options.principal_axes = true;
+  const symbolic::Equations e = symbolic::derive_equations(file.model, options);
+  EXPECT_EQ(groups_in_principal_axes(e), 6);  // the plate's six rows
+  expect_matches_numerics(file.model, e, 31, 3);
+  options.all_symbols = true;
+  const symbolic::Equations with_symbols = symbolic::derive_equations(file.model, options);
+  EXPECT_EQ(groups_in_principal_axes(with_symbols), 6);
+  expect_matches_numerics(file.model, with_symbols, 37, 2);
+  options.all_symbols = false;
+  const model::Model tree =
+      test::random_tree(3, 41, {model::JointType::revolute, model::JointType::spherical});
+  const symbolic::Equations random = symbolic::derive_equations(tree, options);
+  EXPECT_GE(groups_in_principal_axes(random), 6);
+  expect_matches_numerics(tree, random, 43, 3);
 }
 
 // Parameters as symbols evaluate to the same numbers as the numbers themselves.
@@ -327,9 +466,6 @@ TEST(SymbolicLinearization, PendulumAndDoublePendulumStateMatricesEqualTheNumeri
 }
 
 TEST(SymbolicEquations, RefusesWhatItDoesNotWriteAndUnknownSymbols) {
-  EXPECT_THROW(
-      symbolic::derive_equations(io::read_model_file(example("constraints/four_bar")).model),
-      InvalidArgument);
   symbolic::EquationOptions options;
   options.symbols = {"m_bobb"};
   try {
@@ -388,6 +524,61 @@ TEST(SymbolicEquations, GeneratedCppEqualsTheNumericEngine) {
                                 double_pendulum_eom::bias);
   expect_generated_code_matches("quarter_car", quarter_car_eom::nfree, quarter_car_eom::nu,
                                 quarter_car_eom::mass_matrix, quarter_car_eom::bias);
+}
+
+// The four-bar's generated constraints(): φ, G (free columns) and k with the crank's prescribed
+// acceleration in it, against the solver's rows; M v̇ + b = Gᵀλ and G v̇ + k = 0 with its v̇, λ.
+TEST(SymbolicEquations, GeneratedCppOfTheFourBarCarriesItsConstraints) {
+  namespace eom = four_bar_eom;
+  const io::ModelFile file = io::read_model_file(example("constraints/four_bar"));
+  const symbolic::Equations e = symbolic::derive_equations(file.model);
+  ASSERT_EQ(eom::nrows, file.model.num_constraint_rows());
+  std::mt19937 rng(23);
+  for (int k = 0; k < 3; ++k) {
+    const NumericInstant s = numeric_instant(file.model, e, rng, 0.3 + 0.2 * k);
+    std::vector<double> M(eom::nfree * eom::nfree), b(eom::nfree), phi(eom::nrows),
+        G(eom::nrows * eom::nfree), bias(eom::nrows);
+    eom::mass_matrix(s.q.data(), M.data());
+    eom::bias(s.q.data(), s.v.data(), s.vdot.data(), nullptr, b.data());
+    eom::constraints(s.q.data(), s.v.data(), s.vdot.data(), nullptr, phi.data(), G.data(),
+                     bias.data());
+    using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    const MatX M_code = Eigen::Map<const RowMajor>(M.data(), eom::nfree, eom::nfree);
+    const MatX G_code = Eigen::Map<const RowMajor>(G.data(), eom::nrows, eom::nfree);
+    MatX G_free(eom::nrows, eom::nfree);
+    for (int c = 0; c < eom::nfree; ++c)
+      G_free.col(c) = s.G.col(e.free_speeds()[static_cast<std::size_t>(c)]);
+    EXPECT_MATRIX_NEAR(Eigen::Map<const VecX>(phi.data(), eom::nrows), s.phi, 1e-12);
+    EXPECT_MATRIX_NEAR(G_code, G_free, 1e-12 * G_free.cwiseAbs().maxCoeff());
+    const VecX vdot_free = free_part(s.vdot, e.free_speeds());
+    const VecX Mv = M_code * vdot_free, force = G_code.transpose() * s.lambda;
+    const VecX b_code = Eigen::Map<const VecX>(b.data(), eom::nfree);
+    const double scale = std::max(
+        {Mv.cwiseAbs().maxCoeff(), b_code.cwiseAbs().maxCoeff(), force.cwiseAbs().maxCoeff()});
+    EXPECT_MATRIX_NEAR(Mv + b_code - force, VecX::Zero(eom::nfree), 1e-12 * scale);
+    // G v̇ + k = 0 on the rows the solver keeps (the three out of the plane are redundant).
+    const VecX accel = G_code * vdot_free + Eigen::Map<const VecX>(bias.data(), eom::nrows);
+    const VecX Gv = (G_code * vdot_free).cwiseAbs();
+    for (int r = 0; r < eom::nrows; ++r) {
+      if (s.lambda[r] == 0.0) continue;
+      EXPECT_NEAR(accel[r], 0.0, 1e-11 * std::max(1.0, Gv[r])) << "row " << r;
+    }
+  }
+}
+
+// Constrained models read as a textbook writes them: the geared pair (a coupler q_p = n q_w),
+// each wheel's equation with the mesh's effort λ, and the constraint itself.
+TEST(SymbolicEquations, TheGearedPairReadsWithItsMeshEffort) {
+  const symbolic::Equations e = symbols_of("constraints/geared_pair");
+  ASSERT_EQ(e.free_speeds().size(), 2u);
+  ASSERT_EQ(e.constraint_rows(), 1);
+  EXPECT_EQ(e.multiplier_names(), std::vector<std::string>{"lambda_mesh_ratio"});
+  expect_same_equation(e.equation(0, symbolic::Format::text),
+                       "I_pinion_zz*pinion_axle_ddot = lambda_mesh_ratio");
+  expect_same_equation(e.equation(1, symbolic::Format::text),
+                       "I_wheel_zz*wheel_axle_ddot - F_drive = -n_mesh*lambda_mesh_ratio");
+  expect_same_equation(e.constraint_equation(0, symbolic::Format::text),
+                       "pinion_axle - n_mesh*wheel_axle = 0");
 }
 
 // The generated Python, run by python3, prints the same M and b as Equations::evaluate.
