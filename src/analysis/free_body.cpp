@@ -133,32 +133,8 @@ class DiagramBuilder {
 
   // Constraint forces on the body, each constraint's rows summed, on its line of action.
   void add_constraints() {
-    const system::ConstraintSolver* solver = system_.constraints();
-    if (solver == nullptr) return;
-    const dynamics::ConstraintRows& rows = solver->rows();
-    const VecX& lambda = solver->multipliers();
-    const auto& constraints = model_.constraints();
-    for (int k = 0; k < static_cast<int>(constraints.size()); ++k) {
-      Vec6 w_O = Vec6::Zero();  // on the body, in W about Wo
-      bool acts = false;
-      for (int i = 0; i < rows.count; ++i) {
-        if (rows.constraint[static_cast<std::size_t>(i)] != k) continue;
-        const double sign = rows.body_b[static_cast<std::size_t>(i)] == b_   ? 1.0
-                            : rows.body_a[static_cast<std::size_t>(i)] == b_ ? -1.0
-                                                                             : 0.0;
-        if (sign == 0.0 || rows.wrench_W[static_cast<std::size_t>(i)].isZero(0.0)) continue;
-        acts = true;
-        w_O += sign * lambda[i] * rows.wrench_W[static_cast<std::size_t>(i)];
-      }
-      if (!acts) continue;
-      const Vec3 f = w_O.tail<3>();
-      const Vec3 n_G = w_O.head<3>() - d_.p_WoG_W.cross(f);
-      const std::string& name = model::constraint_name(constraints[k]);
-      d_.loads.push_back(
-          wrench_on_its_line(LoadKind::reaction, name,
-                             fmt::format("reaction of the {} constraint {}",
-                                         model::constraint_type_name(constraints[k]), name),
-                             d_.p_WoG_W, n_G, f));
+    for (int k = 0; k < static_cast<int>(model_.constraints().size()); ++k) {
+      if (std::optional<Load> load = constraint_load(system_, k, b_)) d_.loads.push_back(*load);
     }
   }
 
@@ -375,6 +351,36 @@ Vec3 FreeBodyDiagram::sum_of_moments_about_G() const {
   for (const Load& load : loads)
     sum += (load.p_WoP_W - p_WoG_W).cross(load.force_W) + load.couple_W;
   return sum;
+}
+
+std::optional<Load> constraint_load(const system::MultibodySystem& system, int constraint,
+                                    int body) {
+  const system::ConstraintSolver* solver = system.constraints();
+  if (solver == nullptr) return std::nullopt;
+  const dynamics::ConstraintRows& rows = solver->rows();
+  const VecX& lambda = solver->multipliers();
+  Vec6 w_O = Vec6::Zero();  // on the body, in W about Wo
+  bool acts = false;
+  for (int i = 0; i < rows.count; ++i) {
+    const auto row = static_cast<std::size_t>(i);
+    if (rows.constraint[row] != constraint) continue;
+    const double sign = rows.body_b[row] == body ? 1.0 : rows.body_a[row] == body ? -1.0 : 0.0;
+    if (sign == 0.0 || rows.wrench_W[row].isZero(0.0)) continue;
+    acts = true;
+    w_O += sign * lambda[i] * rows.wrench_W[row];
+  }
+  if (!acts) return std::nullopt;
+  const model::Model& model = system.model();
+  const model::Constraint& c = model.constraints()[static_cast<std::size_t>(constraint)];
+  const Vec3 p_WoG_W =
+      system.data().X_WB[body].apply(model.body(body).mass_properties.center_of_mass());
+  const Vec3 f = w_O.tail<3>();
+  const Vec3 n_G = w_O.head<3>() - p_WoG_W.cross(f);
+  const std::string& name = model::constraint_name(c);
+  return wrench_on_its_line(
+      LoadKind::reaction, name,
+      fmt::format("reaction of the {} constraint {}", model::constraint_type_name(c), name),
+      p_WoG_W, n_G, f);
 }
 
 FreeBodyDiagram free_body_diagram(system::MultibodySystem& system, const std::string& body,

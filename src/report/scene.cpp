@@ -6,11 +6,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <variant>
 
+#include "momenta/analysis/free_body.hpp"
 #include "momenta/analysis/linearize.hpp"
 #include "momenta/dynamics/data.hpp"
 #include "momenta/dynamics/kinematics.hpp"
+#include "momenta/system/multibody_system.hpp"
 #include "sections.hpp"
 
 namespace momenta::report::detail {
@@ -126,6 +129,22 @@ json frames_json(const SimulationRun& run) {
   }
   const bool reactions =
       reaction_columns.size() == model.joints().size() && !model.joints().empty();
+  // With reactions, each constraint's force on its body (the first of a loop's or link's that
+  // moves; a coupler's acts in joint space and has none): from the constrained dynamics of the
+  // row's state, as its free-body diagram draws it (analysis::constraint_load).
+  std::vector<std::pair<int, int>> constraint_bodies;  // (constraint, body)
+  std::optional<system::MultibodySystem> constrained;
+  if (reactions && !model.constraints().empty()) {
+    constrained.emplace(model);
+    const dynamics::ConstraintRows& constraint_rows = constrained->constraints()->rows();
+    for (int k = 0; k < static_cast<int>(model.constraints().size()); ++k) {
+      const auto first =
+          static_cast<std::size_t>(constraint_rows.first_row[static_cast<std::size_t>(k)]);
+      const int body = constraint_rows.body_b[first] != 0 ? constraint_rows.body_b[first]
+                                                          : constraint_rows.body_a[first];
+      if (body != 0) constraint_bodies.emplace_back(k, body);
+    }
+  }
 
   dynamics::Data data(model);
   std::vector<double> time, positions, quaternions, omegas, load_vectors, reaction_forces,
@@ -160,6 +179,18 @@ json frames_json(const SimulationRun& run) {
         reaction_points.insert(reaction_points.end(), {at.x(), at.y(), at.z()});
       }
     }
+    if (!constraint_bodies.empty()) {
+      constrained->evaluate(row[0], q, v);
+      for (const auto& [k, body] : constraint_bodies) {
+        const std::optional<analysis::Load> load = analysis::constraint_load(*constrained, k, body);
+        const Vec3 F = load ? load->force_W : Vec3::Zero(),
+                   M = load ? load->couple_W : Vec3::Zero();
+        const Vec3 at = load ? load->p_WoP_W : data.X_WB[body].p;
+        reaction_forces.insert(reaction_forces.end(), {F.x(), F.y(), F.z()});
+        reaction_moments.insert(reaction_moments.end(), {M.x(), M.y(), M.z()});
+        reaction_points.insert(reaction_points.end(), {at.x(), at.y(), at.z()});
+      }
+    }
   }
   json frames = {{"count", kept.size()},
                  {"stride", stride},
@@ -174,7 +205,12 @@ json frames_json(const SimulationRun& run) {
     frames["loads"] = {{"names", names}, {"vector", encode_f32(load_vectors)}};
   }
   if (reactions) {
-    frames["reactions"] = {{"force", encode_f32(reaction_forces)},
+    json names = json::array();
+    for (const model::Joint& joint : model.joints()) names.push_back(joint.name);
+    for (const auto& [k, body] : constraint_bodies)
+      names.push_back(model::constraint_name(model.constraints()[static_cast<std::size_t>(k)]));
+    frames["reactions"] = {{"names", names},
+                           {"force", encode_f32(reaction_forces)},
                            {"moment", encode_f32(reaction_moments)},
                            {"point", encode_f32(reaction_points)}};
   }

@@ -143,6 +143,35 @@ test('heavy top: reports its spin, a rigid body drawn as its cone', async () => 
   await r.page.close();
 });
 
+test('four-bar: the closure\'s force drawn in 3-D beside the joints\' reactions', async () => {
+  const model = path.join(examples, 'constraints', 'four_bar.yaml');
+  const file = path.join(work, 'four_bar.html');
+  run('report', model, '-o', file, '-q');
+  const table = csv(run('simulate', model, '--reactions', '-q'));
+  const { page, problems } = await open(file);
+  await firstFrame(page);
+  const times = await page.evaluate(() => window.momentaReport.frameTimes());
+  const t = times[Math.floor(times.length / 2)];
+  await page.evaluate((time) => { window.momentaReport.showReactions(true); window.momentaReport.setTime(time); }, t);
+  const arrows = await page.evaluate(() => window.momentaReport.reactionArrows());
+  // The joints' (in the model's order), then the constraint's.
+  assert.deepEqual(arrows.slice(0, 3).map((a) => a.name).sort(), ['coupler_pin', 'crank_pin', 'rocker_pin']);
+  assert.equal(arrows[3].name, 'closure');
+  // The closure's arrow: drawn along the force the CSV records on the rocker (W), at that row.
+  const row = table.column('time').findIndex((x) => Math.abs(x - t) < 1e-12);
+  assert.ok(row >= 0, `no CSV row at t = ${t}`);
+  const F = ['Fx', 'Fy', 'Fz'].map((c) => table.column(`closure.reaction.${c}`)[row]);
+  const size = Math.hypot(...F);
+  const closure = arrows[3];
+  assert.ok(closure.visible && size > 1e-3, `closure arrow ${JSON.stringify(closure)}, |F| = ${size}`);
+  closure.direction.forEach((d, i) => assert.ok(Math.abs(d - F[i] / size) < 1e-5, `direction ${closure.direction} vs ${F}`));
+  const label = await page.evaluate(() => [...document.querySelectorAll('#motion label')].map((l) => l.textContent).join('|'));
+  assert.match(label, /joint and constraint reactions/);
+  await page.$('#motion').then((h) => h.screenshot({ path: path.join(artifacts, 'four-bar-reactions-motion.png') }));
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
 test('rotor on bearings: modes about the steady motion and the Campbell diagram with its critical speeds', async () => {
   const model = path.join(examples, 'rotor_on_bearings.yaml');
   const r = await checkSimulationPage('rotor', model, ['--about', 'steady', '--campbell', '500', '5000', '--duration', '0.1']);

@@ -54,6 +54,8 @@ function simulationPage(app, data) {
     play: (on) => { timeline.playing = on; },
     playMode: (i) => motion.playMode(data.linear.modes[i]),
     framesDrawn: () => frames,
+    showReactions: (on) => motion.setToggle('reactions', on),
+    reactionArrows: () => motion.reactionArrowsDrawn(),
     summary: () => data.summary,
     diagrams: () => data.diagrams && { times: data.diagrams.times, bodies: data.diagrams.bodies.map((b) => b.name) },
     showDiagram: (body, k) => diagrams.select(body, k),

@@ -1,7 +1,8 @@
 // The motion of a run in the 3-D view: bodies posed at any time by interpolating the recorded
 // poses (linear in position, slerp in rotation; exact at the recorded times), body frames, joint
 // axes, massless links, springs as coils and dampers as dashpots, and on request each body's ω
-// and H, a body's trajectory, applied loads and joint reactions as arrows scaled with a legend.
+// and H, a body's trajectory, applied loads and joint and constraint reactions as arrows scaled
+// with a legend.
 // Mode shapes animate in the same view.
 
 import * as THREE from 'three';
@@ -192,11 +193,13 @@ export class Motion {
     this.hArrows = this.bodies.map(() => makeArrow(0x1f77b4));
     [...this.omegaArrows, ...this.hArrows].forEach((a) => this.viewer.scene.add(a));
     this.loads = frames.loads ? { names: frames.loads.names, vector: decode(frames.loads.vector) } : null;
-    this.reactions = frames.reactions ? { force: decode(frames.reactions.force), point: decode(frames.reactions.point) } : null;
+    // Reactions: each joint's on its child at J', then each constraint's on its body (on its line
+    // of action), per frame.
+    this.reactions = frames.reactions ? { names: frames.reactions.names || this.scene.joints.map((j) => j.name), force: decode(frames.reactions.force), point: decode(frames.reactions.point) } : null;
     this.loadScale = this.loads ? scaleFor(maxOf(this.loads.vector)) : 1;
     this.reactionScale = this.reactions ? scaleFor(maxOf(this.reactions.force)) : 1;
     this.loadArrows = this.loads ? this.loads.names.map(() => makeArrow(0x2ca02c)) : [];
-    this.reactionArrows = this.reactions ? this.scene.joints.map(() => makeArrow(0x9467bd)) : [];
+    this.reactionArrows = this.reactions ? this.reactions.names.map(() => makeArrow(0x9467bd)) : [];
     [...this.loadArrows, ...this.reactionArrows].forEach((a) => this.viewer.scene.add(a));
     this.loadElements = this.scene.elements.filter((e) => e.type === 'force');
     // A body's trajectory: its centre of mass at every kept frame, shown up to the current time.
@@ -288,8 +291,8 @@ export class Motion {
       });
     }
     if (this.reactions) {
-      const nj = this.scene.joints.length;
-      this.scene.joints.forEach((_, j) => {
+      const nj = this.reactionArrows.length;
+      this.reactionArrows.forEach((_, j) => {
         const at = this.reactions.point.subarray(3 * (k * nj + j), 3 * (k * nj + j) + 3);
         const F = this.reactions.force.subarray(3 * (k * nj + j), 3 * (k * nj + j) + 3);
         setArrow(this.reactionArrows[j], at, F, this.reactionScale, this.toggles.reactions);
@@ -320,6 +323,22 @@ export class Motion {
     this.viewer.render();
   }
 
+  // What the reaction arrows show now (for the test hook): each one's name, whether it is drawn,
+  // its origin and unit direction in W.
+  reactionArrowsDrawn() {
+    return this.reactionArrows.map((a, j) => ({
+      name: this.reactions.names[j],
+      visible: a.visible,
+      origin: a.position.toArray(),
+      direction: new THREE.Vector3(0, 1, 0).applyQuaternion(a.quaternion).toArray(),
+    }));
+  }
+
+  setToggle(key, on) {
+    this.toggles[key] = on;
+    this.show(this.timeline.time);
+  }
+
   // The toggles and the legend of arrow scales.
   controls() {
     const check = (label, key, on) => {
@@ -343,7 +362,7 @@ export class Motion {
       check('body frames', 'frames', true), check('joint axes', 'axes', true),
       check('ω (angular velocity)', 'omega', false), check('H (angular momentum about the centre of mass)', 'H', false),
       this.loads ? check('applied forces', 'loads', false) : null,
-      this.reactions ? check('joint reactions', 'reactions', false) : null,
+      this.reactions ? check(this.reactions.names.length > this.scene.joints.length ? 'joint and constraint reactions' : 'joint reactions', 'reactions', false) : null,
       element('label', {}, 'trace ', trace), legend, notes);
   }
 }

@@ -93,4 +93,12 @@ struct FreeBodyDiagram {
 FreeBodyDiagram free_body_diagram(system::MultibodySystem& system, const std::string& body,
                                   double t, const VecX& q, const VecX& v);
 
+/// Constraint `constraint`'s load on body `body` (an index) at the instant `system` last
+/// evaluated, as a diagram draws it: its rows' forces summed into one wrench, given as a force on
+/// its line of action at the point nearest the body's centre of mass plus the couple that
+/// remains. Empty when the constraint acts on other bodies only or in joint space only (a
+/// coupler), or the model has no constraints.
+std::optional<Load> constraint_load(const system::MultibodySystem& system, int constraint,
+                                    int body);
+
 }  // namespace momenta::analysis
