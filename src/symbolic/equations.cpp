@@ -613,19 +613,35 @@ class Derivation {
     return v;
   }
 
-  // The constraints' rows (constraint_rows.hpp): φ(q) on holonomic rows; G_ij = w·S_j over the
-  // joints that support body b, minus those supporting a, with S_j in W about Wo (as
-  // dynamics::constraint_equations assembles it); k = Ġ v, the rate of G v at v̇ = 0; a multiplier
-  // λ per row. Each wrench row's force λ w joins the loads of body b (−λ w those of a) for the
-  // Newton–Euler form, in B about Bo; a coupler's λ G joins the joints' generalized forces.
+  // The constraints' rows (constraint_rows.hpp): φ(q) on holonomic rows, G (jacobian_row),
+  // k = Ġ v as the rate of G v at v̇ = 0, and a multiplier λ per row, whose forces join the
+  // Newton–Euler form's loads (add_row_loads).
   void constraint_equations() {
     const auto rows = constraint_rows(
         model_, R_WB_, p_WB_, impl_.q,
         [this](const std::string& name, double value) { return params_(name, value); });
-    const int nb = model_.num_bodies();
-    const std::size_t nv = static_cast<std::size_t>(model_.nv());
-    // Every motion-subspace column in W about Wo: [R s_w; R s_v + p × R s_w].
-    std::vector<Motion> S_W(nv);
+    const std::vector<Motion> S_W = world_subspaces();
+    constraint_loads_.assign(model_.num_bodies(), Force{});
+    constraint_joint_forces_.assign(static_cast<std::size_t>(model_.nv()), 0);
+    for (const SymbolicRow& row : rows) {
+      Equations::Impl::ConstraintRow out;
+      out.name = row.name;
+      out.holonomic = row.holonomic;
+      out.position = tidy_if_small(row.position);
+      out.multiplier =
+          symbol("lambda_" + identifier(row.name), "\\lambda_{" + latex_name(row.name) + "}");
+      out.G = jacobian_row(row, S_W);
+      ex Gv = 0;
+      for (std::size_t vi = 0; vi < out.G.size(); ++vi) Gv += out.G[vi] * impl_.v[vi];
+      out.bias = tidy_if_small(rate(Gv));
+      add_row_loads(row, out.multiplier);
+      impl_.constraints.push_back(std::move(out));
+    }
+  }
+
+  // Every motion-subspace column in W about Wo: [R s_w; R s_v + p × R s_w], per model speed.
+  std::vector<Motion> world_subspaces() const {
+    std::vector<Motion> S_W(static_cast<std::size_t>(model_.nv()));
     for (const model::Joint& j : model_.joints()) {
       const int i = j.child_index;
       for (int k = 0; k < j.nv(); ++k) {
@@ -634,51 +650,48 @@ class Derivation {
         S_W[static_cast<std::size_t>(j.v_index + k)] = {w, R_WB_[i] * S.v + cross(p_WB_[i], w)};
       }
     }
-    constraint_loads_.assign(nb, Force{});
-    constraint_joint_forces_.assign(nv, 0);
-    for (const SymbolicRow& row : rows) {
-      Equations::Impl::ConstraintRow out;
-      out.name = row.name;
-      out.holonomic = row.holonomic;
-      out.position = tidy_if_small(row.position);
-      out.G.assign(nv, 0);
-      const std::string id = identifier(row.name);
-      out.multiplier = symbol("lambda_" + id, "\\lambda_{" + latex_name(row.name) + "}");
-      if (row.joint_row.empty()) {
-        const auto add_support = [&](int body, int sign) {
-          for (; body > 0; body = model_.body(body).parent_index) {
-            const model::Joint& j = model_.joint(model_.body(body).joint_index);
-            for (int k = 0; k < j.nv(); ++k) {
-              const auto vi = static_cast<std::size_t>(j.v_index + k);
-              out.G[vi] += sign * (dot(row.moment, S_W[vi].w) + dot(row.force, S_W[vi].v));
-            }
-          }
-        };
-        add_support(row.body_b, +1);
-        add_support(row.body_a, -1);
-        const auto push = [&](int body, const ex& sign) {
-          if (body == 0) return;
-          const M3 Rt = transpose(R_WB_[body]);
-          const V3 f = (sign * out.multiplier) * row.force;
-          const V3 n = (sign * out.multiplier) * (row.moment - cross(p_WB_[body], row.force));
-          constraint_loads_[body] = constraint_loads_[body] + Force{Rt * n, Rt * f};
-        };
-        push(row.body_b, 1);
-        push(row.body_a, -1);
-      } else {
-        for (const auto& [vi, coefficient] : row.joint_row) {
-          out.G[static_cast<std::size_t>(vi)] += coefficient;
-          constraint_joint_forces_[static_cast<std::size_t>(vi)] += coefficient * out.multiplier;
+    return S_W;
+  }
+
+  // A row of G over every model speed: a wrench row's G_j = w·S_j over the joints that support
+  // body b, minus those supporting a (as dynamics::constraint_equations assembles it); a
+  // coupler's as written.
+  std::vector<ex> jacobian_row(const SymbolicRow& row, const std::vector<Motion>& S_W) const {
+    std::vector<ex> G(S_W.size(), ex(0));
+    for (const auto& [vi, coefficient] : row.joint_row)
+      G[static_cast<std::size_t>(vi)] += coefficient;
+    const auto add_support = [&](int body, int sign) {
+      for (; body > 0; body = model_.body(body).parent_index) {
+        const model::Joint& j = model_.joint(model_.body(body).joint_index);
+        for (int k = 0; k < j.nv(); ++k) {
+          const auto vi = static_cast<std::size_t>(j.v_index + k);
+          G[vi] += sign * (dot(row.moment, S_W[vi].w) + dot(row.force, S_W[vi].v));
         }
       }
-      ex Gv = 0;
-      for (std::size_t vi = 0; vi < nv; ++vi) {
-        out.G[vi] = tidy_if_small(out.G[vi]);
-        Gv += out.G[vi] * impl_.v[vi];
-      }
-      out.bias = tidy_if_small(rate(Gv));
-      impl_.constraints.push_back(std::move(out));
+    };
+    if (row.joint_row.empty()) {
+      add_support(row.body_b, +1);
+      add_support(row.body_a, -1);
     }
+    for (ex& entry : G) entry = tidy_if_small(entry);
+    return G;
+  }
+
+  // The row's force with multiplier λ: λ w on body b and −λ w on a, in B about Bo; a coupler's
+  // λ G on its joints' generalized forces.
+  void add_row_loads(const SymbolicRow& row, const symbol& lambda) {
+    for (const auto& [vi, coefficient] : row.joint_row)
+      constraint_joint_forces_[static_cast<std::size_t>(vi)] += coefficient * lambda;
+    if (!row.joint_row.empty()) return;
+    const auto push = [&](int body, int sign) {
+      if (body == 0) return;
+      const M3 Rt = transpose(R_WB_[body]);
+      const ex scale = sign * lambda;
+      const V3 f = scale * row.force, n = scale * (row.moment - cross(p_WB_[body], row.force));
+      constraint_loads_[body] = constraint_loads_[body] + Force{Rt * n, Rt * f};
+    };
+    push(row.body_b, +1);
+    push(row.body_a, -1);
   }
 
   // Per body, Newton's and Euler's equations in its own axes with the joint reactions as

@@ -5,7 +5,14 @@
 set -euo pipefail
 source_dir=$1
 python=$2
-scratch=$(mktemp -d)
+# One fixed folder per user, not a fresh mktemp: the unity sources CMake writes name their files by
+# absolute path, so only a stable path lets ccache reuse the last run's objects (189 s → seconds on
+# a machine that ran it before). flock keeps two runs from sharing it.
+scratch="${TMPDIR:-/tmp}/momenta-pip-install-$(id -u)"
+exec 9>"$scratch.lock"
+flock 9
+rm -rf "$scratch"
+mkdir -p "$scratch"
 trap 'rm -rf "$scratch"' EXIT
 cp -r "$source_dir"/{CMakeLists.txt,cmake,include,src,python,web,pyproject.toml,setup.py,docs} "$scratch"/
 mkdir -p "$scratch/apps" "$scratch/tests" "$scratch/bench"
