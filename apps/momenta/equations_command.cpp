@@ -212,12 +212,13 @@ json equations_json(const io::ModelFile& file, const symbolic::Equations& e) {
   std::vector<std::string> accelerations;
   for (int i : free) accelerations.push_back(e.acceleration_names()[static_cast<std::size_t>(i)]);
   json constraints = json::array();
+  const std::vector<std::string> multipliers = e.multiplier_names();
   for (int r = 0; r < e.constraint_rows(); ++r) {
     json G = json::array();
     for (int c = 0; c < n; ++c)
       G.push_back(e.constraint_jacobian_entry(r, c, symbolic::Format::text));
     constraints.push_back({{"name", e.constraint_row_name(r)},
-                           {"multiplier", e.multiplier_names()[static_cast<std::size_t>(r)]},
+                           {"multiplier", multipliers[static_cast<std::size_t>(r)]},
                            {"holonomic", e.constraint_row_holonomic(r)},
                            {"equation", e.constraint_equation(r, symbolic::Format::text)},
                            {"equation_latex", e.constraint_equation(r, symbolic::Format::latex)},

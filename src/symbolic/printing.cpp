@@ -399,22 +399,19 @@ std::string Equations::generate_code(Format language, const std::string& module)
   // The constraints: φ, G on the free speeds (row-major), and k with the prescribed speeds'
   // accelerations in it, so that G vdot_free + k = 0.
   CodeEmitter rows(lang, indent, code);
-  std::vector<std::string> phi_entries, G_entries, k_entries;
+  std::vector<std::string> phi_entries, G_entries, k_entries, row_names;
+  std::vector<bool> is_free(static_cast<std::size_t>(impl.nv), false);
+  for (const int vi : impl.free) is_free[static_cast<std::size_t>(vi)] = true;
   for (const auto& c : impl.constraints) {
+    row_names.push_back(c.name);
     phi_entries.push_back(rows(c.position));
     ex k = c.bias;
-    std::vector<bool> is_free(static_cast<std::size_t>(impl.nv), false);
-    for (const int vi : impl.free) is_free[static_cast<std::size_t>(vi)] = true;
-    for (int vi = 0; vi < impl.nv; ++vi) {
-      if (!is_free[static_cast<std::size_t>(vi)])
-        k += c.G[static_cast<std::size_t>(vi)] * impl.vdot[static_cast<std::size_t>(vi)];
-    }
+    for (std::size_t vi = 0; vi < is_free.size(); ++vi)
+      if (!is_free[vi]) k += c.G[vi] * impl.vdot[vi];
     for (const int vi : impl.free) G_entries.push_back(rows(c.G[static_cast<std::size_t>(vi)]));
     k_entries.push_back(rows(k));
   }
   const std::size_t m = impl.constraints.size();
-  std::vector<std::string> row_names;
-  for (const auto& c : impl.constraints) row_names.push_back(c.name);
 
   std::string out;
   if (cpp) {
