@@ -30,8 +30,10 @@ declare -A corpora=(
   [part_file]="$(seed part_file examples/parts/*.yaml)"
   [stl]="$(seed stl examples/parts/meshes/*.stl)"
   [obj]="$(seed obj examples/parts/meshes/*.obj)"
+  [state_file]="$(seed state_file)"
+  [sweep_file]="$(seed sweep_file examples/sweeps/*.yaml)"
 )
-for harness in model_file part_file stl obj; do
+for harness in model_file part_file stl obj state_file sweep_file; do
   binary=build-fuzz/tests/fuzz/${harness}_fuzz
   regressions=tests/fuzz/regressions/$harness
   if compgen -G "$regressions/*" >/dev/null; then

@@ -13,5 +13,6 @@ cd "$(dirname "$0")/.."
 build_dir=${MOMENTA_BUILD_DIR:-build}
 MOMENTA_WITHOUT_PYTHON=1 scripts/bootstrap.sh
 MOMENTA_TARGET=momenta_cli scripts/build.sh "$build_dir" -DMOMENTA_BUILD_PYTHON=OFF
+echo "momenta: built $build_dir/apps/momenta/momenta; scripts/install.sh puts it on PATH" >&2
 echo "\$ momenta inertia examples/parts/flanged_shaft.yaml $*" >&2
 exec "$build_dir/apps/momenta/momenta" inertia examples/parts/flanged_shaft.yaml "$@"

@@ -430,8 +430,11 @@ void add_balance_command(CLI::App& app) {
                    "A table of reactions from A to B rev/min")
       ->expected(2)
       ->check(finite());
-  command->add_option("--points", options->points, "Rows of the --speed-range table (default 11)")
-      ->check(whole_number_from_one());
+  // A table a person reads (or plots): 10⁵ rows at most, not 10⁸ that exhaust the memory.
+  command
+      ->add_option("--points", options->points,
+                   "Rows of the --speed-range table (default 11, at most 100000)")
+      ->check(whole_number_from_one(100000));
   command
       ->add_option("--alpha", options->alpha,
                    "Angular acceleration while spinning up, rad/s² (default 0)")
@@ -459,7 +462,7 @@ void add_balance_command(CLI::App& app) {
   command
       ->add_option("--gravity", options->gravity,
                    "g for the static bearing loads of a horizontal shaft, m/s² (0: none)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(non_negative_finite())
       ->capture_default_str();
   command->add_flag("--json", options->json, "Print JSON (SI units, angles in degrees)");
   command

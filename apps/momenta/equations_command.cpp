@@ -122,7 +122,18 @@ void print_transfer(const io::ModelFile& file, const symbolic::LinearEquations& 
   }
   const std::string G = l.transfer_function(static_cast<int>(in - inputs.begin()),
                                             static_cast<int>(k - names.begin()), rate, f);
-  if (f == symbolic::Format::latex) {
+  if (o.json) {
+    // The transfer function in text and LaTeX, as the equations' JSON gives each equation.
+    nlohmann::ordered_json j;
+    j["model"] = file.name;
+    j["input"] = input;
+    j["output"] = output;
+    j["text"] = G;
+    j["latex"] = l.transfer_function(static_cast<int>(in - inputs.begin()),
+                                     static_cast<int>(k - names.begin()), rate,
+                                     symbolic::Format::latex);
+    fmt::print("{}\n", json_text(j, ListSpacing::spaced));
+  } else if (f == symbolic::Format::latex) {
     fmt::print("G(s) = {}\n", G);
   } else {
     fmt::print("{}: G(s) = {}(s) / {}(s) = {}\n", file.name, output, input, G);
@@ -242,6 +253,14 @@ json equations_json(const io::ModelFile& file, const symbolic::Equations& e) {
 
 void run(const EquationsOptions& o) {
   const io::ModelFile file = frontend::load_model(o.model);
+  // The instant is the operating point of a linearization; the equations themselves hold at
+  // every instant, so --time or --state elsewhere is a mistake, not something to ignore.
+  const bool linearizes = !o.transfer.empty() || o.form == "linear";
+  if (!linearizes && (o.instant.time || o.instant.state)) {
+    throw CLI::ValidationError(o.instant.time ? "--time" : "--state",
+                               "sets the operating point of --form linear and --transfer; the "
+                               "equations of motion hold at every instant");
+  }
   symbolic::EquationOptions options;
   options.symbols = o.symbols;
   options.all_symbols = o.all_symbols;

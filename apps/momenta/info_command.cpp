@@ -344,7 +344,7 @@ void run(const InfoOptions& o) {
   const io::ModelFile file = frontend::load_model(o.model);
   const json j = describe(o, file);
   if (o.json) {
-    fmt::print("{}\n", j.dump(2));
+    fmt::print("{}\n", j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
   } else {
     print_text(j, file);
   }

@@ -21,6 +21,7 @@
 #include "momenta/dynamics/momentum.hpp"
 #include "momenta/dynamics/relative_kinematics.hpp"
 #include "momenta/frontend/model_loading.hpp"
+#include "momenta/io/yaml_reader.hpp"
 #include "momenta/system/multibody_system.hpp"
 #include "output_format.hpp"
 #include "state_file.hpp"
@@ -60,7 +61,7 @@ std::pair<int, Vec3> parse_point(const model::Model& model, const std::string& t
     double x, y, z;
     char tail;
     if (std::sscanf(coordinates.c_str(), "%lf,%lf,%lf%c", &x, &y, &z, &tail) != 3 ||
-        !Vec3(x, y, z).allFinite()) {
+        !Vec3(x, y, z).allFinite() || Vec3(x, y, z).cwiseAbs().maxCoeff() > io::kLargestNumber) {
       throw CLI::ValidationError(
           "--point", fmt::format("'{}': expected BODY:x,y,z with three finite numbers (m, in "
                                  "the body's frame), e.g. {}:0,0,0.1",

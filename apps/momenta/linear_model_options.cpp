@@ -259,7 +259,7 @@ json precession_roots_json(const analysis::SteadyPrecession& p) {
           {"slow", finite_or_null(p.slow)},
           {"fast", finite_or_null(p.fast)},
           {"minimum_spin", p.minimum_spin},
-          {"gyroscopic", p.gyroscopic},
+          {"gyroscopic", finite_or_null(p.gyroscopic)},
           {"gyroscopic_error", finite_or_null(p.gyroscopic_error)},
           {"slow_nutation", finite_or_null(p.slow_nutation)},
           {"fast_nutation", finite_or_null(p.fast_nutation)}};
@@ -318,6 +318,7 @@ void print_matrix(const char* name, const MatX& M, const std::vector<std::string
 }
 
 std::string number_text(double x, int digits) {
+  if (!std::isfinite(x)) return "undefined";  // a figure that does not exist, never "nan"
   if (digits <= 0) return fmt::format("{}", x + 0.0);  // the shortest text that reads back to x
   return fmt::format("{:.{}g}", x + 0.0, digits);
 }

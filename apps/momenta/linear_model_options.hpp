@@ -80,7 +80,8 @@ void print_matrix(const char* name, const MatX& M, const std::vector<std::string
 /// "−0.5 + 3.1j", parts with `digits` significant digits (0: the shortest that read back exactly).
 std::string complex_text(std::complex<double> z, int digits = 6);
 
-/// x with `digits` significant digits; 0: the shortest text that reads back to the same double.
+/// x with `digits` significant digits; 0: the shortest text that reads back to the same double;
+/// "undefined" where x is not finite (a figure that does not exist).
 std::string number_text(double x, int digits);
 
 }  // namespace momenta::cli

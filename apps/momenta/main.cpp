@@ -4,8 +4,11 @@
 // 2 usage error (unknown option, missing argument).
 
 #include <exception>
+#include <filesystem>
+#include <new>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -35,6 +38,37 @@ bool refuse_unknown_command(const CLI::App& app, int argc, char** argv) {
   return true;
 }
 
+// Bare `momenta`: what each command is for, one line each, in the order a user meets them. The
+// CLI test checks that every command is listed here (and nothing else).
+constexpr std::pair<std::string_view, std::string_view> kCommandSummaries[] = {
+    {"inertia", "mass, centre of mass, inertia tensor and principal axes of a part or mesh"},
+    {"balance", "a rotor's unbalance, bearing forces and correction masses"},
+    {"info", "what a model file holds: freedoms, bodies, joints, forces, signals"},
+    {"simulate", "integrate a model: CSV rows, summary and conservation audit"},
+    {"report", "simulate and write one offline HTML page: 3-D motion, plots, analysis"},
+    {"linearize", "state space A, B, C, D about an operating point"},
+    {"modes", "eigenvalues, natural frequencies, damping ratios, mode shapes"},
+    {"response", "step, impulse or Bode response of one input-output pair"},
+    {"campbell", "a rotor's whirl frequencies against spin speed; critical speeds"},
+    {"steady", "steady precession of a symmetric top"},
+    {"kinematics", "a point's motion seen from a rotating body's frame"},
+    {"diagram", "a body's free-body and kinetic diagrams (SVG)"},
+    {"equations", "equations of motion in symbols, LaTeX or generated code"},
+    {"sweep", "a parameter grid or Monte Carlo study, one CSV row per run"},
+    {"sweep-merge", "join the shards of a sweep into one results file"},
+    {"version", "print momenta's version"},
+};
+
+void print_command_list() {
+  fmt::print("momenta {} — model, simulate and analyse mechanical systems.\n\n", MOMENTA_VERSION);
+  fmt::print("Usage: momenta <command> [options]\n\nCommands:\n");
+  for (const auto& [name, summary] : kCommandSummaries) fmt::print("  {:<12} {}\n", name, summary);
+  fmt::print(
+      "\nRun `momenta <command> --help` for a command's options and an example, e.g.\n"
+      "  momenta simulate examples/pendulum.yaml -o run.csv\n"
+      "The manual: docs/cli.md.\n");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -56,10 +90,14 @@ int main(int argc, char** argv) {
   momenta::cli::add_steady_command(app);
   momenta::cli::add_kinematics_command(app);
   momenta::cli::add_diagram_command(app);
-  momenta::cli::add_equations_command(app);
+  momenta::cli::add_equations_command(app);  // without MOMENTA_WITH_SYMBOLIC: says how to get it
   momenta::cli::add_sweep_command(app);
   momenta::cli::add_sweep_merge_command(app);
 
+  if (argc == 1) {
+    print_command_list();
+    return 0;
+  }
   if (refuse_unknown_command(app, argc, argv)) return 2;
   try {
     app.parse(argc, argv);
@@ -73,6 +111,16 @@ int main(int argc, char** argv) {
     return 130;
   } catch (const momenta::Error& e) {
     fmt::print(stderr, "momenta: error: {}\n", e.what());
+    return 1;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A path the system refuses (a name too long, a folder without permission): its words, not
+    // the library's "filesystem error: status: …".
+    fmt::print(stderr, "momenta: error: {}: {}\n", e.path1().string(), e.code().message());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr,
+               "momenta: error: out of memory: the problem asked for is larger than this "
+               "machine holds (fewer points, samples or a shorter run)\n");
     return 1;
   } catch (const std::exception& e) {
     fmt::print(stderr, "momenta: internal error: {}\n", e.what());

@@ -114,9 +114,13 @@ void run(const ModesOptions& o) {
       entries.push_back(fmt::format("{} {}", m.state_names[static_cast<std::size_t>(e)],
                                     complex_text(mode.shape[e])));
     }
-    fmt::print("  {:>3}  {:>26}  {:>12.6g}  {:>12.6g}  {:>10.4g}  {}\n", k + 1,
+    // ζ is undefined at λ = 0 (left blank, as the help says); −0 prints as 0.
+    const std::string zeta = std::isfinite(mode.damping_ratio)
+                                 ? fmt::format("{:.4g}", mode.damping_ratio + 0.0)
+                                 : std::string();
+    fmt::print("  {:>3}  {:>26}  {:>12.6g}  {:>12.6g}  {:>10}  {}\n", k + 1,
                complex_text(mode.eigenvalue), mode.natural_frequency, hz(mode.natural_frequency),
-               mode.damping_ratio, fmt::join(entries, "; "));
+               zeta, fmt::join(entries, "; "));
   }
   if (normal) {
     fmt::print("\nundamped normal modes (K φ = ω² M φ):\n");

@@ -10,6 +10,9 @@
 
 #include <fmt/format.h>
 
+#include "momenta/common/error.hpp"
+#include "momenta/io/yaml_reader.hpp"
+
 namespace momenta::cli {
 namespace {
 
@@ -24,13 +27,25 @@ std::optional<double> parse_double(const std::string& text) {
   return value;
 }
 
+// Within ±io::kLargestNumber, as every number of an input file: products of three such numbers
+// (m ω² r, the parallel-axis m d²) stay finite, and 1e308 typed by mistake is refused at the
+// option, not printed back as inf or nan.
+bool within_bounds(double value) { return std::abs(value) <= io::kLargestNumber; }
+
+std::string beyond_bounds(const std::string& text) {
+  return fmt::format("must be within ±{:g} (far past anything physical), got {}", io::kLargestNumber,
+                     text);
+}
+
 }  // namespace
 
 CLI::Validator positive_finite() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
         const auto value = parse_double(text);
-        if (value && std::isfinite(*value) && *value > 0) return {};
+        if (value && std::isfinite(*value) && *value > 0) {
+          return within_bounds(*value) ? std::string() : beyond_bounds(text);
+        }
         return fmt::format("must be a positive finite number, got {}", text);
       },
       "POSITIVE");
@@ -40,31 +55,44 @@ CLI::Validator non_negative_finite() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
         const auto value = parse_double(text);
-        if (value && std::isfinite(*value) && *value >= 0) return {};
+        if (value && std::isfinite(*value) && *value >= 0) {
+          return within_bounds(*value) ? std::string() : beyond_bounds(text);
+        }
         return fmt::format("must be a finite number, zero or more, got {}", text);
       },
       "NONNEGATIVE");
+}
+
+CLI::Validator finite_within(double lo, double hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& text) -> std::string {
+        const auto value = parse_double(text);
+        if (value && *value >= lo && *value <= hi) return {};
+        return fmt::format("must be a number from {} to {}, got {}", lo, hi, text);
+      },
+      "NUMBER");
 }
 
 CLI::Validator finite() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
         const auto value = parse_double(text);
-        if (value && std::isfinite(*value)) return {};
+        if (value && std::isfinite(*value)) {
+          return within_bounds(*value) ? std::string() : beyond_bounds(text);
+        }
         return fmt::format("must be a finite number, got {}", text);
       },
       "NUMBER");
 }
 
-CLI::Validator whole_number_from_one() {
+CLI::Validator whole_number_from_one(long long most) {
   return CLI::Validator(
-      [](std::string& text) -> std::string {
+      [most](std::string& text) -> std::string {
         long long value = 0;
         const char* end = text.data() + text.size();
         const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-        if (ec == std::errc() && ptr == end && value >= 1) return {};
-        return fmt::format("must be a whole number from 1 to {}, got {}",
-                           std::numeric_limits<long long>::max(), text);
+        if (ec == std::errc() && ptr == end && value >= 1 && value <= most) return {};
+        return fmt::format("must be a whole number from 1 to {}, got {}", most, text);
       },
       "N");
 }
@@ -79,6 +107,21 @@ CLI::Validator not_a_folder() {
         return {};
       },
       "FILE");
+}
+
+void check_input_file(const std::string& path, std::string_view what) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status)) throw FileError(fmt::format("{}: file not found", path));
+  if (std::filesystem::is_directory(status)) {
+    throw FileError(fmt::format("{}: is a folder, not {}", path, what));
+  }
+}
+
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  if (std::filesystem::equivalent(a, b, ec)) return true;  // both exist: the same inode
+  return std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec);
 }
 
 }  // namespace momenta::cli

@@ -14,6 +14,10 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
+// JSON text of a value. A string that is not UTF-8 (a file name in another encoding, echoed back)
+// has its bad bytes written as U+FFFD: the JSON stays valid, where nlohmann would throw.
+std::string dumped(const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace); }
+
 // Writes `j` at `indent` into `out`; objects and nested lists open one item a line.
 void write_json(std::string& out, const json& j, int indent, ListSpacing lists) {
   const auto flat = [](const json& a) {
@@ -25,7 +29,7 @@ void write_json(std::string& out, const json& j, int indent, ListSpacing lists) 
     out += "{\n";
     std::size_t i = 0;
     for (const auto& [key, value] : j.items()) {
-      out += pad + json(key).dump() + ": ";
+      out += pad + dumped(json(key)) + ": ";
       write_json(out, value, indent + 2, lists);
       out += ++i < j.size() ? ",\n" : "\n";
     }
@@ -39,11 +43,11 @@ void write_json(std::string& out, const json& j, int indent, ListSpacing lists) 
     }
     out += std::string(static_cast<std::size_t>(indent), ' ') + "]";
   } else if (lists == ListSpacing::compact) {
-    out += j.dump();
+    out += dumped(j);
   } else {
     // Numbers, strings and lists of them, compact but for ", " between items (a comma inside a
     // string stays as it is).
-    const std::string text = j.dump();
+    const std::string text = dumped(j);
     bool in_string = false;
     for (std::size_t k = 0; k < text.size(); ++k) {
       const char c = text[k];

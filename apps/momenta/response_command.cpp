@@ -59,6 +59,19 @@ json vector_json(const VecX& x) { return std::vector<double>(x.data(), x.data() 
 // A figure for JSON: NaN (undefined) as null.
 json figure(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 
+// Samples a person or a plot will read: every one finite, or the command refuses, naming the
+// first that is not (an unstable pole's e^(λt) past double precision, a step below resolution).
+void check_samples(const char* what, const VecX& at, const char* unit, const MatX& values) {
+  for (Eigen::Index k = 0; k < at.size(); ++k) {
+    if (std::isfinite(at[k]) && values.row(k).allFinite()) continue;
+    throw NumericalError(fmt::format(
+        "the {} is not finite at {:.6g} {}{}: nothing is printed. An unstable or integrating "
+        "model's response grows without bound: shorten --duration, or give fewer --points "
+        "over a range that a double holds",
+        what, at[k], unit, k > 0 ? fmt::format(" (after {:.6g} {})", at[k - 1], unit) : ""));
+  }
+}
+
 json step_info_json(const analysis::StepInfo& info) {
   return {{"final_value", figure(info.final_value)},
           {"rise_time", figure(info.rise_time)},
@@ -88,6 +101,7 @@ void run(const ResponseOptions& o) {
     const analysis::TimeGrid grid{o.duration.value_or(0.0), o.points.value_or(0)};
     const analysis::TimeResponse r =
         o.step ? analysis::step_response(sys, 0, grid) : analysis::impulse_response(sys, 0, grid);
+    check_samples(o.step ? "step response" : "impulse response", r.time, "s", r.outputs);
     csv = fmt::format("time,{}\n", o.output);
     for (Eigen::Index k = 0; k < r.time.size(); ++k)
       csv += fmt::format("{:.17g},{:.17g}\n", r.time[k], r.outputs(k, 0));
@@ -95,12 +109,16 @@ void run(const ResponseOptions& o) {
     if (o.step) {
       // The figures of the analytic response, refined from these samples (exact).
       info = analysis::step_info(sys, 0, 0, grid);
+      // A figure with its unit, or "undefined" alone (an integrating model has no final value).
+      const auto in = [&](double x, const char* unit) {
+        return std::isfinite(x) ? fmt::format("{}{}", number_text(x, o.digits), unit)
+                                : std::string("undefined");
+      };
       summary += fmt::format(
-          "unit step: final value {}, rise time {} s, settling time (2 %) {} s, "
-          "overshoot {} %, peak {} at {} s\n",
-          number_text(info->final_value, o.digits), number_text(info->rise_time, o.digits),
-          number_text(info->settling_time, o.digits), number_text(info->overshoot, o.digits),
-          number_text(info->peak, o.digits), number_text(info->peak_time, o.digits));
+          "unit step: final value {}, rise time {}, settling time (2 %) {}, overshoot {}, peak {} "
+          "at {}\n",
+          in(info->final_value, ""), in(info->rise_time, " s"), in(info->settling_time, " s"),
+          in(info->overshoot, " %"), in(info->peak, ""), in(info->peak_time, " s"));
     } else {
       summary += fmt::format("unit impulse: {} samples over {:.6g} s\n", r.time.size(),
                              r.time[r.time.size() - 1]);
@@ -108,6 +126,9 @@ void run(const ResponseOptions& o) {
   } else {
     const analysis::FrequencyResponse f =
         analysis::frequency_response(sys, 0, 0, o.bode[0], o.bode[1], o.points.value_or(200));
+    MatX bode(f.frequency.size(), 3);
+    bode << f.magnitude, f.magnitude_db, f.phase_deg;
+    check_samples("frequency response", f.frequency, "rad/s", bode);
     csv = "frequency_rad_s,frequency_hz,magnitude,magnitude_db,phase_deg\n";
     Eigen::Index peak = 0;
     f.magnitude.maxCoeff(&peak);

@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <system_error>
 
 #include <fmt/format.h>
 
@@ -29,6 +30,7 @@
 #include "momenta/simulate/run_request.hpp"
 #include "momenta/simulate/simulation.hpp"
 #include "option_checks.hpp"
+#include "row_preview.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -87,11 +89,19 @@ simulate::SimulationOptions merge(const SimulateOptions& o, const model::Simulat
   simulate::ResolvedRun resolved;
   try {
     resolved = simulate::resolve_run(request, file);
-  } catch (const InvalidArgument&) {
+  } catch (const InvalidArgument& e) {
     // A tolerance given with a fixed-step integrator is a usage error of the option.
     const model::IntegratorInfo* named =
         o.integrator ? model::find_integrator(*o.integrator) : nullptr;
-    if (!(o.rtol || o.atol) || !named || named->adaptive) throw;
+    if (!(o.rtol || o.atol)) throw;
+    if (!named || named->adaptive) {
+      const std::string_view what = e.what();
+      if (what.find("rtol") == what.npos && what.find("atol") == what.npos) throw;
+      // Tolerances out of reach: say which options gave them.
+      throw InvalidArgument(fmt::format("{}{}{}: {}", o.rtol ? fmt::format("--rtol {}", *o.rtol) : "",
+                                        o.rtol && o.atol ? ", " : "",
+                                        o.atol ? fmt::format("--atol {}", *o.atol) : "", e.what()));
+    }
     throw CLI::ValidationError(o.rtol ? "--rtol" : "--atol",
                                fmt::format("applies to adaptive integrators (dopri5); '{}' takes "
                                            "a fixed step, --dt",
@@ -131,29 +141,50 @@ void write_run_report(const SimulateOptions& o, const io::ModelFile& file,
   fmt::print(stderr, "momenta: wrote the report {}\n", *o.report);
 }
 
+// Refuses, before anything runs or is written, outputs that would overwrite the user's files or
+// each other: an existing file without --force, or the CSV and the report at one path (--force
+// would let the second replace the first).
+void check_outputs(const SimulateOptions& o) {
+  const auto refuse_existing = [&](const std::string& path, const char* what) {
+    if (std::filesystem::exists(path) && !o.force) {
+      throw FileError(fmt::format("{}: the {} file exists; pass --force to overwrite it", path, what));
+    }
+  };
+  if (o.csv && o.output) refuse_existing(*o.output, "output");
+  if (o.report) refuse_existing(*o.report, "report");
+  if (o.csv && o.output && o.report) {
+    std::error_code ec;
+    const bool same = std::filesystem::weakly_canonical(*o.output, ec) ==
+                      std::filesystem::weakly_canonical(*o.report, ec);
+    if (same) {
+      throw InvalidArgument(fmt::format(
+          "--output and --report both name {}: one would overwrite the other; give two files",
+          *o.report));
+    }
+  }
+}
+
 void run(const SimulateOptions& o) {
   const io::ModelFile file = frontend::load_model(o.model);
   simulate::SimulationOptions options = merge(o, file.simulation);
-  // The report is refused before the run, not after it, when it would overwrite a file.
-  if (o.report && std::filesystem::exists(*o.report) && !o.force) {
-    throw FileError(
-        fmt::format("{}: the report file exists; pass --force to overwrite it", *o.report));
-  }
+  check_outputs(o);
+  // The report's linear analysis names (--inputs, --outputs) are checked now, not after the run.
+  if (o.report) report::check_linear_settings(file, o.linear);
   const bool show_progress = !o.quiet && isatty(STDERR_FILENO);
   // SIGINT and SIGTERM end a run on a whole row (the CSV stays readable).
   options.stop = &stop_on_signals();
   if (show_progress) options.progress = progress_line(options.duration);
-  // Built before the output is opened: a bad option or output leaves no empty file behind.
+  // Built before the output is opened: a bad option, or a run refused up front (a step count
+  // past the limit), leaves no file behind.
   simulate::Simulation simulation(file.model, file.outputs, options);
 
+  // Without -o, a terminal gets a short table; a pipe or a file gets every row as CSV.
+  const bool preview_only = o.csv && !o.output && isatty(STDOUT_FILENO);
   std::unique_ptr<simulate::CsvWriter> writer;
-  if (!o.csv) {
-    // `momenta report`: no CSV.
+  RowPreview preview(3, 3);
+  if (!o.csv || preview_only) {
+    // `momenta report`: no CSV; a terminal: the preview.
   } else if (o.output) {
-    if (std::filesystem::exists(*o.output) && !o.force) {
-      throw FileError(
-          fmt::format("{}: the output file exists; pass --force to overwrite it", *o.output));
-    }
     writer = std::make_unique<simulate::CsvWriter>(std::filesystem::path(*o.output), o.force);
   } else {
     writer = std::make_unique<simulate::CsvWriter>(stdout);
@@ -164,11 +195,12 @@ void run(const SimulateOptions& o) {
   };
   simulate::SimulationSummary summary;
   simulate::TableSink table;
+  simulate::RowSink& rows = preview_only ? static_cast<simulate::RowSink&>(preview)
+                            : writer     ? static_cast<simulate::RowSink&>(*writer)
+                                         : static_cast<simulate::RowSink&>(table);
   std::unique_ptr<TeeSink> both;
-  if (writer && o.report) both = std::make_unique<TeeSink>(*writer, table);
-  simulate::RowSink& sink = !writer ? static_cast<simulate::RowSink&>(table)
-                            : both  ? static_cast<simulate::RowSink&>(*both)
-                                    : *writer;
+  if (o.report && &rows != &table) both = std::make_unique<TeeSink>(rows, table);
+  simulate::RowSink& sink = both ? static_cast<simulate::RowSink&>(*both) : rows;
   try {
     summary = simulation.run(sink);
   } catch (const NumericalError& e) {
@@ -189,9 +221,19 @@ void run(const SimulateOptions& o) {
     fmt::print(stderr, "{}", simulate::format_summary(summary));
     return;
   }
-  fmt::print(stderr, "momenta: simulated {} ({}) for {} s; {} rows, {} columns to {}\n", file.name,
-             o.model, summary.t_end, summary.rows, simulation.column_names().size(),
-             o.output ? *o.output : std::string("standard output"));
+  if (preview_only) {
+    fmt::print("{}", preview.table(7));
+    fmt::print(
+        "{} rows x {} columns in all; to keep every row, write them to a file:\n"
+        "  momenta simulate {} -o run.csv\n",
+        preview.rows(), preview.columns(), o.model);
+    fmt::print(stderr, "momenta: simulated {} ({}) for {} s\n", file.name, o.model,
+               summary.t_end);
+  } else {
+    fmt::print(stderr, "momenta: simulated {} ({}) for {} s; {} rows, {} columns to {}\n",
+               file.name, o.model, summary.t_end, summary.rows, simulation.column_names().size(),
+               o.output ? *o.output : std::string("standard output"));
+  }
   fmt::print(stderr, "{}", simulate::format_summary(summary));
 }
 
@@ -217,7 +259,11 @@ void add_run_options(CLI::App* command, SimulateOptions& o) {
       "--integrator", o.integrator,
       "rk4 (default), symplectic_euler, dopri5, or a rigid-body method: splitting, splitting4, "
       "lie_group, exact (a free body or a heavy top only)");
-  command->add_option("--every", o.every, "Record every N-th step (default 1)")
+  command
+      ->add_option("--every", o.every,
+                   fmt::format("Record every N-th step (default 1, or as many as keep about {:.0f} "
+                               "rows of a longer fixed-step run; the last step is always recorded)",
+                               simulate::kDefaultRows))
       ->check(whole_number_from_one());
   command->add_flag("--quiet,-q", o.quiet,
                     "No progress line on the terminal (it is shown only when stderr is one)");
@@ -267,8 +313,8 @@ void add_simulate_command(CLI::App& app) {
   add_run_options(command, *options);
   command
       ->add_option("--output,-o", options->output,
-                   "CSV file to write (default: standard output); never overwritten without "
-                   "--force")
+                   "CSV file to write (default: standard output — every row when it is piped or "
+                   "redirected, a short table on a terminal); never overwritten without --force")
       ->check(not_a_folder());
   command->add_flag("--force", options->force,
                     "Overwrite the --output and --report files if they exist");

@@ -1,12 +1,19 @@
 #include "state_file.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string_view>
+#include <system_error>
+#include <utility>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "momenta/common/error.hpp"
+#include "momenta/io/state_file.hpp"
 #include "momenta/simulate/run_request.hpp"
 #include "momenta/simulate/state_at.hpp"
 #include "option_checks.hpp"
@@ -16,49 +23,11 @@ namespace momenta::cli {
 using json = nlohmann::ordered_json;
 
 analysis::OperatingPoint read_state_file(const std::string& path, const model::Model& model) {
-  std::ifstream in(path);
-  if (!in) throw FileError(fmt::format("{}: cannot open the state file", path));
-  json j;
-  try {
-    j = json::parse(in);
-  } catch (const json::exception& e) {
-    // Malformed text, or a number beyond double precision ("t": 1e400).
-    throw InvalidArgument(fmt::format("{}: not a valid state file: {}", path, e.what()));
-  }
-  if (!j.is_object()) {
-    throw InvalidArgument(
-        fmt::format("{}: expected an object {{\"q\": [...], \"v\": [...]}}", path));
-  }
-  for (const auto& [key, value] : j.items()) {
-    if (key != "q" && key != "v" && key != "t") {
-      throw InvalidArgument(
-          fmt::format("{}: unknown key '{}' (expected q, v and optionally t)", path, key));
-    }
-  }
-  const auto vector = [&](const char* key, int size) {
-    if (!j.contains(key)) {
-      throw InvalidArgument(fmt::format("{}: missing '{}' ({} numbers)", path, key, size));
-    }
-    const json& a = j.at(key);
-    if (!a.is_array() || static_cast<int>(a.size()) != size ||
-        !std::all_of(a.begin(), a.end(), [](const json& x) { return x.is_number(); })) {
-      throw InvalidArgument(
-          fmt::format("{}: '{}' must be a list of {} numbers (the model's {}); "
-                      "got {}",
-                      path, key, size, key[0] == 'q' ? "nq" : "nv", a.dump()));
-    }
-    VecX x(size);
-    for (int i = 0; i < size; ++i) x[i] = a.at(static_cast<std::size_t>(i)).get<double>();
-    return x;
-  };
+  const io::StateFile state = io::read_state_file(path, model.nq(), model.nv());
   analysis::OperatingPoint p;
-  p.q = vector("q", model.nq());
-  p.v = vector("v", model.nv());
-  if (j.contains("t")) {
-    if (!j.at("t").is_number())
-      throw InvalidArgument(fmt::format("{}: 't' must be a number", path));
-    p.t = j.at("t").get<double>();
-  }
+  p.t = state.t;
+  p.q = state.q;
+  p.v = state.v;
   return p;
 }
 

@@ -77,9 +77,17 @@ void print_text(const io::ModelFile& file, const analysis::SteadyPrecession& r) 
   };
   root("slow", r.slow, r.slow_nutation);
   root("fast", r.fast, r.fast_nutation);
-  fmt::print(
-      "  gyroscopic approximation m g l/(I₃ ω₃) = {:.6g} rad/s ({:+.3g} % of the slow root)\n",
-      r.gyroscopic, 100 * r.gyroscopic_error);
+  // Undefined without spin (a conical pendulum), and without a slow root to compare with.
+  if (!std::isfinite(r.gyroscopic)) {
+    fmt::print("  gyroscopic approximation m g l/(I₃ ω₃): none without spin (ω₃ = 0)\n");
+  } else if (!std::isfinite(r.gyroscopic_error)) {
+    fmt::print("  gyroscopic approximation m g l/(I₃ ω₃) = {:.6g} rad/s (no slow root to compare)\n",
+               r.gyroscopic);
+  } else {
+    fmt::print(
+        "  gyroscopic approximation m g l/(I₃ ω₃) = {:.6g} rad/s ({:+.3g} % of the slow root)\n",
+        r.gyroscopic, 100 * r.gyroscopic_error);
+  }
   if (r.minimum_spin > 0.0) {
     fmt::print("  steady precession at this tilt needs ω₃ ≥ 2√(I₁ m g l cos θ)/I₃ = {:.6g} rad/s\n",
                r.minimum_spin);
@@ -135,7 +143,7 @@ void add_steady_command(CLI::App& app) {
       ->required();
   command->add_option("--tilt", options->tilt_deg, "Tilt of the axis from the upward vertical, °")
       ->required()
-      ->check(CLI::Range(0.0, 180.0));
+      ->check(finite_within(0.0, 180.0));
   command->add_option("--spin", options->spin, "Spin ω₃ about the axis, rad/s")
       ->required()
       ->check(finite());

@@ -3,7 +3,12 @@
 
 #include <unistd.h>
 
+#include <charconv>
 #include <chrono>
+#include <utility>
+#include <cmath>
+#include <filesystem>
+#include <system_error>
 #include <cstdlib>
 #include <optional>
 #include <string>
@@ -33,7 +38,7 @@ struct SweepOptions {
   bool force = false;
   bool no_timing = false;
   bool quiet = false;
-  std::string shard;   // "k/N"
+  std::optional<std::string> shard;  // "k/N"
   std::string report;  // the HTML page, when asked
 };
 
@@ -42,18 +47,62 @@ struct Shard {
   long count = 1;
 };
 
-Shard parse_shard(const std::string& text) {
-  Shard s;
-  long k = 0;
-  char slash = 0;
-  char extra = 0;
-  if (std::sscanf(text.c_str(), "%ld%c%ld%c", &k, &slash, &s.count, &extra) != 3 || slash != '/' ||
-      s.count < 1 || k < 1 || k > s.count) {
+// "k/N" with 1 ≤ k ≤ N ≤ the number of runs (a shard with no run would be a mistake).
+Shard parse_shard(const std::string& text, long run_count) {
+  const auto whole = [](std::string_view part, long& value) {
+    const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
+    return ec == std::errc() && end == part.data() + part.size();
+  };
+  const auto slash = text.find('/');
+  long k = 0, n = 0;
+  const std::string_view all(text);
+  if (slash == std::string::npos || !whole(all.substr(0, slash), k) ||
+      !whole(all.substr(slash + 1), n) || n < 1 || k < 1 || k > n) {
     throw CLI::ValidationError("--shard",
                                fmt::format("'{}': give k/N with 1 ≤ k ≤ N (--shard 2/4)", text));
   }
-  s.index = k - 1;
-  return s;
+  if (n > run_count) {
+    throw CLI::ValidationError(
+        "--shard", fmt::format("'{}': {} shards of a sweep of {} runs would leave shards with no "
+                               "run; N is at most {}",
+                               text, n, run_count, run_count));
+  }
+  return Shard{k - 1, n};
+}
+
+// Outputs that would overwrite an input or each other are refused before anything runs.
+void check_sweep_outputs(const SweepOptions& o, const sweep::SweepRunner& runner) {
+  const std::string model = runner.spec().model.string();
+  for (const auto& [output, option] :
+       {std::pair{o.output, "--output"}, std::pair{o.report, "--report"}}) {
+    if (output.empty()) continue;
+    for (const std::string& input : {o.sweep, model}) {
+      if (same_file(output, input)) {
+        throw InvalidArgument(fmt::format(
+            "{} {} is the sweep's own input {}: it would be overwritten; give another file",
+            option, output, input));
+      }
+    }
+  }
+  if (!o.report.empty() && same_file(o.output, o.report)) {
+    throw InvalidArgument(fmt::format(
+        "--output and --report both name {}: the page would replace the results; give two files",
+        o.output));
+  }
+}
+
+// Threads beyond this many per core only cost memory and switching (and 10⁵ of them fail to
+// start at all): refused with the machine's count.
+int check_thread_count(int asked) {
+  const int cores = sweep::default_thread_count();
+  const int most = std::max(256, 16 * cores);
+  if (asked > most) {
+    throw CLI::ValidationError(
+        "--threads", fmt::format("{} threads on {} cores: at most {} (the default, {}, uses "
+                                 "every core)",
+                                 asked, cores, most, cores));
+  }
+  return asked;
 }
 
 // The runs this process is responsible for: every run, or those of its shard (run % N == k − 1).
@@ -63,17 +112,44 @@ std::vector<long> runs_of(long run_count, const Shard& shard) {
   return runs;
 }
 
-// With --resume: the runs the file already holds must be the first of the list.
-std::size_t finished_prefix(const SweepOptions& o, const std::vector<std::string>& header,
-                            const std::vector<long>& runs) {
+// With --resume: the file must be this sweep's, of this model: written after the sweep and model
+// files were last changed (else the rows would mix two models), its runs the first of the list,
+// each with the parameter values this sweep gives it (else they came from another range or
+// design with the same columns).
+std::size_t finished_prefix(const SweepOptions& o, const sweep::SweepRunner& runner,
+                            const std::vector<std::string>& header, const std::vector<long>& runs) {
+  for (const std::filesystem::path& input : {std::filesystem::path(o.sweep), runner.spec().model}) {
+    std::error_code ec;
+    if (std::filesystem::last_write_time(input, ec) > std::filesystem::last_write_time(o.output)) {
+      throw FileError(fmt::format(
+          "{}: {} changed after these results were written; resuming would mix two versions of "
+          "it in one file. Start over with --force, or write to another file",
+          o.output, input.string()));
+    }
+  }
   const std::vector<long> finished = sweep::read_finished_runs(o.output, header);
+  const sweep::ResultsColumns written =
+      sweep::read_result_columns(o.output, runner.parameter_columns());
+  for (std::size_t i = 0; i < finished.size() && i < runs.size(); ++i) {
+    const std::vector<double> expected = runner.parameter_values(runs[i]);
+    for (std::size_t p = 0; p < expected.size(); ++p) {
+      const double value = written.values[p][i];
+      if (value == expected[p] || (std::isnan(value) && std::isnan(expected[p]))) continue;
+      throw FileError(fmt::format(
+          "{}: row {} holds run {} with {} = {}, but this sweep gives run {} {} = {}: the file "
+          "was written by another sweep (another range or design). Start over with --force, or "
+          "write to another file",
+          o.output, i + 2, finished[i], runner.parameter_columns()[p], value, runs[i],
+          runner.parameter_columns()[p], expected[p]));
+    }
+  }
   for (std::size_t i = 0; i < finished.size(); ++i) {
     if (i >= runs.size() || finished[i] != runs[i]) {
       throw FileError(fmt::format(
           "{}: row {} holds run {}, not run {} that this sweep{} writes there: the file was "
           "written by another sweep or shard",
           o.output, i + 2, finished[i], i < runs.size() ? runs[i] : -1,
-          o.shard.empty() ? "" : " shard"));
+          o.shard ? " shard" : ""));
     }
   }
   return finished.size();
@@ -160,11 +236,13 @@ void run_sweep(const SweepOptions& o) {
   if (sweep::started_by_mpi_launcher() && sweep::mpi_available()) world.emplace();
   const bool root = !world || world->rank() == 0;
   try {
+    check_input_file(o.sweep, "a sweep file");
     const sweep::SweepRunner runner(io::read_sweep_file(o.sweep));
-    const Shard shard = o.shard.empty() ? Shard{} : parse_shard(o.shard);
+    check_sweep_outputs(o, runner);
+    const Shard shard = o.shard ? parse_shard(*o.shard, runner.run_count()) : Shard{};
     const std::vector<long> all = runs_of(runner.run_count(), shard);
     const std::vector<std::string> header = sweep::results_header(runner, !o.no_timing);
-    const int threads = threads_per_process(o.threads);
+    const int threads = threads_per_process(check_thread_count(o.threads));
 
     // Rank 0 (or the one process) opens the outputs; the others work for it.
     std::unique_ptr<sweep::ResultsWriter> writer;
@@ -178,7 +256,7 @@ void run_sweep(const SweepOptions& o) {
               fmt::format("{}: the report file exists; pass --force to overwrite it", o.report));
         }
         const bool resuming = o.resume && std::filesystem::exists(o.output);
-        if (resuming) skipped = finished_prefix(o, header, all);
+        if (resuming) skipped = finished_prefix(o, runner, header, all);
         writer = std::make_unique<sweep::ResultsWriter>(o.output, header, o.force, resuming);
         if (const auto& path = runner.spec().trajectories) {
           std::filesystem::path where = *path;
@@ -247,9 +325,7 @@ void add_sweep_command(CLI::App& app) {
       "Run a sweep or Monte Carlo study (docs/sweeps.md): one row per run in a CSV file.\n"
       "Example: momenta sweep examples/sweeps/quarter_car_ride.yaml -o ride.csv\n"
       "Across machines: mpirun -n 8 momenta sweep SWEEP.yaml -o results.csv");
-  command->add_option("sweep", o->sweep, "The sweep file (YAML)")
-      ->required()
-      ->check(CLI::ExistingFile);
+  command->add_option("sweep", o->sweep, "The sweep file (YAML)")->required();
   command->add_option("-o,--output", o->output, "The results file (CSV)")
       ->required()
       ->check(not_a_folder());
@@ -293,18 +369,24 @@ void add_sweep_merge_command(CLI::App& app) {
       "sweep-merge",
       "Join the results of a sweep's shards into one file, in run order, checking that every run "
       "is there once.\nExample: momenta sweep-merge SWEEP.yaml part1.csv part2.csv -o results.csv");
-  command->add_option("sweep", o->sweep, "The sweep file the shards ran")
-      ->required()
-      ->check(CLI::ExistingFile);
-  command->add_option("parts", o->parts, "The shards' results files")
-      ->required()
-      ->check(CLI::ExistingFile);
+  command->add_option("sweep", o->sweep, "The sweep file the shards ran")->required();
+  command->add_option("parts", o->parts, "The shards' results files")->required();
   command->add_option("-o,--output", o->output, "The merged results file")
       ->required()
       ->check(not_a_folder());
   command->add_flag("--force", o->force, "Replace an existing output file");
   command->add_flag("--no-timing", o->no_timing, "The shards were written with --no-timing");
   command->callback([o] {
+    check_input_file(o->sweep, "a sweep file");
+    for (const std::string& part : o->parts) {
+      check_input_file(part, "a results file");
+      if (same_file(part, o->output)) {
+        throw InvalidArgument(fmt::format(
+            "--output {} is one of the shards being merged: it would be overwritten; give "
+            "another file",
+            o->output));
+      }
+    }
     const sweep::SweepRunner runner(io::read_sweep_file(o->sweep));
     const std::vector<std::filesystem::path> parts(o->parts.begin(), o->parts.end());
     sweep::merge_results(parts, sweep::results_header(runner, !o->no_timing), runner.run_count(),

@@ -51,7 +51,6 @@ from ._core import (
     Workspace,
     bode,
     campbell_diagram,
-    equations,
     find_equilibrium,
     find_steady_precession,
     free_body_diagram,
@@ -68,13 +67,30 @@ from ._core import (
     step_info,
     step_response,
     sweep,
-    symbolic_transfer_function,
     transfer_function,
     undamped_modes,
 )
 from . import inertia
 
 __version__ = _core.__version__
+
+#: Whether this build has the equations in symbols (MOMENTA_WITH_SYMBOLIC; they link GiNaC and
+#: CLN, GPL-2.0-or-later: THIRD-PARTY-NOTICES.md).
+with_symbolic = _core.with_symbolic
+
+if with_symbolic:
+    from ._core import equations, symbolic_transfer_function
+else:
+    def _without_symbolic(name):
+        def refuse(*args, **kwargs):
+            raise Error(f"{name}() needs the equations in symbols, which this momenta was built "
+                        "without (-DMOMENTA_WITH_SYMBOLIC=OFF: GiNaC, GPL-2.0-or-later, left out); "
+                        "rebuild with -DMOMENTA_WITH_SYMBOLIC=ON")
+        refuse.__name__ = name
+        return refuse
+
+    equations = _without_symbolic("equations")
+    symbolic_transfer_function = _without_symbolic("symbolic_transfer_function")
 
 
 def _to_pandas(self):

@@ -3,6 +3,8 @@
 from . import inertia as inertia
 
 __version__: str
+#: Whether equations() and symbolic_transfer_function() are built in (MOMENTA_WITH_SYMBOLIC).
+with_symbolic: bool
 
 import os
 from typing import Any, Dict, List, Optional, Tuple, overload

@@ -13,8 +13,10 @@
 #include "momenta/report/free_body_svg.hpp"
 #include "momenta/simulate/run_request.hpp"
 #include "momenta/simulate/state_at.hpp"
+#if MOMENTA_WITH_SYMBOLIC
 #include "momenta/symbolic/equations.hpp"
 #include "momenta/symbolic/linear_equations.hpp"
+#endif
 #include "momenta/system/multibody_system.hpp"
 
 namespace momenta::python {
@@ -55,6 +57,7 @@ py::dict load_dict(const model::Model& model, const analysis::Load& load) {
   return d;
 }
 
+#if MOMENTA_WITH_SYMBOLIC
 symbolic::Format format_arg(const std::string& format) {
   if (format == "text") return symbolic::Format::text;
   if (format == "latex") return symbolic::Format::latex;
@@ -70,6 +73,7 @@ symbolic::EquationOptions equation_options(std::vector<std::string> symbols, boo
   o.principal_axes = principal_axes;
   return o;
 }
+#endif  // MOMENTA_WITH_SYMBOLIC
 
 }  // namespace
 
@@ -147,6 +151,7 @@ reaches at t), split into relative, frame-origin, Euler, centripetal
 and Coriolis terms, every vector in the frame's axes, as `momenta kinematics` gives them
 (docs/kinematics.md).)doc");
 
+#if MOMENTA_WITH_SYMBOLIC
   m.def(
       "equations",
       [](const ModelHandle& h, std::vector<std::string> symbols, bool all_symbols,
@@ -213,6 +218,7 @@ its principal axes); 'text' or 'latex'. `symbols` names the parameters to keep a
 equations linearized in symbols about (t, q, v) (without q and v, the state the model's run
 reaches at t), as `momenta equations --transfer` prints it:
 'F_engine/(m_car*s+c_road)' for the cruise control's u to road rate (docs/equations.md).)doc");
+#endif  // MOMENTA_WITH_SYMBOLIC
 }
 
 }  // namespace momenta::python

@@ -210,6 +210,12 @@ double characteristic_length(const model::Model& model) {
   return L > 0.0 && std::isfinite(L) ? L : 1.0;
 }
 
+void check_linearization_names(const model::Model& model, const LinearizationOptions& options) {
+  detail::resolve_inputs(model, options.inputs);
+  std::vector<model::OutputSpec> specs;
+  detail::resolve_outputs(model, linear_state_names(model), 0, options, specs);
+}
+
 std::vector<std::string> linear_state_names(const model::Model& model) {
   std::vector<std::string> position, velocity;
   for (const model::Joint& j : model.joints()) {

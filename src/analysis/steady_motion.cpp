@@ -319,8 +319,13 @@ void precession_roots(SteadyPrecession& r) {
       r.fast = q / (2.0 * a);
     }
   }
-  r.gyroscopic = r.mgl / p;
-  r.gyroscopic_error = std::isfinite(r.slow) ? (r.gyroscopic - r.slow) / r.slow : kNaN;
+  // Without spin there is no gyroscopic approximation (a conical pendulum); without gravity both
+  // it and the slow root are 0, and it is exact.
+  r.gyroscopic = p != 0.0 ? r.mgl / p : kNaN;
+  r.gyroscopic_error = !std::isfinite(r.slow) || !std::isfinite(r.gyroscopic) ? kNaN
+                       : r.slow != 0.0 ? (r.gyroscopic - r.slow) / r.slow
+                       : r.gyroscopic == 0.0 ? 0.0
+                                             : kNaN;
   const auto nutation = [&](double rate) {
     if (!std::isfinite(rate)) return kNaN;
     const double t1 = p - 2.0 * r.I1 * rate * c, t2 = r.I1 * rate * s;

@@ -83,10 +83,15 @@ void check_finite(const SecondOrderSystem& system, const Integrator& integrator,
 
 }  // namespace
 
-RunSummary run(SecondOrderSystem& system, Integrator& integrator, State& state,
-               const RunOptions& options, const std::function<void(const State&)>& observer) {
+void check_run(const SecondOrderSystem& system, const Integrator& integrator, const State& state,
+               const RunOptions& options) {
   check_options(state, options);
   check_step_budget(system, integrator, state, options);
+}
+
+RunSummary run(SecondOrderSystem& system, Integrator& integrator, State& state,
+               const RunOptions& options, const std::function<void(const State&)>& observer) {
+  check_run(system, integrator, state, options);
   const auto start = std::chrono::steady_clock::now();
   integrator.initialize(system, state);
   observer(state);

@@ -137,9 +137,13 @@ void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& pa
 
 inertia::TriangleMesh read_mesh_file(const std::filesystem::path& path, double scale) {
   const std::string name = path.string();
-  if (!std::isfinite(scale) || !(scale > 0.0)) {
+  // From a nanometre to a million kilometres a unit: beyond, a triangle's area (scale²) and the
+  // solid's volume (scale³) leave double precision, and the mesh would read as empty.
+  if (!std::isfinite(scale) || !(scale >= 1e-9) || !(scale <= 1e9)) {
     throw InvalidArgument(fmt::format(
-        "{}: unit scale {} is not positive and finite (0.001 reads millimetres)", name, scale));
+        "{}: unit scale {} is outside 1e-9 … 1e9 metres per unit of the file (0.001 reads "
+        "millimetres)",
+        name, scale));
   }
 
   // The file itself: present, a regular file, not empty, of a supported kind.

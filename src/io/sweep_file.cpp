@@ -191,14 +191,27 @@ Metric read_metric(const YamlNode& node) {
 
 }  // namespace
 
+namespace {
+sweep::SweepSpec compose_sweep_file(const YamlNode& root, const std::filesystem::path& dir);
+}  // namespace
+
 sweep::SweepSpec read_sweep_file(const std::filesystem::path& path) {
-  const YamlNode root = YamlNode::load_file(path);
+  return compose_sweep_file(YamlNode::load_file(path), path.parent_path());
+}
+
+sweep::SweepSpec parse_sweep_file(const std::string& text, const std::string& file_name,
+                                  const std::filesystem::path& base_dir) {
+  return compose_sweep_file(YamlNode::load_string(text, file_name), base_dir);
+}
+
+namespace {
+
+sweep::SweepSpec compose_sweep_file(const YamlNode& root, const std::filesystem::path& dir) {
   root.expect_map("a sweep file: a map with model, parameters and metrics");
   root.check_keys(kSweepKeys);
-  const std::filesystem::path dir = path.parent_path();
   sweep::SweepSpec spec;
-  spec.file = path.string();
-  spec.name = root.find_string("name").value_or(path.stem().string());
+  spec.file = root.file();
+  spec.name = root.find_string("name").value_or(std::filesystem::path(root.file()).stem().string());
 
   const auto file_key = root.which_of({"model", "part"});
   if (!file_key) root.fail("give the model file (model: FILE) or the part file (part: FILE)");
@@ -294,5 +307,7 @@ sweep::SweepSpec read_sweep_file(const std::filesystem::path& path) {
   }
   return spec;
 }
+
+}  // namespace
 
 }  // namespace momenta::io

@@ -1,9 +1,12 @@
 #include "momenta/io/yaml_reader.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <fstream>
+#include <map>
 #include <numbers>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string_view>
 #include <system_error>
@@ -101,28 +104,91 @@ bool quote_closes(std::string_view text, std::size_t start) {
   return false;
 }
 
-// The mark of the first quoted scalar under `node` (keys included) that never closes.
-std::optional<YAML::Mark> unterminated_quote(const YAML::Node& node, std::string_view text) {
-  if (node.IsScalar()) {
-    const YAML::Mark mark = node.Mark();
-    const auto pos = static_cast<std::size_t>(mark.pos);
-    const bool quoted = node.Tag() == "!" && mark.pos >= 0 && pos < text.size() &&
-                        (text[pos] == '"' || text[pos] == '\'');
-    if (quoted && !quote_closes(text, pos)) return mark;
+// The checks a document passes before any reader walks it, each written node visited once.
+// yaml-cpp hands an alias the very node its anchor names (with the anchor's mark), so a node is
+// told apart by where it is written and what it is. A walk that followed every alias again would
+// never end on a "billion laughs" file: 9 levels of 9 aliases in 1.2 kB stand for 387 million nodes.
+class DocumentCheck {
+ public:
+  /// Most nodes a document may stand for once its aliases are expanded: generous for any model,
+  /// part or sweep file, and a fraction of a second for a reader to walk.
+  static constexpr std::size_t kExpandedNodeLimit = 1'000'000;
+
+  explicit DocumentCheck(std::string_view text) : text_(text) {}
+
+  // The mark of the first quoted scalar under `node` (keys included) that never closes.
+  std::optional<YAML::Mark> unterminated_quote(const YAML::Node& node) {
+    if (!first_visit(node, quotes_checked_)) return std::nullopt;
+    if (node.IsScalar()) {
+      const YAML::Mark mark = node.Mark();
+      const auto pos = static_cast<std::size_t>(mark.pos);
+      const bool quoted = node.Tag() == "!" && mark.pos >= 0 && pos < text_.size() &&
+                          (text_[pos] == '"' || text_[pos] == '\'');
+      if (quoted && !quote_closes(text_, pos)) return mark;
+      return std::nullopt;
+    }
+    if (node.IsSequence()) {
+      for (const auto& item : node) {
+        if (auto mark = unterminated_quote(item)) return mark;
+      }
+    } else if (node.IsMap()) {
+      for (const auto& entry : node) {
+        if (auto mark = unterminated_quote(entry.first)) return mark;
+        if (auto mark = unterminated_quote(entry.second)) return mark;
+      }
+    }
     return std::nullopt;
   }
-  if (node.IsSequence()) {
-    for (const auto& item : node) {
-      if (auto mark = unterminated_quote(item, text)) return mark;
+
+  // How many nodes `node` stands for with every alias expanded, counted up to just past
+  // kExpandedNodeLimit. The first node whose own expansion crosses the limit (its parts each
+  // within it) is kept in `overflow`, where the file is refused.
+  std::size_t expanded_size(const YAML::Node& node) {
+    const auto key = key_of(node);
+    if (key) {
+      if (const auto known = expanded_.find(*key); known != expanded_.end()) return known->second;
     }
-  } else if (node.IsMap()) {
-    for (const auto& entry : node) {
-      if (auto mark = unterminated_quote(entry.first, text)) return mark;
-      if (auto mark = unterminated_quote(entry.second, text)) return mark;
+    std::size_t size = 1;
+    bool part_over = false;
+    const auto add = [&](const YAML::Node& part) {
+      const std::size_t part_size = expanded_size(part);
+      part_over = part_over || part_size > kExpandedNodeLimit;
+      size = std::min(size + part_size, kExpandedNodeLimit + 1);
+    };
+    if (node.IsSequence()) {
+      for (const auto& item : node) add(item);
+    } else if (node.IsMap()) {
+      for (const auto& entry : node) {
+        add(entry.first);
+        add(entry.second);
+      }
     }
+    if (size > kExpandedNodeLimit && !part_over && !overflow) overflow = node.Mark();
+    if (key) expanded_.emplace(*key, size);
+    return size;
   }
-  return std::nullopt;
-}
+
+  std::optional<YAML::Mark> overflow;
+
+ private:
+  using NodeKey = std::pair<int, int>;  // the node's offset in the text, its type
+
+  static std::optional<NodeKey> key_of(const YAML::Node& node) {
+    if (node.Mark().pos < 0 || !(node.IsScalar() || node.IsSequence() || node.IsMap())) {
+      return std::nullopt;  // nulls: nothing below them
+    }
+    return NodeKey{node.Mark().pos, static_cast<int>(node.Type())};
+  }
+
+  static bool first_visit(const YAML::Node& node, std::set<NodeKey>& visited) {
+    const auto key = key_of(node);
+    return !key || visited.insert(*key).second;
+  }
+
+  std::string_view text_;
+  std::set<NodeKey> quotes_checked_;
+  std::map<NodeKey, std::size_t> expanded_;
+};
 
 std::string join_quoted(std::span<const std::string_view> words) {
   std::string out;
@@ -159,7 +225,15 @@ YamlNode YamlNode::load_string(const std::string& text, const std::string& file_
   if (!root.IsDefined() || root.IsNull()) {
     throw ParseError(file_name, 0, 0, "the file holds no YAML document (it is empty)");
   }
-  if (const auto mark = unterminated_quote(root, text)) {
+  DocumentCheck check(text);
+  if (check.expanded_size(root) > DocumentCheck::kExpandedNodeLimit) {
+    const auto [line, column] = position_of(*check.overflow);
+    throw ParseError(file_name, line, column,
+                     fmt::format("this node's aliases (*name) expand it to more than {} nodes; "
+                                 "write the repeated parts out, or alias them fewer times",
+                                 DocumentCheck::kExpandedNodeLimit));
+  }
+  if (const auto mark = check.unterminated_quote(root)) {
     const auto [line, column] = position_of(*mark);
     throw ParseError(file_name, line, column,
                      fmt::format("malformed YAML: this quoted string has no closing {} (it runs "

@@ -53,17 +53,37 @@ std::string script_safe(std::string text, std::string_view closing) {
   return text;
 }
 
+// The notice the MIT License asks to travel with every copy of the libraries the page embeds
+// (THIRD-PARTY-NOTICES.md lists them all). esbuild keeps three.js's own @license comment in the
+// bundle, not uPlot's, so the page carries both here.
+constexpr std::string_view kEmbeddedLibrariesNotice =
+    "This page embeds three.js (Copyright (c) 2010-2024 three.js authors) and uPlot\n"
+    "(Copyright (c) 2022 Leon Sorokin), each under the MIT License:\n\n"
+    "Permission is hereby granted, free of charge, to any person obtaining a copy of this software\n"
+    "and associated documentation files (the \"Software\"), to deal in the Software without\n"
+    "restriction, including without limitation the rights to use, copy, modify, merge, publish,\n"
+    "distribute, sublicense, and/or sell copies of the Software, and to permit persons to whom the\n"
+    "Software is furnished to do so, subject to the following conditions:\n\n"
+    "The above copyright notice and this permission notice shall be included in all copies or\n"
+    "substantial portions of the Software.\n\n"
+    "THE SOFTWARE IS PROVIDED \"AS IS\", WITHOUT WARRANTY OF ANY KIND, EXPRESS OR IMPLIED,\n"
+    "INCLUDING BUT NOT LIMITED TO THE WARRANTIES OF MERCHANTABILITY, FITNESS FOR A PARTICULAR\n"
+    "PURPOSE AND NONINFRINGEMENT. IN NO EVENT SHALL THE AUTHORS OR COPYRIGHT HOLDERS BE LIABLE FOR\n"
+    "ANY CLAIM, DAMAGES OR OTHER LIABILITY, WHETHER IN AN ACTION OF CONTRACT, TORT OR OTHERWISE,\n"
+    "ARISING FROM, OUT OF OR IN CONNECTION WITH THE SOFTWARE OR THE USE OR OTHER DEALINGS IN THE\n"
+    "SOFTWARE.";
+
 }  // namespace
 
 std::string html_page(const std::string& title, const json& data) {
   return fmt::format(
-      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<!--\n{}\n-->\n"
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       "<meta name=\"generator\" content=\"momenta\">\n<title>{}</title>\n<style>{}</style>\n"
       "</head>\n<body>\n<div id=\"app\"></div>\n"
       "<script type=\"application/json\" id=\"momenta-data\">{}</script>\n"
       "<script>{}</script>\n</body>\n</html>\n",
-      escape_html(title), kReportStyle,
+      kEmbeddedLibrariesNotice, escape_html(title), kReportStyle,
       script_safe(data.dump(-1, ' ', false, json::error_handler_t::replace), "</"),
       script_safe(kReportScript, "</script"));
 }

@@ -252,3 +252,25 @@ json campbell_json(const io::ModelFile& file, const LinearSettings& settings) {
 }
 
 }  // namespace momenta::report::detail
+
+namespace momenta::report {
+
+void check_linear_settings(const io::ModelFile& file, const LinearSettings& settings) {
+  if (settings.about != "equilibrium" && settings.about != "initial" &&
+      settings.about != "steady") {
+    throw InvalidArgument(
+        fmt::format("about '{}': expected initial, equilibrium or steady", settings.about));
+  }
+  analysis::LinearizationOptions options;
+  options.inputs = settings.inputs;
+  options.outputs = settings.outputs;
+  options.output_specs = file.outputs;
+  try {
+    analysis::check_linearization_names(file.model, options);
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(fmt::format("the report's linear analysis (--inputs, --outputs): {}",
+                                      e.what()));
+  }
+}
+
+}  // namespace momenta::report

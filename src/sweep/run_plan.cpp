@@ -104,6 +104,13 @@ double uniform_number(std::uint64_t seed, std::uint64_t stream, std::uint64_t co
 RunPlan::RunPlan(const SweepSpec& spec) : spec_(&spec) {
   check_parameters(spec);
   runs_ = count_runs(spec);
+  if (runs_ > kMaxRuns) {
+    throw InvalidArgument(fmt::format(
+        "this sweep has {:.3g} runs, more than the {:.0e} a sweep may have (at a millisecond a "
+        "run, {:.3g} days on one core): fewer samples or grid values",
+        static_cast<double>(runs_), static_cast<double>(kMaxRuns),
+        static_cast<double>(runs_) * 1e-3 / 86400.0));
+  }
   if (spec.design == Design::kLatinHypercube) {
     for (std::size_t p = 0; p < spec.parameters.size(); ++p) {
       strata_.push_back(shuffled(runs_, spec.seed, kShuffle + p));

@@ -114,7 +114,16 @@ SweepRunner::SweepRunner(SweepSpec spec)
   }
 
   // Every parameter's path, then its extreme values one at a time.
-  for (const Parameter& p : spec_.parameters) {
+  for (std::size_t i = 0; i < spec_.parameters.size(); ++i) {
+    const Parameter& p = spec_.parameters[i];
+    for (std::size_t j = 0; j < i; ++j) {
+      if (spec_.parameters[j].path == p.path) {
+        throw error_at(spec_, p.line, p.column,
+                       fmt::format("parameter path '{}' is varied twice (also at line {}): one "
+                                   "number takes one value per run",
+                                   p.path, spec_.parameters[j].line));
+      }
+    }
     parameter_columns_.push_back(p.name);
     try {
       if (part_job) {
@@ -172,6 +181,23 @@ SweepRunner::SweepRunner(SweepSpec spec)
       }
     }
     const std::vector<std::string> columns = sweep::metric_columns(m, job_->linear_states);
+    // Every results column once: a metric named like a parameter, another metric or one of
+    // the file's own columns would make the results ambiguous.
+    for (const std::string& column : columns) {
+      const bool reserved = column == "run" || column == "status" || column == "wall_s" ||
+                            column == "message";
+      const bool taken =
+          std::find(parameter_columns_.begin(), parameter_columns_.end(), column) !=
+              parameter_columns_.end() ||
+          std::find(metric_columns_.begin(), metric_columns_.end(), column) != metric_columns_.end();
+      if (reserved || taken) {
+        throw error_at(spec_, m.line, m.column,
+                       fmt::format("metric column '{}' {}: give the metric another name", column,
+                                   reserved ? "is one of the results file's own columns (run, "
+                                              "status, wall_s, message)"
+                                            : "is already a column of the results"));
+      }
+    }
     metric_columns_.insert(metric_columns_.end(), columns.begin(), columns.end());
   }
   job_->columns = columns_read(spec_.metrics);
@@ -180,6 +206,8 @@ SweepRunner::SweepRunner(SweepSpec spec)
 SweepRunner::~SweepRunner() = default;
 
 long SweepRunner::run_count() const { return job_->plan.run_count(); }
+
+std::vector<double> SweepRunner::parameter_values(long run) const { return job_->plan.values(run); }
 
 RunOutcome SweepRunner::run(long run) const {
   const auto start = std::chrono::steady_clock::now();

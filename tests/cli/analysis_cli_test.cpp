@@ -107,6 +107,7 @@ TEST_F(AnalysisCli, KinematicsOfTheTurntableBead) {
   EXPECT_NE(unknown.err.find("did you mean 'turntable'"), std::string::npos) << unknown.err;
 }
 
+#if MOMENTA_TEST_SYMBOLIC
 // An expression as GiNaC prints it, in a canonical order: the terms of each sum and the factors
 // of each product sorted (GiNaC orders them by its symbols' creation, which can differ from run
 // to run), parenthesized groups likewise. Enough for the sums of products the CLI prints.
@@ -224,6 +225,13 @@ TEST_F(AnalysisCli, EquationsOfAConstrainedModelPrintItsForcesAndRows) {
   EXPECT_NE(linear.err.find("`momenta linearize` does that numerically"), std::string::npos)
       << linear.err;
 }
+#else
+TEST_F(AnalysisCli, EquationsSayTheyAreLeftOutOfThisBuild) {
+  const CliRun eom = momenta("equations " + example("cruise_control") + " --all-symbols");
+  EXPECT_EQ(eom.code, 1);
+  EXPECT_NE(eom.err.find("-DMOMENTA_WITH_SYMBOLIC=OFF"), std::string::npos) << eom.err;
+}
+#endif  // MOMENTA_TEST_SYMBOLIC
 
 TEST_F(AnalysisCli, DiagramOfThePendulumBobWritesTheSvgAndKeepsTheUsersFile) {
   // The bob of examples/pendulum.yaml from a state file at θ = 60°, θ̇ = 2 rad/s: the rod pulls

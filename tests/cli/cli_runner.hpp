@@ -51,10 +51,24 @@ class CliTest : public ::testing::Test {
   void SetUp() override { dir_ = test::make_scratch_dir("cli"); }
   void TearDown() override { std::filesystem::remove_all(dir_); }
 
+  /// Writes `text` to a file `name` in the test's folder, bytes as they are; returns its path.
+  std::filesystem::path write(const std::string& name, const std::string& text) const {
+    const std::filesystem::path path = dir_ / name;
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+
   /// Runs `momenta <args>` (`args` as the shell reads them) with stdout and stderr captured apart.
-  CliRun momenta(const std::string& args) const {
+  CliRun momenta(const std::string& args) const { return run_with("", args); }
+
+  /// The same under `timeout 60`: a hang ends with exit 124 instead of holding the test.
+  CliRun momenta_with_timeout(const std::string& args) const {
+    return run_with("timeout 60 ", args);
+  }
+
+  CliRun run_with(const std::string& before, const std::string& args) const {
     const std::filesystem::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string command = quoted(MOMENTA_CLI_PATH) + " " + args + " >" +
+    const std::string command = before + quoted(MOMENTA_CLI_PATH) + " " + args + " >" +
                                 quoted(out.string()) + " 2>" + quoted(err.string());
     const int status = std::system(command.c_str());
     CliRun r;

@@ -31,12 +31,6 @@ using test::slurp;
 
 class InertiaCli : public test::CliTest {
  protected:
-  // Writes `text` to a file in the test's folder and returns its path.
-  fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path path = dir_ / name;
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
 
   fs::path write_obj(const std::string& name, const inertia::TriangleMesh& mesh) const {
     std::ostringstream out;

@@ -34,12 +34,50 @@ def test_tennis_racket(tmp_path):
     assert (tmp_path / "tennis_racket.png").stat().st_size > 20_000
 
 
-def test_mesh_mass_properties():
-    out = run_example("mesh_mass_properties.py")
-    lines = out.splitlines()
-    assert lines[0].startswith("mesh")
-    assert any(line.startswith("bus.stl") for line in lines)
-    assert any(line.startswith("l_bracket.obj") for line in lines)
+def mesh_rows(out):
+    """{mesh name: (units, mass, volume, [com], [principal moments])} from the example's table."""
+    rows = {}
+    for line in out.splitlines()[2:]:
+        name, units, source, mass, volume, rest = line.split(None, 5)
+        com, moments = rest.split("]")
+        rows[name] = (units, float(mass), float(volume),
+                      [float(x) for x in com.strip("[ ").split(",")],
+                      [float(x) for x in moments.split(",")])
+    return rows
+
+
+def test_mesh_mass_properties_match_the_closed_forms():
+    rows = mesh_rows(run_example("mesh_mass_properties.py"))
+    # The bus: a 1.0 x 0.75 x 1.25 m aluminium box with a corner at the origin, read in metres
+    # (its header says so): m = 2700 x 0.9375 kg, I = m (b² + c²)/12 about its centre.
+    units, mass, volume, com, moments = rows["bus.stl"]
+    m = 2700 * 1.0 * 0.75 * 1.25
+    assert units == "m"
+    assert volume == pytest.approx(0.9375, rel=1e-6)  # the table prints 6 significant digits
+    assert mass == pytest.approx(m, rel=1e-6)
+    assert com == pytest.approx([0.5, 0.375, 0.625], abs=5e-6)
+    expected = sorted(m / 12 * (a * a + b * b) for a, b in [(0.75, 1.25), (1.0, 1.25), (1.0, 0.75)])
+    assert sorted(moments) == pytest.approx(expected, rel=1e-6)
+    # The L bracket, drawn in millimetres (its header says so): an 80 x 40 x 6 base leg and a
+    # 6 x 40 x 60 upright, 33 600 mm³ of aluminium, 0.09072 kg.
+    units, mass, volume, com, moments = rows["l_bracket.obj"]
+    assert units == "mm"
+    assert volume == pytest.approx(33600e-9, rel=1e-6)
+    assert mass == pytest.approx(2700 * 33600e-9, rel=1e-6)
+    # Centre of mass: the legs' centres (40, 0, 3) mm and (3, 0, 36) mm weighted 19 200 : 14 400.
+    assert com == pytest.approx([(40 * 19200 + 3 * 14400) / 33600e3, 0,
+                                 (3 * 19200 + 36 * 14400) / 33600e3], abs=5e-6)
+
+
+def test_mesh_mass_properties_in_given_units_and_refusals(tmp_path):
+    # --units mm for every file: the bus read as millimetres weighs a billionth as much.
+    rows = mesh_rows(run_example("mesh_mass_properties.py", "--units", "mm"))
+    assert rows["bus.stl"][1] == pytest.approx(2700 * 0.9375e-9, rel=1e-6)
+    # A folder with no mesh is an error, not an empty table.
+    result = subprocess.run([sys.executable, str(EXAMPLES / "mesh_mass_properties.py"), str(tmp_path)],
+                            capture_output=True, text=True, timeout=60)
+    assert result.returncode == 1
+    assert "no .stl or .obj file in" in result.stderr
 
 
 def test_franklin_notebook_executes(monkeypatch):

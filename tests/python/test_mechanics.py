@@ -12,6 +12,9 @@ import momenta
 
 from conftest import EXAMPLES, run_cli
 
+needs_symbolic = pytest.mark.skipif(not momenta.with_symbolic,
+                                    reason="built with MOMENTA_WITH_SYMBOLIC=OFF")
+
 
 def test_free_body_diagram_is_the_command_lines():
     # The four-bar's coupler at its initial state: pin, closure and weight.
@@ -64,6 +67,7 @@ def same_expression(a, b, names):
     return True
 
 
+@needs_symbolic
 def test_equations_and_transfer_functions_in_symbols():
     path = EXAMPLES / "cruise_control.yaml"
     model = momenta.load_model(path)
@@ -85,6 +89,7 @@ def test_equations_and_transfer_functions_in_symbols():
         momenta.equations(model, symbols=["m"])
 
 
+@needs_symbolic
 def test_equations_of_a_constrained_model_carry_its_forces_and_rows():
     # The geared pair: I_p θ̈_p = λ, I_w θ̈_w − T = −n λ, then the coupler's row θ_p − n θ_w = 0.
     path = EXAMPLES / "constraints" / "geared_pair.yaml"
@@ -102,6 +107,7 @@ def test_equations_of_a_constrained_model_carry_its_forces_and_rows():
                                names), (line, textbook)
 
 
+@needs_symbolic
 def test_newton_euler_rows_in_principal_axes(tmp_path):
     # A plate with products of inertia: its rows in its principal axes, named after the body.
     path = tmp_path / "plate.yaml"

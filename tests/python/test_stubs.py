@@ -22,6 +22,7 @@ def test_every_public_name_has_a_stub():
         stubbed = {node.name for node in tree.body if isinstance(node, (ast.ClassDef, ast.FunctionDef))}
         stubbed |= {alias.asname or alias.name for node in tree.body if isinstance(node, ast.ImportFrom)
                     for alias in node.names}
+        stubbed |= {node.target.id for node in tree.body if isinstance(node, ast.AnnAssign)}
         missing = [name for name in module.__all__ if name not in stubbed and name != "inertia"
                    and not name.startswith("_")]
         assert not missing, f"{file} lacks {missing}"

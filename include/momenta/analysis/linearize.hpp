@@ -157,6 +157,14 @@ struct LinearModel {
 LinearModel linearize(const model::Model& model, const OperatingPoint& point,
                       const LinearizationOptions& options = {});
 
+/// Checks the input and output names of `options` as linearize() resolves them (signals and
+/// prescribed coordinates; output columns, states and joint coordinates), without linearizing:
+/// a front end calls it before a long run whose report would linearize afterwards. Throws
+/// InvalidArgument as linearize() does on an unknown (with a "did you mean"), repeated or
+/// ineffective name. Names of a constrained model's dependent coordinates pass here and are
+/// refused by linearize() itself.
+void check_linearization_names(const model::Model& model, const LinearizationOptions& options);
+
 /// The model's characteristic length (m): the largest joint offset, centre-of-mass offset, radius
 /// of gyration, spring length or attachment offset; 1 m when all are zero. Sets the automatic
 /// length step of linearize().

@@ -135,7 +135,8 @@ struct SteadyPrecession {
   /// The sleeping top's critical spin 2√(I₁ m g l)/I₃: upright, it is stable above it (0 for a
   /// top whose centre of mass is below the fixed point).
   double critical_spin = 0.0;
-  /// The gyroscopic approximation m g l/(I₃ ω₃) of the slow root, and its relative error.
+  /// The gyroscopic approximation m g l/(I₃ ω₃) of the slow root (NaN without spin), and its
+  /// relative error (NaN where there is no slow root or no approximation; 0 without gravity).
   double gyroscopic = 0.0;
   double gyroscopic_error = 0.0;
   /// Linearized nutation frequency about each steady precession, rad/s (Routh's reduction to θ):

@@ -36,6 +36,12 @@ struct RunSummary {
 /// (the grid, plus one per input discontinuity, estimated from the first 10⁴ of them); and
 /// NumericalError naming the time, the first non-finite coordinate and a hint when the state
 /// stops being finite, or when a run passes kMaxRunSteps steps after all.
+/// The checks run() makes before its first step (the options, the foreseen step count), on their
+/// own: a front end calls it before it opens an output, so a refused run leaves no file behind.
+/// Throws InvalidArgument as run() does.
+void check_run(const SecondOrderSystem& system, const Integrator& integrator, const State& state,
+               const RunOptions& options);
+
 RunSummary run(SecondOrderSystem& system, Integrator& integrator, State& state,
                const RunOptions& options, const std::function<void(const State&)>& observer);
 

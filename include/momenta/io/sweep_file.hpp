@@ -5,6 +5,7 @@
 // is checked by sweep::SweepRunner, also at this file's lines.
 
 #include <filesystem>
+#include <string>
 
 #include "momenta/sweep/sweep_spec.hpp"
 
@@ -17,5 +18,10 @@ namespace momenta::io {
 /// distribution with σ ≤ 0 or bounds the wrong way round, an unknown metric, a design that does
 /// not fit its parameters.
 sweep::SweepSpec read_sweep_file(const std::filesystem::path& path);
+
+/// The same from the file's text, named `file_name` in messages, its paths relative to
+/// `base_dir` (the fuzzing harness's entry).
+sweep::SweepSpec parse_sweep_file(const std::string& text, const std::string& file_name,
+                                  const std::filesystem::path& base_dir);
 
 }  // namespace momenta::io

@@ -44,6 +44,13 @@ struct LinearSettings {
   int campbell_points = 41;
 };
 
+/// Checks `settings` before a run whose report will use them: `about` one of initial,
+/// equilibrium, steady, and the --inputs and --outputs names known to the model
+/// (analysis::check_linearization_names). Throws InvalidArgument. (A linearization that fails
+/// for the model's own reasons leaves the report's panel empty, saying why; a misspelt name is
+/// the caller's mistake and is refused here.)
+void check_linear_settings(const io::ModelFile& file, const LinearSettings& settings);
+
 /// The run a simulation left in `table`: with the summary it returned, or — when `stop_reason` is
 /// set (it threw) — a summary of the rows up to the failure (integrator, step, rows, t_end).
 SimulationRun make_run(const io::ModelFile& file, const simulate::SimulationOptions& options,

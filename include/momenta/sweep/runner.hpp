@@ -41,6 +41,9 @@ class SweepRunner {
   /// The results' columns for parameters and metrics, in order.
   const std::vector<std::string>& parameter_columns() const { return parameter_columns_; }
   const std::vector<std::string>& metric_columns() const { return metric_columns_; }
+  /// The parameter values of run `run` (0 ≤ run < run_count()), in parameter_columns() order:
+  /// what the run's row holds, without running it.
+  std::vector<double> parameter_values(long run) const;
 
   /// Carries out run `run` (0 ≤ run < run_count()). A run that fails (a value the model reader
   /// refuses, a state that stops being finite, a linearization that does not exist) comes back

@@ -126,6 +126,10 @@ struct SweepSpec {
 
 /// The values of every parameter in every run, from the spec alone: run k's values depend on
 /// the seed and k, never on which process, thread or order computes them.
+/// The most runs a sweep may have: 10⁸ runs of a millisecond are a day on a thousand cores.
+/// RunPlan refuses more, with the count, before it allocates anything for them.
+inline constexpr long kMaxRuns = 100'000'000;
+
 class RunPlan {
  public:
   /// Checks the design against the parameters (grids for factorial and zip, distributions for

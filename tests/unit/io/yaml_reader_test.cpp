@@ -6,6 +6,7 @@
 #include <numbers>
 #include <string>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "momenta_test/tolerance.hpp"
@@ -61,6 +62,34 @@ TEST(YamlReader, UnterminatedQuoteIsReportedWhereItOpens) {
   EXPECT_EQ(root.at("a").as_string(), "one \" two three");
   EXPECT_EQ(root.at("b").as_string(), "it's");
   EXPECT_EQ(root.at("c").as_string(), "ends in a backslash \\");
+}
+
+// "Billion laughs": `levels` lines, each a list of `fan` aliases of the line before.
+std::string alias_bomb(int levels, int fan) {
+  std::string text = "a0: &a0 [lol]\n";
+  for (int level = 1; level < levels; ++level) {
+    text += fmt::format("a{0}: &a{0} [", level);
+    for (int k = 0; k < fan; ++k) text += fmt::format("{}*a{}", k ? ", " : "", level - 1);
+    text += "]\n";
+  }
+  return text;
+}
+
+TEST(YamlReader, AliasBombIsRefusedAtTheNodeThatExplodes) {
+  // 9 levels of 9 aliases: 1.2 kB standing for 9^8 ≈ 4.3e7 lists. The checks once followed every
+  // alias again (hours); each written node is now visited once and the expansion is capped.
+  const std::string text = alias_bomb(9, 9);
+  ASSERT_LT(text.size(), 1300u);
+  const std::string m = parse_error_of([&] { YamlNode::load_string(text, "lol.yaml"); });
+  // Line k + 1 holds a_k, standing for s_k = 1 + 9 s_(k-1) nodes (s_0 = 2): a5 on line 6 for
+  // 125 479, a6 on line 7 for 1 129 312, the first past the limit.
+  EXPECT_NE(m.find("lol.yaml:7:"), std::string::npos) << m;
+  EXPECT_NE(m.find("expand it to more than 1000000 nodes"), std::string::npos) << m;
+  // Aliases that expand modestly are YAML and are read as written.
+  const YamlNode small = YamlNode::load_string(alias_bomb(4, 3), "few.yaml");
+  ASSERT_EQ(small.at("a3").size(), 3u);
+  EXPECT_EQ(small.at("a3").elements()[2].elements()[1].elements()[0].elements()[0].as_string(),
+            "lol");
 }
 
 TEST(YamlReader, EmptyOrCommentOnlyFileIsAnError) {

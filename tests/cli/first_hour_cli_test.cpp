@@ -1,0 +1,368 @@
+// What a new user meets in the first hour (issue 26): bare `momenta`, `simulate` on a terminal,
+// outputs checked before anything runs, and each kind of bad input a battery of 1 759 cases
+// found answered badly — a hang, a non-finite number printed as a result, a library's raw
+// message, data lost, a mistake accepted, a wrong exit code. Each test failed before its fix.
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "cli_runner.hpp"
+
+namespace momenta {
+namespace {
+namespace first_hour {  // the file's helpers apart from the other CLI tests' (one unity unit)
+
+namespace fs = std::filesystem;
+using test::CliRun;
+using test::quoted;
+using test::slurp;
+
+std::string source_dir() { return fs::absolute(test::source_dir()).lexically_normal().string(); }
+
+std::string example(const std::string& name) { return quoted(source_dir() + "/examples/" + name); }
+
+bool has(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// Neither "nan" nor "inf" as a word: what a result must never show.
+bool shows_non_finite(const std::string& text) {
+  static const std::regex word(R"((^|[^A-Za-z_])(-?nan|-?inf)([^A-Za-z_]|$))",
+                               std::regex::icase);
+  return std::regex_search(text, word);
+}
+
+class FirstHourCli : public test::CliTest {
+ protected:
+  std::string at(const std::string& name) const { return quoted((dir_ / name).string()); }
+  // `momenta <args>` with stdout a terminal (script(1) gives it a pseudo-terminal); what the
+  // terminal shows.
+  std::string on_a_terminal(const std::string& args) const {
+    const fs::path out = dir_ / "terminal.txt";
+    const std::string command = "script -qec " +
+                                quoted(quoted(MOMENTA_CLI_PATH) + " " + args + " 2>/dev/null") +
+                                " /dev/null >" + quoted(out.string());
+    EXPECT_EQ(std::system(command.c_str()), 0) << command;
+    return slurp(out);
+  }
+  // A sweep file beside the scratch folder's files, over the example quarter car.
+  fs::path sweep_file(const std::string& name, const std::string& parameters,
+                      const std::string& metrics = "  - max: body_y\n",
+                      const std::string& design = "") const {
+    return write(name, "name: test sweep\nmodel: " + source_dir() +
+                           "/examples/quarter_car.yaml\njob: simulate\n"
+                           "simulation: {duration: 0.05, step: 0.001}\n" +
+                           design + "parameters:\n" + parameters + "metrics:\n" + metrics);
+  }
+};
+
+TEST_F(FirstHourCli, BareMomentaListsEveryCommandOnALineEach) {
+  const CliRun bare = momenta("");
+  EXPECT_EQ(bare.code, 0);
+  // The commands CLI11 knows, from --help, each listed once on a line of its own.
+  const CliRun help = momenta("--help");
+  std::set<std::string> known;
+  std::istringstream lines(help.out.substr(help.out.find("Subcommands:")));
+  std::string line;
+  std::getline(lines, line);
+  const std::regex command_line("^  ([a-z-]+)  +.*");  // a description's own lines are not
+  std::smatch match;
+  while (std::getline(lines, line) && !line.empty()) {
+    if (std::regex_match(line, match, command_line)) known.insert(match[1]);
+  }
+  ASSERT_GE(known.size(), 15u) << help.out;
+  for (const std::string& name : known) {
+    EXPECT_TRUE(std::regex_search(bare.out, std::regex("\n  " + name + " +[a-z]"))) << name;
+  }
+  EXPECT_EQ(std::count(bare.out.begin(), bare.out.end(), '\n'), static_cast<long>(known.size()) + 9)
+      << bare.out;
+}
+
+TEST_F(FirstHourCli, SimulateOnATerminalShowsATableAndHowToSaveEveryRow) {
+  const std::string shown = on_a_terminal("simulate " + example("double_pendulum.yaml") +
+                                          " --duration 1");
+  EXPECT_TRUE(has(shown, "time")) << shown;
+  EXPECT_TRUE(has(shown, "2001 rows x 17 columns in all")) << shown;
+  EXPECT_TRUE(has(shown, "-o run.csv")) << shown;
+  EXPECT_LT(std::count(shown.begin(), shown.end(), '\n'), 15) << shown;
+  // The last row shown is t = 1 s.
+  EXPECT_TRUE(std::regex_search(shown, std::regex("\n +1 +-0\\.625088"))) << shown;
+  // Piped, stdout is the whole CSV.
+  const CliRun piped = momenta("simulate " + example("double_pendulum.yaml") + " --duration 1");
+  EXPECT_EQ(piped.code, 0);
+  EXPECT_EQ(std::count(piped.out.begin(), piped.out.end(), '\n'), 2002);
+}
+
+TEST_F(FirstHourCli, OutputsAreCheckedBeforeAnythingRunsOrIsWritten) {
+  // A run refused up front leaves no file, and --force does not replace the old one by a header.
+  CliRun r = momenta("simulate " + example("pendulum.yaml") + " --duration 1e7 -o " +
+                     at("new.csv"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "about 1e+10 steps")) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "new.csv"));
+  write("old.csv", "the user's data\n");
+  r = momenta("simulate " + example("pendulum.yaml") + " --duration 1e7 --force -o " +
+              at("old.csv"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(slurp(dir_ / "old.csv"), "the user's data\n");
+  // One file for both outputs, even with --force.
+  r = momenta("simulate " + example("pendulum.yaml") + " -o " + at("same") + " --report " +
+              at("./same") + " --force");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "--output and --report both name")) << r.err;
+  // The report's names, checked before the run rather than silently dropped after it.
+  r = momenta("simulate " + example("pendulum.yaml") + " -o " + at("run.csv") + " --report " +
+              at("r.html") + " --inputs nosuch");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "no input named 'nosuch'")) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "run.csv"));
+  EXPECT_FALSE(fs::exists(dir_ / "r.html"));
+  // `report` refuses an existing page before it simulates.
+  write("page.html", "mine");
+  r = momenta("report " + example("pendulum.yaml") + " -o " + at("page.html"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "pass --force")) << r.err;
+  EXPECT_EQ(slurp(dir_ / "page.html"), "mine");
+}
+
+TEST_F(FirstHourCli, AYamlAliasBombIsRefusedAtOnceByEveryReader) {
+  // 9 levels of 9 aliases (1.2 kB): the unterminated-quote check once walked 387 million nodes.
+  std::string bomb = "a0: &a0 [lol]\n";
+  for (int level = 1; level < 9; ++level) {
+    bomb += "a" + std::to_string(level) + ": &a" + std::to_string(level) + " [";
+    for (int k = 0; k < 9; ++k) bomb += (k ? ", *a" : "*a") + std::to_string(level - 1);
+    bomb += "]\n";
+  }
+  const fs::path file = write("lol.yaml", bomb);
+  // `timeout` turns a hang into exit 124 instead of holding the test to its limit.
+  for (const std::string command : {"info", "inertia", "sweep"}) {
+    const CliRun r = momenta_with_timeout(command + " " + quoted(file.string()) +
+                                          (command == "sweep" ? " -o " + at("x.csv") : ""));
+    EXPECT_EQ(r.code, 1) << command << ": " << r.err;
+    EXPECT_TRUE(has(r.err, "lol.yaml:7:")) << r.err;
+    EXPECT_TRUE(has(r.err, "expand it to more than 1000000 nodes")) << r.err;
+  }
+}
+
+TEST_F(FirstHourCli, StateFilesAreReadInMomentasWordsWithTheirPosition) {
+  const std::string pendulum = example("pendulum.yaml");
+  const auto error_of = [&](const std::string& name, const std::string& text) {
+    const fs::path file = write(name, text);
+    const CliRun r = momenta("modes " + pendulum + " --about " + quoted(file.string()));
+    EXPECT_EQ(r.code, 1) << name;
+    EXPECT_FALSE(has(r.err, "json.exception")) << r.err;
+    EXPECT_FALSE(has(r.err, "internal error")) << r.err;
+    return r.err;
+  };
+  EXPECT_TRUE(has(error_of("empty.json", ""), "empty.json:1:1: the file is empty"));
+  EXPECT_TRUE(has(error_of("nan.json", "{\"q\": [NaN], \"v\": [0]}"),
+                  "nan.json:1:8: JSON has no NaN or Infinity"));
+  EXPECT_TRUE(has(error_of("inf.json", "{\"q\": [0],\n \"v\": [Infinity]}"), "inf.json:2:8:"));
+  EXPECT_TRUE(has(error_of("big.json", "{\"q\": [1e400], \"v\": [0]}"),
+                  "big.json:1:8: 1e400 is beyond double precision"));
+  EXPECT_TRUE(has(error_of("tail.json", "{\"q\": [0], \"v\": [0]} and more"),
+                  "tail.json:1:22: text after the JSON value"));
+  EXPECT_TRUE(has(error_of("binary.json", std::string("\x7f" "ELF\x02\x01", 6)),
+                  "binary.json:1:5: not a text file (byte 0x02)"));
+  EXPECT_TRUE(has(error_of("huge.json", "{\"q\": [1e200], \"v\": [0]}"),
+                  "huge.json: q[0] = 1e+200 is beyond ±1e+100"));
+  // A missing or wrongly sized state is refused even where it would not be used: equations
+  // hold at every instant, so --state and --time belong to --form linear and --transfer.
+  const CliRun unused = momenta("equations " + pendulum + " --state " + at("gone.json"));
+  EXPECT_EQ(unused.code, 2);
+  EXPECT_TRUE(has(unused.err, "--state: sets the operating point of --form linear")) << unused.err;
+  const CliRun late = momenta("equations " + pendulum + " --time 1e300");
+  EXPECT_EQ(late.code, 2);
+}
+
+TEST_F(FirstHourCli, EveryPrintedNumberIsFiniteOrTheCommandRefuses) {
+  struct Case {
+    std::string args;
+    int code;  // 0: runs and prints only finite numbers; else the exit code of the refusal
+  };
+  const std::vector<Case> cases = {
+      {"inertia " + example("parts/flywheel.yaml") + " --about 1e308 0 0", 2},
+      {"inertia " + example("parts/flywheel.yaml") + " --about 1e100 0 0", 0},
+      {"balance " + example("parts/overhung_fan.yaml") + " --bearings 0.05 0.25 --speed 1e150",
+       2},
+      {"balance " + example("parts/overhung_fan.yaml") +
+           " --bearings 0.05 0.25 --speed 3000 --alpha 1e300",
+       2},
+      {"balance " + example("parts/overhung_fan.yaml") +
+           " --bearings 0.05 0.25 --speed 3000 --gravity nan",
+       2},
+      {"balance " + example("parts/overhung_fan.yaml") +
+           " --bearings 0.05 0.25 --speed-range 100 200 --points 100000000",
+       2},
+      {"steady " + example("heavy_top.yaml") + " --tilt 20 --spin 0", 0},
+      {"steady " + example("heavy_top.yaml") + " --tilt 20 --spin 0 --json", 0},
+      {"steady " + example("heavy_top.yaml") + " --tilt 120 --spin 0", 0},
+      {"steady " + example("heavy_top.yaml") + " --tilt 20 --spin 1e308", 2},
+      {"steady " + example("heavy_top.yaml") + " --tilt nan --spin 1", 2},
+      {"kinematics " + example("kinematics/turntable_bead.yaml") +
+           " --point bead:1e308,0,0 --frame turntable",
+       2},
+      {"modes " + example("constraints/chaplygin_sleigh.yaml"), 0},
+      {"modes " + example("free_body_tennis_racket.yaml"), 0},
+      {"response " + example("satellite_attitude.yaml") + " --input thrust --output theta --step",
+       0},
+      {"response " + example("satellite_attitude.yaml") +
+           " --input thrust --output theta --bode 0.1 10 --csv -",
+       0},
+      {"response " + example("cruise_control.yaml") +
+           " --input u --output speed --step --duration 1e-300",
+       0},
+  };
+  for (const Case& c : cases) {
+    const CliRun r = momenta(c.args);
+    EXPECT_EQ(r.code, c.code) << c.args << "\n" << r.out << r.err;
+    EXPECT_FALSE(shows_non_finite(r.out)) << c.args << "\n" << r.out;
+    EXPECT_FALSE(has(r.err, "internal error")) << c.args << "\n" << r.err;
+  }
+  // Unstable: the response overflows double precision in time; refused, naming when.
+  // An inverted pendulum, linearized about its upright initial state: λ = ±√(g/L) = ±3.13/s.
+  const fs::path unstable = write("unstable.yaml", R"(gravity: [0, 0, -9.81]
+inputs:
+  - {name: u, type: step, start: 0, initial: 0, final: 1}
+bodies:
+  - {name: bob, shape: point_mass, mass: 1, position: [0, 0, 1]}
+joints:
+  - {name: pivot, type: revolute, parent: world, child: bob, axis: [0, 1, 0]}
+forces:
+  - {name: push, type: torque, body: bob, vector: [0, 1, 0], signal: u}
+outputs:
+  - {name: theta, joint: pivot, quantity: position}
+)");
+  const CliRun overflow = momenta("response " + quoted(unstable.string()) +
+                                  " --input u --output theta --step --duration 1000");
+  EXPECT_EQ(overflow.code, 1) << overflow.out << overflow.err;
+  EXPECT_TRUE(has(overflow.err, "overflows before t = 1000 s; choose a shorter final time"))
+      << overflow.err;
+  EXPECT_FALSE(shows_non_finite(overflow.out)) << overflow.out;
+}
+
+TEST_F(FirstHourCli, LibraryMessagesAreSaidInMomentasWords) {
+  // A 300-character output name: the system's words, with the file, exit 1.
+  CliRun r = momenta("simulate " + example("pendulum.yaml") + " -o " + at(std::string(300, 'a')));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "File name too long")) << r.err;
+  EXPECT_FALSE(has(r.err, "internal error")) << r.err;
+  // A file name that is not UTF-8, echoed in JSON: still valid JSON.
+  const fs::path odd = dir_ / "bad\xff.yaml";
+  fs::copy_file(source_dir() + "/examples/pendulum.yaml", odd);
+  r = momenta("info " + quoted(odd.string()) + " --json");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_FALSE(has(r.err, "json.exception")) << r.err;
+  // A mesh unit no double can hold; the tolerances named by their options.
+  r = momenta("inertia " + example("parts/meshes/bus.stl") + " --scale 1e-300");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "outside 1e-9 … 1e9")) << r.err;
+  r = momenta("simulate " + example("pendulum.yaml") + " --rtol 1e-30 -o " + at("x.csv"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "--rtol 1e-30: dopri5")) << r.err;
+  // A folder where a file is asked for: named as one.
+  fs::create_directory(dir_ / "folder");
+  r = momenta("diagram " + example("pendulum.yaml") + " --body bob -o " + at("folder"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_TRUE(has(r.err, "is a folder")) << r.err;
+  for (const std::string command : {"sweep", "sweep-merge"}) {
+    const std::string tail = command == "sweep" ? " -o " + at("x.csv") : " a.csv -o " + at("x.csv");
+    r = momenta(command + " " + at("missing.yaml") + tail);
+    EXPECT_EQ(r.code, 1) << command;
+    EXPECT_TRUE(has(r.err, "missing.yaml: file not found")) << r.err;
+    r = momenta(command + " " + at("folder") + tail);
+    EXPECT_EQ(r.code, 1) << command;
+    EXPECT_TRUE(has(r.err, "is a folder")) << r.err;
+  }
+  // A transfer function in JSON is JSON.
+  r = momenta("equations " + example("cruise_control.yaml") + " --transfer u:speed --json");
+  if (r.code == 1 && has(r.err, "MOMENTA_WITH_SYMBOLIC")) return;  // a build without GiNaC
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("{\n", 0), 0u) << r.out;
+  EXPECT_TRUE(has(r.out, "\"text\": ")) << r.out;
+  EXPECT_TRUE(has(r.out, "\"latex\": ")) << r.out;
+}
+
+TEST_F(FirstHourCli, SweepsRefuseWhatWouldMixLoseOrExhaust) {
+  const std::string grid = "  - {path: forces.suspension.stiffness, name: ks, values: [6e4, 8e4, 1e5]}\n";
+  const fs::path sweep = sweep_file("grid.yaml", grid);
+  // The output may not be the sweep's own input, nor the report.
+  CliRun r = momenta("sweep " + quoted(sweep.string()) + " -o " + quoted(sweep.string()) +
+                     " --force");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "is the sweep's own input")) << r.err;
+  EXPECT_TRUE(has(slurp(sweep), "name: test sweep"));
+  r = momenta("sweep " + quoted(sweep.string()) + " -o " + at("r.csv") + " --report " +
+              at("r.csv"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "--output and --report both name")) << r.err;
+  // Shards and threads: an empty or overflowing shard, absurd threads.
+  for (const std::string shard : {"''", "1/99999999999999999999", "1/4"}) {
+    r = momenta("sweep " + quoted(sweep.string()) + " -o " + at("s.csv") + " --shard " + shard);
+    EXPECT_EQ(r.code, 2) << shard << ": " << r.err;
+  }
+  r = momenta("sweep " + quoted(sweep.string()) + " -o " + at("t.csv") + " --threads 100000");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_TRUE(has(r.err, "100000 threads on")) << r.err;
+  // 10¹² Monte Carlo samples: refused with the estimate, not after seconds of allocation.
+  const fs::path huge = sweep_file(
+      "huge.yaml", "  - {path: forces.suspension.stiffness, distribution: {type: normal, mean: 1e5, sd: 1e4}}\n",
+      "  - max: body_y\n", "design: monte_carlo\nsamples: 1000000000000\nseed: 1\n");
+  r = momenta("sweep " + quoted(huge.string()) + " -o " + at("h.csv"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "this sweep has 1e+12 runs")) << r.err;
+  // The same path twice; a metric named like the file's own column or twice.
+  r = momenta("sweep " + quoted(sweep_file("twice.yaml", grid + "  - {path: forces.suspension.stiffness, name: k2, values: [1, 2]}\n").string()) +
+              " -o " + at("w.csv"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "is varied twice")) << r.err;
+  for (const std::string metrics :
+       {"  - {max: body_y, name: status}\n", "  - max: body_y\n  - max: body_y\n"}) {
+    r = momenta("sweep " + quoted(sweep_file("m.yaml", grid, metrics).string()) + " -o " +
+                at("m.csv"));
+    EXPECT_EQ(r.code, 1) << metrics;
+    EXPECT_TRUE(has(r.err, "give the metric another name")) << r.err;
+  }
+}
+
+TEST_F(FirstHourCli, ResumeRefusesAnotherSweepsFileOrAChangedModel) {
+  const fs::path first = sweep_file(
+      "first.yaml", "  - {path: forces.suspension.stiffness, name: ks, values: [6e4, 8e4, 1e5]}\n");
+  ASSERT_EQ(momenta("sweep " + quoted(first.string()) + " -o " + at("r.csv") + " --no-timing").code,
+            0);
+  const std::string written = slurp(dir_ / "r.csv");
+  // Another range with the same columns: its run 0 is not this file's run 0.
+  const fs::path other = sweep_file(
+      "other.yaml",
+      "  - {path: forces.suspension.stiffness, name: ks, values: [6e4, 9e4, 1.2e5, 1.5e5]}\n");
+  fs::last_write_time(other, fs::last_write_time(dir_ / "r.csv") - std::chrono::hours(1));
+  CliRun r = momenta("sweep " + quoted(other.string()) + " -o " + at("r.csv") +
+                     " --no-timing --resume");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "written by another sweep")) << r.err;
+  EXPECT_EQ(slurp(dir_ / "r.csv"), written);
+  // The sweep file changed after the results were written.
+  const fs::path grown = sweep_file(
+      "first.yaml",
+      "  - {path: forces.suspension.stiffness, name: ks, values: [6e4, 8e4, 1e5, 1.2e5]}\n");
+  fs::last_write_time(grown, fs::last_write_time(dir_ / "r.csv") + std::chrono::hours(1));
+  r = momenta("sweep " + quoted(grown.string()) + " -o " + at("r.csv") + " --no-timing --resume");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "changed after these results were written")) << r.err;
+  EXPECT_EQ(slurp(dir_ / "r.csv"), written);
+}
+
+}  // namespace first_hour
+}  // namespace
+}  // namespace momenta
