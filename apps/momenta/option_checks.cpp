@@ -121,7 +121,13 @@ void check_input_file(const std::string& path, std::string_view what) {
 bool same_file(const std::string& a, const std::string& b) {
   std::error_code ec;
   if (std::filesystem::equivalent(a, b, ec)) return true;  // both exist: the same inode
-  return std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec);
+  // Not both there yet: the same path once resolved; a path the system cannot resolve (a name
+  // too long) is compared as written, and refused later by whatever opens it.
+  std::error_code error_a, error_b;
+  const auto resolved_a = std::filesystem::weakly_canonical(a, error_a);
+  const auto resolved_b = std::filesystem::weakly_canonical(b, error_b);
+  if (error_a || error_b) return a == b;
+  return resolved_a == resolved_b;
 }
 
 }  // namespace momenta::cli

@@ -15,7 +15,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <system_error>
 
 #include <fmt/format.h>
 
@@ -153,10 +152,7 @@ void check_outputs(const SimulateOptions& o) {
   if (o.csv && o.output) refuse_existing(*o.output, "output");
   if (o.report) refuse_existing(*o.report, "report");
   if (o.csv && o.output && o.report) {
-    std::error_code ec;
-    const bool same = std::filesystem::weakly_canonical(*o.output, ec) ==
-                      std::filesystem::weakly_canonical(*o.report, ec);
-    if (same) {
+    if (same_file(*o.output, *o.report)) {
       throw InvalidArgument(fmt::format(
           "--output and --report both name {}: one would overwrite the other; give two files",
           *o.report));

@@ -42,6 +42,14 @@ fig.savefig(out / "tennis_racket.png", dpi=120)
 
 audit = {entry["name"]: entry for entry in run.audit}
 print(run.summary_text)
+# The flips: ω_y changes sign every half period 2K(k)/λ of the Jacobi functions that solve
+# Euler's equations (Landau & Lifshitz §37); the test checks the interval against that closed form.
+w_y = run["free.v1"]
+turns = np.nonzero(np.sign(w_y[1:]) != np.sign(w_y[:-1]))[0]
+crossings = [run.time[i] - w_y[i] * (run.time[i + 1] - run.time[i]) / (w_y[i + 1] - w_y[i])
+             for i in turns]
+print("ω_y changes sign at t = " + ", ".join(f"{t:.5f}" for t in crossings) + " s: every "
+      f"{np.mean(np.diff(crossings)):.5f} s")
 # The splitting method keeps |H| exactly (each sub-flow is a rotation) and the energy bounded.
 assert audit["|H|"]["max_drift"] < 1e-12
 assert audit["energy"]["max_drift"] < 1e-5

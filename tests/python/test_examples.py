@@ -1,11 +1,15 @@
 """The Python examples run as a user runs them, and the Jupyter notebook is executed, so none of
-them can rot: each checks its own numbers (asserts inside) and writes its figures."""
+them can rot: the numbers each script prints are checked here against an independent reference
+(a closed form, scipy on the textbook's equations), the notebook's against the closed forms its
+own cells assert, and the figures are written."""
 
 import os
 import pathlib
+import re
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
 from conftest import SOURCE_DIR
@@ -26,12 +30,48 @@ def test_quarter_car_bode(tmp_path):
     assert "DC gain 1" in out
     for name in ["quarter_car_bode.png", "quarter_car_step.png"]:
         assert (tmp_path / name).stat().st_size > 20_000  # a plot, not an empty canvas
+    # The step's figures against Y/R of the textbook's two-mass model (FPE ch. 2; the model
+    # file's m1 = 20, m2 = 375 kg, ks = 130 kN/m, kw = 1 MN/m, b = 9.8 kN·s/m), stepped by scipy
+    # on a 1 µs grid: each printed figure within half a unit of its last digit (plus the grid).
+    from scipy import signal
+    m1, m2, ks, kw, b = 20.0, 375.0, 130000.0, 1e6, 9800.0
+    num = [kw * b / (m1 * m2), kw * ks / (m1 * m2)]
+    den = [1, b / m1 + b / m2, ks / m1 + ks / m2 + kw / m1, kw * b / (m1 * m2), kw * ks / (m1 * m2)]
+    t, y = signal.step((num, den), T=np.linspace(0.0, 3.0, 3_000_001))
+
+    def crossing(level):
+        i = int(np.argmax(y >= level))
+        return t[i - 1] + (level - y[i - 1]) * (t[i] - t[i - 1]) / (y[i] - y[i - 1])
+
+    reference = {"rise time": crossing(0.9) - crossing(0.1), "overshoot": (y.max() - 1) * 100,
+                 "settling time": t[np.nonzero(np.abs(y - 1) > 0.02)[0][-1] + 1],
+                 "peak": y.max(), "at": t[y.argmax()]}
+    printed = re.search(r"rise time ([\d.]+) s, overshoot ([\d.]+) %, settling time ([\d.]+) s, "
+                        r"peak ([\d.]+) at ([\d.]+) s", out)
+    assert printed, out
+    for (name, expected), text in zip(reference.items(), printed.groups()):
+        decimals = len(text.split(".")[1])
+        assert abs(float(text) - expected) <= 0.5 * 10.0**-decimals + 2e-6, (name, text, expected)
 
 
 def test_tennis_racket(tmp_path):
     out = run_example("tennis_racket.py", tmp_path)
     assert "splitting" in out
     assert (tmp_path / "tennis_racket.png").stat().st_size > 20_000
+    # ω_y = A sn(λ t) changes sign every 2K(k)/λ (Landau & Lifshitz §37; I = diag(1, 2, 3),
+    # ω0 = (0.01, 2, 0.01) rad/s, H² > 2 T I2): 10.977573 s. The example prints the interval
+    # to 1e-5 s; the splitting method at dt = 1e-3 s and the linear interpolation of each
+    # crossing agree with it within that (3 units allowed).
+    from scipy.special import ellipk
+    inertia, w = np.array([1.0, 2.0, 3.0]), np.array([0.01, 2.0, 0.01])
+    two_t, h2 = (inertia * w * w).sum(), ((inertia * w) ** 2).sum()
+    i1, i2, i3 = inertia
+    lam = np.sqrt((i3 - i2) * (h2 - two_t * i1) / (i1 * i2 * i3))
+    k2 = (i2 - i1) * (two_t * i3 - h2) / ((i3 - i2) * (h2 - two_t * i1))
+    printed = re.search(r"changes sign at t = ([\d., ]+) s: every ([\d.]+) s", out)
+    assert printed, out
+    assert len(printed.group(1).split(",")) >= 2
+    assert abs(float(printed.group(2)) - 2 * ellipk(k2) / lam) <= 3e-5, printed.group(2)
 
 
 def mesh_rows(out):
