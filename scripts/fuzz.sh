@@ -13,7 +13,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 MOMENTA_WITH_FUZZ=1 scripts/bootstrap.sh
-CXX=clang++ scripts/build.sh build-fuzz -DCMAKE_CXX_COMPILER=clang++ -DMOMENTA_FUZZ=ON \
+harnesses=(model_file part_file stl obj state_file sweep_file)
+# The harnesses and the libraries they link (io and below), not the analysis, report or sweep
+# layers: those are the sanitizer build's to test.
+MOMENTA_TARGET="${harnesses[*]/%/_fuzz}" CXX=clang++ scripts/build.sh build-fuzz \
+  -DCMAKE_CXX_COMPILER=clang++ -DMOMENTA_FUZZ=ON \
   -DMOMENTA_BUILD_TESTS=OFF -DMOMENTA_BUILD_BENCHMARKS=OFF -DMOMENTA_BUILD_APPS=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
@@ -33,7 +37,7 @@ declare -A corpora=(
   [state_file]="$(seed state_file)"
   [sweep_file]="$(seed sweep_file examples/sweeps/*.yaml)"
 )
-for harness in model_file part_file stl obj state_file sweep_file; do
+for harness in "${harnesses[@]}"; do
   binary=build-fuzz/tests/fuzz/${harness}_fuzz
   regressions=tests/fuzz/regressions/$harness
   if compgen -G "$regressions/*" >/dev/null; then

@@ -91,6 +91,8 @@ void print_text(const io::ModelFile& file, const analysis::SteadyPrecession& r) 
   if (r.minimum_spin > 0.0) {
     fmt::print("  steady precession at this tilt needs ω₃ ≥ 2√(I₁ m g l cos θ)/I₃ = {:.6g} rad/s\n",
                r.minimum_spin);
+  } else if (r.mgl == 0.0) {
+    fmt::print("  steady precession exists at any spin without a gravity torque (m g l = 0)\n");
   } else {
     fmt::print("  steady precession at this tilt exists at any spin (cos θ ≤ 0)\n");
   }

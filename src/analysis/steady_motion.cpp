@@ -379,7 +379,10 @@ FoundPrecession find_steady_precession(const model::Model& model, double tilt, d
   found.roots.spin = spin;
   precession_roots(found.roots);
   // The top's pose: its axis e turned from the upward vertical by the tilt about world x.
-  const Vec3 up = -model.gravity().normalized();
+  // The vertical: against gravity, or world z without it (as spinning_body takes it), where the
+  // slow root is the pure spin and the fast one the free body's precession.
+  const double g = model.gravity().norm();
+  const Vec3 up = g > 0.0 ? Vec3(-model.gravity() / g) : Vec3::UnitZ();
   const Mat3 R_align = Eigen::Quaterniond::FromTwoVectors(e, up).toRotationMatrix();
   const Vec3 across = up.unitOrthogonal();
   const Mat3 R_WB = Eigen::AngleAxisd(tilt, across).toRotationMatrix() * R_align;

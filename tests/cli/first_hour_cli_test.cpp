@@ -230,6 +230,18 @@ TEST_F(FirstHourCli, EveryPrintedNumberIsFiniteOrTheCommandRefuses) {
     EXPECT_FALSE(shows_non_finite(r.out)) << c.args << "\n" << r.out;
     EXPECT_FALSE(has(r.err, "internal error")) << c.args << "\n" << r.err;
   }
+  // A top without gravity: the vertical is world z (as for its modes), every number finite.
+  std::string top = slurp(source_dir() + "/examples/heavy_top.yaml");
+  const std::string gravity = "gravity: [0, 0, -9.81]";
+  ASSERT_NE(top.find(gravity), std::string::npos);
+  top.replace(top.find(gravity), gravity.size(), "gravity: [0, 0, 0]");
+  const std::string weightless = quoted(write("weightless_top.yaml", top).string());
+  for (const std::string format : {"", " --json"}) {
+    const CliRun r = momenta("steady " + weightless + " --tilt 20 --spin 300" + format);
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_FALSE(shows_non_finite(r.out)) << r.out;
+    EXPECT_FALSE(has(r.out, "null")) << r.out;
+  }
   // Unstable: the response overflows double precision in time; refused, naming when.
   // An inverted pendulum, linearized about its upright initial state: λ = ±√(g/L) = ±3.13/s.
   const fs::path unstable = write("unstable.yaml", R"(gravity: [0, 0, -9.81]
