@@ -38,6 +38,6 @@ echo "Run it with that interpreter:"
 echo "  $python -c \"import momenta; print(momenta.__version__)\""
 first=$(command -v python3 || true)
 if [[ -n "$first" && "$(readlink -f "$first")" != "$(readlink -f "$python")" ]]; then
-  echo "(python3 first on your PATH is $first, another interpreter: it does not see this install" \
-       "or Debian's numpy.)"
+  echo "(python3 first on your PATH is $first, another interpreter, without Debian's numpy:" \
+       "call $python.)"
 fi

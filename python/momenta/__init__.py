@@ -16,6 +16,9 @@ Units are SI; spatial vectors are rotation first; inertia tensors carry minus th
 inertia off the diagonal (docs/conventions.md).
 """
 
+import functools as _functools
+import os as _os
+
 from . import _core
 from ._core import (
     CampbellDiagram,
@@ -91,6 +94,32 @@ else:
 
     equations = _without_symbolic("equations")
     symbolic_transfer_function = _without_symbolic("symbolic_transfer_function")
+
+
+def _takes_a_model(function):
+    """`function`, whose first argument is a Model, saying what to pass when it is something else
+    (pybind11's TypeError lists C++ signatures; a file name gets the load_model line)."""
+
+    @_functools.wraps(function)
+    def checked(model, *args, **kwargs):
+        if not isinstance(model, Model):
+            if isinstance(model, (str, _os.PathLike)):
+                hint = (f": load the file first, "
+                        f"momenta.{function.__name__}(momenta.load_model({str(model)!r}))")
+            else:
+                hint = " (momenta.load_model(path) or a momenta.ModelBuilder makes one)"
+            raise TypeError(f"{function.__name__}() takes a momenta.Model as its first argument, "
+                            f"got {type(model).__name__}{hint}")
+        return function(model, *args, **kwargs)
+
+    return checked
+
+
+for _name in ["campbell_diagram", "find_equilibrium", "find_steady_precession", "free_body_diagram",
+              "joint_steady_motion", "linearize", "relative_kinematics", "simulate", "steady_motion",
+              "steady_precession"] + (["equations", "symbolic_transfer_function"] if with_symbolic else []):
+    globals()[_name] = _takes_a_model(globals()[_name])
+del _name
 
 
 def _to_pandas(self):

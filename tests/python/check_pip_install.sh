@@ -14,10 +14,14 @@ if ((${#wheels[@]} != 1)); then
 fi
 prefix=$(mktemp -d)
 trap 'rm -rf "$prefix"' EXIT
-PIP_NO_INDEX=1 "$python" -m pip install --quiet --no-deps --no-compile --root-user-action=ignore --prefix "$prefix" "${wheels[0]}"
+# --ignore-installed: a momenta already in the user's site-packages (install-python.sh's) would
+# otherwise count as installed, and nothing would be copied into the prefix.
+PIP_NO_INDEX=1 "$python" -m pip install --quiet --no-deps --no-compile --ignore-installed \
+  --root-user-action=ignore --prefix "$prefix" "${wheels[0]}"
 site=$("$python" -c 'import sys, sysconfig; print(sysconfig.get_path("platlib", vars={"platbase": sys.argv[1], "base": sys.argv[1]}))' "$prefix")
 cd /
-PYTHONPATH="$site" "$python" -c '
+# -s: the user's site-packages stay out of the search, so only the prefix can provide momenta.
+PYTHONPATH="$site" "$python" -s -c '
 import sys
 import momenta
 from momenta import inertia

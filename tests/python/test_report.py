@@ -66,7 +66,7 @@ def test_an_existing_file_is_kept_without_force(tmp_path):
     target = tmp_path / "mine.html"
     target.write_text("keep me")
     result = momenta.simulate(momenta.load_model(EXAMPLES / "pendulum.yaml"), duration=0.1)
-    with pytest.raises(momenta.FileError, match="force"):
+    with pytest.raises(momenta.FileError, match="pass force=True to overwrite it"):
         result.report(target)
     assert target.read_text() == "keep me"
     result.report(str(target), force=True)

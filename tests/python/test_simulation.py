@@ -88,3 +88,15 @@ def test_a_run_that_blows_up_names_the_time():
     failed_at = float(str(failure.value).split("t = ")[1].split()[0])
     assert partial.time[-1] < failed_at
     assert partial.summary["t_end"] == partial.time[-1]
+
+
+def test_a_file_name_where_a_model_belongs_says_what_to_pass():
+    # pybind11 would list C++ signatures ("incompatible function arguments"); the message says
+    # how to make the Model, and the stubs keep `model: Model`.
+    with pytest.raises(TypeError, match=r"simulate\(\) takes a momenta.Model as its first argument, "
+                       r"got str: load the file first, momenta.simulate\(momenta.load_model\('x.yaml'\)\)"):
+        momenta.simulate("x.yaml")
+    with pytest.raises(TypeError, match=r"linearize\(\) takes a momenta.Model .* got int \(momenta.load_model"):
+        momenta.linearize(3)
+    assert momenta.simulate.__doc__.startswith("simulate(model: momenta._core.Model")
+
