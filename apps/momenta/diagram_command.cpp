@@ -12,12 +12,12 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "option_checks.hpp"
 #include "momenta/analysis/free_body.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
 #include "momenta/report/free_body_svg.hpp"
 #include "momenta/report/report.hpp"
+#include "option_checks.hpp"
 #include "output_format.hpp"
 #include "state_file.hpp"
 
@@ -120,8 +120,9 @@ void add_diagram_command(CLI::App& app) {
   command->add_option("MODEL", options->model, "A model file (.yaml)")->required();
   command->add_option("--body", options->body, "The body to isolate")->required();
   add_instant_options(command, options->instant);
-  command->add_option("-o,--output", options->output,
-                      "Write the diagrams as SVG to this file (never overwritten without --force)")
+  command
+      ->add_option("-o,--output", options->output,
+                   "Write the diagrams as SVG to this file (never overwritten without --force)")
       ->check(not_a_folder());
   command->add_flag("--force", options->force, "Overwrite the --output file if it exists");
   command->add_flag("--json", options->json, "Print JSON instead of text");

@@ -129,9 +129,9 @@ void print_transfer(const io::ModelFile& file, const symbolic::LinearEquations& 
     j["input"] = input;
     j["output"] = output;
     j["text"] = G;
-    j["latex"] = l.transfer_function(static_cast<int>(in - inputs.begin()),
-                                     static_cast<int>(k - names.begin()), rate,
-                                     symbolic::Format::latex);
+    j["latex"] =
+        l.transfer_function(static_cast<int>(in - inputs.begin()),
+                            static_cast<int>(k - names.begin()), rate, symbolic::Format::latex);
     fmt::print("{}\n", json_text(j, ListSpacing::spaced));
   } else if (f == symbolic::Format::latex) {
     fmt::print("G(s) = {}\n", G);

@@ -317,20 +317,4 @@ void print_matrix(const char* name, const MatX& M, const std::vector<std::string
   }
 }
 
-std::string number_text(double x, int digits) {
-  if (!std::isfinite(x)) return "undefined";  // a figure that does not exist, never "nan"
-  if (digits <= 0) return fmt::format("{}", x + 0.0);  // the shortest text that reads back to x
-  return fmt::format("{:.{}g}", x + 0.0, digits);
-}
-
-std::string complex_text(std::complex<double> z, int digits) {
-  // Parts below 1e-12 of |z| are round-off (a real pole's imaginary part, an undamped pair's
-  // real part): shown as 0.
-  const double tiny = 1e-12 * std::abs(z);
-  z = {std::abs(z.real()) <= tiny ? 0.0 : z.real(), std::abs(z.imag()) <= tiny ? 0.0 : z.imag()};
-  if (z.imag() == 0.0) return number_text(z.real(), digits);
-  return fmt::format("{} {} {}j", number_text(z.real(), digits), z.imag() < 0 ? "−" : "+",
-                     number_text(std::abs(z.imag()), digits));
-}
-
 }  // namespace momenta::cli

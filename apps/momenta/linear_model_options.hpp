@@ -15,6 +15,7 @@
 #include "momenta/analysis/joint_steady_motion.hpp"
 #include "momenta/analysis/linearize.hpp"
 #include "momenta/analysis/steady_motion.hpp"
+#include "momenta/common/number_text.hpp"
 #include "momenta/io/model_file.hpp"
 #include "output_format.hpp"
 
@@ -77,11 +78,8 @@ nlohmann::ordered_json complex_json(std::complex<double> z);
 /// Prints a matrix with row and column labels, 6 significant digits.
 void print_matrix(const char* name, const MatX& M, const std::vector<std::string>& rows,
                   const std::vector<std::string>& columns);
-/// "−0.5 + 3.1j", parts with `digits` significant digits (0: the shortest that read back exactly).
-std::string complex_text(std::complex<double> z, int digits = 6);
-
-/// x with `digits` significant digits; 0: the shortest text that reads back to the same double;
-/// "undefined" where x is not finite (a figure that does not exist).
-std::string number_text(double x, int digits);
+// number_text and complex_text: momenta/common/number_text.hpp (shared with the Python reprs).
+using momenta::complex_text;
+using momenta::number_text;
 
 }  // namespace momenta::cli

@@ -13,6 +13,7 @@
 #include "commands.hpp"
 #include "linear_model_options.hpp"
 #include "momenta/analysis/modes.hpp"
+#include "momenta/analysis/modes_text.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
 
@@ -97,50 +98,10 @@ void run(const ModesOptions& o) {
         worst);
   }
   fmt::print("\n");
-  fmt::print("  {:>3}  {:>26}  {:>12}  {:>12}  {:>10}  {}\n", "#", "eigenvalue 1/s", "ωn rad/s",
-             "ωn Hz", "ζ", "largest shape entries");
-  for (std::size_t k = 0; k < m.modes.size(); ++k) {
-    const analysis::Mode& mode = m.modes[k];
-    // The shape's three largest entries, by magnitude.
-    std::vector<Eigen::Index> order(static_cast<std::size_t>(mode.shape.size()));
-    for (Eigen::Index i = 0; i < mode.shape.size(); ++i) order[static_cast<std::size_t>(i)] = i;
-    std::sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) {
-      return std::abs(mode.shape[a]) > std::abs(mode.shape[b]);
-    });
-    std::vector<std::string> entries;
-    for (std::size_t i = 0; i < std::min<std::size_t>(3, order.size()); ++i) {
-      const Eigen::Index e = order[i];
-      if (std::abs(mode.shape[e]) < 1e-9) break;
-      entries.push_back(fmt::format("{} {}", m.state_names[static_cast<std::size_t>(e)],
-                                    complex_text(mode.shape[e])));
-    }
-    // ζ is undefined at λ = 0 (left blank, as the help says); −0 prints as 0.
-    const std::string zeta = std::isfinite(mode.damping_ratio)
-                                 ? fmt::format("{:.4g}", mode.damping_ratio + 0.0)
-                                 : std::string();
-    fmt::print("  {:>3}  {:>26}  {:>12.6g}  {:>12.6g}  {:>10}  {}\n", k + 1,
-               complex_text(mode.eigenvalue), mode.natural_frequency, hz(mode.natural_frequency),
-               zeta, fmt::join(entries, "; "));
-  }
+  fmt::print("{}", analysis::modes_table(m));
   if (normal) {
-    fmt::print("\nundamped normal modes (K φ = ω² M φ):\n");
-    for (std::size_t k = 0; k < normal->modes.size(); ++k) {
-      const analysis::NormalMode& mode = normal->modes[k];
-      std::vector<std::string> entries;
-      for (Eigen::Index i = 0; i < mode.shape.size(); ++i)
-        entries.push_back(fmt::format(
-            "{} {:.4g}", normal->coordinate_names[static_cast<std::size_t>(i)], mode.shape[i]));
-      if (mode.squared_frequency < 0) {
-        // A negative stiffness: no oscillation, the mode grows like e^{√(−ω²) t}.
-        fmt::print("  {:>3}  ω² = {:<12.6g} unstable: grows like e^({:.6g} t)   [{}]\n", k + 1,
-                   mode.squared_frequency, std::sqrt(-mode.squared_frequency),
-                   fmt::join(entries, ", "));
-        continue;
-      }
-      fmt::print("  {:>3}  ω² = {:<12.6g} ω = {:.6g} rad/s = {:.6g} Hz   [{}]\n", k + 1,
-                 mode.squared_frequency, mode.natural_frequency, hz(mode.natural_frequency),
-                 fmt::join(entries, ", "));
-    }
+    fmt::print("\nundamped normal modes (K φ = ω² M φ):\n{}",
+               analysis::normal_modes_table(*normal));
   } else if (loaded.steady) {
     print_whirls(*loaded.steady);
   } else {

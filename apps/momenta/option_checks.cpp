@@ -33,8 +33,8 @@ std::optional<double> parse_double(const std::string& text) {
 bool within_bounds(double value) { return std::abs(value) <= io::kLargestNumber; }
 
 std::string beyond_bounds(const std::string& text) {
-  return fmt::format("must be within ±{:g} (far past anything physical), got {}", io::kLargestNumber,
-                     text);
+  return fmt::format("must be within ±{:g} (far past anything physical), got {}",
+                     io::kLargestNumber, text);
 }
 
 }  // namespace

@@ -97,9 +97,9 @@ simulate::SimulationOptions merge(const SimulateOptions& o, const model::Simulat
       const std::string_view what = e.what();
       if (what.find("rtol") == what.npos && what.find("atol") == what.npos) throw;
       // Tolerances out of reach: say which options gave them.
-      throw InvalidArgument(fmt::format("{}{}{}: {}", o.rtol ? fmt::format("--rtol {}", *o.rtol) : "",
-                                        o.rtol && o.atol ? ", " : "",
-                                        o.atol ? fmt::format("--atol {}", *o.atol) : "", e.what()));
+      throw InvalidArgument(fmt::format(
+          "{}{}{}: {}", o.rtol ? fmt::format("--rtol {}", *o.rtol) : "",
+          o.rtol && o.atol ? ", " : "", o.atol ? fmt::format("--atol {}", *o.atol) : "", e.what()));
     }
     throw CLI::ValidationError(o.rtol ? "--rtol" : "--atol",
                                fmt::format("applies to adaptive integrators (dopri5); '{}' takes "
@@ -146,7 +146,8 @@ void write_run_report(const SimulateOptions& o, const io::ModelFile& file,
 void check_outputs(const SimulateOptions& o) {
   const auto refuse_existing = [&](const std::string& path, const char* what) {
     if (std::filesystem::exists(path) && !o.force) {
-      throw FileError(fmt::format("{}: the {} file exists; pass --force to overwrite it", path, what));
+      throw FileError(
+          fmt::format("{}: the {} file exists; pass --force to overwrite it", path, what));
     }
   };
   if (o.csv && o.output) refuse_existing(*o.output, "output");
@@ -223,8 +224,7 @@ void run(const SimulateOptions& o) {
         "{} rows x {} columns in all; to keep every row, write them to a file:\n"
         "  momenta simulate {} -o run.csv\n",
         preview.rows(), preview.columns(), o.model);
-    fmt::print(stderr, "momenta: simulated {} ({}) for {} s\n", file.name, o.model,
-               summary.t_end);
+    fmt::print(stderr, "momenta: simulated {} ({}) for {} s\n", file.name, o.model, summary.t_end);
   } else {
     fmt::print(stderr, "momenta: simulated {} ({}) for {} s; {} rows, {} columns to {}\n",
                file.name, o.model, summary.t_end, summary.rows, simulation.column_names().size(),

@@ -81,8 +81,9 @@ void print_text(const io::ModelFile& file, const analysis::SteadyPrecession& r) 
   if (!std::isfinite(r.gyroscopic)) {
     fmt::print("  gyroscopic approximation m g l/(I₃ ω₃): none without spin (ω₃ = 0)\n");
   } else if (!std::isfinite(r.gyroscopic_error)) {
-    fmt::print("  gyroscopic approximation m g l/(I₃ ω₃) = {:.6g} rad/s (no slow root to compare)\n",
-               r.gyroscopic);
+    fmt::print(
+        "  gyroscopic approximation m g l/(I₃ ω₃) = {:.6g} rad/s (no slow root to compare)\n",
+        r.gyroscopic);
   } else {
     fmt::print(
         "  gyroscopic approximation m g l/(I₃ ω₃) = {:.6g} rad/s ({:+.3g} % of the slow root)\n",

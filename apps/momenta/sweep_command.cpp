@@ -5,13 +5,13 @@
 
 #include <charconv>
 #include <chrono>
-#include <utility>
 #include <cmath>
-#include <filesystem>
-#include <system_error>
 #include <cstdlib>
+#include <filesystem>
 #include <optional>
 #include <string>
+#include <system_error>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -39,7 +39,7 @@ struct SweepOptions {
   bool no_timing = false;
   bool quiet = false;
   std::optional<std::string> shard;  // "k/N"
-  std::string report;  // the HTML page, when asked
+  std::string report;                // the HTML page, when asked
 };
 
 struct Shard {
@@ -79,8 +79,8 @@ void check_sweep_outputs(const SweepOptions& o, const sweep::SweepRunner& runner
     for (const std::string& input : {o.sweep, model}) {
       if (same_file(output, input)) {
         throw InvalidArgument(fmt::format(
-            "{} {} is the sweep's own input {}: it would be overwritten; give another file",
-            option, output, input));
+            "{} {} is the sweep's own input {}: it would be overwritten; give another file", option,
+            output, input));
       }
     }
   }
@@ -148,8 +148,7 @@ std::size_t finished_prefix(const SweepOptions& o, const sweep::SweepRunner& run
       throw FileError(fmt::format(
           "{}: row {} holds run {}, not run {} that this sweep{} writes there: the file was "
           "written by another sweep or shard",
-          o.output, i + 2, finished[i], i < runs.size() ? runs[i] : -1,
-          o.shard ? " shard" : ""));
+          o.output, i + 2, finished[i], i < runs.size() ? runs[i] : -1, o.shard ? " shard" : ""));
     }
   }
   return finished.size();

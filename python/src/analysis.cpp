@@ -1,7 +1,10 @@
 // Linear analysis from Python: linearize a model about an operating point, find an equilibrium,
 // and the modes, transfer functions, Bode data and step / impulse responses of a StateSpace.
 
+#include <cmath>
+
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <pybind11/complex.h>
 #include <pybind11/stl.h>
 
@@ -12,11 +15,13 @@
 #include "momenta/analysis/joint_steady_motion.hpp"
 #include "momenta/analysis/linearize.hpp"
 #include "momenta/analysis/modes.hpp"
+#include "momenta/analysis/modes_text.hpp"
 #include "momenta/analysis/state_space.hpp"
 #include "momenta/analysis/steady_motion.hpp"
 #include "momenta/analysis/step_info.hpp"
 #include "momenta/analysis/time_response.hpp"
 #include "momenta/analysis/transfer_function.hpp"
+#include "momenta/common/number_text.hpp"
 
 namespace momenta::python {
 namespace {
@@ -171,7 +176,22 @@ InvalidArgument on an unknown name (with a did-you-mean).)doc");
           "unstable_eigenvalues",
           [](const Equilibrium& e) { return complex_array(e.unstable_eigenvalues); })
       .def_readonly("stiffness_rank", &Equilibrium::stiffness_rank)
-      .def_property_readonly("stable", &Equilibrium::stable);
+      .def_property_readonly("stable", &Equilibrium::stable)
+      .def("__repr__", [](const Equilibrium& e) {
+        std::vector<std::string> q;
+        for (Eigen::Index i = 0; i < e.point.q.size(); ++i)
+          q.push_back(number_text(e.point.q[i], 6));
+        std::vector<std::string> growth;
+        for (const Complex& z : e.unstable_eigenvalues) growth.push_back(complex_text(z));
+        return fmt::format(
+            "<momenta.Equilibrium q = [{}], {} ({} Newton iterations, residual {:.3g} of the "
+            "force scale {:.3g})>",
+            fmt::join(q, ", "),
+            e.stable() ? std::string("stable")
+                       : fmt::format("unstable: eigenvalues {}", fmt::join(growth, ", ")),
+            e.iterations, e.residual.size() ? e.residual.cwiseAbs().maxCoeff() : 0.0,
+            e.force_scale);
+      });
   m.def(
       "find_equilibrium",
       [](const ModelHandle& h, const py::object& q_guess, double t, double tolerance,
@@ -218,6 +238,11 @@ void bind_modes(py::module_& m) {
                                return complex_array(z);
                              })
       .def("__len__", [](const Modes& ms) { return ms.modes.size(); })
+      .def("__repr__",
+           [](const Modes& ms) {
+             return fmt::format("<momenta.Modes: {} modes of {} states>\n{}", ms.modes.size(),
+                                ms.state_names.size(), modes_table(ms));
+           })
       .def("__getitem__", [](const Modes& ms, std::size_t i) {
         if (i >= ms.modes.size()) throw py::index_error("mode index out of range");
         return ms.modes[i];
@@ -244,6 +269,11 @@ void bind_modes(py::module_& m) {
       .def_readonly("modes", &NormalModes::modes)
       .def_readonly("coordinate_names", &NormalModes::coordinate_names)
       .def("__len__", [](const NormalModes& n) { return n.modes.size(); })
+      .def("__repr__",
+           [](const NormalModes& n) {
+             return fmt::format("<momenta.NormalModes: {} modes, K φ = ω² M φ>\n{}", n.modes.size(),
+                                normal_modes_table(n));
+           })
       .def("__getitem__", [](const NormalModes& n, std::size_t i) {
         if (i >= n.modes.size()) throw py::index_error("mode index out of range");
         return n.modes[i];
@@ -335,7 +365,14 @@ void bind_responses(py::module_& m) {
           "outputs", [](const TimeResponse& r) { return to_numpy(r.outputs); },
           "(samples, outputs).")
       .def_property_readonly(
-          "states", [](const TimeResponse& r) { return to_numpy(r.states); }, "(samples, states).");
+          "states", [](const TimeResponse& r) { return to_numpy(r.states); }, "(samples, states).")
+      .def("__repr__", [](const TimeResponse& r) {
+        return fmt::format(
+            "<momenta.TimeResponse to '{}': {} samples over {} s of outputs [{}] and {} states>",
+            r.input_name, r.time.size(),
+            number_text(r.time.size() ? r.time[r.time.size() - 1] : 0.0, 6),
+            fmt::join(r.output_names, ", "), r.state_names.size());
+      });
   m.def(
       "step_response",
       [](const StateSpace& s, const py::object& input, std::optional<double> final_time,
@@ -362,7 +399,18 @@ void bind_responses(py::module_& m) {
       .def_readonly("overshoot", &StepInfo::overshoot, "%.")
       .def_readonly("undershoot", &StepInfo::undershoot, "%.")
       .def_readonly("peak", &StepInfo::peak)
-      .def_readonly("peak_time", &StepInfo::peak_time);
+      .def_readonly("peak_time", &StepInfo::peak_time)
+      .def("__repr__", [](const StepInfo& i) {
+        // As `momenta response --step` says them: a figure that does not exist is "undefined".
+        const auto in = [](double x, const char* unit) {
+          return std::isfinite(x) ? number_text(x, 6) + unit : std::string("undefined");
+        };
+        return fmt::format(
+            "<momenta.StepInfo final value {}, rise time {}, settling time (2 %) {}, overshoot {}, "
+            "peak {} at {}>",
+            in(i.final_value, ""), in(i.rise_time, " s"), in(i.settling_time, " s"),
+            in(i.overshoot, " %"), in(i.peak, ""), in(i.peak_time, " s"));
+      });
   m.def(
       "step_info",
       [](const StateSpace& s, const py::object& input, const py::object& output,

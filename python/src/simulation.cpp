@@ -169,8 +169,8 @@ std::filesystem::path write_result_report(const SimulationResult& r,
   linear.campbell = campbell;
   // Refused in Python's words (the library's message names the CLI's --force).
   if (std::filesystem::exists(path) && !force) {
-    throw FileError(fmt::format("{}: the file exists; pass force=True to overwrite it",
-                                path.string()));
+    throw FileError(
+        fmt::format("{}: the file exists; pass force=True to overwrite it", path.string()));
   }
   {
     py::gil_scoped_release unlocked;

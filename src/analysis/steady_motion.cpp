@@ -323,7 +323,7 @@ void precession_roots(SteadyPrecession& r) {
   // it and the slow root are 0, and it is exact.
   r.gyroscopic = p != 0.0 ? r.mgl / p : kNaN;
   r.gyroscopic_error = !std::isfinite(r.slow) || !std::isfinite(r.gyroscopic) ? kNaN
-                       : r.slow != 0.0 ? (r.gyroscopic - r.slow) / r.slow
+                       : r.slow != 0.0       ? (r.gyroscopic - r.slow) / r.slow
                        : r.gyroscopic == 0.0 ? 0.0
                                              : kNaN;
   const auto nutation = [&](double rate) {

@@ -45,7 +45,8 @@ std::string json_problem(const std::string& text, std::size_t offset, const std:
   const std::size_t at = std::min(offset > 0 ? offset - 1 : 0, text.size() - 1);
   const std::string_view rest = std::string_view(text).substr(at);
   for (const std::string_view word : {"NaN", "nan", "Infinity", "inf", "-Infinity", "-inf"}) {
-    if (rest.starts_with(word) || (at > 0 && std::string_view(text).substr(at - 1).starts_with(word))) {
+    if (rest.starts_with(word) ||
+        (at > 0 && std::string_view(text).substr(at - 1).starts_with(word))) {
       return "JSON has no NaN or Infinity, and a state must be finite";
     }
   }
@@ -89,7 +90,8 @@ StateFile parse_state_file(const std::string& text, const std::string& name, int
     const std::string number =
         quote == std::string::npos ? "" : what.substr(quote + 1, what.rfind('\'') - quote - 1);
     const std::size_t at = number.empty() ? std::string::npos : text.find(number);
-    const auto [line, column] = at == std::string::npos ? std::pair{0, 0} : position_in(text, at + 1);
+    const auto [line, column] =
+        at == std::string::npos ? std::pair{0, 0} : position_in(text, at + 1);
     throw ParseError(name, line, column,
                      fmt::format("{} is beyond double precision (±1.8e308)",
                                  number.empty() ? std::string("a number") : number));
@@ -122,8 +124,9 @@ StateFile parse_state_file(const std::string& text, const std::string& name, int
       x[i] = a.at(static_cast<std::size_t>(i)).get<double>();
       // Bounded as a model file's numbers are (kLargestNumber): q², m v² stay finite.
       if (!(std::abs(x[i]) <= kLargestNumber)) {
-        throw InvalidArgument(fmt::format("{}: {}[{}] = {} is beyond ±{:g}, far past anything physical",
-                                          name, key, i, x[i], kLargestNumber));
+        throw InvalidArgument(
+            fmt::format("{}: {}[{}] = {} is beyond ±{:g}, far past anything physical", name, key, i,
+                        x[i], kLargestNumber));
       }
     }
     return x;
@@ -146,7 +149,8 @@ StateFile read_state_file(const std::filesystem::path& path, int nq, int nv) {
   const std::string name = path.string();
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
-  if (!std::filesystem::exists(status)) throw FileError(fmt::format("{}: state file not found", name));
+  if (!std::filesystem::exists(status))
+    throw FileError(fmt::format("{}: state file not found", name));
   if (std::filesystem::is_directory(status)) {
     throw FileError(fmt::format("{}: is a folder, not a state file", name));
   }

@@ -1,7 +1,7 @@
 #include "momenta/io/yaml_reader.hpp"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <numbers>
@@ -107,7 +107,8 @@ bool quote_closes(std::string_view text, std::size_t start) {
 // The checks a document passes before any reader walks it, each written node visited once.
 // yaml-cpp hands an alias the very node its anchor names (with the anchor's mark), so a node is
 // told apart by where it is written and what it is. A walk that followed every alias again would
-// never end on a "billion laughs" file: 9 levels of 9 aliases in 1.2 kB stand for 387 million nodes.
+// never end on a "billion laughs" file: 9 levels of 9 aliases in 1.2 kB stand for 387 million
+// nodes.
 class DocumentCheck {
  public:
   /// Most nodes a document may stand for once its aliases are expanded: generous for any model,

@@ -268,8 +268,8 @@ void check_linear_settings(const io::ModelFile& file, const LinearSettings& sett
   try {
     analysis::check_linearization_names(file.model, options);
   } catch (const InvalidArgument& e) {
-    throw InvalidArgument(fmt::format("the report's linear analysis (--inputs, --outputs): {}",
-                                      e.what()));
+    throw InvalidArgument(
+        fmt::format("the report's linear analysis (--inputs, --outputs): {}", e.what()));
   }
 }
 

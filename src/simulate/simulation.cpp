@@ -112,8 +112,8 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
   integrate::RunOptions run_options;
   run_options.t_end = options_.duration;
   run_options.h = options_.step;
-  integrate::check_run(system, *integrator_, integrate::State{0.0, model.initial_q(), model.initial_v()},
-                       run_options);
+  integrate::check_run(system, *integrator_,
+                       integrate::State{0.0, model.initial_q(), model.initial_v()}, run_options);
   if (system.conserves_energy()) columns_.push_back("audit.energy_drift");
   if (system.conserves_angular_momentum()) {
     columns_.push_back("audit.H_norm_drift");

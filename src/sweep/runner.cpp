@@ -184,12 +184,12 @@ SweepRunner::SweepRunner(SweepSpec spec)
     // Every results column once: a metric named like a parameter, another metric or one of
     // the file's own columns would make the results ambiguous.
     for (const std::string& column : columns) {
-      const bool reserved = column == "run" || column == "status" || column == "wall_s" ||
-                            column == "message";
-      const bool taken =
-          std::find(parameter_columns_.begin(), parameter_columns_.end(), column) !=
-              parameter_columns_.end() ||
-          std::find(metric_columns_.begin(), metric_columns_.end(), column) != metric_columns_.end();
+      const bool reserved =
+          column == "run" || column == "status" || column == "wall_s" || column == "message";
+      const bool taken = std::find(parameter_columns_.begin(), parameter_columns_.end(), column) !=
+                             parameter_columns_.end() ||
+                         std::find(metric_columns_.begin(), metric_columns_.end(), column) !=
+                             metric_columns_.end();
       if (reserved || taken) {
         throw error_at(spec_, m.line, m.column,
                        fmt::format("metric column '{}' {}: give the metric another name", column,

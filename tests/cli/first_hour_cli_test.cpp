@@ -38,8 +38,7 @@ bool has(const std::string& text, const std::string& part) {
 
 // Neither "nan" nor "inf" as a word: what a result must never show.
 bool shows_non_finite(const std::string& text) {
-  static const std::regex word(R"((^|[^A-Za-z_])(-?nan|-?inf)([^A-Za-z_]|$))",
-                               std::regex::icase);
+  static const std::regex word(R"((^|[^A-Za-z_])(-?nan|-?inf)([^A-Za-z_]|$))", std::regex::icase);
   return std::regex_search(text, word);
 }
 
@@ -90,8 +89,8 @@ TEST_F(FirstHourCli, BareMomentaListsEveryCommandOnALineEach) {
 }
 
 TEST_F(FirstHourCli, SimulateOnATerminalShowsATableAndHowToSaveEveryRow) {
-  const std::string shown = on_a_terminal("simulate " + example("double_pendulum.yaml") +
-                                          " --duration 1");
+  const std::string shown =
+      on_a_terminal("simulate " + example("double_pendulum.yaml") + " --duration 1");
   EXPECT_TRUE(has(shown, "time")) << shown;
   EXPECT_TRUE(has(shown, "2001 rows x 17 columns in all")) << shown;
   EXPECT_TRUE(has(shown, "-o run.csv")) << shown;
@@ -106,8 +105,8 @@ TEST_F(FirstHourCli, SimulateOnATerminalShowsATableAndHowToSaveEveryRow) {
 
 TEST_F(FirstHourCli, OutputsAreCheckedBeforeAnythingRunsOrIsWritten) {
   // A run refused up front leaves no file, and --force does not replace the old one by a header.
-  CliRun r = momenta("simulate " + example("pendulum.yaml") + " --duration 1e7 -o " +
-                     at("new.csv"));
+  CliRun r =
+      momenta("simulate " + example("pendulum.yaml") + " --duration 1e7 -o " + at("new.csv"));
   EXPECT_EQ(r.code, 1);
   EXPECT_TRUE(has(r.err, "about 1e+10 steps")) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "new.csv"));
@@ -173,7 +172,9 @@ TEST_F(FirstHourCli, StateFilesAreReadInMomentasWordsWithTheirPosition) {
                   "big.json:1:8: 1e400 is beyond double precision"));
   EXPECT_TRUE(has(error_of("tail.json", "{\"q\": [0], \"v\": [0]} and more"),
                   "tail.json:1:22: text after the JSON value"));
-  EXPECT_TRUE(has(error_of("binary.json", std::string("\x7f" "ELF\x02\x01", 6)),
+  EXPECT_TRUE(has(error_of("binary.json", std::string("\x7f"
+                                                      "ELF\x02\x01",
+                                                      6)),
                   "binary.json:1:5: not a text file (byte 0x02)"));
   EXPECT_TRUE(has(error_of("huge.json", "{\"q\": [1e200], \"v\": [0]}"),
                   "huge.json: q[0] = 1e+200 is beyond ±1e+100"));
@@ -194,8 +195,7 @@ TEST_F(FirstHourCli, EveryPrintedNumberIsFiniteOrTheCommandRefuses) {
   const std::vector<Case> cases = {
       {"inertia " + example("parts/flywheel.yaml") + " --about 1e308 0 0", 2},
       {"inertia " + example("parts/flywheel.yaml") + " --about 1e100 0 0", 0},
-      {"balance " + example("parts/overhung_fan.yaml") + " --bearings 0.05 0.25 --speed 1e150",
-       2},
+      {"balance " + example("parts/overhung_fan.yaml") + " --bearings 0.05 0.25 --speed 1e150", 2},
       {"balance " + example("parts/overhung_fan.yaml") +
            " --bearings 0.05 0.25 --speed 3000 --alpha 1e300",
        2},
@@ -307,11 +307,12 @@ TEST_F(FirstHourCli, LibraryMessagesAreSaidInMomentasWords) {
 }
 
 TEST_F(FirstHourCli, SweepsRefuseWhatWouldMixLoseOrExhaust) {
-  const std::string grid = "  - {path: forces.suspension.stiffness, name: ks, values: [6e4, 8e4, 1e5]}\n";
+  const std::string grid =
+      "  - {path: forces.suspension.stiffness, name: ks, values: [6e4, 8e4, 1e5]}\n";
   const fs::path sweep = sweep_file("grid.yaml", grid);
   // The output may not be the sweep's own input, nor the report.
-  CliRun r = momenta("sweep " + quoted(sweep.string()) + " -o " + quoted(sweep.string()) +
-                     " --force");
+  CliRun r =
+      momenta("sweep " + quoted(sweep.string()) + " -o " + quoted(sweep.string()) + " --force");
   EXPECT_EQ(r.code, 1);
   EXPECT_TRUE(has(r.err, "is the sweep's own input")) << r.err;
   EXPECT_TRUE(has(slurp(sweep), "name: test sweep"));
@@ -329,14 +330,20 @@ TEST_F(FirstHourCli, SweepsRefuseWhatWouldMixLoseOrExhaust) {
   EXPECT_TRUE(has(r.err, "100000 threads on")) << r.err;
   // 10¹² Monte Carlo samples: refused with the estimate, not after seconds of allocation.
   const fs::path huge = sweep_file(
-      "huge.yaml", "  - {path: forces.suspension.stiffness, distribution: {type: normal, mean: 1e5, sd: 1e4}}\n",
+      "huge.yaml",
+      "  - {path: forces.suspension.stiffness, distribution: {type: normal, mean: 1e5, sd: 1e4}}\n",
       "  - max: body_y\n", "design: monte_carlo\nsamples: 1000000000000\nseed: 1\n");
   r = momenta("sweep " + quoted(huge.string()) + " -o " + at("h.csv"));
   EXPECT_EQ(r.code, 1);
   EXPECT_TRUE(has(r.err, "this sweep has 1e+12 runs")) << r.err;
   // The same path twice; a metric named like the file's own column or twice.
-  r = momenta("sweep " + quoted(sweep_file("twice.yaml", grid + "  - {path: forces.suspension.stiffness, name: k2, values: [1, 2]}\n").string()) +
-              " -o " + at("w.csv"));
+  r = momenta(
+      "sweep " +
+      quoted(
+          sweep_file("twice.yaml",
+                     grid + "  - {path: forces.suspension.stiffness, name: k2, values: [1, 2]}\n")
+              .string()) +
+      " -o " + at("w.csv"));
   EXPECT_EQ(r.code, 1);
   EXPECT_TRUE(has(r.err, "is varied twice")) << r.err;
   for (const std::string metrics :
@@ -359,8 +366,8 @@ TEST_F(FirstHourCli, ResumeRefusesAnotherSweepsFileOrAChangedModel) {
       "other.yaml",
       "  - {path: forces.suspension.stiffness, name: ks, values: [6e4, 9e4, 1.2e5, 1.5e5]}\n");
   fs::last_write_time(other, fs::last_write_time(dir_ / "r.csv") - std::chrono::hours(1));
-  CliRun r = momenta("sweep " + quoted(other.string()) + " -o " + at("r.csv") +
-                     " --no-timing --resume");
+  CliRun r =
+      momenta("sweep " + quoted(other.string()) + " -o " + at("r.csv") + " --no-timing --resume");
   EXPECT_EQ(r.code, 1);
   EXPECT_TRUE(has(r.err, "written by another sweep")) << r.err;
   EXPECT_EQ(slurp(dir_ / "r.csv"), written);

@@ -31,7 +31,6 @@ using test::slurp;
 
 class InertiaCli : public test::CliTest {
  protected:
-
   fs::path write_obj(const std::string& name, const inertia::TriangleMesh& mesh) const {
     std::ostringstream out;
     out.precision(17);

@@ -232,3 +232,29 @@ def test_constrained_swing_in_its_independent_coordinate():
     expected = cli_json("modes", path, "--about", "equilibrium")
     assert expected["state_names"] == ["pivot1.angle", "pivot1.angle_rate"]
     assert expected["modes"][0]["natural_frequency_rad_s"] == pytest.approx(w2 ** 0.5, rel=1e-9)
+
+
+def test_results_print_as_the_command_line_does():
+    # No "<momenta._core.X object at 0x…>": each result reads like the CLI's text, and the modes
+    # table is the very table `momenta modes` prints (one function writes both).
+    path = EXAMPLES / "flexible_satellite.yaml"
+    linear = momenta.linearize(momenta.load_model(path))
+    table = repr(momenta.modes(linear)).splitlines()
+    assert table[0] == "<momenta.Modes: 4 modes of 4 states>"
+    printed = run_cli("modes", path).splitlines()
+    start = printed.index(table[1])
+    assert printed[start:start + 5] == table[1:6]
+    cruise = momenta.linearize(momenta.load_model(EXAMPLES / "cruise_control.yaml"), outputs=["speed"])
+    info = repr(momenta.step_info(cruise.system, "u", "speed"))
+    assert info.startswith("<momenta.StepInfo final value 0.02, rise time 43.94")  # F/b, 2.197 τ
+    rigid = momenta.linearize(momenta.load_model(EXAMPLES / "satellite_attitude.yaml"), outputs=["theta"])
+    assert "final value undefined" in repr(momenta.step_info(rigid.system, "thrust", "theta"))
+    response = repr(momenta.step_response(cruise.system, "u"))
+    assert response.startswith("<momenta.TimeResponse to 'u': ") and "outputs [speed]" in response
+    hanging = momenta.find_equilibrium(momenta.load_model(EXAMPLES / "double_pendulum.yaml"))
+    assert repr(hanging).startswith("<momenta.Equilibrium q = [") and ", stable (" in repr(hanging)
+    normal = repr(momenta.undamped_modes(hanging.linear)).splitlines()
+    assert normal[0] == "<momenta.NormalModes: 2 modes, K φ = ω² M φ>"
+    assert normal[1].startswith("    1  ω² = 5.74656      ω = 2.3972 rad/s")
+    for text in [info, response, repr(hanging)] + table + normal:
+        assert "object at 0x" not in text and "nan" not in text

@@ -1,0 +1,20 @@
+#pragma once
+// The modes of a linear model as text: the table `momenta modes` prints and the Python reprs
+// of Modes and NormalModes show, written in one place.
+
+#include <string>
+
+#include "momenta/analysis/modes.hpp"
+
+namespace momenta::analysis {
+
+/// One line per mode: number, eigenvalue (1/s), ωn (rad/s and Hz), ζ (blank at λ = 0: it does
+/// not exist) and the shape's three largest entries by name, under a header line. Each line
+/// starts with two spaces.
+std::string modes_table(const Modes& modes);
+
+/// One line per undamped normal mode: ω² and ω (rad/s, Hz) — or, for ω² < 0, the rate at which
+/// it grows — and its mass-normalized shape by coordinate.
+std::string normal_modes_table(const NormalModes& modes);
+
+}  // namespace momenta::analysis

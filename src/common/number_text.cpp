@@ -1,0 +1,23 @@
+#include "momenta/common/number_text.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace momenta {
+
+std::string number_text(double x, int digits) {
+  if (!std::isfinite(x)) return "undefined";
+  if (digits <= 0) return fmt::format("{}", x + 0.0);  // the shortest text that reads back to x
+  return fmt::format("{:.{}g}", x + 0.0, digits);
+}
+
+std::string complex_text(std::complex<double> z, int digits) {
+  const double tiny = 1e-12 * std::abs(z);
+  z = {std::abs(z.real()) <= tiny ? 0.0 : z.real(), std::abs(z.imag()) <= tiny ? 0.0 : z.imag()};
+  if (z.imag() == 0.0) return number_text(z.real(), digits);
+  return fmt::format("{} {} {}j", number_text(z.real(), digits), z.imag() < 0 ? "−" : "+",
+                     number_text(std::abs(z.imag()), digits));
+}
+
+}  // namespace momenta
