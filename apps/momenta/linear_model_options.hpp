@@ -79,7 +79,5 @@ nlohmann::ordered_json complex_json(std::complex<double> z);
 void print_matrix(const char* name, const MatX& M, const std::vector<std::string>& rows,
                   const std::vector<std::string>& columns);
 // number_text and complex_text: momenta/common/number_text.hpp (shared with the Python reprs).
-using momenta::complex_text;
-using momenta::number_text;
 
 }  // namespace momenta::cli

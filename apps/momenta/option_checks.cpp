@@ -27,40 +27,36 @@ std::optional<double> parse_double(const std::string& text) {
   return value;
 }
 
-// Within ±io::kLargestNumber, as every number of an input file: products of three such numbers
-// (m ω² r, the parallel-axis m d²) stay finite, and 1e308 typed by mistake is refused at the
-// option, not printed back as inf or nan.
-bool within_bounds(double value) { return std::abs(value) <= io::kLargestNumber; }
-
-std::string beyond_bounds(const std::string& text) {
-  return fmt::format("must be within ±{:g} (far past anything physical), got {}",
-                     io::kLargestNumber, text);
+// A check of a number typed on the command line: `holds` (finite and the option's own condition,
+// `requirement` saying it) and within ±io::kLargestNumber, as every number of an input file:
+// products of three such numbers (m ω² r, m d²) stay finite, and 1e308 typed by mistake is
+// refused at the option, not printed back as inf or nan.
+template <typename Holds>
+CLI::Validator bounded_number(Holds holds, const char* requirement, const char* name) {
+  return CLI::Validator(
+      [holds, requirement](std::string& text) -> std::string {
+        const auto value = parse_double(text);
+        if (!value || !std::isfinite(*value) || !holds(*value)) {
+          return fmt::format("must be {}, got {}", requirement, text);
+        }
+        if (std::abs(*value) > io::kLargestNumber) {
+          return fmt::format("must be within ±{:g} (far past anything physical), got {}",
+                             io::kLargestNumber, text);
+        }
+        return {};
+      },
+      name);
 }
 
 }  // namespace
 
 CLI::Validator positive_finite() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        const auto value = parse_double(text);
-        if (value && std::isfinite(*value) && *value > 0) {
-          return within_bounds(*value) ? std::string() : beyond_bounds(text);
-        }
-        return fmt::format("must be a positive finite number, got {}", text);
-      },
-      "POSITIVE");
+  return bounded_number([](double x) { return x > 0; }, "a positive finite number", "POSITIVE");
 }
 
 CLI::Validator non_negative_finite() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        const auto value = parse_double(text);
-        if (value && std::isfinite(*value) && *value >= 0) {
-          return within_bounds(*value) ? std::string() : beyond_bounds(text);
-        }
-        return fmt::format("must be a finite number, zero or more, got {}", text);
-      },
-      "NONNEGATIVE");
+  return bounded_number([](double x) { return x >= 0; }, "a finite number, zero or more",
+                        "NONNEGATIVE");
 }
 
 CLI::Validator finite_within(double lo, double hi) {
@@ -74,15 +70,7 @@ CLI::Validator finite_within(double lo, double hi) {
 }
 
 CLI::Validator finite() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        const auto value = parse_double(text);
-        if (value && std::isfinite(*value)) {
-          return within_bounds(*value) ? std::string() : beyond_bounds(text);
-        }
-        return fmt::format("must be a finite number, got {}", text);
-      },
-      "NUMBER");
+  return bounded_number([](double) { return true; }, "a finite number", "NUMBER");
 }
 
 CLI::Validator whole_number_from_one(long long most) {

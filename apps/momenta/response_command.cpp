@@ -110,10 +110,7 @@ void run(const ResponseOptions& o) {
       // The figures of the analytic response, refined from these samples (exact).
       info = analysis::step_info(sys, 0, 0, grid);
       // A figure with its unit, or "undefined" alone (an integrating model has no final value).
-      const auto in = [&](double x, const char* unit) {
-        return std::isfinite(x) ? fmt::format("{}{}", number_text(x, o.digits), unit)
-                                : std::string("undefined");
-      };
+      const auto in = [&](double x, const char* unit) { return quantity_text(x, o.digits, unit); };
       summary += fmt::format(
           "unit step: final value {}, rise time {}, settling time (2 %) {}, overshoot {}, peak {} "
           "at {}\n",

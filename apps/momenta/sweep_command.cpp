@@ -130,7 +130,13 @@ std::size_t finished_prefix(const SweepOptions& o, const sweep::SweepRunner& run
   const std::vector<long> finished = sweep::read_finished_runs(o.output, header);
   const sweep::ResultsColumns written =
       sweep::read_result_columns(o.output, runner.parameter_columns());
-  for (std::size_t i = 0; i < finished.size() && i < runs.size(); ++i) {
+  for (std::size_t i = 0; i < finished.size(); ++i) {
+    if (i >= runs.size() || finished[i] != runs[i]) {
+      throw FileError(fmt::format(
+          "{}: row {} holds run {}, not run {} that this sweep{} writes there: the file was "
+          "written by another sweep or shard",
+          o.output, i + 2, finished[i], i < runs.size() ? runs[i] : -1, o.shard ? " shard" : ""));
+    }
     const std::vector<double> expected = runner.parameter_values(runs[i]);
     for (std::size_t p = 0; p < expected.size(); ++p) {
       const double value = written.values[p][i];
@@ -141,14 +147,6 @@ std::size_t finished_prefix(const SweepOptions& o, const sweep::SweepRunner& run
           "write to another file",
           o.output, i + 2, finished[i], runner.parameter_columns()[p], value, runs[i],
           runner.parameter_columns()[p], expected[p]));
-    }
-  }
-  for (std::size_t i = 0; i < finished.size(); ++i) {
-    if (i >= runs.size() || finished[i] != runs[i]) {
-      throw FileError(fmt::format(
-          "{}: row {} holds run {}, not run {} that this sweep{} writes there: the file was "
-          "written by another sweep or shard",
-          o.output, i + 2, finished[i], i < runs.size() ? runs[i] : -1, o.shard ? " shard" : ""));
     }
   }
   return finished.size();

@@ -402,9 +402,7 @@ void bind_responses(py::module_& m) {
       .def_readonly("peak_time", &StepInfo::peak_time)
       .def("__repr__", [](const StepInfo& i) {
         // As `momenta response --step` says them: a figure that does not exist is "undefined".
-        const auto in = [](double x, const char* unit) {
-          return std::isfinite(x) ? number_text(x, 6) + unit : std::string("undefined");
-        };
+        const auto in = [](double x, const char* unit) { return quantity_text(x, 6, unit); };
         return fmt::format(
             "<momenta.StepInfo final value {}, rise time {}, settling time (2 %) {}, overshoot {}, "
             "peak {} at {}>",

@@ -12,6 +12,11 @@ std::string number_text(double x, int digits) {
   return fmt::format("{:.{}g}", x + 0.0, digits);
 }
 
+std::string quantity_text(double x, int digits, std::string_view unit) {
+  if (!std::isfinite(x)) return "undefined";
+  return number_text(x, digits) + std::string(unit);
+}
+
 std::string complex_text(std::complex<double> z, int digits) {
   const double tiny = 1e-12 * std::abs(z);
   z = {std::abs(z.real()) <= tiny ? 0.0 : z.real(), std::abs(z.imag()) <= tiny ? 0.0 : z.imag()};

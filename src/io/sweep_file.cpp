@@ -189,23 +189,6 @@ Metric read_metric(const YamlNode& node) {
   return m;
 }
 
-}  // namespace
-
-namespace {
-sweep::SweepSpec compose_sweep_file(const YamlNode& root, const std::filesystem::path& dir);
-}  // namespace
-
-sweep::SweepSpec read_sweep_file(const std::filesystem::path& path) {
-  return compose_sweep_file(YamlNode::load_file(path), path.parent_path());
-}
-
-sweep::SweepSpec parse_sweep_file(const std::string& text, const std::string& file_name,
-                                  const std::filesystem::path& base_dir) {
-  return compose_sweep_file(YamlNode::load_string(text, file_name), base_dir);
-}
-
-namespace {
-
 sweep::SweepSpec compose_sweep_file(const YamlNode& root, const std::filesystem::path& dir) {
   root.expect_map("a sweep file: a map with model, parameters and metrics");
   root.check_keys(kSweepKeys);
@@ -309,5 +292,14 @@ sweep::SweepSpec compose_sweep_file(const YamlNode& root, const std::filesystem:
 }
 
 }  // namespace
+
+sweep::SweepSpec read_sweep_file(const std::filesystem::path& path) {
+  return compose_sweep_file(YamlNode::load_file(path), path.parent_path());
+}
+
+sweep::SweepSpec parse_sweep_file(const std::string& text, const std::string& file_name,
+                                  const std::filesystem::path& base_dir) {
+  return compose_sweep_file(YamlNode::load_string(text, file_name), base_dir);
+}
 
 }  // namespace momenta::io

@@ -6,7 +6,6 @@
 #include <map>
 #include <numbers>
 #include <optional>
-#include <set>
 #include <sstream>
 #include <string_view>
 #include <system_error>
@@ -104,50 +103,42 @@ bool quote_closes(std::string_view text, std::size_t start) {
   return false;
 }
 
-// The checks a document passes before any reader walks it, each written node visited once.
-// yaml-cpp hands an alias the very node its anchor names (with the anchor's mark), so a node is
-// told apart by where it is written and what it is. A walk that followed every alias again would
-// never end on a "billion laughs" file: 9 levels of 9 aliases in 1.2 kB stand for 387 million
-// nodes.
+// The checks a document passes before any reader walks it, in one walk that visits each written
+// node once. yaml-cpp hands an alias the very node its anchor names (with the anchor's mark), so
+// a node is told apart by where it is written and what it is. A walk that followed every alias
+// again would never end on a "billion laughs" file: 9 levels of 9 aliases in 1.2 kB stand for
+// 387 million nodes.
 class DocumentCheck {
  public:
   /// Most nodes a document may stand for once its aliases are expanded: generous for any model,
   /// part or sweep file, and a fraction of a second for a reader to walk.
   static constexpr std::size_t kExpandedNodeLimit = 1'000'000;
 
-  explicit DocumentCheck(std::string_view text) : text_(text) {}
-
-  // The mark of the first quoted scalar under `node` (keys included) that never closes.
-  std::optional<YAML::Mark> unterminated_quote(const YAML::Node& node) {
-    if (!first_visit(node, quotes_checked_)) return std::nullopt;
-    if (node.IsScalar()) {
-      const YAML::Mark mark = node.Mark();
-      const auto pos = static_cast<std::size_t>(mark.pos);
-      const bool quoted = node.Tag() == "!" && mark.pos >= 0 && pos < text_.size() &&
-                          (text_[pos] == '"' || text_[pos] == '\'');
-      if (quoted && !quote_closes(text_, pos)) return mark;
-      return std::nullopt;
-    }
-    if (node.IsSequence()) {
-      for (const auto& item : node) {
-        if (auto mark = unterminated_quote(item)) return mark;
-      }
-    } else if (node.IsMap()) {
-      for (const auto& entry : node) {
-        if (auto mark = unterminated_quote(entry.first)) return mark;
-        if (auto mark = unterminated_quote(entry.second)) return mark;
-      }
-    }
-    return std::nullopt;
+  DocumentCheck(const YAML::Node& root, std::string_view text) : text_(text) {
+    expanded_size_ = expanded_size(root);
   }
 
+  /// Whether the document stands for more than kExpandedNodeLimit nodes, and where: the first
+  /// node whose own expansion crosses the limit (its parts each within it).
+  std::optional<YAML::Mark> overflow() const {
+    if (expanded_size_ <= kExpandedNodeLimit) return std::nullopt;
+    return overflow_;
+  }
+  /// The mark of the first quoted scalar (keys included) that never closes.
+  const std::optional<YAML::Mark>& unterminated_quote() const { return unterminated_quote_; }
+
+ private:
+  using NodeKey = std::pair<int, int>;  // the node's offset in the text, its type
+
   // How many nodes `node` stands for with every alias expanded, counted up to just past
-  // kExpandedNodeLimit. The first node whose own expansion crosses the limit (its parts each
-  // within it) is kept in `overflow`, where the file is refused.
+  // kExpandedNodeLimit; checks each scalar's quotes on the way.
   std::size_t expanded_size(const YAML::Node& node) {
     const auto key = key_of(node);
     if (key) {
       if (const auto known = expanded_.find(*key); known != expanded_.end()) return known->second;
+    }
+    if (node.IsScalar() && !unterminated_quote_ && !quote_closes_at(node)) {
+      unterminated_quote_ = node.Mark();
     }
     std::size_t size = 1;
     bool part_over = false;
@@ -164,15 +155,19 @@ class DocumentCheck {
         add(entry.second);
       }
     }
-    if (size > kExpandedNodeLimit && !part_over && !overflow) overflow = node.Mark();
+    if (size > kExpandedNodeLimit && !part_over && !overflow_) overflow_ = node.Mark();
     if (key) expanded_.emplace(*key, size);
     return size;
   }
 
-  std::optional<YAML::Mark> overflow;
-
- private:
-  using NodeKey = std::pair<int, int>;  // the node's offset in the text, its type
+  // False for a quoted scalar whose quote never closes; true for every other scalar.
+  bool quote_closes_at(const YAML::Node& scalar) const {
+    const YAML::Mark mark = scalar.Mark();
+    const auto pos = static_cast<std::size_t>(mark.pos);
+    const bool quoted = scalar.Tag() == "!" && mark.pos >= 0 && pos < text_.size() &&
+                        (text_[pos] == '"' || text_[pos] == '\'');
+    return !quoted || quote_closes(text_, pos);
+  }
 
   static std::optional<NodeKey> key_of(const YAML::Node& node) {
     if (node.Mark().pos < 0 || !(node.IsScalar() || node.IsSequence() || node.IsMap())) {
@@ -181,14 +176,11 @@ class DocumentCheck {
     return NodeKey{node.Mark().pos, static_cast<int>(node.Type())};
   }
 
-  static bool first_visit(const YAML::Node& node, std::set<NodeKey>& visited) {
-    const auto key = key_of(node);
-    return !key || visited.insert(*key).second;
-  }
-
   std::string_view text_;
-  std::set<NodeKey> quotes_checked_;
   std::map<NodeKey, std::size_t> expanded_;
+  std::size_t expanded_size_ = 0;
+  std::optional<YAML::Mark> overflow_;
+  std::optional<YAML::Mark> unterminated_quote_;
 };
 
 std::string join_quoted(std::span<const std::string_view> words) {
@@ -226,15 +218,15 @@ YamlNode YamlNode::load_string(const std::string& text, const std::string& file_
   if (!root.IsDefined() || root.IsNull()) {
     throw ParseError(file_name, 0, 0, "the file holds no YAML document (it is empty)");
   }
-  DocumentCheck check(text);
-  if (check.expanded_size(root) > DocumentCheck::kExpandedNodeLimit) {
-    const auto [line, column] = position_of(*check.overflow);
+  const DocumentCheck check(root, text);
+  if (const auto overflow = check.overflow()) {
+    const auto [line, column] = position_of(*overflow);
     throw ParseError(file_name, line, column,
                      fmt::format("this node's aliases (*name) expand it to more than {} nodes; "
                                  "write the repeated parts out, or alias them fewer times",
                                  DocumentCheck::kExpandedNodeLimit));
   }
-  if (const auto mark = check.unterminated_quote(root)) {
+  if (const auto& mark = check.unterminated_quote()) {
     const auto [line, column] = position_of(*mark);
     throw ParseError(file_name, line, column,
                      fmt::format("malformed YAML: this quoted string has no closing {} (it runs "
