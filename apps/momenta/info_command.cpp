@@ -16,6 +16,8 @@
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
 #include "momenta/io/model_file.hpp"
+#include "momenta/model/units.hpp"
+#include "momenta/system/freedoms.hpp"
 #include "momenta/system/multibody_system.hpp"
 #include "momenta/system/output_set.hpp"
 #include "output_format.hpp"
@@ -188,6 +190,23 @@ std::string signal_text(const json& j) {
   return text;
 }
 
+// "1 (3 joint speeds, 1 prescribed, 2 independent constraint rows of 3)", or "2" alone when
+// nothing takes any.
+std::string freedoms_text(const json& f) {
+  const int speeds = f["speeds"], prescribed = f["prescribed"];
+  const int rows = f["constraint_rows"], independent = f["independent_constraint_rows"];
+  std::string text = std::to_string(f["free"].get<int>());
+  if (prescribed == 0 && rows == 0) return text;
+  text += fmt::format(" ({} joint speed{}", speeds, speeds == 1 ? "" : "s");
+  if (prescribed > 0) text += fmt::format(", {} prescribed", prescribed);
+  if (rows > 0) {
+    text +=
+        fmt::format(", {} independent constraint row{}", independent, independent == 1 ? "" : "s");
+    if (independent < rows) text += fmt::format(" of {}", rows);
+  }
+  return text + ")";
+}
+
 // Everything `info` reports, as JSON; the text form prints from it.
 json describe(const InfoOptions& o, const io::ModelFile& file) {
   const model::Model& m = file.model;
@@ -198,6 +217,12 @@ json describe(const InfoOptions& o, const io::ModelFile& file) {
   j["description"] = file.description;
   j["gravity"] = vec_json(m.gravity());
   j["nq"] = m.nq();
+  const system::Freedoms freedoms = system::count_freedoms(m);
+  j["degrees_of_freedom"] = {{"free", freedoms.free()},
+                             {"speeds", freedoms.speeds},
+                             {"prescribed", freedoms.prescribed},
+                             {"constraint_rows", freedoms.constraint_rows},
+                             {"independent_constraint_rows", freedoms.independent_rows}};
   j["nv"] = m.nv();
   j["total_mass"] = m.total_mass();
   j["conserves_energy"] = system.conserves_energy();
@@ -220,11 +245,11 @@ json describe(const InfoOptions& o, const io::ModelFile& file) {
   for (const model::Joint& joint : m.joints()) {
     json q = json::array(), v = json::array();
     for (int i = 0; i < joint.nq(); ++i)
-      q.push_back({{"column", fmt::format("{}.q{}", joint.name, i)},
-                   {"name", m.q_name(joint.q_index + i)}});
+      q.push_back(
+          {{"name", m.q_name(joint.q_index + i)}, {"unit", model::q_unit(m, joint.q_index + i)}});
     for (int i = 0; i < joint.nv(); ++i)
-      v.push_back({{"column", fmt::format("{}.v{}", joint.name, i)},
-                   {"name", m.v_name(joint.v_index + i)}});
+      v.push_back(
+          {{"name", m.v_name(joint.v_index + i)}, {"unit", model::v_unit(m, joint.v_index + i)}});
     json entry = {{"name", joint.name},          {"type", model::joint_type_name(joint.type)},
                   {"parent", joint.parent},      {"child", joint.child},
                   {"q_index", joint.q_index},    {"v_index", joint.v_index},
@@ -270,7 +295,8 @@ void print_text(const json& j, const io::ModelFile& file) {
   const model::Model& m = file.model;
   fmt::print("{} ({})\n", j["name"].get<std::string>(), j["file"].get<std::string>());
   if (!file.description.empty()) fmt::print("{}\n", file.description);
-  fmt::print("\ndegrees of freedom  nq {}, nv {}\n", m.nq(), m.nv());
+  fmt::print("\ndegrees of freedom  {}\n", freedoms_text(j["degrees_of_freedom"]));
+  fmt::print("coordinates         nq {}, nv {}\n", m.nq(), m.nv());
   fmt::print("gravity             {} m/s²\n", vec_text(m.gravity()));
   fmt::print("total mass          {:.9g} kg\n", m.total_mass());
   fmt::print("conserves           energy: {}; angular momentum about the centre of mass: {}\n",
@@ -300,13 +326,13 @@ void print_text(const json& j, const io::ModelFile& file) {
     if (joint.damping > 0.0) fmt::print(", damping {:.6g}", joint.damping);
     fmt::print("\n");
     for (int i = 0; i < joint.nq(); ++i) {
-      fmt::print("    {}.q{}  {}", joint.name, i, m.q_name(joint.q_index + i));
+      fmt::print("    {}  {}", m.q_name(joint.q_index + i), model::q_unit(m, joint.q_index + i));
       if (joint.is_prescribed() && joint.nq() == joint.nv())
         fmt::print("  prescribed by signal {}", joint.prescribed_signals[i]);
       fmt::print("\n");
     }
     for (int i = 0; i < joint.nv(); ++i)
-      fmt::print("    {}.v{}  {}\n", joint.name, i, m.v_name(joint.v_index + i));
+      fmt::print("    {}  {}\n", m.v_name(joint.v_index + i), model::v_unit(m, joint.v_index + i));
     if (joint.is_prescribed() && joint.nq() != joint.nv()) {
       fmt::print("    prescribed by signals {} ({})\n", fmt::join(joint.prescribed_signals, ", "),
                  joint.type == model::JointType::free ? "rotation vector, then position"

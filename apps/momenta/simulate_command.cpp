@@ -131,10 +131,10 @@ std::function<void(double)> progress_line(double duration) {
 
 // The report of the rows a run recorded (all of them, or those up to the failure it names).
 void write_run_report(const SimulateOptions& o, const io::ModelFile& file,
-                      const simulate::SimulationOptions& options, simulate::TableSink& table,
+                      const simulate::Simulation& simulation, simulate::TableSink& table,
                       const simulate::SimulationSummary& summary, std::string stop_reason) {
   const report::SimulationRun run =
-      report::make_run(file, options, std::move(table), summary, std::move(stop_reason));
+      report::make_run(file, simulation, std::move(table), summary, std::move(stop_reason));
   if (run.rows.empty()) return;  // nothing was recorded: the error says why
   report::write_report(*o.report, report::simulation_report_html(run, o.linear), o.force);
   fmt::print(stderr, "momenta: wrote the report {}\n", *o.report);
@@ -203,7 +203,7 @@ void run(const SimulateOptions& o) {
   } catch (const NumericalError& e) {
     clear_progress();
     writer.reset();
-    if (o.report) write_run_report(o, file, options, table, summary, e.what());
+    if (o.report) write_run_report(o, file, simulation, table, summary, e.what());
     throw;
   } catch (...) {
     clear_progress();
@@ -211,7 +211,7 @@ void run(const SimulateOptions& o) {
   }
   clear_progress();
   writer.reset();  // closes the file before the summary says it is written
-  if (o.report) write_run_report(o, file, options, table, summary, "");
+  if (o.report) write_run_report(o, file, simulation, table, summary, "");
   if (!o.csv) {
     fmt::print(stderr, "momenta: simulated {} ({}) for {} s; {} rows\n", file.name, o.model,
                summary.t_end, summary.rows);

@@ -27,7 +27,7 @@ run = momenta.simulate(model, integrator="splitting", dt=1e-3)
 fig, (ax_w, ax_audit) = plt.subplots(2, 1, sharex=True, figsize=(8, 6))
 # The free joint's velocity starts with ω in the body frame: the flips show as ω_y changing sign.
 for k, axis in enumerate("xyz"):
-    ax_w.plot(run.time, run[f"free.v{k}"], label=f"ω_{axis} (body)")
+    ax_w.plot(run.time, run[f"free.w{axis}"], label=f"ω_{axis} (body)")
 ax_w.set_ylabel("ω (rad/s)")
 ax_w.legend(loc="upper right")
 ax_w.grid(True, alpha=0.3)
@@ -44,7 +44,7 @@ audit = {entry["name"]: entry for entry in run.audit}
 print(run.summary_text)
 # The flips: ω_y changes sign every half period 2K(k)/λ of the Jacobi functions that solve
 # Euler's equations (Landau & Lifshitz §37); the test checks the interval against that closed form.
-w_y = run["free.v1"]
+w_y = run["free.wy"]
 turns = np.nonzero(np.sign(w_y[1:]) != np.sign(w_y[:-1]))[0]
 crossings = [run.time[i] - w_y[i] * (run.time[i + 1] - run.time[i]) / (w_y[i + 1] - w_y[i])
              for i in turns]

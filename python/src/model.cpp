@@ -9,6 +9,7 @@
 #include "bindings.hpp"
 #include "model_handle.hpp"
 #include "momenta/frontend/model_loading.hpp"
+#include "momenta/system/freedoms.hpp"
 
 namespace momenta::python {
 namespace {
@@ -79,7 +80,13 @@ joint order: q (nq, quaternions as w, x, y, z) and v (nv); names in q_names and 
           "nq", [](const ModelHandle& h) { return h.model().nq(); }, "Size of the configuration q.")
       .def_property_readonly(
           "nv", [](const ModelHandle& h) { return h.model().nv(); },
-          "Size of the velocity v (degrees of freedom).")
+          "Size of the velocity v (the joints' speeds, before prescribed motion and constraints "
+          "take theirs: see degrees_of_freedom).")
+      .def_property_readonly(
+          "degrees_of_freedom",
+          [](const ModelHandle& h) { return system::count_freedoms(h.model()).free(); },
+          "Independent speeds left once prescribed joints and constraints take theirs: nv − "
+          "prescribed − independent constraint rows (a four-bar: 1; driven by its crank: 0).")
       .def_property_readonly(
           "q_names",
           [](const ModelHandle& h) {

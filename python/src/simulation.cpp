@@ -54,6 +54,7 @@ class BufferSink final : public simulate::RowSink {
 struct SimulationResult {
   std::shared_ptr<const io::ModelFile> file;  // the model run, for the report
   std::vector<std::string> columns;
+  std::vector<std::string> units;  // each column's, as Simulation::column_units
   py::array_t<double> data;
   simulate::SimulationSummary summary;
   simulate::SimulationOptions options;
@@ -124,6 +125,7 @@ SimulationResult run_simulation(const ModelHandle& h, std::optional<double> dura
   result.file = h.file;
   result.options = resolved.options;
   result.thinning_note = resolved.thinning_note;
+  result.units = simulation.column_units();
   try {
     result.summary = simulation.run(sink);
   } catch (const Interrupted&) {
@@ -152,6 +154,7 @@ std::filesystem::path write_result_report(const SimulationResult& r,
   report::SimulationRun run;
   run.file = r.file.get();
   run.columns = r.columns;
+  run.units = r.units;
   run.options = r.options;
   run.summary = r.summary;
   run.stop_reason = r.stop_reason;
@@ -183,11 +186,21 @@ std::filesystem::path write_result_report(const SimulationResult& r,
 
 void bind_simulation(py::module_& m) {
   py::class_<SimulationResult>(m, "SimulationResult", R"doc(
-The table of a run: one row per recorded step, the columns of `momenta simulate` (time,
-<joint>.q<i>, <joint>.v<i>, energies, H, the model's outputs, reactions, audit.*), as one
+The table of a run: one row per recorded step, the columns of `momenta simulate` (time, every
+coordinate and speed by its name in model.q_names and model.v_names, energies, H, the model's outputs, reactions, audit.*), as one
 (rows, columns) float64 array `data`. result['time'] or result.time gives a column (a view);
 result.audit the conservation audit; result.summary what the run did; to_pandas() a DataFrame.)doc")
       .def_readonly("columns", &SimulationResult::columns, "Column names, in order.")
+      .def_property_readonly(
+          "units",
+          [](const SimulationResult& r) {
+            py::dict d;
+            for (std::size_t i = 0; i < r.columns.size(); ++i)
+              d[py::str(r.columns[i])] = r.units[i];
+            return d;
+          },
+          "Each column's SI unit by name: {'time': 's', 'pivot.angle': 'rad', ...}; '1' for a "
+          "relative drift.")
       .def_readonly("data", &SimulationResult::data, "The table, (rows, columns).")
       .def_property_readonly(
           "time", [](const SimulationResult& r) { return r.column(0); }, "Times of the rows, s.")

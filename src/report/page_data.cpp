@@ -102,48 +102,4 @@ json equivalent_ellipsoid_json(const inertia::MassProperties& mp) {
           {"center", vec_json(mp.center_of_mass())}};
 }
 
-std::string q_unit(const model::Model& model, int i) {
-  for (const model::Joint& j : model.joints()) {
-    if (i < j.q_index || i >= j.q_index + j.nq()) continue;
-    const int k = i - j.q_index;
-    switch (j.type) {
-      case model::JointType::revolute:
-        return "rad";
-      case model::JointType::prismatic:
-        return "m";
-      case model::JointType::cylindrical:
-        return k == 0 ? "rad" : "m";
-      case model::JointType::planar:
-        return k < 2 ? "m" : "rad";
-      case model::JointType::free:
-        return k < 3 ? "m" : "1";
-      case model::JointType::spherical:
-        return "1";
-      default:
-        return "rad";
-    }
-  }
-  return "";
-}
-
-std::string v_unit(const model::Model& model, int i) {
-  for (const model::Joint& j : model.joints()) {
-    if (i < j.v_index || i >= j.v_index + j.nv()) continue;
-    const int k = i - j.v_index;
-    switch (j.type) {
-      case model::JointType::prismatic:
-        return "m/s";
-      case model::JointType::cylindrical:
-        return k == 0 ? "rad/s" : "m/s";
-      case model::JointType::planar:
-        return k < 2 ? "m/s" : "rad/s";
-      case model::JointType::free:
-        return k < 3 ? "rad/s" : "m/s";
-      default:
-        return "rad/s";
-    }
-  }
-  return "";
-}
-
 }  // namespace momenta::report::detail

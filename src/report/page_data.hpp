@@ -39,9 +39,4 @@ std::string escape_html(const std::string& text);
 /// The HTML page: `data` (kind "simulation" or "inertia") with the embedded front-end.
 std::string html_page(const std::string& title, const json& data);
 
-/// The unit of configuration coordinate i and of velocity coordinate i of `model` ("rad", "m",
-/// "1" for quaternion components; "rad/s", "m/s").
-std::string q_unit(const model::Model& model, int i);
-std::string v_unit(const model::Model& model, int i);
-
 }  // namespace momenta::report::detail

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <string_view>
 #include <variant>
 
@@ -19,95 +20,53 @@ struct Group {
   std::vector<int> columns;
 };
 
-std::string output_unit(model::OutputQuantity quantity) {
-  using Q = model::OutputQuantity;
-  switch (quantity) {
-    case Q::body_position:
-      return "m";
-    case Q::body_velocity:
-      return "m/s";
-    case Q::body_acceleration:
-    case Q::transport_acceleration:
-    case Q::coriolis_acceleration:
-    case Q::centripetal_acceleration:
-    case Q::euler_acceleration:
-      return "m/s²";
-    case Q::transport_velocity:
-      return "m/s";
-    case Q::body_angular_velocity:
-      return "rad/s";
-    case Q::reaction_force:
-      return "N";
-    case Q::reaction_moment:
-      return "N·m";
-    case Q::spring_length:
-      return "m";
-    case Q::spring_tension:
-      return "N";
-    default:
-      return "";
-  }
-}
-
 bool starts_with(const std::string& text, const std::string& prefix) {
   return text.starts_with(prefix);
 }
 
 // Which group a column belongs to: coordinates and speeds by unit, energies, momentum, each
-// output, reactions, the audit.
-std::vector<Group> group_columns(const io::ModelFile& file,
-                                 const std::vector<std::string>& columns) {
+// output, reactions, the audit. Each group's unit is its columns' (Simulation::column_units).
+std::vector<Group> group_columns(const io::ModelFile& file, const std::vector<std::string>& columns,
+                                 const std::vector<std::string>& units) {
   const model::Model& model = file.model;
   std::vector<Group> groups;
   std::map<std::string, std::size_t> by_title;
-  const auto add = [&](const std::string& title, const std::string& unit, bool log, int c) {
+  const auto add = [&](const std::string& title, bool log, int c) {
     auto [it, inserted] = by_title.try_emplace(title, groups.size());
-    if (inserted) groups.push_back({title, unit, log, {}});
+    if (inserted) groups.push_back({title, units[c], log, {}});
     groups[it->second].columns.push_back(c);
   };
-  // Constraint force columns ("<constraint>.<label>"): moments by their label, a coupler's
-  // efforts in the unit of its joints' coordinates.
-  std::map<std::string, std::string> constraint_units;
+  std::set<std::string> constraint_columns;
   for (const model::Constraint& constraint : model.constraints()) {
-    const std::string name = model::constraint_name(constraint);
     for (const std::string_view label : model::constraint_force_labels(constraint)) {
-      std::string unit = label.starts_with("reaction.M") ? "N·m" : "N";
-      if (const auto* coupler = std::get_if<model::JointCoupler>(&constraint)) {
-        const model::Joint& joint =
-            model.joint(label == "effort_a" ? coupler->joint_a_index : coupler->joint_b_index);
-        unit = q_unit(model, joint.q_index) == "rad" ? "N·m" : "N";
-      }
-      constraint_units[name + "." + std::string(label)] = unit;
+      constraint_columns.insert(model::constraint_name(constraint) + "." + std::string(label));
     }
   }
   const int nq = model.nq(), nv = model.nv();
   for (int c = 1; c < static_cast<int>(columns.size()); ++c) {
     const std::string& name = columns[c];
-    if (const auto force = constraint_units.find(name); force != constraint_units.end()) {
-      add(force->second == "N" ? "Constraint forces (N)" : "Constraint moments and efforts (N·m)",
-          force->second, false, c);
+    if (constraint_columns.contains(name)) {
+      add(units[c] == "N" ? "Constraint forces (N)" : "Constraint moments and efforts (N·m)", false,
+          c);
     } else if (c <= nq) {
-      const std::string unit = q_unit(model, c - 1);
-      add("Coordinates (" + unit + ")", unit, false, c);
+      add("Coordinates (" + units[c] + ")", false, c);
     } else if (c <= nq + nv) {
-      const std::string unit = v_unit(model, c - 1 - nq);
-      add("Speeds (" + unit + ")", unit, false, c);
+      add("Speeds (" + units[c] + ")", false, c);
     } else if (starts_with(name, "energy_")) {
-      add("Energy", "J", false, c);
+      add("Energy", false, c);
     } else if (starts_with(name, "H_")) {
-      add("Angular momentum about the centre of mass, in W", "kg·m²/s", false, c);
+      add("Angular momentum about the centre of mass, in W", false, c);
     } else if (starts_with(name, "audit.")) {
-      add("Conservation audit (drift, log scale)", "", true, c);
+      add("Conservation audit (drift, log scale)", true, c);
     } else if (name.find(".reaction.F") != std::string::npos) {
-      add("Joint reaction forces, in W", "N", false, c);
+      add("Joint reaction forces, in W", false, c);
     } else if (name.find(".reaction.M") != std::string::npos) {
-      add("Joint reaction moments about J'o, in W", "N·m", false, c);
+      add("Joint reaction moments about J'o, in W", false, c);
     } else {
       const auto spec = std::find_if(file.outputs.begin(), file.outputs.end(), [&](const auto& s) {
         return name == s.name || starts_with(name, s.name + ".");
       });
-      const std::string title = spec != file.outputs.end() ? "Output " + spec->name : name;
-      add(title, spec != file.outputs.end() ? output_unit(spec->quantity) : "", false, c);
+      add(spec != file.outputs.end() ? "Output " + spec->name : name, false, c);
     }
   }
   return groups;
@@ -145,7 +104,7 @@ json plots_json(const SimulationRun& run) {
     }
   }
   json groups = json::array();
-  for (const Group& g : group_columns(*run.file, run.columns)) {
+  for (const Group& g : group_columns(*run.file, run.columns, run.units)) {
     json members = json::array();
     for (const int c : g.columns) {
       members.push_back({{"name", run.columns[c]}, {"data", encode_f64(series[c])}});

@@ -8,6 +8,7 @@
 #include "momenta/common/error.hpp"
 #include "momenta/model/integrators.hpp"
 #include "momenta/report/report.hpp"
+#include "momenta/system/freedoms.hpp"
 #include "sections.hpp"
 
 namespace momenta::report {
@@ -54,7 +55,8 @@ json summary_json(const SimulationRun& run, double fastest_rate) {
           {"file", file.file},
           {"bodies", file.model.num_bodies() - 1},
           {"joints", file.model.num_joints()},
-          {"dof", file.model.nv()},
+          {"dof", system::count_freedoms(file.model).free()},
+          {"speeds", file.model.nv()},
           {"nq", file.model.nq()},
           {"integrator", s.integrator},
           {"order", s.order >= model::kExactOrder ? json("exact") : json(s.order)},
@@ -73,12 +75,14 @@ json summary_json(const SimulationRun& run, double fastest_rate) {
 }  // namespace
 }  // namespace detail
 
-SimulationRun make_run(const io::ModelFile& file, const simulate::SimulationOptions& options,
+SimulationRun make_run(const io::ModelFile& file, const simulate::Simulation& simulation,
                        simulate::TableSink&& table, simulate::SimulationSummary summary,
                        std::string stop_reason) {
+  const simulate::SimulationOptions& options = simulation.options();
   SimulationRun run;
   run.file = &file;
   run.options = options;
+  run.units = simulation.column_units();
   run.summary = stop_reason.empty() ? std::move(summary)
                                     : simulate::summary_of_stopped_run(
                                           options, static_cast<long>(table.rows.size()),
@@ -95,10 +99,10 @@ SimulationRun simulate_for_report(const io::ModelFile& file, simulate::Simulatio
   simulate::TableSink table;
   try {
     simulate::SimulationSummary summary = simulation.run(table);
-    return make_run(file, options, std::move(table), std::move(summary), "");
+    return make_run(file, simulation, std::move(table), std::move(summary), "");
   } catch (const NumericalError& e) {
     // The rows up to the failure are the report; the reason heads it.
-    return make_run(file, options, std::move(table), {}, e.what());
+    return make_run(file, simulation, std::move(table), {}, e.what());
   }
 }
 
@@ -107,6 +111,10 @@ std::string simulation_report_html(const SimulationRun& run, const LinearSetting
     throw InvalidArgument("simulation_report_html: the run names no model file");
   if (run.rows.empty() || run.columns.empty()) {
     throw InvalidArgument("simulation_report_html: the run recorded no rows");
+  }
+  if (run.units.size() != run.columns.size()) {
+    throw InvalidArgument(fmt::format("simulation_report_html: {} units for {} columns",
+                                      run.units.size(), run.columns.size()));
   }
   double fastest_rate = 0.0;
   detail::json linear_section = detail::linear_json(*run.file, linear, fastest_rate);

@@ -14,6 +14,7 @@
 #include "momenta/dynamics/reactions.hpp"
 #include "momenta/integrate/run.hpp"
 #include "momenta/model/integrators.hpp"
+#include "momenta/model/units.hpp"
 #include "momenta/system/integrators.hpp"
 #include "momenta/system/multibody_system.hpp"
 #include "momenta/system/rigid_body_integrator.hpp"
@@ -86,26 +87,38 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
                     options_.integrator));
   }
 
-  // The columns that do not depend on what the model conserves.
-  columns_.push_back("time");
-  for (const model::Joint& j : model.joints())
-    for (int i = 0; i < j.nq(); ++i) columns_.push_back(fmt::format("{}.q{}", j.name, i));
-  for (const model::Joint& j : model.joints())
-    for (int i = 0; i < j.nv(); ++i) columns_.push_back(fmt::format("{}.v{}", j.name, i));
-  for (const char* name :
-       {"energy_kinetic", "energy_potential", "energy_total", "H_x", "H_y", "H_z"})
-    columns_.push_back(name);
-  for (const std::string& name : outputs_.column_names()) columns_.push_back(name);
+  // The columns that do not depend on what the model conserves, each with its unit.
+  const auto add = [this](std::string name, std::string unit) {
+    columns_.push_back(std::move(name));
+    units_.push_back(std::move(unit));
+  };
+  add("time", "s");
+  for (int i = 0; i < model.nq(); ++i) add(model.q_name(i), model::q_unit(model, i));
+  for (int i = 0; i < model.nv(); ++i) add(model.v_name(i), model::v_unit(model, i));
+  for (const char* name : {"energy_kinetic", "energy_potential", "energy_total"}) add(name, "J");
+  for (const char* name : {"H_x", "H_y", "H_z"}) add(name, "kg·m²/s");
+  for (std::size_t c = 0; c < outputs_.size(); ++c) {
+    add(outputs_.column_names()[c], outputs_.column_units()[c]);
+  }
   if (options_.reactions) {
-    for (const model::Joint& j : model.joints())
-      for (const char* suffix : kReactionSuffixes)
-        columns_.push_back(fmt::format("{}.reaction.{}", j.name, suffix));
-    for (const model::Constraint& c : model.constraints())
-      for (const std::string_view label : model::constraint_force_labels(c))
-        columns_.push_back(fmt::format("{}.{}", model::constraint_name(c), label));
+    for (const model::Joint& j : model.joints()) {
+      for (int k = 0; k < 6; ++k) {
+        add(fmt::format("{}.reaction.{}", j.name, kReactionSuffixes[k]), k < 3 ? "N" : "N·m");
+      }
+    }
+    for (std::size_t c = 0; c < model.constraints().size(); ++c) {
+      const auto labels = model::constraint_force_labels(model.constraints()[c]);
+      for (std::size_t k = 0; k < labels.size(); ++k) {
+        add(fmt::format("{}.{}", model::constraint_name(model.constraints()[c]), labels[k]),
+            model::output_unit(model, model::OutputQuantity::constraint_force, static_cast<int>(c),
+                               static_cast<int>(k)));
+      }
+    }
   }
 
-  // The audit columns, where the model should conserve the quantity.
+  // The audit columns, where the model should conserve the quantity: energy and momentum
+  // drifts are relative (1), the quaternion norm error too, the constraint residuals in the
+  // rows' own units (m or rad, m/s or rad/s: "" for the mixture).
   const MultibodySystem system(model);
   // A run integrate::run would refuse (a step below time's resolution, 1e10 steps) is refused
   // here, before a front end opens any output.
@@ -114,15 +127,15 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
   run_options.h = options_.step;
   integrate::check_run(system, *integrator_,
                        integrate::State{0.0, model.initial_q(), model.initial_v()}, run_options);
-  if (system.conserves_energy()) columns_.push_back("audit.energy_drift");
+  if (system.conserves_energy()) add("audit.energy_drift", "1");
   if (system.conserves_angular_momentum()) {
-    columns_.push_back("audit.H_norm_drift");
-    columns_.push_back("audit.H_drift");
+    add("audit.H_norm_drift", "1");
+    add("audit.H_drift", "1");
   }
-  if (!quaternion_offsets(model).empty()) columns_.push_back("audit.quaternion_norm_error");
+  if (!quaternion_offsets(model).empty()) add("audit.quaternion_norm_error", "1");
   if (model.has_constraints()) {
-    columns_.push_back("audit.constraint_position");
-    columns_.push_back("audit.constraint_velocity");
+    add("audit.constraint_position", "");
+    add("audit.constraint_velocity", "");
   }
 
   // A name used twice (an output called "time", a joint "a" with a coordinate column that an

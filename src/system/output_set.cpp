@@ -14,6 +14,7 @@
 #include "momenta/dynamics/point_kinematics.hpp"
 #include "momenta/dynamics/reactions.hpp"
 #include "momenta/dynamics/relative_kinematics.hpp"
+#include "momenta/model/units.hpp"
 #include "momenta/system/multibody_system.hpp"
 
 namespace momenta::system {
@@ -196,6 +197,7 @@ OutputSet::OutputSet(const model::Model& model, std::vector<OutputSpec> specs)
             "output '{}': column '{}' is already taken by another output", spec.name, column));
       }
       columns_.push_back(std::move(column));
+      units_.push_back(model::output_unit(model, spec.quantity, index, k));
       resolved_.push_back({s, index, k, frame});
     }
     needs_reactions_ = needs_reactions_ || spec.quantity == OutputQuantity::reaction_force ||

@@ -96,8 +96,8 @@ test('double pendulum: positions equal the CSV, every column plotted, poles and 
   // Every column but time is a plotted series, with its values (every row: no thinning below 2000 rows
   // does not apply here, so check the envelope holds the column's extremes).
   assert.deepEqual([...r.hook.series].sort(), table.header.slice(1).sort());
-  const theta = await r.page.evaluate(() => window.momentaReport.seriesValues('upper.q0'));
-  const column = table.column('upper.q0');
+  const theta = await r.page.evaluate(() => window.momentaReport.seriesValues('upper.angle'));
+  const column = table.column('upper.angle');
   assert.equal(Math.max(...theta), Math.max(...column));
   assert.equal(Math.min(...theta), Math.min(...column));
   await r.page.close();

@@ -97,8 +97,8 @@ TEST_F(SimulateCli, HeaderWithReactionsAndCsvOnStdout) {
   ASSERT_EQ(r.code, 0) << r.err;
   const Csv csv = parse_csv(r.out);
   const std::vector<std::string> expected = {"time",
-                                             "pivot.q0",
-                                             "pivot.v0",
+                                             "pivot.angle",
+                                             "pivot.angle_rate",
                                              "energy_kinetic",
                                              "energy_potential",
                                              "energy_total",
@@ -245,12 +245,17 @@ TEST_F(SimulateCli, InfoJsonDescribesTheModel) {
   EXPECT_EQ(j.at("bodies")[1].at("name"), "mass2");
   EXPECT_EQ(j.at("bodies")[1].at("mass").get<double>(), 1.0);
   EXPECT_EQ(j.at("joints")[1].at("parent"), "mass1");
-  EXPECT_EQ(j.at("joints")[1].at("coordinates")[0].at("column"), "lower.q0");
+  // One name for a coordinate: the CSV column, Model::q_name and Python's q_names agree.
+  EXPECT_EQ(j.at("joints")[1].at("coordinates")[0].at("name"), "lower.angle");
+  EXPECT_EQ(j.at("joints")[1].at("coordinates")[0].at("unit"), "rad");
+  EXPECT_EQ(j.at("joints")[1].at("speeds")[0].at("unit"), "rad/s");
+  EXPECT_EQ(j.at("degrees_of_freedom").at("free"), 2);
   EXPECT_EQ(j.at("conserves_energy"), true);
   EXPECT_EQ(j.at("outputs")[2].at("columns"), json({"tip.x", "tip.y", "tip.z"}));
   // The text form names the same things.
   const CliRun text = momenta("info " + quoted(model));
   ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("degrees of freedom  2\n"), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("nq 2, nv 2"), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("lower  revolute, mass1 → mass2"), std::string::npos) << text.out;
 }
@@ -263,6 +268,29 @@ TEST_F(SimulateCli, InfoShowsPrescribedJointsAndSignals) {
   EXPECT_EQ(j.at("signals")[0].at("name"), "road");
   EXPECT_EQ(j.at("force_elements")[0].at("kind"), "linear_spring_damper");
   EXPECT_EQ(j.at("conserves_energy"), false);
+}
+
+// Freedoms are counted after prescribed motion and constraints take theirs: the crank-driven
+// four-bar has three joint speeds, one prescribed, two independent loop rows (of the hinge's five:
+// the out-of-plane ones are implied) and none left; the sleigh's rolling rows leave its
+// planar joint's three speeds two.
+TEST_F(SimulateCli, InfoCountsFreedomsAfterConstraints) {
+  const CliRun r = momenta("info " + quoted(example("constraints/four_bar.yaml")) + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json f = json::parse(r.out).at("degrees_of_freedom");
+  EXPECT_EQ(f.at("speeds"), 3);
+  EXPECT_EQ(f.at("prescribed"), 1);
+  EXPECT_EQ(f.at("independent_constraint_rows"), 2);
+  EXPECT_EQ(f.at("free"), 0);
+  const CliRun text = momenta("info " + quoted(example("constraints/four_bar.yaml")));
+  EXPECT_NE(text.out.find("degrees of freedom  0 (3 joint speeds, 1 prescribed, 2 independent "
+                          "constraint rows of 5)"),
+            std::string::npos)
+      << text.out;
+  const CliRun sleigh =
+      momenta("info " + quoted(example("constraints/chaplygin_sleigh.yaml")) + " --json");
+  ASSERT_EQ(sleigh.code, 0) << sleigh.err;
+  EXPECT_EQ(json::parse(sleigh.out).at("degrees_of_freedom").at("free"), 2);
 }
 
 }  // namespace

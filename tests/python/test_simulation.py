@@ -34,9 +34,33 @@ def test_columns_are_views_and_named():
     # The file's step is 0.5 ms.
     assert run.time[0] == 0.0 and run.time[-1] == 0.5 and len(run) == 1001
     assert "energy_total" in run and "nothing" not in run
-    np.testing.assert_array_equal(run["upper.q0"], run.data[:, run.columns.index("upper.q0")])
+    np.testing.assert_array_equal(run["upper.angle"], run.data[:, run.columns.index("upper.angle")])
     with pytest.raises(KeyError, match="no column 'energy'"):
         run["energy"]
+
+
+def test_a_coordinate_has_one_name_and_its_unit():
+    # The run's columns are the model's coordinate names (as `info` and the report name them),
+    # each with its SI unit.
+    model = momenta.load_model(EXAMPLES / "quarter_car.yaml")
+    run = momenta.simulate(model, duration=0.1)
+    assert run.columns[1:1 + model.nq] == model.q_names
+    assert run.columns[1 + model.nq:1 + model.nq + model.nv] == model.v_names
+    units = run.units
+    assert list(units) == run.columns
+    assert units["time"] == "s" and units["energy_total"] == "J" and units["H_x"] == "kg·m²/s"
+    assert units["body_travel.position"] == "m" and units["body_travel.position_rate"] == "m/s"
+    # The file's outputs: a joint position, a road signal prescribing a length, spring tensions.
+    assert units["body_y"] == "m" and units["r"] == "m" and units["tyre_force"] == "N"
+    pendulum = momenta.simulate(momenta.load_model(EXAMPLES / "double_pendulum.yaml"), duration=0.1)
+    assert pendulum.units["upper.angle"] == "rad" and pendulum.units["theta1"] == "rad"
+    assert pendulum.units["tip.x"] == "m" and pendulum.units["audit.energy_drift"] == "1"
+
+
+def test_degrees_of_freedom_count_after_constraints():
+    four_bar = momenta.load_model(EXAMPLES / "constraints" / "four_bar.yaml")
+    assert four_bar.nv == 3 and four_bar.degrees_of_freedom == 0  # driven by its crank
+    assert momenta.load_model(EXAMPLES / "double_pendulum.yaml").degrees_of_freedom == 2
 
 
 def test_energy_audit_of_the_double_pendulum_is_at_round_off():

@@ -12,7 +12,7 @@ export function summarySection(data) {
   }
   section.append(element('h1', {}, s.model), s.description ? element('p', { class: 'description' }, s.description) : null);
   const facts = [
-    ['file', s.file], ['bodies', s.bodies], ['joints', s.joints], ['degrees of freedom', s.dof],
+    ['file', s.file], ['bodies', s.bodies], ['joints', s.joints], ['degrees of freedom', s.dof === s.speeds ? s.dof : `${s.dof} (of ${s.speeds} joint speeds, after prescribed motion and constraints)`],
     ['integrator', `${s.integrator} (order ${s.order}${s.adaptive ? ', adaptive' : ''})`],
     [s.adaptive ? 'largest step' : 'step', `${formatNumber(s.step)} s`],
     ['simulated', `${formatNumber(s.t_end)} s of ${formatNumber(s.duration)} s, ${s.steps} steps, ${s.rows} rows`],

@@ -70,7 +70,7 @@ class SecondOrderSystem {
   }
 
   /// A name for configuration coordinate i (velocity coordinate i when `velocity`), used in
-  /// error messages: "hinge.q0". The default is "q[i]" / "v[i]".
+  /// error messages: "hinge.angle". The default is "q[i]" / "v[i]".
   virtual std::string coordinate_name(int i, bool velocity) const {
     return (velocity ? "v[" : "q[") + std::to_string(i) + "]";
   }

@@ -23,6 +23,7 @@ namespace momenta::report {
 struct SimulationRun {
   const io::ModelFile* file = nullptr;
   std::vector<std::string> columns;
+  std::vector<std::string> units;  ///< each column's (simulate::Simulation::column_units)
   std::vector<std::vector<double>> rows;
   simulate::SimulationOptions options;
   simulate::SimulationSummary summary;
@@ -53,7 +54,7 @@ void check_linear_settings(const io::ModelFile& file, const LinearSettings& sett
 
 /// The run a simulation left in `table`: with the summary it returned, or — when `stop_reason` is
 /// set (it threw) — a summary of the rows up to the failure (integrator, step, rows, t_end).
-SimulationRun make_run(const io::ModelFile& file, const simulate::SimulationOptions& options,
+SimulationRun make_run(const io::ModelFile& file, const simulate::Simulation& simulation,
                        simulate::TableSink&& table, simulate::SimulationSummary summary,
                        std::string stop_reason);
 

@@ -6,9 +6,9 @@
 //
 // Columns, in order (column_names()):
 //   time                                   s
-//   <joint>.q<i>   every configuration coordinate, i its index within the joint (quaternions
-//                  w, x, y, z; model/joint.hpp)
-//   <joint>.v<i>   every velocity coordinate
+//   <joint>.<coordinate>   every configuration coordinate, named as Model::q_name names it
+//                  (pivot.angle, slide.position, ball.qw ... ball.qz; model/joint.hpp)
+//   <joint>.<speed>        every velocity coordinate, as Model::v_name (pivot.angle_rate)
 //   energy_kinetic, energy_potential, energy_total     J (potential: gravity and springs)
 //   H_x, H_y, H_z  angular momentum about the system centre of mass, in W (kg·m²/s)
 //   the model's outputs (OutputSet::column_names())
@@ -135,6 +135,9 @@ class Simulation {
   const SimulationOptions& options() const { return options_; }
   /// Every column of a row, in order (see the file comment).
   const std::vector<std::string>& column_names() const { return columns_; }
+  /// Each column's unit (model/units.hpp): "s", "rad", "m/s", "J", "N·m", "1" for the relative
+  /// drifts, "" for a constraint residual that mixes lengths and angles.
+  const std::vector<std::string>& column_units() const { return units_; }
   const system::OutputSet& outputs() const { return outputs_; }
 
   /// Integrates from t = 0 and the model's initial state (quaternions normalized, prescribed
@@ -157,6 +160,7 @@ class Simulation {
   system::OutputSet outputs_;
   std::unique_ptr<integrate::Integrator> integrator_;
   std::vector<std::string> columns_;
+  std::vector<std::string> units_;
 };
 
 /// The summary as `momenta simulate` prints it on stderr: steps (accepted, rejected),

@@ -22,7 +22,7 @@
 
 namespace momenta::sweep {
 
-/// The columns of `metric`: one ("max(body_travel.q0)", or its name), or several for the
+/// The columns of `metric`: one ("max(body_travel.position)", or its name), or several for the
 /// vector figures ("pole1.re", "pole1.im", …; `states` poles of a linear job).
 std::vector<std::string> metric_columns(const Metric& metric, int states);
 

@@ -26,6 +26,8 @@ class OutputSet {
   const std::vector<model::OutputSpec>& specs() const { return specs_; }
   /// Every column, in order: "tip.x", "tip.y", "tip.z", "angle", ...
   const std::vector<std::string>& column_names() const { return columns_; }
+  /// Each column's unit (model/units.hpp): "m", "rad/s", "N·m", ...
+  const std::vector<std::string>& column_units() const { return units_; }
   std::size_t size() const { return columns_.size(); }
   /// Whether any output is a reaction (evaluate() then runs joint_reactions).
   bool needs_reactions() const { return needs_reactions_; }
@@ -48,6 +50,7 @@ class OutputSet {
   std::vector<model::OutputSpec> specs_;
   std::vector<Column> resolved_;
   std::vector<std::string> columns_;
+  std::vector<std::string> units_;
   bool needs_reactions_ = false;
   int nq_ = 0, nv_ = 0;
   // Scratch for evaluate(): the state with prescribed motion applied, and v̇ (sized once).

@@ -112,10 +112,10 @@ TEST(ClassicConstraints, FourBarFollowsFreudenstein) {
   ASSERT_EQ(run.rows(), 1001u);
   double worst_angle = 0, worst_rate = 0;
   for (std::size_t i = 0; i < run.rows(); ++i) {
-    const double t2 = run.at(i, "crank_pin.q0");
+    const double t2 = run.at(i, "crank_pin.angle");
     const double t4 = freudenstein_theta4(a, b, c, d, t2);
     // θ3 (absolute) from the crank and coupler angles; ω4 = a ω2 sin(θ2 − θ3) / (c sin(θ4 − θ3)).
-    const double t3 = t2 + run.at(i, "coupler_pin.q0");
+    const double t3 = t2 + run.at(i, "coupler_pin.angle");
     const double w4 = a * w2 * std::sin(t2 - t3) / (c * std::sin(t4 - t3));
     worst_angle = std::max(
         worst_angle, std::abs(std::remainder(run.at(i, "theta4") - t4, 2 * std::numbers::pi)));
@@ -158,7 +158,7 @@ TEST(ClassicConstraints, RollingCoinHoldsItsSteadyCircle) {
     worst = std::max(
         {worst, relative(run.at(i, "omega.z"), W + s * std::sin(phi)),
          relative(std::hypot(run.at(i, "omega.x"), run.at(i, "omega.y")), s * std::cos(phi)),
-         relative(run.at(i, "free.q2"), R * std::cos(phi))});
+         relative(run.at(i, "free.z"), R * std::cos(phi))});
     worst_force = std::max({worst_force, relative(run.at(i, "contact.normal"), m * kG),
                             relative(std::abs(run.at(i, "contact.lateral")), m * rho * W * W)});
   }
@@ -182,11 +182,11 @@ TEST(ClassicConstraints, ChaplyginSleighClosedForm) {
   const ExampleRun run = simulate_example("chaplygin_sleigh", 100.0);
   double worst = 0;
   for (std::size_t i = 0; i < run.rows(); i += 10) {
-    const double t = run.at(i, "time"), th = run.at(i, "floor_plane.q2");
-    const double u =
-        run.at(i, "floor_plane.v0") * std::cos(th) + run.at(i, "floor_plane.v1") * std::sin(th);
+    const double t = run.at(i, "time"), th = run.at(i, "floor_plane.angle");
+    const double u = run.at(i, "floor_plane.x_rate") * std::cos(th) +
+                     run.at(i, "floor_plane.y_rate") * std::sin(th);
     worst = std::max({worst, std::abs(u - U * std::tanh(k * t)) / U,
-                      std::abs(run.at(i, "floor_plane.v2") - w0 / std::cosh(k * t)) / w0});
+                      std::abs(run.at(i, "floor_plane.angle_rate") - w0 / std::cosh(k * t)) / w0});
   }
   EXPECT_LT(worst, 1e-10);
   for (const simulate::AuditEntry& e : run.summary.audit) {
@@ -199,8 +199,8 @@ TEST(ClassicConstraints, ChaplyginSleighClosedForm) {
 TEST(ClassicConstraints, GearedPairAccelerationsAndMeshEffort) {
   const ExampleRun run = simulate_example("geared_pair");
   const std::size_t last = run.rows() - 1;
-  EXPECT_NEAR(run.at(last, "wheel_axle.v0"), 40.0, 40.0 * 1e-12);
-  EXPECT_NEAR(run.at(last, "pinion_axle.v0"), -80.0, 80.0 * 1e-12);
+  EXPECT_NEAR(run.at(last, "wheel_axle.angle_rate"), 40.0, 40.0 * 1e-12);
+  EXPECT_NEAR(run.at(last, "pinion_axle.angle_rate"), -80.0, 80.0 * 1e-12);
   for (std::size_t i = 0; i < run.rows(); ++i) {
     EXPECT_NEAR(run.at(i, "mesh_effort.effort_a"), -0.1, 1e-13);
     EXPECT_NEAR(run.at(i, "mesh_effort.effort_b"), -0.2, 1e-13);
@@ -247,9 +247,9 @@ TEST(ClassicConstraints, PointConstraintEqualsBallJointTree) {
   ASSERT_EQ(a.rows.size(), b.rows.size());
   double worst_q = 0, worst_f = 0;
   for (std::size_t i = 0; i < a.rows.size(); ++i) {
-    for (int k = 0; k < 4; ++k)
-      worst_q = std::max(worst_q, std::abs(a.rows[i][a.column("hold.q" + std::to_string(3 + k))] -
-                                           b.rows[i][b.column("hold.q" + std::to_string(k))]));
+    // The free joint's quaternion and the ball joint's share their names.
+    for (const char* c : {"hold.qw", "hold.qx", "hold.qy", "hold.qz"})
+      worst_q = std::max(worst_q, std::abs(a.rows[i][a.column(c)] - b.rows[i][b.column(c)]));
     for (const char* f : {"Fx", "Fy", "Fz"}) {
       worst_f = std::max(worst_f, std::abs(a.rows[i][a.column(std::string("pivot.reaction.") + f)] -
                                            b.rows[i][b.column(std::string("hold.reaction.") + f)]));

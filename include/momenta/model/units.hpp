@@ -1,0 +1,29 @@
+#pragma once
+// The SI unit of every quantity a model's state and outputs carry, as text for a person: column
+// headers, plot axes, tooltips. "rad", "m", "m/s", "N·m", ...; "1" for a dimensionless number (a
+// quaternion component); "" where the model does not say (a signal that drives nothing).
+
+#include <string>
+#include <vector>
+
+#include "momenta/model/model.hpp"
+#include "momenta/model/output_spec.hpp"
+
+namespace momenta::model {
+
+/// Configuration coordinate i (an index into q): "rad", "m", or "1" for a quaternion component.
+std::string q_unit(const Model& model, int i);
+/// Velocity coordinate i (an index into v): "rad/s" or "m/s".
+std::string v_unit(const Model& model, int i);
+/// The generalized force along velocity coordinate i: "N·m" on an angle, "N" on a length.
+std::string effort_unit(const Model& model, int i);
+/// A signal's value: the unit of the coordinate it prescribes, "N" or "N·m" when it scales an
+/// applied force or moment of unit direction; "" when its use does not fix one.
+std::string signal_unit(const Model& model, int signal_index);
+
+/// One unit per value of `quantity` for a target resolved to index `target` (a joint, body,
+/// signal, force element or constraint) and its `component`-th value (a coordinate, an axis, a
+/// constraint force label's position).
+std::string output_unit(const Model& model, OutputQuantity quantity, int target, int component);
+
+}  // namespace momenta::model

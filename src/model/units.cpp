@@ -1,0 +1,138 @@
+#include "momenta/model/units.hpp"
+
+#include <cmath>
+#include <variant>
+
+namespace momenta::model {
+namespace {
+
+// The joint whose coordinates include index i of q (configuration) or of v (velocity).
+const Joint* joint_of(const Model& model, int i, bool velocity) {
+  for (const Joint& j : model.joints()) {
+    const int first = velocity ? j.v_index : j.q_index;
+    const int count = velocity ? j.nv() : j.nq();
+    if (i >= first && i < first + count) return &j;
+  }
+  return nullptr;
+}
+
+// Whether velocity coordinate k of joint j (0-based within the joint) is a rotation rate.
+bool is_angular_speed(const Joint& j, int k) {
+  switch (j.type) {
+    case JointType::prismatic:
+      return false;
+    case JointType::cylindrical:
+      return k == 0;
+    case JointType::planar:
+      return k == 2;
+    case JointType::free:
+      return k < 3;  // w (rotation first), then v
+    default:
+      return true;  // revolute, universal, spherical
+  }
+}
+
+}  // namespace
+
+std::string q_unit(const Model& model, int i) {
+  const Joint* j = joint_of(model, i, false);
+  if (j == nullptr) return "";
+  const int k = i - j->q_index;
+  switch (j->type) {
+    case JointType::spherical:
+      return "1";
+    case JointType::free:
+      return k < 3 ? "m" : "1";  // position, then the quaternion w, x, y, z
+    case JointType::planar:
+      return k < 2 ? "m" : "rad";
+    case JointType::cylindrical:
+      return k == 0 ? "rad" : "m";
+    case JointType::prismatic:
+      return "m";
+    default:
+      return "rad";
+  }
+}
+
+std::string v_unit(const Model& model, int i) {
+  const Joint* j = joint_of(model, i, true);
+  if (j == nullptr) return "";
+  return is_angular_speed(*j, i - j->v_index) ? "rad/s" : "m/s";
+}
+
+std::string effort_unit(const Model& model, int i) {
+  const Joint* j = joint_of(model, i, true);
+  if (j == nullptr) return "";
+  return is_angular_speed(*j, i - j->v_index) ? "N·m" : "N";
+}
+
+std::string signal_unit(const Model& model, int signal_index) {
+  for (const Joint& j : model.joints()) {
+    for (std::size_t k = 0; k < j.prescribed_signal_indices.size(); ++k) {
+      if (j.prescribed_signal_indices[k] != signal_index) continue;
+      // A spherical or free joint's signals are a rotation vector (rad), then a position (m).
+      if (j.type == JointType::spherical || j.type == JointType::free) {
+        return k < 3 ? "rad" : "m";
+      }
+      return q_unit(model, j.q_index + static_cast<int>(k));
+    }
+  }
+  for (const ForceElement& element : model.force_elements()) {
+    if (const auto* f = std::get_if<AppliedForce>(&element);
+        f && f->signal_index == signal_index && std::abs(f->vector.norm() - 1.0) < 1e-12) {
+      return "N";
+    }
+    if (const auto* m = std::get_if<AppliedTorque>(&element);
+        m && m->signal_index == signal_index && std::abs(m->vector.norm() - 1.0) < 1e-12) {
+      return "N·m";
+    }
+  }
+  return "";
+}
+
+std::string output_unit(const Model& model, OutputQuantity quantity, int target, int component) {
+  using Q = OutputQuantity;
+  switch (quantity) {
+    case Q::joint_position:
+      return q_unit(model, model.joint(target).q_index + component);
+    case Q::joint_velocity:
+      return v_unit(model, model.joint(target).v_index + component);
+    case Q::joint_effort:
+      return effort_unit(model, model.joint(target).v_index + component);
+    case Q::body_position:
+    case Q::spring_length:
+      return "m";
+    case Q::body_velocity:
+    case Q::transport_velocity:
+      return "m/s";
+    case Q::body_acceleration:
+    case Q::transport_acceleration:
+    case Q::coriolis_acceleration:
+    case Q::centripetal_acceleration:
+    case Q::euler_acceleration:
+      return "m/s²";
+    case Q::body_angular_velocity:
+      return "rad/s";
+    case Q::reaction_force:
+    case Q::spring_tension:
+      return "N";
+    case Q::reaction_moment:
+      return "N·m";
+    case Q::signal:
+      return signal_unit(model, target);
+    case Q::constraint_force: {
+      const Constraint& constraint = model.constraints()[static_cast<std::size_t>(target)];
+      const std::string_view label =
+          constraint_force_labels(constraint)[static_cast<std::size_t>(component)];
+      if (const auto* coupler = std::get_if<JointCoupler>(&constraint)) {
+        const Joint& joint =
+            model.joint(label == "effort_a" ? coupler->joint_a_index : coupler->joint_b_index);
+        return effort_unit(model, joint.v_index);
+      }
+      return label.starts_with("reaction.M") ? "N·m" : "N";
+    }
+  }
+  return "";
+}
+
+}  // namespace momenta::model
