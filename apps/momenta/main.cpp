@@ -17,6 +17,7 @@
 #include "commands.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
+#include "stable_addresses.hpp"
 
 namespace {
 
@@ -99,6 +100,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (refuse_unknown_command(app, argc, argv)) return 2;
+  if (std::string_view(argv[1]) == "equations") momenta::cli::run_with_stable_addresses(argv);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

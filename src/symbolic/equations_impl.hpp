@@ -2,6 +2,7 @@
 // What symbolic::Equations holds: the symbols and the derived expressions (equations.cpp derives
 // them, printing.cpp prints them and generates code).
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -12,10 +13,30 @@
 namespace momenta::symbolic {
 
 namespace detail {
+/// What each symbol of the equations stands for, by name: the printer orders terms and factors
+/// by it (symbolic/term_order.hpp).
+enum class SymbolRole { parameter, input, coordinate, speed, acceleration };
+struct PrintRoles {
+  struct Entry {
+    SymbolRole role = SymbolRole::parameter;
+    int index = 0;  // the coordinate's place in the model (speeds and accelerations alike)
+  };
+  std::map<std::string, Entry, std::less<>> by_name;
+};
+
+/// The most terms and factors an expression may print as in text or LaTeX (a few megabytes).
+inline constexpr double kMaxPrintedNodes = 3e5;
+
+/// Throws InvalidArgument, pointing to the generated code, when e printed as a tree (every
+/// shared part repeated) would pass kMaxPrintedNodes. Counts over the graph: fast.
+void check_printable(const GiNaC::ex& e);
 /// A name fit for code and for GiNaC's parser: letters, digits and '_' (others become '_').
 std::string identifier(const std::string& name);
-/// An expression printed in `format`: numbers as short decimals in text and LaTeX.
-std::string print(const GiNaC::ex& e, Format format);
+/// An expression printed in `format`: numbers as short decimals in text and LaTeX; in text and
+/// LaTeX sums and products in a fixed order that `roles` gives (accelerations first, then
+/// speeds, then the rest; parameters before functions before coordinates within a product), the
+/// same bytes on every run. Throws InvalidArgument when the text would pass kMaxPrintedNodes.
+std::string print(const GiNaC::ex& e, Format format, const PrintRoles* roles = nullptr);
 }  // namespace detail
 
 struct Equations::Impl {
@@ -52,6 +73,9 @@ struct Equations::Impl {
     GiNaC::symbol multiplier;
   };
   std::vector<ConstraintRow> constraints;
+
+  /// The roles of q, v, v̇ and the inputs (every other symbol a parameter or an unknown force).
+  detail::PrintRoles roles() const;
 };
 
 }  // namespace momenta::symbolic

@@ -14,70 +14,18 @@
 #include "momenta/common/error.hpp"
 
 namespace momenta::symbolic {
-namespace detail {
-
-// The parent's name as GiNaC registered it, unqualified: the macros look the parent up by it.
-using GiNaC::print_dflt;
-using GiNaC::print_latex;
-
-// Text and LaTeX with numbers as decimals: an exact rational that came from a short decimal
-// prints as that decimal (981/100 as 9.81), a float with the shortest digits that read back.
-class decimal_text : public print_dflt {
-  GINAC_DECLARE_PRINT_CONTEXT(decimal_text, print_dflt)
- public:
-  explicit decimal_text(std::ostream& os, unsigned flags = 0) : print_dflt(os, flags) {}
-};
-GINAC_IMPLEMENT_PRINT_CONTEXT(decimal_text, print_dflt)
-
-class decimal_latex : public print_latex {
-  GINAC_DECLARE_PRINT_CONTEXT(decimal_latex, print_latex)
- public:
-  explicit decimal_latex(std::ostream& os, unsigned flags = 0) : print_latex(os, flags) {}
-};
-GINAC_IMPLEMENT_PRINT_CONTEXT(decimal_latex, print_latex)
-
-decimal_text::decimal_text() : print_dflt(std::cout) {}
-decimal_latex::decimal_latex() : print_latex(std::cout) {}
-
-}  // namespace detail
-
 namespace {
 
-using detail::decimal_latex;
-using detail::decimal_text;
 using detail::print;
+
+// An expression of the equations printed with its symbols' roles (terms and factors in order).
+std::string print_in(const Equations::Impl& impl, const ex& e, Format format) {
+  const detail::PrintRoles roles = impl.roles();
+  return print(e, format, &roles);
+}
 
 using GiNaC::ex;
 using GiNaC::symbol;
-
-void print_decimal(const GiNaC::numeric& n, const GiNaC::print_context& c, unsigned level) {
-  if (n.is_integer()) {
-    // A negative integer inside a product or power keeps its parentheses (x^(-1), not x^-1).
-    if (n.is_negative() && level > 0) {
-      c.s << "(" << n << ")";
-    } else {
-      c.s << n;
-    }
-    return;
-  }
-  // An exact rational (from a short decimal) reads back exactly; a float shows 12 digits (the
-  // generated code keeps all 17).
-  const double x = n.to_double();
-  const bool parenthesize = x < 0 && level > 0;
-  if (parenthesize) c.s << "(";
-  c.s << (n.is_rational() ? fmt::format("{}", x) : fmt::format("{:.12g}", x));
-  if (parenthesize) c.s << ")";
-}
-
-// Registered once, before the first print.
-void register_printers() {
-  static const bool done = [] {
-    GiNaC::set_print_func<GiNaC::numeric, decimal_text>(print_decimal);
-    GiNaC::set_print_func<GiNaC::numeric, decimal_latex>(print_decimal);
-    return true;
-  }();
-  (void)done;
-}
 
 // Splits Q into the terms with an input (the right-hand side, as a textbook writes u) and the
 // rest (moved to the left).
@@ -196,45 +144,26 @@ GiNaC::exmap code_symbols(const Equations::Impl& impl) {
 
 }  // namespace
 
-std::string detail::print(const ex& e, Format format) {
-  register_printers();
-  std::ostringstream os;
-  switch (format) {
-    case Format::text:
-      e.print(decimal_text(os));
-      break;
-    case Format::latex:
-      e.print(decimal_latex(os));
-      break;
-    case Format::cpp:
-      e.print(GiNaC::print_csrc_double(os));
-      break;
-    case Format::python:
-      e.print(GiNaC::print_python(os));
-      break;
-  }
-  return os.str();
-}
-
 std::string Equations::mass_matrix_entry(int row, int column, Format format) const {
   check_row(*impl_, row, "mass_matrix_entry");
   check_row(*impl_, column, "mass_matrix_entry");
-  return print(impl_->M(static_cast<unsigned>(row), static_cast<unsigned>(column)), format);
+  return print_in(*impl_, impl_->M(static_cast<unsigned>(row), static_cast<unsigned>(column)),
+                  format);
 }
 
 std::string Equations::velocity_product(int row, Format format) const {
   check_row(*impl_, row, "velocity_product");
-  return print(impl_->rest[static_cast<std::size_t>(row)], format);
+  return print_in(*impl_, impl_->rest[static_cast<std::size_t>(row)], format);
 }
 
 std::string Equations::gravity(int row, Format format) const {
   check_row(*impl_, row, "gravity");
-  return print(impl_->g[static_cast<std::size_t>(row)], format);
+  return print_in(*impl_, impl_->g[static_cast<std::size_t>(row)], format);
 }
 
 std::string Equations::generalized_force(int row, Format format) const {
   check_row(*impl_, row, "generalized_force");
-  return print(impl_->Q[static_cast<std::size_t>(row)], format);
+  return print_in(*impl_, impl_->Q[static_cast<std::size_t>(row)], format);
 }
 
 std::string Equations::equation(int row, Format format) const {
@@ -248,19 +177,21 @@ std::string Equations::equation(int row, Format format) const {
             impl_->vdot[static_cast<std::size_t>(impl_->free[c])];
     accelerations.append(impl_->vdot[static_cast<std::size_t>(impl_->free[c])]);
   }
+  detail::check_printable(left);  // before expanding: that is what takes the time
   left = GiNaC::collect(GiNaC::expand(left), accelerations);
   // The constraint forces' generalized forces Gᵀλ on the right, each λ once.
   ex constraint_force = 0;
   for (const auto& c : impl_->constraints)
     constraint_force += c.G[static_cast<std::size_t>(impl_->free[r])] * c.multiplier;
-  std::string right_text = print(right, format);
+  std::string right_text = print_in(*impl_, right, format);
   if (!constraint_force.is_zero()) {
     GiNaC::lst multipliers;
     for (const auto& c : impl_->constraints) multipliers.append(c.multiplier);
-    const std::string forces = print(GiNaC::collect(constraint_force, multipliers), format);
+    const std::string forces =
+        print_in(*impl_, GiNaC::collect(constraint_force, multipliers), format);
     right_text = right.is_zero() ? forces : right_text + " + " + forces;
   }
-  return print(left, format) + " = " + right_text;
+  return print_in(*impl_, left, format) + " = " + right_text;
 }
 
 int Equations::constraint_rows() const { return static_cast<int>(impl_->constraints.size()); }
@@ -275,25 +206,25 @@ bool Equations::constraint_row_holonomic(int row) const {
 
 std::string Equations::constraint_equation(int row, Format format) const {
   const auto& c = impl_->constraints.at(static_cast<std::size_t>(row));
-  if (c.holonomic) return print(c.position, format) + " = 0";
+  if (c.holonomic) return print_in(*impl_, c.position, format) + " = 0";
   ex Gv = 0;
   GiNaC::lst speeds;
   for (std::size_t i = 0; i < c.G.size(); ++i) {
     Gv += c.G[i] * impl_->v[i];
     if (!c.G[i].is_zero()) speeds.append(impl_->v[i]);
   }
-  return print(GiNaC::collect(GiNaC::expand(Gv), speeds), format) + " = 0";
+  return print_in(*impl_, GiNaC::collect(GiNaC::expand(Gv), speeds), format) + " = 0";
 }
 
 std::string Equations::constraint_jacobian_entry(int row, int column, Format format) const {
   check_row(*impl_, column, "constraint_jacobian_entry");
   const auto& c = impl_->constraints.at(static_cast<std::size_t>(row));
-  return print(c.G[static_cast<std::size_t>(impl_->free[static_cast<std::size_t>(column)])],
-               format);
+  return print_in(
+      *impl_, c.G[static_cast<std::size_t>(impl_->free[static_cast<std::size_t>(column)])], format);
 }
 
 std::string Equations::constraint_bias(int row, Format format) const {
-  return print(impl_->constraints.at(static_cast<std::size_t>(row)).bias, format);
+  return print_in(*impl_, impl_->constraints.at(static_cast<std::size_t>(row)).bias, format);
 }
 
 std::vector<std::string> Equations::multiplier_names() const {
@@ -329,7 +260,8 @@ std::string Equations::newton_euler_group(int row) const {
 
 std::string Equations::newton_euler_equation(int row, Format format) const {
   const auto& r = impl_->newton_euler.at(static_cast<std::size_t>(row));
-  return r.label + ":  " + print(r.loads, format) + " = " + print(r.kinetic, format);
+  return r.label + ":  " + print_in(*impl_, r.loads, format) + " = " +
+         print_in(*impl_, r.kinetic, format);
 }
 
 std::vector<std::string> Equations::reaction_names() const {

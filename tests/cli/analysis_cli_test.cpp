@@ -110,8 +110,12 @@ TEST_F(AnalysisCli, KinematicsOfTheTurntableBead) {
 #if MOMENTA_TEST_SYMBOLIC
 // An expression as GiNaC prints it, in a canonical order: the terms of each sum and the factors
 // of each product sorted (GiNaC orders them by its symbols' creation, which can differ from run
-// to run), parenthesized groups likewise. Enough for the sums of products the CLI prints.
-std::string canonical(const std::string& text) {
+// to run), parenthesized groups likewise, spaces dropped. Enough for the sums of products the
+// CLI prints.
+std::string canonical(const std::string& spaced) {
+  std::string text;
+  for (const char c : spaced)
+    if (c != ' ') text += c;
   const auto split = [](const std::string& s, char separator) {
     std::vector<std::string> parts(1);
     int depth = 0;
@@ -224,6 +228,52 @@ TEST_F(AnalysisCli, EquationsOfAConstrainedModelPrintItsForcesAndRows) {
   EXPECT_NE(linear.code, 0);
   EXPECT_NE(linear.err.find("`momenta linearize` does that numerically"), std::string::npos)
       << linear.err;
+}
+
+// Same file, same bytes: GiNaC's own order moves with address randomization from run to run
+// (before this was fixed, five runs of the double pendulum gave five different texts). Each
+// form of a planar chain and of a rolling disk (inexact coefficients, quaternions) three times.
+TEST_F(AnalysisCli, EquationsPrintTheSameBytesEveryRun) {
+  for (const std::string model :
+       {"double_pendulum", "constraints/four_bar", "constraints/rolling_disk_on_axle"}) {
+    for (const char* form : {"", " --all-symbols", " --latex", " --form matrix",
+                             " --form newton-euler", " --cpp", " --python"}) {
+      const std::string command = "equations " + example(model) + form;
+      const CliRun first = momenta(command);
+      ASSERT_EQ(first.code, 0) << command << "\n" << first.err;
+      for (int run = 0; run < 2; ++run) EXPECT_EQ(momenta(command).out, first.out) << command;
+    }
+  }
+}
+
+// The human form: accelerations first, then speed terms, then the rest; within a product
+// numbers, parameters, functions, coordinates, accelerations; spaces around + and −.
+TEST_F(AnalysisCli, EquationsReadAccelerationsFirst) {
+  const CliRun pendulum = momenta("equations " + example("pendulum") + " --all-symbols");
+  ASSERT_EQ(pendulum.code, 0) << pendulum.err;
+  EXPECT_NE(pendulum.out.find("\nc_bob_z^2*m_bob*pivot_ddot - c_bob_z*g*m_bob*sin(pivot) = 0\n"),
+            std::string::npos)
+      << pendulum.out;
+  const CliRun flexible = momenta("equations " + example("flexible_satellite") + " --all-symbols");
+  EXPECT_NE(flexible.out.find("\nI_hub_zz*theta1_ddot + c_boom*theta1_dot - c_boom*theta2_dot + "
+                              "k_boom*theta1 - k_boom*theta2 = F_control*tc\n"),
+            std::string::npos)
+      << flexible.out;
+}
+
+// A 10-link chain's equations as text would be a tree of hundreds of megabytes (the default form
+// printed nothing in 14 minutes): refused at once, pointing to the generated code, which writes
+// each shared part once.
+TEST_F(AnalysisCli, EquationsTooLargeToPrintPointToTheCode) {
+  const std::string chain = fmt::format("'{}/bench/models/chain10.yaml'", test::source_dir());
+  for (const char* form : {"", " --latex", " --form matrix"}) {
+    const CliRun r = momenta("equations " + chain + form);
+    EXPECT_EQ(r.code, 1) << form;
+    EXPECT_NE(r.err.find("--cpp or --python write the same equations"), std::string::npos) << r.err;
+  }
+  const CliRun code = momenta("equations " + chain + " --cpp");
+  EXPECT_EQ(code.code, 0) << code.err;
+  EXPECT_LT(code.out.size(), 1'000'000u);
 }
 #else
 TEST_F(AnalysisCli, EquationsSayTheyAreLeftOutOfThisBuild) {
