@@ -269,10 +269,11 @@ void add_run_options(CLI::App* command, SimulateOptions& o) {
 void add_linear_options(CLI::App* command, SimulateOptions& o) {
   command
       ->add_option("--about", o.linear.about,
-                   "The report's linear analysis about 'initial' (the initial state), "
+                   "The report's linear analysis about 'auto' (the initial state where it is at "
+                   "rest, else the equilibrium found from it), 'initial' (the initial state), "
                    "'equilibrium' (the static equilibrium Newton finds from it) or 'steady' (a "
                    "rotor's steady motion in joint coordinates, its turning position left out)")
-      ->check(CLI::IsMember({"initial", "equilibrium", "steady"}))
+      ->check(CLI::IsMember({"auto", "initial", "equilibrium", "steady"}))
       ->capture_default_str();
   command
       ->add_option_function<std::vector<double>>(

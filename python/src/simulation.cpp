@@ -229,11 +229,12 @@ result.audit the conservation audit; result.summary what the run did; to_pandas(
                     "Why the run stopped early (a NumericalError's message); empty when it ran "
                     "to the end.")
       .def("report", &write_result_report, py::arg("path"), py::kw_only(), py::arg("force") = false,
-           py::arg("about") = "initial", py::arg("inputs") = std::vector<std::string>{},
+           py::arg("about") = "auto", py::arg("inputs") = std::vector<std::string>{},
            py::arg("outputs") = std::vector<std::string>{}, py::arg("campbell") = py::none(),
            R"doc(Writes the run's HTML report to `path`, the page `momenta simulate --report`
 writes (docs/report.md): the 3-D motion, every column plotted, the linear analysis about
-`about` ("initial", "equilibrium" or "steady", for the `inputs` and `outputs` named, all when
+`about` ("auto": the initial state where it is at rest, else the equilibrium found from it;
+"initial", "equilibrium" or "steady", for the `inputs` and `outputs` named, all when
 empty), the Campbell diagram when `campbell` = (from, to) speeds in rad/s is given, and
 the summary with its audit verdict; a run stopped by a non-finite state shows the reason at the
 top. Joint reactions are drawn when the run recorded them (simulate(..., reactions=True)).

@@ -15,6 +15,7 @@
 #include "momenta/analysis/time_response.hpp"
 #include "momenta/analysis/transfer_function.hpp"
 #include "momenta/common/error.hpp"
+#include "momenta/common/number_text.hpp"
 #include "momenta/dynamics/data.hpp"
 #include "momenta/dynamics/kinematics.hpp"
 #include "sections.hpp"
@@ -164,15 +165,25 @@ json analysis_json(const io::ModelFile& file, const analysis::LinearModel& linea
           {"steps", steps}};
 }
 
+// Below this largest coordinate acceleration (rad/s² or m/s²) a state is at rest, as `momenta
+// modes` judges it.
+constexpr double kAtRest = 1e-9;
+
+double largest_acceleration(const analysis::LinearModel& linear) {
+  double worst = 0.0;
+  for (const int i : linear.coordinates) worst = std::max(worst, std::abs(linear.acceleration[i]));
+  return worst;
+}
+
 }  // namespace
 
 json linear_json(const io::ModelFile& file, const LinearSettings& settings, double& fastest_rate) {
   fastest_rate = 0.0;
   if (settings.about != "equilibrium" && settings.about != "initial" &&
-      settings.about != "steady") {
+      settings.about != "steady" && settings.about != "auto") {
     // A caller's mistake, not the model's: no page.
     throw InvalidArgument(
-        fmt::format("about '{}': expected initial, equilibrium or steady", settings.about));
+        fmt::format("about '{}': expected auto, initial, equilibrium or steady", settings.about));
   }
   try {
     analysis::LinearizationOptions options;
@@ -201,7 +212,30 @@ json linear_json(const io::ModelFile& file, const LinearSettings& settings, doub
       point = analysis::initial_operating_point(file.model);
       about = "the initial state";
     }
-    const analysis::LinearModel linear = analysis::linearize(file.model, point, options);
+    analysis::LinearModel linear = analysis::linearize(file.model, point, options);
+    // A state in motion is no place for modes: they would describe that instant only. By
+    // default ("auto") the panel moves to the equilibrium Newton finds from it, and says so.
+    const double moving = largest_acceleration(linear);
+    if (settings.about == "auto" && moving > kAtRest) {
+      try {
+        point = analysis::find_equilibrium(file.model, file.model.initial_q()).point;
+        linear = analysis::linearize(file.model, point, options);
+        about = fmt::format(
+            "the static equilibrium found from the initial state (the initial state is not one: "
+            "its largest acceleration is {}; modes there would describe that instant only)",
+            number_text(moving, 4));
+      } catch (const Error& e) {
+        about = fmt::format(
+            "the initial state, which is not an equilibrium (largest acceleration {}; none was "
+            "found from it: {}): the poles describe the motion linearized at that instant only",
+            number_text(moving, 4), e.what());
+      }
+    } else if (moving > kAtRest) {
+      about += fmt::format(
+          ", which is not an equilibrium (largest acceleration {}): the poles describe the "
+          "motion linearized at that instant only; --about equilibrium finds a state at rest",
+          number_text(moving, 4));
+    }
     return analysis_json(file, linear, about, fastest_rate);
   } catch (const Error& e) {
     // The report still stands; the panel says why it is empty.
@@ -257,9 +291,9 @@ namespace momenta::report {
 
 void check_linear_settings(const io::ModelFile& file, const LinearSettings& settings) {
   if (settings.about != "equilibrium" && settings.about != "initial" &&
-      settings.about != "steady") {
+      settings.about != "steady" && settings.about != "auto") {
     throw InvalidArgument(
-        fmt::format("about '{}': expected initial, equilibrium or steady", settings.about));
+        fmt::format("about '{}': expected auto, initial, equilibrium or steady", settings.about));
   }
   analysis::LinearizationOptions options;
   options.inputs = settings.inputs;

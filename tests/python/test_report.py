@@ -46,6 +46,26 @@ def test_the_page_is_the_command_lines(tmp_path, name, options):
         assert python_page[key] == cli_page[key], key
 
 
+def test_the_linear_panel_moves_off_a_state_in_motion(tmp_path):
+    # The double pendulum starts with its upper rod horizontal: not an equilibrium. By default the
+    # panel linearizes about the equilibrium found from it (hanging straight down) and says why;
+    # its poles are the small oscillations' ±jω with ω² = (2 ∓ √2) g/L (m = 1 kg, L = 1 m each).
+    result = momenta.simulate(momenta.load_model(EXAMPLES / "double_pendulum.yaml"), duration=0.2)
+    result.report(tmp_path / "auto.html")
+    linear = page_data(tmp_path / "auto.html")["linear"]
+    assert linear["about"].startswith("the static equilibrium found from the initial state (the "
+                                      "initial state is not one: its largest acceleration is")
+    omegas = sorted(abs(im) for re_, im in linear["poles"])
+    expected = sorted([(2 - 2 ** 0.5) * 9.81, (2 + 2 ** 0.5) * 9.81] * 2)
+    # Central differences of an exact model: the poles to about 1e-7 relative.
+    assert omegas == pytest.approx([w ** 0.5 for w in expected], rel=1e-6)
+    assert all(abs(re_) < 1e-6 for re_, im in linear["poles"])
+    # Asked for the initial state, it keeps it and says the poles are of that instant only.
+    result.report(tmp_path / "initial.html", about="initial")
+    linear = page_data(tmp_path / "initial.html")["linear"]
+    assert linear["about"].startswith("the initial state, which is not an equilibrium")
+
+
 def test_linear_settings_reach_the_page(tmp_path):
     result = momenta.simulate(momenta.load_model(EXAMPLES / "quarter_car.yaml"), duration=0.2)
     result.report(tmp_path / "r.html", about="equilibrium", outputs=["body_y"])

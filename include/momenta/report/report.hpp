@@ -34,9 +34,11 @@ struct SimulationRun {
 
 /// What the linear-analysis panel linearizes about, and for which channels.
 struct LinearSettings {
-  /// "initial" (the initial state), "equilibrium", or "steady" (a rotor's steady motion in joint
+  /// "auto" (the initial state where it is at rest, else the static equilibrium found from it,
+  /// the panel saying which and why), "initial" (the initial state, with a note when it is not
+  /// at rest), "equilibrium", or "steady" (a rotor's steady motion in joint
   /// coordinates, analysis/joint_steady_motion.hpp: its turning positions left out).
-  std::string about = "initial";
+  std::string about = "auto";
   std::vector<std::string> inputs;   ///< as analysis::LinearizationOptions::inputs
   std::vector<std::string> outputs;  ///< as analysis::LinearizationOptions::outputs
   /// When set, a Campbell panel: the rotor's whirl frequencies from the first speed to the
@@ -68,7 +70,7 @@ SimulationRun simulate_for_report(const io::ModelFile& file, simulate::Simulatio
 /// responses, animated mode shapes); when it cannot (no free joint, a singular mass matrix, a
 /// channel the model lacks, a state that is not a steady motion), the panel says why; with
 /// `linear.campbell`, the Campbell diagram (or why there is none). Throws InvalidArgument for an
-/// `about` other than "initial", "equilibrium" or "steady", or a run with no file or no rows.
+/// `about` other than "auto", "initial", "equilibrium" or "steady", or a run with no file or no rows.
 std::string simulation_report_html(const SimulationRun& run, const LinearSettings& linear = {});
 
 /// The report page of a part: the composite with its centre of mass, principal axes and
