@@ -88,9 +88,8 @@ void run(const ModesOptions& o) {
   fmt::print("{}: modes about {} ({} states)\n", loaded.file.name, loaded.about,
              m.state_names.size());
   // Modes of a state that is not at rest describe the motion linearized at that instant only.
-  double worst = 0.0;
-  for (const int i : lin.coordinates) worst = std::max(worst, std::abs(lin.acceleration[i]));
-  if (worst > 1e-9) {
+  const double worst = analysis::largest_acceleration(lin);
+  if (worst > analysis::kAtRestAcceleration) {
     fmt::print(
         "note: this state is not an equilibrium (largest acceleration {:.4g}): the modes describe "
         "the motion linearized at this instant; --about equilibrium finds a state at rest, and "

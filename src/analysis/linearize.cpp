@@ -297,6 +297,12 @@ LinearModel linearize(const model::Model& model, const OperatingPoint& point,
   return result;
 }
 
+double largest_acceleration(const LinearModel& linear) {
+  double worst = 0.0;
+  for (const int i : linear.coordinates) worst = std::max(worst, std::abs(linear.acceleration[i]));
+  return worst;
+}
+
 NormalModes undamped_modes(const LinearModel& linear) {
   if (linear.stiffness.size() == 0 && linear.system.A().rows() > 0) {
     throw InvalidArgument(

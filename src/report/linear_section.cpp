@@ -165,16 +165,6 @@ json analysis_json(const io::ModelFile& file, const analysis::LinearModel& linea
           {"steps", steps}};
 }
 
-// Below this largest coordinate acceleration (rad/s² or m/s²) a state is at rest, as `momenta
-// modes` judges it.
-constexpr double kAtRest = 1e-9;
-
-double largest_acceleration(const analysis::LinearModel& linear) {
-  double worst = 0.0;
-  for (const int i : linear.coordinates) worst = std::max(worst, std::abs(linear.acceleration[i]));
-  return worst;
-}
-
 }  // namespace
 
 json linear_json(const io::ModelFile& file, const LinearSettings& settings, double& fastest_rate) {
@@ -215,8 +205,8 @@ json linear_json(const io::ModelFile& file, const LinearSettings& settings, doub
     analysis::LinearModel linear = analysis::linearize(file.model, point, options);
     // A state in motion is no place for modes: they would describe that instant only. By
     // default ("auto") the panel moves to the equilibrium Newton finds from it, and says so.
-    const double moving = largest_acceleration(linear);
-    if (settings.about == "auto" && moving > kAtRest) {
+    const double moving = analysis::largest_acceleration(linear);
+    if (settings.about == "auto" && moving > analysis::kAtRestAcceleration) {
       try {
         point = analysis::find_equilibrium(file.model, file.model.initial_q()).point;
         linear = analysis::linearize(file.model, point, options);
@@ -230,7 +220,7 @@ json linear_json(const io::ModelFile& file, const LinearSettings& settings, doub
             "found from it: {}): the poles describe the motion linearized at that instant only",
             number_text(moving, 4), e.what());
       }
-    } else if (moving > kAtRest) {
+    } else if (moving > analysis::kAtRestAcceleration) {
       about += fmt::format(
           ", which is not an equilibrium (largest acceleration {}): the poles describe the "
           "motion linearized at that instant only; --about equilibrium finds a state at rest",

@@ -118,7 +118,7 @@ std::pair<int, int> term_class(const ex& term, const PrintRoles* roles) {
     const int rank = found->second.role == SymbolRole::acceleration ? 0
                      : found->second.role == SymbolRole::speed      ? 1
                                                                     : 2;
-    if (std::tie(rank, found->second.index) < std::tie(best, index) || (rank < best)) {
+    if (std::make_pair(rank, found->second.index) < std::make_pair(best, index)) {
       best = rank;
       index = found->second.index;
     }
@@ -188,15 +188,21 @@ void print_product(const GiNaC::mul& product, const GiNaC::print_context& contex
     const bool divides = GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::numeric>(f.op(1)) &&
                          GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_negative();
     ex shown = divides ? GiNaC::pow(f.op(0), -f.op(1)) : f;
-    // A sum leads with a positive term, the product taking the minus (GiNaC keeps −c·(a − b)
-    // or c·(b − a) as its hash order fell).
-    if (GiNaC::is_a<GiNaC::add>(shown) && text_of(shown, c, 0).starts_with("-")) {
-      shown = -shown;
-      coefficient = -coefficient;
-    }
     Factor factor;
+    if (GiNaC::is_a<GiNaC::add>(shown)) {
+      // A sum leads with a positive term, the product taking the minus (GiNaC keeps −c·(a − b)
+      // or c·(b − a) as its hash order fell); printed bare, parenthesized here.
+      std::string sum = text_of(shown, c, 0);
+      if (sum.starts_with("-")) {
+        shown = -shown;
+        coefficient = -coefficient;
+        sum = text_of(shown, c, 0);
+      }
+      factor.text = latex ? "\\left(" + sum + "\\right)" : "(" + sum + ")";
+    } else {
+      factor.text = text_of(shown, c, kProductPrecedence);
+    }
     factor.kind = factor_class(shown, c.roles, factor.index);
-    factor.text = text_of(shown, c, kProductPrecedence);
     (divides ? denominator : numerator).push_back(std::move(factor));
   }
   const auto by_order = [](const Factor& a, const Factor& b) {

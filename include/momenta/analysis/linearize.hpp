@@ -174,6 +174,13 @@ double characteristic_length(const model::Model& model);
 /// their velocity names.
 std::vector<std::string> linear_state_names(const model::Model& model);
 
+/// Below this largest free-coordinate acceleration (rad/s² or m/s²) a linearization's point is
+/// at rest: an equilibrium, whose modes describe more than the instant.
+inline constexpr double kAtRestAcceleration = 1e-9;
+
+/// The largest |v̇| over the free coordinates at the linearization's point.
+double largest_acceleration(const LinearModel& linear);
+
 /// Undamped normal modes of M δq̈ + K δq = 0 from a linearization (mass and stiffness), named
 /// after the configuration states. K is symmetric for a conservative model at an equilibrium
 /// (the Hessian of the potential); its symmetric part is used after checking that the

@@ -70,7 +70,8 @@ SimulationRun simulate_for_report(const io::ModelFile& file, simulate::Simulatio
 /// responses, animated mode shapes); when it cannot (no free joint, a singular mass matrix, a
 /// channel the model lacks, a state that is not a steady motion), the panel says why; with
 /// `linear.campbell`, the Campbell diagram (or why there is none). Throws InvalidArgument for an
-/// `about` other than "auto", "initial", "equilibrium" or "steady", or a run with no file or no rows.
+/// `about` other than "auto", "initial", "equilibrium" or "steady", or a run with no file or no
+/// rows.
 std::string simulation_report_html(const SimulationRun& run, const LinearSettings& linear = {});
 
 /// The report page of a part: the composite with its centre of mass, principal axes and
