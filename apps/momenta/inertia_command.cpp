@@ -35,20 +35,6 @@ struct InertiaOptions {
   bool force = false;
 };
 
-// x + 0.0 turns −0 into +0 (a zero product of inertia reads better without its sign) and leaves
-// every other value as it is.
-double tidy(double x) { return x + 0.0; }
-
-// Text shows 6 significant digits; entries below 1e-12 of `scale` (the round-off of a sum that
-// cancels, such as the products of a symmetric part) print as 0 there. JSON keeps every value.
-Vec3 shown(const Vec3& v, double scale) {
-  return v.unaryExpr([&](double x) { return std::abs(x) < 1e-12 * scale ? 0.0 : tidy(x); });
-}
-Mat3 shown(const Mat3& M) {
-  const double scale = M.cwiseAbs().maxCoeff();
-  return M.unaryExpr([&](double x) { return std::abs(x) < 1e-12 * scale ? 0.0 : tidy(x); });
-}
-
 void print_tensor(const Mat3& M, const char* format) {
   for (int i = 0; i < 3; ++i) {
     fmt::print("  [");
@@ -117,8 +103,7 @@ void run(const InertiaOptions& o) {
   } else {
     fmt::print("{} ({})\n", r.name, o.part.file);
     // Lengths are shown against the body's size: its radius of gyration or its distance from Bo.
-    const double length = std::max(mp.center_of_mass().norm(),
-                                   std::sqrt(mp.inertia_about_com().trace() / (2 * mp.mass())));
+    const double length = length_scale(mp);
     if (!r.is_mesh) {
       fmt::print("\n  {:<24} {:<18} {:>12}  {}\n", "part", "kind", "mass kg", "centre of mass m");
       for (const io::PartSummary& p : r.parts) {

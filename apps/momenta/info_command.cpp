@@ -309,14 +309,16 @@ void print_text(const json& j, const io::ModelFile& file) {
     const inertia::MassProperties& mp = body.mass_properties;
     fmt::print("  {}  (on joint {})\n", body.name, m.joint(body.joint_index).name);
     fmt::print("    mass               {:.9g} kg\n", mp.mass());
-    fmt::print("    centre of mass     {} m (in {})\n", vec_text(mp.center_of_mass()), body.name);
+    fmt::print("    centre of mass     {} m (in {})\n",
+               vec_text(shown(mp.center_of_mass(), length_scale(mp))), body.name);
     fmt::print("    inertia about com  ");
-    const Mat3& I = mp.inertia_about_com();
+    const Mat3 I = shown(mp.inertia_about_com());
     for (int r = 0; r < 3; ++r) {
       fmt::print("{}[{:>13.6e} {:>13.6e} {:>13.6e} ]\n", r == 0 ? "" : "                       ",
                  I(r, 0), I(r, 1), I(r, 2));
     }
-    fmt::print("    principal moments  {} kg·m²\n", vec_text(mp.principal_axes().moments));
+    const Vec3 moments = mp.principal_axes().moments;
+    fmt::print("    principal moments  {} kg·m²\n", vec_text(shown(moments, moments.maxCoeff())));
   }
 
   fmt::print("\njoints ({})\n", m.num_joints());

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "momenta/common/error.hpp"
+#include "momenta/common/number_text.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -78,6 +79,20 @@ std::string json_text(const json& j, ListSpacing lists) {
   std::string out;
   write_json(out, j, 0, lists);
   return out;
+}
+
+Vec3 shown(const Vec3& v, double scale) {
+  return v.unaryExpr([&](double x) { return shown_value(x, scale); });
+}
+
+Mat3 shown(const Mat3& M) {
+  const double scale = M.cwiseAbs().maxCoeff();
+  return M.unaryExpr([&](double x) { return shown_value(x, scale); });
+}
+
+double length_scale(const inertia::MassProperties& mp) {
+  return std::max(mp.center_of_mass().norm(),
+                  std::sqrt(mp.inertia_about_com().trace() / (2 * mp.mass())));
 }
 
 std::string vec_text(const Vec3& v) {

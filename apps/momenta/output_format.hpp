@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "momenta/inertia/mass_properties.hpp"
 #include "momenta/math/types.hpp"
 
 namespace momenta::cli {
@@ -26,6 +27,15 @@ enum class ListSpacing { compact, spaced };
 /// Pretty JSON: an item a line, indented by 2, but a list of numbers or strings on one line
 /// (`"com": [0, 0, 0.11]` reads better than three lines, and a matrix shows as its rows).
 std::string json_text(const nlohmann::ordered_json& j, ListSpacing lists = ListSpacing::compact);
+
+/// v as text shows it against `scale` (each entry through shown_value: the round-off of a sum
+/// that cancels, such as a symmetric part's centre of mass, as 0). JSON keeps every value.
+Vec3 shown(const Vec3& v, double scale);
+/// A tensor as text shows it, against its largest entry.
+Mat3 shown(const Mat3& M);
+/// The length a body's centre of mass is shown against: the larger of its distance from the
+/// body's origin and its radius of gyration, sqrt(tr I / 2m).
+double length_scale(const inertia::MassProperties& mp);
 
 /// "[x, y, z]", 6 significant digits.
 std::string vec_text(const Vec3& v);

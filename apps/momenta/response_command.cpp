@@ -37,7 +37,10 @@ struct ResponseOptions {
   std::optional<double> duration;
   std::optional<std::size_t> points;
   bool json = false;
-  int digits = 0;  // significant digits of poles, zeros and gains; 0: round-trip
+  // Significant digits of poles, zeros and gains in the text. The linearization behind them is by
+  // central differences, good to about 1e-10 relative: ten digits are the meaningful ones
+  // (0.02, not 0.019999999999999997); --json keeps every bit.
+  int digits = 10;
 };
 
 using json = nlohmann::ordered_json;
@@ -214,7 +217,7 @@ void add_response_command(CLI::App& app) {
   command
       ->add_option("--digits", options->digits,
                    "Significant digits of poles, zeros, gains and step figures in the text "
-                   "(default: as many as read back to the same number)")
+                   "(the linearization is good to about 1e-10; --json keeps every bit)")
       ->check(CLI::Range(1, 17));
   command
       ->add_option("--duration", options->duration,

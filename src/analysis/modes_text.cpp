@@ -15,15 +15,27 @@ namespace {
 
 double hertz(double omega) { return omega / (2 * std::numbers::pi); }
 
+// An eigenvalue below this fraction of the largest is a rigid-body (or neutral) mode's zero: the
+// linearization's central differences leave A with errors near 1e-10 of its scale, and a double
+// zero eigenvalue splits by about their square root (the flexible satellite's 2.4e-9 rad/s
+// against its 1 rad/s boom mode). A physical mode this slow beside the fastest is not resolved
+// by the linearization anyway; --json keeps the computed value. A model whose every eigenvalue
+// is that small has no scale here to tell round-off by, and prints them as they are.
+constexpr double kZeroEigenvalueRelative = 1e-6;
+
 }  // namespace
 
 std::string modes_table(const Modes& m) {
   std::string out =
       fmt::format("  {:>3}  {:>26}  {:>12}  {:>12}  {:>10}  {}\n", "#", "eigenvalue 1/s",
                   "ωn rad/s", "ωn Hz", "ζ", "largest shape entries");
+  double largest = 0.0;
+  for (const Mode& mode : m.modes) largest = std::max(largest, std::abs(mode.eigenvalue));
   for (std::size_t k = 0; k < m.modes.size(); ++k) {
     const Mode& mode = m.modes[k];
-    // The shape's three largest entries, by magnitude.
+    const bool rigid = std::abs(mode.eigenvalue) <= kZeroEigenvalueRelative * largest;
+    // The shape's three largest entries, by magnitude; a rigid-body mode's speeds (λ times its
+    // positions: round-off with λ) left out like λ itself.
     std::vector<Eigen::Index> order(static_cast<std::size_t>(mode.shape.size()));
     for (Eigen::Index i = 0; i < mode.shape.size(); ++i) order[static_cast<std::size_t>(i)] = i;
     std::sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) {
@@ -32,15 +44,24 @@ std::string modes_table(const Modes& m) {
     std::vector<std::string> entries;
     for (std::size_t i = 0; i < std::min<std::size_t>(3, order.size()); ++i) {
       const Eigen::Index e = order[i];
-      if (std::abs(mode.shape[e]) < 1e-9) break;
+      const double size = std::abs(mode.shape[e]);
+      if (size < 1e-9 ||
+          (rigid && size <= kZeroEigenvalueRelative * std::abs(mode.shape[order[0]])))
+        break;
       const std::string name = static_cast<std::size_t>(e) < m.state_names.size()
                                    ? m.state_names[static_cast<std::size_t>(e)]
                                    : fmt::format("x{}", e);
       entries.push_back(fmt::format("{} {}", name, complex_text(mode.shape[e])));
     }
-    // ζ is undefined at λ = 0: left blank; −0 prints as 0.
+    if (rigid) {
+      // ζ is undefined at λ = 0: left blank.
+      out += fmt::format("  {:>3}  {:>26}  {:>12}  {:>12}  {:>10}  {}\n", k + 1,
+                         "0 (rigid-body mode)", 0, 0, "", fmt::join(entries, "; "));
+      continue;
+    }
+    // ζ is undefined at λ = 0: left blank; its round-off (of a ratio: against 1) as 0.
     const std::string zeta = std::isfinite(mode.damping_ratio)
-                                 ? fmt::format("{:.4g}", mode.damping_ratio + 0.0)
+                                 ? fmt::format("{:.4g}", shown_value(mode.damping_ratio, 1.0))
                                  : std::string();
     out += fmt::format("  {:>3}  {:>26}  {:>12.6g}  {:>12.6g}  {:>10}  {}\n", k + 1,
                        complex_text(mode.eigenvalue), mode.natural_frequency,

@@ -6,6 +6,10 @@
 
 namespace momenta {
 
+double shown_value(double x, double scale) {
+  return std::abs(x) <= kRoundOffRelative * std::abs(scale) ? 0.0 : x + 0.0;
+}
+
 std::string number_text(double x, int digits) {
   if (!std::isfinite(x)) return "undefined";
   if (digits <= 0) return fmt::format("{}", x + 0.0);  // the shortest text that reads back to x
@@ -18,8 +22,8 @@ std::string quantity_text(double x, int digits, std::string_view unit) {
 }
 
 std::string complex_text(std::complex<double> z, int digits) {
-  const double tiny = 1e-12 * std::abs(z);
-  z = {std::abs(z.real()) <= tiny ? 0.0 : z.real(), std::abs(z.imag()) <= tiny ? 0.0 : z.imag()};
+  const double scale = std::abs(z);
+  z = {shown_value(z.real(), scale), shown_value(z.imag(), scale)};
   if (z.imag() == 0.0) return number_text(z.real(), digits);
   return fmt::format("{} {} {}j", number_text(z.real(), digits), z.imag() < 0 ? "−" : "+",
                      number_text(std::abs(z.imag()), digits));

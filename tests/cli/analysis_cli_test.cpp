@@ -107,6 +107,25 @@ TEST_F(AnalysisCli, KinematicsOfTheTurntableBead) {
   EXPECT_NE(unknown.err.find("did you mean 'turntable'"), std::string::npos) << unknown.err;
 }
 
+// Round-off is not shown as a value (one rule, common/number_text.hpp): the flexible satellite's
+// rigid-body pair (computed 1.5e-17 ± 2.4e-9j against its 1 rad/s boom mode) prints as
+// "0 (rigid-body mode)"; --json keeps the computed values.
+TEST_F(AnalysisCli, RigidBodyModesPrintAsZero) {
+  const CliRun text = momenta("modes " + example("flexible_satellite"));
+  ASSERT_EQ(text.code, 0) << text.err;
+  std::size_t rigid = 0;
+  for (auto at = text.out.find("0 (rigid-body mode)"); at != std::string::npos;
+       at = text.out.find("0 (rigid-body mode)", at + 1))
+    ++rigid;
+  EXPECT_EQ(rigid, 2u) << text.out;
+  EXPECT_EQ(text.out.find("e-09"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("1.0005"), std::string::npos) << text.out;  // the boom mode stays
+  const json j = json::parse(momenta("modes " + example("flexible_satellite") + " --json").out);
+  const double w = j.at("modes").at(0).at("natural_frequency_rad_s").get<double>();
+  EXPECT_GT(w, 0.0);
+  EXPECT_LT(w, 1e-6);
+}
+
 #if MOMENTA_TEST_SYMBOLIC
 // An expression as GiNaC prints it, in a canonical order: the terms of each sum and the factors
 // of each product sorted (GiNaC orders them by its symbols' creation, which can differ from run
@@ -528,12 +547,21 @@ TEST_F(AnalysisCli, ResponseJsonIsExactAndTheTextReadsBack) {
   EXPECT_EQ(j.at("samples").at("time").size(), j.at("samples").at("output").size());
   const double pole = j.at("poles").at(0).at(0).get<double>();
   EXPECT_NEAR(pole, -0.05, 1e-15);
+  // The text shows the ten digits the linearization is good for (the cruise control's DC gain
+  // 0.02, not 0.019999999999999997); --digits 17 reads back to the same doubles.
+  const auto figure_after = [](const std::string& out, const std::string& label) {
+    const std::string rest = out.substr(out.find(label) + label.size());
+    return rest.substr(0, rest.find('\n'));
+  };
   const CliRun text = momenta(args);
   ASSERT_EQ(text.code, 0) << text.err;
-  const std::string line = text.out.substr(text.out.find("poles (1/s): ") + 13);
-  EXPECT_EQ(std::stod(line.substr(0, line.find('\n'))), pole) << text.out;
-  const std::string gain = text.out.substr(text.out.find("DC gain: ") + 9);
-  EXPECT_EQ(std::stod(gain.substr(0, gain.find('\n'))), j.at("dc_gain").get<double>());
+  EXPECT_EQ(figure_after(text.out, "DC gain: "), "0.02") << text.out;
+  EXPECT_TRUE(
+      test::relatively_near(std::stod(figure_after(text.out, "poles (1/s): ")), pole, 1e-10));
+  const CliRun exact = momenta(args + " --digits 17");
+  ASSERT_EQ(exact.code, 0) << exact.err;
+  EXPECT_EQ(std::stod(figure_after(exact.out, "poles (1/s): ")), pole) << exact.out;
+  EXPECT_EQ(std::stod(figure_after(exact.out, "DC gain: ")), j.at("dc_gain").get<double>());
   // --json and --csv are two ways to the samples: one at a time.
   EXPECT_EQ(momenta(args + " --json --csv -").code, 2);
 }
