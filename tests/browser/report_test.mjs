@@ -8,7 +8,8 @@
 // Checks, per page: no console error and no request beyond the file; the 3-D canvas is not
 // blank and changes between two times; body positions equal the CSV of `momenta simulate` to
 // 1e-9 m; the plots hold every recorded column; the poles equal `linearize --json` and the Bode
-// data `response --bode` to 1e-9; the 10 s double pendulum's file is ≤ 3 MB. How fast a page
+// data `response --bode` to 1e-9; the 10 s double pendulum's file is ≤ 3 MB; every bundled
+// example's whole motion is framed (below). How fast a page
 // becomes interactive and how many frames a second it draws are measured by report_bench.mjs,
 // not here: a timed test fails on a busy machine.
 
@@ -74,6 +75,38 @@ async function checkSimulationPage(name, model, extra = []) {
 }
 
 const measured = {};
+
+// Every bundled example's 3-D view frames its whole motion: the box of every body (centre of
+// mass, joint points, size) over the run projects onto 30–90 % of the canvas in its larger
+// direction (the framing aims at 75 %), no corner before the near plane or beyond the far one,
+// and the ground grid lies under the lowest point the bodies reach. The motion panel of each is
+// kept as a screenshot.
+test('every bundled example: the camera frames the whole motion, the grid lies below it', async () => {
+  const models = [
+    ...fs.readdirSync(examples).filter((f) => f.endsWith('.yaml')).map((f) => path.join(examples, f)),
+    ...['constraints', 'kinematics'].flatMap((dir) => fs.readdirSync(path.join(examples, dir))
+      .filter((f) => f.endsWith('.yaml')).map((f) => path.join(examples, dir, f))),
+  ];
+  assert.ok(models.length >= 20, `${models.length} examples`);
+  for (const model of models) {
+    const name = path.basename(model, '.yaml');
+    const file = path.join(work, `framing-${name}.html`);
+    run('report', model, '-o', file, '-q');
+    const { page, problems } = await open(file);
+    await firstFrame(page);
+    const seen = await page.evaluate(() => ({ coverage: window.momentaReport.framing(),
+      grid: window.momentaReport.gridHeight(), lowest: window.momentaReport.sweptLowest() }));
+    const larger = Math.max(seen.coverage.width, seen.coverage.height);
+    assert.ok(larger >= 0.3 && larger <= 0.9, `${name}: the motion spans ${larger.toFixed(2)} of the canvas`);
+    assert.ok(seen.coverage.width <= 0.9 && seen.coverage.height <= 0.9, `${name}: the motion spills over`);
+    assert.equal(seen.coverage.clipped, false, `${name}: the motion is clipped by the near or far plane`);
+    assert.ok(seen.grid <= seen.lowest, `${name}: the grid at ${seen.grid} cuts the motion (lowest ${seen.lowest})`);
+    const motion = await page.$('#motion');
+    await motion.screenshot({ path: path.join(artifacts, `framing-${name}.png`) });
+    assert.deepEqual(problems, [], name);
+    await page.close();
+  }
+});
 
 test('double pendulum: positions equal the CSV, every column plotted, poles and Bode match', async () => {
   const model = path.join(examples, 'double_pendulum.yaml');

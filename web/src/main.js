@@ -54,6 +54,10 @@ function simulationPage(app, data) {
     play: (on) => { timeline.playing = on; },
     playMode: (i) => motion.playMode(data.linear.modes[i]),
     framesDrawn: () => frames,
+    // The canvas fraction the box of every body over the run covers, as the camera frames it.
+    framing: () => motion.viewer.coverage(motion.viewer.framed.box),
+    gridHeight: () => motion.viewer.grid.position.dot(motion.viewer.up),
+    sweptLowest: () => Math.min(...motion.sweptPoints.map((p) => p[0] * motion.viewer.up.x + p[1] * motion.viewer.up.y + p[2] * motion.viewer.up.z)),
     showReactions: (on) => motion.setToggle('reactions', on),
     reactionArrows: () => motion.reactionArrowsDrawn(),
     summary: () => data.summary,

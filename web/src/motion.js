@@ -49,21 +49,61 @@ export class Motion {
     this.omega = decode(frames.omega);
     this.bodies = this.scene.bodies;
     this.nb = this.bodies.length;
-    this.length = this.scene.length;
-    this.viewer = new Viewer(container, this.length);
+    // Everything is drawn at the scale of the motion: the radius of the sphere around every body
+    // (its centre of mass, joint points and size) over the run, so that arrows, axes and point
+    // masses read at the scale the camera frames.
+    [this.sweptPoints, this.skeleton] = this.motionPoints();
+    this.length = this.radiusOf(this.sweptPoints);
+    const g = this.scene.gravity;
+    const up = Math.hypot(...g) > 0 ? g.map((x) => -x) : [0, 0, 1];
+    this.viewer = new Viewer(container, this.length, up);
     this.mode = null;
     this.buildBodies();
     this.buildJoints();
     this.buildElements();
     this.buildVectors(frames);
     this.show(timeline.time);
-    const points = [];
-    for (let k = 0; k < this.time.length; k += Math.max(1, Math.floor(this.time.length / 50))) {
-      for (let b = 0; b < this.nb; b++) points.push(this.bodyPoint(b, this.bodies[b].com, this.time[k]));
-    }
-    points.push([0, 0, 0]);
-    this.viewer.frame(points);
+    this.viewer.frame(this.sweptPoints, this.skeleton);
     timeline.onChange((t) => { if (!this.mode) this.show(t); });
+  }
+
+  // Points the bodies sweep, at up to 60 kept frames: each body's centre of mass ± its size
+  // along each world axis (1.75 radii of gyration: a slender rod's half length, a sphere's radius
+  // and a third), and the joint points J' on it (a massless rod's ends). Returns those and the
+  // skeleton alone (centres of mass and joint points).
+  motionPoints() {
+    const points = [];
+    const skeleton = [];
+    const step = Math.max(1, Math.floor(this.time.length / 60));
+    const anchors = this.bodies.map((body) => [body.com,
+      ...this.scene.joints.filter((j) => j.child === body.name).map((j) => j.origin)]);
+    const sizes = this.bodies.map((body) => {
+      const I = body.inertia;
+      return body.mass > 0 ? 1.75 * Math.sqrt(Math.max(0, I[0] + I[4] + I[8]) / (2 * body.mass)) : 0;
+    });
+    for (let k = 0; k < this.time.length; k += step) {
+      for (let b = 0; b < this.nb; b++) {
+        for (const a of anchors[b]) skeleton.push(this.bodyPoint(b, a, this.time[k]));
+        const c = this.bodyPoint(b, this.bodies[b].com, this.time[k]);
+        for (let axis = 0; axis < 3; axis++) {
+          for (const sign of [-1, 1]) points.push(c.map((x, i) => (i === axis ? x + sign * sizes[b] : x)));
+        }
+      }
+    }
+    // A run that blew up leaves rows of huge or non-finite values: not to be framed (the view's
+    // geometry is float32, which overflows near 3e38).
+    const bound = Math.min(1e30, 1e9 * this.scene.length);
+    const sane = (p) => p.every((x) => Math.abs(x) < bound);
+    return [[...skeleton, ...points].filter(sane), skeleton.filter(sane)];
+  }
+
+  // Half the diagonal of the points' box (at least 1e-3 of the model's characteristic length).
+  radiusOf(points) {
+    const lo = [Infinity, Infinity, Infinity];
+    const hi = [-Infinity, -Infinity, -Infinity];
+    for (const p of points) for (let i = 0; i < 3; i++) { lo[i] = Math.min(lo[i], p[i]); hi[i] = Math.max(hi[i], p[i]); }
+    const radius = 0.5 * Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+    return Number.isFinite(radius) ? Math.max(radius, 1e-3 * this.scene.length) : this.scene.length;
   }
 
   // The kept frames around time t: [lo, hi] with time[lo] ≤ t ≤ time[hi] (equal at the ends).

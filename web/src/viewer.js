@@ -39,24 +39,112 @@ export class Viewer {
     const sun = new THREE.DirectionalLight(0xffffff, 1.4);
     sun.position.set(3, -2, 5);
     this.scene.add(sun);
-    // The ground grid in the world's xy-plane (z up), and the world axes (x red, y green, z blue).
-    const grid = new THREE.GridHelper(length * 8, 16, 0xbbbbbb, 0xdddddd);
-    grid.rotateX(Math.PI / 2);
-    this.scene.add(grid);
-    this.scene.add(new THREE.AxesHelper(length * 0.6));
+    // The ground grid, perpendicular to `up` (frame() places and sizes it), and the world axes
+    // (x red, y green, z blue).
+    this.up = new THREE.Vector3(...up).normalize();
+    this.grid = new THREE.GridHelper(1, 10, 0xbbbbbb, 0xdddddd);
+    this.grid.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), this.up);
+    this.scene.add(this.grid);
+    this.scene.add(new THREE.AxesHelper(length * 0.3));
     this.resize();
     new ResizeObserver(() => this.resize()).observe(container);
   }
 
-  // Looks at the box around the points, from a three-quarter view.
-  frame(points) {
-    const box = new THREE.Box3();
-    for (const p of points) box.expandByPoint(new THREE.Vector3(...p));
+  // Looks at the box around the points so that its bounding sphere fills the view with a margin:
+  // face on to the plane of motion when the box is flat (a planar mechanism: its thinnest
+  // direction is under a fifth of its largest), from a three-quarter view otherwise. The ground
+  // grid goes under the box (at the world's origin when the box is above it), a few times its
+  // size, in 1-2-5 steps.
+  // `skeleton`: the points that say whether the motion is planar (centres of mass and joint
+  // points, without the bodies' sizes); `points` besides: everything to keep in view.
+  frame(points, skeleton = points) {
+    const boxOf = (list) => {
+      const b = new THREE.Box3();
+      for (const p of list) b.expandByPoint(new THREE.Vector3(...p));
+      return b;
+    };
+    const box = boxOf(points);
     const center = box.getCenter(new THREE.Vector3());
-    const size = Math.max(box.getSize(new THREE.Vector3()).length(), this.length);
+    const radius = Math.max(0.5 * box.getSize(new THREE.Vector3()).length(), 1e-3 * this.length);
+    const flat = boxOf(skeleton).getSize(new THREE.Vector3());
+    const thinnest = [0, 1, 2].reduce((a, k) => (flat.getComponent(k) < flat.getComponent(a) ? k : a), 0);
+    const threeQuarter = this.threeQuarterDirection();
+    let direction = threeQuarter;
+    if (flat.getComponent(thinnest) < 0.2 * Math.max(flat.x, flat.y, flat.z)) {
+      // Along the plane's normal, turned 20° about the up direction (or a side) to show depth.
+      const normal = new THREE.Vector3().setComponent(thinnest, 1);
+      const side = Math.abs(normal.dot(this.up)) > 0.9 ? new THREE.Vector3(1, 0, 0) : this.up;
+      direction = normal.applyAxisAngle(side, (20 * Math.PI) / 180).add(this.up.clone().multiplyScalar(0.15));
+      if (direction.dot(threeQuarter) < 0) direction.negate();
+    }
+    direction.normalize();
+    // First the sphere fits the narrower of the vertical and horizontal fields of view, with 15 %
+    // to spare; then the camera moves in or out until the box's projection spans 75 % of the
+    // canvas in its larger direction (a long, thin motion — a car driving off — would fill little
+    // of the sphere's view). Never closer than the sphere's surface.
+    const vertical = THREE.MathUtils.degToRad(this.camera.fov) / 2;
+    const horizontal = Math.atan(Math.tan(vertical) * this.camera.aspect);
+    let distance = (1.15 * radius) / Math.sin(Math.min(vertical, horizontal));
+    const place = () => {
+      this.camera.position.copy(center).addScaledVector(direction, distance);
+      this.camera.lookAt(center);
+      this.camera.near = Math.max(distance - 1.5 * radius, distance * 1e-3);
+      this.camera.far = distance + 20 * radius;
+      this.camera.updateProjectionMatrix();
+    };
     this.controls.target.copy(center);
-    this.camera.position.set(center.x + 0.6 * size, center.y - 1.0 * size, center.z + 0.45 * size);
+    place();
+    for (let pass = 0; pass < 3; pass++) {
+      const { width, height } = this.coverage(box);
+      const filled = Math.max(width, height);
+      if (!(filled > 0)) break;
+      distance = Math.max(distance * (filled / 0.75), 1.2 * radius);
+      place();
+    }
     this.controls.update();
+    this.placeGrid(box, radius);
+    this.framed = { box, radius };
+  }
+
+  // From the front right and a little above, whichever way is up: (0.6, −1, 0.45) with z up.
+  threeQuarterDirection() {
+    const reference = Math.abs(this.up.z) > 0.9 ? new THREE.Vector3(1, 0, 0) : new THREE.Vector3(0, 0, 1);
+    const right = reference.clone().addScaledVector(this.up, -reference.dot(this.up)).normalize();
+    const front = new THREE.Vector3().crossVectors(this.up, right);  // z up: right = x, front = y
+    return right.multiplyScalar(0.6).addScaledVector(front, -1.0).addScaledVector(this.up, 0.45);
+  }
+
+  placeGrid(box, radius) {
+    const lowest = Math.min(...[0, 1].flatMap((i) => [0, 1].flatMap((j) => [0, 1].map((k) => new THREE.Vector3(
+      i ? box.max.x : box.min.x, j ? box.max.y : box.min.y, k ? box.max.z : box.min.z).dot(this.up)))));
+    const height = Math.min(0, lowest - 0.05 * radius);
+    const span = 6 * radius;
+    const decade = 10 ** Math.floor(Math.log10(span / 10));
+    const spacing = [1, 2, 5, 10].map((m) => m * decade).find((s) => span / s <= 12);
+    const cells = Math.max(2, 2 * Math.ceil(span / spacing / 2));
+    this.grid.scale.setScalar(cells * spacing);
+    this.grid.geometry.dispose();
+    this.grid.geometry = new THREE.GridHelper(1, cells, 0xbbbbbb, 0xdddddd).geometry;
+    const center = box.getCenter(new THREE.Vector3());
+    const along = center.dot(this.up);
+    this.grid.position.copy(center).addScaledVector(this.up, height - along);
+    this.gridSpacing = spacing;
+  }
+
+  // The fraction of the canvas's width and height that the box's projection covers (each corner
+  // projected; > 1 where it spills over), and whether any corner is before the near plane.
+  coverage(box) {
+    const corners = [0, 1].flatMap((i) => [0, 1].flatMap((j) => [0, 1].map((k) => new THREE.Vector3(
+      i ? box.max.x : box.min.x, j ? box.max.y : box.min.y, k ? box.max.z : box.min.z))));
+    this.camera.updateMatrixWorld();
+    const projected = corners.map((c) => c.clone().project(this.camera));
+    const xs = projected.map((p) => p.x);
+    const ys = projected.map((p) => p.y);
+    return {
+      width: (Math.max(...xs) - Math.min(...xs)) / 2,
+      height: (Math.max(...ys) - Math.min(...ys)) / 2,
+      clipped: projected.some((p) => p.z < -1 || p.z > 1),
+    };
   }
 
   resize() {
