@@ -381,6 +381,18 @@ test('sweep page: a scatter plot and parallel coordinates of every run, the numb
     first: (() => { const c = document.querySelector('#sweep-scatter circle[data-run="0"] title'); return c.textContent; })(),
   }));
   assert.deepEqual(chosen.axes, ['b', 'peak_suspension_force']);
+  // b runs 2000 to 20000 N·s/m in log steps: a log axis ticked at 2, 5, 10, 20 thousand; the
+  // force's axis linear, at 1-2-5 steps; the colour scale has its legend.
+  const scales = await page.evaluate(() => window.momentaReport.scatterScales());
+  assert.equal(scales.x.log, true);
+  assert.deepEqual(scales.x.ticks, [2000, 5000, 10000, 20000]);
+  assert.equal(scales.y.log, false);
+  const steps = scales.y.ticks.slice(1).map((t, i) => t - scales.y.ticks[i]);
+  assert.ok(steps.length >= 2 && steps.every((s) => Math.abs(s - steps[0]) <= 1e-9 * steps[0]), `${scales.y.ticks}`);
+  const mantissa = steps[0] / 10 ** Math.floor(Math.log10(steps[0]));
+  assert.ok([1, 2, 5].some((m) => Math.abs(mantissa - m) < 1e-9), `tick step ${steps[0]}`);
+  const legend = await page.$eval('#sweep-scatter .colour-legend .legend-name', (e) => e.textContent);
+  assert.equal(legend, `colour: ${hook.names[2]}`);
   assert.equal(chosen.first, `run 0: b = ${table.column('b')[0]}, peak_suspension_force = ${table.column('peak_suspension_force')[0]}`);
   await page.select('#sweep-y', '2');
   await page.screenshot({ path: path.join(artifacts, 'sweep-page.png'), fullPage: true });

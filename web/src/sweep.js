@@ -25,13 +25,79 @@ function extent(values) {
   return [low, high];
 }
 
+// Whether a column reads better on a log axis: positive values over at least a decade that are
+// geometrically spaced (a sweep's `spacing: log`: equal ratios between its distinct values), or
+// spread over two decades or more however they fall.
+function isLogSpaced(values) {
+  const finite = values.filter(Number.isFinite);
+  if (!finite.length || finite.some((v) => v <= 0)) return false;
+  const [lo, hi] = extent(finite);
+  if (hi / lo >= 100) return true;
+  if (hi / lo < 10) return false;
+  const distinct = [...new Set(finite)].sort((a, b) => a - b);
+  if (distinct.length < 3) return false;
+  const steps = distinct.slice(1).map((v, i) => Math.log(v / distinct[i]));
+  return steps.every((s) => Math.abs(s - steps[0]) <= 1e-6 * steps[0]);
+}
+
+// Ticks at 1-2-5 steps (about `count` of them) within [lo, hi].
+function linearTicks(lo, hi, count = 5) {
+  const rough = (hi - lo) / count;
+  const decade = 10 ** Math.floor(Math.log10(rough));
+  const step = [1, 2, 5, 10].map((m) => m * decade).find((s) => s >= rough) ?? 10 * decade;
+  const ticks = [];
+  const first = Math.ceil(lo / step);
+  for (let k = first; (k * step) <= hi + 1e-9 * step && ticks.length < 50; k++) ticks.push(k === 0 ? 0 : k * step);
+  return ticks;
+}
+
+// Ticks at 1, 2, 5 times each power of ten within [lo, hi] (the powers alone over many decades).
+function logTicks(lo, hi) {
+  const ticks = [];
+  const multiples = Math.log10(hi / lo) > 4 ? [1] : [1, 2, 5];
+  for (let e = Math.floor(Math.log10(lo)); e <= Math.ceil(Math.log10(hi)); e++) {
+    for (const m of multiples) {
+      const t = m * 10 ** e;
+      if (t >= lo * (1 - 1e-12) && t <= hi * (1 + 1e-12)) ticks.push(t);
+    }
+  }
+  return ticks;
+}
+
+// A column's scale: where a value falls in [0, 1] along its axis, and the axis's ticks.
+function scaleOf(values) {
+  const log = isLogSpaced(values);
+  const [lo, hi] = extent(values.filter((v) => Number.isFinite(v) && (!log || v > 0)));
+  const at = log ? (v) => Math.log(v / lo) / Math.log(hi / lo) : (v) => (v - lo) / (hi - lo);
+  return { log, lo, hi, at, ticks: log ? logTicks(lo, hi) : linearTicks(lo, hi) };
+}
+
 // A colour from cool (low) to warm (high) for s in [0, 1].
 function colour(s) {
   const hue = 240 - 240 * Math.min(1, Math.max(0, s));
   return `hsl(${hue.toFixed(0)}, 70%, 45%)`;
 }
 
-function scatterPlot(names, columns, ok, colourBy) {
+// The colour scale: a bar from the lowest to the highest value of the colouring column, its
+// name and ticks.
+function colourLegend(name, lo, hi) {
+  const width = 640;
+  const legend = svg('svg', { width, height: 54, viewBox: `0 0 ${width} 54`, class: 'colour-legend' });
+  const gradient = svg('linearGradient', { id: 'sweep-colours', x1: '0', x2: '1', y1: '0', y2: '0' });
+  for (let k = 0; k <= 10; k++) gradient.append(svg('stop', { offset: `${10 * k}%`, 'stop-color': colour(k / 10) }));
+  legend.append(svg('defs', {}, gradient));
+  const left = 80;
+  const right = width - 20;
+  legend.append(svg('rect', { x: left, y: 18, width: right - left, height: 10, fill: 'url(#sweep-colours)' }));
+  legend.append(svg('text', { x: left, y: 12, 'font-size': 12, class: 'legend-name' }, document.createTextNode(`colour: ${name}`)));
+  for (const t of linearTicks(lo, hi)) {
+    const x = left + ((t - lo) / (hi - lo)) * (right - left);
+    legend.append(svg('text', { x: x.toFixed(1), y: 44, 'text-anchor': 'middle', 'font-size': 11 }, document.createTextNode(formatNumber(t, 4))));
+  }
+  return legend;
+}
+
+function scatterPlot(names, columns, ok, colourBy, colourName) {
   const width = 640;
   const height = 420;
   const margin = { left: 80, right: 20, top: 20, bottom: 60 };
@@ -59,22 +125,31 @@ function scatterPlot(names, columns, ok, colourBy) {
     state.y = yi;
     const xs = columns.values[xi];
     const ys = columns.values[yi];
-    const [x0, x1] = extent(xs);
-    const [y0, y1] = extent(ys);
+    const xScale = scaleOf(Array.from(xs));
+    const yScale = scaleOf(Array.from(ys));
+    state.scales = { x: xScale, y: yScale };
     const [c0, c1] = extent(colourBy);
-    const px = (x) => margin.left + ((x - x0) / (x1 - x0)) * (width - margin.left - margin.right);
-    const py = (y) => height - margin.bottom - ((y - y0) / (y1 - y0)) * (height - margin.top - margin.bottom);
+    const px = (x) => margin.left + xScale.at(x) * (width - margin.left - margin.right);
+    const py = (y) => height - margin.bottom - yScale.at(y) * (height - margin.top - margin.bottom);
     const plot = svg('svg', { width, height, viewBox: `0 0 ${width} ${height}`, class: 'sweep-scatter' });
     plot.append(svg('rect', { x: margin.left, y: margin.top, width: width - margin.left - margin.right,
       height: height - margin.top - margin.bottom, fill: 'none', stroke: '#888' }));
     const label = (x, y, text, anchor = 'middle', extra = {}) =>
       svg('text', { x, y, 'text-anchor': anchor, 'font-size': 12, ...extra }, document.createTextNode(text));
-    plot.append(label(margin.left, height - margin.bottom + 16, formatNumber(x0, 4), 'start'));
-    plot.append(label(width - margin.right, height - margin.bottom + 16, formatNumber(x1, 4), 'end'));
-    plot.append(label(margin.left - 6, height - margin.bottom, formatNumber(y0, 4), 'end'));
-    plot.append(label(margin.left - 6, margin.top + 10, formatNumber(y1, 4), 'end'));
-    plot.append(label((margin.left + width - margin.right) / 2, height - 18, names[xi], 'middle', { class: 'x-name' }));
-    plot.append(label(16, (margin.top + height - margin.bottom) / 2, names[yi], 'middle',
+    // Ticks, gridlines and their numbers; "(log)" after the name of a log axis.
+    for (const t of xScale.ticks) {
+      const x = px(t).toFixed(1);
+      plot.append(svg('line', { x1: x, x2: x, y1: margin.top, y2: height - margin.bottom, stroke: '#e4e4e4', class: 'x-tick' }));
+      plot.append(label(x, height - margin.bottom + 16, formatNumber(t, 4)));
+    }
+    for (const t of yScale.ticks) {
+      const y = py(t).toFixed(1);
+      plot.append(svg('line', { x1: margin.left, x2: width - margin.right, y1: y, y2: y, stroke: '#e4e4e4', class: 'y-tick' }));
+      plot.append(label(margin.left - 6, Number(y) + 4, formatNumber(t, 4), 'end'));
+    }
+    const axisName = (i, scale) => `${names[i]}${scale.log ? ' (log)' : ''}`;
+    plot.append(label((margin.left + width - margin.right) / 2, height - 18, axisName(xi, xScale), 'middle', { class: 'x-name' }));
+    plot.append(label(16, (margin.top + height - margin.bottom) / 2, axisName(yi, yScale), 'middle',
       { class: 'y-name', transform: `rotate(-90 16 ${(margin.top + height - margin.bottom) / 2})` }));
     let points = 0;
     for (let r = 0; r < xs.length; r++) {
@@ -85,7 +160,7 @@ function scatterPlot(names, columns, ok, colourBy) {
       points++;
     }
     state.points = points;
-    figure.replaceChildren(plot);
+    figure.replaceChildren(plot, colourLegend(colourName, c0, c1));
   };
   xSelect.addEventListener('change', draw);
   ySelect.addEventListener('change', draw);
@@ -101,7 +176,7 @@ function parallelCoordinates(names, columns, ok, colourBy) {
   const section = element('section', { id: 'sweep-parallel' }, element('h2', {}, 'Parallel coordinates'));
   const plot = svg('svg', { width, height, viewBox: `0 0 ${width} ${height}`, class: 'sweep-parallel' });
   const ax = (i) => 60 + (i * (width - 120)) / Math.max(1, names.length - 1);
-  const extents = columns.values.map(extent);
+  const scales = columns.values.map((v) => scaleOf(Array.from(v)));
   const [c0, c1] = extent(colourBy);
   let lines = 0;
   for (let r = 0; r < columns.runs.length; r++) {
@@ -110,19 +185,22 @@ function parallelCoordinates(names, columns, ok, colourBy) {
     for (let i = 0; i < names.length; i++) {
       const v = columns.values[i][r];
       if (!Number.isFinite(v)) continue;
-      const [lo, hi] = extents[i];
-      points.push(`${ax(i).toFixed(1)},${(height - bottom - ((v - lo) / (hi - lo)) * (height - top - bottom)).toFixed(1)}`);
+      points.push(`${ax(i).toFixed(1)},${(height - bottom - scales[i].at(v) * (height - top - bottom)).toFixed(1)}`);
     }
     plot.append(svg('polyline', { points: points.join(' '), fill: 'none', 'stroke-width': 1,
       'stroke-opacity': 0.6, stroke: colour((colourBy[r] - c0) / (c1 - c0)), 'data-run': columns.runs[r] }));
     lines++;
   }
   names.forEach((name, i) => {
-    const [lo, hi] = extents[i];
+    const scale = scales[i];
     plot.append(svg('line', { x1: ax(i), x2: ax(i), y1: top, y2: height - bottom, stroke: '#333' }));
     plot.append(svg('text', { x: ax(i), y: top - 22, 'text-anchor': 'middle', 'font-size': 12, class: 'axis-name' }, document.createTextNode(name)));
-    plot.append(svg('text', { x: ax(i), y: top - 8, 'text-anchor': 'middle', 'font-size': 11 }, document.createTextNode(formatNumber(hi, 4))));
-    plot.append(svg('text', { x: ax(i), y: height - bottom + 16, 'text-anchor': 'middle', 'font-size': 11 }, document.createTextNode(formatNumber(lo, 4))));
+    if (scale.log) plot.append(svg('text', { x: ax(i), y: top - 8, 'text-anchor': 'middle', 'font-size': 10 }, document.createTextNode('(log)')));
+    for (const t of scale.ticks) {
+      const y = (height - bottom - scale.at(t) * (height - top - bottom)).toFixed(1);
+      plot.append(svg('line', { x1: ax(i) - 4, x2: ax(i), y1: y, y2: y, stroke: '#333' }));
+      plot.append(svg('text', { x: ax(i) - 6, y: Number(y) + 4, 'text-anchor': 'end', 'font-size': 10 }, document.createTextNode(formatNumber(t, 4))));
+    }
   });
   section.append(element('div', { class: 'sweep-figure' }, plot));
   return { section, lines };
@@ -139,7 +217,7 @@ export function sweepPage(app, data) {
     element('p', {}, `${data.runs.length} runs of ${data.source}: ${data.runs.length - failures} ok, ${failures} failed; `,
       `${data.parameters.length} parameters, ${data.metrics.length} metric columns. Colour: ${data.metrics[0]}.`)));
   const colourBy = values[data.parameters.length];
-  const scatter = scatterPlot(names, columns, ok, colourBy);
+  const scatter = scatterPlot(names, columns, ok, colourBy, data.metrics[0]);
   app.append(scatter.section);
   const parallel = parallelCoordinates(names, columns, ok, colourBy);
   app.append(parallel.section);
@@ -150,6 +228,8 @@ export function sweepPage(app, data) {
     failures: () => failures,
     scatterPoints: () => scatter.state.points,
     scatterAxes: () => [names[scatter.state.x], names[scatter.state.y]],
+    scatterScales: () => ({ x: { log: scatter.state.scales.x.log, ticks: scatter.state.scales.x.ticks },
+      y: { log: scatter.state.scales.y.log, ticks: scatter.state.scales.y.ticks } }),
     setScatter: (x, y) => scatter.set(x, y),
     parallelLines: () => parallel.lines,
     column: (i) => Array.from(values[i]),
