@@ -134,4 +134,13 @@ def _to_pandas(self):
 
 SimulationResult.to_pandas = _to_pandas
 
+from . import _html  # noqa: E402  (after the classes it dresses)
+
+Modes._repr_html_ = _html.modes_html
+SimulationResult._repr_html_ = _html.simulation_html
+for _result in (StateSpace, LinearModel, Equilibrium, Mode, NormalModes, TransferFunction,
+                TimeResponse, StepInfo):
+    _result._repr_html_ = _html.text_html
+del _result
+
 __all__ = [name for name in dir() if not name.startswith("_")]

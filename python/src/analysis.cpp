@@ -238,6 +238,13 @@ void bind_modes(py::module_& m) {
                                return complex_array(z);
                              })
       .def("__len__", [](const Modes& ms) { return ms.modes.size(); })
+      .def(
+          "_table_cells",
+          [](const Modes& ms) {
+            ModesTable t = modes_table_cells(ms);
+            return py::make_tuple(t.header, t.rows);
+          },
+          "The repr's table as (header, rows) of text cells, for _repr_html_.")
       .def("__repr__",
            [](const Modes& ms) {
              return fmt::format("<momenta.Modes: {} modes of {} states>\n{}", ms.modes.size(),

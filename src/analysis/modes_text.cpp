@@ -25,10 +25,9 @@ constexpr double kZeroEigenvalueRelative = 1e-6;
 
 }  // namespace
 
-std::string modes_table(const Modes& m) {
-  std::string out =
-      fmt::format("  {:>3}  {:>26}  {:>12}  {:>12}  {:>10}  {}\n", "#", "eigenvalue 1/s",
-                  "ωn rad/s", "ωn Hz", "ζ", "largest shape entries");
+ModesTable modes_table_cells(const Modes& m) {
+  ModesTable table;
+  table.header = {"#", "eigenvalue 1/s", "ωn rad/s", "ωn Hz", "ζ", "largest shape entries"};
   double largest = 0.0;
   for (const Mode& mode : m.modes) largest = std::max(largest, std::abs(mode.eigenvalue));
   for (std::size_t k = 0; k < m.modes.size(); ++k) {
@@ -53,20 +52,32 @@ std::string modes_table(const Modes& m) {
                                    : fmt::format("x{}", e);
       entries.push_back(fmt::format("{} {}", name, complex_text(mode.shape[e])));
     }
+    const std::string shape = fmt::format("{}", fmt::join(entries, "; "));
     if (rigid) {
       // ζ is undefined at λ = 0: left blank.
-      out += fmt::format("  {:>3}  {:>26}  {:>12}  {:>12}  {:>10}  {}\n", k + 1,
-                         "0 (rigid-body mode)", 0, 0, "", fmt::join(entries, "; "));
+      table.rows.push_back({std::to_string(k + 1), "0 (rigid-body mode)", "0", "0", "", shape});
       continue;
     }
     // ζ is undefined at λ = 0: left blank; its round-off (of a ratio: against 1) as 0.
     const std::string zeta = std::isfinite(mode.damping_ratio)
                                  ? fmt::format("{:.4g}", shown_value(mode.damping_ratio, 1.0))
                                  : std::string();
-    out += fmt::format("  {:>3}  {:>26}  {:>12.6g}  {:>12.6g}  {:>10}  {}\n", k + 1,
-                       complex_text(mode.eigenvalue), mode.natural_frequency,
-                       hertz(mode.natural_frequency), zeta, fmt::join(entries, "; "));
+    table.rows.push_back({std::to_string(k + 1), complex_text(mode.eigenvalue),
+                          fmt::format("{:.6g}", mode.natural_frequency),
+                          fmt::format("{:.6g}", hertz(mode.natural_frequency)), zeta, shape});
   }
+  return table;
+}
+
+std::string modes_table(const Modes& m) {
+  std::string out;
+  const auto line = [&](const std::vector<std::string>& c) {
+    out += fmt::format("  {:>3}  {:>26}  {:>12}  {:>12}  {:>10}  {}\n", c[0], c[1], c[2], c[3],
+                       c[4], c[5]);
+  };
+  const ModesTable table = modes_table_cells(m);
+  line(table.header);
+  for (const auto& row : table.rows) line(row);
   return out;
 }
 

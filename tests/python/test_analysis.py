@@ -258,3 +258,52 @@ def test_results_print_as_the_command_line_does():
     assert normal[1].startswith("    1  ω² = 5.74656      ω = 2.3972 rad/s")
     for text in [info, response, repr(hanging)] + table + normal:
         assert "object at 0x" not in text and "nan" not in text
+
+
+def test_results_show_as_html_in_a_notebook():
+    # _repr_html_: the modes as a table of the cells `momenta modes` prints (the rigid-body pair as
+    # 0), a run with the unit of every column and its first and last rows, the rest as their text.
+    import html.parser
+
+    class Cells(html.parser.HTMLParser):
+        def __init__(self):
+            super().__init__()
+            self.rows, self.header = [], []
+            self._cell = None
+
+        def handle_starttag(self, tag, attrs):
+            if tag == "tr":
+                self.rows.append([])
+            elif tag in ("td", "th"):
+                self._cell = ""
+
+        def handle_data(self, data):
+            if self._cell is not None:
+                self._cell += data
+
+        def handle_endtag(self, tag):
+            if tag in ("td", "th"):
+                self.rows[-1].append(self._cell)
+                self._cell = None
+
+    def cells(markup):
+        parser = Cells()
+        parser.feed(markup)
+        return parser.rows
+
+    model = momenta.load_model(EXAMPLES / "flexible_satellite.yaml")
+    modes = momenta.modes(momenta.linearize(model))
+    table = cells(modes._repr_html_())
+    assert table[0] == ["#", "eigenvalue 1/s", "ωn rad/s", "ωn Hz", "ζ", "largest shape entries"]
+    assert [row[1] for row in table[1:3]] == ["0 (rigid-body mode)"] * 2
+    assert len(table) == 1 + len(modes)
+    for row in table[1:]:  # each row's figures are the text table's
+        assert all(cell in repr(modes) for cell in row[1:5] if cell)
+    run = momenta.simulate(model, duration=1.0)
+    shown = cells(run._repr_html_())
+    assert shown[0][:3] == ["time (s)", "theta1.angle (rad)", "theta2.angle (rad)"]
+    assert "tc (N·m)" in shown[0]  # the thrusters' signal scales a torque of unit direction
+    assert len(shown) == 1 + 7 and shown[4] == ["…"] * len(run.columns)
+    assert float(shown[-1][0]) == pytest.approx(run.time[-1])
+    assert momenta.find_equilibrium(momenta.load_model(EXAMPLES / "double_pendulum.yaml"))._repr_html_() \
+        .startswith("<pre>&lt;momenta.Equilibrium q = [")

@@ -3,10 +3,19 @@
 // of Modes and NormalModes show, written in one place.
 
 #include <string>
+#include <vector>
 
 #include "momenta/analysis/modes.hpp"
 
 namespace momenta::analysis {
+
+/// The modes table as cells, for a front end that lays it out itself (a notebook's HTML): the
+/// header, then one row per mode of the six columns below, each figure as modes_table shows it.
+struct ModesTable {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+};
+ModesTable modes_table_cells(const Modes& modes);
 
 /// One line per mode: number, eigenvalue (1/s), ωn (rad/s and Hz), ζ (blank at λ = 0: it does
 /// not exist) and the shape's three largest entries by name, under a header line. Each line
