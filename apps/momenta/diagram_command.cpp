@@ -103,7 +103,8 @@ void run(const DiagramOptions& o) {
     print_text(file.name, d);
   }
   if (o.output) {
-    report::write_report(*o.output, report::free_body_svg(d, file.name), o.force);
+    const std::span<const io::PartSummary> parts = file.parts_of(file.model.body_index(o.body));
+    report::write_report(*o.output, report::free_body_svg(d, file.name, parts), o.force);
     if (!o.json) fmt::print("wrote {}\n", *o.output);
   }
 }

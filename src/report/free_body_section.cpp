@@ -34,7 +34,7 @@ json diagrams_json(const SimulationRun& run) {
       try {
         const analysis::FreeBodyDiagram d =
             analysis::free_body_diagram(system, model.body(b).name, row[0], q, v);
-        pictures.push_back(free_body_svg(d, run.file->name));
+        pictures.push_back(free_body_svg(d, run.file->name, run.file->parts_of(b)));
         residuals.push_back({d.force_residual().norm(), d.moment_residual().norm()});
       } catch (const Error& e) {
         // A state where the dynamics cannot be evaluated (a singular constraint): said there.

@@ -4,11 +4,13 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include <Eigen/Eigenvalues>
+#include "momenta/common/number_text.hpp"
 #include "page_data.hpp"
 
 namespace momenta::report {
@@ -47,12 +49,9 @@ std::string vector_text(const Vec3& v) {
   return fmt::format("[{:.6g}, {:.6g}, {:.6g}]", v.x(), v.y(), v.z());
 }
 
-// The components, round-off (below 1e-12 of `scale`) written 0.
+// The components, round-off against `scale` written 0 (shown_value: the CLI's rule).
 std::string chopped_text(const Vec3& v, double scale) {
-  Vec3 c = v;
-  for (int i = 0; i < 3; ++i)
-    if (std::abs(c[i]) <= 1e-12 * scale) c[i] = 0.0;
-  return vector_text(c);
+  return vector_text(v.unaryExpr([&](double x) { return shown_value(x, scale); }));
 }
 
 // World → screen directions: `right` and `up` span the picture; `out` points at the viewer.
@@ -107,9 +106,10 @@ View make_view(const FreeBodyDiagram& d) {
 // Panel placement: world points → page coordinates, the body fitted in the middle of a panel.
 struct Placement {
   const View* view;
-  Vec3 origin;    // world point at the panel's centre
-  double scale;   // px per m
-  double x0, y0;  // the panel's centre on the page
+  Vec3 origin;                       // world point at the panel's centre
+  double scale;                      // px per m
+  double x0, y0;                     // the panel's centre on the page
+  const std::vector<Vec3>* outline;  // the points the body's outline goes round (body_points)
 
   Vec2 at(const Vec3& p) const {
     const Vec2 s = view->project(p - origin) * scale;
@@ -142,17 +142,25 @@ std::vector<Vec3> equivalent_box(const FreeBodyDiagram& d) {
   return corners;
 }
 
-// What the outline of the body goes round: G, the points loads act at, its equivalent box.
-std::vector<Vec3> body_points(const FreeBodyDiagram& d) {
+// What the outline of the body goes round: G, the points loads act at, and its parts' surface
+// points (page_data.hpp) placed in the world, or its equivalent box where it has no parts.
+std::vector<Vec3> body_points(const FreeBodyDiagram& d, std::span<const io::PartSummary> parts) {
   std::vector<Vec3> points = {d.p_WoG_W};
   for (const Load& load : d.loads) points.push_back(load.p_WoP_W);
-  for (const Vec3& corner : equivalent_box(d)) points.push_back(corner);
+  std::vector<Vec3> surface;
+  for (const io::PartSummary& part : parts) {
+    for (const Vec3& p_BoP_B : detail::part_outline_points(part))
+      surface.push_back(d.p_WoBo_W + d.R_WB * p_BoP_B);
+  }
+  if (surface.empty()) surface = equivalent_box(d);
+  points.insert(points.end(), surface.begin(), surface.end());
   return points;
 }
 
-Placement place(const View& view, const FreeBodyDiagram& d, double panel_x) {
+Placement place(const View& view, const std::vector<Vec3>& outline, const FreeBodyDiagram& d,
+                double panel_x) {
   Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
-  for (const Vec3& p : body_points(d)) {
+  for (const Vec3& p : outline) {
     lo = lo.cwiseMin(view.project(p));
     hi = hi.cwiseMax(view.project(p));
   }
@@ -164,7 +172,7 @@ Placement place(const View& view, const FreeBodyDiagram& d, double panel_x) {
   const Vec3 origin =
       d.p_WoG_W + (centre.x() - g.x()) * view.right + (centre.y() - g.y()) * view.up;
   const double scale = (hi - lo).maxCoeff() > 0 ? room / extent : 1.0;
-  return {&view, origin, scale, panel_x + kPanel / 2, kPanelTop + kPanel / 2};
+  return {&view, origin, scale, panel_x + kPanel / 2, kPanelTop + kPanel / 2, &outline};
 }
 
 // Labels placed so that they do not overlap: each new one moves down until it is clear.
@@ -207,7 +215,7 @@ class Canvas {
     // The outline: a thick rounded stroke through the body's points (their convex hull), a
     // capsule for two points, a disc for one.
     std::vector<Vec2> points;
-    for (const Vec3& p : body_points(d)) points.push_back(at.at(p));
+    for (const Vec3& p : *at.outline) points.push_back(at.at(p));
     const std::vector<Vec2> hull = convex_hull(points);
     std::string path;
     for (std::size_t i = 0; i < hull.size(); ++i)
@@ -434,31 +442,46 @@ void draw_kinetic(Canvas& canvas, const Placement& at, const View& view, const F
 }
 
 void table(Canvas& canvas, const FreeBodyDiagram& d, const Scales& scale, double top) {
-  // Columns: what the load is, then its force, point and couple in the world's axes.
-  constexpr std::array<double, 4> column = {0.0, 330.0, 600.0, 820.0};
-  const char* bold = "font-size=\"12\" font-weight=\"bold\"";
-  canvas.text(kLeftX + column[0], top, "load", bold);
-  canvas.text(kLeftX + column[1], top, "force in the world (N)", bold);
-  canvas.text(kLeftX + column[2], top, "at (m)", bold);
-  canvas.text(kLeftX + column[3], top, "couple (N·m)", bold);
+  // Columns: what the load is, then its force, point and couple in the world's axes, each as
+  // wide as its longest text (about 0.6 em a character) and 24 px apart, so none overlaps.
+  const std::array<std::string, 4> header = {"load", "force in the world (N)", "at (m)",
+                                             "couple (N·m)"};
   double size = 0.0;
   for (const Load& load : d.loads) size = std::max(size, load.p_WoP_W.norm());
-  double y = top;
+  std::vector<std::array<std::string, 4>> rows;
   for (const Load& load : d.loads) {
+    rows.push_back({load.description, chopped_text(load.force_W, scale.force),
+                    chopped_text(load.p_WoP_W, size), chopped_text(load.couple_W, scale.moment)});
+  }
+  const auto characters = [](const std::string& text) {  // UTF-8 code points
+    return static_cast<double>(
+        std::count_if(text.begin(), text.end(), [](char c) { return (c & 0xC0) != 0x80; }));
+  };
+  std::array<double, 4> column{};
+  for (std::size_t c = 1; c < column.size(); ++c) {
+    double widest = 7.2 * characters(header[c - 1]);  // bold, 12 px
+    for (const auto& row : rows) widest = std::max(widest, 6.6 * characters(row[c - 1]));
+    column[c] = column[c - 1] + widest + 24.0;
+  }
+  const char* bold = "class=\"table\" font-size=\"12\" font-weight=\"bold\"";
+  for (std::size_t c = 0; c < column.size(); ++c)
+    canvas.text(kLeftX + column[c], top, header[c], bold);
+  double y = top;
+  for (std::size_t r = 0; r < rows.size(); ++r) {
     y += kRowHeight;
-    const std::string attributes =
-        fmt::format("font-size=\"11\" fill=\"{}\"", colour(analysis::load_kind_name(load.kind)));
-    canvas.text(kLeftX + column[0], y, load.description, attributes);
-    canvas.text(kLeftX + column[1], y, chopped_text(load.force_W, scale.force), attributes);
-    canvas.text(kLeftX + column[2], y, chopped_text(load.p_WoP_W, size), attributes);
-    canvas.text(kLeftX + column[3], y, chopped_text(load.couple_W, scale.moment), attributes);
+    const std::string attributes = fmt::format("class=\"table\" font-size=\"11\" fill=\"{}\"",
+                                               colour(analysis::load_kind_name(d.loads[r].kind)));
+    for (std::size_t c = 0; c < column.size(); ++c)
+      canvas.text(kLeftX + column[c], y, rows[r][c], attributes);
   }
 }
 
 }  // namespace
 
-std::string free_body_svg(const FreeBodyDiagram& d, const std::string& title) {
+std::string free_body_svg(const FreeBodyDiagram& d, const std::string& title,
+                          std::span<const io::PartSummary> parts) {
   const View view = make_view(d);
+  const std::vector<Vec3> outline = body_points(d, parts);
   const Scales scale = largest(d);
   const double table_top = kPanelTop + kPanel + 64.0;
   const double height = table_top + kRowHeight * static_cast<double>(d.loads.size() + 1) + 12.0;
@@ -483,8 +506,8 @@ std::string free_body_svg(const FreeBodyDiagram& d, const std::string& title) {
   canvas.text((kLeftX + kPanel + kRightX) / 2, kPanelTop + kPanel / 2 + 10, "=",
               "font-size=\"32\" text-anchor=\"middle\"");
 
-  draw_free_body(canvas, place(view, d, kLeftX), view, d, scale);
-  draw_kinetic(canvas, place(view, d, kRightX), view, d, scale);
+  draw_free_body(canvas, place(view, outline, d, kLeftX), view, d, scale);
+  draw_kinetic(canvas, place(view, outline, d, kRightX), view, d, scale);
   canvas.axes(view, kLeftX + 30, kPanelTop + kPanel - 30);
   canvas.axes(view, kRightX + 30, kPanelTop + kPanel - 30);
 

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <numbers>
+#include <string_view>
 
 #include "momenta/common/error.hpp"
 
@@ -100,6 +102,79 @@ json equivalent_ellipsoid_json(const inertia::MassProperties& mp) {
   return {{"semi_axes", vec_json(semi)},
           {"R", mat_json(axes.R_BP)},
           {"center", vec_json(mp.center_of_mass())}};
+}
+
+namespace {
+
+// The size a part file gives under `key`, 0 where it gives none.
+double size_of(const io::PartSummary& part, std::string_view key) {
+  for (const auto& [name, value] : part.sizes)
+    if (name == key) return value;
+  return 0.0;
+}
+
+// n points round the circle of radius r about S's z-axis at height z.
+void add_circle(std::vector<Vec3>& out, double r, double z, int n = 32) {
+  for (int k = 0; k < n; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / n;
+    out.emplace_back(r * std::cos(a), r * std::sin(a), z);
+  }
+}
+
+// Points spread evenly over the ellipsoid of semi-axes `semi` (a Fibonacci lattice).
+void add_ellipsoid(std::vector<Vec3>& out, const Vec3& semi, int n = 200) {
+  const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
+  for (int k = 0; k < n; ++k) {
+    const double z = 1.0 - 2.0 * (k + 0.5) / n, r = std::sqrt(1.0 - z * z);
+    out.emplace_back(semi.x() * r * std::cos(golden * k), semi.y() * r * std::sin(golden * k),
+                     semi.z() * z);
+  }
+}
+
+}  // namespace
+
+std::vector<Vec3> part_outline_points(const io::PartSummary& part) {
+  std::vector<Vec3> s;  // in the part's frame S
+  if (part.hole) return s;
+  const std::string& kind = part.kind;
+  const double r = size_of(part, "radius"), outer = size_of(part, "outer_radius");
+  const double length = size_of(part, "length");
+  if (kind == "point_mass") {
+    s.emplace_back(0.0, 0.0, 0.0);
+  } else if (kind == "slender_rod") {
+    s = {Vec3(0, 0, -length / 2), Vec3(0, 0, length / 2)};
+  } else if (kind == "cone") {
+    s.emplace_back(0.0, 0.0, 0.0);
+    add_circle(s, r, size_of(part, "height"));
+  } else if (kind == "cylinder" || kind == "hollow_cylinder" || kind == "cylindrical_shell" ||
+             kind == "thin_disk") {
+    add_circle(s, kind == "hollow_cylinder" ? outer : r, -length / 2);
+    add_circle(s, kind == "hollow_cylinder" ? outer : r, length / 2);
+  } else if (kind == "thin_ring" || kind == "annulus") {
+    add_circle(s, kind == "annulus" ? outer : r, 0.0);
+  } else if (kind == "sphere" || kind == "hollow_sphere" || kind == "spherical_shell") {
+    add_ellipsoid(s, Vec3::Constant(kind == "hollow_sphere" ? outer : r));
+  } else if (kind == "ellipsoid") {
+    add_ellipsoid(s, Vec3(size_of(part, "semi_axes.x"), size_of(part, "semi_axes.y"),
+                          size_of(part, "semi_axes.z")));
+  } else if (kind == "box" || kind == "thin_plate") {
+    const Vec3 half =
+        kind == "box"
+            ? 0.5 * Vec3(size_of(part, "size.x"), size_of(part, "size.y"), size_of(part, "size.z"))
+            : 0.5 * Vec3(size_of(part, "width"), size_of(part, "height"), 0.0);
+    for (int k = 0; k < 8; ++k) {
+      s.emplace_back((k & 1 ? 1 : -1) * half.x(), (k & 2 ? 1 : -1) * half.y(),
+                     (k & 4 ? 1 : -1) * half.z());
+    }
+  } else if (kind == "mesh" && part.mesh) {
+    const std::vector<Vec3>& vertices = part.mesh->vertices;
+    const std::size_t step = std::max<std::size_t>(1, vertices.size() / 4096);
+    for (std::size_t i = 0; i < vertices.size(); i += step) s.push_back(vertices[i]);
+  }
+  std::vector<Vec3> b;
+  b.reserve(s.size());
+  for (const Vec3& p : s) b.push_back(part.p_BoSo_B + part.R_BS * p);
+  return b;
 }
 
 }  // namespace momenta::report::detail

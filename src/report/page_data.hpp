@@ -33,6 +33,14 @@ json part_json(const io::PartSummary& part);
 /// the principal axes (columns of R), for bodies given by their inertia alone.
 json equivalent_ellipsoid_json(const inertia::MassProperties& mp);
 
+/// Points on the surface of a part, in its body frame B (its pose applied), enough that their
+/// convex hull in any view is its silhouette to a few per cent: a cone's apex and base circle, a
+/// cylinder's end circles, a sphere's or ellipsoid's sample of its surface, a box's corners, a
+/// rod's ends, a mesh's vertices (at most 4096 of them). Shapes drawn as the web page draws them
+/// (web/src/shapes.js: a cone's apex at S's origin, its base at z = height). Empty for a hole and
+/// for a part given by its inertia alone.
+std::vector<Vec3> part_outline_points(const io::PartSummary& part);
+
 /// Text made safe inside HTML or SVG markup and attribute values (& < > " escaped).
 std::string escape_html(const std::string& text);
 

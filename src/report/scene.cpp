@@ -23,9 +23,7 @@ json body_json(const io::ModelFile& file, int b) {
   const model::Body& body = file.model.bodies()[b];
   const inertia::MassProperties& mp = body.mass_properties;
   json parts = json::array();
-  if (static_cast<std::size_t>(b) < file.body_parts.size()) {
-    for (const io::PartSummary& part : file.body_parts[b]) parts.push_back(part_json(part));
-  }
+  for (const io::PartSummary& part : file.parts_of(b)) parts.push_back(part_json(part));
   json j = {{"name", body.name},
             {"parent", file.model.bodies()[body.parent_index].name},
             {"mass", mp.mass()},

@@ -113,6 +113,32 @@ for (const c of cases) {
         }
       }
     }
+    // The table of loads: no two cells of a row overlap, each inside the picture.
+    const cells = await (async () => {
+      const again = await browser.newPage();
+      await again.goto(`file://${file}`, { waitUntil: 'load' });
+      const boxes = await again.evaluate(() => [...document.querySelectorAll('text.table')].map((t) => {
+        const b = t.getBBox();
+        return { x: b.x, y: b.y, w: b.width, h: b.height, text: t.textContent };
+      }));
+      await again.close();
+      return boxes;
+    })();
+    assert.ok(cells.length >= 4 * (result.loads.length + 1), `${cells.length} table cells`);
+    // A body whose file gives its shape is outlined by that shape's silhouette: the heavy top's
+    // cone at 0.3 s, its base circle seen obliquely, is a hull of many points (the box with its
+    // inertia has at most 11: G, the two loads' points and its 8 corners).
+    if (c.name === 'heavy-top') {
+      const outline = fs.readFileSync(file, 'utf8').match(/<path class="body" d="([^"]*)"/)[1];
+      const corners = outline.split(/[MLZ]/).filter((s) => s.trim()).length;
+      assert.ok(corners > 12, `the top's outline has ${corners} corners: ${outline}`);
+    }
+    for (let i = 0; i < cells.length; ++i) {
+      assert.ok(within(cells[i], shown.width, shown.height), `cell ${cells[i].text} inside`);
+      for (let j = i + 1; j < cells.length; ++j) {
+        assert.ok(!overlap(cells[i], cells[j]), `cells ${cells[i].text} and ${cells[j].text} overlap`);
+      }
+    }
     // The balance: two residual lines, round-off against the largest load.
     assert.equal(shown.residuals.length, 2);
     assert.ok(norm(result.residual.force) <= 1e-12 * largestForce, `ΣF − m a_G = ${result.residual.force}`);

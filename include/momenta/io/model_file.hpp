@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,12 @@ struct ModelFile {
   /// model.bodies() (the world's entry empty); one part for a body given by `shape` or `mesh`,
   /// the file's parts for a `part` file, none for a body given by mass, com and inertia.
   std::vector<std::vector<PartSummary>> body_parts;
+  /// Body b's parts (empty where the file gives none, or for a body built after reading).
+  std::span<const PartSummary> parts_of(int b) const {
+    return static_cast<std::size_t>(b) < body_parts.size()
+               ? std::span<const PartSummary>(body_parts[static_cast<std::size_t>(b)])
+               : std::span<const PartSummary>();
+  }
 
   /// The error at the line of the item it is about (Error::item()), as ParseError
   /// `file:line:column: message`; nullopt when it names no item this file declares. For errors

@@ -17,13 +17,19 @@
 // and data-value (the magnitude, N or N·m) attributes, holding its <line> or <path>, its arrow
 // head and its <text> label. The residuals are <text class="residual">.
 
+#include <span>
 #include <string>
 
 #include "momenta/analysis/free_body.hpp"
+#include "momenta/io/part_file.hpp"
 
 namespace momenta::report {
 
-/// The SVG document of the diagrams. `title` heads the picture (the model's name).
-std::string free_body_svg(const analysis::FreeBodyDiagram& diagram, const std::string& title);
+/// The SVG document of the diagrams. `title` heads the picture (the model's name). `parts`, the
+/// body's parts where its file gives them (io::ModelFile::body_parts), shape its outline: a
+/// cone's silhouette is a triangle; without them the outline goes round the box with the body's
+/// inertia.
+std::string free_body_svg(const analysis::FreeBodyDiagram& diagram, const std::string& title,
+                          std::span<const io::PartSummary> parts = {});
 
 }  // namespace momenta::report
