@@ -5,6 +5,7 @@
 // docs/cli.md.
 
 #include <algorithm>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
@@ -142,36 +143,45 @@ void print_transfer(const io::ModelFile& file, const symbolic::LinearEquations& 
 
 // The constraints' rows after the equations: φ = 0 (or G v = 0 on velocity rows), and with
 // --form matrix G's entries and k.
-void print_constraint_rows(const symbolic::Equations& e, const EquationsOptions& o,
-                           symbolic::Format f) {
-  if (e.constraint_rows() == 0) return;
+std::string constraint_rows_text(const symbolic::Equations& e, const EquationsOptions& o,
+                                 symbolic::Format f) {
+  std::string out;
+  if (e.constraint_rows() == 0) return out;
   const char* comment = o.latex ? "% " : "";
-  fmt::print("{}constraints: M v̇ + C v + g = Q + Gᵀλ, G v̇ + k = 0; λ the rows' forces [{}]\n",
-             comment, fmt::join(e.multiplier_names(), ", "));
+  fmt::format_to(std::back_inserter(out),
+                 "{}constraints: M v̇ + C v + g = Q + Gᵀλ, G v̇ + k = 0; λ the rows' forces [{}]\n",
+                 comment, fmt::join(e.multiplier_names(), ", "));
   for (int r = 0; r < e.constraint_rows(); ++r) {
     const std::string equation = e.constraint_equation(r, f);
-    fmt::print("{}{} ({}):\n  {}{}\n", comment, e.constraint_row_name(r),
-               e.constraint_row_holonomic(r) ? "position" : "velocity", equation,
-               equation == "0 = 0" ? "  (identically: the tree's joints impose it)" : "");
+    fmt::format_to(std::back_inserter(out), "{}{} ({}):\n  {}{}\n", comment,
+                   e.constraint_row_name(r),
+                   e.constraint_row_holonomic(r) ? "position" : "velocity", equation,
+                   equation == "0 = 0" ? "  (identically: the tree's joints impose it)" : "");
   }
-  if (o.form != "matrix") return;
+  if (o.form != "matrix") return out;
   const int n = static_cast<int>(e.free_speeds().size());
   for (int r = 0; r < e.constraint_rows(); ++r) {
     for (int c = 0; c < n; ++c)
-      fmt::print("G[{},{}] = {}\n", r, c, e.constraint_jacobian_entry(r, c, f));
+      fmt::format_to(std::back_inserter(out), "G[{},{}] = {}\n", r, c,
+                     e.constraint_jacobian_entry(r, c, f));
   }
   for (int r = 0; r < e.constraint_rows(); ++r)
-    fmt::print("k[{}] = {}\n", r, e.constraint_bias(r, f));
+    fmt::format_to(std::back_inserter(out), "k[{}] = {}\n", r, e.constraint_bias(r, f));
+  return out;
 }
 
-void print_equations(const io::ModelFile& file, const symbolic::Equations& e,
-                     const EquationsOptions& o) {
+// The equations as `equations` prints them, whole: nothing is printed when one of them cannot
+// be (too large to print: then the error alone).
+std::string equations_text(const io::ModelFile& file, const symbolic::Equations& e,
+                           const EquationsOptions& o) {
+  std::string out;
   const symbolic::Format f = o.latex ? symbolic::Format::latex : symbolic::Format::text;
   const auto& free = e.free_speeds();
   const int n = static_cast<int>(free.size());
-  if (!o.latex) fmt::print("{}: equations of motion\n", file.name);
+  if (!o.latex) fmt::format_to(std::back_inserter(out), "{}: equations of motion\n", file.name);
   if (o.form == "newton-euler") {
-    fmt::print(
+    fmt::format_to(
+        std::back_inserter(out),
         "{}per body, in its own axes: ΣF = m a_G, ΣM_G = Ī α + ω × Ī ω; unknown reactions "
         "R_<joint> (force on the child), N_<joint> (moment about J'), in the child's axes{}\n",
         o.latex ? "% " : "",
@@ -180,27 +190,35 @@ void print_equations(const io::ModelFile& file, const symbolic::Equations& e,
     for (int r = 0; r < e.newton_euler_rows(); ++r) {
       if (e.newton_euler_group(r) != group) {
         group = e.newton_euler_group(r);
-        fmt::print("{}{}\n", o.latex ? "% " : "", group);
+        fmt::format_to(std::back_inserter(out), "{}{}\n", o.latex ? "% " : "", group);
       }
-      fmt::print("  {}\n", e.newton_euler_equation(r, f));
+      fmt::format_to(std::back_inserter(out), "  {}\n", e.newton_euler_equation(r, f));
     }
-    return;
+    return out;
   }
   if (o.form == "matrix") {
-    fmt::print("{}M(q) v̇ + C(q, v) v + g(q) = Q(q, v, u), v̇ = [", o.latex ? "% " : "");
+    fmt::format_to(std::back_inserter(out), "{}M(q) v̇ + C(q, v) v + g(q) = Q(q, v, u), v̇ = [",
+                   o.latex ? "% " : "");
     for (int r = 0; r < n; ++r)
-      fmt::print("{}{}", r ? ", " : "", e.acceleration_names()[static_cast<std::size_t>(free[r])]);
-    fmt::print("]\n");
+      fmt::format_to(std::back_inserter(out), "{}{}", r ? ", " : "",
+                     e.acceleration_names()[static_cast<std::size_t>(free[r])]);
+    fmt::format_to(std::back_inserter(out), "]\n");
     for (int r = 0; r < n; ++r)
-      for (int c = 0; c < n; ++c) fmt::print("M[{},{}] = {}\n", r, c, e.mass_matrix_entry(r, c, f));
-    for (int r = 0; r < n; ++r) fmt::print("(C v)[{}] = {}\n", r, e.velocity_product(r, f));
-    for (int r = 0; r < n; ++r) fmt::print("g[{}] = {}\n", r, e.gravity(r, f));
-    for (int r = 0; r < n; ++r) fmt::print("Q[{}] = {}\n", r, e.generalized_force(r, f));
-    print_constraint_rows(e, o, f);
-    return;
+      for (int c = 0; c < n; ++c)
+        fmt::format_to(std::back_inserter(out), "M[{},{}] = {}\n", r, c,
+                       e.mass_matrix_entry(r, c, f));
+    for (int r = 0; r < n; ++r)
+      fmt::format_to(std::back_inserter(out), "(C v)[{}] = {}\n", r, e.velocity_product(r, f));
+    for (int r = 0; r < n; ++r)
+      fmt::format_to(std::back_inserter(out), "g[{}] = {}\n", r, e.gravity(r, f));
+    for (int r = 0; r < n; ++r)
+      fmt::format_to(std::back_inserter(out), "Q[{}] = {}\n", r, e.generalized_force(r, f));
+    out += constraint_rows_text(e, o, f);
+    return out;
   }
-  for (int r = 0; r < n; ++r) fmt::print("{}\n", e.equation(r, f));
-  print_constraint_rows(e, o, f);
+  for (int r = 0; r < n; ++r) fmt::format_to(std::back_inserter(out), "{}\n", e.equation(r, f));
+  out += constraint_rows_text(e, o, f);
+  return out;
 }
 
 json equations_json(const io::ModelFile& file, const symbolic::Equations& e) {
@@ -278,7 +296,7 @@ void run(const EquationsOptions& o) {
   } else if (o.json) {
     fmt::print("{}\n", json_text(equations_json(file, e), ListSpacing::spaced));
   } else {
-    print_equations(file, e, o);
+    fmt::print("{}", equations_text(file, e, o));
   }
 }
 
