@@ -289,6 +289,7 @@ TEST_F(AnalysisCli, EquationsTooLargeToPrintPointToTheCode) {
     const CliRun r = momenta("equations " + chain + form);
     EXPECT_EQ(r.code, 1) << form;
     EXPECT_NE(r.err.find("--cpp or --python write the same equations"), std::string::npos) << r.err;
+    EXPECT_EQ(r.out, "") << form;  // the error alone: no half a page before it
   }
   const CliRun code = momenta("equations " + chain + " --cpp");
   EXPECT_EQ(code.code, 0) << code.err;
