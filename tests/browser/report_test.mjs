@@ -301,7 +301,8 @@ test('20 bodies: every link drawn and moving while the page plays', async () => 
 
 test('mass properties page of a mesh and of a part file with a hole', async () => {
   for (const [name, args] of [['mesh_part', [path.join(examples, 'parts', 'meshes', 'l_bracket.obj'), '--density', '2700', '--scale', '0.001']],
-    ['bracket_part', [path.join(examples, 'parts', 'bracket.yaml'), '--about', '0', '0', '0']]]) {
+    ['bracket_part', [path.join(examples, 'parts', 'bracket.yaml'), '--about', '0', '0', '0']],
+    ['flanged_shaft_part', [path.join(examples, 'parts', 'flanged_shaft.yaml')]]]) {
     const file = path.join(work, `${name}.html`);
     const expected = JSON.parse(run('inertia', ...args, '--json'));
     run('inertia', ...args, '--report', file);
@@ -313,6 +314,14 @@ test('mass properties page of a mesh and of a part file with a hole', async () =
     assert.ok(digest.colours > 20, `${name}: blank view`);
     const mass = await page.evaluate(() => JSON.parse(document.getElementById('momenta-data').textContent).mass);
     assert.equal(mass, expected.mass);
+    // Round-off is not shown as a value: the flanged shaft's centre of mass is computed as
+    // [1.3e-20, 0, 0.11067] (--json keeps that) and shown as [0, 0, 0.11066742] m, and no
+    // figure on the page is a round-off residue of 1e-15 or below.
+    if (name === 'flanged_shaft_part') {
+      assert.ok(expected.com[0] !== 0, 'the JSON keeps the computed value');
+      assert.match(shown, /centre of mass\s*\[0, 0, 0\.11066742\d*\] m/);
+    }
+    assert.doesNotMatch(shown, /e-(1[5-9]|[2-9]\d)\b/, `${name}: round-off shown as a value`);
     await page.screenshot({ path: path.join(artifacts, `${name}-page.png`), fullPage: true });
     assert.deepEqual(problems, []);
     await page.close();

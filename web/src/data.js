@@ -17,6 +17,13 @@ export function decode(text) {
   throw new Error(`unknown array encoding ${kind}`);
 }
 
+// x as text shows it: 0 where |x| ≤ 1e-12 of `scale`, the scale of the computation it comes from
+// (the round-off of a symmetric part's products of inertia); the rule of the command line
+// (momenta/common/number_text.hpp, kRoundOffRelative).
+export function shownValue(x, scale) {
+  return Math.abs(x) <= 1e-12 * Math.abs(scale) ? 0 : x;
+}
+
 export function formatNumber(x, digits = 6) {
   if (x === null || x === undefined) return '—';
   if (typeof x === 'string') return x;

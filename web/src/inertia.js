@@ -3,13 +3,15 @@
 // tensors about the centre of mass and about the requested point.
 
 import * as THREE from 'three';
-import { element, formatNumber, table } from './data.js';
+import { element, formatNumber, shownValue, table } from './data.js';
 import { chart } from './plots.js';
 import { bodyColor, equivalentMesh, partMesh } from './shapes.js';
-import { Viewer } from './viewer.js';
+import { Viewer, boxCorners } from './viewer.js';
 
+// A tensor's entries, round-off against its largest written 0.
 function matrixTable(M) {
-  return table(['', 'x', 'y', 'z'], ['x', 'y', 'z'].map((r, i) => [r, ...[0, 1, 2].map((j) => formatNumber(M[3 * i + j], 6))]));
+  const scale = Math.max(...M.map(Math.abs));
+  return table(['', 'x', 'y', 'z'], ['x', 'y', 'z'].map((r, i) => [r, ...[0, 1, 2].map((j) => formatNumber(shownValue(M[3 * i + j], scale), 6))]));
 }
 
 export function inertiaPage(app, data) {
@@ -19,37 +21,44 @@ export function inertiaPage(app, data) {
   const extent = Math.max(1e-6, ...data.parts.flatMap((p) => [Math.hypot(...p.p), ...Object.values(p.sizes)]),
     ...(data.equivalent ? data.equivalent.semi_axes : [0]));
   const viewer = new Viewer(view, extent);
+  // The box around every solid drawn (holes and the equivalent ellipsoid aside): what the camera
+  // frames, and what the centre-of-mass dot and the principal axes are sized to.
+  const solids = new THREE.Box3();
   data.parts.forEach((part, i) => {
     const mesh = partMesh(part, bodyColor(i), extent);
-    if (mesh) viewer.scene.add(mesh);
+    if (!mesh) return;
+    viewer.scene.add(mesh);
+    if (!part.hole) solids.expandByObject(mesh);
   });
+  solids.expandByPoint(new THREE.Vector3(...data.com));
+  const radius = Math.max(0.5 * solids.getSize(new THREE.Vector3()).length(), 1e-6);
   if (data.equivalent) {
     const e = equivalentMesh(data.equivalent, 0xffd700, extent);
     e.material.opacity = 0.25;
     e.material.depthWrite = false;
     viewer.scene.add(e);
   }
-  const com = new THREE.Mesh(new THREE.SphereGeometry(0.03 * extent, 16, 8), new THREE.MeshBasicMaterial({ color: 0x000000 }));
+  const com = new THREE.Mesh(new THREE.SphereGeometry(0.03 * radius, 16, 8), new THREE.MeshBasicMaterial({ color: 0x000000 }));
   com.position.set(...data.com);
   viewer.scene.add(com);
   const R = data.principal_axes;
   [0xd62728, 0x2ca02c, 0x1f77b4].forEach((color, k) => {
     viewer.scene.add(new THREE.ArrowHelper(new THREE.Vector3(R[k], R[3 + k], R[6 + k]), new THREE.Vector3(...data.com),
-      0.8 * extent, color, 0.1 * extent, 0.05 * extent));
+      0.6 * radius, color, 0.08 * radius, 0.04 * radius));
   });
-  viewer.frame([data.com, ...data.parts.map((p) => p.p)].map((p) => p.map((x) => x)));
+  viewer.frame(boxCorners(solids));
   let frames = 0;
   const animate = () => { viewer.render(); frames++; requestAnimationFrame(animate); };
   requestAnimationFrame(animate);
   app.append(element('p', { class: 'note' }, 'Black dot: centre of mass. Arrows: principal axes 1, 2, 3 (red, green, blue; moments ascending). Gold: the uniform ellipsoid with the same mass and inertia. Dark wireframes: holes.'));
   const facts = element('section', {}, element('h2', {}, 'The part'),
     element('dl', { class: 'facts' }, element('dt', {}, 'mass'), element('dd', {}, `${formatNumber(data.mass, 8)} kg`),
-      element('dt', {}, 'centre of mass'), element('dd', {}, `[${data.com.map((x) => formatNumber(x, 8)).join(', ')}] m`),
-      element('dt', {}, 'principal moments'), element('dd', {}, `${data.principal_moments.map((x) => formatNumber(x, 8)).join(', ')} kg·m²`)),
+      element('dt', {}, 'centre of mass'), element('dd', {}, `[${data.com.map((x) => formatNumber(shownValue(x, extent), 8)).join(', ')}] m`),
+      element('dt', {}, 'principal moments'), element('dd', {}, `${data.principal_moments.map((x) => formatNumber(shownValue(x, Math.max(...data.principal_moments)), 8)).join(', ')} kg·m²`)),
     element('h3', {}, 'Inertia about the centre of mass (kg·m²)'), matrixTable(data.inertia_com));
   if (data.about) facts.append(element('h3', {}, `Inertia about [${data.about.join(', ')}] m (kg·m²)`), matrixTable(data.inertia_about));
   facts.append(element('h3', {}, 'Parts'), table(['part', 'kind', 'line', 'mass (kg)', 'centre of mass (m)', ''],
-    data.parts.map((p) => [p.name, p.kind, p.line, formatNumber(p.mass), `[${p.com.map((x) => formatNumber(x, 5)).join(', ')}]`, p.hole ? 'hole' : ''])));
+    data.parts.map((p) => [p.name, p.kind, p.line, formatNumber(p.mass), `[${p.com.map((x) => formatNumber(shownValue(x, extent), 5)).join(', ')}]`, p.hole ? 'hole' : ''])));
   app.append(facts);
   if (data.balance) app.append(balanceSection(data.balance, viewer, extent));
   return { kind: 'inertia', framesDrawn: () => frames, balance: () => data.balance, ready: true };
@@ -72,12 +81,14 @@ function rotating(v, unit) {
 }
 
 // The axis through the bearings, the bearing planes as rings and the correction masses as
-// spheres at their radius and angle, in the 3-D view.
+// spheres at their radius and angle, in the 3-D view. Returns the points drawn, to be framed.
 function drawBalance(b, viewer, extent) {
+  const drawn = [];
   const planes = [...(b.bearings || []), ...b.corrections.map((c) => c.z), b.axial_com];
   const lo = Math.min(...planes) - 0.2 * extent;
   const hi = Math.max(...planes) + 0.2 * extent;
   const axis = new THREE.BufferGeometry().setFromPoints([new THREE.Vector3(...inPart(b, 0, 0, lo)), new THREE.Vector3(...inPart(b, 0, 0, hi))]);
+  drawn.push(inPart(b, 0, 0, lo), inPart(b, 0, 0, hi));
   viewer.scene.add(new THREE.Line(axis, new THREE.LineDashedMaterial({ color: 0x444444, dashSize: 0.05 * extent, gapSize: 0.03 * extent })).computeLineDistances());
   const ring = (z, color) => {
     const points = [];
@@ -85,6 +96,7 @@ function drawBalance(b, viewer, extent) {
       const a = (2 * Math.PI * k) / 48;
       points.push(new THREE.Vector3(...inPart(b, 0.35 * extent * Math.cos(a), 0.35 * extent * Math.sin(a), z)));
     }
+    drawn.push(...points.map((p) => p.toArray()));
     viewer.scene.add(new THREE.Line(new THREE.BufferGeometry().setFromPoints(points), new THREE.LineBasicMaterial({ color })));
   };
   (b.bearings || []).forEach((z) => ring(z, 0x1f77b4));
@@ -95,8 +107,10 @@ function drawBalance(b, viewer, extent) {
     const sphere = new THREE.Mesh(new THREE.SphereGeometry(0.04 * extent, 16, 8), new THREE.MeshBasicMaterial({ color: b.remove ? 0x555555 : 0xd62728 }));
     sphere.position.set(...inPart(b, r * Math.cos(a), r * Math.sin(a), c.z));
     viewer.scene.add(sphere);
+    drawn.push(sphere.position.toArray());
     ring(c.z, 0xd62728);
   }
+  return drawn;
 }
 
 function gradeTable(g, title) {
@@ -109,7 +123,8 @@ function gradeTable(g, title) {
 }
 
 export function balanceSection(b, viewer, extent) {
-  drawBalance(b, viewer, extent);
+  // The bearings, axis and correction masses join what the camera frames.
+  viewer.frame([...boxCorners(viewer.framed.box), ...drawBalance(b, viewer, extent)]);
   const section = element('section', { id: 'balance' }, element('h2', {}, 'Balancing'),
     element('p', { class: 'note' }, 'Angles in the rotor, from x_R towards y_R; axial positions z along the axis. Dashed: the axis; blue rings: bearings; red: correction planes and masses (grey: mass to remove).'),
     element('dl', { class: 'facts' },

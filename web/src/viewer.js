@@ -18,6 +18,12 @@ function makeRenderer() {
   return renderer;
 }
 
+// The eight corners of a THREE.Box3, as [x, y, z] arrays.
+export function boxCorners(box) {
+  return [0, 1].flatMap((i) => [0, 1].flatMap((j) => [0, 1].map((k) => [
+    i ? box.max.x : box.min.x, j ? box.max.y : box.min.y, k ? box.max.z : box.min.z])));
+}
+
 export class Viewer {
   constructor(container, length, up = [0, 0, 1]) {
     this.length = length;
@@ -115,8 +121,7 @@ export class Viewer {
   }
 
   placeGrid(box, radius) {
-    const lowest = Math.min(...[0, 1].flatMap((i) => [0, 1].flatMap((j) => [0, 1].map((k) => new THREE.Vector3(
-      i ? box.max.x : box.min.x, j ? box.max.y : box.min.y, k ? box.max.z : box.min.z).dot(this.up)))));
+    const lowest = Math.min(...boxCorners(box).map((c) => new THREE.Vector3(...c).dot(this.up)));
     const height = Math.min(0, lowest - 0.05 * radius);
     const span = 6 * radius;
     const decade = 10 ** Math.floor(Math.log10(span / 10));
@@ -134,10 +139,8 @@ export class Viewer {
   // The fraction of the canvas's width and height that the box's projection covers (each corner
   // projected; > 1 where it spills over), and whether any corner is before the near plane.
   coverage(box) {
-    const corners = [0, 1].flatMap((i) => [0, 1].flatMap((j) => [0, 1].map((k) => new THREE.Vector3(
-      i ? box.max.x : box.min.x, j ? box.max.y : box.min.y, k ? box.max.z : box.min.z))));
     this.camera.updateMatrixWorld();
-    const projected = corners.map((c) => c.clone().project(this.camera));
+    const projected = boxCorners(box).map((c) => new THREE.Vector3(...c).project(this.camera));
     const xs = projected.map((p) => p.x);
     const ys = projected.map((p) => p.y);
     return {
