@@ -141,6 +141,35 @@ void print_transfer(const io::ModelFile& file, const symbolic::LinearEquations& 
   }
 }
 
+// A long equation broken at its terms, as a textbook sets it: at " + ", " - " and " = " outside
+// parentheses, each line kept under `width` characters where the terms allow, the continuation
+// lines indented by four spaces. Short equations come back as they are.
+std::string wrapped(const std::string& equation, std::size_t width = 100) {
+  if (equation.size() <= width) return equation;
+  std::string out, line;
+  int depth = 0;
+  std::size_t start = 0;
+  const auto flush_term = [&](std::size_t end) {
+    const std::string term = equation.substr(start, end - start);
+    if (!line.empty() && line.size() + term.size() > width) {
+      out += line + "\n";
+      line = "   ";  // the term carries its leading space: four in all
+    }
+    line += term;
+    start = end;
+  };
+  for (std::size_t i = 0; i < equation.size(); ++i) {
+    const char c = equation[i];
+    depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+    if (depth == 0 && c == ' ' && i + 2 < equation.size() && equation[i + 2] == ' ' &&
+        (equation[i + 1] == '+' || equation[i + 1] == '-' || equation[i + 1] == '=')) {
+      flush_term(i);
+    }
+  }
+  flush_term(equation.size());
+  return out + line;
+}
+
 // The constraints' rows after the equations: φ = 0 (or G v = 0 on velocity rows), and with
 // --form matrix G's entries and k.
 std::string constraint_rows_text(const symbolic::Equations& e, const EquationsOptions& o,
@@ -216,7 +245,10 @@ std::string equations_text(const io::ModelFile& file, const symbolic::Equations&
     out += constraint_rows_text(e, o, f);
     return out;
   }
-  for (int r = 0; r < n; ++r) fmt::format_to(std::back_inserter(out), "{}\n", e.equation(r, f));
+  for (int r = 0; r < n; ++r) {
+    const std::string equation = e.equation(r, f);
+    fmt::format_to(std::back_inserter(out), "{}\n", o.latex ? equation : wrapped(equation));
+  }
   out += constraint_rows_text(e, o, f);
   return out;
 }

@@ -267,6 +267,20 @@ TEST_F(AnalysisCli, EquationsPrintTheSameBytesEveryRun) {
 
 // The human form: accelerations first, then speed terms, then the rest; within a product
 // numbers, parameters, functions, coordinates, accelerations; spaces around + and −.
+// The CLI's text with each broken equation joined back onto one line.
+std::string joined(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text.compare(i, 5, "\n    ") == 0) {
+      out += ' ';
+      i += 4;
+    } else {
+      out += text[i];
+    }
+  }
+  return out;
+}
+
 TEST_F(AnalysisCli, EquationsReadAccelerationsFirst) {
   const CliRun pendulum = momenta("equations " + example("pendulum") + " --all-symbols");
   ASSERT_EQ(pendulum.code, 0) << pendulum.err;
@@ -274,10 +288,42 @@ TEST_F(AnalysisCli, EquationsReadAccelerationsFirst) {
             std::string::npos)
       << pendulum.out;
   const CliRun flexible = momenta("equations " + example("flexible_satellite") + " --all-symbols");
-  EXPECT_NE(flexible.out.find("\nI_hub_zz*theta1_ddot + c_boom*theta1_dot - c_boom*theta2_dot + "
-                              "k_boom*theta1 - k_boom*theta2 = F_control*tc\n"),
+  EXPECT_NE(joined(flexible.out).find(
+                "\nI_hub_zz*theta1_ddot + c_boom*theta1_dot - c_boom*theta2_dot + "
+                "k_boom*theta1 - k_boom*theta2 = F_control*tc\n"),
             std::string::npos)
       << flexible.out;
+}
+
+// A long equation is broken at its terms: no line over 100 characters but one term alone (a
+// term is not broken), continuation lines indented by four spaces, and joined back it is the
+// equation `--json` gives, unchanged.
+TEST_F(AnalysisCli, LongEquationsBreakAtTheirTerms) {
+  const CliRun r = momenta("equations " + example("double_pendulum") + " --all-symbols");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::size_t lines = 0, continued = 0;
+  for (std::size_t at = 0, end; at < r.out.size(); at = end + 1) {
+    end = r.out.find('\n', at);
+    const std::string line = r.out.substr(at, end - at);
+    int depth = 0, breaks = 0;  // " + ", " - " or " = " outside parentheses after the start
+    for (std::size_t i = 5; i + 2 < line.size(); ++i) {
+      depth += line[i] == '(' ? 1 : line[i] == ')' ? -1 : 0;
+      if (depth == 0 && line[i] == ' ' && line[i + 2] == ' ' &&
+          (line[i + 1] == '+' || line[i + 1] == '-' || line[i + 1] == '='))
+        ++breaks;
+    }
+    EXPECT_TRUE(line.size() <= 100u || breaks == 0) << line;
+    ++lines;
+    if (line.starts_with("    + ") || line.starts_with("    - ")) ++continued;
+  }
+  EXPECT_GE(continued, 4u) << r.out;
+  const json j =
+      json::parse(momenta("equations " + example("double_pendulum") + " --all-symbols --json").out);
+  const std::string whole = joined(r.out);
+  ASSERT_EQ(j.at("equations").size(), 2u);
+  for (const auto& equation : j.at("equations")) {
+    EXPECT_NE(whole.find("\n" + equation.get<std::string>() + "\n"), std::string::npos) << whole;
+  }
 }
 
 // A 10-link chain's equations as text would be a tree of hundreds of megabytes (the default form

@@ -343,6 +343,10 @@ TEST(SymbolicEquations, LumpedClassicsReadAsTheTextbookWritesThem) {
   // Pendulum: I θ̈ + m g l sin θ = 0 with the bob at c_z = −l below the pivot.
   expect_same_equation(symbols_of("pendulum").equation(0, symbolic::Format::text),
                        "m_bob*c_bob_z^2*pivot_ddot - g*m_bob*c_bob_z*sin(pivot) = 0");
+  // Compound pendulum (Beer & Johnston §16.2, a rod on a fixed pivot): I_O θ̈ + m g d sin θ = 0
+  // with I_O = Ī + m d² (parallel axes) and d = −c_z the distance from pivot to G below it.
+  expect_same_equation(symbols_of("compound_pendulum").equation(0, symbolic::Format::text),
+                       "(I_rod_yy + m_rod*c_rod_z^2)*pivot_ddot + m_rod*g*(-c_rod_z)*sin(pivot) = 0");
   // Flexible satellite (FPE ch. 2): I1 θ̈1 + b (θ̇1 − θ̇2) + k (θ1 − θ2) = Tc and
   // I2 θ̈2 + b (θ̇2 − θ̇1) + k (θ2 − θ1) = 0, the boom a torsional spring between the bodies.
   const symbolic::Equations flexible = symbols_of("flexible_satellite");
