@@ -8,6 +8,7 @@
 #include <string_view>
 #include <variant>
 
+#include "momenta/analysis/linearize.hpp"
 #include "sections.hpp"
 
 namespace momenta::report::detail {
@@ -103,13 +104,27 @@ json plots_json(const SimulationRun& run) {
       }
     }
   }
+  // Reaction moments are round-off where they are below 1e-12 of the largest reaction force times
+  // the model's length (a planar pendulum's out-of-plane moments, ±5e-14 N·m): the page draws
+  // them as 0 against that scale, as the command line's text does (common/number_text.hpp).
+  double largest_force = 0.0;
+  for (int c = 1; c < columns; ++c) {
+    if (run.units[c] != "N" || run.columns[c].find("reaction") == std::string::npos) continue;
+    for (const double x : series[c]) largest_force = std::max(largest_force, std::abs(x));
+  }
+  const double moment_scale = largest_force * analysis::characteristic_length(run.file->model);
   json groups = json::array();
   for (const Group& g : group_columns(*run.file, run.columns, run.units)) {
     json members = json::array();
     for (const int c : g.columns) {
       members.push_back({{"name", run.columns[c]}, {"data", encode_f64(series[c])}});
     }
-    groups.push_back({{"title", g.title}, {"unit", g.unit}, {"log", g.log}, {"series", members}});
+    const bool moments = g.unit == "N·m";  // reaction and constraint moments, efforts, outputs
+    groups.push_back({{"title", g.title},
+                      {"unit", g.unit},
+                      {"log", g.log},
+                      {"round_off_scale", moments ? moment_scale : 0.0},
+                      {"series", members}});
   }
   return {{"rows", rows},
           {"points", series[0].size()},

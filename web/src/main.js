@@ -47,6 +47,7 @@ function simulationPage(app, data) {
     bodyPoint: (name, point, t) => motion.bodyPoint(data.scene.bodies.findIndex((b) => b.name === name), point, t ?? timeline.time),
     series: () => Object.keys(plots.registry),
     seriesValues: (name) => Array.from(plots.registry[name] || []),
+    plottedValues: (name) => Array.from(plots.drawnRegistry[name] || []),
     plotTime: () => Array.from(plots.time),
     drawAllCharts: () => plots.charts.drawAll() + (linear.charts?.drawAll() ?? 0) + (campbell?.charts?.drawAll() ?? 0),
     campbell: () => data.campbell,

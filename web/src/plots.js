@@ -6,7 +6,7 @@
 // others are a click on their legend entry away.
 
 import uPlot from 'uplot';
-import { decode, element } from './data.js';
+import { decode, element, shownValue } from './data.js';
 
 const SHOWN_AT_FIRST = 8;
 
@@ -121,6 +121,7 @@ export function plotsSection(data, timeline) {
   const time = decode(data.plots.time);
   const charts = new LazyCharts();
   const registry = {};
+  const drawnRegistry = {};
   const width = () => Math.max(320, Math.min(640, grid.clientWidth / (grid.clientWidth > 1100 ? 2 : 1) - 16));
   for (const group of data.plots.groups) {
     const holder = element('div', { class: 'plot' });
@@ -129,7 +130,11 @@ export function plotsSection(data, timeline) {
       let values = decode(s.data);
       if (group.log) values = Array.from(values, (v) => (Math.abs(v) > 1e-17 ? Math.abs(v) : 1e-17));
       registry[s.name] = values;
-      return { name: s.name, data: values };
+      // Drawn with round-off as 0 (the page keeps the exact values for read-back).
+      const scale = group.round_off_scale;
+      const drawn = scale > 0 ? Array.from(values, (v) => shownValue(v, scale)) : values;
+      drawnRegistry[s.name] = drawn;
+      return { name: s.name, data: drawn };
     });
     if (series.length > SHOWN_AT_FIRST) {
       holder.append(element('p', { class: 'note' }, `${series.length} columns, the first ${SHOWN_AT_FIRST} shown: click a legend entry to show or hide one.`));
@@ -138,5 +143,5 @@ export function plotsSection(data, timeline) {
       x: time, series, logY: group.log, timeline, sync: 'momenta', width: width() }));
   }
   new ResizeObserver(() => charts.charts.forEach((p) => p.setSize({ width: width(), height: 220 }))).observe(grid);
-  return { section, charts, registry, time };
+  return { section, charts, registry, drawnRegistry, time };
 }
