@@ -4,6 +4,7 @@
 
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <ginac/ginac.h>
@@ -27,9 +28,12 @@ struct PrintRoles {
 /// The most terms and factors an expression may print as in text or LaTeX (a few megabytes).
 inline constexpr double kMaxPrintedNodes = 3e5;
 
-/// Throws InvalidArgument, pointing to the generated code, when e printed as a tree (every
-/// shared part repeated) would pass kMaxPrintedNodes. Counts over the graph: fast.
-void check_printable(const GiNaC::ex& e);
+/// Throws InvalidArgument when e printed as a tree (every shared part repeated) would pass
+/// kMaxPrintedNodes, saying `instead` what to use (by default the generated code). Counts over
+/// the graph: fast.
+void check_printable(const GiNaC::ex& e, std::string_view instead =
+                                             "--cpp or --python write the same equations with "
+                                             "each shared part computed once");
 /// A name fit for code and for GiNaC's parser: letters, digits and '_' (others become '_').
 std::string identifier(const std::string& name);
 /// An expression printed in `format`: numbers as short decimals in text and LaTeX; in text and

@@ -266,14 +266,13 @@ double tree_size(const ex& e, std::map<ex, double, GiNaC::ex_is_less>& memo, dou
 
 }  // namespace
 
-void detail::check_printable(const ex& e) {
+void detail::check_printable(const ex& e, std::string_view instead) {
   std::map<ex, double, GiNaC::ex_is_less> memo;
   if (tree_size(e, memo, 2.0 * kMaxPrintedNodes) > kMaxPrintedNodes) {
     throw InvalidArgument(fmt::format(
         "this equation prints as a tree of more than {:.0f} terms and factors (its parts repeat "
-        "wherever they occur: tens of megabytes of text, and minutes to expand): --cpp or "
-        "--python write the same equations with each shared part computed once",
-        kMaxPrintedNodes));
+        "wherever they occur: tens of megabytes of text, and minutes to expand): {}",
+        kMaxPrintedNodes, instead));
   }
 }
 

@@ -193,6 +193,14 @@ LinearEquations linearize_equations(const Equations& equations, const model::Mod
   // b = C v + g − Q per free row; M at the point; v̇0 = −M⁻¹ b there (zero at an equilibrium).
   std::vector<ex> b(n);
   for (unsigned r = 0; r < n; ++r) b[r] = e.rest[r] + e.g[r] - e.Q[r];
+  // Differentiating and simplifying expressions that print as huge trees takes minutes (a
+  // 10-link chain: more than two); refused first, pointing to the numeric linearization.
+  for (unsigned r = 0; r < n; ++r) {
+    constexpr std::string_view kNumeric =
+        "`momenta linearize` linearizes the same model numerically in milliseconds";
+    detail::check_printable(b[r], kNumeric);
+    for (unsigned c = 0; c < n; ++c) detail::check_printable(e.M(r, c), kNumeric);
+  }
   impl->M = matrix(n, n);
   matrix b0(n, 1);
   for (unsigned r = 0; r < n; ++r) {

@@ -288,9 +288,9 @@ TEST_F(AnalysisCli, EquationsReadAccelerationsFirst) {
             std::string::npos)
       << pendulum.out;
   const CliRun flexible = momenta("equations " + example("flexible_satellite") + " --all-symbols");
-  EXPECT_NE(joined(flexible.out).find(
-                "\nI_hub_zz*theta1_ddot + c_boom*theta1_dot - c_boom*theta2_dot + "
-                "k_boom*theta1 - k_boom*theta2 = F_control*tc\n"),
+  EXPECT_NE(joined(flexible.out)
+                .find("\nI_hub_zz*theta1_ddot + c_boom*theta1_dot - c_boom*theta2_dot + "
+                      "k_boom*theta1 - k_boom*theta2 = F_control*tc\n"),
             std::string::npos)
       << flexible.out;
 }
@@ -337,6 +337,13 @@ TEST_F(AnalysisCli, EquationsTooLargeToPrintPointToTheCode) {
     EXPECT_NE(r.err.find("--cpp or --python write the same equations"), std::string::npos) << r.err;
     EXPECT_EQ(r.out, "") << form;  // the error alone: no half a page before it
   }
+  // Its linearization in symbols (more than two minutes before) is refused too, pointing to the
+  // numeric one.
+  const CliRun linear = momenta("equations " + chain + " --form linear");
+  EXPECT_EQ(linear.code, 1);
+  EXPECT_NE(linear.err.find("`momenta linearize` linearizes the same model numerically"),
+            std::string::npos)
+      << linear.err;
   const CliRun code = momenta("equations " + chain + " --cpp");
   EXPECT_EQ(code.code, 0) << code.err;
   EXPECT_LT(code.out.size(), 1'000'000u);
