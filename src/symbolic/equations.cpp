@@ -15,6 +15,7 @@
 #include "equations_impl.hpp"
 #include "expression_algebra.hpp"
 #include "momenta/common/error.hpp"
+#include "momenta/common/number_text.hpp"
 #include "momenta/common/suggest.hpp"
 
 namespace momenta::symbolic {
@@ -411,13 +412,22 @@ class Derivation {
     const model::Body& body = model_.body(b);
     const inertia::MassProperties& mp = body.mass_properties;
     const ex m = params_("m_" + body.name, mp.mass());
-    const V3 c = params_.vector("c_" + body.name, mp.center_of_mass());
+    // Round-off in the mass properties (a composed part's products of inertia of 1e-20 against
+    // moments of 1e-2) is 0, as the command line shows it (common/number_text.hpp): not a
+    // coefficient, nor with --all-symbols a parameter, of the equations.
     const Mat3& Ic = mp.inertia_about_com();
+    const double length =
+        std::max(mp.center_of_mass().norm(), std::sqrt(Ic.trace() / (2 * mp.mass())));
+    const V3 c = params_.vector("c_" + body.name, mp.center_of_mass().unaryExpr([&](double x) {
+      return shown_value(x, length);
+    }));
+    const double moment = Ic.cwiseAbs().maxCoeff();
     const char* axes = "xyz";
     M3 I;
     for (int r = 0; r < 3; ++r) {
       for (int col = r; col < 3; ++col) {
-        const ex e = params_(fmt::format("I_{}_{}{}", body.name, axes[r], axes[col]), Ic(r, col));
+        const ex e = params_(fmt::format("I_{}_{}{}", body.name, axes[r], axes[col]),
+                             shown_value(Ic(r, col), moment));
         I(r, col) = e;
         I(col, r) = e;
       }

@@ -295,6 +295,19 @@ TEST_F(AnalysisCli, EquationsReadAccelerationsFirst) {
       << flexible.out;
 }
 
+// Round-off in a body's mass properties is no coefficient: the gyroscope's composed rotor has a
+// product of inertia of 1.9e-20 kg·m² (against 5.6e-3) that printed as
+// "-1.88799714869e-20*sin(spin)*pivot_wx_dot" and, with --all-symbols, as a parameter I_rotor_xz.
+TEST_F(AnalysisCli, EquationsLeaveRoundOffOut) {
+  const CliRun numbers = momenta("equations " + example("gyroscope"));
+  ASSERT_EQ(numbers.code, 0) << numbers.err;
+  EXPECT_EQ(numbers.out.find("e-2"), std::string::npos) << numbers.out;
+  const CliRun symbols = momenta("equations " + example("gyroscope") + " --all-symbols");
+  ASSERT_EQ(symbols.code, 0) << symbols.err;
+  EXPECT_EQ(symbols.out.find("I_rotor_xz"), std::string::npos) << symbols.out;
+  EXPECT_NE(symbols.out.find("I_rotor_xx"), std::string::npos) << symbols.out;
+}
+
 // A long equation is broken at its terms: no line over 100 characters but one term alone (a
 // term is not broken), continuation lines indented by four spaces, and joined back it is the
 // equation `--json` gives, unchanged.
