@@ -23,6 +23,9 @@ struct PrintRoles {
     int index = 0;  // the coordinate's place in the model (speeds and accelerations alike)
   };
   std::map<std::string, Entry, std::less<>> by_name;
+  /// The coordinate (velocity index) whose acceleration leads a sum: an equation's own, as a
+  /// textbook writes equation k with its diagonal term first; −1 for none.
+  int leading_acceleration = -1;
 };
 
 /// The most terms and factors an expression may print as in text or LaTeX (a few megabytes).

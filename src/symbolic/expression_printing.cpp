@@ -106,8 +106,8 @@ int factor_class(const ex& f, const PrintRoles* roles, int& index) {
   return 7;  // a sum (parenthesized) or anything else
 }
 
-// What a term of a sum holds, for ordering the sum: accelerations first (by coordinate), then
-// speeds, then the rest.
+// What a term of a sum holds, for ordering the sum: the leading coordinate's acceleration, then
+// the other accelerations (by coordinate), then speeds, then the rest.
 std::pair<int, int> term_class(const ex& term, const PrintRoles* roles) {
   int best = 2, index = 0;
   if (roles == nullptr) return {best, index};
@@ -115,9 +115,12 @@ std::pair<int, int> term_class(const ex& term, const PrintRoles* roles) {
     if (!GiNaC::is_a<GiNaC::symbol>(*it)) continue;
     const auto found = roles->by_name.find(GiNaC::ex_to<GiNaC::symbol>(*it).get_name());
     if (found == roles->by_name.end()) continue;
-    const int rank = found->second.role == SymbolRole::acceleration ? 0
-                     : found->second.role == SymbolRole::speed      ? 1
-                                                                    : 2;
+    const bool own = found->second.role == SymbolRole::acceleration &&
+                     found->second.index == roles->leading_acceleration;
+    const int rank = own                                              ? -1
+                     : found->second.role == SymbolRole::acceleration ? 0
+                     : found->second.role == SymbolRole::speed        ? 1
+                                                                      : 2;
     if (std::make_pair(rank, found->second.index) < std::make_pair(best, index)) {
       best = rank;
       index = found->second.index;

@@ -18,9 +18,11 @@ namespace {
 
 using detail::print;
 
-// An expression of the equations printed with its symbols' roles (terms and factors in order).
-std::string print_in(const Equations::Impl& impl, const ex& e, Format format) {
-  const detail::PrintRoles roles = impl.roles();
+// An expression of the equations printed with its symbols' roles (terms and factors in order),
+// the acceleration of velocity coordinate `leading` first where it appears.
+std::string print_in(const Equations::Impl& impl, const ex& e, Format format, int leading = -1) {
+  detail::PrintRoles roles = impl.roles();
+  roles.leading_acceleration = leading;
   return print(e, format, &roles);
 }
 
@@ -183,15 +185,26 @@ std::string Equations::equation(int row, Format format) const {
   ex constraint_force = 0;
   for (const auto& c : impl_->constraints)
     constraint_force += c.G[static_cast<std::size_t>(impl_->free[r])] * c.multiplier;
-  std::string right_text = print_in(*impl_, right, format);
+  // As a textbook writes equation k: its own acceleration's term first, and positive (both
+  // sides negated where the leading term is not).
+  const int own = impl_->free[r];
+  std::string left_text = print_in(*impl_, left, format, own);
+  const bool negated = left_text.starts_with("-");
+  if (negated) left_text = print_in(*impl_, -left, format, own);
+  const ex sign = negated ? -1 : 1;
+  std::string right_text = print_in(*impl_, sign * right, format);
   if (!constraint_force.is_zero()) {
     GiNaC::lst multipliers;
     for (const auto& c : impl_->constraints) multipliers.append(c.multiplier);
     const std::string forces =
-        print_in(*impl_, GiNaC::collect(constraint_force, multipliers), format);
-    right_text = right.is_zero() ? forces : right_text + " + " + forces;
+        print_in(*impl_, GiNaC::collect(sign * constraint_force, multipliers), format);
+    if (right.is_zero()) {
+      right_text = forces;
+    } else {
+      right_text += forces.starts_with("-") ? " - " + forces.substr(1) : " + " + forces;
+    }
   }
-  return print_in(*impl_, left, format) + " = " + right_text;
+  return left_text + " = " + right_text;
 }
 
 int Equations::constraint_rows() const { return static_cast<int>(impl_->constraints.size()); }

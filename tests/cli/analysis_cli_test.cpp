@@ -293,6 +293,21 @@ TEST_F(AnalysisCli, EquationsReadAccelerationsFirst) {
                       "k_boom*theta1 - k_boom*theta2 = F_control*tc\n"),
             std::string::npos)
       << flexible.out;
+  // Equation k leads with coordinate k's own acceleration, positive: the sleigh's third (its
+  // heading) starts with its turning inertia, not with −c m sin θ ẍ; and no equation of these
+  // bundled models starts with a minus.
+  const CliRun sleigh =
+      momenta("equations " + example("constraints/chaplygin_sleigh") + " --all-symbols");
+  EXPECT_NE(sleigh.out.find("\nfloor_plane_angle_ddot*(I_sleigh_zz + c_sleigh_x^2*m_sleigh)\n"),
+            std::string::npos)
+      << sleigh.out;
+  for (const char* model :
+       {"double_pendulum", "gyroscope", "free_body_tennis_racket", "constraints/chaplygin_sleigh",
+        "constraints/rolling_coin", "constraints/four_bar", "quarter_car"}) {
+    const CliRun r = momenta("equations " + example(model));
+    ASSERT_EQ(r.code, 0) << model << r.err;
+    EXPECT_EQ(r.out.find("\n-"), std::string::npos) << model << "\n" << r.out;
+  }
 }
 
 // Round-off in a body's mass properties is no coefficient: the gyroscope's composed rotor has a
