@@ -30,8 +30,10 @@ struct EquationsOptions {
   std::string model;
   std::vector<std::string> symbols;
   bool all_symbols = false;
+  bool greek = false;  // --greek, or the word greek in --symbols
   std::string form = "lagrange";
   bool principal_axes = false;
+  bool normal_tangential = false;  // --nt
   bool text = false, latex = false, json = false, cpp = false, python = false;
   std::string name;        // the generated code's namespace or module name
   std::string transfer;    // INPUT:OUTPUT
@@ -141,17 +143,31 @@ void print_transfer(const io::ModelFile& file, const symbolic::LinearEquations& 
   }
 }
 
+// The characters a text shows: UTF-8 lead bytes, less the combining dots over θ (U+0307,
+// U+0308: "\xCC\x87", "\xCC\x88"), which sit on the letter before them.
+std::size_t shown_width(std::string_view text) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const auto byte = static_cast<unsigned char>(text[i]);
+    const bool combining = byte == 0xCC && i + 1 < text.size() &&
+                           (static_cast<unsigned char>(text[i + 1]) == 0x87 ||
+                            static_cast<unsigned char>(text[i + 1]) == 0x88);
+    if ((byte & 0xC0) != 0x80 && !combining) ++n;
+  }
+  return n;
+}
+
 // A long equation broken at its terms, as a textbook sets it: at " + ", " - " and " = " outside
 // parentheses, each line kept under `width` characters where the terms allow, the continuation
 // lines indented by four spaces. Short equations come back as they are.
 std::string wrapped(const std::string& equation, std::size_t width = 100) {
-  if (equation.size() <= width) return equation;
+  if (shown_width(equation) <= width) return equation;
   std::string out, line;
   int depth = 0;
   std::size_t start = 0;
   const auto flush_term = [&](std::size_t end) {
     const std::string term = equation.substr(start, end - start);
-    if (!line.empty() && line.size() + term.size() > width) {
+    if (!line.empty() && shown_width(line) + shown_width(term) > width) {
       out += line + "\n";
       line = "   ";  // the term carries its leading space: four in all
     }
@@ -211,9 +227,12 @@ std::string equations_text(const io::ModelFile& file, const symbolic::Equations&
   if (o.form == "newton-euler") {
     fmt::format_to(
         std::back_inserter(out),
-        "{}per body, in its own axes: ΣF = m a_G, ΣM_G = Ī α + ω × Ī ω; unknown reactions "
-        "R_<joint> (force on the child), N_<joint> (moment about J'), in the child's axes{}\n",
+        "{}{}; unknown reactions R_<joint> (force on the child), N_<joint> (moment about J'), in "
+        "the child's axes{}\n",
         o.latex ? "% " : "",
+        e.newton_euler_planar()
+            ? "planar motion, per body in its plane and its own axes: ΣF = m a_G, ΣM_G = Ī α"
+            : "per body, in its own axes: ΣF = m a_G, ΣM_G = Ī α + ω × Ī ω",
         e.constraint_rows() > 0 ? "; the constraints' forces by their multipliers λ" : "");
     std::string group;
     for (int r = 0; r < e.newton_euler_rows(); ++r) {
@@ -301,6 +320,42 @@ json equations_json(const io::ModelFile& file, const symbolic::Equations& e) {
           {"constraints", constraints}};
 }
 
+// The equations with the options' symbols and the file's names for them (its `symbols:`
+// section, whose entries a mistake is reported at).
+symbolic::Equations derive(const io::ModelFile& file, const EquationsOptions& o) {
+  symbolic::EquationOptions options;
+  options.greek = o.greek;
+  for (const std::string& name : o.symbols) {
+    if (name == "greek") {
+      options.greek = true;
+    } else {
+      options.symbols.push_back(name);
+    }
+  }
+  if (o.all_symbols && !options.symbols.empty()) {
+    throw CLI::ValidationError("--symbols", "names parameters; --all-symbols keeps every one");
+  }
+  options.all_symbols = o.all_symbols;
+  options.newton_euler = o.form == "newton-euler";
+  options.principal_axes = o.principal_axes;
+  options.normal_tangential = o.normal_tangential;
+  for (const auto& [name, given] : file.symbol_names) options.names[name] = given.name;
+  try {
+    return symbolic::derive_equations(file.model, options);
+  } catch (const InvalidArgument& error) {
+    // A name the symbols: section gives that the equations do not have: at its line.
+    for (const auto& [name, given] : file.symbol_names) {
+      const std::string_view what = error.what();
+      if (what.find("'" + name + "' (as") == std::string_view::npos &&
+          what.find("named '" + given.name + "' with") == std::string_view::npos) {
+        continue;
+      }
+      throw ParseError(file.file, given.line, given.column, error.what());
+    }
+    throw;
+  }
+}
+
 void run(const EquationsOptions& o) {
   const io::ModelFile file = frontend::load_model(o.model);
   // The instant is the operating point of a linearization; the equations themselves hold at
@@ -311,12 +366,7 @@ void run(const EquationsOptions& o) {
                                "sets the operating point of --form linear and --transfer; the "
                                "equations of motion hold at every instant");
   }
-  symbolic::EquationOptions options;
-  options.symbols = o.symbols;
-  options.all_symbols = o.all_symbols;
-  options.newton_euler = o.form == "newton-euler";
-  options.principal_axes = o.principal_axes;
-  const symbolic::Equations e = symbolic::derive_equations(file.model, options);
+  const symbolic::Equations e = derive(file, o);
   const symbolic::Format f = o.latex ? symbolic::Format::latex : symbolic::Format::text;
   if (!o.transfer.empty()) {
     print_transfer(file, linear_equations(file, e, o), o, f);
@@ -342,11 +392,14 @@ void add_equations_command(CLI::App& app) {
   CLI::Option* symbols =
       command
           ->add_option("--symbols", options->symbols,
-                       "Parameters to keep as symbols, comma-separated (m_<body>, g, k_<spring>, "
-                       "...; docs/equations.md)")
+                       "Parameters to keep as symbols, comma-separated (m_<body>, g, L_<body>, "
+                       "k_<spring>, ...; docs/equations.md); the word greek: as --greek")
           ->delimiter(',');
-  command->add_flag("--all-symbols", options->all_symbols, "Every nonzero parameter a symbol")
-      ->excludes(symbols);
+  (void)symbols;
+  command->add_flag("--all-symbols", options->all_symbols, "Every nonzero parameter a symbol");
+  command->add_flag("--greek", options->greek,
+                    "Text and LaTeX write revolute joints' angles θ (θ₁, θ₂, …), their rates θ̇ "
+                    "and accelerations θ̈");
   command
       ->add_option("--form", options->form,
                    "lagrange: one equation per coordinate (default); matrix: M, C v, g and Q; "
@@ -356,6 +409,9 @@ void add_equations_command(CLI::App& app) {
   command->add_flag("--principal-axes", options->principal_axes,
                     "With --form newton-euler: a body with products of inertia in its principal "
                     "axes at G (Euler's equations I1 α1 − (I2 − I3) ω2 ω3 = ΣM_G1 ...)");
+  command->add_flag("--nt", options->normal_tangential,
+                    "With --form newton-euler on a planar model: a body on a fixed pivot with "
+                    "ΣF_n = m r̄ ω² and ΣF_t = m r̄ α (n towards the pivot, t along G's motion)");
   command->add_option("--transfer", options->transfer,
                       "INPUT:OUTPUT — the transfer function in s from a signal to a joint "
                       "output (or a coordinate, its rate with _dot), about the operating point");

@@ -221,6 +221,8 @@ void write_sweep_report(const SweepOptions& o, const sweep::SweepRunner& runner)
   results.source = o.sweep;
   results.parameters = runner.parameter_columns();
   results.metrics = runner.metric_columns();
+  results.parameter_units = runner.parameter_units();
+  results.metric_units = runner.metric_units();
   results.runs = std::move(table.runs);
   results.ok = std::move(table.ok);
   results.values = std::move(table.values);

@@ -560,7 +560,7 @@ def campbell_diagram(model: Model, speed_from: float, speed_to: float, points: i
     """The Campbell diagram of the model's rotor — one body on a ball or free joint, or a rotor turning on its joint — from speed_from to speed_to (rad/s), as `momenta campbell` (which takes rev/min)."""
     ...
 
-def equations(model: Model, *, symbols: List[str] = [], all_symbols: bool = False, form: str = 'lagrange', format: str = 'text', principal_axes: bool = False) -> List[str]:
+def equations(model: Model, *, symbols: List[str] = [], all_symbols: bool = False, form: str = 'lagrange', format: str = 'text', principal_axes: bool = False, greek: bool = False, names: Dict[str, str] = {}) -> List[str]:
     """The model's equations of motion in symbols, one string per equation, as `momenta equations` prints them: 'lagrange' (one per free speed, each with its constraint forces G^T lambda, then each constraint row as '<row>: phi = 0' or '<row>: G v = 0') or 'newton-euler' (each body's ΣF = m a_G and ΣM_G = """
     ...
 

@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include <map>
+
 #include "bindings.hpp"
 #include "model_handle.hpp"
 #include "momenta/analysis/free_body.hpp"
@@ -64,9 +66,15 @@ symbolic::Format format_arg(const std::string& format) {
   throw InvalidArgument(fmt::format("format '{}': expected 'text' or 'latex'", format));
 }
 
-symbolic::EquationOptions equation_options(std::vector<std::string> symbols, bool all_symbols,
-                                           bool newton_euler, bool principal_axes = false) {
+// The options, with the names the model file gives its symbols (its `symbols:` section) and
+// those given here over them.
+symbolic::EquationOptions equation_options(const ModelHandle& h, std::vector<std::string> symbols,
+                                           bool all_symbols, bool newton_euler,
+                                           bool principal_axes = false,
+                                           const std::map<std::string, std::string>& names = {}) {
   symbolic::EquationOptions o;
+  for (const auto& [name, given] : h.file->symbol_names) o.names[name] = given.name;
+  for (const auto& [name, given] : names) o.names[name] = given;
   o.symbols = std::move(symbols);
   o.all_symbols = all_symbols;
   o.newton_euler = newton_euler;
@@ -155,15 +163,17 @@ and Coriolis terms, every vector in the frame's axes, as `momenta kinematics` gi
   m.def(
       "equations",
       [](const ModelHandle& h, std::vector<std::string> symbols, bool all_symbols,
-         const std::string& form, const std::string& format, bool principal_axes) {
+         const std::string& form, const std::string& format, bool principal_axes, bool greek,
+         const std::map<std::string, std::string>& names) {
         const symbolic::Format f = format_arg(format);
         if (form != "lagrange" && form != "newton-euler") {
           throw InvalidArgument(
               fmt::format("form '{}': expected 'lagrange' or 'newton-euler'", form));
         }
-        const symbolic::Equations e = symbolic::derive_equations(
-            h.model(), equation_options(std::move(symbols), all_symbols, form == "newton-euler",
-                                        principal_axes));
+        symbolic::EquationOptions options = equation_options(
+            h, std::move(symbols), all_symbols, form == "newton-euler", principal_axes, names);
+        options.greek = greek;
+        const symbolic::Equations e = symbolic::derive_equations(h.model(), options);
         std::vector<std::string> lines;
         if (form == "lagrange") {
           for (int r = 0; r < static_cast<int>(e.free_speeds().size()); ++r)
@@ -178,14 +188,16 @@ and Coriolis terms, every vector in the frame's axes, as `momenta kinematics` gi
       },
       py::arg("model"), py::kw_only(), py::arg("symbols") = std::vector<std::string>{},
       py::arg("all_symbols") = false, py::arg("form") = "lagrange", py::arg("format") = "text",
-      py::arg("principal_axes") = false,
+      py::arg("principal_axes") = false, py::arg("greek") = false,
+      py::arg("names") = std::map<std::string, std::string>{},
       R"doc(The model's equations of motion in symbols, one string per equation, as
 `momenta equations` prints them: 'lagrange' (one per free speed, each with its constraint forces
 G^T lambda, then each constraint row as '<row>: phi = 0' or '<row>: G v = 0') or 'newton-euler'
 (each body's ΣF = m a_G and ΣM_G = Ī α + ω × Ī ω with the joint reactions and constraint
 multipliers, prefixed with the body; `principal_axes` writes a body with products of inertia in
 its principal axes); 'text' or 'latex'. `symbols` names the parameters to keep as symbols
-(docs/equations.md).)doc");
+(docs/equations.md); `names` renames parameters and coordinates ({'m_bob': 'm', 'L_bob': 'L'}),
+over the model file's `symbols:` section; `greek` writes the revolute joints' angles θ (θ₁, θ₂, …).)doc");
 
   m.def(
       "symbolic_transfer_function",
@@ -194,7 +206,7 @@ its principal axes); 'text' or 'latex'. `symbols` names the parameters to keep a
          const py::object& v, double t, const std::string& format) {
         const Instant s = instant_of(h, q, v, t);
         const symbolic::Equations e = symbolic::derive_equations(
-            h.model(), equation_options(std::move(symbols), all_symbols, false));
+            h.model(), equation_options(h, std::move(symbols), all_symbols, false));
         const symbolic::LinearEquations l =
             symbolic::linearize_equations(e, h.model(), s.t, s.q, s.v);
         const auto& inputs = l.input_names();

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
+#include <map>
 #include <numbers>
 #include <utility>
 
@@ -107,9 +109,35 @@ namespace {
 
 using detail::Context;
 
-constexpr std::array<std::string_view, 10> kModelFileKeys = {
-    "name",   "description", "gravity", "bodies",  "joints",
-    "forces", "constraints", "inputs",  "outputs", "simulation"};
+constexpr std::array<std::string_view, 11> kModelFileKeys = {
+    "name",        "description", "gravity", "bodies",     "joints", "forces",
+    "constraints", "inputs",      "outputs", "simulation", "symbols"};
+
+// The `symbols:` section: each key (momenta's name) to an identifier (checked by the equations,
+// which know the names) — letters, digits and '_', starting with a letter.
+std::map<std::string, ModelFile::SymbolName> read_symbol_names(const YamlNode& root) {
+  std::map<std::string, ModelFile::SymbolName> names;
+  const auto section = root.find("symbols");
+  if (!section || section->is_null()) return names;
+  section->expect_map("a map from momenta's names to yours (m_bob: m)");
+  for (const std::string& key : section->keys()) {
+    const YamlNode value = section->at(key);
+    if (names.count(key) != 0) value.fail(fmt::format("'{}' is named twice", key));
+    const std::string name = value.as_string();
+    const bool identifier = !name.empty() && std::isalpha(static_cast<unsigned char>(name[0])) &&
+                            std::all_of(name.begin(), name.end(), [](char c) {
+                              return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+                            });
+    if (!identifier) {
+      value.fail(
+          fmt::format("'{}' is not a name for the equations: use letters, digits and '_', "
+                      "starting with a letter (theta, m_1)",
+                      name));
+    }
+    names[key] = {name, value.line(), value.column()};
+  }
+  return names;
+}
 
 // The declarations of one kind of item.
 const detail::Declared& declared_of(ModelItemRef::Kind kind, const Context& ctx) {
@@ -221,9 +249,15 @@ ModelFile detail::compose_model_file(const YamlNode& root, const std::filesystem
   for (std::size_t b = 1; b < body_parts.size(); ++b) {
     body_parts[b] = std::move(ctx.body_parts[model.bodies()[b].name]);
   }
-  return ModelFile{
-      std::move(name), std::move(description), std::move(model),     std::move(outputs), simulation,
-      root.file(),     item_locations(ctx),    std::move(body_parts)};
+  return ModelFile{std::move(name),
+                   std::move(description),
+                   std::move(model),
+                   std::move(outputs),
+                   simulation,
+                   root.file(),
+                   item_locations(ctx),
+                   std::move(body_parts),
+                   read_symbol_names(root)};
 }
 
 ModelFile read_model_file(const std::filesystem::path& path) {

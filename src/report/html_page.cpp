@@ -55,10 +55,11 @@ std::string script_safe(std::string text, std::string_view closing) {
 
 // The notice the MIT License asks to travel with every copy of the libraries the page embeds
 // (THIRD-PARTY-NOTICES.md lists them all). esbuild keeps three.js's own @license comment in the
-// bundle, not uPlot's, so the page carries both here.
+// bundle, not uPlot's or KaTeX's, so the page carries them here.
 constexpr std::string_view kEmbeddedLibrariesNotice =
-    "This page embeds three.js (Copyright (c) 2010-2024 three.js authors) and uPlot\n"
-    "(Copyright (c) 2022 Leon Sorokin), each under the MIT License:\n\n"
+    "This page embeds three.js (Copyright (c) 2010-2024 three.js authors), uPlot\n"
+    "(Copyright (c) 2022 Leon Sorokin) and KaTeX (Copyright (c) 2013-2020 Khan Academy and other\n"
+    "contributors), each under the MIT License:\n\n"
     "Permission is hereby granted, free of charge, to any person obtaining a copy of this "
     "software\n"
     "and associated documentation files (the \"Software\"), to deal in the Software without\n"

@@ -42,6 +42,11 @@ json plots_json(const SimulationRun& run);
 /// `fastest_rate` receives the largest |λ| (1/s) when the model was linearized.
 json linear_json(const io::ModelFile& file, const LinearSettings& settings, double& fastest_rate);
 
+/// The equations of motion in symbols (LaTeX and text, every nonzero parameter a symbol, the
+/// file's names), the constraints' rows and the symbols' values; or {available: false, reason}
+/// (too many free speeds, too large to print, or a build without the symbolic layer).
+json equations_json(const io::ModelFile& file);
+
 /// The Campbell diagram over the speeds `settings.campbell` names, or {available: false, reason}.
 json campbell_json(const io::ModelFile& file, const LinearSettings& settings);
 /// Body poses after forward kinematics in `data`: per body (world excluded) its position, then

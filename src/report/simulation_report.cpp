@@ -124,6 +124,7 @@ std::string simulation_report_html(const SimulationRun& run, const LinearSetting
                        {"frames", detail::frames_json(run)},
                        {"plots", detail::plots_json(run)},
                        {"linear", std::move(linear_section)},
+                       {"equations", detail::equations_json(*run.file)},
                        {"campbell", detail::campbell_json(*run.file, linear)},
                        {"diagrams", detail::diagrams_json(run)}};
   return detail::html_page(fmt::format("{} — momenta report", run.file->name), data);

@@ -13,6 +13,8 @@ std::string sweep_report_html(const SweepResults& results) {
   data["source"] = results.source;
   data["parameters"] = results.parameters;
   data["metrics"] = results.metrics;
+  data["parameter_units"] = results.parameter_units;
+  data["metric_units"] = results.metric_units;
   data["runs"] = results.runs;
   json ok = json::array();
   for (bool b : results.ok) ok.push_back(b);

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "column_units.hpp"
 #include "momenta/analysis/equilibrium.hpp"
 #include "momenta/analysis/linearize.hpp"
 #include "momenta/common/error.hpp"
@@ -126,6 +127,9 @@ SweepRunner::SweepRunner(SweepSpec spec)
     }
     parameter_columns_.push_back(p.name);
     try {
+      parameter_units_.push_back(
+          part_job ? detail::parameter_unit(p.path, nullptr, detail::part_length_unit(spec_.model))
+                   : detail::parameter_unit(p.path, &job_->model->nominal().model, ""));
       if (part_job) {
         job_->part->number_at(p.path);
       } else {
@@ -151,12 +155,13 @@ SweepRunner::SweepRunner(SweepSpec spec)
   }
 
   // Every metric against the job, and against what the nominal run records.
-  std::vector<std::string> recorded;
+  std::vector<std::string> recorded, recorded_units;
   if (spec_.job == JobKind::kSimulate) {
     for (const Metric& m : spec_.metrics) job_->reactions |= m.kind == Kind::kMaxReaction;
     const io::ModelFile& file = job_->model->nominal();
     simulate::Simulation nominal(file.model, file.outputs, job_->simulation_options(spec_, file));
     recorded = nominal.column_names();
+    recorded_units = nominal.column_units();
   } else if (spec_.job == JobKind::kLinearize) {
     job_->linear_states =
         static_cast<int>(Job::linearize(spec_, job_->model->nominal()).system.A().rows());
@@ -199,6 +204,12 @@ SweepRunner::SweepRunner(SweepSpec spec)
       }
     }
     metric_columns_.insert(metric_columns_.end(), columns.begin(), columns.end());
+    const auto of = std::find(recorded.begin(), recorded.end(), m.of);
+    const std::vector<std::string> units = detail::metric_units(
+        m, columns.size(),
+        of == recorded.end() ? ""
+                             : recorded_units[static_cast<std::size_t>(of - recorded.begin())]);
+    metric_units_.insert(metric_units_.end(), units.begin(), units.end());
   }
   job_->columns = columns_read(spec_.metrics);
 }

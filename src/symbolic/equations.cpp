@@ -36,49 +36,199 @@ using GiNaC::ex;
 using GiNaC::symbol;
 using namespace detail;
 
-std::string latex_name(const std::string& name) {
-  std::string s;
-  for (char c : name) s += c == '_' ? std::string("\\_") : std::string(1, c);
-  return "\\mathrm{" + s + "}";
+// A Greek letter's name (theta, Omega) as LaTeX (\\theta, \\Omega), or "".
+std::string greek_latex(std::string_view word) {
+  static constexpr std::string_view letters[] = {
+      "alpha",   "beta",   "gamma", "delta",   "epsilon", "zeta",  "eta",   "theta", "iota",
+      "kappa",   "lambda", "mu",    "nu",      "xi",      "pi",    "rho",   "sigma", "tau",
+      "upsilon", "phi",    "chi",   "psi",     "omega",   "Gamma", "Delta", "Theta", "Lambda",
+      "Xi",      "Pi",     "Sigma", "Upsilon", "Phi",     "Psi",   "Omega"};
+  for (std::string_view letter : letters) {
+    if (word == letter) return fmt::format("\\{}", letter);
+  }
+  return "";
 }
 
-// Parameters: a symbol where the options ask for one, else the number.
+// A symbol's name as LaTeX, as a textbook sets it, in two parts: a one-letter or Greek head and
+// the rest of the name as its subscript (m_bob → m, \\mathrm{bob}; I_rod_yy → I, \\mathrm{rod},yy;
+// theta1 → \\theta, 1); any other name upright and whole, with no subscript
+// (\\mathrm{floor\\_plane\\_x}) — or, for a coordinate, as q with the name as its subscript.
+struct LatexName {
+  std::string base, subscript;
+  bool word = false;  // neither a letter nor Greek: the whole name upright in base
+  std::string text() const {
+    return subscript.empty() ? base : fmt::format("{}_{{{}}}", base, subscript);
+  }
+};
+
+LatexName latex_parts(const std::string& name) {
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const std::size_t end = name.find('_', start);
+    parts.push_back(name.substr(start, end - start));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  std::size_t letters = parts[0].size();
+  while (letters > 0 && std::isdigit(static_cast<unsigned char>(parts[0][letters - 1]))) --letters;
+  const std::string head = parts[0].substr(0, letters), digits = parts[0].substr(letters);
+  const std::string greek = greek_latex(head);
+  const bool letter = head.size() == 1 && std::isalpha(static_cast<unsigned char>(head[0]));
+  if (greek.empty() && !letter) {
+    std::string s;
+    for (char c : name) s += c == '_' ? std::string("\\_") : std::string(1, c);
+    return {fmt::format("\\mathrm{{{}}}", s), "", true};
+  }
+  std::vector<std::string> subscript;
+  if (!digits.empty()) subscript.push_back(digits);
+  for (std::size_t k = 1; k < parts.size(); ++k) {
+    const std::string& part = parts[k];
+    if (part.empty()) continue;
+    const std::string part_greek = greek_latex(part);
+    const bool short_part = part.size() <= 2 || std::all_of(part.begin(), part.end(), [](char c) {
+                              return std::isdigit(static_cast<unsigned char>(c));
+                            });
+    subscript.push_back(!part_greek.empty() ? part_greek
+                        : short_part        ? part
+                                            : fmt::format("\\mathrm{{{}}}", part));
+  }
+  return {greek.empty() ? head : greek, fmt::format("{}", fmt::join(subscript, ",")), false};
+}
+
+std::string latex_name(const std::string& name) { return latex_parts(name).text(); }
+
+// A coordinate, its rate or acceleration (accent "", "\\dot", "\\ddot") in LaTeX: the accent
+// over the letter, a word-named coordinate as q_{name} (\\ddot{q}_{\\mathrm{upper}}), as
+// textbooks write generalized coordinates.
+std::string coordinate_latex(const std::string& name, std::string_view accent) {
+  LatexName parts = latex_parts(name);
+  if (parts.word) parts = {"q", parts.base, false};
+  if (accent.empty()) return parts.text();
+  return LatexName{fmt::format("{}{{{}}}", accent, parts.base), parts.subscript}.text();
+}
+
+// The unit of a joint's viscous damping: of its effort per its speed.
+std::string_view damping_unit(const model::Joint& j) {
+  switch (j.type) {
+    case model::JointType::revolute:
+      return "N·m·s/rad";
+    case model::JointType::prismatic:
+      return "N·s/m";
+    default:
+      return "";  // speeds of both kinds
+  }
+}
+
+// Parameters: a symbol where the options ask for one, else the number. A parameter is asked
+// for by momenta's name or by the name `options.names` gives it; the symbol carries the given
+// name, and parameters given one name share one symbol (their values must agree).
 class Parameters {
  public:
   explicit Parameters(const EquationOptions& options)
-      : all_(options.all_symbols), asked_(options.symbols.begin(), options.symbols.end()) {}
+      : all_(options.all_symbols),
+        asked_(options.symbols.begin(), options.symbols.end()),
+        given_(options.names) {}
 
-  ex operator()(const std::string& raw_name, double value) {
-    const std::string name = identifier(raw_name);
+  ex operator()(const std::string& raw_name, double value, std::string_view unit = {}) {
+    return named(raw_name, value, {}, unit);
+  }
+
+  // A position in a frame: where it lies along one axis, a positive length `length_name` times
+  // the axis's sign (asked for by that name or the component's); otherwise its components.
+  V3 vector(const std::string& stem, const Vec3& value, const std::string& length_name = {}) {
+    static const char* const axes[] = {"_x", "_y", "_z"};
+    const int nonzero = static_cast<int>((value.array() != 0.0).count());
+    if (!length_name.empty() && nonzero == 1) {
+      int k = 0;
+      while (value[k] == 0.0) ++k;
+      const ex L = named(length_name, std::abs(value[k]), identifier(stem + axes[k]), "m");
+      V3 r;
+      r[k] = value[k] < 0 ? -L : L;
+      for (int other = 0; other < 3; ++other) {
+        if (other != k) names_.push_back(identifier(stem + axes[other]));
+      }
+      return r;
+    }
+    return {{(*this)(stem + axes[0], value.x(), "m"), (*this)(stem + axes[1], value.y(), "m"),
+             (*this)(stem + axes[2], value.z(), "m")}};
+  }
+
+  // The name a person gave `name` (options.names), or `name`.
+  std::string given(const std::string& name) const {
+    const auto it = given_.find(name);
+    return it == given_.end() ? name : it->second;
+  }
+  // Marks a coordinate's name as known (options.names may name it).
+  void coordinate(const std::string& name) {
     names_.push_back(name);
-    if (value == 0.0) return 0;
-    if (!all_ && asked_.count(name) == 0) return exact_number(value);
-    const symbol s(name, latex_name(name));
-    symbols_.push_back(s);
-    values_.push_back({name, value});
-    return s;
+    coordinates_.push_back(name);
   }
-  V3 vector(const std::string& stem, const Vec3& value) {
-    return {{(*this)(stem + "_x", value.x()), (*this)(stem + "_y", value.y()),
-             (*this)(stem + "_z", value.z())}};
-  }
-  // Every name asked for must be a parameter of the model.
+
+  // Every name asked for must be a parameter of the model, every name given a parameter or a
+  // coordinate.
   void check() const {
+    const std::vector<std::string_view> views(names_.begin(), names_.end());
+    const auto known = [&](const std::string& name) {
+      return std::find(names_.begin(), names_.end(), name) != names_.end();
+    };
     for (const std::string& name : asked_) {
-      if (std::find(names_.begin(), names_.end(), name) != names_.end()) continue;
-      const std::vector<std::string_view> views(names_.begin(), names_.end());
+      if (known(name) || std::any_of(given_.begin(), given_.end(),
+                                     [&](const auto& g) { return g.second == name; })) {
+        continue;
+      }
       throw InvalidArgument(
           fmt::format("equations: no parameter named '{}'{}; the model's parameters are {}", name,
-                      did_you_mean(name, views), fmt::join(names_, ", ")));
+                      did_you_mean(name, views), fmt::join(listed_, ", ")));
+    }
+    for (const auto& [name, to] : given_) {
+      if (known(name)) continue;
+      throw InvalidArgument(
+          fmt::format("equations: symbols: names '{}' (as {}), which is no parameter or coordinate "
+                      "of the model{}; its coordinates are {}, its parameters {}",
+                      name, to, did_you_mean(name, views), fmt::join(coordinates_, ", "),
+                      fmt::join(listed_, ", ")));
     }
   }
   std::vector<symbol> symbols_;
   std::vector<Parameter> values_;
 
  private:
+  // The parameter momenta calls `raw_name` (also known as `alias`).
+  ex named(const std::string& raw_name, double value, const std::string& alias,
+           std::string_view unit) {
+    const std::string name = identifier(raw_name);
+    names_.push_back(name);
+    if (!alias.empty()) names_.push_back(alias);
+    if (value == 0.0) return 0;
+    listed_.push_back(name);
+    std::string shown = given(name);
+    if (shown == name && !alias.empty()) shown = given(alias) == alias ? name : given(alias);
+    const bool asked = all_ || asked_.count(name) != 0 || asked_.count(shown) != 0 ||
+                       (!alias.empty() && asked_.count(alias) != 0);
+    if (!asked) return exact_number(value);
+    for (std::size_t k = 0; k < symbols_.size(); ++k) {
+      if (symbols_[k].get_name() != shown) continue;
+      const double other = values_[k].value;
+      if (std::abs(other - value) > 1e-12 * std::max(std::abs(other), std::abs(value))) {
+        throw InvalidArgument(fmt::format(
+            "equations: two parameters are named '{}' with different values, {} and {} ({}); give "
+            "them different names",
+            shown, other, value, name));
+      }
+      return symbols_[k];
+    }
+    const symbol s(shown, latex_name(shown));
+    symbols_.push_back(s);
+    values_.push_back({shown, value, latex_name(shown), std::string(unit)});
+    return s;
+  }
+
   bool all_;
   std::set<std::string> asked_;
-  std::vector<std::string> names_;
+  std::map<std::string, std::string> given_;
+  std::vector<std::string> names_;        // every name a parameter or coordinate answers to
+  std::vector<std::string> listed_;       // the nonzero parameters, for messages
+  std::vector<std::string> coordinates_;  // the coordinates' names, for messages
 };
 
 // One joint's motion in J': its rotation and translation, and the columns of S.
@@ -160,8 +310,10 @@ class Derivation {
   Derivation(const model::Model& model, const EquationOptions& options)
       : model_(model),
         params_(options),
+        greek_(options.greek),
         newton_euler_(options.newton_euler),
-        principal_axes_(options.principal_axes) {}
+        principal_axes_(options.principal_axes),
+        normal_tangential_(options.normal_tangential) {}
 
   Equations::Impl run() {
     make_coordinate_symbols();
@@ -205,9 +357,15 @@ class Derivation {
             const model::Signal& s = model_.signals()[j.prescribed_signal_indices[k]];
             name = identifier(s.name());
           }
-          const symbol q(name, latex_name(name)),
-              v(name + "_dot", "\\dot{" + latex_name(name) + "}"),
-              a(name + "_ddot", "\\ddot{" + latex_name(name) + "}");
+          params_.coordinate(name);
+          const bool renamed = params_.given(name) != name;
+          name = params_.given(name);
+          if (greek_ && !renamed && j.type == model::JointType::revolute && !j.is_prescribed()) {
+            angles_.push_back(name);
+          }
+          const symbol q(name, coordinate_latex(name, "")),
+              v(name + "_dot", coordinate_latex(name, "\\dot")),
+              a(name + "_ddot", coordinate_latex(name, "\\ddot"));
           set_coordinate(qi, vi, q, v, a, name);
           rates_.push_back({q, v});
           if (!j.is_prescribed()) impl_.free.push_back(vi);
@@ -248,10 +406,11 @@ class Derivation {
       rates_.push_back({Q[3], (qw * w[2] + qx * w[1] - qy * w[0]) / 2});
       if (j.type == model::JointType::free) {
         for (int k = 0; k < 3; ++k) {
-          const std::string name = base + "_" + axes[k];
-          const symbol q(name, latex_name(name)),
-              v(name + "_dot", "\\dot{" + latex_name(name) + "}"),
-              a(name + "_ddot", "\\ddot{" + latex_name(name) + "}");
+          params_.coordinate(base + "_" + axes[k]);
+          const std::string name = params_.given(base + "_" + axes[k]);
+          const symbol q(name, coordinate_latex(name, "")),
+              v(name + "_dot", coordinate_latex(name, "\\dot")),
+              a(name + "_ddot", coordinate_latex(name, "\\ddot"));
           set_coordinate(j.q_index + k, j.v_index + 3 + k, q, v, a, name);
           rates_.push_back({q, v});
           if (!j.is_prescribed()) impl_.free.push_back(j.v_index + 3 + k);
@@ -259,6 +418,24 @@ class Derivation {
       }
     }
     std::sort(impl_.free.begin(), impl_.free.end());
+    greek_display();
+  }
+
+  // θ (θ₁, θ₂, …) for the angles collected in angles_ (EquationOptions::greek).
+  void greek_display() {
+    static const char* const subscripts[] = {"₀", "₁", "₂", "₃", "₄", "₅", "₆", "₇", "₈", "₉"};
+    const bool numbered = angles_.size() > 1;
+    for (std::size_t k = 0; k < angles_.size(); ++k) {
+      std::string text_index, latex_index;
+      if (numbered) {
+        for (char digit : std::to_string(k + 1)) text_index += subscripts[digit - '0'];
+        latex_index = "_{" + std::to_string(k + 1) + "}";
+      }
+      const std::string& name = angles_[k];
+      impl_.display[name] = {"θ" + text_index, "\\theta" + latex_index};
+      impl_.display[name + "_dot"] = {"θ\u0307" + text_index, "\\dot{\\theta}" + latex_index};
+      impl_.display[name + "_ddot"] = {"θ\u0308" + text_index, "\\ddot{\\theta}" + latex_index};
+    }
   }
 
   void set_coordinate(int qi, int vi, const symbol& q, const symbol& v, const symbol& a,
@@ -322,8 +499,8 @@ class Derivation {
       const int i = j.child_index, p = j.parent_index;
       const JointMotion jm = joint_motion(j, impl_.q, j.q_index);
       const M3 R_PJ = to_m3(j.X_PJ.R), R_CJ = to_m3(j.X_CJ.R);
-      const V3 p_PJ = params_.vector("l_" + j.name, j.X_PJ.p);
-      const V3 p_CJ = params_.vector("l_" + j.name + "_child", j.X_CJ.p);
+      const V3 p_PJ = params_.vector("l_" + j.name, j.X_PJ.p, "L_" + j.name);
+      const V3 p_CJ = params_.vector("l_" + j.name + "_child", j.X_CJ.p, "L_" + j.name + "_child");
       p_CJ_[i] = p_CJ;
       R_PC_[i] = R_PJ * jm.R * transpose(R_CJ);
       p_PC_[i] = p_PJ + R_PJ * jm.p - R_PC_[i] * p_CJ;
@@ -338,7 +515,7 @@ class Derivation {
     }
     const Vec3 gravity = model_.gravity();
     const double g_size = gravity.norm();
-    const ex g = params_("g", g_size);
+    const ex g = params_("g", g_size, "m/s²");
     if (g_size > 0) base_acceleration_ = (-g) * to_v3(gravity / g_size);
   }
 
@@ -411,7 +588,7 @@ class Derivation {
   Inertia inertia(int b) {
     const model::Body& body = model_.body(b);
     const inertia::MassProperties& mp = body.mass_properties;
-    const ex m = params_("m_" + body.name, mp.mass());
+    const ex m = params_("m_" + body.name, mp.mass(), "kg");
     // Round-off in the mass properties (a composed part's products of inertia of 1e-20 against
     // moments of 1e-2) is 0, as the command line shows it (common/number_text.hpp): not a
     // coefficient, nor with --all-symbols a parameter, of the equations.
@@ -420,14 +597,15 @@ class Derivation {
         std::max(mp.center_of_mass().norm(), std::sqrt(Ic.trace() / (2 * mp.mass())));
     const V3 c = params_.vector("c_" + body.name, mp.center_of_mass().unaryExpr([&](double x) {
       return shown_value(x, length);
-    }));
+    }),
+                                "L_" + body.name);
     const double moment = Ic.cwiseAbs().maxCoeff();
     const char* axes = "xyz";
     M3 I;
     for (int r = 0; r < 3; ++r) {
       for (int col = r; col < 3; ++col) {
         const ex e = params_(fmt::format("I_{}_{}{}", body.name, axes[r], axes[col]),
-                             shown_value(Ic(r, col), moment));
+                             shown_value(Ic(r, col), moment), "kg·m²");
         I(r, col) = e;
         I(col, r) = e;
       }
@@ -460,14 +638,15 @@ class Derivation {
       f[b] = f[b] + Force{cross(p, F), F};
     };
     for (const model::Joint& j : model_.joints()) {
-      const ex c = params_("c_" + j.name, j.damping);
+      const ex c = params_("c_" + j.name, j.damping, damping_unit(j));
       for (int k = 0; k < j.nv(); ++k) Q_[j.v_index + k] -= c * impl_.v[j.v_index + k];
     }
     for (const model::ForceElement& element : model_.force_elements()) {
       const std::string name = model::force_element_name(element);
       if (const auto* s = std::get_if<model::LinearSpringDamper>(&element)) {
-        const ex k = params_("k_" + name, s->stiffness), c = params_("c_" + name, s->damping),
-                 l0 = params_("l0_" + name, s->free_length);
+        const ex k = params_("k_" + name, s->stiffness, "N/m"),
+                 c = params_("c_" + name, s->damping, "N·s/m"),
+                 l0 = params_("l0_" + name, s->free_length, "m");
         const int a = s->a.body_index, b = s->b.body_index;
         const V3 pa = to_v3(s->a.p_BoP_B), pb = to_v3(s->b.p_BoP_B);
         const V3 d = world_point(b, pb) - world_point(a, pa);
@@ -481,18 +660,19 @@ class Derivation {
         add_two_body_torsion(*t, f);
       } else if (t) {
         const model::Joint& j = model_.joint(t->joint_index);
-        const ex k = params_("k_" + name, t->stiffness), c = params_("c_" + name, t->damping),
-                 rest = params_("rest_" + name, t->rest_angle);
+        const ex k = params_("k_" + name, t->stiffness, "N·m/rad"),
+                 c = params_("c_" + name, t->damping, "N·m·s/rad"),
+                 rest = params_("rest_" + name, t->rest_angle, "rad");
         Q_[j.v_index] -= k * (impl_.q[j.q_index] - rest) + c * impl_.v[j.v_index];
       } else if (const auto* fr = std::get_if<model::JointFriction>(&element)) {
         const model::Joint& j = model_.joint(fr->joint_index);
-        const ex c = params_("c_" + name, fr->viscous);
+        const ex c = params_("c_" + name, fr->viscous, damping_unit(j));
         for (int k = 0; k < j.nv(); ++k) Q_[j.v_index + k] -= c * impl_.v[j.v_index + k];
       } else if (const auto* F = std::get_if<model::AppliedForce>(&element)) {
-        const V3 F_W = load(name, F->vector, F->signal_index, F->frame, F->at.body_index);
+        const V3 F_W = load(name, F->vector, F->signal_index, F->frame, F->at.body_index, "N");
         push(F->at.body_index, to_v3(F->at.p_BoP_B), F_W);
       } else if (const auto* T = std::get_if<model::AppliedTorque>(&element)) {
-        const V3 M_W = load(name, T->vector, T->signal_index, T->frame, T->body_index);
+        const V3 M_W = load(name, T->vector, T->signal_index, T->frame, T->body_index, "N·m");
         if (T->body_index > 0) {
           f[T->body_index] = f[T->body_index] + Force{transpose(R_WB_[T->body_index]) * M_W, V3{}};
         }
@@ -561,7 +741,8 @@ class Derivation {
     walk(from_b, +1);
     walk(from_a, -1);
     if (!axis) return;  // nothing turns between them: the spring stays relaxed
-    const ex k = params_("k_" + name, t.stiffness), c = params_("c_" + name, t.damping);
+    const ex k = params_("k_" + name, t.stiffness, "N·m/rad"),
+             c = params_("c_" + name, t.damping, "N·m·s/rad");
     const ex moment = k * phi + c * phi_rate;
     const auto push_moment = [&](int body, double sign) {
       if (body == 0) return;
@@ -613,10 +794,10 @@ class Derivation {
   }
 
   // An applied load's vector in W: size (a parameter F_<name>) × direction × signal.
-  V3 load(const std::string& name, const Vec3& vector, int signal, model::LoadFrame frame,
-          int body) {
+  V3 load(const std::string& name, const Vec3& vector, int signal, model::LoadFrame frame, int body,
+          std::string_view unit) {
     const double size = vector.norm();
-    const ex magnitude = params_("F_" + name, size);
+    const ex magnitude = params_("F_" + name, size, unit);
     V3 v = size > 0 ? magnitude * to_v3(vector / size) : V3{};
     if (signal >= 0) v = input_of_signal_[static_cast<std::size_t>(signal)] * v;
     if (frame == model::LoadFrame::body) v = R_WB_[body] * v;
@@ -628,8 +809,12 @@ class Derivation {
   // Newton–Euler form's loads (add_row_loads).
   void constraint_equations() {
     const auto rows = constraint_rows(
-        model_, R_WB_, p_WB_, impl_.q,
-        [this](const std::string& name, double value) { return params_(name, value); });
+        model_, R_WB_, p_WB_, impl_.q, [this](const std::string& name, double value) {
+          // Frame origins, lengths and radii are lengths; a coupler's ratio and offset are not.
+          const bool length =
+              name.rfind("p_", 0) == 0 || name.rfind("L_", 0) == 0 || name.rfind("r_", 0) == 0;
+          return params_(name, value, length ? "m" : "");
+        });
     const std::vector<Motion> S_W = world_subspaces();
     constraint_loads_.assign(model_.num_bodies(), Force{});
     constraint_joint_forces_.assign(static_cast<std::size_t>(model_.nv()), 0);
@@ -718,9 +903,9 @@ class Derivation {
       const char* axes = "xyz";
       for (int k = 0; k < 3; ++k) {
         const symbol r(fmt::format("R_{}_{}", identifier(j.name), axes[k]),
-                       fmt::format("R_{{\\mathrm{{{}}},{}}}", latex_name(j.name), axes[k]));
+                       fmt::format("R_{{{},{}}}", latex_name(j.name), axes[k]));
         const symbol n(fmt::format("N_{}_{}", identifier(j.name), axes[k]),
-                       fmt::format("N_{{\\mathrm{{{}}},{}}}", latex_name(j.name), axes[k]));
+                       fmt::format("N_{{{},{}}}", latex_name(j.name), axes[k]));
         R[i][k] = r;
         N[i][k] = n;
         impl_.reaction_symbols.push_back(r);
@@ -728,12 +913,85 @@ class Derivation {
       for (int k = 0; k < 3; ++k) impl_.reaction_symbols.push_back(GiNaC::ex_to<symbol>(N[i][k]));
     }
     for (const auto& row : impl_.constraints) impl_.reaction_symbols.push_back(row.multiplier);
+    // Planar: every body's rows out of the plane of motion read 0 = 0 once the reactions out of
+    // it are 0 — then only the three in the plane are written (and those reactions left out).
+    const std::vector<int> normals = plane_normals();
+    std::vector<BodyBalance> planar = balances(V, A, R, N, normals);
+    const bool is_planar =
+        !normals.empty() && std::all_of(planar.begin(), planar.end(), [](const BodyBalance& b) {
+          return b.out_of_plane_balanced();
+        });
+    impl_.newton_euler_planar = is_planar;
+    const std::vector<BodyBalance> spatial =
+        is_planar ? std::move(planar) : balances(V, A, R, N, {});
+    for (const BodyBalance& b : spatial) add_body_rows(b, is_planar);
+  }
+
+  // A body's Newton–Euler balance, in its axes: loads F, M about G; m a_G, Ī α + ω × Ī ω.
+  struct BodyBalance {
+    int body = 0;
+    const model::Joint* joint = nullptr;  // the joint that carries it
+    V3 F, M, ma, H_dot, w, alpha, c;
+    V3 R, N;          // its joint's reaction (out of the plane 0 when planar)
+    int normal = -1;  // planar: the body axis normal to the plane of motion
+    bool out_of_plane_balanced() const {
+      for (int k = 0; k < 3; ++k) {
+        const ex force = k == normal ? F[k] - ma[k] : ex(0);
+        const ex moment = k != normal ? M[k] - H_dot[k] : ex(0);
+        if (!GiNaC::expand(force).is_zero() || !GiNaC::expand(moment).is_zero()) return false;
+      }
+      return true;
+    }
+  };
+
+  // Per body, the axis of its frame along its joint's rotation when every joint is revolute (or
+  // planar) about an axis of its child's frame; empty otherwise (then not planar).
+  std::vector<int> plane_normals() const {
+    if (principal_axes_) return {};
+    std::vector<int> normals(static_cast<std::size_t>(model_.num_bodies()), -1);
+    for (const model::Joint& j : model_.joints()) {
+      Vec3 axis;
+      if (j.type == model::JointType::revolute) {
+        axis = j.X_CJ.R * j.axis;
+      } else if (j.type == model::JointType::planar) {
+        axis = j.X_CJ.R * Vec3::UnitZ();
+      } else {
+        return {};
+      }
+      int k = 0;
+      axis.cwiseAbs().maxCoeff(&k);
+      if (std::abs(std::abs(axis[k]) - 1.0) > 1e-12) return {};
+      normals[static_cast<std::size_t>(j.child_index)] = k;
+    }
+    return normals;
+  }
+
+  // Every body's balance; with `normals`, the reactions out of each plane of motion set to 0.
+  std::vector<BodyBalance> balances(const std::vector<Motion>& V, const std::vector<Motion>& A,
+                                    std::vector<V3> R, std::vector<V3> N,
+                                    const std::vector<int>& normals) const {
+    for (const model::Joint& j : model_.joints()) {
+      if (normals.empty()) break;
+      const int i = j.child_index, k = normals[static_cast<std::size_t>(i)];
+      R[i][k] = 0;
+      N[i][(k + 1) % 3] = 0;
+      N[i][(k + 2) % 3] = 0;
+    }
     const V3 gravity_W = ex(-1) * base_acceleration_;
+    std::vector<BodyBalance> out;
     for (const model::Joint& j : model_.joints()) {
       const int i = j.child_index;
+      BodyBalance b;
+      b.body = i;
+      b.joint = &j;
+      b.R = R[i];
+      b.N = N[i];
+      b.normal = normals.empty() ? -1 : normals[static_cast<std::size_t>(i)];
       const Inertia& I = inertias_[i];
       const V3& c = com_[i];
-      const V3 w = V[i].w, alpha = A[i].w;
+      b.c = c;
+      b.w = V[i].w;
+      b.alpha = A[i].w;
       // Loads: weight, own joint, the joints it carries (reversed), the elements.
       V3 F = I.mass * (transpose(R_WB_[i]) * gravity_W) + R[i];
       V3 M = N[i] + cross(p_CJ_[i] - c, R[i]);
@@ -745,54 +1003,92 @@ class Derivation {
         M = M - (R_PC_[k] * N[k]) - cross(p_PC_[k] + R_PC_[k] * p_CJ_[k] - c, Rk);
       }
       const Force loads = body_loads_[i] + constraint_loads_[i];
-      F = F + loads.f;
-      M = M + loads.n - cross(c, loads.f);
+      b.F = F + loads.f;
+      b.M = M + loads.n - cross(c, loads.f);
       // Kinetics: a_G = a_Bo + α × c + ω × (ω × c), a_Bo = A.v + ω × V.v (Featherstone's
       // spatial acceleration to the classical one).
-      const V3 a_G = A[i].v + cross(w, V[i].v) + cross(alpha, c) + cross(w, cross(w, c));
-      const V3 ma = I.mass * a_G;
-      std::string body = model_.body(i).name;
-      const char* axes = "xyz";
-      const std::optional<PrincipalAxes> principal =
-          principal_axes_ ? principal_axes_of(i) : std::nullopt;
-      if (principal) {
-        // Every vector in the principal axes P: F_P = R_BPᵀ F, and Euler's equations with
-        // Ī_P diagonal: I1 α1 − (I2 − I3) ω2 ω3 = M1 and the two like it.
-        const M3 R_PB = transpose(principal->R_BP);
-        const V3 w_P = R_PB * w, alpha_P = R_PB * alpha;
-        const V3 H_dot = principal->I * alpha_P + cross(w_P, principal->I * w_P);
-        F = R_PB * F;
-        M = R_PB * M;
-        const V3 ma_P = R_PB * ma;
-        body += principal->description;
-        for (int k = 0; k < 3; ++k)
-          add_newton_euler_row(body, fmt::format("ΣF_{} = m a_G{}", k + 1, k + 1), F[k], ma_P[k]);
+      const V3 a_G = A[i].v + cross(b.w, V[i].v) + cross(b.alpha, c) + cross(b.w, cross(b.w, c));
+      b.ma = I.mass * a_G;
+      b.H_dot = I_com_[i] * b.alpha + cross(b.w, I_com_[i] * b.w);
+      out.push_back(std::move(b));
+    }
+    return out;
+  }
+
+  // A body's rows (its axes, its principal axes, or — planar — the three in its plane, with the
+  // n–t components of a_G on a fixed pivot when asked), then its joint's along its motion.
+  void add_body_rows(const BodyBalance& b, bool planar) {
+    const model::Joint& j = *b.joint;
+    const int i = b.body;
+    std::string body = model_.body(i).name;
+    const char* axes = "xyz";
+    const std::optional<PrincipalAxes> principal =
+        principal_axes_ ? principal_axes_of(i) : std::nullopt;
+    if (principal) {
+      // Every vector in the principal axes P: F_P = R_BPᵀ F, and Euler's equations with
+      // Ī_P diagonal: I1 α1 − (I2 − I3) ω2 ω3 = M1 and the two like it.
+      const M3 R_PB = transpose(principal->R_BP);
+      const V3 w_P = R_PB * b.w, alpha_P = R_PB * b.alpha;
+      const V3 H_dot = principal->I * alpha_P + cross(w_P, principal->I * w_P);
+      const V3 F = R_PB * b.F, M = R_PB * b.M, ma_P = R_PB * b.ma;
+      body += principal->description;
+      for (int k = 0; k < 3; ++k)
+        add_newton_euler_row(body, fmt::format("ΣF_{} = m a_G{}", k + 1, k + 1), F[k], ma_P[k]);
+      for (int k = 0; k < 3; ++k) {
+        add_newton_euler_row(body, fmt::format("ΣM_G{} = (Ī α + ω × Ī ω)_{}", k + 1, k + 1), M[k],
+                             H_dot[k]);
+      }
+    } else if (planar) {
+      const int n = b.normal;
+      const bool pivot = normal_tangential_ && j.parent_index == 0;
+      if (!(pivot && add_normal_tangential_rows(b, body))) {
         for (int k = 0; k < 3; ++k) {
-          add_newton_euler_row(body, fmt::format("ΣM_G{} = (Ī α + ω × Ī ω)_{}", k + 1, k + 1), M[k],
-                               H_dot[k]);
-        }
-      } else {
-        const V3 H_dot = I_com_[i] * alpha + cross(w, I_com_[i] * w);
-        for (int k = 0; k < 3; ++k)
-          add_newton_euler_row(body, fmt::format("ΣF_{} = m a_G{}", axes[k], axes[k]), F[k], ma[k]);
-        for (int k = 0; k < 3; ++k) {
-          add_newton_euler_row(body, fmt::format("ΣM_G{} = (Ī α + ω × Ī ω)_{}", axes[k], axes[k]),
-                               M[k], H_dot[k]);
+          if (k == n) continue;
+          add_newton_euler_row(body, fmt::format("ΣF_{} = m a_G{}", axes[k], axes[k]), b.F[k],
+                               b.ma[k]);
         }
       }
-      // Along the free motions: the reaction's generalized force is the elements'.
-      if (j.is_prescribed()) continue;
-      const V3 n_o = N[i] + cross(p_CJ_[i], R[i]);
-      for (int k = 0; k < j.nv(); ++k) {
-        const Motion& Sk = S_[i][static_cast<std::size_t>(k)];
-        add_newton_euler_row(
-            fmt::format("joint {}", j.name),
-            fmt::format("along {}", impl_.v_names[static_cast<std::size_t>(j.v_index + k)]),
-            dot(Sk.w, n_o) + dot(Sk.v, R[i]),
-            joint_space_[static_cast<std::size_t>(j.v_index + k)] +
-                constraint_joint_forces_[static_cast<std::size_t>(j.v_index + k)]);
+      add_newton_euler_row(body, fmt::format("ΣM_G{} = Ī α_{}", axes[n], axes[n]), b.M[n],
+                           b.H_dot[n]);
+    } else {
+      for (int k = 0; k < 3; ++k)
+        add_newton_euler_row(body, fmt::format("ΣF_{} = m a_G{}", axes[k], axes[k]), b.F[k],
+                             b.ma[k]);
+      for (int k = 0; k < 3; ++k) {
+        add_newton_euler_row(body, fmt::format("ΣM_G{} = (Ī α + ω × Ī ω)_{}", axes[k], axes[k]),
+                             b.M[k], b.H_dot[k]);
       }
     }
+    // Along the free motions: the reaction's generalized force is the elements'.
+    if (j.is_prescribed()) return;
+    const V3 n_o = b.N + cross(p_CJ_[i], b.R);
+    for (int k = 0; k < j.nv(); ++k) {
+      const Motion& Sk = S_[i][static_cast<std::size_t>(k)];
+      add_newton_euler_row(
+          fmt::format("joint {}", j.name),
+          fmt::format("along {}", impl_.v_names[static_cast<std::size_t>(j.v_index + k)]),
+          dot(Sk.w, n_o) + dot(Sk.v, b.R),
+          joint_space_[static_cast<std::size_t>(j.v_index + k)] +
+              constraint_joint_forces_[static_cast<std::size_t>(j.v_index + k)]);
+    }
+  }
+
+  // A body on a fixed pivot O, in its plane: ΣF_n = m r̄ ω² (n from G towards O) and
+  // ΣF_t = m r̄ α (t along the motion of G), r̄ = |OG| (Beer & Johnston §16.8). False when G is
+  // on the axis (no n–t directions).
+  bool add_normal_tangential_rows(const BodyBalance& b, std::string& body) {
+    const V3 r = b.c - p_CJ_[b.body];  // from O to G, in B
+    V3 in_plane = r;
+    in_plane[b.normal] = 0;
+    const ex r_bar = line_length(in_plane);
+    if (GiNaC::expand(r_bar).is_zero()) return false;
+    V3 axis;  // the pivot's axis in B: a positive angle turns G along t
+    axis[b.normal] = (b.joint->X_CJ.R * b.joint->axis)[b.normal] > 0 ? 1 : -1;
+    const V3 n = (ex(-1) / r_bar) * in_plane, t = (ex(1) / r_bar) * cross(axis, in_plane);
+    body += " (n from G towards the pivot, t along G's motion, r̄ = |OG|)";
+    add_newton_euler_row(body, "ΣF_n = m a_Gn = m r̄ ω²", dot(b.F, n), dot(b.ma, n));
+    add_newton_euler_row(body, "ΣF_t = m a_Gt = m r̄ α", dot(b.F, t), dot(b.ma, t));
+    return true;
   }
 
   // A body's principal axes at its centre of mass where its axes are not (Ī has products of
@@ -860,8 +1156,11 @@ class Derivation {
 
   const model::Model& model_;
   Parameters params_;
-  bool newton_euler_ = false;    // derive the Newton–Euler form too
-  bool principal_axes_ = false;  // its rows in each body's principal axes
+  bool greek_ = false;               // θ for the revolute joints' angles in text and LaTeX
+  std::vector<std::string> angles_;  // their symbols' names, in model order
+  bool newton_euler_ = false;        // derive the Newton–Euler form too
+  bool principal_axes_ = false;      // its rows in each body's principal axes
+  bool normal_tangential_ = false;   // planar: n–t components of a_G on a fixed pivot
   Equations::Impl impl_;
   std::vector<std::pair<ex, ex>> rates_;  // (coordinate symbol, its rate)
   std::vector<ex> input_of_signal_;

@@ -3,6 +3,7 @@
 // them, printing.cpp prints them and generates code).
 
 #include <map>
+#include <unordered_map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,6 +27,18 @@ struct PrintRoles {
   /// The coordinate (velocity index) whose acceleration leads a sum: an equation's own, as a
   /// textbook writes equation k with its diagonal term first; −1 for none.
   int leading_acceleration = -1;
+  /// What text and LaTeX write for a symbol instead of its name (EquationOptions::greek).
+  struct Display {
+    std::string text, latex;
+  };
+  std::map<std::string, Display, std::less<>> display;
+  /// The printer's memo of each term's place in a sum (term_class), by expression: a term met
+  /// again deeper in the tree is not walked again.
+  struct Hash {
+    std::size_t operator()(const GiNaC::ex& e) const { return e.gethash(); }
+  };
+  mutable std::unordered_map<GiNaC::ex, std::pair<int, int>, Hash, GiNaC::ex_is_equal>
+      term_classes;
 };
 
 /// The most terms and factors an expression may print as in text or LaTeX (a few megabytes).
@@ -61,6 +74,8 @@ struct Equations::Impl {
   GiNaC::matrix M;
   std::vector<GiNaC::ex> rest, g, Q;
   int nq = 0, nv = 0;
+  // Symbols written otherwise in text and LaTeX (θ̈ for pivot_ddot with EquationOptions::greek).
+  std::map<std::string, detail::PrintRoles::Display, std::less<>> display;
   // The Newton–Euler form: per body six rows (those not 0 = 0), then each free joint's rows
   // along its motion; the reactions' symbols per joint R_x, R_y, R_z, N_x, N_y, N_z.
   struct NewtonEulerRow {
@@ -68,6 +83,7 @@ struct Equations::Impl {
     GiNaC::ex loads, kinetic;
   };
   std::vector<NewtonEulerRow> newton_euler;
+  bool newton_euler_planar = false;             // three rows per body in its plane of motion
   std::vector<GiNaC::symbol> reaction_symbols;  // the joints', then the multipliers
   // The constraints (model order, the rows of dynamics::ConstraintRows): φ(q) on holonomic rows,
   // G over every model speed, k = Ġ v at v̇ = 0, the multiplier λ. The equations above read

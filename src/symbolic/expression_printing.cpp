@@ -109,24 +109,28 @@ int factor_class(const ex& f, const PrintRoles* roles, int& index) {
 // What a term of a sum holds, for ordering the sum: the leading coordinate's acceleration, then
 // the other accelerations (by coordinate), then speeds, then the rest.
 std::pair<int, int> term_class(const ex& term, const PrintRoles* roles) {
-  int best = 2, index = 0;
-  if (roles == nullptr) return {best, index};
-  for (GiNaC::const_preorder_iterator it = term.preorder_begin(); it != term.preorder_end(); ++it) {
-    if (!GiNaC::is_a<GiNaC::symbol>(*it)) continue;
-    const auto found = roles->by_name.find(GiNaC::ex_to<GiNaC::symbol>(*it).get_name());
-    if (found == roles->by_name.end()) continue;
+  if (roles == nullptr) return {2, 0};
+  if (GiNaC::is_a<GiNaC::symbol>(term)) {
+    const auto found = roles->by_name.find(GiNaC::ex_to<GiNaC::symbol>(term).get_name());
+    if (found == roles->by_name.end()) return {2, 0};
     const bool own = found->second.role == SymbolRole::acceleration &&
                      found->second.index == roles->leading_acceleration;
     const int rank = own                                              ? -1
                      : found->second.role == SymbolRole::acceleration ? 0
                      : found->second.role == SymbolRole::speed        ? 1
                                                                       : 2;
-    if (std::make_pair(rank, found->second.index) < std::make_pair(best, index)) {
-      best = rank;
-      index = found->second.index;
-    }
+    return {rank, rank == 2 ? 0 : found->second.index};
   }
-  return {best, index};
+  if (term.nops() == 0) return {2, 0};
+  // The smallest over its parts, each part worked out once (printing a large tree meets the
+  // same parts many times).
+  if (const auto known = roles->term_classes.find(term); known != roles->term_classes.end()) {
+    return known->second;
+  }
+  std::pair<int, int> best{2, 0};
+  for (std::size_t k = 0; k < term.nops(); ++k) best = std::min(best, term_class(term.op(k), roles));
+  roles->term_classes.emplace(term, best);
+  return best;
 }
 
 template <class Context>
@@ -242,6 +246,19 @@ void print_product(const GiNaC::mul& product, const GiNaC::print_context& contex
   if (parenthesize) c.s << (latex ? "\\right)" : ")");
 }
 
+// A symbol: as its Display where the roles give one, else its name (its TeX name in LaTeX).
+template <class Context>
+void print_symbol(const GiNaC::symbol& s, const Context& c, unsigned) {
+  constexpr bool latex = std::is_same_v<Context, decimal_latex>;
+  if (c.roles != nullptr) {
+    if (const auto it = c.roles->display.find(s.get_name()); it != c.roles->display.end()) {
+      c.s << (latex ? it->second.latex : it->second.text);
+      return;
+    }
+  }
+  c.s << (latex ? s.get_TeX_name() : s.get_name());
+}
+
 // Registered once, before the first print.
 void register_printers() {
   static const bool done = [] {
@@ -251,6 +268,8 @@ void register_printers() {
     GiNaC::set_print_func<GiNaC::add, decimal_latex>(print_sum<decimal_latex>);
     GiNaC::set_print_func<GiNaC::mul, decimal_text>(print_product<decimal_text>);
     GiNaC::set_print_func<GiNaC::mul, decimal_latex>(print_product<decimal_latex>);
+    GiNaC::set_print_func<GiNaC::symbol, decimal_text>(print_symbol<decimal_text>);
+    GiNaC::set_print_func<GiNaC::symbol, decimal_latex>(print_symbol<decimal_latex>);
     return true;
   }();
   (void)done;
@@ -321,6 +340,7 @@ detail::PrintRoles Equations::Impl::roles() const {
   for (std::size_t k = 0; k < inputs.size(); ++k) {
     put(inputs[k], SymbolRole::input, static_cast<int>(k));
   }
+  r.display = display;
   return r;
 }
 

@@ -267,6 +267,8 @@ void Equations::evaluate_constraints(const VecX& q, const VecX& v, const VecX& u
 
 int Equations::newton_euler_rows() const { return static_cast<int>(impl_->newton_euler.size()); }
 
+bool Equations::newton_euler_planar() const { return impl_->newton_euler_planar; }
+
 std::string Equations::newton_euler_group(int row) const {
   return impl_->newton_euler.at(static_cast<std::size_t>(row)).body;
 }

@@ -48,7 +48,7 @@ async function screenshots(page, name) {
   await page.evaluate(() => window.momentaReport.drawAllCharts());
   await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => done())));
   await page.screenshot({ path: path.join(artifacts, `${name}-page.png`), fullPage: true });
-  for (const id of ['summary', 'motion', 'plots', 'linear', 'campbell']) {
+  for (const id of ['summary', 'motion', 'plots', 'equations', 'linear', 'campbell']) {
     const handle = await page.$(`#${id}`);
     if (handle) await handle.screenshot({ path: path.join(artifacts, `${name}-${id}.png`) });
   }
@@ -141,6 +141,39 @@ test('double pendulum: positions equal the CSV, every column plotted, poles and 
   assert.ok(moment.drawn.every((v) => v === 0), 'round-off plotted as 0');
   assert.deepEqual(await r.page.evaluate(() => window.momentaReport.plottedValues('upper.angle')), theta);
   await r.page.close();
+});
+
+// The equations panel shows the equations `momenta equations MODEL --all-symbols` prints, set as
+// MathML by the browser (no KaTeX error), each as wide as the panel at most (long ones broken at
+// their terms), the constraints' rows, and a table of the symbols with their values and units.
+test('equations panel: the CLI\'s equations set as mathematics, broken to fit, with the symbols\' values', async () => {
+  for (const [name, count, rows] of [['double_pendulum', 2, 0], ['constraints/chaplygin_sleigh', 3, 1]]) {
+    const model = path.join(examples, `${name}.yaml`);
+    const file = path.join(work, `equations-${path.basename(name)}.html`);
+    run('report', model, '-o', file, '-q', '--duration', '1');
+    const { page, problems } = await open(file);
+    const seen = await page.evaluate(() => window.momentaReport.equations());
+    assert.equal(seen.data.available, true, name);
+    assert.equal(seen.shown.length, count + rows, `${name}: ${seen.shown.length} equations set`);
+    assert.equal(seen.errors, 0, `${name}: KaTeX could not set an equation`);
+    for (const m of seen.shown) {
+      assert.ok(m.width > 50 && m.width <= seen.panelWidth + 1, `${name}: an equation ${m.width} px wide in ${seen.panelWidth}`);
+    }
+    // The page's text of each equation is the CLI's (joined where the CLI breaks lines).
+    const printed = run('equations', model, '--all-symbols').replace(/\n {4}/g, ' ').split('\n');
+    for (const e of seen.data.equations) assert.ok(printed.includes(e.text), `${name}: ${e.text}`);
+    // Every symbol's value is the model's: the double pendulum's masses 1 kg, lengths 1 m, g.
+    const units = Object.fromEntries(seen.data.parameters.map((p) => [p.name, [p.value, p.unit]]));
+    if (name === 'double_pendulum') {
+      assert.deepEqual(units.m_mass2, [1, 'kg']);
+      assert.deepEqual(units.L_lower, [1, 'm']);
+      assert.deepEqual(units.g, [9.81, 'm/s²']);
+    }
+    const handle = await page.$('#equations');
+    await handle.screenshot({ path: path.join(artifacts, `equations-${path.basename(name)}.png`) });
+    assert.deepEqual(problems, [], name);
+    await page.close();
+  }
 });
 
 test('quarter car: Bode and poles equal linearize --json and response --bode', async () => {
@@ -370,7 +403,11 @@ test('sweep page: a scatter plot and parallel coordinates of every run, the numb
     names: window.momentaReport.names(), runs: window.momentaReport.runs(),
     points: window.momentaReport.scatterPoints(), lines: window.momentaReport.parallelLines(),
     axes: window.momentaReport.scatterAxes(), ks: window.momentaReport.column(0),
+    units: window.momentaReport.units(),
   }));
+  // Each column's unit, from where its number sits in the model and what the metric measures.
+  assert.deepEqual(hook.units, ['N/m', 'N·s/m', 'm', '%', 's', 'N', 'm']);
+  const labelled = hook.names.map((n, i) => `${n} (${hook.units[i]})`);
   // Every parameter and metric column of the file, every run a point and a line.
   assert.deepEqual(hook.names, table.header.slice(1, table.header.indexOf('status')));
   assert.equal(hook.runs, 48);
@@ -383,11 +420,15 @@ test('sweep page: a scatter plot and parallel coordinates of every run, the numb
     circles: document.querySelectorAll('#sweep-scatter circle').length,
     polylines: document.querySelectorAll('#sweep-parallel polyline').length,
     axisNames: Array.from(document.querySelectorAll('#sweep-parallel .axis-name')).map((t) => t.textContent),
+    axisUnits: Array.from(document.querySelectorAll('#sweep-parallel .axis-unit')).map((t) => t.textContent),
     summary: document.getElementById('sweep-summary').innerText,
   }));
   assert.equal(drawn.circles, 48);
   assert.equal(drawn.polylines, 48);
   assert.deepEqual(drawn.axisNames, hook.names);
+  assert.deepEqual(drawn.axisUnits, ['(N/m)', '(N·s/m, log)', '(m)', '(%)', '(s)', '(N)', '(m)']);
+  const scatterNames = await page.evaluate(() => Array.from(document.querySelectorAll('#sweep-scatter .x-name, #sweep-scatter .y-name')).map((t) => t.textContent));
+  assert.deepEqual(scatterNames, ['ks (N/m)', 'max(body_y) (m)']);
   assert.match(drawn.summary, /48 runs .*: 48 ok, 0 failed/);
   // Another pair chosen on the page: the points follow, each where its run's values put it.
   await page.select('#sweep-x', '1');
@@ -408,8 +449,8 @@ test('sweep page: a scatter plot and parallel coordinates of every run, the numb
   const mantissa = steps[0] / 10 ** Math.floor(Math.log10(steps[0]));
   assert.ok([1, 2, 5].some((m) => Math.abs(mantissa - m) < 1e-9), `tick step ${steps[0]}`);
   const legend = await page.$eval('#sweep-scatter .colour-legend .legend-name', (e) => e.textContent);
-  assert.equal(legend, `colour: ${hook.names[2]}`);
-  assert.equal(chosen.first, `run 0: b = ${table.column('b')[0]}, peak_suspension_force = ${table.column('peak_suspension_force')[0]}`);
+  assert.equal(legend, `colour: ${labelled[2]}`);
+  assert.equal(chosen.first, `run 0: b (N·s/m) = ${table.column('b')[0]}, peak_suspension_force (N) = ${table.column('peak_suspension_force')[0]}`);
   await page.select('#sweep-y', '2');
   await page.screenshot({ path: path.join(artifacts, 'sweep-page.png'), fullPage: true });
   assert.deepEqual(problems, []);

@@ -90,6 +90,21 @@ def test_equations_and_transfer_functions_in_symbols():
 
 
 @needs_symbolic
+def test_equations_in_the_textbooks_symbols():
+    # m L² θ̈ + m g L sin θ = 0: L the bob's positive distance, the names given, θ on request.
+    model = momenta.load_model(EXAMPLES / "pendulum.yaml")
+    (plain,) = momenta.equations(model, all_symbols=True)
+    assert plain == "L_bob^2*m_bob*pivot_ddot + L_bob*g*m_bob*sin(pivot) = 0", plain
+    (named,) = momenta.equations(model, all_symbols=True, greek=True,
+                                 names={"m_bob": "m", "L_bob": "L"})
+    assert named == "L^2*m*\u03b8\u0308 + L*g*m*sin(\u03b8) = 0", named
+    (latex,) = momenta.equations(model, symbols=["L_bob"], greek=True, format="latex")
+    assert latex == "L_{\\mathrm{bob}}^{2} \\ddot{\\theta} + 9.81 L_{\\mathrm{bob}} \\sin(\\theta) = 0", latex
+    with pytest.raises(momenta.InvalidArgument, match="did you mean 'm_bob'"):
+        momenta.equations(model, names={"m_bb": "m"})
+
+
+@needs_symbolic
 def test_equations_of_a_constrained_model_carry_its_forces_and_rows():
     # The geared pair: I_p θ̈_p = λ, I_w θ̈_w − T = −n λ, then the coupler's row θ_p − n θ_w = 0.
     path = EXAMPLES / "constraints" / "geared_pair.yaml"

@@ -6,6 +6,7 @@ import './style.css';
 import { decode, element, readData } from './data.js';
 import { campbellSection } from './campbell.js';
 import { diagramsSection } from './diagrams.js';
+import { equationsSection } from './equations.js';
 import { inertiaPage } from './inertia.js';
 import { linearSection } from './linear.js';
 import { Motion } from './motion.js';
@@ -24,6 +25,7 @@ function simulationPage(app, data) {
   app.querySelector('#motion').append(motion.controls());
   const plots = plotsSection(data, timeline);
   app.append(plots.section);
+  app.append(equationsSection(data.equations).section);
   const linear = linearSection(data, motion);
   app.append(linear.section);
   const campbell = data.campbell ? campbellSection(data.campbell) : null;
@@ -52,6 +54,17 @@ function simulationPage(app, data) {
     drawAllCharts: () => plots.charts.drawAll() + (linear.charts?.drawAll() ?? 0) + (campbell?.charts?.drawAll() ?? 0),
     campbell: () => data.campbell,
     linear: () => data.linear,
+    // What the equations panel shows: each set equation's text as the browser lays it out.
+    equations: () => ({
+      data: data.equations,
+      shown: Array.from(document.querySelectorAll('#equations .equation')).map((e) => {
+        const lines = Array.from(e.querySelectorAll('math'));
+        return { text: lines.map((m) => m.textContent).join(' '), lines: lines.length,
+          width: Math.max(...lines.map((m) => m.getBoundingClientRect().width)) };
+      }),
+      errors: document.querySelectorAll('#equations .katex-error, #equations merror').length,
+      panelWidth: document.querySelector('#equations')?.getBoundingClientRect().width ?? 0,
+    }),
     play: (on) => { timeline.playing = on; },
     playMode: (i) => motion.playMode(data.linear.modes[i]),
     framesDrawn: () => frames,

@@ -168,8 +168,8 @@ function scatterPlot(names, columns, ok, colourBy, colourName) {
   return { section, state, set: (x, y) => { xSelect.value = String(x); ySelect.value = String(y); draw(); } };
 }
 
-function parallelCoordinates(names, columns, ok, colourBy) {
-  const width = Math.max(640, 140 * names.length);
+function parallelCoordinates(names, units, columns, ok, colourBy) {
+  const width = Math.max(640, 170 * names.length);
   const height = 420;
   const top = 40;
   const bottom = 40;
@@ -195,7 +195,9 @@ function parallelCoordinates(names, columns, ok, colourBy) {
     const scale = scales[i];
     plot.append(svg('line', { x1: ax(i), x2: ax(i), y1: top, y2: height - bottom, stroke: '#333' }));
     plot.append(svg('text', { x: ax(i), y: top - 22, 'text-anchor': 'middle', 'font-size': 12, class: 'axis-name' }, document.createTextNode(name)));
-    if (scale.log) plot.append(svg('text', { x: ax(i), y: top - 8, 'text-anchor': 'middle', 'font-size': 10 }, document.createTextNode('(log)')));
+    // Under the name: its unit, and "log" for a log axis.
+    const under = [units[i], scale.log ? 'log' : ''].filter((t) => t).join(', ');
+    if (under) plot.append(svg('text', { x: ax(i), y: top - 8, 'text-anchor': 'middle', 'font-size': 10, class: 'axis-unit' }, document.createTextNode(`(${under})`)));
     for (const t of scale.ticks) {
       const y = (height - bottom - scale.at(t) * (height - top - bottom)).toFixed(1);
       plot.append(svg('line', { x1: ax(i) - 4, x2: ax(i), y1: y, y2: y, stroke: '#333' }));
@@ -206,8 +208,15 @@ function parallelCoordinates(names, columns, ok, colourBy) {
   return { section, lines };
 }
 
+// A column's name with its unit, as axes, legends and tooltips show it: "m2 (kg)", "zeta (1)".
+export function withUnit(name, unit) {
+  return unit ? `${name} (${unit})` : name;
+}
+
 export function sweepPage(app, data) {
   const names = [...data.parameters, ...data.metrics];
+  const units = [...(data.parameter_units ?? data.parameters.map(() => '')), ...(data.metric_units ?? data.metrics.map(() => ''))];
+  const labels = names.map((name, i) => withUnit(name, units[i]));
   const values = data.values.map(decode);
   const ok = data.ok;
   const failures = ok.filter((b) => !b).length;
@@ -215,15 +224,16 @@ export function sweepPage(app, data) {
   app.append(element('section', { id: 'sweep-summary' },
     element('h1', {}, data.title),
     element('p', {}, `${data.runs.length} runs of ${data.source}: ${data.runs.length - failures} ok, ${failures} failed; `,
-      `${data.parameters.length} parameters, ${data.metrics.length} metric columns. Colour: ${data.metrics[0]}.`)));
+      `${data.parameters.length} parameters, ${data.metrics.length} metric columns. Colour: ${labels[data.parameters.length]}.`)));
   const colourBy = values[data.parameters.length];
-  const scatter = scatterPlot(names, columns, ok, colourBy, data.metrics[0]);
+  const scatter = scatterPlot(labels, columns, ok, colourBy, labels[data.parameters.length]);
   app.append(scatter.section);
-  const parallel = parallelCoordinates(names, columns, ok, colourBy);
+  const parallel = parallelCoordinates(names, units, columns, ok, colourBy);
   app.append(parallel.section);
   return {
     kind: 'sweep',
     names: () => names,
+    units: () => units,
     runs: () => data.runs.length,
     failures: () => failures,
     scatterPoints: () => scatter.state.points,

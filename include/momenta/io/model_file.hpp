@@ -3,6 +3,7 @@
 // signals, outputs and simulation settings (format: docs/model-format.md).
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -42,6 +43,14 @@ struct ModelFile {
                ? std::span<const PartSummary>(body_parts[static_cast<std::size_t>(b)])
                : std::span<const PartSummary>();
   }
+  /// The `symbols:` section: momenta's name of a parameter or coordinate in the equations
+  /// (m_bob, L_bob, pivot; docs/equations.md) → the name the user writes (m, L, theta), with
+  /// where the entry is, for `momenta equations` (symbolic::EquationOptions::names).
+  struct SymbolName {
+    std::string name;
+    int line = 0, column = 0;
+  };
+  std::map<std::string, SymbolName> symbol_names;
 
   /// The error at the line of the item it is about (Error::item()), as ParseError
   /// `file:line:column: message`; nullopt when it names no item this file declares. For errors

@@ -105,6 +105,8 @@ struct SweepResults {
   std::string title;                             ///< the sweep's name
   std::string source;                            ///< the sweep file
   std::vector<std::string> parameters, metrics;  ///< column names
+  /// Their units (SweepRunner::parameter_units, metric_units); "" where unknown. May be empty.
+  std::vector<std::string> parameter_units, metric_units;
   std::vector<long> runs;
   std::vector<bool> ok;
   std::vector<std::vector<double>>

@@ -41,6 +41,11 @@ class SweepRunner {
   /// The results' columns for parameters and metrics, in order.
   const std::vector<std::string>& parameter_columns() const { return parameter_columns_; }
   const std::vector<std::string>& metric_columns() const { return metric_columns_; }
+  /// Their units, column for column: a parameter's from where its number sits in the file (kg
+  /// for a mass, N/m for a spring's stiffness, the part file's length unit), a metric's from what
+  /// it measures (its column's unit, s, %, 1/s, rad/s, "1"); "" where neither says.
+  const std::vector<std::string>& parameter_units() const { return parameter_units_; }
+  const std::vector<std::string>& metric_units() const { return metric_units_; }
   /// The parameter values of run `run` (0 ≤ run < run_count()), in parameter_columns() order:
   /// what the run's row holds, without running it.
   std::vector<double> parameter_values(long run) const;
@@ -59,6 +64,7 @@ class SweepRunner {
   std::unique_ptr<Job> job_;
   std::vector<std::string> parameter_columns_;
   std::vector<std::string> metric_columns_;
+  std::vector<std::string> parameter_units_, metric_units_;
 };
 
 }  // namespace momenta::sweep

@@ -32,6 +32,10 @@
 //   l_<joint>_x … (the joint frame's position in its parent), c_<joint> (joint damping),
 //   k_<element>, c_<element>, l0_<element> (springs, dampers, friction), F_<element> (the size of
 //   an applied force or torque).
+//   Lengths: where a body's centre of mass, or a joint frame's position in its parent (or child),
+//   lies along one axis of the frame, the distance is one positive symbol with the axis's sign —
+//   L_<body> (c_<body>_z = −L_bob for a bob hanging below its pivot), L_<joint>, L_<joint>_child —
+//   as a textbook writes a pendulum's m L² θ̈ + m g L sin θ = 0. `symbols` may name either form.
 //   Constraints: p_<constraint>_a_x … / _b_ (a loop's or link's frame origins in their bodies),
 //   p_<constraint>_centre_x … and p_<constraint>_point_x … (a rolling body's centre, a knife
 //   edge's point), L_<link> (a link's length), r_<contact> (a rolling radius), n_<coupler> and
@@ -58,15 +62,31 @@ struct EquationOptions {
   /// The Newton–Euler rows of a body with products of inertia in its principal axes at G (e1,
   /// e2, e3 by increasing moment, named in the row's group) instead of its own axes.
   bool principal_axes = false;
+  /// In a planar model's Newton–Euler rows, a body on a fixed pivot O has ΣF_n = m r̄ ω² and
+  /// ΣF_t = m r̄ α (n from G towards O, t along G's motion, r̄ = |OG|) in place of its x and y.
+  bool normal_tangential = false;
+  /// The names a person gives (a model file's `symbols:` section): momenta's name of a parameter
+  /// or a coordinate (m_bob, L_bob, pivot) → the name to write instead (m, L, theta), an
+  /// identifier. Parameters given the same name must have the same value (to 1e-12): they are
+  /// one symbol. A coordinate's rate and acceleration follow its name (theta_dot, theta_ddot).
+  std::map<std::string, std::string> names;
+  /// Text and LaTeX write the angles of revolute joints not named in `names` as θ (θ₁, θ₂, … in
+  /// model order when there are several), their rates and accelerations θ̇, θ̈ (LaTeX \theta,
+  /// \dot{\theta}_{1}). Display only: the generated code, --json names and the symbols' names
+  /// stay as above.
+  bool greek = false;
 };
 
 /// How an expression prints.
 enum class Format { text, latex, cpp, python };
 
-/// One parameter turned into a symbol: its name and the model's value.
+/// One parameter turned into a symbol: its name, the model's value, the symbol in LaTeX and the
+/// value's SI unit ("kg", "m", "N·m/rad"; "" for a pure number or where it depends on the joint).
 struct Parameter {
   std::string name;
   double value = 0.0;
+  std::string latex;
+  std::string unit;
 };
 
 /// A model's equations of motion in symbols (see the file comment). Holds GiNaC expressions
@@ -107,9 +127,15 @@ class Equations {
   /// the reaction along its motion equal to its elements' generalized force. With
   /// EquationOptions::principal_axes, a body whose axes are not principal has its rows in its
   /// principal axes (ΣF_1 … ΣM_G3, Euler's equations I1 α1 − (I2 − I3) ω2 ω3 = ΣM_G1 …). Rows that
-  /// read 0 = 0 are left out. `newton_euler_group` names the body ("link1") or the joint ("joint
-  /// j1"). Empty unless derived with EquationOptions::newton_euler.
+  /// read 0 = 0 are left out. A planar model — every joint revolute (or planar) about an axis of
+  /// its child's frame, and every body's rows out of its plane of motion 0 = 0 once the joints'
+  /// reactions out of it are 0 — has three rows per body, ΣF in its plane and ΣM_G = Ī α about
+  /// the normal (those reactions left out), or with normal_tangential the n–t form on a fixed
+  /// pivot. `newton_euler_group` names the body ("link1") or the joint ("joint j1"). Empty unless
+  /// derived with EquationOptions::newton_euler.
   int newton_euler_rows() const;
+  /// Whether the Newton–Euler rows are the planar form (three per body, see above).
+  bool newton_euler_planar() const;
   std::string newton_euler_group(int row) const;
   /// "ΣF_x = m a_Gx: loads = kinetic term" in `format` (text or latex).
   std::string newton_euler_equation(int row, Format format) const;

@@ -67,5 +67,23 @@ TEST(PartSweep, TheMonteCarloExampleRunsEveryCarWithinItsBounds) {
   }
 }
 
+// Each results column's unit: a parameter's from where its number sits (the part file's mm, a
+// body's mass, a spring's stiffness and damping), a metric's from what it measures.
+TEST(SweepColumnUnits, ParametersAndMetricsCarryTheirUnits) {
+  using Units = std::vector<std::string>;
+  const SweepRunner rim(io::read_sweep_file("examples/sweeps/flywheel_rim.yaml"));
+  EXPECT_EQ(rim.parameter_units(), (Units{"mm", "mm"}));
+  EXPECT_EQ(rim.metric_units(), (Units{"kg", "kg·m²", "kg·m²", "kg·m²", "kg·m²", "kg·m²", "kg·m²",
+                                       "kg·m²", "kg·m²", "kg·m²"}));
+  const SweepRunner cars(io::read_sweep_file("examples/sweeps/quarter_car_monte_carlo.yaml"));
+  EXPECT_EQ(cars.parameter_units(), (Units{"kg", "N/m", "N·s/m"}));
+  ASSERT_EQ(cars.metric_units().size(), 8u);  // four natural frequencies, four damping ratios
+  EXPECT_EQ(cars.metric_units()[0], "rad/s");
+  EXPECT_EQ(cars.metric_units()[7], "1");
+  const SweepRunner ride(io::read_sweep_file("examples/sweeps/quarter_car_ride.yaml"));
+  EXPECT_EQ(ride.parameter_units(), (Units{"N/m", "N·s/m"}));
+  EXPECT_EQ(ride.metric_units(), (Units{"m", "%", "s", "N", "m"}));
+}
+
 }  // namespace
 }  // namespace momenta::sweep

@@ -325,6 +325,11 @@ void expect_same_equation(const std::string& printed, const std::string& expecte
       << "printed: " << printed << "\nexpected: " << expected;
 }
 
+symbolic::Equations symbols_of_with(const std::string& name,
+                                    const symbolic::EquationOptions& options) {
+  return symbolic::derive_equations(io::read_model_file(example(name)).model, options);
+}
+
 symbolic::Equations symbols_of(const std::string& name) {
   symbolic::EquationOptions options;
   options.all_symbols = true;
@@ -340,13 +345,13 @@ TEST(SymbolicEquations, LumpedClassicsReadAsTheTextbookWritesThem) {
   // Satellite attitude: I θ̈ = F_c d (the thrusters' couple scaled by the signal).
   expect_same_equation(symbols_of("satellite_attitude").equation(0, symbolic::Format::text),
                        "I_satellite_zz*attitude_ddot = F_thrusters*thrust");
-  // Pendulum: I θ̈ + m g l sin θ = 0 with the bob at c_z = −l below the pivot.
+  // Pendulum: m L² θ̈ + m g L sin θ = 0, L the bob's (positive) distance below the pivot.
   expect_same_equation(symbols_of("pendulum").equation(0, symbolic::Format::text),
-                       "m_bob*c_bob_z^2*pivot_ddot - g*m_bob*c_bob_z*sin(pivot) = 0");
+                       "m_bob*L_bob^2*pivot_ddot + m_bob*g*L_bob*sin(pivot) = 0");
   // Compound pendulum (Beer & Johnston §16.2, a rod on a fixed pivot): I_O θ̈ + m g d sin θ = 0
-  // with I_O = Ī + m d² (parallel axes) and d = −c_z the distance from pivot to G below it.
+  // with I_O = Ī + m d² (parallel axes) and d = L_rod the distance from pivot to G below it.
   expect_same_equation(symbols_of("compound_pendulum").equation(0, symbolic::Format::text),
-                       "(I_rod_yy + m_rod*c_rod_z^2)*pivot_ddot + m_rod*g*(-c_rod_z)*sin(pivot) = 0");
+                       "(I_rod_yy + m_rod*L_rod^2)*pivot_ddot + m_rod*g*L_rod*sin(pivot) = 0");
   // Flexible satellite (FPE ch. 2): I1 θ̈1 + b (θ̇1 − θ̇2) + k (θ1 − θ2) = Tc and
   // I2 θ̈2 + b (θ̇2 − θ̇1) + k (θ2 − θ1) = 0, the boom a torsional spring between the bodies.
   const symbolic::Equations flexible = symbols_of("flexible_satellite");
@@ -365,6 +370,136 @@ TEST(SymbolicEquations, LumpedClassicsReadAsTheTextbookWritesThem) {
   expect_same_equation(car.equation(1, symbolic::Format::text),
                        "375*body_travel_ddot + 9800*(body_travel_dot - wheel_travel_dot) + "
                        "130000*(body_travel - wheel_travel) = 0");
+}
+
+// The equations of `name` with every parameter a symbol and the textbook's names for them.
+symbolic::Equations textbook_symbols_of(const std::string& name,
+                                        std::map<std::string, std::string> names) {
+  symbolic::EquationOptions options;
+  options.all_symbols = true;
+  options.names = std::move(names);
+  return symbolic::derive_equations(io::read_model_file(example(name)).model, options);
+}
+
+// The double pendulum in Lagrange's form as textbooks write it (θ2 relative to the upper rod;
+// e.g. Greenwood, Principles of Dynamics, §6-2 with m1 at the elbow): l1 is both the upper rod's
+// length and m1's distance, one symbol because the file's two values agree.
+TEST(SymbolicEquations, DoublePendulumReadsAsLagrangesEquations) {
+  const symbolic::Equations e = textbook_symbols_of("double_pendulum", {{"m_mass1", "m1"},
+                                                                        {"m_mass2", "m2"},
+                                                                        {"L_mass1", "l1"},
+                                                                        {"L_lower", "l1"},
+                                                                        {"L_mass2", "l2"},
+                                                                        {"upper", "theta1"},
+                                                                        {"lower", "theta2"}});
+  // sin(θ1 + θ2) written out: GiNaC does not expand trigonometric sums.
+  const std::string sin12 = "(sin(theta1)*cos(theta2) + cos(theta1)*sin(theta2))";
+  expect_same_equation(e.equation(0, symbolic::Format::text),
+                       "(m1 + m2)*l1^2*theta1_ddot + m2*l2^2*(theta1_ddot + theta2_ddot)"
+                       " + m2*l1*l2*cos(theta2)*(2*theta1_ddot + theta2_ddot)"
+                       " - m2*l1*l2*sin(theta2)*(2*theta1_dot*theta2_dot + theta2_dot^2)"
+                       " + (m1 + m2)*g*l1*sin(theta1) + m2*g*l2*" +
+                           sin12 + " = 0");
+  expect_same_equation(e.equation(1, symbolic::Format::text),
+                       "m2*l2^2*(theta1_ddot + theta2_ddot) + m2*l1*l2*cos(theta2)*theta1_ddot"
+                       " + m2*l1*l2*sin(theta2)*theta1_dot^2 + m2*g*l2*" +
+                           sin12 + " = 0");
+  EXPECT_EQ(e.parameters().size(), 5u);  // m1, m2, l1, l2, g
+}
+
+// Beer & Johnston 18.3: the rod pinned at A to the shaft turning at ω, in the shaft's frame,
+// with Ī the rod's moment about G (the same about x and y), d = L/2 from A to G, φ the shaft's
+// angle, and the wire from C (at height c on the shaft; the pin A at height h) to B (at b along
+// the rod from A):
+//   (Ī + m d²) β̈ − (Ī + m d²) φ̇² sin β cos β − m g d sin β = λ ∂|CB|/∂β   (Gᵀλ),
+// |CB|² = (c − h)² + b² − 2 (c − h) b cos β (the law of cosines), λ the wire's push.
+TEST(SymbolicEquations, BeerAndJohnston18_3ReadsAsTheTextbookWritesIt) {
+  const symbolic::Equations e =
+      textbook_symbols_of("constraints/rod_on_rotating_shaft", {{"I_rod_xx", "I"},
+                                                                {"I_rod_yy", "I"},
+                                                                {"L_rod", "d"},
+                                                                {"m_rod", "m"},
+                                                                {"pin_A", "beta"},
+                                                                {"shaft_angle", "phi"},
+                                                                {"L_pin_A", "h"},
+                                                                {"p_wire_BC_a_z", "c"},
+                                                                {"p_wire_BC_b_z", "b"}});
+  const std::string CB = "sqrt((c - h)^2 + b^2 - 2*(c - h)*b*cos(beta))";
+  expect_same_equation(e.equation(0, symbolic::Format::text),
+                       "(I + m*d^2)*beta_ddot - (I + m*d^2)*phi_dot^2*sin(beta)*cos(beta)"
+                       " - m*g*d*sin(beta) = lambda_wire_BC_length*(c - h)*b*sin(beta)/" +
+                           CB);
+  expect_same_equation(e.constraint_equation(0, symbolic::Format::text), CB + " - L_wire_BC = 0");
+}
+
+// Names a person gives: shared only where the values agree; a name the model does not have is
+// refused with a suggestion; θ for the angles in text and LaTeX, the symbols' names unchanged.
+TEST(SymbolicEquations, GivenNamesAndGreekAngles) {
+  const model::Model pendulum = io::read_model_file(example("double_pendulum")).model;
+  symbolic::EquationOptions options;
+  options.all_symbols = true;
+  options.names = {{"m_mass1", "m"}, {"L_mass1", "m"}};  // 1 kg and 1 m: equal numbers, allowed
+  EXPECT_NO_THROW(symbolic::derive_equations(pendulum, options));
+  options.names = {{"m_mass1", "m"}, {"g", "m"}};  // 1 and 9.81
+  EXPECT_THROW(symbolic::derive_equations(pendulum, options), InvalidArgument);
+  options.names = {{"m_mas1", "m1"}};
+  try {
+    symbolic::derive_equations(pendulum, options);
+    ADD_FAILURE() << "no error";
+  } catch (const InvalidArgument& error) {
+    EXPECT_NE(std::string(error.what()).find("did you mean 'm_mass1'"), std::string::npos)
+        << error.what();
+  }
+  options.names = {};
+  options.greek = true;
+  options.newton_euler = true;
+  const symbolic::Equations e = symbolic::derive_equations(pendulum, options);
+  const std::string text = e.equation(1, symbolic::Format::text);
+  EXPECT_EQ(text.rfind("L_mass2^2*m_mass2*θ\u0308\u2082 + θ\u0308\u2081*(", 0), 0u) << text;
+  EXPECT_NE(text.find("sin(θ\u2082)*θ\u0307\u2081^2"), std::string::npos) << text;
+  const std::string latex = e.equation(1, symbolic::Format::latex);
+  EXPECT_EQ(latex.rfind("L_{\\mathrm{mass2}}^{2} m_{\\mathrm{mass2}} \\ddot{\\theta}_{2}", 0), 0u)
+      << latex;
+  EXPECT_EQ(e.acceleration_names()[0], "upper_ddot");  // names (code, JSON) unchanged
+  expect_matches_numerics(pendulum, e, 7, 2);
+}
+
+// A planar model's Newton–Euler form has three rows per body (Beer & Johnston §16.7: ΣF_x =
+// m a_Gx, ΣF_y = m a_Gy, ΣM_G = Ī α), and with the n–t option a body on a fixed pivot reads as
+// §16.8 writes it: the pendulum's T − m g cos θ = m L θ̇² and −m g sin θ = m L θ̈ (R_x = 0 for a
+// string; its sign: t along the motion of a positive θ, against x here). Every row holds with
+// the numeric reactions and accelerations (expect_matches_numerics).
+TEST(SymbolicEquations, PlanarNewtonEulerHasThreeRowsPerBody) {
+  symbolic::EquationOptions options;
+  options.all_symbols = true;
+  options.newton_euler = true;
+  for (const char* name : {"pendulum", "compound_pendulum", "double_pendulum"}) {
+    const model::Model model = io::read_model_file(example(name)).model;
+    const symbolic::Equations e = symbolic::derive_equations(model, options);
+    EXPECT_TRUE(e.newton_euler_planar()) << name;
+    EXPECT_EQ(e.newton_euler_rows(), 4 * model.num_joints()) << name;  // 3 + the joint's
+    expect_matches_numerics(model, e, 11, 2);
+    options.normal_tangential = true;
+    const symbolic::Equations nt = symbolic::derive_equations(model, options);
+    EXPECT_EQ(nt.newton_euler_rows(), 4 * model.num_joints()) << name;
+    expect_matches_numerics(model, nt, 12, 2);
+    options.normal_tangential = false;
+  }
+  options.normal_tangential = true;
+  const symbolic::Equations pendulum = symbols_of_with("pendulum", options);
+  ASSERT_EQ(pendulum.newton_euler_rows(), 4);
+  const auto equation = [&](int row) {
+    const std::string text = pendulum.newton_euler_equation(row, symbolic::Format::text);
+    return text.substr(text.find(":  ") + 3);
+  };
+  EXPECT_EQ(pendulum.newton_euler_equation(0, symbolic::Format::text).rfind("ΣF_n = ", 0), 0u);
+  expect_same_equation(equation(0), "R_pivot_z - m_bob*g*cos(pivot) = m_bob*L_bob*pivot_dot^2");
+  expect_same_equation(equation(1), "-R_pivot_x - m_bob*g*sin(pivot) = m_bob*L_bob*pivot_ddot");
+  // A top is not planar: six rows for its body.
+  options.normal_tangential = false;
+  const symbolic::Equations top = symbols_of_with("heavy_top", options);
+  EXPECT_FALSE(top.newton_euler_planar());
+  EXPECT_GE(top.newton_euler_rows(), 6);
 }
 
 // The numeric linearization of the same model about the same point, with its inputs and outputs.

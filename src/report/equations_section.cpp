@@ -1,0 +1,111 @@
+// The report's equations panel: the model's equations of motion in symbols, as LaTeX for the
+// page to set (KaTeX, MathML), every nonzero parameter a symbol named as `momenta equations
+// --all-symbols` (and the file's `symbols:` section) names it, with the symbols' values.
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <set>
+#include <string>
+
+#include "sections.hpp"
+
+#if MOMENTA_WITH_SYMBOLIC
+#include "momenta/common/error.hpp"
+#include "momenta/symbolic/equations.hpp"
+#endif
+
+namespace momenta::report::detail {
+
+#if MOMENTA_WITH_SYMBOLIC
+namespace {
+
+// Models with more free speeds than this get no panel: their equations are pages of terms
+// (a 10-link chain's would be megabytes), which `momenta equations --cpp` writes as code.
+constexpr int kMaxFreeSpeeds = 8;
+
+json unavailable(const std::string& reason) { return {{"available", false}, {"reason", reason}}; }
+
+// The identifiers a text holds (the symbols an equation uses).
+std::set<std::string> identifiers_in(const std::string& text) {
+  std::set<std::string> names;
+  std::string name;
+  for (char c : text + ' ') {
+    if (std::isalnum(static_cast<unsigned char>(c)) || c == '_') {
+      name += c;
+    } else if (!name.empty()) {
+      names.insert(name);
+      name.clear();
+    }
+  }
+  return names;
+}
+
+json rows_json(const symbolic::Equations& e) {
+  json rows = json::array();
+  for (int r = 0; r < static_cast<int>(e.free_speeds().size()); ++r) {
+    rows.push_back({{"latex", e.equation(r, symbolic::Format::latex)},
+                    {"text", e.equation(r, symbolic::Format::text)}});
+  }
+  return rows;
+}
+
+}  // namespace
+
+json equations_json(const io::ModelFile& file) {
+  const model::Model& model = file.model;
+  int free_speeds = model.nv();
+  for (const model::Joint& j : model.joints())
+    if (j.is_prescribed()) free_speeds -= j.nv();
+  if (free_speeds > kMaxFreeSpeeds) {
+    return unavailable(
+        fmt::format("{} free speeds: too many equations to read on a page; "
+                    "`momenta equations {} --cpp` writes them as code",
+                    free_speeds, file.file));
+  }
+  symbolic::EquationOptions options;
+  options.all_symbols = true;
+  for (const auto& [name, given] : file.symbol_names) options.names[name] = given.name;
+  try {
+    const symbolic::Equations e = symbolic::derive_equations(model, options);
+    json constraints = json::array();
+    for (int r = 0; r < e.constraint_rows(); ++r) {
+      constraints.push_back({{"name", e.constraint_row_name(r)},
+                             {"holonomic", e.constraint_row_holonomic(r)},
+                             {"latex", e.constraint_equation(r, symbolic::Format::latex)}});
+    }
+    // The symbols the equations use (a planar body's I_xx is a parameter, not in them).
+    std::string text;
+    for (int r = 0; r < static_cast<int>(e.free_speeds().size()); ++r) {
+      text += e.equation(r, symbolic::Format::text) + "\n";
+    }
+    for (int r = 0; r < e.constraint_rows(); ++r) {
+      text += e.constraint_equation(r, symbolic::Format::text) + "\n";
+    }
+    const std::set<std::string> used = identifiers_in(text);
+    json parameters = json::array();
+    for (const symbolic::Parameter& p : e.parameters()) {
+      if (used.count(p.name) == 0) continue;
+      parameters.push_back(
+          {{"name", p.name}, {"latex", p.latex}, {"value", p.value}, {"unit", p.unit}});
+    }
+    return {{"available", true},
+            {"equations", rows_json(e)},
+            {"constraints", std::move(constraints)},
+            {"multipliers", e.multiplier_names()},
+            {"parameters", std::move(parameters)}};
+  } catch (const InvalidArgument& error) {
+    return unavailable(error.what());
+  }
+}
+
+#else
+
+json equations_json(const io::ModelFile&) {
+  return {{"available", false},
+          {"reason", "this build leaves the symbolic layer out (MOMENTA_WITH_SYMBOLIC=OFF)"}};
+}
+
+#endif  // MOMENTA_WITH_SYMBOLIC
+
+}  // namespace momenta::report::detail
