@@ -34,6 +34,7 @@ const std::array<Target, 5>& targets() {
         {"velocity", Q::body_velocity},
         {"acceleration", Q::body_acceleration},
         {"angular_velocity", Q::body_angular_velocity},
+        {"angular_acceleration", Q::body_angular_acceleration},
         {"transport_velocity", Q::transport_velocity},
         {"transport_acceleration", Q::transport_acceleration},
         {"coriolis_acceleration", Q::coriolis_acceleration},
@@ -59,7 +60,9 @@ bool is_vector(OutputQuantity q) {
   return is_body(q) || q == Q::reaction_force || q == Q::reaction_moment;
 }
 bool is_reaction(OutputQuantity q) { return q == Q::reaction_force || q == Q::reaction_moment; }
-bool at_point(OutputQuantity q) { return is_body(q) && q != Q::body_angular_velocity; }
+bool at_point(OutputQuantity q) {
+  return is_body(q) && q != Q::body_angular_velocity && q != Q::body_angular_acceleration;
+}
 
 OutputQuantity read_quantity(const YamlNode& e, const Target& target) {
   const auto node = e.find("quantity");

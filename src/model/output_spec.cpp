@@ -14,6 +14,7 @@ OutputTargetKind output_target_kind(OutputQuantity quantity) {
     case OutputQuantity::body_velocity:
     case OutputQuantity::body_acceleration:
     case OutputQuantity::body_angular_velocity:
+    case OutputQuantity::body_angular_acceleration:
     case OutputQuantity::transport_velocity:
     case OutputQuantity::transport_acceleration:
     case OutputQuantity::coriolis_acceleration:
@@ -69,6 +70,8 @@ std::string_view output_quantity_name(OutputQuantity quantity) {
       return "acceleration";
     case OutputQuantity::body_angular_velocity:
       return "angular_velocity";
+    case OutputQuantity::body_angular_acceleration:
+      return "angular_acceleration";
     case OutputQuantity::transport_velocity:
       return "transport_velocity";
     case OutputQuantity::transport_acceleration:

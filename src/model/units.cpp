@@ -113,6 +113,8 @@ std::string output_unit(const Model& model, OutputQuantity quantity, int target,
       return "m/s²";
     case Q::body_angular_velocity:
       return "rad/s";
+    case Q::body_angular_acceleration:
+      return "rad/s²";
     case Q::reaction_force:
     case Q::spring_tension:
       return "N";

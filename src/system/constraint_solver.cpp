@@ -248,8 +248,11 @@ int least_change(const MatX& G, std::span<const char> rows, const std::vector<in
   return cholesky.rank();
 }
 
-// The free velocity coordinates of the joints not marked in `given`, or every free one when
-// those alone cannot satisfy the rows (a smaller rank than all free coordinates have).
+// The free velocity coordinates of the joints not marked in `given`, where their least change
+// takes up the whole residual of the rows; otherwise every free one. (Whether they can is a
+// question about the residual, not about ranks: coordinates that cannot move every row may still
+// be able to move the rows that are off — a rolling disk's given speed and spin kept, its unset
+// heading rate taking up the rest.)
 std::vector<int> columns_to_move(const model::Model& model, const MatX& G,
                                  std::span<const char> rows, const std::vector<int>& free,
                                  std::span<const char> given, const VecX& residual) {
@@ -257,10 +260,17 @@ std::vector<int> columns_to_move(const model::Model& model, const MatX& G,
   for (int c : free)
     if (!given[model.joint_of_v(c)]) preferred.push_back(c);
   if (preferred.empty() || preferred.size() == free.size()) return free;
-  VecX scratch(G.cols());
-  const int rank_all = least_change(G, rows, free, residual, scratch);
-  const int rank_preferred = least_change(G, rows, preferred, residual, scratch);
-  return rank_preferred == rank_all ? preferred : free;
+  VecX change(G.cols());
+  least_change(G, rows, preferred, residual, change);
+  const VecX left = G * change + residual;
+  double largest_left = 0.0, largest = 0.0;
+  for (Eigen::Index i = 0; i < residual.size(); ++i) {
+    if (!rows[static_cast<std::size_t>(i)]) continue;
+    largest_left = std::max(largest_left, std::abs(left[i]));
+    largest = std::max(largest, std::abs(residual[i]));
+  }
+  // Round-off of the least-squares solve: far below the residual it removes.
+  return largest_left <= 1e-9 * largest ? preferred : free;
 }
 
 }  // namespace

@@ -24,6 +24,9 @@ enum class OutputQuantity {
   body_velocity,          ///< v_WP_W (m/s); with a frame F, v_rel: P's velocity seen in F
   body_acceleration,      ///< a_WP_W (m/s²); with a frame F, a_rel: P's acceleration seen in F
   body_angular_velocity,  ///< w_WB_W (rad/s); with a frame F, w_FB_F
+  /// α_WB_W (rad/s²); with a frame F, α_FB_F: the rate of w_FB as an observer fixed in F sees
+  /// it, (α_WB − α_WF) − w_WF × (w_WB − w_WF), in F's axes.
+  body_angular_acceleration,
   // Rotating-frame terms of P's motion seen from a frame F (dynamics/relative_kinematics.hpp);
   // they need a frame.
   transport_velocity,        ///< v_Fo + Ω × r (m/s)

@@ -85,7 +85,8 @@ TEST(OutputSet, PendulumPointMotionMatchesHandComputation) {
               spec("v", Q::body_velocity, "bob", Vec3(0, 0, -L)),
               spec("a", Q::body_acceleration, "bob", Vec3(0, 0, -L)),
               spec("w", Q::body_angular_velocity, "bob"), spec("theta", Q::joint_position, "pivot"),
-              spec("rate", Q::joint_velocity, "pivot"), spec("torque", Q::joint_effort, "pivot")});
+              spec("rate", Q::joint_velocity, "pivot"), spec("torque", Q::joint_effort, "pivot"),
+              spec("alpha", Q::body_angular_acceleration, "bob")});
   const double theta = 0.7, rate = -1.3;
   VecX q(1), v(1);
   q << theta;
@@ -108,7 +109,10 @@ TEST(OutputSet, PendulumPointMotionMatchesHandComputation) {
   EXPECT_NEAR(y[11], 0.0, kTol);
   EXPECT_EQ(y[12], theta);
   EXPECT_EQ(y[13], rate);
-  EXPECT_EQ(y[14], 0.0);  // no force element acts on the hinge
+  EXPECT_EQ(y[14], 0.0);          // no force element acts on the hinge
+  EXPECT_NEAR(y[15], 0.0, kTol);  // α = θ̈ ŷ about the hinge
+  EXPECT_NEAR(y[16], acc, kTol);
+  EXPECT_NEAR(y[17], 0.0, kTol);
 }
 
 // A body of mass m lifted along z by a prescribed sine z(t) = A sin(2π f t): the joint carries

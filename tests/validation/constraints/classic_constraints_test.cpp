@@ -22,6 +22,7 @@
 #include "momenta/io/model_file.hpp"
 #include "momenta/model/model_builder.hpp"
 #include "momenta/simulate/simulation.hpp"
+#include "momenta/system/multibody_system.hpp"
 
 namespace momenta {
 namespace {
@@ -415,6 +416,39 @@ constraints:
     EXPECT_NE(std::string(e.what()).find("no consistent initial state"), std::string::npos)
         << e.what();
   }
+}
+
+// The velocities a file gives are kept where the unset ones can take up the whole residual,
+// even when the unset ones alone could not move every row (issue 28: the test was the rank of
+// the constraint matrix, not the residual, and a rolling disk's given 1 m/s became 0.0099 m/s).
+// A slider x (given 1 m/s) turns a spin joint through a coupler (given −10 rad/s, already
+// consistent: ω = −10 ẋ) and drives an unset slider y through a second coupler (y = x): only ẏ
+// moves, to 1 m/s.
+TEST(ClassicConstraints, GivenVelocitiesAreKeptWhereTheUnsetOnesCanTakeUpTheResidual) {
+  const std::string text = R"(bodies:
+  - {name: cart, mass: 1, inertia: [1, 1, 1]}
+  - {name: wheel, mass: 1, inertia: [1, 1, 1]}
+  - {name: follower, mass: 1, inertia: [1, 1, 1]}
+joints:
+  - {name: x, type: prismatic, parent: world, child: cart, axis: [1, 0, 0], v0: 1.0}
+  - {name: spin, type: revolute, parent: cart, child: wheel, axis: [0, 1, 0], v0: -10.0}
+  - {name: y, type: prismatic, parent: world, child: follower, axis: [0, 1, 0]}
+constraints:
+  - {name: rolling, type: coupler, joint_a: spin, joint_b: x, ratio: -10.0}
+  - {name: follow, type: coupler, joint_a: y, joint_b: x, ratio: 1.0}
+)";
+  const io::ModelFile file = io::parse_model_file(text, "m.yaml", ".");
+  system::MultibodySystem system(file.model);
+  VecX q = file.model.initial_q(), v = file.model.initial_v();
+  const system::ConsistentState changed = system.make_consistent(0.0, q, v);
+  ASSERT_EQ(changed.v_changes.size(), 1u);
+  EXPECT_EQ(changed.v_changes[0].name, "y.position_rate");
+  const auto speed = [&](const char* joint) {
+    return v[file.model.joint(file.model.joint_index(joint)).v_index];
+  };
+  EXPECT_EQ(speed("x"), 1.0);       // given, kept
+  EXPECT_EQ(speed("spin"), -10.0);  // given, kept
+  EXPECT_NEAR(speed("y"), 1.0, 1e-15);
 }
 
 }  // namespace

@@ -281,6 +281,55 @@ TEST(RotatingFrameOutputs, ColumnsSeenFromTheTurntable) {
   EXPECT_THROW(system::OutputSet(m, {unknown}), InvalidArgument);
 }
 
+// Angular acceleration (issue 28): a disk symmetric about its axle x spins at ω_r = 3 rad/s on a
+// turntable turned at a constant Ω = 2 rad/s about z. Torque-free about the axle (I_y = I_z), its
+// spin stays constant, so seen from the turntable α_FB = 0, while in the world the spin axis turns
+// with the table: α_WB = Ω ẑ × ω_r x̂' = Ω ω_r ŷ' (x̂', ŷ' the table's axes at angle Ω t), the
+// gyroscopic term a textbook writes for a wheel on a turning mount (Beer & Johnston §18.9).
+TEST(RotatingFrameOutputs, AngularAccelerationOfASpinningWheelOnATurntable) {
+  const std::string text = R"(gravity: [0, 0, 0]
+inputs:
+  - {name: table_angle, type: ramp, start: 0.0, offset: 0.0, slope: 2.0}
+bodies:
+  - {name: table, mass: 10, inertia: [1, 1, 2]}
+  - {name: wheel, mass: 1, com: [0.3, 0, 0], inertia: [0.5, 0.25, 0.25]}
+joints:
+  - {name: turn, type: revolute, parent: world, child: table, axis: [0, 0, 1], prescribed: table_angle}
+  - {name: axle, type: revolute, parent: table, child: wheel, axis: [1, 0, 0], v0: 3.0}
+)";
+  const io::ModelFile file = io::parse_model_file(text, "wheel.yaml", ".");
+  const model::Model& m = file.model;
+  const auto spec = [](std::string name, OutputQuantity q, std::string frame) {
+    model::OutputSpec s;
+    s.name = std::move(name);
+    s.quantity = q;
+    s.target = "wheel";
+    s.relative_to = std::move(frame);
+    return s;
+  };
+  const system::OutputSet set(
+      m, {spec("alpha", OutputQuantity::body_angular_acceleration, ""),
+          spec("alpha_rel", OutputQuantity::body_angular_acceleration, "table"),
+          spec("w_rel", OutputQuantity::body_angular_velocity, "table")});
+  EXPECT_EQ(set.column_names()[0], "alpha.x");
+  system::MultibodySystem system(m);
+  for (const double t : {0.1, 0.4, 1.3}) {
+    VecX q = m.initial_q(), v = m.initial_v();
+    const double turn = 2.0 * t;
+    q[m.joint(m.joint_index("turn")).q_index] = turn;
+    v[m.joint(m.joint_index("turn")).v_index] = 2.0;
+    q[m.joint(m.joint_index("axle")).q_index] = 0.9;
+    std::vector<double> y(set.size());
+    set.evaluate(system, t, q, v, y);
+    const Vec3 y_table(-std::sin(turn), std::cos(turn), 0.0);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(y[c], 2.0 * 3.0 * y_table[c], 1e-12) << t << c;  // α_WB_W = Ω ω_r ŷ'
+      EXPECT_NEAR(y[3 + c], 0.0, 1e-12) << t << c;                 // α_FB_F = 0
+      EXPECT_NEAR(y[6 + c], c == 0 ? 3.0 : 0.0, 1e-12) << t << c;  // w_FB_F = ω_r x̂
+    }
+  }
+}
+
 // The bundled example: a bead free to slide in a radial slot of a turntable spun at constant Ω
 // slides out as x = x0 cosh Ω t (no gravity in the plane, no friction); the slot pushes it
 // sideways with N = m (2 Ω ẋ) — the Coriolis term read from the CSV.
