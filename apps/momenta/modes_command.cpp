@@ -88,13 +88,16 @@ void run(const ModesOptions& o) {
   fmt::print("{}: modes about {} ({} states)\n", loaded.file.name, loaded.about,
              m.state_names.size());
   // Modes of a state that is not at rest describe the motion linearized at that instant only.
+  // A state that moves is no equilibrium either, even without acceleration (a sleeping top).
   const double worst = analysis::largest_acceleration(lin);
-  if (worst > analysis::kAtRestAcceleration) {
+  const double fastest = analysis::largest_speed(lin);
+  if (!loaded.steady &&
+      (worst > analysis::kAtRestAcceleration || fastest > analysis::kAtRestSpeed)) {
     fmt::print(
-        "note: this state is not an equilibrium (largest acceleration {:.4g}): the modes describe "
-        "the motion linearized at this instant; --about equilibrium finds a state at rest, and "
-        "--about steady analyses a spinning body's steady motion\n",
-        worst);
+        "note: this state is not an equilibrium (largest acceleration {:.4g}, largest speed "
+        "{:.4g}): the modes describe the motion linearized at this instant; --about equilibrium "
+        "finds a state at rest, and --about steady analyses a spinning body's steady motion\n",
+        worst, fastest);
   }
   fmt::print("\n");
   fmt::print("{}", analysis::modes_table(m));

@@ -303,7 +303,20 @@ double largest_acceleration(const LinearModel& linear) {
   return worst;
 }
 
+double largest_speed(const LinearModel& linear) {
+  double fastest = 0.0;
+  for (const int i : linear.coordinates) fastest = std::max(fastest, std::abs(linear.point.v[i]));
+  return fastest;
+}
+
 NormalModes undamped_modes(const LinearModel& linear) {
+  if (const double speed = largest_speed(linear); speed > kAtRestSpeed) {
+    throw InvalidArgument(fmt::format(
+        "undamped_modes: the point moves (largest speed {:.4g}): its gyroscopic and velocity terms "
+        "couple the coordinates, which K φ = ω² M φ leaves out — use the modes of A, or the "
+        "steady motion's (--about steady)",
+        speed));
+  }
   if (linear.stiffness.size() == 0 && linear.system.A().rows() > 0) {
     throw InvalidArgument(
         "undamped_modes: nonholonomic constraints leave fewer velocity than configuration "

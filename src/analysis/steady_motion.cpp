@@ -11,6 +11,7 @@
 
 #include "campbell.hpp"
 #include "momenta/common/error.hpp"
+#include "momenta/common/number_text.hpp"
 #include "momenta/system/multibody_system.hpp"
 
 namespace momenta::analysis {
@@ -300,7 +301,8 @@ SteadyPrecession symmetric_top(const SpinningBody& b, Vec3& e) {
 // The precession roots, the minimum spin, the gyroscopic approximation and the nutation
 // frequencies at r.tilt and r.spin.
 void precession_roots(SteadyPrecession& r) {
-  const double c = std::cos(r.tilt), s = std::sin(r.tilt);
+  // cos 90° is 6e-17 in double precision: round-off, shown (and used) as 0 — any spin will do.
+  const double c = shown_value(std::cos(r.tilt), 1.0), s = std::sin(r.tilt);
   // The roots of I₁ cos θ φ̇² − I₃ω₃ φ̇ + m g l = 0 (one root where cos θ = 0).
   const double p = r.I3 * r.spin, a = r.I1 * c;
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();

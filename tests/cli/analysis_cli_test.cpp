@@ -520,6 +520,30 @@ TEST_F(AnalysisCli, StepResponseCsvFollowsTheClosedForm) {
 // examples/sleeping_top.yaml, --about steady: the cone upright at 300 rad/s is stable (critical
 // 2√(I₁ m g l)/I₃ = 182.63 rad/s) and precesses, seen from space, at the roots of
 // I₁ σ² − I₃ ω₃ σ + m g l = 0; the other commands refuse what the analysis does not cover.
+// A state that moves without accelerating (the sleeping top spinning upright) is no equilibrium:
+// `modes` about it says so and gives no undamped normal modes, which would leave its gyroscopic
+// terms out and call the stable top unstable (issue 28: "ω² = -115.412 unstable"). At a tilt of
+// 90° cos θ is round-off: steady precession exists at any spin (issue 28: "needs ω₃ ≥ 1.4e-06").
+TEST_F(AnalysisCli, AMovingStateIsNoEquilibriumAndRoundOffNeedsNoSpin) {
+  const CliRun r = momenta("modes " + example("sleeping_top"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("note: this state is not an equilibrium (largest acceleration 0, largest "
+                       "speed 300)"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("no undamped normal modes: undamped_modes: the point moves"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("unstable"), std::string::npos) << r.out;
+  const CliRun json_run = momenta("modes " + example("sleeping_top") + " --json");
+  ASSERT_EQ(json_run.code, 0) << json_run.err;
+  EXPECT_TRUE(json::parse(json_run.out).at("normal_modes").is_null());
+  const CliRun tilt = momenta("steady " + example("heavy_top") + " --tilt 90 --spin 100");
+  ASSERT_EQ(tilt.code, 0) << tilt.err;
+  EXPECT_NE(tilt.out.find("exists at any spin"), std::string::npos) << tilt.out;
+  EXPECT_EQ(tilt.out.find("needs ω₃"), std::string::npos) << tilt.out;
+}
+
 TEST_F(AnalysisCli, SleepingTopSteadyMotionModes) {
   const CliRun r = momenta("modes " + example("sleeping_top") + " --about steady --json");
   ASSERT_EQ(r.code, 0) << r.err;

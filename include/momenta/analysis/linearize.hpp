@@ -181,6 +181,14 @@ inline constexpr double kAtRestAcceleration = 1e-9;
 /// The largest |v̇| over the free coordinates at the linearization's point.
 double largest_acceleration(const LinearModel& linear);
 
+/// Above this largest free-coordinate speed (rad/s or m/s) a linearization's point moves: a
+/// spinning top with no acceleration is still no equilibrium, and its gyroscopic terms couple
+/// the coordinates.
+inline constexpr double kAtRestSpeed = 1e-9;
+
+/// The largest |v| over the free coordinates at the linearization's point.
+double largest_speed(const LinearModel& linear);
+
 /// Undamped normal modes of M δq̈ + K δq = 0 from a linearization (mass and stiffness), named
 /// after the configuration states. K is symmetric for a conservative model at an equilibrium
 /// (the Hessian of the potential); its symmetric part is used after checking that the
