@@ -339,7 +339,7 @@ symbolic::Equations derive(const io::ModelFile& file, const EquationsOptions& o)
   options.newton_euler = o.form == "newton-euler";
   options.principal_axes = o.principal_axes;
   options.normal_tangential = o.normal_tangential;
-  for (const auto& [name, given] : file.symbol_names) options.names[name] = given.name;
+  options.names = file.given_symbol_names();
   try {
     return symbolic::derive_equations(file.model, options);
   } catch (const InvalidArgument& error) {

@@ -73,7 +73,7 @@ symbolic::EquationOptions equation_options(const ModelHandle& h, std::vector<std
                                            bool principal_axes = false,
                                            const std::map<std::string, std::string>& names = {}) {
   symbolic::EquationOptions o;
-  for (const auto& [name, given] : h.file->symbol_names) o.names[name] = given.name;
+  o.names = h.file->given_symbol_names();
   for (const auto& [name, given] : names) o.names[name] = given;
   o.symbols = std::move(symbols);
   o.all_symbols = all_symbols;

@@ -7,12 +7,32 @@
 
 namespace momenta::dynamics {
 
+namespace {
+void check_frame(const Model& model, int frame, const char* what) {
+  if (frame < 0 || frame >= model.num_bodies()) {
+    throw InvalidArgument(
+        fmt::format("{}: frame body index {} outside [0, {})", what, frame, model.num_bodies()));
+  }
+}
+}  // namespace
+
+RelativeRotation relative_rotation(const Model& model, const Data& data, int body, int frame) {
+  check_frame(model, frame, "relative_rotation");
+  check_frame(model, body, "relative_rotation");
+  // A body's spatial velocity and acceleration in its own axes start with ω and its rate α.
+  const Mat3& R_WF = data.X_WB[frame].R;
+  const Mat3& R_WB = data.X_WB[body].R;
+  const Vec3 w_WB_W = R_WB * data.V_WB_B[body].head<3>();
+  const Vec3 w_WF_W = R_WF * data.V_WB_B[frame].head<3>();
+  const Vec3 a_WB_W = R_WB * data.A_WB_B[body].head<3>();
+  const Vec3 a_WF_W = R_WF * data.A_WB_B[frame].head<3>();
+  const Mat3 R_FW = R_WF.transpose();
+  return {R_FW * (w_WB_W - w_WF_W), R_FW * ((a_WB_W - a_WF_W) - w_WF_W.cross(w_WB_W - w_WF_W))};
+}
+
 RelativeKinematics relative_kinematics(const Model& model, const Data& data, int body,
                                        const Vec3& p_BoP_B, int frame) {
-  if (frame < 0 || frame >= model.num_bodies()) {
-    throw InvalidArgument(fmt::format("relative_kinematics: frame body index {} outside [0, {})",
-                                      frame, model.num_bodies()));
-  }
+  check_frame(model, frame, "relative_kinematics");
   const PointKinematics P = point_kinematics(model, data, body, p_BoP_B);
   const PointKinematics Fo = point_kinematics(model, data, frame, Vec3::Zero());
   const Mat3& R_WF = data.X_WB[frame].R;

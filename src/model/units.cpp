@@ -66,6 +66,15 @@ std::string effort_unit(const Model& model, int i) {
   return is_angular_speed(*j, i - j->v_index) ? "N·m" : "N";
 }
 
+std::string joint_damping_unit(const Model& model, const Joint& joint) {
+  if (joint.nv() == 0) return "";
+  const std::string speed = v_unit(model, joint.v_index);
+  for (int k = 1; k < joint.nv(); ++k) {
+    if (v_unit(model, joint.v_index + k) != speed) return "";
+  }
+  return speed == "rad/s" ? "N·m·s/rad" : "N·s/m";
+}
+
 std::string signal_unit(const Model& model, int signal_index) {
   for (const Joint& j : model.joints()) {
     for (std::size_t k = 0; k < j.prescribed_signal_indices.size(); ++k) {

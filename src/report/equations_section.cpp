@@ -41,13 +41,27 @@ std::set<std::string> identifiers_in(const std::string& text) {
   return names;
 }
 
-json rows_json(const symbolic::Equations& e) {
+// Each equation in LaTeX and text; `shown` gathers the text (the symbols the page uses).
+json rows_json(const symbolic::Equations& e, std::string& shown) {
   json rows = json::array();
   for (int r = 0; r < static_cast<int>(e.free_speeds().size()); ++r) {
-    rows.push_back({{"latex", e.equation(r, symbolic::Format::latex)},
-                    {"text", e.equation(r, symbolic::Format::text)}});
+    std::string text = e.equation(r, symbolic::Format::text);
+    shown += text + "\n";
+    rows.push_back({{"latex", e.equation(r, symbolic::Format::latex)}, {"text", std::move(text)}});
   }
   return rows;
+}
+
+// Each constraint row's equation in LaTeX, its text added to `shown`.
+json constraints_json(const symbolic::Equations& e, std::string& shown) {
+  json constraints = json::array();
+  for (int r = 0; r < e.constraint_rows(); ++r) {
+    shown += e.constraint_equation(r, symbolic::Format::text) + "\n";
+    constraints.push_back({{"name", e.constraint_row_name(r)},
+                           {"holonomic", e.constraint_row_holonomic(r)},
+                           {"latex", e.constraint_equation(r, symbolic::Format::latex)}});
+  }
+  return constraints;
 }
 
 }  // namespace
@@ -65,24 +79,14 @@ json equations_json(const io::ModelFile& file) {
   }
   symbolic::EquationOptions options;
   options.all_symbols = true;
-  for (const auto& [name, given] : file.symbol_names) options.names[name] = given.name;
+  options.names = file.given_symbol_names();
   try {
     const symbolic::Equations e = symbolic::derive_equations(model, options);
-    json constraints = json::array();
-    for (int r = 0; r < e.constraint_rows(); ++r) {
-      constraints.push_back({{"name", e.constraint_row_name(r)},
-                             {"holonomic", e.constraint_row_holonomic(r)},
-                             {"latex", e.constraint_equation(r, symbolic::Format::latex)}});
-    }
+    std::string shown;
+    json equations = rows_json(e, shown);
+    json constraints = constraints_json(e, shown);
     // The symbols the equations use (a planar body's I_xx is a parameter, not in them).
-    std::string text;
-    for (int r = 0; r < static_cast<int>(e.free_speeds().size()); ++r) {
-      text += e.equation(r, symbolic::Format::text) + "\n";
-    }
-    for (int r = 0; r < e.constraint_rows(); ++r) {
-      text += e.constraint_equation(r, symbolic::Format::text) + "\n";
-    }
-    const std::set<std::string> used = identifiers_in(text);
+    const std::set<std::string> used = identifiers_in(shown);
     json parameters = json::array();
     for (const symbolic::Parameter& p : e.parameters()) {
       if (used.count(p.name) == 0) continue;
@@ -90,7 +94,7 @@ json equations_json(const io::ModelFile& file) {
           {{"name", p.name}, {"latex", p.latex}, {"value", p.value}, {"unit", p.unit}});
     }
     return {{"available", true},
-            {"equations", rows_json(e)},
+            {"equations", std::move(equations)},
             {"constraints", std::move(constraints)},
             {"multipliers", e.multiplier_names()},
             {"parameters", std::move(parameters)}};

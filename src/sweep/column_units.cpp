@@ -50,10 +50,7 @@ std::string model_item_unit(const model::Model& model, const std::vector<std::st
     if (joint.nv() == 0) return "";
     if (leaf == "q0") return model::q_unit(model, joint.q_index);
     if (leaf == "v0") return model::v_unit(model, joint.v_index);
-    if (leaf == "damping") {
-      return model::effort_unit(model, joint.v_index) + "·s/" +
-             (model::v_unit(model, joint.v_index) == "rad/s" ? "rad" : "m");
-    }
+    if (leaf == "damping") return model::joint_damping_unit(model, joint);
     return "";
   }
   if (keys[0] == "forces") {

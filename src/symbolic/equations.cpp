@@ -17,6 +17,7 @@
 #include "momenta/common/error.hpp"
 #include "momenta/common/number_text.hpp"
 #include "momenta/common/suggest.hpp"
+#include "momenta/model/units.hpp"
 
 namespace momenta::symbolic {
 
@@ -105,18 +106,6 @@ std::string coordinate_latex(const std::string& name, std::string_view accent) {
   if (parts.word) parts = {"q", parts.base, false};
   if (accent.empty()) return parts.text();
   return LatexName{fmt::format("{}{{{}}}", accent, parts.base), parts.subscript}.text();
-}
-
-// The unit of a joint's viscous damping: of its effort per its speed.
-std::string_view damping_unit(const model::Joint& j) {
-  switch (j.type) {
-    case model::JointType::revolute:
-      return "N·m·s/rad";
-    case model::JointType::prismatic:
-      return "N·s/m";
-    default:
-      return "";  // speeds of both kinds
-  }
 }
 
 // Parameters: a symbol where the options ask for one, else the number. A parameter is asked
@@ -638,7 +627,7 @@ class Derivation {
       f[b] = f[b] + Force{cross(p, F), F};
     };
     for (const model::Joint& j : model_.joints()) {
-      const ex c = params_("c_" + j.name, j.damping, damping_unit(j));
+      const ex c = params_("c_" + j.name, j.damping, model::joint_damping_unit(model_, j));
       for (int k = 0; k < j.nv(); ++k) Q_[j.v_index + k] -= c * impl_.v[j.v_index + k];
     }
     for (const model::ForceElement& element : model_.force_elements()) {
@@ -666,7 +655,7 @@ class Derivation {
         Q_[j.v_index] -= k * (impl_.q[j.q_index] - rest) + c * impl_.v[j.v_index];
       } else if (const auto* fr = std::get_if<model::JointFriction>(&element)) {
         const model::Joint& j = model_.joint(fr->joint_index);
-        const ex c = params_("c_" + name, fr->viscous, damping_unit(j));
+        const ex c = params_("c_" + name, fr->viscous, model::joint_damping_unit(model_, j));
         for (int k = 0; k < j.nv(); ++k) Q_[j.v_index + k] -= c * impl_.v[j.v_index + k];
       } else if (const auto* F = std::get_if<model::AppliedForce>(&element)) {
         const V3 F_W = load(name, F->vector, F->signal_index, F->frame, F->at.body_index, "N");
@@ -916,15 +905,15 @@ class Derivation {
     // Planar: every body's rows out of the plane of motion read 0 = 0 once the reactions out of
     // it are 0 — then only the three in the plane are written (and those reactions left out).
     const std::vector<int> normals = plane_normals();
-    std::vector<BodyBalance> planar = balances(V, A, R, N, normals);
+    std::vector<BodyBalance> balance = balances(V, A, R, N, normals);
     const bool is_planar =
-        !normals.empty() && std::all_of(planar.begin(), planar.end(), [](const BodyBalance& b) {
+        !normals.empty() && std::all_of(balance.begin(), balance.end(), [](const BodyBalance& b) {
           return b.out_of_plane_balanced();
         });
+    if (!normals.empty() && !is_planar)
+      balance = balances(V, A, R, N, {});  // a 3-D motion after all
     impl_.newton_euler_planar = is_planar;
-    const std::vector<BodyBalance> spatial =
-        is_planar ? std::move(planar) : balances(V, A, R, N, {});
-    for (const BodyBalance& b : spatial) add_body_rows(b, is_planar);
+    for (const BodyBalance& b : balance) add_body_rows(b, is_planar);
   }
 
   // A body's Newton–Euler balance, in its axes: loads F, M about G; m a_G, Ī α + ω × Ī ω.

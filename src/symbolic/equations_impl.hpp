@@ -3,9 +3,9 @@
 // them, printing.cpp prints them and generates code).
 
 #include <map>
-#include <unordered_map>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include <ginac/ginac.h>
@@ -37,8 +37,7 @@ struct PrintRoles {
   struct Hash {
     std::size_t operator()(const GiNaC::ex& e) const { return e.gethash(); }
   };
-  mutable std::unordered_map<GiNaC::ex, std::pair<int, int>, Hash, GiNaC::ex_is_equal>
-      term_classes;
+  mutable std::unordered_map<GiNaC::ex, std::pair<int, int>, Hash, GiNaC::ex_is_equal> term_classes;
 };
 
 /// The most terms and factors an expression may print as in text or LaTeX (a few megabytes).

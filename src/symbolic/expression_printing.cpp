@@ -128,7 +128,8 @@ std::pair<int, int> term_class(const ex& term, const PrintRoles* roles) {
     return known->second;
   }
   std::pair<int, int> best{2, 0};
-  for (std::size_t k = 0; k < term.nops(); ++k) best = std::min(best, term_class(term.op(k), roles));
+  for (std::size_t k = 0; k < term.nops(); ++k)
+    best = std::min(best, term_class(term.op(k), roles));
   roles->term_classes.emplace(term, best);
   return best;
 }

@@ -256,24 +256,11 @@ void OutputSet::evaluate(MultibodySystem& system, double t, const VecX& q, const
             spec.quantity,
             dynamics::relative_kinematics(model, data, column.index, spec.point, column.frame))[k];
         break;
-      case OutputQuantity::body_angular_velocity: {
-        // w_FB = w_WB − w_WF, in F.
-        const Mat3& R_WF = data.X_WB[column.frame].R;
-        const Vec3 w_WB_W = data.X_WB[column.index].R * data.V_WB_B[column.index].head<3>();
-        const Vec3 w_WF_W = R_WF * data.V_WB_B[column.frame].head<3>();
-        out = (R_WF.transpose() * (w_WB_W - w_WF_W))[k];
-        break;
-      }
+      case OutputQuantity::body_angular_velocity:
       case OutputQuantity::body_angular_acceleration: {
-        // α_FB seen in F: (α_WB − α_WF) − w_WF × (w_WB − w_WF), in F. A body's spatial
-        // acceleration in its own axes has the rate of its angular velocity as its first part.
-        const Mat3& R_WF = data.X_WB[column.frame].R;
-        const Mat3& R_WB = data.X_WB[column.index].R;
-        const Vec3 w_WB_W = R_WB * data.V_WB_B[column.index].head<3>();
-        const Vec3 w_WF_W = R_WF * data.V_WB_B[column.frame].head<3>();
-        const Vec3 a_WB_W = R_WB * data.A_WB_B[column.index].head<3>();
-        const Vec3 a_WF_W = R_WF * data.A_WB_B[column.frame].head<3>();
-        out = (R_WF.transpose() * ((a_WB_W - a_WF_W) - w_WF_W.cross(w_WB_W - w_WF_W)))[k];
+        const dynamics::RelativeRotation r =
+            dynamics::relative_rotation(model, data, column.index, column.frame);
+        out = (spec.quantity == OutputQuantity::body_angular_velocity ? r.w_FB_F : r.alpha_FB_F)[k];
         break;
       }
       case OutputQuantity::signal:

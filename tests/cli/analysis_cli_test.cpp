@@ -342,7 +342,8 @@ TEST_F(AnalysisCli, EquationsInTheTextbooksSymbols) {
 
 // Golden texts: every printed form of the double pendulum (every parameter a symbol), the
 // pendulum's planar Newton–Euler forms, Greek angles and a constrained model's rows are the bytes
-// tests/cli/golden/equations/ holds, so a change to what a reader sees shows as a diff.
+// tests/cli/golden/equations/ holds (generated code as .hpp.txt and .py.txt: texts to compare, not
+// sources to format), so a change to what a reader sees shows as a diff.
 // MOMENTA_UPDATE_GOLDEN=1 rewrites them (then read the diff before committing).
 TEST_F(AnalysisCli, EquationsEqualTheirGoldenTexts) {
   const std::vector<std::array<std::string, 3>> cases = {
@@ -353,8 +354,8 @@ TEST_F(AnalysisCli, EquationsEqualTheirGoldenTexts) {
       {"double_pendulum.newton_euler.txt", "double_pendulum", "--all-symbols --form newton-euler"},
       {"double_pendulum.linear.txt", "double_pendulum", "--all-symbols --form linear"},
       {"double_pendulum.json", "double_pendulum", "--all-symbols --json"},
-      {"double_pendulum.hpp", "double_pendulum", "--all-symbols --cpp"},
-      {"double_pendulum.py", "double_pendulum", "--all-symbols --python"},
+      {"double_pendulum.hpp.txt", "double_pendulum", "--all-symbols --cpp"},
+      {"double_pendulum.py.txt", "double_pendulum", "--all-symbols --python"},
       {"pendulum.newton_euler_nt.txt", "pendulum", "--all-symbols --form newton-euler --nt"},
       {"cruise_control.transfer.txt", "cruise_control", "--all-symbols --transfer u:speed"},
       {"chaplygin_sleigh.txt", "constraints/chaplygin_sleigh", "--all-symbols"},

@@ -44,4 +44,14 @@ struct RelativeKinematics {
 RelativeKinematics relative_kinematics(const Model& model, const Data& data, int body,
                                        const Vec3& p_BoP_B, int frame);
 
+/// The rotation of a body B seen from the frame of body F, in F's axes (rad/s, rad/s²).
+struct RelativeRotation {
+  Vec3 w_FB_F;      ///< w_WB − w_WF.
+  Vec3 alpha_FB_F;  ///< The rate of w_FB seen in F: (α_WB − α_WF) − w_WF × (w_WB − w_WF).
+};
+
+/// The rotation of body `body` seen from the frame of body `frame` (0: the world). Preconditions
+/// and errors as relative_kinematics().
+RelativeRotation relative_rotation(const Model& model, const Data& data, int body, int frame);
+
 }  // namespace momenta::dynamics

@@ -51,6 +51,12 @@ struct ModelFile {
     int line = 0, column = 0;
   };
   std::map<std::string, SymbolName> symbol_names;
+  /// The names alone (symbolic::EquationOptions::names).
+  std::map<std::string, std::string> given_symbol_names() const {
+    std::map<std::string, std::string> names;
+    for (const auto& [ours, given] : symbol_names) names[ours] = given.name;
+    return names;
+  }
 
   /// The error at the line of the item it is about (Error::item()), as ParseError
   /// `file:line:column: message`; nullopt when it names no item this file declares. For errors

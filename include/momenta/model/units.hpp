@@ -17,6 +17,10 @@ std::string q_unit(const Model& model, int i);
 std::string v_unit(const Model& model, int i);
 /// The generalized force along velocity coordinate i: "N·m" on an angle, "N" on a length.
 std::string effort_unit(const Model& model, int i);
+/// A joint's viscous damping (its effort per its speed): "N·m·s/rad" on a joint whose speeds
+/// are all angular, "N·s/m" on one whose speeds are all lengths; "" where they are mixed (a
+/// planar joint) or there are none.
+std::string joint_damping_unit(const Model& model, const Joint& joint);
 /// A signal's value: the unit of the coordinate it prescribes, "N" or "N·m" when it scales an
 /// applied force or moment of unit direction; "" when its use does not fix one.
 std::string signal_unit(const Model& model, int signal_index);

@@ -242,16 +242,22 @@ TEST(BodyMomentum, KineticEnergySplitAndAngularMomentumAboutAPoint) {
   EXPECT_MATRIX_NEAR(body.linear, system.linear, 1e-13);
 }
 
+// An output of body `target` seen from body `frame` ("" for the world).
+model::OutputSpec seen_from(std::string name, OutputQuantity q, std::string target,
+                            std::string frame) {
+  model::OutputSpec s;
+  s.name = std::move(name);
+  s.quantity = q;
+  s.target = std::move(target);
+  s.relative_to = std::move(frame);
+  return s;
+}
+
 // Outputs with `frame:` read the same terms as the library, in the frame's axes.
 TEST(RotatingFrameOutputs, ColumnsSeenFromTheTurntable) {
   const model::Model m = turntable_and_bead(0.8, 2.5, 0.3, 0.1, 4.0);
   const auto spec = [](std::string name, OutputQuantity q) {
-    model::OutputSpec s;
-    s.name = std::move(name);
-    s.quantity = q;
-    s.target = "bead";
-    s.relative_to = "turntable";
-    return s;
+    return seen_from(std::move(name), q, "bead", "turntable");
   };
   const system::OutputSet set(
       m, {spec("r", OutputQuantity::body_position), spec("v", OutputQuantity::body_velocity),
@@ -300,12 +306,7 @@ joints:
   const io::ModelFile file = io::parse_model_file(text, "wheel.yaml", ".");
   const model::Model& m = file.model;
   const auto spec = [](std::string name, OutputQuantity q, std::string frame) {
-    model::OutputSpec s;
-    s.name = std::move(name);
-    s.quantity = q;
-    s.target = "wheel";
-    s.relative_to = std::move(frame);
-    return s;
+    return seen_from(std::move(name), q, "wheel", std::move(frame));
   };
   const system::OutputSet set(
       m, {spec("alpha", OutputQuantity::body_angular_acceleration, ""),
