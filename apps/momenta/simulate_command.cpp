@@ -101,10 +101,11 @@ simulate::SimulationOptions merge(const SimulateOptions& o, const model::Simulat
           "{}{}{}: {}", o.rtol ? fmt::format("--rtol {}", *o.rtol) : "",
           o.rtol && o.atol ? ", " : "", o.atol ? fmt::format("--atol {}", *o.atol) : "", e.what()));
     }
-    throw CLI::ValidationError(o.rtol ? "--rtol" : "--atol",
-                               fmt::format("applies to adaptive integrators (dopri5); '{}' takes "
-                                           "a fixed step, --dt",
-                                           *o.integrator));
+    throw CLI::ValidationError(
+        o.rtol ? "--rtol" : "--atol",
+        fmt::format("applies to adaptive integrators (dopri5, bdf); '{}' takes "
+                    "a fixed step, --dt",
+                    *o.integrator));
   }
   if (!resolved.thinning_note.empty()) {
     fmt::print(stderr, "momenta: {}; --every 1 records them all\n", resolved.thinning_note);
@@ -245,16 +246,19 @@ void add_run_options(CLI::App* command, SimulateOptions& o) {
       ->check(positive_finite());
   command
       ->add_option("--rtol", o.rtol,
-                   "Relative tolerance of an adaptive integrator (default 1e-8; implies dopri5)")
+                   "Relative tolerance of an adaptive integrator, dopri5 or bdf (default 1e-8; "
+                   "alone it implies dopri5)")
       ->check(positive_finite());
   command
       ->add_option("--atol", o.atol,
-                   "Absolute tolerance of an adaptive integrator (default 1e-10; implies dopri5)")
+                   "Absolute tolerance of an adaptive integrator, dopri5 or bdf (default 1e-10; "
+                   "alone it implies dopri5)")
       ->check(positive_finite());
   command->add_option(
       "--integrator", o.integrator,
-      "rk4 (default), symplectic_euler, dopri5, or a rigid-body method: splitting, splitting4, "
-      "lie_group, exact (a free body or a heavy top only)");
+      "rk4 (default), symplectic_euler, dopri5; for stiff models bdf (adaptive) or sdirk3 (fixed "
+      "step); or a rigid-body method: splitting, splitting4, lie_group, exact (a free body or a "
+      "heavy top only). docs/integrators.md");
   command
       ->add_option("--every", o.every,
                    fmt::format("Record every N-th step (default 1, or as many as keep about {:.0f} "

@@ -101,6 +101,9 @@ py::dict summary_of(const simulate::SimulationSummary& s) {
   d["evaluations"] = s.statistics.evaluations;
   d["wall_seconds"] = s.wall_seconds;
   d["rows"] = s.rows;
+  // What the run tells about stiffness (an explicit method held, or unstable, by it), or None.
+  const std::string stiffness = simulate::stiffness_note(s);
+  d["stiffness"] = stiffness.empty() ? py::object(py::none()) : py::object(py::str(stiffness));
   return d;
 }
 
@@ -253,7 +256,8 @@ An existing file is kept (FileError) unless force=True. Returns the path.)doc")
 arguments override the model file's `simulation:` section, which overrides the defaults
 (duration 10 s, rk4 at dt 1 ms; rtol/atol alone choose dopri5; a fixed-step run longer than
 10 000 steps records every n-th so 10 001 rows remain unless `every` is given). integrator: rk4,
-symplectic_euler, dopri5, or a rigid-body method (splitting, splitting4, lie_group, exact).
+symplectic_euler, dopri5, bdf or sdirk3 (stiff models), or a rigid-body method (splitting,
+splitting4, lie_group, exact).
 reactions=True adds every joint's reaction wrench. Raises InvalidArgument for a bad option,
 NumericalError when the state stops being finite (naming the time and coordinate),
 KeyboardInterrupt on Ctrl-C.)doc");

@@ -41,27 +41,15 @@ constexpr double kExponent = 0.2 - 0.75 * kBeta;
 }  // namespace
 
 DormandPrince5::DormandPrince5(const Tolerances& tolerances) : tolerances_(tolerances) {
-  if (!(tolerances.relative > 0.0 && std::isfinite(tolerances.relative)) ||
-      !(tolerances.absolute > 0.0 && std::isfinite(tolerances.absolute))) {
-    throw InvalidArgument(
-        fmt::format("dopri5: tolerances must be positive and finite, got rtol = {}, atol = {}",
-                    tolerances.relative, tolerances.absolute));
-  }
-  if (tolerances.relative < kSmallestRelativeTolerance ||
-      tolerances.absolute < kSmallestAbsoluteTolerance) {
-    throw InvalidArgument(fmt::format(
-        "dopri5: rtol = {:.3g}, atol = {:.3g} ask for more than double precision holds: rtol must "
-        "be at least {:.1e} (100 ε) and atol at least {:.0e}",
-        tolerances.relative, tolerances.absolute, kSmallestRelativeTolerance,
-        kSmallestAbsoluteTolerance));
-  }
+  check_tolerances(name(), tolerances);
 }
 
 void DormandPrince5::initialize(SecondOrderSystem& system, const State& state) {
   const int nq = system.nq();
   const int nv = system.nv();
   stages_.resize(nq, nv, 7);
-  for (VecX* x : {&delta1_, &v1_, &error_delta_, &error_v_, &scale_q0_, &scale_q1_}) {
+  for (VecX* x :
+       {&delta1_, &v1_, &error_delta_, &error_v_, &scale_q0_, &scale_q1_, &delta6_, &v6_}) {
     *x = VecX::Zero(nv);
   }
   for (VecX& d : dense_) d = VecX::Zero(2 * nv);
@@ -72,6 +60,7 @@ void DormandPrince5::initialize(SecondOrderSystem& system, const State& state) {
   statistics_ = {};
   previous_error_ = 1e-4;
   last_rejected_ = false;
+  stiff_streak_ = 0;
   // The first stage's acceleration, reused by the first step (inputs from the right).
   system.begin_step(state.t, std::numeric_limits<double>::infinity());
   system.acceleration(state.t, state.q, state.v, stages_.kv[0]);
@@ -173,6 +162,10 @@ double DormandPrince5::step(SecondOrderSystem& system, State& state, double h_ma
     stages_.kq[0] = state.v;
     for (int i = 1; i < 7; ++i) {
       stages_.evaluate(system, state, h, i, kDopriA[i], kDopriC[i], statistics_.evaluations);
+      if (i == 5) {
+        delta6_ = stages_.delta;
+        v6_ = stages_.v;
+      }
     }
     // The fifth-order solution is the last stage's point; the error estimate is Σ e_i k_i.
     delta1_ = stages_.delta;
@@ -217,6 +210,7 @@ double DormandPrince5::step(SecondOrderSystem& system, State& state, double h_ma
       dense_[4].head(nv).noalias() += (h * kD[j]) * stages_.kq[j];
       dense_[4].tail(nv).noalias() += (h * kD[j]) * stages_.kv[j];
     }
+    estimate_stiffness(h, state.t);
     q_prev_ = state.q;
     v_prev_ = state.v;
     t_prev_ = state.t;
@@ -243,6 +237,27 @@ double DormandPrince5::step(SecondOrderSystem& system, State& state, double h_ma
     ++statistics_.steps;
     return h;
   }
+}
+
+// Stages 6 and 7 both lie at t + h: the ratio of their slopes' difference to their points'
+// difference estimates the dominant eigenvalue |λ| of the Jacobian (Hairer's dopri5 code,
+// after Shampine 1977). h|λ| past 3.25 — the edge of dopri5's stability region on the negative
+// real axis — means stability, not the error estimate, holds the step.
+void DormandPrince5::estimate_stiffness(double h, double t) {
+  constexpr double kStabilityEdge = 3.25;
+  constexpr int kStreak = 15;
+  const double slopes =
+      (stages_.kq[6] - stages_.kq[5]).squaredNorm() + (stages_.kv[6] - stages_.kv[5]).squaredNorm();
+  const double points = (delta1_ - delta6_).squaredNorm() + (v1_ - v6_).squaredNorm();
+  if (!(points > 0.0) || !std::isfinite(slopes)) return;
+  const double h_lambda = h * std::sqrt(slopes / points);
+  if (h_lambda < kStabilityEdge) {
+    stiff_streak_ = 0;
+    return;
+  }
+  ++statistics_.stability_limited_steps;
+  statistics_.stiff_eigenvalue = std::max(statistics_.stiff_eigenvalue, h_lambda / h);
+  if (++stiff_streak_ == kStreak && std::isnan(statistics_.stiff_from)) statistics_.stiff_from = t;
 }
 
 void DormandPrince5::interpolate(const SecondOrderSystem& system, double t, State& out) const {

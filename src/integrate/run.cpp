@@ -76,7 +76,8 @@ void check_finite(const SecondOrderSystem& system, const Integrator& integrator,
   while (std::isfinite(x[i])) ++i;
   throw NumericalError(fmt::format(
       "the state became non-finite at t = {:.9g} s: {} = {} after a {} step of {:.3g} s. The step "
-      "may be too large for the fastest motion (try a smaller --dt, or --integrator dopri5), or "
+      "may be too large for the fastest motion (try a smaller --dt, or --integrator dopri5; bdf "
+      "for a stiff model), or "
       "the model may be singular or stiff there",
       state.t, system.coordinate_name(i, !in_q), x[i], integrator.name(), h));
 }

@@ -16,13 +16,19 @@ constexpr std::string_view kOneRigidBody =
     "one body on a free joint (gravity allowed), or on a spherical joint under gravity (a heavy "
     "top); no force elements or joint damping";
 
-constexpr std::array<IntegratorInfo, 7> kIntegrators = {{
+constexpr std::array<IntegratorInfo, 9> kIntegrators = {{
     {"rk4", IntegratorFamily::general, 4, false, kAnyModel,
      "classic fourth-order Runge–Kutta, fixed step (Munthe-Kaas form on rotations)"},
     {"symplectic_euler", IntegratorFamily::general, 1, false, kAnyModel,
      "semi-implicit Euler: v ← v + h a(q, v), q ← q ⊕ h v; symplectic for separable systems"},
     {"dopri5", IntegratorFamily::general, 5, true, kAnyModel,
      "Dormand–Prince 5(4), adaptive step under rtol/atol, dense output"},
+    {"bdf", IntegratorFamily::general, 5, true, kAnyModel,
+     "variable-order BDF (1–5) of SUNDIALS CVODE for stiff models, adaptive under rtol/atol, "
+     "Newton's method on a difference-quotient Jacobian"},
+    {"sdirk3", IntegratorFamily::general, 3, false, kAnyModel,
+     "L-stable singly diagonally implicit Runge–Kutta of order 3 (Alexander 1977), fixed step: "
+     "stable at any step on stiff models"},
     {"splitting", IntegratorFamily::rigid_body, 2, false, kOneRigidBody,
      "Strang splitting into exact rotations about the principal axes (Dullweber, Leimkuhler & "
      "McLachlan 1997); symplectic, H to round-off"},

@@ -39,7 +39,7 @@ ResolvedRun resolve_run(const RunRequest& request, const model::SimulationSettin
       system::make_integrator(s.integrator, s.tolerances);
   if ((request.relative_tolerance || request.absolute_tolerance) && !probe->adaptive()) {
     throw InvalidArgument(fmt::format(
-        "{} applies to adaptive integrators (dopri5); '{}' takes a fixed step",
+        "{} applies to adaptive integrators (dopri5, bdf); '{}' takes a fixed step",
         request.relative_tolerance ? "the relative tolerance" : "the absolute tolerance",
         s.integrator));
   }

@@ -304,7 +304,8 @@ class Simulation::Recorder {
     throw NumericalError(fmt::format(
         "the recorded values became non-finite at t = {:.9g} s: {} = {} while the state is "
         "finite (its largest coordinate {} = {:.3g}). The step may be too large for the fastest "
-        "motion (try a smaller --dt, or --integrator dopri5), or a parameter — a stiffness, a "
+        "motion (try a smaller --dt, or --integrator dopri5; bdf for a stiff model), or a "
+        "parameter — a stiffness, a "
         "mass, a signal's amplitude — is absurd",
         t, sim_.columns_[bad], row_[bad], sim_.columns_[largest], row_[largest]));
   }
@@ -329,6 +330,21 @@ class Simulation::Recorder {
   long observed_ = 0;
 };
 
+void Simulation::check_stiffness(system::MultibodySystem& system, const integrate::State& state,
+                                 SimulationSummary& summary) const {
+  const std::string_view name = integrator_->name();
+  if (std::isnan(integrate::amplification(name, {0.0, 0.0}))) return;
+  if (model_.nv() == 0 || model_.nv() > kStiffnessCheckLimit) return;
+  const Eigen::VectorXcd eigenvalues = integrate::linearization_eigenvalues(system, state);
+  if (eigenvalues.size() == 0) return;
+  summary.stiffness_checked = true;
+  for (const std::complex<double>& lambda : eigenvalues) {
+    if (std::abs(lambda) > std::abs(summary.fastest_eigenvalue))
+      summary.fastest_eigenvalue = lambda;
+  }
+  summary.step_stability = integrate::check_step_stability(name, eigenvalues, options_.step);
+}
+
 SimulationSummary Simulation::run(RowSink& sink) {
   Recorder recorder(*this, sink);
   SimulationSummary summary;
@@ -346,6 +362,7 @@ SimulationSummary Simulation::run(RowSink& sink) {
   if (const system::ConstraintSolver* solver = recorder.system().constraints())
     summary.redundant_constraint_rows = solver->redundant_rows();
   recorder.start(state, summary);
+  check_stiffness(recorder.system(), state, summary);
 
   // integrate::run reports every step (so the audit sees each); rows are kept every n-th, and
   // the last.
@@ -366,8 +383,10 @@ SimulationSummary Simulation::run(RowSink& sink) {
   } catch (const NumericalError& e) {
     // Keep what was recorded, and say how far it goes.
     sink.flush();
-    throw NumericalError(fmt::format("{} ({} row{} up to the failure were written)", e.what(),
-                                     recorder.rows(), recorder.rows() == 1 ? "" : "s"));
+    const std::string note = stiffness_note(summary);
+    throw NumericalError(fmt::format("{} ({} row{} up to the failure were written){}{}", e.what(),
+                                     recorder.rows(), recorder.rows() == 1 ? "" : "s",
+                                     note.empty() ? "" : ". ", note));
   } catch (const Interrupted& e) {
     sink.flush();
     throw Interrupted(fmt::format("{}; {} whole row{} written", e.what(), recorder.rows(),
@@ -395,6 +414,40 @@ SimulationSummary summary_of_stopped_run(const SimulationOptions& options, long 
   return summary;
 }
 
+namespace {
+// "−8117 1/s", "−3.2 ± 41.5i 1/s" (`unit` empty: a plain number).
+std::string complex_text(std::complex<double> z, std::string_view unit) {
+  const std::string space = unit.empty() ? "" : " ";
+  if (std::abs(z.imag()) <= 1e-9 * std::abs(z))
+    return fmt::format("{:.4g}{}{}", z.real(), space, unit);
+  return fmt::format("{:.4g} ± {:.4g}i{}{}", z.real(), std::abs(z.imag()), space, unit);
+}
+}  // namespace
+
+std::string stiffness_note(const SimulationSummary& s) {
+  if (s.stiffness_checked && !s.step_stability.stable && !s.adaptive) {
+    const std::complex<double> lambda = s.step_stability.eigenvalue;
+    return fmt::format(
+        "{} at h = {:.3g} s is unstable here: the linearization at t = 0 has "
+        "λ = {}, and h·λ = {} lies outside {}'s stability region (stable for h ≤ {:.3g} s). "
+        "Use --integrator bdf or sdirk3 (stable at any step), or a smaller --dt",
+        s.integrator, s.step, complex_text(lambda, "1/s"), complex_text(s.step * lambda, ""),
+        s.integrator, s.step_stability.largest_stable_step);
+  }
+  if (!std::isnan(s.statistics.stiff_from)) {
+    return fmt::format(
+        "{} was held by stability, not accuracy: {} of {} steps had h·|λ| ≥ 3.25 "
+        "(|λ| up to {:.4g} 1/s, from t = {:.6g} s){}. --integrator bdf takes far fewer steps "
+        "(docs/integrators.md)",
+        s.integrator, s.statistics.stability_limited_steps, s.statistics.steps,
+        s.statistics.stiff_eigenvalue, s.statistics.stiff_from,
+        s.stiffness_checked ? fmt::format("; the linearization at t = 0 has λ = {}",
+                                          complex_text(s.fastest_eigenvalue, "1/s"))
+                            : "");
+  }
+  return "";
+}
+
 std::string format_summary(const SimulationSummary& s) {
   std::string out;
   const std::string order =
@@ -417,6 +470,9 @@ std::string format_summary(const SimulationSummary& s) {
     out += fmt::format(
         "constraints  redundant rows (implied by the others; they carry no force): {}\n",
         fmt::join(s.redundant_constraint_rows, ", "));
+  }
+  if (const std::string note = stiffness_note(s); !note.empty()) {
+    out += fmt::format("stiffness    {}\n", note);
   }
   out += "conservation audit (relative drift: at the end, largest over every step)\n";
   for (const AuditEntry& e : s.audit) {

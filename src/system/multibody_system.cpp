@@ -182,6 +182,10 @@ void MultibodySystem::integrate(const VecX& q, const VecX& dq, VecX& q_out) cons
   model::integrate(model_, q, dq, 1.0, q_out);
 }
 
+void MultibodySystem::difference(const VecX& q0, const VecX& q1, VecX& dq) const {
+  model::difference(model_, q0, q1, dq);
+}
+
 void MultibodySystem::local_coordinate_rate(const VecX& delta, const VecX& v,
                                             VecX& delta_rate) const {
   model::local_coordinate_rate(model_, delta, v, delta_rate);

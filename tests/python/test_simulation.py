@@ -114,6 +114,25 @@ def test_a_run_that_blows_up_names_the_time():
     assert partial.summary["t_end"] == partial.time[-1]
 
 
+def test_stiff_models_run_with_the_implicit_integrators():
+    # The flyball governor (IFToMM A05): bdf at the file's settings in a few thousand steps, the
+    # same table as the command line's; dopri5 says it was held by stability.
+    path = EXAMPLES / "flyball_governor.yaml"
+    model = momenta.load_model(path)
+    run = momenta.simulate(model, duration=2.0)
+    assert run.summary["integrator"] == "bdf" and run.summary["steps"] < 2000
+    assert run.summary["stiffness"] is None
+    header, table = cli_csv("simulate", path, "--quiet", "--duration", 2.0)
+    np.testing.assert_array_equal(run.data, table)
+    # s(2 s) of the independent Radau solution (scripts/reference/flyball_governor.py).
+    assert abs(run["s.position"][-1] - 0.505909294297) < 5e-6
+    fixed = momenta.simulate(model, duration=0.5, integrator="sdirk3", dt=0.005)
+    assert fixed.summary["integrator"] == "sdirk3" and fixed.summary["steps"] == 100
+    explicit = momenta.simulate(model, duration=0.2, integrator="dopri5", rtol=1e-3)
+    assert "held by stability" in explicit.summary["stiffness"]
+    assert "--integrator bdf" in explicit.summary["stiffness"]
+
+
 def test_a_file_name_where_a_model_belongs_says_what_to_pass():
     # pybind11 would list C++ signatures ("incompatible function arguments"); the message says
     # how to make the Model, and the stubs keep `model: Model`.

@@ -8,6 +8,7 @@
 //
 // Each integrator is sized once by initialize(); step() then never allocates.
 
+#include <limits>
 #include <memory>
 #include <string_view>
 #include <vector>
@@ -28,6 +29,15 @@ struct IntegratorStatistics {
   long steps = 0;           ///< accepted steps
   long rejected_steps = 0;  ///< steps retried with a smaller size (adaptive methods)
   long evaluations = 0;     ///< calls of SecondOrderSystem::acceleration
+  /// Explicit adaptive methods (dopri5): accepted steps whose size stability set, not accuracy —
+  /// Hairer's estimate h|λ| of the dominant eigenvalue along the step (Hairer & Wanner, Solving
+  /// ODEs II, §IV.2) at or past the edge of the stability region (3.25 for dopri5).
+  long stability_limited_steps = 0;
+  /// The time from which 15 steps in a row were stability-limited (Hairer's test for "the
+  /// problem seems to become stiff"); NaN when that never happened.
+  double stiff_from = std::numeric_limits<double>::quiet_NaN();
+  /// The largest |λ| (1/s) of those estimates.
+  double stiff_eigenvalue = 0.0;
 };
 
 class Integrator {
@@ -71,6 +81,11 @@ struct Tolerances {
   double relative = 1e-8;
   double absolute = 1e-10;
 };
+
+/// Throws InvalidArgument when `tolerances` are not positive and finite, or ask for more than
+/// double precision holds (kSmallestRelativeTolerance, kSmallestAbsoluteTolerance), naming the
+/// integrator.
+void check_tolerances(std::string_view integrator, const Tolerances& tolerances);
 
 /// The names make_integrator knows, in the order docs list them.
 const std::vector<std::string_view>& integrator_names();

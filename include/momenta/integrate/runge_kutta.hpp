@@ -69,6 +69,7 @@ class DormandPrince5 final : public Integrator {
  private:
   double initial_step(SecondOrderSystem& system, const State& state);
   double error_norm(const State& start, const VecX& v1) const;
+  void estimate_stiffness(double h, double t);
   // The coordinate whose last error estimate is largest, "name = value", for messages.
   std::string largest_error_coordinate(const SecondOrderSystem& system, const State& state) const;
 
@@ -76,6 +77,8 @@ class DormandPrince5 final : public Integrator {
   detail::LocalStages stages_;
   VecX delta1_, v1_, error_delta_, error_v_, scale_q0_, scale_q1_;
   VecX q_prev_, v_prev_;                 // start of the last accepted step
+  VecX delta6_, v6_;                     // the sixth stage's point, for the stiffness estimate
+  int stiff_streak_ = 0;                 // stability-limited steps in a row
   VecX dense_[5];                        // dense-output coefficients over (δ, v), size 2 nv each
   double t_prev_ = 0.0, h_prev_ = 0.0;   // the last accepted step
   double h_ = 0.0;                       // proposed next step

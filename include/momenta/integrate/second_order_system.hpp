@@ -27,6 +27,10 @@ class SecondOrderSystem {
   /// rotation coordinates, plain addition on the others. q_out may not alias q.
   virtual void integrate(const VecX& q, const VecX& dq, VecX& q_out) const = 0;
 
+  /// dq with q1 = q0 ⊕ dq (the inverse of integrate(); on rotations the shortest turn, |dq| ≤ π).
+  /// The default, q1 − q0, holds where every coordinate is a vector (nq == nv).
+  virtual void difference(const VecX& q0, const VecX& q1, VecX& dq) const { dq = q1 - q0; }
+
   /// Rate of local coordinates δ (size nv) about a base point, q = q0 ⊕ δ, when the velocity is v:
   /// δ̇ = dexp⁻¹_δ(v). On vector-space coordinates it is v itself (the default); on rotations
   /// with body-frame angular velocity it is J_r(δ)⁻¹ ω. Runge–Kutta methods need it to keep

@@ -39,7 +39,7 @@ const IntegratorInfo* find_integrator(std::string_view name);
 /// ...? known: rk4, ..." otherwise.
 const IntegratorInfo& integrator_info(std::string_view name);
 
-/// "rk4, symplectic_euler, dopri5, splitting, splitting4, lie_group, exact".
+/// "rk4, symplectic_euler, dopri5, bdf, sdirk3, splitting, splitting4, lie_group, exact".
 std::string integrator_name_list();
 
 }  // namespace momenta::model

@@ -43,6 +43,7 @@
 // state is left as it returned it.
 
 #include <atomic>
+#include <complex>
 #include <functional>
 #include <memory>
 #include <span>
@@ -51,10 +52,15 @@
 #include <vector>
 
 #include "momenta/integrate/integrator.hpp"
+#include "momenta/integrate/stiffness.hpp"
 #include "momenta/model/model.hpp"
 #include "momenta/simulate/conservation_audit.hpp"
 #include "momenta/system/constraint_solver.hpp"
 #include "momenta/system/output_set.hpp"
+
+namespace momenta::system {
+class MultibodySystem;
+}
 
 namespace momenta::simulate {
 
@@ -63,7 +69,7 @@ struct SimulationOptions {
   double duration = 10.0;  ///< s, > 0: the run goes from t = 0 to t = duration
   double step = 1e-3;      ///< s, > 0: the fixed step, or the largest step of an adaptive method
   std::string integrator = "rk4";    ///< a name of model::integrators()
-  integrate::Tolerances tolerances;  ///< adaptive methods (dopri5) only
+  integrate::Tolerances tolerances;  ///< adaptive methods (dopri5, bdf) only
   long every = 1;          ///< record every n-th step (≥ 1); the first and last states always
   bool reactions = false;  ///< add every joint's reaction wrench to each row
   /// When set and it becomes true (a signal handler's flag), the run records the state it has
@@ -119,7 +125,24 @@ struct SimulationSummary {
   /// the initial state consistent changed.
   std::vector<std::string> redundant_constraint_rows;
   system::ConsistentState initial_state;
+  /// Explicit Runge–Kutta methods (rk4, dopri5) on models of at most kStiffnessCheckLimit
+  /// velocities: the linearization at the initial state (integrate/stiffness.hpp), its
+  /// eigenvalue of largest magnitude, and the step against the method's stability region (for
+  /// dopri5, its largest step). dopri5's estimate during the run is in `statistics`.
+  bool stiffness_checked = false;
+  std::complex<double> fastest_eigenvalue{0.0, 0.0};  ///< 1/s
+  integrate::StepStability step_stability;
 };
+
+/// The most velocity coordinates for which a run examines the linearization's eigenvalues (a
+/// dense eigenproblem of size 2 nv).
+inline constexpr int kStiffnessCheckLimit = 200;
+
+/// What the summary says about stiffness, a sentence, or "" when there is nothing to say: a fixed
+/// step outside the explicit method's stability region for some mode (with the eigenvalue and the
+/// largest stable step), or dopri5 held by stability (Hairer's test: 15 stability-limited steps in
+/// a row), each suggesting bdf.
+std::string stiffness_note(const SimulationSummary& summary);
 
 class Simulation {
  public:
@@ -154,6 +177,9 @@ class Simulation {
 
  private:
   class Recorder;
+  // Fills the summary's stiffness fields for an explicit Runge–Kutta method.
+  void check_stiffness(system::MultibodySystem& system, const integrate::State& state,
+                       SimulationSummary& summary) const;
 
   const model::Model& model_;
   SimulationOptions options_;

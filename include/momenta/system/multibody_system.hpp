@@ -54,6 +54,7 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   /// read quantities after evaluate(). No allocation.
   void acceleration(double t, const VecX& q, const VecX& v, VecX& vdot) override;
   void integrate(const VecX& q, const VecX& dq, VecX& q_out) const override;
+  void difference(const VecX& q0, const VecX& q1, VecX& dq) const override;
   void local_coordinate_rate(const VecX& delta, const VecX& v, VecX& delta_rate) const override;
   void configuration_scale(const VecX& q, VecX& scale) const override;
   /// The first breakpoint of any of the model's signals after t (model::Signal::next_breakpoint):

@@ -27,6 +27,40 @@ class HarmonicOscillator final : public SecondOrderSystem {
   double omega_;
 };
 
+/// A mass on a spring-damper, m ẍ + c ẋ + k x = u(t), with u a step of `step_force` at
+/// `step_time` (announced by next_discontinuity; infinity: none). Overdamped for c² > 4 m k.
+class SpringDamper final : public SecondOrderSystem {
+ public:
+  SpringDamper(double mass, double stiffness, double damping, double step_time = INFINITY,
+               double step_force = 0.0)
+      : m_(mass), k_(stiffness), c_(damping), step_time_(step_time), step_force_(step_force) {}
+  int nq() const override { return 1; }
+  int nv() const override { return 1; }
+  void acceleration(double t, const VecX& q, const VecX& v, VecX& vdot) override {
+    // At the step's time itself the force is its left limit when a step ends there.
+    const bool on = t > step_time_ || (t == step_time_ && step_end_ != step_time_);
+    vdot[0] = ((on ? step_force_ : 0.0) - k_ * q[0] - c_ * v[0]) / m_;
+    ++evaluations;
+  }
+  void integrate(const VecX& q, const VecX& dq, VecX& q_out) const override { q_out = q + dq; }
+  double next_discontinuity(double t) const override {
+    return t < step_time_ ? step_time_ : INFINITY;
+  }
+  void begin_step(double, double t1) override { step_end_ = t1; }
+
+  /// x(t) from x(0) = x0, ẋ(0) = 0 without the step (overdamped: two real exponentials).
+  double exact(double t, double x0) const {
+    const double d = std::sqrt(c_ * c_ - 4 * m_ * k_);
+    const double l1 = (-c_ + d) / (2 * m_), l2 = (-c_ - d) / (2 * m_);
+    return x0 * (l2 * std::exp(l1 * t) - l1 * std::exp(l2 * t)) / (l2 - l1);
+  }
+  long evaluations = 0;
+
+ private:
+  double m_, k_, c_, step_time_, step_force_;
+  double step_end_ = INFINITY;
+};
+
 /// A torque-free rigid body with principal inertia diag(I): q = quaternion q_WB as [w, x, y, z],
 /// v = w_WB_B. Euler's equations I ω̇ = −ω × I ω; the attitude advances by q ⊗ exp(δ).
 class FreeRigidBody final : public SecondOrderSystem {

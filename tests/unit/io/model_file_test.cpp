@@ -451,7 +451,7 @@ simulation: {integrator: exactt}
 )"),
                   "m.yaml:5:26: simulation.integrator: ",
                   "unknown integrator 'exactt' (did you mean 'exact'?); known: rk4, "
-                  "symplectic_euler, dopri5, splitting, splitting4, lie_group, exact");
+                  "symplectic_euler, dopri5, bdf, sdirk3, splitting, splitting4, lie_group, exact");
 }
 
 TEST(ModelFile, LocatesAnErrorAboutAnItemAtItsDeclaration) {

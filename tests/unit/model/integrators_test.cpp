@@ -44,7 +44,7 @@ TEST(IntegratorRegistry, HoldsEveryIntegratorOfEveryFamilyOnce) {
   }
   EXPECT_EQ(registered, known);
   EXPECT_EQ(integrator_name_list(),
-            "rk4, symplectic_euler, dopri5, splitting, splitting4, "
+            "rk4, symplectic_euler, dopri5, bdf, sdirk3, splitting, splitting4, "
             "lie_group, exact");
 }
 
