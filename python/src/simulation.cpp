@@ -221,7 +221,8 @@ result.audit the conservation audit; result.summary what the run did; to_pandas(
       .def_property_readonly(
           "summary", [](const SimulationResult& r) { return summary_of(r.summary); },
           "integrator, order, adaptive, step, t_end, steps, rejected_steps, evaluations, "
-          "wall_seconds, rows.")
+          "wall_seconds, rows, stiffness (the summary's sentence when an explicit method was held "
+          "or made unstable by stiffness, else None).")
       .def_property_readonly(
           "summary_text",
           [](const SimulationResult& r) { return simulate::format_summary(r.summary); },
