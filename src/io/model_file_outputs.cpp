@@ -14,6 +14,7 @@
 #include "model_file_internal.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
+#include "momenta/math/rotation.hpp"
 
 namespace momenta::io::detail {
 namespace {
@@ -35,6 +36,8 @@ const std::array<Target, 5>& targets() {
         {"acceleration", Q::body_acceleration},
         {"angular_velocity", Q::body_angular_velocity},
         {"angular_acceleration", Q::body_angular_acceleration},
+        {"euler_angles", Q::body_euler_angles},
+        {"euler_rates", Q::body_euler_rates},
         {"transport_velocity", Q::transport_velocity},
         {"transport_acceleration", Q::transport_acceleration},
         {"coriolis_acceleration", Q::coriolis_acceleration},
@@ -57,11 +60,13 @@ bool is_body(OutputQuantity q) {
   return model::output_target_kind(q) == model::OutputTargetKind::body;
 }
 bool is_vector(OutputQuantity q) {
-  return is_body(q) || q == Q::reaction_force || q == Q::reaction_moment;
+  return (is_body(q) && !model::is_euler_quantity(q)) || q == Q::reaction_force ||
+         q == Q::reaction_moment;
 }
 bool is_reaction(OutputQuantity q) { return q == Q::reaction_force || q == Q::reaction_moment; }
 bool at_point(OutputQuantity q) {
-  return is_body(q) && q != Q::body_angular_velocity && q != Q::body_angular_acceleration;
+  return is_body(q) && q != Q::body_angular_velocity && q != Q::body_angular_acceleration &&
+         !model::is_euler_quantity(q);
 }
 
 OutputQuantity read_quantity(const YamlNode& e, const Target& target) {
@@ -109,6 +114,12 @@ int read_component(const YamlNode& node, const model::OutputSpec& spec, const mo
       spec.quantity == Q::spring_tension) {
     node.fail("this quantity is a single number: it has no components");
   }
+  if (model::is_euler_quantity(spec.quantity)) {
+    const long long i = node.as_integer();
+    if (i < 0 || i > 2)
+      node.fail(fmt::format("component {} of the Euler angles must be 0, 1 or 2", i));
+    return static_cast<int>(i);
+  }
   if (spec.quantity == Q::constraint_force) {
     const auto labels =
         model::constraint_force_labels(model.constraints()[*model.find_constraint(spec.target)]);
@@ -138,7 +149,7 @@ model::OutputSpec read_output(const YamlNode& e, const Context& ctx, const model
   e.expect_map(
       "an output: a map with a target ('body', 'joint', 'signal', 'spring', 'constraint')");
   e.check_keys({"name", "quantity", "body", "joint", "signal", "spring", "constraint", "point",
-                "component", "frame"});
+                "component", "frame", "sequence"});
   const auto key = e.which_of({"body", "joint", "signal", "spring", "constraint"});
   if (!key) {
     e.fail(
@@ -197,6 +208,17 @@ model::OutputSpec read_output(const YamlNode& e, const Context& ctx, const model
         fmt::format("'{}' is a term of the motion seen from a moving frame: give the body "
                     "whose frame that is, 'frame: <body>'",
                     model::output_quantity_name(spec.quantity)));
+  }
+  if (const auto sequence = e.find("sequence")) {
+    if (!model::is_euler_quantity(spec.quantity)) {
+      sequence->fail("only euler_angles and euler_rates take a 'sequence'");
+    }
+    spec.sequence = sequence->as_string();
+    try {
+      rotation_from_euler(spec.sequence, Vec3::Zero());
+    } catch (const InvalidArgument& error) {
+      sequence->fail(error.what());
+    }
   }
   if (const auto component = e.find("component")) {
     spec.component = read_component(*component, spec, model);

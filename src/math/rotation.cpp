@@ -17,6 +17,51 @@ Mat3 elementary_rotation(int axis, double angle) {
 
 int axis_index(char c) { return std::tolower(static_cast<unsigned char>(c)) - 'x'; }
 
+// Throws unless `sequence` is one of the 12 (three axis letters of one case, no neighbours equal).
+void check_euler_sequence(std::string_view sequence) {
+  bool valid = sequence.size() == 3;
+  if (valid) {
+    const bool upper = std::isupper(static_cast<unsigned char>(sequence[0])) != 0;
+    for (char c : sequence) {
+      valid = valid && (std::isupper(static_cast<unsigned char>(c)) != 0) == upper &&
+              axis_index(c) >= 0 && axis_index(c) <= 2;
+    }
+    valid = valid && sequence[0] != sequence[1] && sequence[1] != sequence[2];
+  }
+  if (!valid) {
+    throw InvalidArgument(fmt::format(
+        "Euler sequence '{}' is not one of the 12 sequences such as 'ZYX' (intrinsic, upper case) "
+        "or 'zyx' (extrinsic, lower case)",
+        sequence));
+  }
+}
+
+// The parity of the axis permutation (i, j, k): +1 for a cyclic one (x, y, z), −1 otherwise.
+double parity(int i, int j, int k) {
+  return ((j - i + 3) % 3 == 1 && (k - j + 3) % 3 == 1) ? 1.0 : -1.0;
+}
+
+// Intrinsic angles of R = R_i(a) R_j(b) R_k(c) (worked from ZXZ and XYZ and their parities).
+Vec3 intrinsic_angles(int i, int j, int k, const Mat3& R) {
+  if (i == k) {  // proper Euler: the third axis l completes (i, j, l)
+    const int l = 3 - i - j;
+    const double e = parity(i, j, l);
+    const double s = std::hypot(R(i, j), R(i, l));
+    const double b = std::atan2(s, R(i, i));
+    if (s > 1e-12) return {std::atan2(R(j, i), -e * R(l, i)), b, std::atan2(R(i, j), e * R(i, l))};
+    // Gimbal lock: R = R_i(a ± c) R_j(b); take c = 0.
+    return {std::atan2(-e * R(j, l), R(j, j)), b, 0.0};
+  }
+  const double e = parity(i, j, k);
+  const double c_b = std::hypot(R(i, i), R(i, j));
+  const double b = std::atan2(e * R(i, k), c_b);
+  if (c_b > 1e-12) {
+    return {std::atan2(-e * R(j, k), R(k, k)), b, std::atan2(-e * R(i, j), R(i, i))};
+  }
+  // Gimbal lock: take c = 0; then R = R_i(a) R_j(b), whose (k, j) and (j, j) entries give a.
+  return {std::atan2(e * R(k, j), R(j, j)), b, 0.0};
+}
+
 }  // namespace
 
 Mat3 skew(const Vec3& a) {
@@ -28,33 +73,19 @@ Mat3 skew(const Vec3& a) {
 Mat3 rotation_from_axis_angle(const Vec3& axis, double angle) {
   const double n = axis.norm();
   if (!(n > 0) || !std::isfinite(n) || !std::isfinite(angle)) {
-    throw InvalidArgument(fmt::format("rotation axis [{}, {}, {}] with angle {} is not a finite "
-                                      "non-zero axis and a finite angle",
-                                      axis.x(), axis.y(), axis.z(), angle));
+    throw InvalidArgument(
+        fmt::format("rotation axis [{}, {}, {}] with angle {} is not a finite "
+                    "non-zero axis and a finite angle",
+                    axis.x(), axis.y(), axis.z(), angle));
   }
   return Eigen::AngleAxisd(angle, axis / n).toRotationMatrix();
 }
 
 Mat3 rotation_from_euler(std::string_view sequence, const Vec3& angles) {
-  // Three axis letters of one case, no two neighbours equal.
-  const auto valid = [&] {
-    if (sequence.size() != 3) return false;
-    const bool upper = std::isupper(static_cast<unsigned char>(sequence[0])) != 0;
-    for (char c : sequence) {
-      if ((std::isupper(static_cast<unsigned char>(c)) != 0) != upper) return false;
-      if (axis_index(c) < 0 || axis_index(c) > 2) return false;
-    }
-    return sequence[0] != sequence[1] && sequence[1] != sequence[2];
-  }();
-  if (!valid) {
-    throw InvalidArgument(fmt::format(
-        "Euler sequence '{}' is not one of the 12 sequences such as 'ZYX' (intrinsic, upper case) "
-        "or 'zyx' (extrinsic, lower case)",
-        sequence));
-  }
+  check_euler_sequence(sequence);
   if (!angles.allFinite()) {
-    throw InvalidArgument(fmt::format("Euler angles [{}, {}, {}] are not finite", angles[0],
-                                      angles[1], angles[2]));
+    throw InvalidArgument(
+        fmt::format("Euler angles [{}, {}, {}] are not finite", angles[0], angles[1], angles[2]));
   }
   const Mat3 R0 = elementary_rotation(axis_index(sequence[0]), angles[0]);
   const Mat3 R1 = elementary_rotation(axis_index(sequence[1]), angles[1]);
@@ -62,6 +93,40 @@ Mat3 rotation_from_euler(std::string_view sequence, const Vec3& angles) {
   // Intrinsic rotations compose about the moving axes (post-multiply), extrinsic about the fixed.
   const bool intrinsic = std::isupper(static_cast<unsigned char>(sequence[0])) != 0;
   return intrinsic ? Mat3(R0 * R1 * R2) : Mat3(R2 * R1 * R0);
+}
+
+Vec3 euler_from_rotation(std::string_view sequence, const Mat3& R) {
+  check_euler_sequence(sequence);
+  const int a0 = axis_index(sequence[0]), a1 = axis_index(sequence[1]),
+            a2 = axis_index(sequence[2]);
+  // Extrinsic "abc" is R = R_c(γ) R_b(β) R_a(α): the intrinsic sequence "CBA" with the angles
+  // reversed.
+  if (std::isupper(static_cast<unsigned char>(sequence[0])) != 0)
+    return intrinsic_angles(a0, a1, a2, R);
+  const Vec3 reversed = intrinsic_angles(a2, a1, a0, R);
+  return {reversed[2], reversed[1], reversed[0]};
+}
+
+Mat3 euler_rate_matrix(std::string_view sequence, const Vec3& angles) {
+  check_euler_sequence(sequence);
+  const int a0 = axis_index(sequence[0]), a1 = axis_index(sequence[1]),
+            a2 = axis_index(sequence[2]);
+  const Mat3 I = Mat3::Identity();
+  Mat3 E;
+  if (std::isupper(static_cast<unsigned char>(sequence[0])) != 0) {
+    // R = R_0 R_1 R_2: ω = ȧ0 e_0 + ȧ1 R_0 e_1 + ȧ2 R_0 R_1 e_2.
+    const Mat3 R0 = elementary_rotation(a0, angles[0]);
+    E.col(0) = I.col(a0);
+    E.col(1) = R0 * I.col(a1);
+    E.col(2) = R0 * elementary_rotation(a1, angles[1]) * I.col(a2);
+  } else {
+    // R = R_2 R_1 R_0: ω = ȧ2 e_2 + ȧ1 R_2 e_1 + ȧ0 R_2 R_1 e_0.
+    const Mat3 R2 = elementary_rotation(a2, angles[2]);
+    E.col(2) = I.col(a2);
+    E.col(1) = R2 * I.col(a1);
+    E.col(0) = R2 * elementary_rotation(a1, angles[1]) * I.col(a0);
+  }
+  return E;
 }
 
 bool is_rotation_matrix(const Mat3& R, double tolerance) {

@@ -15,6 +15,8 @@ OutputTargetKind output_target_kind(OutputQuantity quantity) {
     case OutputQuantity::body_acceleration:
     case OutputQuantity::body_angular_velocity:
     case OutputQuantity::body_angular_acceleration:
+    case OutputQuantity::body_euler_angles:
+    case OutputQuantity::body_euler_rates:
     case OutputQuantity::transport_velocity:
     case OutputQuantity::transport_acceleration:
     case OutputQuantity::coriolis_acceleration:
@@ -72,6 +74,10 @@ std::string_view output_quantity_name(OutputQuantity quantity) {
       return "angular_velocity";
     case OutputQuantity::body_angular_acceleration:
       return "angular_acceleration";
+    case OutputQuantity::body_euler_angles:
+      return "euler_angles";
+    case OutputQuantity::body_euler_rates:
+      return "euler_rates";
     case OutputQuantity::transport_velocity:
       return "transport_velocity";
     case OutputQuantity::transport_acceleration:
@@ -96,6 +102,11 @@ std::string_view output_quantity_name(OutputQuantity quantity) {
       return "spring_tension";
   }
   return "";
+}
+
+bool is_euler_quantity(OutputQuantity quantity) {
+  return quantity == OutputQuantity::body_euler_angles ||
+         quantity == OutputQuantity::body_euler_rates;
 }
 
 }  // namespace momenta::model

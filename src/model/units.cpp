@@ -121,7 +121,10 @@ std::string output_unit(const Model& model, OutputQuantity quantity, int target,
     case Q::euler_acceleration:
       return "m/s²";
     case Q::body_angular_velocity:
+    case Q::body_euler_rates:
       return "rad/s";
+    case Q::body_euler_angles:
+      return "rad";
     case Q::body_angular_acceleration:
       return "rad/s²";
     case Q::reaction_force:

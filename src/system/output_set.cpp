@@ -14,6 +14,7 @@
 #include "momenta/dynamics/point_kinematics.hpp"
 #include "momenta/dynamics/reactions.hpp"
 #include "momenta/dynamics/relative_kinematics.hpp"
+#include "momenta/math/rotation.hpp"
 #include "momenta/model/units.hpp"
 #include "momenta/system/multibody_system.hpp"
 
@@ -24,10 +25,28 @@ using model::OutputSpec;
 
 namespace {
 
+// The Euler angles of body `body` seen from `frame`'s (R_FB) in spec.sequence, or their rates
+// E⁻¹ w_FB_F; at gimbal lock the rates are undefined and the run stops, saying so.
+Vec3 euler_value(const model::Model& model, const dynamics::Data& data,
+                 const model::OutputSpec& spec, int body, int frame, double t) {
+  const Mat3 R_FB = data.X_WB[frame].R.transpose() * data.X_WB[body].R;
+  const Vec3 angles = euler_from_rotation(spec.sequence, R_FB);
+  if (spec.quantity == OutputQuantity::body_euler_angles) return angles;
+  const Mat3 E = euler_rate_matrix(spec.sequence, angles);
+  if (!(std::abs(E.determinant()) > 1e-9)) {
+    throw NumericalError(fmt::format(
+        "output '{}': the {} Euler angles of body '{}' are at gimbal lock at t = {:.9g} s (middle "
+        "angle {:.9g} rad): their rates are not defined there. Choose another sequence, or "
+        "record angular_velocity",
+        spec.name, spec.sequence, model.body(body).name, t, angles[1]));
+  }
+  return E.partialPivLu().solve(dynamics::relative_rotation(model, data, body, frame).w_FB_F);
+}
+
 bool is_vector(OutputQuantity quantity) {
   const model::OutputTargetKind kind = model::output_target_kind(quantity);
-  return kind == model::OutputTargetKind::body || quantity == OutputQuantity::reaction_force ||
-         quantity == OutputQuantity::reaction_moment;
+  return (kind == model::OutputTargetKind::body && !model::is_euler_quantity(quantity)) ||
+         quantity == OutputQuantity::reaction_force || quantity == OutputQuantity::reaction_moment;
 }
 
 // Names of the model's items of one kind, for did-you-mean suggestions.
@@ -159,6 +178,9 @@ OutputSet::OutputSet(const model::Model& model, std::vector<OutputSpec> specs)
     } else if (is_vector(spec.quantity)) {
       count = 3;
       by_axis = true;
+    } else if (model::is_euler_quantity(spec.quantity)) {
+      count = 3;  // suffixed .0 .1 .2, in the sequence's order
+      rotation_from_euler(spec.sequence, Vec3::Zero());  // an unknown sequence throws, naming it
     } else if (kind == model::OutputTargetKind::joint) {
       const model::Joint& joint = model.joint(index);
       count = spec.quantity == OutputQuantity::joint_position ? joint.nq() : joint.nv();
@@ -263,6 +285,10 @@ void OutputSet::evaluate(MultibodySystem& system, double t, const VecX& q, const
         out = (spec.quantity == OutputQuantity::body_angular_velocity ? r.w_FB_F : r.alpha_FB_F)[k];
         break;
       }
+      case OutputQuantity::body_euler_angles:
+      case OutputQuantity::body_euler_rates:
+        out = euler_value(model, data, spec, column.index, column.frame, t)[k];
+        break;
       case OutputQuantity::signal:
         out = system.signal_samples()[column.index].value;
         break;

@@ -25,6 +25,20 @@ Mat3 rotation_from_axis_angle(const Vec3& axis, double angle);
 /// other sequence, naming it.
 Mat3 rotation_from_euler(std::string_view sequence, const Vec3& angles);
 
+/// The three Euler angles (rad) of R in the named sequence, rotation_from_euler's inverse:
+/// rotation_from_euler(sequence, euler_from_rotation(sequence, R)) = R. The first and last lie in
+/// (−π, π]; the middle one in [0, π] for a proper sequence (ZXZ) and [−π/2, π/2] for a Tait–Bryan
+/// one (ZYX). At gimbal lock (middle angle 0 or π, resp. ±π/2) the first and last angles are not
+/// unique: the third of an intrinsic sequence (the first of an extrinsic one) is set to 0.
+/// Throws InvalidArgument for an unknown sequence.
+Vec3 euler_from_rotation(std::string_view sequence, const Mat3& R);
+
+/// E with ω = E ȧ: the angular velocity (in the fixed frame) of the rotation
+/// rotation_from_euler(sequence, a) when the angles change at ȧ. Its columns are the three
+/// rotation axes at `angles`; it is singular at gimbal lock (|det E| = |sin| resp. |cos| of the
+/// middle angle).
+Mat3 euler_rate_matrix(std::string_view sequence, const Vec3& angles);
+
 /// True when R is orthonormal with determinant +1 to within `tolerance` (max-norm of RᵀR − I).
 bool is_rotation_matrix(const Mat3& R, double tolerance = 1e-9);
 

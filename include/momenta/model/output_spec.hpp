@@ -27,6 +27,11 @@ enum class OutputQuantity {
   /// α_WB_W (rad/s²); with a frame F, α_FB_F: the rate of w_FB as an observer fixed in F sees
   /// it, (α_WB − α_WF) − w_WF × (w_WB − w_WF), in F's axes.
   body_angular_acceleration,
+  /// The body's Euler angles in OutputSpec::sequence (rad): of R_WB, or R_FB with a frame F
+  /// (math/rotation.hpp, euler_from_rotation).
+  body_euler_angles,
+  /// Their rates (rad/s), E(angles)⁻¹ w_FB_F (euler_rate_matrix); undefined at gimbal lock.
+  body_euler_rates,
   // Rotating-frame terms of P's motion seen from a frame F (dynamics/relative_kinematics.hpp);
   // they need a frame.
   transport_velocity,        ///< v_Fo + Ω × r (m/s)
@@ -72,6 +77,12 @@ struct OutputSpec {
   /// world). The position is then p_FoP_F, the velocity and acceleration are relative to F
   /// (v_rel, a_rel) and the angular velocity is w_FB_F; every vector is in F's axes.
   std::string relative_to = {};
+  /// Euler angles and rates: the sequence, one of the 12 of rotation_from_euler (upper case
+  /// intrinsic). ZXZ by default: precession, nutation, spin — a top's angles.
+  std::string sequence = "ZXZ";
 };
+
+/// True for the Euler angles and their rates (three values, not a vector).
+bool is_euler_quantity(OutputQuantity quantity);
 
 }  // namespace momenta::model

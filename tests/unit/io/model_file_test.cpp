@@ -342,6 +342,29 @@ simulation: {duration: 2, step: 0.01, integrator: dopri5, rtol: 1e-8, atol: 1e-1
   EXPECT_EQ(*file.simulation.absolute_tolerance, 1e-10);
 }
 
+TEST(ModelFileOutputs, EulerAnglesTakeASequenceAndNumberedComponents) {
+  const ModelFile file = parse(kPendulum + R"(outputs:
+  - {body: bob, quantity: euler_angles}
+  - {name: yaw_rate, body: bob, quantity: euler_rates, sequence: zyx, component: 0}
+)");
+  ASSERT_EQ(file.outputs.size(), 2u);
+  EXPECT_EQ(file.outputs[0].name, "bob.euler_angles");
+  EXPECT_EQ(file.outputs[0].quantity, model::OutputQuantity::body_euler_angles);
+  EXPECT_EQ(file.outputs[0].sequence, "ZXZ");  // the default: precession, nutation, spin
+  EXPECT_EQ(file.outputs[1].quantity, model::OutputQuantity::body_euler_rates);
+  EXPECT_EQ(file.outputs[1].sequence, "zyx");
+  EXPECT_EQ(file.outputs[1].component, 0);
+  EXPECT_ERROR_AT(
+      error_of(kPendulum + "outputs:\n  - {body: bob, quantity: euler_angles, sequence: ZZX}\n"),
+      "m.yaml:13:51: outputs[0].sequence: ", "Euler sequence 'ZZX' is not one of the 12");
+  EXPECT_ERROR_AT(
+      error_of(kPendulum + "outputs:\n  - {body: bob, quantity: position, sequence: ZYX}\n"),
+      "m.yaml:13:", "only euler_angles and euler_rates take a 'sequence'");
+  EXPECT_ERROR_AT(
+      error_of(kPendulum + "outputs:\n  - {body: bob, quantity: euler_rates, component: 3}\n"),
+      "m.yaml:13:", "component 3 of the Euler angles must be 0, 1 or 2");
+}
+
 // --- errors: every class at its file:line ----------------------------------------------------
 
 TEST(ModelFileErrors, MalformedYaml) {
