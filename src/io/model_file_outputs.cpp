@@ -215,7 +215,7 @@ model::OutputSpec read_output(const YamlNode& e, const Context& ctx, const model
     }
     spec.sequence = sequence->as_string();
     try {
-      rotation_from_euler(spec.sequence, Vec3::Zero());
+      check_euler_sequence(spec.sequence);
     } catch (const InvalidArgument& error) {
       sequence->fail(error.what());
     }

@@ -17,23 +17,20 @@ Mat3 elementary_rotation(int axis, double angle) {
 
 int axis_index(char c) { return std::tolower(static_cast<unsigned char>(c)) - 'x'; }
 
-// Throws unless `sequence` is one of the 12 (three axis letters of one case, no neighbours equal).
-void check_euler_sequence(std::string_view sequence) {
-  bool valid = sequence.size() == 3;
-  if (valid) {
-    const bool upper = std::isupper(static_cast<unsigned char>(sequence[0])) != 0;
-    for (char c : sequence) {
-      valid = valid && (std::isupper(static_cast<unsigned char>(c)) != 0) == upper &&
-              axis_index(c) >= 0 && axis_index(c) <= 2;
-    }
-    valid = valid && sequence[0] != sequence[1] && sequence[1] != sequence[2];
-  }
-  if (!valid) {
-    throw InvalidArgument(fmt::format(
-        "Euler sequence '{}' is not one of the 12 sequences such as 'ZYX' (intrinsic, upper case) "
-        "or 'zyx' (extrinsic, lower case)",
-        sequence));
-  }
+bool is_upper(char c) { return std::isupper(static_cast<unsigned char>(c)) != 0; }
+
+// Upper case: intrinsic (about the moving axes).
+bool is_intrinsic(std::string_view sequence) { return is_upper(sequence[0]); }
+
+// ω = E ȧ of R = R_i(a0) R_j(a1) R_k(a2): ω = ȧ0 e_i + ȧ1 R_i e_j + ȧ2 R_i R_j e_k.
+Mat3 intrinsic_rate_matrix(int i, int j, int k, const Vec3& angles) {
+  const Mat3 I = Mat3::Identity();
+  const Mat3 R0 = elementary_rotation(i, angles[0]);
+  Mat3 E;
+  E.col(0) = I.col(i);
+  E.col(1) = R0 * I.col(j);
+  E.col(2) = R0 * elementary_rotation(j, angles[1]) * I.col(k);
+  return E;
 }
 
 // The parity of the axis permutation (i, j, k): +1 for a cyclic one (x, y, z), −1 otherwise.
@@ -81,6 +78,23 @@ Mat3 rotation_from_axis_angle(const Vec3& axis, double angle) {
   return Eigen::AngleAxisd(angle, axis / n).toRotationMatrix();
 }
 
+void check_euler_sequence(std::string_view sequence) {
+  bool valid = sequence.size() == 3;
+  if (valid) {
+    for (char c : sequence) {
+      valid = valid && is_upper(c) == is_intrinsic(sequence) && axis_index(c) >= 0 &&
+              axis_index(c) <= 2;
+    }
+    valid = valid && sequence[0] != sequence[1] && sequence[1] != sequence[2];
+  }
+  if (!valid) {
+    throw InvalidArgument(fmt::format(
+        "Euler sequence '{}' is not one of the 12 sequences such as 'ZYX' (intrinsic, upper case) "
+        "or 'zyx' (extrinsic, lower case)",
+        sequence));
+  }
+}
+
 Mat3 rotation_from_euler(std::string_view sequence, const Vec3& angles) {
   check_euler_sequence(sequence);
   if (!angles.allFinite()) {
@@ -91,8 +105,7 @@ Mat3 rotation_from_euler(std::string_view sequence, const Vec3& angles) {
   const Mat3 R1 = elementary_rotation(axis_index(sequence[1]), angles[1]);
   const Mat3 R2 = elementary_rotation(axis_index(sequence[2]), angles[2]);
   // Intrinsic rotations compose about the moving axes (post-multiply), extrinsic about the fixed.
-  const bool intrinsic = std::isupper(static_cast<unsigned char>(sequence[0])) != 0;
-  return intrinsic ? Mat3(R0 * R1 * R2) : Mat3(R2 * R1 * R0);
+  return is_intrinsic(sequence) ? Mat3(R0 * R1 * R2) : Mat3(R2 * R1 * R0);
 }
 
 Vec3 euler_from_rotation(std::string_view sequence, const Mat3& R) {
@@ -101,8 +114,7 @@ Vec3 euler_from_rotation(std::string_view sequence, const Mat3& R) {
             a2 = axis_index(sequence[2]);
   // Extrinsic "abc" is R = R_c(γ) R_b(β) R_a(α): the intrinsic sequence "CBA" with the angles
   // reversed.
-  if (std::isupper(static_cast<unsigned char>(sequence[0])) != 0)
-    return intrinsic_angles(a0, a1, a2, R);
+  if (is_intrinsic(sequence)) return intrinsic_angles(a0, a1, a2, R);
   const Vec3 reversed = intrinsic_angles(a2, a1, a0, R);
   return {reversed[2], reversed[1], reversed[0]};
 }
@@ -111,22 +123,12 @@ Mat3 euler_rate_matrix(std::string_view sequence, const Vec3& angles) {
   check_euler_sequence(sequence);
   const int a0 = axis_index(sequence[0]), a1 = axis_index(sequence[1]),
             a2 = axis_index(sequence[2]);
-  const Mat3 I = Mat3::Identity();
-  Mat3 E;
-  if (std::isupper(static_cast<unsigned char>(sequence[0])) != 0) {
-    // R = R_0 R_1 R_2: ω = ȧ0 e_0 + ȧ1 R_0 e_1 + ȧ2 R_0 R_1 e_2.
-    const Mat3 R0 = elementary_rotation(a0, angles[0]);
-    E.col(0) = I.col(a0);
-    E.col(1) = R0 * I.col(a1);
-    E.col(2) = R0 * elementary_rotation(a1, angles[1]) * I.col(a2);
-  } else {
-    // R = R_2 R_1 R_0: ω = ȧ2 e_2 + ȧ1 R_2 e_1 + ȧ0 R_2 R_1 e_0.
-    const Mat3 R2 = elementary_rotation(a2, angles[2]);
-    E.col(2) = I.col(a2);
-    E.col(1) = R2 * I.col(a1);
-    E.col(0) = R2 * elementary_rotation(a1, angles[1]) * I.col(a0);
-  }
-  return E;
+  if (is_intrinsic(sequence)) return intrinsic_rate_matrix(a0, a1, a2, angles);
+  // Extrinsic "abc" is the intrinsic "CBA" with the angles, and so the columns, reversed.
+  const Mat3 E = intrinsic_rate_matrix(a2, a1, a0, Vec3(angles[2], angles[1], angles[0]));
+  Mat3 reversed;
+  reversed << E.col(2), E.col(1), E.col(0);
+  return reversed;
 }
 
 bool is_rotation_matrix(const Mat3& R, double tolerance) {

@@ -180,7 +180,7 @@ OutputSet::OutputSet(const model::Model& model, std::vector<OutputSpec> specs)
       by_axis = true;
     } else if (model::is_euler_quantity(spec.quantity)) {
       count = 3;  // suffixed .0 .1 .2, in the sequence's order
-      rotation_from_euler(spec.sequence, Vec3::Zero());  // an unknown sequence throws, naming it
+      check_euler_sequence(spec.sequence);
     } else if (kind == model::OutputTargetKind::joint) {
       const model::Joint& joint = model.joint(index);
       count = spec.quantity == OutputQuantity::joint_position ? joint.nq() : joint.nv();

@@ -25,6 +25,10 @@ Mat3 rotation_from_axis_angle(const Vec3& axis, double angle);
 /// other sequence, naming it.
 Mat3 rotation_from_euler(std::string_view sequence, const Vec3& angles);
 
+/// Throws InvalidArgument, naming it, unless `sequence` is one of the 12 Euler sequences
+/// (three axis letters of one case, no two neighbours equal).
+void check_euler_sequence(std::string_view sequence);
+
 /// The three Euler angles (rad) of R in the named sequence, rotation_from_euler's inverse:
 /// rotation_from_euler(sequence, euler_from_rotation(sequence, R)) = R. The first and last lie in
 /// (−π, π]; the middle one in [0, π] for a proper sequence (ZXZ) and [−π/2, π/2] for a Tait–Bryan

@@ -15,25 +15,12 @@
 #include "momenta/common/error.hpp"
 #include "momenta/simulate/conservation_audit.hpp"
 #include "momenta/simulate/simulation.hpp"
+#include "momenta_test/flyball_governor_reference.hpp"
 
 namespace momenta {
 namespace {
 
-struct GovernorReference {
-  double t;      // s
-  double s;      // m: the slider's height
-  double omega;  // rad/s: the shaft's speed
-};
-
-// scripts/reference/flyball_governor.py (SciPy Radau, rtol = atol = 1e-12).
-const std::vector<GovernorReference> kGovernor = {
-    {0.1, 0.523836475570, 6.103717808831}, {0.2, 0.585079811821, 5.722380645600},
-    {0.5, 0.743249424786, 5.103415421972}, {1.0, 0.501420922380, 6.271125741877},
-    {2.0, 0.505909294297, 6.236223614436}, {3.0, 0.513246078340, 6.180672706286},
-    {4.0, 0.523223371026, 6.108008053110}, {5.0, 0.535563103722, 6.022496499759},
-    {6.0, 0.549928665906, 5.928650227064}, {7.0, 0.565938157719, 5.830800910953},
-    {8.0, 0.583178336710, 5.732788321369}, {9.0, 0.601218402047, 5.637779256048},
-    {10.0, 0.619622917061, 5.548203622656}};
+using test::kFlyballGovernor;
 
 struct GovernorRun {
   simulate::SimulationSummary summary;
@@ -59,14 +46,14 @@ GovernorRun run_governor(const std::string& integrator, double step, double rtol
   std::size_t next = 0;
   for (const auto& row : table.rows) {
     result.worst_h_z = std::max(result.worst_h_z, std::abs(row[h_z] - h_z0) / h_z0);
-    if (next < kGovernor.size() && std::abs(row[time] - kGovernor[next].t) < 1e-9) {
-      result.worst_s = std::max(result.worst_s, std::abs(row[s] - kGovernor[next].s));
+    if (next < kFlyballGovernor.size() && std::abs(row[time] - kFlyballGovernor[next].t) < 1e-9) {
+      result.worst_s = std::max(result.worst_s, std::abs(row[s] - kFlyballGovernor[next].s));
       result.worst_omega =
-          std::max(result.worst_omega, std::abs(row[omega] - kGovernor[next].omega));
+          std::max(result.worst_omega, std::abs(row[omega] - kFlyballGovernor[next].omega));
       ++next;
     }
   }
-  EXPECT_EQ(next, kGovernor.size()) << integrator << ": not every reference time was a row";
+  EXPECT_EQ(next, kFlyballGovernor.size()) << integrator << ": not every reference time was a row";
   return result;
 }
 
