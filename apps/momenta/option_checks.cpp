@@ -12,6 +12,7 @@
 
 #include "momenta/common/error.hpp"
 #include "momenta/io/yaml_reader.hpp"
+#include "momenta/model/event_spec.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -52,6 +53,19 @@ CLI::Validator bounded_number(Holds holds, const char* requirement, const char* 
 
 CLI::Validator positive_finite() {
   return bounded_number([](double x) { return x > 0; }, "a positive finite number", "POSITIVE");
+}
+
+CLI::Validator event_condition() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        try {
+          model::parse_event_condition(text);
+        } catch (const InvalidArgument& e) {
+          return e.what();
+        }
+        return "";
+      },
+      "CONDITION");
 }
 
 CLI::Validator non_negative_finite() {

@@ -33,6 +33,10 @@ CLI::Validator finite();
 /// A whole number from 1 up (a row stride, a count).
 CLI::Validator whole_number_from_one(long long most = std::numeric_limits<int>::max());
 
+/// An event condition, 'QUANTITY < VALUE' (model::parse_event_condition's form); whether the
+/// quantity exists is the run's business.
+CLI::Validator event_condition();
+
 /// Refuses an output path that names a folder; whether an existing file may be overwritten is
 /// the command's business (--force).
 CLI::Validator not_a_folder();

@@ -15,6 +15,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -23,6 +25,7 @@
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
 #include "momenta/io/model_file.hpp"
+#include "momenta/model/event_spec.hpp"
 #include "momenta/model/integrators.hpp"
 #include "momenta/report/report.hpp"
 #include "momenta/simulate/csv_writer.hpp"
@@ -43,6 +46,8 @@ struct SimulateOptions {
   std::optional<std::string> integrator;
   std::optional<std::string> output;
   std::optional<long> every;
+  std::vector<std::string> events;     // --event: conditions recorded
+  std::vector<std::string> stop_when;  // --stop-when: conditions that end the run
   bool force = false;
   bool reactions = false;
   bool quiet = false;
@@ -85,6 +90,14 @@ simulate::SimulationOptions merge(const SimulateOptions& o, const model::Simulat
   request.integrator = o.integrator;
   request.every = o.every;
   request.reactions = o.reactions;
+  for (const auto& [conditions, action] : {std::pair{&o.events, model::EventAction::record},
+                                           std::pair{&o.stop_when, model::EventAction::stop}}) {
+    for (const std::string& condition : *conditions) {
+      model::EventSpec event = model::parse_event_condition(condition);
+      event.action = action;
+      request.events.push_back(std::move(event));
+    }
+  }
   simulate::ResolvedRun resolved;
   try {
     resolved = simulate::resolve_run(request, file);
@@ -265,6 +278,18 @@ void add_run_options(CLI::App* command, SimulateOptions& o) {
                                "rows of a longer fixed-step run; the last step is always recorded)",
                                simulate::kDefaultRows))
       ->check(whole_number_from_one());
+  command
+      ->add_option("--event", o.events,
+                   "A condition to watch, 'QUANTITY < VALUE', '> VALUE' or '= VALUE' on a "
+                   "column (a coordinate, a speed, an energy, an output): each time it turns "
+                   "true, a row at that time (located to 1e-14 relative) and a line in the "
+                   "summary. Repeatable. docs/cli.md")
+      ->check(event_condition());
+  command
+      ->add_option("--stop-when", o.stop_when,
+                   "Like --event, and the run ends at the first time the condition turns true "
+                   "(e.g. 'tension < 0': a wire goes slack). Repeatable")
+      ->check(event_condition());
   command->add_flag("--quiet,-q", o.quiet,
                     "No progress line on the terminal (it is shown only when stderr is one)");
 }

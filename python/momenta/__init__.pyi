@@ -604,7 +604,7 @@ def relative_kinematics(model: Model, body: ArrayLike, *, point: object = None, 
     """The motion of the point `point` (m, in the body's frame; its origin by default) of `body` seen from the frame of body `frame` at (t, q, v) (without q and v, the state its run reaches at t), split into relative, frame-origin, Euler, centripetal and Coriolis terms, every vector in the frame's axes, as"""
     ...
 
-def simulate(model: Model, *, duration: Optional[float] = None, dt: Optional[float] = None, integrator: Optional[str] = None, rtol: Optional[float] = None, atol: Optional[float] = None, every: Optional[int] = None, reactions: bool = False) -> SimulationResult:
+def simulate(model: Model, *, duration: Optional[float] = None, dt: Optional[float] = None, integrator: Optional[str] = None, rtol: Optional[float] = None, atol: Optional[float] = None, every: Optional[int] = None, reactions: bool = False, events: List[str] = [], stop_when: List[str] = []) -> SimulationResult:
     """Integrates the model from its initial state, as `momenta simulate` does: keyword arguments override the model file's `simulation:` section, which overrides the defaults (duration 10 s, rk4 at dt 1 ms; rtol/atol alone choose dopri5; a fixed-step run longer than 10 000 steps records every n-th so 10 0"""
     ...
 

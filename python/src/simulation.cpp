@@ -15,6 +15,7 @@
 #include "bindings.hpp"
 #include "model_handle.hpp"
 #include "momenta/common/error.hpp"
+#include "momenta/model/event_spec.hpp"
 #include "momenta/report/report.hpp"
 #include "momenta/simulate/run_request.hpp"
 #include "momenta/simulate/simulation.hpp"
@@ -104,14 +105,38 @@ py::dict summary_of(const simulate::SimulationSummary& s) {
   // What the run tells about stiffness (an explicit method held, or unstable, by it), or None.
   const std::string stiffness = simulate::stiffness_note(s);
   d["stiffness"] = stiffness.empty() ? py::object(py::none()) : py::object(py::str(stiffness));
+  // The events that happened, in time order: name, condition, time, the quantity's value there
+  // and the action (the last is "stop" when one ended the run).
+  py::list events;
+  for (const simulate::EventOccurrence& e : s.events) {
+    py::dict event;
+    event["name"] = e.name;
+    event["condition"] = e.condition;
+    event["time"] = e.time;
+    event["value"] = e.value;
+    event["action"] = std::string(model::event_action_name(e.action));
+    events.append(event);
+  }
+  d["events"] = events;
   return d;
 }
 
 SimulationResult run_simulation(const ModelHandle& h, std::optional<double> duration,
                                 std::optional<double> dt, std::optional<std::string> integrator,
                                 std::optional<double> rtol, std::optional<double> atol,
-                                std::optional<long> every, bool reactions) {
-  simulate::RunRequest request{duration, dt, rtol, atol, std::move(integrator), every, reactions};
+                                std::optional<long> every, bool reactions,
+                                const std::vector<std::string>& events,
+                                const std::vector<std::string>& stop_when) {
+  simulate::RunRequest request{duration, dt,        rtol, atol, std::move(integrator),
+                               every,    reactions, {}};
+  for (const std::string& condition : events) {
+    request.events.push_back(model::parse_event_condition(condition));
+  }
+  for (const std::string& condition : stop_when) {
+    model::EventSpec event = model::parse_event_condition(condition);
+    event.action = model::EventAction::stop;
+    request.events.push_back(std::move(event));
+  }
   simulate::ResolvedRun resolved = simulate::resolve_run(request, h.file->simulation);
 
   // Ctrl-C: Python's signal handler only sets a flag; check it now and then and end the run.
@@ -253,13 +278,18 @@ An existing file is kept (FileError) unless force=True. Returns the path.)doc")
         py::arg("duration") = py::none(), py::arg("dt") = py::none(),
         py::arg("integrator") = py::none(), py::arg("rtol") = py::none(),
         py::arg("atol") = py::none(), py::arg("every") = py::none(), py::arg("reactions") = false,
+        py::arg("events") = std::vector<std::string>(),
+        py::arg("stop_when") = std::vector<std::string>(),
         R"doc(Integrates the model from its initial state, as `momenta simulate` does: keyword
 arguments override the model file's `simulation:` section, which overrides the defaults
 (duration 10 s, rk4 at dt 1 ms; rtol/atol alone choose dopri5; a fixed-step run longer than
 10 000 steps records every n-th so 10 001 rows remain unless `every` is given). integrator: rk4,
 symplectic_euler, dopri5, bdf or sdirk3 (stiff models), or a rigid-body method (splitting,
 splitting4, lie_group, exact).
-reactions=True adds every joint's reaction wrench. Raises InvalidArgument for a bad option,
+reactions=True adds every joint's reaction wrench. events: conditions to watch, each
+'QUANTITY < VALUE', '> VALUE' or '= VALUE' on a column ('tension < 0', 'pivot.angle = 0'): each
+time one turns true the table gets a row at that time and summary['events'] an entry;
+stop_when: the same, and the run ends at the first. Raises InvalidArgument for a bad option,
 NumericalError when the state stops being finite (naming the time and coordinate),
 KeyboardInterrupt on Ctrl-C.)doc");
 }

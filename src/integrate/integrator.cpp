@@ -1,6 +1,7 @@
 #include "momenta/integrate/integrator.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -28,6 +29,10 @@ void check_tolerances(std::string_view integrator, const Tolerances& tolerances)
         integrator, tolerances.relative, tolerances.absolute, kSmallestRelativeTolerance,
         kSmallestAbsoluteTolerance));
   }
+}
+
+void Integrator::interpolate(const SecondOrderSystem&, double, State&) const {
+  throw std::logic_error(fmt::format("{} has no dense output: use StepInterpolant", name()));
 }
 
 const std::vector<std::string_view>& integrator_names() {

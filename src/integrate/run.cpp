@@ -95,7 +95,16 @@ RunSummary run(SecondOrderSystem& system, Integrator& integrator, State& state,
   check_run(system, integrator, state, options);
   const auto start = std::chrono::steady_clock::now();
   integrator.initialize(system, state);
+  const auto done = [&] { return options.finished != nullptr && *options.finished; };
+  const auto finish = [&] {
+    RunSummary summary;
+    summary.statistics = integrator.statistics();
+    summary.wall_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return summary;
+  };
   observer(state);
+  if (done()) return finish();
   const double t0 = state.t;
   const auto close = [&](double a, double b) {
     return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b));
@@ -142,13 +151,10 @@ RunSummary run(SecondOrderSystem& system, Integrator& integrator, State& state,
     ++k;
     reported = k % options.every == 0 || state.t == options.t_end;
     if (reported) observer(state);
+    if (done()) return finish();
   }
   if (!reported) observer(state);
-  RunSummary summary;
-  summary.statistics = integrator.statistics();
-  summary.wall_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return summary;
+  return finish();
 }
 
 }  // namespace momenta::integrate

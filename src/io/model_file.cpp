@@ -179,13 +179,53 @@ std::vector<ItemLocation> item_locations(const Context& ctx) {
 
 }  // namespace
 
+namespace {
+
+// `events:` of `simulation:` — each a condition "tension < 0" (recorded), or a map {name, when,
+// action}. Which quantities exist is checked once the outputs are known (frontend::accept_model).
+void read_events(const YamlNode& node, model::SimulationSettings& s) {
+  if (!node.is_sequence()) {
+    node.fail("a list of events: each 'QUANTITY < VALUE' or {name, when, action: record|stop}");
+  }
+  for (const YamlNode& item : node.elements()) {
+    const YamlNode when = item.is_map() ? item.at("when") : item;
+    if (item.is_map()) item.check_keys({"name", "when", "action"});
+    model::EventSpec event;
+    try {
+      event = model::parse_event_condition(when.as_string());
+    } catch (const InvalidArgument& e) {
+      when.fail(e.what());
+    }
+    if (item.is_map()) {
+      if (const auto name = item.find_string("name")) event.name = *name;
+      if (const auto action = item.find("action")) {
+        const std::string a = action->as_string();
+        if (a != "record" && a != "stop") {
+          action->fail(
+              fmt::format("'{}' is not an action: record (write a row and go on) or stop "
+                          "(end the run there)",
+                          a));
+        }
+        event.action = a == "stop" ? model::EventAction::stop : model::EventAction::record;
+      }
+    }
+    for (const model::EventSpec& other : s.events) {
+      if (other.name == event.name) item.fail(fmt::format("a second event named '{}'", event.name));
+    }
+    s.events.push_back(std::move(event));
+    s.event_positions.push_back({item.line(), item.column()});
+  }
+}
+
+}  // namespace
+
 // `simulation:` — defaults for `momenta simulate`.
 model::SimulationSettings detail::read_simulation(const YamlNode& root) {
   model::SimulationSettings s;
   const auto node = root.find("simulation");
   if (!node || node->is_null()) return s;
-  node->expect_map("a map {duration, step, integrator, rtol, atol, every}");
-  node->check_keys({"duration", "step", "integrator", "rtol", "atol", "every"});
+  node->expect_map("a map {duration, step, integrator, rtol, atol, every, events}");
+  node->check_keys({"duration", "step", "integrator", "rtol", "atol", "every", "events"});
   s.duration = node->find_number("duration", Bound::kPositive);
   s.step = node->find_number("step", Bound::kPositive);
   s.relative_tolerance = node->find_number("rtol", Bound::kPositive);
@@ -204,6 +244,7 @@ model::SimulationSettings detail::read_simulation(const YamlNode& root) {
     if (n < 1) every->fail(fmt::format("must be a whole number >= 1, got {}", n));
     s.every = static_cast<long>(n);
   }
+  if (const auto events = node->find("events")) read_events(*events, s);
   if (s.step && s.duration && *s.step > *s.duration) {
     node->at("step").fail(
         fmt::format("step {} s is longer than the duration {} s", *s.step, *s.duration));

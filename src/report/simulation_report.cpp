@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "momenta/common/error.hpp"
+#include "momenta/model/event_spec.hpp"
 #include "momenta/model/integrators.hpp"
 #include "momenta/report/report.hpp"
 #include "momenta/system/freedoms.hpp"
@@ -50,6 +51,14 @@ json summary_json(const SimulationRun& run, double fastest_rate) {
                      {"allowed", allowed},
                      {"verdict", ok ? "pass" : "warn"}});
   }
+  json events = json::array();
+  for (const simulate::EventOccurrence& e : s.events) {
+    events.push_back({{"name", e.name},
+                      {"condition", e.condition},
+                      {"time", e.time},
+                      {"value", e.value},
+                      {"action", model::event_action_name(e.action)}});
+  }
   return {{"model", file.name},
           {"description", file.description},
           {"file", file.file},
@@ -69,6 +78,7 @@ json summary_json(const SimulationRun& run, double fastest_rate) {
           {"wall_seconds", s.wall_seconds},
           {"stop_reason", run.stop_reason},
           {"audit", audit},
+          {"events", events},
           {"verdict", s.audit.empty() ? "none" : (pass ? "pass" : "warn")}};
 }
 

@@ -1,5 +1,6 @@
 #include "momenta/simulate/run_request.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -57,6 +58,16 @@ ResolvedRun resolve_run(const RunRequest& request, const model::SimulationSettin
     }
   }
   s.reactions = request.reactions;
+  s.events = file.events;
+  for (const model::EventSpec& event : request.events) {
+    const auto same = std::find_if(s.events.begin(), s.events.end(),
+                                   [&](const model::EventSpec& e) { return e.name == event.name; });
+    if (same != s.events.end()) {
+      *same = event;  // the caller's action for the file's condition
+    } else {
+      s.events.push_back(event);
+    }
+  }
   return resolved;
 }
 

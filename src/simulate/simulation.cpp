@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -86,6 +87,7 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
                     "symplectic_euler",
                     options_.integrator));
   }
+  events_ = std::make_unique<EventMonitor>(model, outputs_.specs(), options_.events);
 
   // The columns that do not depend on what the model conserves, each with its unit.
   const auto add = [this](std::string name, std::string unit) {
@@ -371,8 +373,27 @@ SimulationSummary Simulation::run(RowSink& sink) {
   run_options.h = options_.step;
   run_options.every = 1;
   long step = -1;
+  // Events: the state at the last step's end (the next step's start), and at an event.
+  integrate::State previous = state, at_event = state;
+  bool finished = false;
+  run_options.finished = &finished;
   const auto observe = [&](const integrate::State& s) {
     ++step;
+    if (!events_->empty()) {
+      if (step == 0) events_->start(recorder.system(), s);
+      for (const EventOccurrence& o :
+           step == 0 ? std::span<const EventOccurrence>()
+                     : events_->check(recorder.system(), *integrator_, previous, s)) {
+        events_->state_at(recorder.system(), o.time, at_event);
+        recorder.observe(at_event, true);
+        summary.events.push_back(o);
+        finished = o.action == model::EventAction::stop;
+      }
+      if (finished) return;
+      previous.t = s.t;
+      previous.q = s.q;
+      previous.v = s.v;
+    }
     recorder.observe(s, step % options_.every == 0 || s.t >= options_.duration);
   };
   try {
@@ -396,7 +417,7 @@ SimulationSummary Simulation::run(RowSink& sink) {
     throw;
   }
   sink.flush();
-  summary.t_end = state.t;
+  summary.t_end = finished ? at_event.t : state.t;
   summary.rows = recorder.rows();
   summary.audit = recorder.audit().entries();
   return summary;
@@ -448,6 +469,30 @@ std::string stiffness_note(const SimulationSummary& s) {
   return "";
 }
 
+namespace {
+// The events that happened: each on a line, or the first few of many and how many there were.
+std::string format_events(const std::vector<EventOccurrence>& events) {
+  constexpr std::size_t kListed = 8;
+  std::string out;
+  const std::size_t listed = events.size() <= kListed ? events.size() : kListed - 2;
+  for (std::size_t i = 0; i < listed; ++i) {
+    const EventOccurrence& e = events[i];
+    const std::string label =
+        e.name == e.condition ? e.name : fmt::format("{} ({})", e.name, e.condition);
+    out += fmt::format("{:<13}{} at t = {:.12g} s{}\n", i == 0 ? "events" : "", label, e.time,
+                       e.action == model::EventAction::stop ? ": the run stops there" : "");
+  }
+  if (listed < events.size()) {
+    const EventOccurrence& last = events.back();
+    out += fmt::format(
+        "{:<13}... {} events in all, the last {} at t = {:.12g} s{} (each is a row of the table)\n",
+        "", events.size(), last.name, last.time,
+        last.action == model::EventAction::stop ? ", which stops the run" : "");
+  }
+  return out;
+}
+}  // namespace
+
 std::string format_summary(const SimulationSummary& s) {
   std::string out;
   const std::string order =
@@ -471,6 +516,7 @@ std::string format_summary(const SimulationSummary& s) {
         "constraints  redundant rows (implied by the others; they carry no force): {}\n",
         fmt::join(s.redundant_constraint_rows, ", "));
   }
+  out += format_events(s.events);
   if (const std::string note = stiffness_note(s); !note.empty()) {
     out += fmt::format("stiffness    {}\n", note);
   }

@@ -192,6 +192,54 @@ TEST_F(SimulateCli, BadIntegratorAndOptions) {
   EXPECT_NE(missing.err.find("none.yaml"), std::string::npos) << missing.err;
 }
 
+// Events from the file and the command line: the rod's wire going slack ends the run on the
+// row of the event (its time in the summary); --event adds rows; a condition that is not one is
+// a usage error, a quantity the run lacks an error naming the ones there are — at the file's
+// line when the file names it.
+TEST_F(SimulateCli, EventsAddRowsAndStopTheRun) {
+  const fs::path csv_path = dir_ / "slack.csv";
+  const CliRun slack =
+      momenta("simulate " + quoted(example("constraints/rod_on_shaft_spinning_down.yaml")) +
+              " --output " + quoted(csv_path.string()));
+  ASSERT_EQ(slack.code, 0) << slack.err;
+  EXPECT_NE(slack.err.find("events       slack (tension < 0) at t = 4.02977959498 s: the run "
+                           "stops there"),
+            std::string::npos)
+      << slack.err;
+  const Csv csv = parse_csv(slurp(csv_path));
+  EXPECT_NEAR(csv.rows.back()[0], 4.02977959498, 1e-11);
+
+  const std::string pendulum = quoted(example("pendulum.yaml"));
+  const CliRun swings = momenta("simulate " + pendulum +
+                                " --duration 2 --dt 0.01 --event 'pivot.angle = 0' "
+                                "--stop-when 'pivot.angle_rate > 0'");
+  ASSERT_EQ(swings.code, 0) << swings.err;
+  // Through the bottom at a quarter period (0.6885 s); the swing turns at half of it (1.377 s).
+  EXPECT_NE(swings.err.find("events       pivot.angle = 0 at t = 0.688522"), std::string::npos)
+      << swings.err;
+  EXPECT_NE(swings.err.find("             pivot.angle_rate > 0 at t = 1.377044"), std::string::npos)
+      << swings.err;
+  const Csv rows = parse_csv(swings.out);
+  EXPECT_EQ(rows.rows.size(), 1u + 137u + 2u);  // t = 0, 137 steps to 1.37 s, two events
+
+  const CliRun not_one = momenta("simulate " + pendulum + " --event 'pivot.angle'");
+  EXPECT_EQ(not_one.code, 2) << not_one.err;
+  EXPECT_NE(not_one.err.find("no comparison"), std::string::npos) << not_one.err;
+  const CliRun unknown = momenta("simulate " + pendulum + " --stop-when 'pivot.angel < 0'");
+  EXPECT_EQ(unknown.code, 1) << unknown.err;
+  EXPECT_NE(unknown.err.find("did you mean 'pivot.angle'"), std::string::npos) << unknown.err;
+
+  const fs::path model = dir_ / "watch.yaml";
+  std::ofstream(model) << slurp(example("pendulum.yaml"))
+                       << "  events:\n    - {name: slack, when: tension < 0}\n";
+  const CliRun in_file = momenta("simulate " + quoted(model.string()));
+  EXPECT_EQ(in_file.code, 1) << in_file.err;
+  EXPECT_NE(in_file.err.find("watch.yaml:"), std::string::npos) << in_file.err;
+  EXPECT_NE(in_file.err.find("simulation.events[0]: event 'slack': no quantity 'tension'"),
+            std::string::npos)
+      << in_file.err;
+}
+
 // A model the reader accepts but the system layer refuses (the gimbal of crba_test rolled 90°: the
 // rod lies along the yaw axis, so nothing resists yaw at the initial state): every command that
 // reads models reports it at the joint's line, file:line:column.

@@ -133,6 +133,36 @@ def test_stiff_models_run_with_the_implicit_integrators():
     assert "--integrator bdf" in explicit.summary["stiffness"]
 
 
+def test_events_are_rows_and_entries_of_the_summary():
+    # The rod's wire goes slack (the file's stop event) at t_s = (15 − ω_s) I_z / 20, ω_s² =
+    # 3 g / (2 L cos β) (examples/constraints/rod_on_shaft_spinning_down.yaml): the same table as
+    # the command line's, ending on the event's row.
+    path = EXAMPLES / "constraints" / "rod_on_shaft_spinning_down.yaml"
+    run = momenta.simulate(momenta.load_model(path))
+    omega_s = np.sqrt(3 * 9.81 / (2 * 2.0 * np.cos(np.pi / 6)))
+    t_s = (15.0 - omega_s) * (0.5 * 5.0 * 0.03**2 + 20.0 * 4.0 * 0.25 / 3) / 20.0
+    [slack] = run.summary["events"]
+    assert slack["name"] == "slack" and slack["condition"] == "tension < 0"
+    assert slack["action"] == "stop"
+    assert abs(slack["time"] - t_s) < 1e-10 * t_s
+    assert run["time"][-1] == slack["time"] == run.summary["t_end"]
+    assert abs(run["shaft_speed"][-1] - omega_s) < 1e-10 * omega_s
+    header, table = cli_csv("simulate", path, "--quiet")
+    np.testing.assert_array_equal(run.data, table)
+    # From the caller: a record event each time the pendulum passes the bottom, a stop when it
+    # first swings back up.
+    pendulum = momenta.load_model(EXAMPLES / "pendulum.yaml")
+    swings = momenta.simulate(pendulum, duration=2.0, dt=0.01, events=["pivot.angle = 0"],
+                              stop_when=["pivot.angle_rate > 0"])
+    assert [e["name"] for e in swings.summary["events"]] == ["pivot.angle = 0",
+                                                              "pivot.angle_rate > 0"]
+    assert [e["action"] for e in swings.summary["events"]] == ["record", "stop"]
+    with pytest.raises(momenta.InvalidArgument, match="no comparison"):
+        momenta.simulate(pendulum, events=["pivot.angle"])
+    with pytest.raises(momenta.InvalidArgument, match="did you mean 'pivot.angle'"):
+        momenta.simulate(pendulum, stop_when=["pivot.angel < 0"])
+
+
 def test_a_file_name_where_a_model_belongs_says_what_to_pass():
     # pybind11 would list C++ signatures ("incompatible function arguments"); the message says
     # how to make the Model, and the stubs keep `model: Model`.

@@ -11,7 +11,8 @@
 namespace momenta::frontend {
 
 /// Checks that a model file's model can be simulated (the system layer accepts it: the mass
-/// matrix invertible at the initial state); an error about one of its items is rethrown as
+/// matrix invertible at the initial state) and that every event of its `simulation:` section
+/// watches a quantity the run has; an error about one of its items or events is rethrown as
 /// ParseError at the line that declares it, others as they are. A model made in code is wrapped
 /// in a ModelFile with no item locations.
 void accept_model(const io::ModelFile& file);

@@ -60,6 +60,14 @@ class Integrator {
   /// underflow).
   virtual double step(SecondOrderSystem& system, State& state, double h) = 0;
 
+  /// True when interpolate() gives the state inside the last step from the method's own dense
+  /// output (dopri5's, of order four); the others leave it to StepInterpolant's cubic Hermite
+  /// interpolation (integrate/step_interpolant.hpp).
+  virtual bool has_dense_output() const { return false; }
+  /// The state at t within the last step taken, from the dense output, before any projection
+  /// (has_dense_output() only; the default throws std::logic_error).
+  virtual void interpolate(const SecondOrderSystem& system, double t, State& out) const;
+
   /// The state was changed between steps (projected onto constraints): forget anything kept
   /// from the last step's end (dopri5's first-same-as-last derivative). The default keeps nothing.
   virtual void state_changed() {}

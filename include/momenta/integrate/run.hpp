@@ -17,6 +17,9 @@ struct RunOptions {
   double t_end = 0.0;  ///< final time, s (> state.t)
   double h = 0.0;      ///< fixed step, or the largest step of an adaptive method, s (> 0)
   long every = 1;      ///< report every `every`-th step (the first and last states always)
+  /// When set, the run ends as soon as the observer has made it true (an event that stops the
+  /// run): run() returns after that call, with `state` at the step the observer was handed.
+  const bool* finished = nullptr;
 };
 
 struct RunSummary {

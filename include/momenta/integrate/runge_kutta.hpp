@@ -61,7 +61,8 @@ class DormandPrince5 final : public Integrator {
 
   /// The state at time t within the last accepted step [t_prev, t] from the dense output (fourth
   /// order); `out` must be sized like the state. Throws InvalidArgument outside that interval.
-  void interpolate(const SecondOrderSystem& system, double t, State& out) const;
+  bool has_dense_output() const override { return true; }
+  void interpolate(const SecondOrderSystem& system, double t, State& out) const override;
 
   /// The step size the controller proposes next.
   double proposed_step() const { return h_; }

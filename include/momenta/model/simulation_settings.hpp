@@ -5,6 +5,9 @@
 
 #include <optional>
 #include <string>
+#include <vector>
+
+#include "momenta/model/event_spec.hpp"
 
 namespace momenta::model {
 
@@ -14,7 +17,13 @@ struct SimulationSettings {
   std::optional<std::string> integrator;  ///< a name of model::integrators() (integrators.hpp)
   std::optional<double> relative_tolerance;
   std::optional<double> absolute_tolerance;
-  std::optional<long> every;  ///< record every n-th step
+  std::optional<long> every;      ///< record every n-th step
+  std::vector<EventSpec> events;  ///< conditions the run watches (event_spec.hpp)
+  /// Where the file writes each event (1-based line and column), for messages about it.
+  struct Position {
+    int line = 0, column = 0;
+  };
+  std::vector<Position> event_positions;
 };
 
 }  // namespace momenta::model

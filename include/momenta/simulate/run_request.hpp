@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "momenta/model/simulation_settings.hpp"
 #include "momenta/simulate/simulation.hpp"
@@ -20,6 +21,9 @@ struct RunRequest {
   std::optional<std::string> integrator;  ///< a name of model::integrators()
   std::optional<long> every;              ///< record every n-th step
   bool reactions = false;
+  /// Events watched besides the file's (model/event_spec.hpp); one named like a file's event
+  /// replaces it (`--stop-when` on a condition the file records).
+  std::vector<model::EventSpec> events;
 };
 
 /// Adaptive methods without a step given take at most duration / kAdaptiveSteps per step, so a
@@ -45,7 +49,8 @@ struct ResolvedRun {
 ///    else rk4;
 ///  - the step: the request's, the file's, or 1 ms (an adaptive method: duration / 1000);
 ///  - every: the request's, the file's, or 1, thinned to keep kDefaultRows rows of a fixed-step
-///  run.
+///  run;
+///  - events: the file's, then the request's (which replace the file's of the same name).
 /// Throws InvalidArgument for an unknown integrator (with the known names), and when the request
 /// gives a tolerance for a fixed-step integrator (naming it). Checks of the values themselves
 /// (positive, finite) are Simulation's.

@@ -55,6 +55,7 @@
 #include "momenta/integrate/stiffness.hpp"
 #include "momenta/model/model.hpp"
 #include "momenta/simulate/conservation_audit.hpp"
+#include "momenta/simulate/event_monitor.hpp"
 #include "momenta/system/constraint_solver.hpp"
 #include "momenta/system/output_set.hpp"
 
@@ -72,6 +73,9 @@ struct SimulationOptions {
   integrate::Tolerances tolerances;  ///< adaptive methods (dopri5, bdf) only
   long every = 1;          ///< record every n-th step (≥ 1); the first and last states always
   bool reactions = false;  ///< add every joint's reaction wrench to each row
+  /// Conditions watched between steps (model/event_spec.hpp, simulate/event_monitor.hpp): each
+  /// time one turns true the run writes a row at that time, and a `stop` event ends the run there.
+  std::vector<model::EventSpec> events;
   /// When set and it becomes true (a signal handler's flag), the run records the state it has
   /// reached as a last whole row, flushes the sink and throws Interrupted.
   const std::atomic<bool>* stop = nullptr;
@@ -132,6 +136,9 @@ struct SimulationSummary {
   bool stiffness_checked = false;
   std::complex<double> fastest_eigenvalue{0.0, 0.0};  ///< 1/s
   integrate::StepStability step_stability;
+  /// Every event that happened, in time order (each also a row of the table); the last one's
+  /// action is stop when an event ended the run (t_end is then its time).
+  std::vector<EventOccurrence> events;
 };
 
 /// The most velocity coordinates for which a run examines the linearization's eigenvalues (a
@@ -148,7 +155,8 @@ class Simulation {
  public:
   /// Checks the options, resolves the outputs against `model` (which must outlive this) and
   /// makes the integrator. Throws InvalidArgument naming the option and its value (duration or
-  /// step not positive and finite, every < 1, an unknown integrator) or the output at fault.
+  /// step not positive and finite, every < 1, an unknown integrator), the output at fault, or
+  /// an event that watches no quantity of the run (check_event).
   Simulation(const model::Model& model, std::vector<model::OutputSpec> outputs,
              SimulationOptions options);
   ~Simulation();
@@ -167,6 +175,8 @@ class Simulation {
   /// coordinates set from their signals) to options().duration, handing sink.begin() the
   /// columns and sink.row() every recorded row, then flushes the sink. The step loop does not
   /// allocate (the sink aside). May be called again; each call starts afresh.
+  /// Each event that happens adds a row at its time (simulate/event_monitor.hpp); one whose
+  /// action is stop makes that row the last.
   ///
   /// Throws NumericalError when the state stops being finite, naming the time, the coordinate
   /// and a hint (integrate::run), or when a recorded quantity overflows (naming the column), with
@@ -185,6 +195,7 @@ class Simulation {
   SimulationOptions options_;
   system::OutputSet outputs_;
   std::unique_ptr<integrate::Integrator> integrator_;
+  std::unique_ptr<EventMonitor> events_;
   std::vector<std::string> columns_;
   std::vector<std::string> units_;
 };

@@ -453,6 +453,44 @@ joints:
                   "m.yaml:4:5: joints[0]: ", "joint 'drive' carries only massless bodies");
 }
 
+TEST(ModelFileSimulation, EventsAreConditionsOrMapsWithANameAndAnAction) {
+  const ModelFile file = parse(kPendulum + R"(simulation:
+  events:
+    - pivot.angle = 0
+    - {name: up, when: "pivot.angle_rate > 2.5", action: stop}
+    - {when: energy_kinetic < 1e-3, action: record}
+)");
+  const auto& events = file.simulation.events;
+  ASSERT_EQ(events.size(), 3u);
+  EXPECT_EQ(events[0].name, "pivot.angle = 0");
+  EXPECT_EQ(events[0].quantity, "pivot.angle");
+  EXPECT_EQ(events[0].direction, model::EventDirection::either);
+  EXPECT_EQ(events[0].action, model::EventAction::record);
+  EXPECT_EQ(events[1].name, "up");
+  EXPECT_EQ(events[1].direction, model::EventDirection::rising);
+  EXPECT_EQ(events[1].value, 2.5);
+  EXPECT_EQ(events[1].action, model::EventAction::stop);
+  EXPECT_EQ(events[2].quantity, "energy_kinetic");
+  EXPECT_EQ(events[2].value, 1e-3);
+  ASSERT_EQ(file.simulation.event_positions.size(), 3u);
+  EXPECT_EQ(file.simulation.event_positions[1].line, 15);
+}
+
+TEST(ModelFileSimulation, ABadEventIsReportedAtItsLine) {
+  EXPECT_ERROR_AT(error_of(kPendulum + "simulation:\n  events:\n    - pivot.angle\n"),
+                  "m.yaml:14:7: simulation.events[0]: ", "no comparison (<, > or =)");
+  EXPECT_ERROR_AT(
+      error_of(kPendulum + "simulation:\n  events:\n    - {when: x < 1, action: halt}\n"),
+      "m.yaml:14:", "'halt' is not an action: record (write a row and go on) or stop");
+  EXPECT_ERROR_AT(
+      error_of(kPendulum + "simulation:\n  events:\n    - {when: x < 1, acton: stop}\n"),
+      "m.yaml:14:", "did you mean 'action'");
+  EXPECT_ERROR_AT(error_of(kPendulum + "simulation:\n  events:\n    - x < 1\n    - x < 1\n"),
+                  "m.yaml:15:", "a second event named 'x < 1'");
+  EXPECT_ERROR_AT(error_of(kPendulum + "simulation:\n  events: {when: x < 1}\n"),
+                  "m.yaml:13:", "a list of events");
+}
+
 TEST(ModelFileSimulation, EveryRegisteredIntegratorIsAcceptedByName) {
   for (const char* name :
        {"rk4", "symplectic_euler", "dopri5", "splitting", "splitting4", "lie_group", "exact"}) {

@@ -1,0 +1,220 @@
+#include "momenta/simulate/event_monitor.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include <fmt/format.h>
+#include <boost/math/tools/toms748_solve.hpp>
+
+#include "momenta/common/error.hpp"
+#include "momenta/common/suggest.hpp"
+#include "momenta/system/multibody_system.hpp"
+
+namespace momenta::simulate {
+namespace {
+
+using model::EventDirection;
+using system::MultibodySystem;
+
+constexpr const char* kEnergies[] = {"energy_kinetic", "energy_potential", "energy_total"};
+
+// The side of the value a quantity is on: −1 below, +1 above, 0 on it; kUnknown before the
+// quantity has left a value it started on.
+constexpr int kUnknown = 2;
+
+int side_of(double offset) { return offset < 0.0 ? -1 : offset > 0.0 ? 1 : 0; }
+
+// Whether moving from side `before` to side `after` makes the condition true, and which way:
+// −1 into "below", +1 into "above", 0 no.
+int crossing(EventDirection direction, int before, int after) {
+  if (before == kUnknown || after == 0) return 0;
+  const bool falls = after == -1 && before != -1;
+  const bool rises = after == 1 && before != 1;
+  switch (direction) {
+    case EventDirection::falling:
+      return falls ? -1 : 0;
+    case EventDirection::rising:
+      return rises ? 1 : 0;
+    case EventDirection::either:
+      return falls ? -1 : rises ? 1 : 0;
+  }
+  return 0;
+}
+
+}  // namespace
+
+std::vector<std::string> event_quantities(const model::Model& model,
+                                          const std::vector<model::OutputSpec>& outputs) {
+  std::vector<std::string> names;
+  for (int i = 0; i < model.nq(); ++i) names.push_back(model.q_name(i));
+  for (int i = 0; i < model.nv(); ++i) names.push_back(model.v_name(i));
+  for (const char* energy : kEnergies) names.emplace_back(energy);
+  const system::OutputSet set(model, outputs);
+  for (const std::string& column : set.column_names()) names.push_back(column);
+  return names;
+}
+
+void check_event(const model::Model& model, const std::vector<model::OutputSpec>& outputs,
+                 const model::EventSpec& event) {
+  const std::vector<std::string> names = event_quantities(model, outputs);
+  if (std::find(names.begin(), names.end(), event.quantity) != names.end()) return;
+  const std::vector<std::string_view> candidates(names.begin(), names.end());
+  throw InvalidArgument(fmt::format(
+      "event '{}': no quantity '{}'{} to watch; an event watches a coordinate, a speed, an energy "
+      "or an output of the model: {}",
+      event.name, event.quantity, did_you_mean(event.quantity, candidates),
+      fmt::join(names, ", ")));
+}
+
+EventMonitor::EventMonitor(const model::Model& model, const std::vector<model::OutputSpec>& outputs,
+                           std::vector<model::EventSpec> events)
+    : model_(model), events_(std::move(events)) {
+  for (const model::EventSpec& event : events_) {
+    check_event(model, outputs, event);
+    Watched w;
+    const auto named = [&](int n, const std::string& (model::Model::*name)(int) const) {
+      for (int i = 0; i < n; ++i) {
+        if ((model.*name)(i) == event.quantity) return i;
+      }
+      return -1;
+    };
+    if (const int i = named(model.nq(), &model::Model::q_name); i >= 0) {
+      w.kind = Watched::Kind::coordinate;
+      w.index = i;
+    } else if (const int k = named(model.nv(), &model::Model::v_name); k >= 0) {
+      w.kind = Watched::Kind::speed;
+      w.index = k;
+    } else if (event.quantity == kEnergies[0]) {
+      w.kind = Watched::Kind::energy_kinetic;
+    } else if (event.quantity == kEnergies[1]) {
+      w.kind = Watched::Kind::energy_potential;
+    } else if (event.quantity == kEnergies[2]) {
+      w.kind = Watched::Kind::energy_total;
+    } else {
+      // The output that makes the column, alone in a set of its own.
+      w.kind = Watched::Kind::output;
+      for (const model::OutputSpec& spec : outputs) {
+        system::OutputSet set(model, {spec});
+        const auto& columns = set.column_names();
+        const auto it = std::find(columns.begin(), columns.end(), event.quantity);
+        if (it == columns.end()) continue;
+        w.index = static_cast<int>(it - columns.begin());
+        w.values.assign(columns.size(), 0.0);
+        w.output.push_back(std::move(set));
+        break;
+      }
+    }
+    watched_.push_back(std::move(w));
+  }
+  side_.assign(events_.size(), 0);
+  found_.reserve(events_.size());
+  interpolant_.resize(model.nq(), model.nv());
+  trial_ = integrate::State{0.0, VecX::Zero(model.nq()), VecX::Zero(model.nv())};
+  prescribed_ = trial_;
+}
+
+double EventMonitor::offset(MultibodySystem& system, int e, const integrate::State& state) {
+  prescribed_.q = state.q;
+  prescribed_.v = state.v;
+  if (model_.has_prescribed_joints())
+    system.apply_prescribed_motion(state.t, prescribed_.q, prescribed_.v);
+  Watched& w = watched_[static_cast<std::size_t>(e)];
+  double quantity = 0.0;
+  switch (w.kind) {
+    case Watched::Kind::coordinate:
+      quantity = prescribed_.q[w.index];
+      break;
+    case Watched::Kind::speed:
+      quantity = prescribed_.v[w.index];
+      break;
+    case Watched::Kind::energy_kinetic:
+      quantity = system.energy(prescribed_.q, prescribed_.v).kinetic;
+      break;
+    case Watched::Kind::energy_potential:
+      quantity = system.energy(prescribed_.q, prescribed_.v).potential();
+      break;
+    case Watched::Kind::energy_total:
+      quantity = system.energy(prescribed_.q, prescribed_.v).total();
+      break;
+    case Watched::Kind::output:
+      w.output.front().evaluate(system, state.t, prescribed_.q, prescribed_.v, w.values);
+      quantity = w.values[static_cast<std::size_t>(w.index)];
+      break;
+  }
+  return quantity - events_[static_cast<std::size_t>(e)].value;
+}
+
+void EventMonitor::start(MultibodySystem& system, const integrate::State& state) {
+  for (std::size_t e = 0; e < events_.size(); ++e) {
+    const int side = side_of(offset(system, static_cast<int>(e), state));
+    side_[e] = side == 0 ? kUnknown : side;
+  }
+}
+
+std::span<const EventOccurrence> EventMonitor::check(MultibodySystem& system,
+                                                     const integrate::Integrator& integrator,
+                                                     const integrate::State& start,
+                                                     const integrate::State& end) {
+  found_.clear();
+  bool interpolant_set = false;
+  for (std::size_t e = 0; e < events_.size(); ++e) {
+    const double at_end = offset(system, static_cast<int>(e), end);
+    if (std::isnan(at_end)) continue;  // the run's own checks name a non-finite state
+    const int after = side_of(at_end);
+    const int before = side_[e];
+    side_[e] = before == kUnknown && after == 0 ? kUnknown : after;
+    const int way = crossing(events_[e].direction, before, after);
+    if (way == 0) continue;
+    if (!interpolant_set) {
+      interpolant_.set(system, integrator, start, end);
+      interpolant_set = true;
+    }
+    // f = offset signed so that the condition holds where f < 0: f(start) ≥ 0 > f(end).
+    const double sign = way < 0 ? 1.0 : -1.0;
+    const double at_start = offset(system, static_cast<int>(e), start);
+    const double t =
+        locate(system, static_cast<int>(e), sign, start.t, end.t, sign * at_start, sign * at_end);
+    state_at(system, t, trial_);
+    EventOccurrence o;
+    o.name = events_[e].name;
+    o.condition = model::event_condition_text(events_[e]);
+    o.action = events_[e].action;
+    o.time = t;
+    o.value = offset(system, static_cast<int>(e), trial_) + events_[e].value;
+    found_.push_back(std::move(o));
+  }
+  // In time order, up to the first that stops the run.
+  std::stable_sort(
+      found_.begin(), found_.end(),
+      [](const EventOccurrence& a, const EventOccurrence& b) { return a.time < b.time; });
+  const auto stop = std::find_if(found_.begin(), found_.end(), [](const EventOccurrence& o) {
+    return o.action == model::EventAction::stop;
+  });
+  if (stop != found_.end()) found_.erase(stop + 1, found_.end());
+  return found_;
+}
+
+double EventMonitor::locate(MultibodySystem& system, int e, double sign, double a, double b,
+                            double fa, double fb) {
+  if (fa == 0.0) return a;  // on the value at the step's start, past it after
+  const auto f = [&](double t) {
+    state_at(system, t, trial_);
+    return sign * offset(system, e, trial_);
+  };
+  const auto close_enough = [](double x, double y) {
+    return std::abs(y - x) <= 1e-14 * std::max(std::abs(x), std::abs(y));
+  };
+  std::uintmax_t iterations = 200;
+  const auto [lo, hi] =
+      boost::math::tools::toms748_solve(f, a, b, fa, fb, close_enough, iterations);
+  // The bracket's end where the condition holds (f < 0), or a point exactly on the value.
+  return f(hi) <= 0.0 ? hi : lo;
+}
+
+void EventMonitor::state_at(MultibodySystem& system, double t, integrate::State& out) {
+  interpolant_.evaluate(system, t, out);
+  system.project(t, out.q, out.v);  // the ends are on the constraints already: no change there
+}
+
+}  // namespace momenta::simulate
