@@ -105,6 +105,9 @@ py::dict summary_of(const simulate::SimulationSummary& s) {
   // What the run tells about stiffness (an explicit method held, or unstable, by it), or None.
   const std::string stiffness = simulate::stiffness_note(s);
   d["stiffness"] = stiffness.empty() ? py::object(py::none()) : py::object(py::str(stiffness));
+  // What the summary says of a singular initial configuration of the constraints, or None.
+  const std::string singular = simulate::singular_start_note(s.initial_state);
+  d["singular_start"] = singular.empty() ? py::object(py::none()) : py::object(py::str(singular));
   // The events that happened, in time order: name, condition, time, the quantity's value there
   // and the action (the last is "stop" when one ended the run).
   py::list events;

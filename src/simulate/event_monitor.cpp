@@ -184,10 +184,12 @@ std::span<const EventOccurrence> EventMonitor::check(MultibodySystem& system,
     o.value = offset(system, static_cast<int>(e), trial_) + events_[e].value;
     found_.push_back(std::move(o));
   }
-  // In time order, up to the first that stops the run.
-  std::stable_sort(
-      found_.begin(), found_.end(),
-      [](const EventOccurrence& a, const EventOccurrence& b) { return a.time < b.time; });
+  // In time order (a stable insertion sort: few events, no buffer to allocate), up to the first
+  // that stops the run.
+  for (std::size_t i = 1; i < found_.size(); ++i) {
+    for (std::size_t k = i; k > 0 && found_[k].time < found_[k - 1].time; --k)
+      std::swap(found_[k], found_[k - 1]);
+  }
   const auto stop = std::find_if(found_.begin(), found_.end(), [](const EventOccurrence& o) {
     return o.action == model::EventAction::stop;
   });

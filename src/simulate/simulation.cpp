@@ -445,6 +445,16 @@ std::string complex_text(std::complex<double> z, std::string_view unit) {
 }
 }  // namespace
 
+std::string singular_start_note(const system::ConsistentState& state) {
+  if (state.singular_rows.empty()) return "";
+  return fmt::format(
+      "the initial configuration is singular: row{} {} depend{} on the others there but not at "
+      "assembled configurations nearby ({} independent rows there, {} nearby) — links aligned at "
+      "a dead point or a bifurcation; the accelerations there are their limit along the motion",
+      state.singular_rows.size() == 1 ? "" : "s", fmt::join(state.singular_rows, ", "),
+      state.singular_rows.size() == 1 ? "s" : "", state.rank_at_start, state.rank_nearby);
+}
+
 std::string stiffness_note(const SimulationSummary& s) {
   if (s.stiffness_checked && !s.step_stability.stable && !s.adaptive) {
     const std::complex<double> lambda = s.step_stability.eigenvalue;
@@ -511,6 +521,9 @@ std::string format_summary(const SimulationSummary& s) {
   for (const system::CoordinateChange& c : s.initial_state.v_changes)
     out += fmt::format("initial v    {} {:.9g} -> {:.12g} (made consistent with the constraints)\n",
                        c.name, c.from, c.to);
+  if (const std::string note = singular_start_note(s.initial_state); !note.empty()) {
+    out += fmt::format("constraints  {}\n", note);
+  }
   if (!s.redundant_constraint_rows.empty()) {
     out += fmt::format(
         "constraints  redundant rows (implied by the others; they carry no force): {}\n",

@@ -121,26 +121,13 @@ void ConstraintSolver::find_redundant_rows(dynamics::Data& data, VecRef q) {
     if (cholesky_->dependent(i)) redundant_.push_back(rows_.names[i]);
 }
 
-void ConstraintSolver::correct_accelerations(double t, dynamics::Data& data, VecRef q, VecX& vdot) {
+bool ConstraintSolver::correct_accelerations(dynamics::Data& data, VecRef q, VecX& vdot) {
   dynamics::constraint_equations(model_, data, q, rows_,
                                  dynamics::RowTerms::with_velocity_products);
   gather_free_columns();
   factor_mass_matrix(data, q);
   factor_rows(all_rows_);
-  if (cholesky_->rank() < reference_rank_) {
-    // The first dependent row that was independent at the start.
-    int row = 0;
-    while (row < rows_.count &&
-           !(cholesky_->dependent(row) &&
-             std::find(redundant_.begin(), redundant_.end(), rows_.names[row]) == redundant_.end()))
-      ++row;
-    if (row == rows_.count) row = 0;
-    throw NumericalError(fmt::format(
-        "singular configuration at t = {:.9g} s: constraint row '{}' became dependent on the "
-        "others ({} independent rows, {} at the start) — the mechanism is at a dead point or "
-        "locks, and the constraint forces are not determined there",
-        t, rows_.names[row], cholesky_->rank(), reference_rank_));
-  }
+  if (cholesky_->rank() < reference_rank_) return false;
   // λ from (G M⁻¹ Gᵀ) λ = −k − G v̇₀ (the full G: prescribed accelerations enter too).
   rhs_.noalias() = -rows_.bias;
   rhs_.noalias() -= rows_.G * vdot;
@@ -148,6 +135,30 @@ void ConstraintSolver::correct_accelerations(double t, dynamics::Data& data, Vec
   lambda_ = rhs_;
   apply_row_forces(lambda_);
   for (int c = 0; c < static_cast<int>(free_.size()); ++c) vdot[free_[c]] += dv_[c];
+  return true;
+}
+
+NumericalError ConstraintSolver::singular_configuration_error(double t) const {
+  // The first dependent row that is independent at the reference.
+  int row = 0;
+  while (row < rows_.count &&
+         !(cholesky_->dependent(row) &&
+           std::find(redundant_.begin(), redundant_.end(), rows_.names[row]) == redundant_.end()))
+    ++row;
+  if (row == rows_.count) row = 0;
+  return NumericalError(fmt::format(
+      "singular configuration at t = {:.9g} s, at rest: constraint row '{}' became dependent on "
+      "the others ({} independent rows, {} at assembled configurations nearby) — the mechanism "
+      "is at a dead point or a bifurcation with no motion to say which way it goes on, and the "
+      "constraint forces are not determined there. Give a velocity along the branch it should "
+      "follow, or start it off that configuration",
+      t, rows_.names[row], cholesky_->rank(), reference_rank_));
+}
+
+void ConstraintSolver::set_multipliers(dynamics::Data& data, VecRef q, const VecX& lambda) {
+  dynamics::constraint_equations(model_, data, q, rows_,
+                                 dynamics::RowTerms::with_velocity_products);
+  lambda_ = lambda;
 }
 
 void ConstraintSolver::add_forces(const dynamics::Data& data, std::span<Vec6> f_ext,
@@ -347,7 +358,43 @@ ConsistentState ConstraintSolver::consistent_state(dynamics::Data& data, VecX& q
       report.v_changes.push_back({model_.v_name(i), v_start[i], v[i]});
   }
   find_redundant_rows(data, q);
+  check_singular_start(data, q, v, report);
   return report;
+}
+
+void ConstraintSolver::check_singular_start(dynamics::Data& data, const VecX& q, const VecX& v,
+                                            ConsistentState& report) {
+  if (rows_.count == 0 || free_.empty()) return;
+  // A move of 1e-3 (rad or m) on the fastest free coordinate along the motion, or on every free
+  // coordinate at rest; then back onto the constraints. A regular state has the same rank there.
+  VecX direction = VecX::Zero(model_.nv());
+  for (int c : free_) direction[c] = v[c];
+  const double speed = direction.cwiseAbs().maxCoeff();
+  if (speed > 0.0) {
+    direction /= speed;
+  } else {
+    for (int c : free_) direction[c] = 1.0;
+  }
+  VecX q_near(model_.nq()), v_near = v;
+  model::integrate(model_, q, direction, 1e-3, q_near);
+  try {
+    project(0.0, data, q_near, v_near);
+  } catch (const NumericalError&) {
+    return;  // no assembled configuration that near: nothing to compare with
+  }
+  const int rank_here = reference_rank_;
+  const std::vector<std::string> redundant_here = redundant_;
+  find_redundant_rows(data, q_near);
+  if (reference_rank_ <= rank_here) {
+    find_redundant_rows(data, q);  // regular: the reference stays the state's own
+    return;
+  }
+  report.rank_at_start = rank_here;
+  report.rank_nearby = reference_rank_;
+  for (const std::string& name : redundant_here) {
+    if (std::find(redundant_.begin(), redundant_.end(), name) == redundant_.end())
+      report.singular_rows.push_back(name);
+  }
 }
 
 }  // namespace momenta::system

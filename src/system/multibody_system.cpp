@@ -50,7 +50,13 @@ MultibodySystem::MultibodySystem(const model::Model& model)
       samples_(model.signals().size(), model::SignalSample{0.0, 0.0, 0.0}),
       signal_values_(model.signals().size(), 0.0),
       offsets_(model.signals().size(), model::SignalSample{0.0, 0.0, 0.0}),
-      applied_samples_(model.signals().size(), model::SignalSample{0.0, 0.0, 0.0}) {
+      applied_samples_(model.signals().size(), model::SignalSample{0.0, 0.0, 0.0}),
+      singular_q_(VecX::Zero(model.nq())),
+      singular_v_(VecX::Zero(model.nv())),
+      probe_q_(VecX::Zero(model.nq())),
+      probe_v_(VecX::Zero(model.nv())),
+      vdot_mean_(VecX::Zero(model.nv())),
+      lambda_mean_(VecX::Zero(0)) {
   // Forward dynamics needs an invertible mass matrix: say which coordinate has no inertia now,
   // rather than return NaN accelerations later.
   dynamics::check_mass_matrix(model, model.initial_q());
@@ -83,7 +89,10 @@ MultibodySystem::MultibodySystem(const model::Model& model)
     }
   }
   conserves_angular_momentum_ = conserves_energy_ && floating;
-  if (model.has_constraints()) constraints_ = std::make_unique<ConstraintSolver>(model);
+  if (model.has_constraints()) {
+    constraints_ = std::make_unique<ConstraintSolver>(model);
+    lambda_mean_ = VecX::Zero(constraints_->multipliers().size());
+  }
   for (const model::ForceElement& element : model.force_elements()) {
     const auto* t = std::get_if<model::TorsionalSpringDamper>(&element);
     const bool on_joint = std::holds_alternative<model::JointFriction>(element) ||
@@ -96,6 +105,19 @@ int MultibodySystem::nq() const { return model_.nq(); }
 int MultibodySystem::nv() const { return model_.nv(); }
 
 const VecX& MultibodySystem::compute(double t, const VecX& q, const VecX& v, model::Limit limit) {
+  free_dynamics(t, q, v, limit);
+  if (constraints_) {
+    if (!constraints_->correct_accelerations(data_, q_, data_.vdot)) {
+      accelerations_at_singular_configuration(t, limit);
+    }
+    constraints_->add_forces(data_, f_ext_, data_.tau);
+    // The drives of prescribed joints also carry the constraint forces.
+    if (model_.has_prescribed_joints()) dynamics::rnea(model_, data_, q_, v_, data_.vdot, f_ext_);
+  }
+  return data_.vdot;
+}
+
+void MultibodySystem::free_dynamics(double t, const VecX& q, const VecX& v, model::Limit limit) {
   // Every signal once at t (offsets added), from the side `limit` says at a breakpoint.
   const auto& signals = model_.signals();
   for (std::size_t i = 0; i < signals.size(); ++i) {
@@ -127,13 +149,35 @@ const VecX& MultibodySystem::compute(double t, const VecX& q, const VecX& v, mod
     dynamics::aba(model_, data_, q_, v_, tau_elements_, f_ext);
     data_.tau = tau_elements_;
   }
-  if (constraints_) {
-    constraints_->correct_accelerations(t, data_, q_, data_.vdot);
-    constraints_->add_forces(data_, f_ext_, data_.tau);
-    // The drives of prescribed joints also carry the constraint forces.
-    if (prescribed) dynamics::rnea(model_, data_, q_, v_, data_.vdot, f_ext_);
+}
+
+void MultibodySystem::accelerations_at_singular_configuration(double t, model::Limit limit) {
+  const double speed = v_.cwiseAbs().maxCoeff();
+  if (probing_ || !(speed > 0.0)) throw constraints_->singular_configuration_error(t);
+  singular_q_ = q_;
+  singular_v_ = v_;
+  vdot_mean_.setZero();
+  lambda_mean_.setZero();
+  const double tau = 1e-4 / speed;
+  // Probing, a state that is singular again cannot be passed (the flag is cleared however the
+  // probes end).
+  struct Probing {
+    bool& flag;
+    explicit Probing(bool& f) : flag(f) { flag = true; }
+    ~Probing() { flag = false; }
+  } probing(probing_);
+  for (const double side : {1.0, -1.0}) {
+    model::integrate(model_, singular_q_, singular_v_, side * tau, probe_q_);
+    probe_v_ = singular_v_;
+    constraints_->project(t + side * tau, data_, probe_q_, probe_v_);
+    compute(t + side * tau, probe_q_, probe_v_, limit);
+    vdot_mean_ += 0.5 * data_.vdot;
+    lambda_mean_ += 0.5 * constraints_->multipliers();
   }
-  return data_.vdot;
+  // Back at the singular state: its free dynamics, the mean accelerations and multipliers.
+  free_dynamics(t, singular_q_, singular_v_, limit);
+  data_.vdot = vdot_mean_;
+  constraints_->set_multipliers(data_, q_, lambda_mean_);
 }
 
 bool MultibodySystem::project(double t, VecX& q, VecX& v) {

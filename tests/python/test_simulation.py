@@ -163,6 +163,17 @@ def test_events_are_rows_and_entries_of_the_summary():
         momenta.simulate(pendulum, stop_when=["pivot.angel < 0"])
 
 
+def test_a_singular_start_is_said_in_the_summary():
+    # The N-four-bar with every link horizontal: each loop's row along the links depends on the
+    # others there (docs/constraints.md); a regular start says nothing.
+    path = STIFF_SPRING.parent / "n_four_bar_horizontal.yaml"
+    run = momenta.simulate(momenta.load_model(path), duration=0.01)
+    assert run.summary["singular_start"].startswith(
+        "the initial configuration is singular: rows loop0.x, loop1.x, loop2.x, loop3.x")
+    plain = momenta.simulate(momenta.load_model(EXAMPLES / "pendulum.yaml"), duration=0.01)
+    assert plain.summary["singular_start"] is None
+
+
 def test_a_file_name_where_a_model_belongs_says_what_to_pass():
     # pybind11 would list C++ signatures ("incompatible function arguments"); the message says
     # how to make the Model, and the stubs keep `model: Model`.

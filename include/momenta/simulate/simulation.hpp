@@ -151,6 +151,10 @@ inline constexpr int kStiffnessCheckLimit = 200;
 /// a row), each suggesting bdf.
 std::string stiffness_note(const SimulationSummary& summary);
 
+/// What the summary says about a singular initial configuration (ConsistentState::
+/// singular_rows: the rows that lost independence there, the ranks), or "" for a regular one.
+std::string singular_start_note(const system::ConsistentState& state);
+
 class Simulation {
  public:
   /// Checks the options, resolves the outputs against `model` (which must outlive this) and

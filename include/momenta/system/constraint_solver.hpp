@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "momenta/common/error.hpp"
 #include "momenta/dynamics/constraints.hpp"
 #include "momenta/dynamics/data.hpp"
 
@@ -48,6 +49,12 @@ struct ConsistentState {
                                             ///< for quaternions: named by v_name, from 0)
   std::vector<CoordinateChange> v_changes;
   int newton_iterations = 0;
+  /// A singular initial configuration (links aligned at a dead point or a bifurcation): the
+  /// rows that are dependent on the others there but not at assembled configurations nearby,
+  /// and the rank of the rows there and nearby. Empty, 0 and 0 where it is regular.
+  std::vector<std::string> singular_rows;
+  int rank_at_start = 0;
+  int rank_nearby = 0;
 };
 
 /// The largest constraint residuals of a state: |φ| over position rows (m or rad) and |G v|
@@ -77,11 +84,21 @@ class ConstraintSolver {
   const std::vector<std::string>& redundant_rows() const { return redundant_; }
 
   /// Corrects the unconstrained accelerations vdot (size nv; prescribed coordinates kept) at
-  /// (t, q, v) to the constrained ones and stores λ. `data` holds the kinematics of (q, v)
-  /// as aba or hybrid_dynamics leave them; crba overwrites its mass matrix. Throws
-  /// NumericalError at a singular configuration — fewer independent rows than at the reference
-  /// (a four-bar at a dead point) — naming the time and the row. No allocation.
-  void correct_accelerations(double t, dynamics::Data& data, VecRef q, VecX& vdot);
+  /// (t, q, v) to the constrained ones, stores λ and returns true. `data` holds the kinematics
+  /// of (q, v) as aba or hybrid_dynamics leave them; crba overwrites its mass matrix. Returns
+  /// false, vdot and λ undetermined, at a singular configuration — fewer independent rows than
+  /// at the reference (a four-bar at a dead point): the rows there do not fix the accelerations
+  /// (MultibodySystem takes their limit along the motion). No allocation.
+  bool correct_accelerations(dynamics::Data& data, VecRef q, VecX& vdot);
+
+  /// The error for a singular configuration at time t that cannot be passed (the state at rest
+  /// there, so no motion says which way): names the time, the first row that lost
+  /// independence, the ranks, and what to do.
+  NumericalError singular_configuration_error(double t) const;
+
+  /// Takes `lambda` as the multipliers at configuration q (the rows are evaluated there): the
+  /// limit of those of the states nearby, at a singular configuration. No allocation.
+  void set_multipliers(dynamics::Data& data, VecRef q, const VecX& lambda);
 
   /// Adds the forces of the last multipliers to f_ext (body wrenches) and tau (couplers), see
   /// dynamics::add_constraint_forces. `data` must hold the poses of the same instant.
@@ -100,9 +117,12 @@ class ConstraintSolver {
   /// Makes (q, v) satisfy the constraints, keeping the coordinates marked `given` (per joint,
   /// 1 where the user set q0 or v0; prescribed joints always) where the others can absorb the
   /// residual, moving every free coordinate least otherwise. Resets the reference rank to the
-  /// consistent state's. Throws InvalidArgument naming the row with the largest residual when
-  /// no consistent state is near (Newton's method fails to converge in 50 iterations), or when
-  /// rows conflict (a residual remains along dependent rows). Allocates.
+  /// consistent state's — or, where that state is singular (fewer independent rows than at an
+  /// assembled configuration a small move along v away: ConsistentState::singular_rows), to
+  /// the rank nearby, so that evaluations at the singular state are recognized as such. Throws
+  /// InvalidArgument naming the row with the largest residual when no consistent state is near
+  /// (Newton's method fails to converge in 50 iterations), or when rows conflict (a residual
+  /// remains along dependent rows). Allocates.
   ConsistentState consistent_state(dynamics::Data& data, VecX& q, VecX& v,
                                    std::span<const char> q_given, std::span<const char> v_given);
 
@@ -113,6 +133,11 @@ class ConstraintSolver {
   // (G_f M⁻¹ G_fᵀ) over the rows in `mask` (others zeroed), factorized in row order.
   void factor_rows(std::span<const char> mask);
   void find_redundant_rows(dynamics::Data& data, VecRef q);
+  // A singular consistent state: compares the rank at (q, v) with that at an assembled
+  // configuration a small move along v (or along every free coordinate, at rest) away, and
+  // where it is higher there takes it (and the rows redundant there) as the reference.
+  void check_singular_start(dynamics::Data& data, const VecX& q, const VecX& v,
+                            ConsistentState& report);
   // dv_ = M⁻¹ G_fᵀ λ (the free coordinates' accelerations of row forces λ).
   void apply_row_forces(const VecX& lambda);
 

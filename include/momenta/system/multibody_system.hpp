@@ -125,6 +125,15 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   // evaluate() without the bodies' accelerations: signals (from the side `limit` at a
   // breakpoint), prescribed state, kinematics, force elements, forward dynamics.
   const VecX& compute(double t, const VecX& q, const VecX& v, model::Limit limit);
+  // compute() up to the constraints: signals, the prescribed state, force elements and the
+  // unconstrained forward dynamics into data_.
+  void free_dynamics(double t, const VecX& q, const VecX& v, model::Limit limit);
+  // At a singular configuration (the constraint rows lose rank: a dead point or a bifurcation
+  // passed exactly, or the start there) the rows do not fix the accelerations; along the motion
+  // they are continuous. Takes the mean of the accelerations and multipliers at the assembled
+  // states a small time ±τ along the motion (q ⊕ ±τ v projected; 1e-4 on the fastest
+  // coordinate): O(τ²) = 1e-8 off the limit. At rest there: the solver's error.
+  void accelerations_at_singular_configuration(double t, model::Limit limit);
 
   const model::Model& model_;
   dynamics::Data data_;
@@ -138,6 +147,9 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   mutable std::vector<model::SignalSample> applied_samples_;   // apply_prescribed_motion's
   double step_end_ = std::numeric_limits<double>::infinity();  // see begin_step
   std::unique_ptr<ConstraintSolver> constraints_;              // null without constraints
+  // accelerations_at_singular_configuration's workspace, and whether it is running.
+  VecX singular_q_, singular_v_, probe_q_, probe_v_, vdot_mean_, lambda_mean_;
+  bool probing_ = false;
   bool body_loads_ = false;  // some element acts on bodies (needs poses; f_ext is not zero)
   bool conserves_energy_ = false;
   bool conserves_angular_momentum_ = false;
