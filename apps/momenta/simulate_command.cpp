@@ -92,11 +92,8 @@ simulate::SimulationOptions merge(const SimulateOptions& o, const model::Simulat
   request.reactions = o.reactions;
   for (const auto& [conditions, action] : {std::pair{&o.events, model::EventAction::record},
                                            std::pair{&o.stop_when, model::EventAction::stop}}) {
-    for (const std::string& condition : *conditions) {
-      model::EventSpec event = model::parse_event_condition(condition);
-      event.action = action;
-      request.events.push_back(std::move(event));
-    }
+    for (const std::string& condition : *conditions)
+      request.events.push_back(model::parse_event_condition(condition, action));
   }
   simulate::ResolvedRun resolved;
   try {

@@ -136,9 +136,7 @@ SimulationResult run_simulation(const ModelHandle& h, std::optional<double> dura
     request.events.push_back(model::parse_event_condition(condition));
   }
   for (const std::string& condition : stop_when) {
-    model::EventSpec event = model::parse_event_condition(condition);
-    event.action = model::EventAction::stop;
-    request.events.push_back(std::move(event));
+    request.events.push_back(model::parse_event_condition(condition, model::EventAction::stop));
   }
   simulate::ResolvedRun resolved = simulate::resolve_run(request, h.file->simulation);
 

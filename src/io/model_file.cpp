@@ -199,14 +199,14 @@ void read_events(const YamlNode& node, model::SimulationSettings& s) {
     if (item.is_map()) {
       if (const auto name = item.find_string("name")) event.name = *name;
       if (const auto action = item.find("action")) {
-        const std::string a = action->as_string();
-        if (a != "record" && a != "stop") {
-          action->fail(
-              fmt::format("'{}' is not an action: record (write a row and go on) or stop "
-                          "(end the run there)",
-                          a));
+        const std::string name = action->as_string();
+        const std::optional<model::EventAction> known = model::find_event_action(name);
+        if (!known) {
+          action->fail(fmt::format(
+              "'{}' is not an action: record (write a row and go on) or stop (end the run there)",
+              name));
         }
-        event.action = a == "stop" ? model::EventAction::stop : model::EventAction::record;
+        event.action = *known;
       }
     }
     for (const model::EventSpec& other : s.events) {

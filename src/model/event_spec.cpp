@@ -35,7 +35,7 @@ std::optional<double> parse_number(std::string_view text) {
 
 }  // namespace
 
-EventSpec parse_event_condition(std::string_view condition) {
+EventSpec parse_event_condition(std::string_view condition, EventAction action) {
   const auto fail = [&](std::string_view why) {
     throw InvalidArgument(fmt::format("event condition '{}': {}; {}", condition, why, kForm));
   };
@@ -57,6 +57,7 @@ EventSpec parse_event_condition(std::string_view condition) {
                     : condition[op] == '>' ? EventDirection::rising
                                            : EventDirection::either;
   event.name = event_condition_text(event);
+  event.action = action;
   return event;
 }
 
@@ -69,6 +70,13 @@ std::string event_condition_text(const EventSpec& event) {
 
 std::string_view event_action_name(EventAction action) {
   return action == EventAction::stop ? "stop" : "record";
+}
+
+std::optional<EventAction> find_event_action(std::string_view name) {
+  for (const EventAction action : {EventAction::record, EventAction::stop}) {
+    if (event_action_name(action) == name) return action;
+  }
+  return std::nullopt;
 }
 
 }  // namespace momenta::model

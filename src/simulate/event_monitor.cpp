@@ -17,8 +17,6 @@ namespace {
 using model::EventDirection;
 using system::MultibodySystem;
 
-constexpr const char* kEnergies[] = {"energy_kinetic", "energy_potential", "energy_total"};
-
 // The side of the value a quantity is on: −1 below, +1 above, 0 on it; kUnknown before the
 // quantity has left a value it started on.
 constexpr int kUnknown = 2;
@@ -49,64 +47,63 @@ std::vector<std::string> event_quantities(const model::Model& model,
   std::vector<std::string> names;
   for (int i = 0; i < model.nq(); ++i) names.push_back(model.q_name(i));
   for (int i = 0; i < model.nv(); ++i) names.push_back(model.v_name(i));
-  for (const char* energy : kEnergies) names.emplace_back(energy);
+  for (const char* energy : kEnergyColumns) names.emplace_back(energy);
   const system::OutputSet set(model, outputs);
   for (const std::string& column : set.column_names()) names.push_back(column);
   return names;
 }
 
-void check_event(const model::Model& model, const std::vector<model::OutputSpec>& outputs,
-                 const model::EventSpec& event) {
+namespace {
+// The error for an event whose quantity the run does not have: the names it has, and the closest.
+InvalidArgument unknown_quantity(const model::Model& model,
+                                 const std::vector<model::OutputSpec>& outputs,
+                                 const model::EventSpec& event) {
   const std::vector<std::string> names = event_quantities(model, outputs);
-  if (std::find(names.begin(), names.end(), event.quantity) != names.end()) return;
   const std::vector<std::string_view> candidates(names.begin(), names.end());
-  throw InvalidArgument(fmt::format(
+  return InvalidArgument(fmt::format(
       "event '{}': no quantity '{}'{} to watch; an event watches a coordinate, a speed, an energy "
       "or an output of the model: {}",
       event.name, event.quantity, did_you_mean(event.quantity, candidates),
       fmt::join(names, ", ")));
 }
+}  // namespace
+
+void check_event(const model::Model& model, const std::vector<model::OutputSpec>& outputs,
+                 const model::EventSpec& event) {
+  const std::vector<std::string> names = event_quantities(model, outputs);
+  if (std::find(names.begin(), names.end(), event.quantity) == names.end())
+    throw unknown_quantity(model, outputs, event);
+}
+
+EventMonitor::Watched EventMonitor::resolve(const model::Model& model,
+                                            const std::vector<model::OutputSpec>& outputs,
+                                            const model::EventSpec& event) {
+  for (int i = 0; i < model.nq(); ++i) {
+    if (model.q_name(i) == event.quantity) return {Watched::Kind::coordinate, i, {}, {}};
+  }
+  for (int i = 0; i < model.nv(); ++i) {
+    if (model.v_name(i) == event.quantity) return {Watched::Kind::speed, i, {}, {}};
+  }
+  for (int k = 0; k < 3; ++k) {
+    if (event.quantity == kEnergyColumns[k]) return {Watched::Kind::energy, k, {}, {}};
+  }
+  // The output that makes the column, alone in a set of its own.
+  for (const model::OutputSpec& spec : outputs) {
+    system::OutputSet set(model, {spec});
+    const auto& columns = set.column_names();
+    const auto it = std::find(columns.begin(), columns.end(), event.quantity);
+    if (it == columns.end()) continue;
+    const auto column = static_cast<int>(it - columns.begin());
+    std::vector<double> values(columns.size(), 0.0);
+    return {Watched::Kind::output, column, std::move(set), std::move(values)};
+  }
+  throw unknown_quantity(model, outputs, event);
+}
 
 EventMonitor::EventMonitor(const model::Model& model, const std::vector<model::OutputSpec>& outputs,
                            std::vector<model::EventSpec> events)
     : model_(model), events_(std::move(events)) {
-  for (const model::EventSpec& event : events_) {
-    check_event(model, outputs, event);
-    Watched w;
-    const auto named = [&](int n, const std::string& (model::Model::*name)(int) const) {
-      for (int i = 0; i < n; ++i) {
-        if ((model.*name)(i) == event.quantity) return i;
-      }
-      return -1;
-    };
-    if (const int i = named(model.nq(), &model::Model::q_name); i >= 0) {
-      w.kind = Watched::Kind::coordinate;
-      w.index = i;
-    } else if (const int k = named(model.nv(), &model::Model::v_name); k >= 0) {
-      w.kind = Watched::Kind::speed;
-      w.index = k;
-    } else if (event.quantity == kEnergies[0]) {
-      w.kind = Watched::Kind::energy_kinetic;
-    } else if (event.quantity == kEnergies[1]) {
-      w.kind = Watched::Kind::energy_potential;
-    } else if (event.quantity == kEnergies[2]) {
-      w.kind = Watched::Kind::energy_total;
-    } else {
-      // The output that makes the column, alone in a set of its own.
-      w.kind = Watched::Kind::output;
-      for (const model::OutputSpec& spec : outputs) {
-        system::OutputSet set(model, {spec});
-        const auto& columns = set.column_names();
-        const auto it = std::find(columns.begin(), columns.end(), event.quantity);
-        if (it == columns.end()) continue;
-        w.index = static_cast<int>(it - columns.begin());
-        w.values.assign(columns.size(), 0.0);
-        w.output.push_back(std::move(set));
-        break;
-      }
-    }
-    watched_.push_back(std::move(w));
-  }
+  for (const model::EventSpec& event : events_) watched_.push_back(resolve(model, outputs, event));
   side_.assign(events_.size(), 0);
   found_.reserve(events_.size());
   interpolant_.resize(model.nq(), model.nv());
@@ -115,30 +112,32 @@ EventMonitor::EventMonitor(const model::Model& model, const std::vector<model::O
 }
 
 double EventMonitor::offset(MultibodySystem& system, int e, const integrate::State& state) {
-  prescribed_.q = state.q;
-  prescribed_.v = state.v;
-  if (model_.has_prescribed_joints())
+  // The state as the table records it: the prescribed joints on their signals.
+  const bool prescribed = model_.has_prescribed_joints();
+  if (prescribed) {
+    prescribed_.q = state.q;
+    prescribed_.v = state.v;
     system.apply_prescribed_motion(state.t, prescribed_.q, prescribed_.v);
+  }
+  const VecX& q = prescribed ? prescribed_.q : state.q;
+  const VecX& v = prescribed ? prescribed_.v : state.v;
   Watched& w = watched_[static_cast<std::size_t>(e)];
   double quantity = 0.0;
   switch (w.kind) {
     case Watched::Kind::coordinate:
-      quantity = prescribed_.q[w.index];
+      quantity = q[w.index];
       break;
     case Watched::Kind::speed:
-      quantity = prescribed_.v[w.index];
+      quantity = v[w.index];
       break;
-    case Watched::Kind::energy_kinetic:
-      quantity = system.energy(prescribed_.q, prescribed_.v).kinetic;
+    case Watched::Kind::energy: {
+      const system::Energy energy = system.energy(q, v);
+      const double energies[] = {energy.kinetic, energy.potential(), energy.total()};
+      quantity = energies[w.index];
       break;
-    case Watched::Kind::energy_potential:
-      quantity = system.energy(prescribed_.q, prescribed_.v).potential();
-      break;
-    case Watched::Kind::energy_total:
-      quantity = system.energy(prescribed_.q, prescribed_.v).total();
-      break;
+    }
     case Watched::Kind::output:
-      w.output.front().evaluate(system, state.t, prescribed_.q, prescribed_.v, w.values);
+      w.output->evaluate(system, state.t, q, v, w.values);
       quantity = w.values[static_cast<std::size_t>(w.index)];
       break;
   }

@@ -97,7 +97,7 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
   add("time", "s");
   for (int i = 0; i < model.nq(); ++i) add(model.q_name(i), model::q_unit(model, i));
   for (int i = 0; i < model.nv(); ++i) add(model.v_name(i), model::v_unit(model, i));
-  for (const char* name : {"energy_kinetic", "energy_potential", "energy_total"}) add(name, "J");
+  for (const char* name : kEnergyColumns) add(name, "J");
   for (const char* name : {"H_x", "H_y", "H_z"}) add(name, "kg·m²/s");
   for (std::size_t c = 0; c < outputs_.size(); ++c) {
     add(outputs_.column_names()[c], outputs_.column_units()[c]);

@@ -383,10 +383,11 @@ void ConstraintSolver::check_singular_start(dynamics::Data& data, const VecX& q,
     return;  // no assembled configuration that near: nothing to compare with
   }
   const int rank_here = reference_rank_;
-  const std::vector<std::string> redundant_here = redundant_;
+  std::vector<std::string> redundant_here = redundant_;
   find_redundant_rows(data, q_near);
-  if (reference_rank_ <= rank_here) {
-    find_redundant_rows(data, q);  // regular: the reference stays the state's own
+  if (reference_rank_ <= rank_here) {  // regular: the reference stays the state's own
+    reference_rank_ = rank_here;
+    redundant_ = std::move(redundant_here);
     return;
   }
   report.rank_at_start = rank_here;

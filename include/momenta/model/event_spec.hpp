@@ -5,6 +5,7 @@
 // "bob.z > 0.5" when the bob rises through 0.5 m, "pivot.angle = 0" when the angle crosses zero
 // either way. A description only; simulate/event_monitor.hpp resolves and watches it.
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -31,14 +32,18 @@ struct EventSpec {
 
 /// Reads a condition "QUANTITY < VALUE", "QUANTITY > VALUE" or "QUANTITY = VALUE" (spaces
 /// optional; the value a finite number in SI units) into an EventSpec named by the condition
-/// itself, with action `record`. Throws InvalidArgument saying what is wrong and the form
-/// expected: no operator, two of them, an empty quantity, a value that is not a finite number.
-EventSpec parse_event_condition(std::string_view condition);
+/// itself, with `action`. Throws InvalidArgument saying what is wrong and the form expected: no
+/// operator, two of them, an empty quantity, a value that is not a finite number.
+EventSpec parse_event_condition(std::string_view condition,
+                                EventAction action = EventAction::record);
 
 /// The condition as the summary prints it: "tension < 0".
 std::string event_condition_text(const EventSpec& event);
 
 /// "record" or "stop".
 std::string_view event_action_name(EventAction action);
+
+/// The action of that name (event_action_name's inverse), or nothing.
+std::optional<EventAction> find_event_action(std::string_view name);
 
 }  // namespace momenta::model

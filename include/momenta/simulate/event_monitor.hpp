@@ -10,6 +10,7 @@
 // left the value. A condition that turns true and false again inside one step is not seen: a
 // smaller step (--dt, or an adaptive method's largest) finds it.
 
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -35,6 +36,10 @@ struct EventOccurrence {
   double value = 0.0;  ///< the quantity at that time (the value, to the location's accuracy)
 };
 
+/// The energy columns of a run's table (J), in order; an event can watch each.
+inline constexpr const char* kEnergyColumns[3] = {"energy_kinetic", "energy_potential",
+                                                  "energy_total"};
+
 /// The quantities an event can watch on `model` with `outputs`: every configuration coordinate
 /// and speed by its column name, energy_kinetic, energy_potential, energy_total and every output
 /// column.
@@ -48,7 +53,8 @@ void check_event(const model::Model& model, const std::vector<model::OutputSpec>
 
 class EventMonitor {
  public:
-  /// Resolves every event's quantity (check_event's errors). `model` must outlive this.
+  /// Resolves every event's quantity (check_event's error for one the run lacks). `model` must
+  /// outlive this.
   EventMonitor(const model::Model& model, const std::vector<model::OutputSpec>& outputs,
                std::vector<model::EventSpec> events);
 
@@ -73,12 +79,15 @@ class EventMonitor {
 
  private:
   struct Watched {
-    enum class Kind { coordinate, speed, energy_kinetic, energy_potential, energy_total, output };
+    enum class Kind { coordinate, speed, energy, output };
     Kind kind = Kind::coordinate;
-    int index = 0;                          // coordinate, speed, or column of `output`
-    std::vector<system::OutputSet> output;  // one set of the output's spec (empty otherwise)
-    std::vector<double> values;             // its columns' values (scratch)
+    int index = 0;  // coordinate, speed, energy (kinetic, potential, total), or column of `output`
+    std::optional<system::OutputSet> output;  // a set of the output's spec alone
+    std::vector<double> values;               // its columns' values (scratch)
   };
+  // What `event` watches on `model`; throws check_event's error when the run has no such quantity.
+  static Watched resolve(const model::Model& model, const std::vector<model::OutputSpec>& outputs,
+                         const model::EventSpec& event);
   // quantity − value of event e at the state (t, q, v) (applies the prescribed motion).
   double offset(system::MultibodySystem& system, int e, const integrate::State& state);
   // The first time in [a, b] where event e's condition holds, found on the step's interpolant:

@@ -42,9 +42,7 @@ model::Model slider(double z0, double w0) {
 }
 
 EventSpec stop_when(const std::string& condition) {
-  EventSpec e = parse_event_condition(condition);
-  e.action = EventAction::stop;
-  return e;
+  return parse_event_condition(condition, EventAction::stop);
 }
 
 struct EventRun {

@@ -48,9 +48,9 @@ TEST(EventExamples, PendulumReachesTheVerticalAtTheEllipticIntegralTime) {
   for (const auto& [integrator, step] :
        std::vector<std::pair<std::string, double>>{{"rk4", 1e-3}, {"dopri5", 1e-2}}) {
     SCOPED_TRACE(integrator);
-    model::EventSpec vertical = model::parse_event_condition("pivot.angle < 0");
-    vertical.action = model::EventAction::stop;
-    const EventRun run = run_example("pendulum", integrator, step, {vertical});
+    const EventRun run =
+        run_example("pendulum", integrator, step,
+                    {model::parse_event_condition("pivot.angle < 0", model::EventAction::stop)});
     ASSERT_EQ(run.summary.events.size(), 1u);
     EXPECT_NEAR(run.summary.events[0].time, exact, 2e-12 * exact);
     EXPECT_EQ(run.summary.t_end, run.summary.events[0].time);
