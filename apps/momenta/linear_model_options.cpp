@@ -69,6 +69,12 @@ LoadedLinearModel load_linear_model(const LinearModelOptions& o, io::ModelFile f
           "show them); for a response, hold the rotor by a universal joint and a revolute spin "
           "joint (examples/rotor_on_bearings.yaml)");
     }
+    if (analysis::rolling_steady_applies(model)) {
+      throw CLI::ValidationError(
+          "--about",
+          "steady: a rolling body's steady motion is linearized seen from its turning frame, "
+          "without inputs or outputs (`momenta modes` and `momenta linearize` show it)");
+    }
     r.steady =
         analysis::joint_steady_motion(model, analysis::initial_operating_point(model), options);
     r.linear = r.steady->full;

@@ -14,6 +14,7 @@
 #include "momenta/analysis/equilibrium.hpp"
 #include "momenta/analysis/joint_steady_motion.hpp"
 #include "momenta/analysis/linearize.hpp"
+#include "momenta/analysis/rolling_steady_motion.hpp"
 #include "momenta/analysis/steady_motion.hpp"
 #include "momenta/common/number_text.hpp"
 #include "momenta/io/model_file.hpp"

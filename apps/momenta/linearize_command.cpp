@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "linear_model_options.hpp"
+#include "rolling_steady_output.hpp"
 #include "momenta/analysis/modes.hpp"
 #include "momenta/frontend/model_loading.hpp"
 
@@ -25,6 +26,9 @@ void run(const LinearizeOptions& o) {
   io::ModelFile file = frontend::load_model(o.model.model);
   if (o.model.about == "steady" && analysis::euler_poisson_applies(file.model)) {
     return print_steady_motion(std::move(file), o.json, true);
+  }
+  if (o.model.about == "steady" && analysis::rolling_steady_applies(file.model)) {
+    return print_rolling_steady_modes(file, o.json, true);
   }
   const LoadedLinearModel loaded = load_linear_model(o.model, std::move(file));
   const analysis::LinearModel& lin = loaded.linear;

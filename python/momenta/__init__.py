@@ -43,6 +43,8 @@ from ._core import (
     NormalModes,
     NumericalError,
     ParseError,
+    RollingSteadyModes,
+    RollingSteadyMotion,
     SimulationResult,
     StateSpace,
     SteadyMode,
@@ -55,6 +57,7 @@ from ._core import (
     bode,
     campbell_diagram,
     find_equilibrium,
+    find_rolling_steady_motions,
     find_steady_precession,
     free_body_diagram,
     impulse_response,
@@ -64,6 +67,7 @@ from ._core import (
     modes,
     normal_modes,
     relative_kinematics,
+    rolling_steady_modes,
     simulate,
     steady_motion,
     steady_precession,
@@ -115,9 +119,9 @@ def _takes_a_model(function):
     return checked
 
 
-for _name in ["campbell_diagram", "find_equilibrium", "find_steady_precession", "free_body_diagram",
-              "joint_steady_motion", "linearize", "relative_kinematics", "simulate", "steady_motion",
-              "steady_precession"] + (["equations", "symbolic_transfer_function"] if with_symbolic else []):
+for _name in ["campbell_diagram", "find_equilibrium", "find_rolling_steady_motions", "find_steady_precession",
+              "free_body_diagram", "joint_steady_motion", "linearize", "relative_kinematics",
+              "rolling_steady_modes", "simulate", "steady_motion", "steady_precession"] + (["equations", "symbolic_transfer_function"] if with_symbolic else []):
     globals()[_name] = _takes_a_model(globals()[_name])
 del _name
 

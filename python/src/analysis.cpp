@@ -13,6 +13,7 @@
 #include "momenta/analysis/equilibrium.hpp"
 #include "momenta/analysis/frequency_response.hpp"
 #include "momenta/analysis/joint_steady_motion.hpp"
+#include "momenta/analysis/rolling_steady_motion.hpp"
 #include "momenta/analysis/linearize.hpp"
 #include "momenta/analysis/modes.hpp"
 #include "momenta/analysis/modes_text.hpp"
@@ -556,6 +557,81 @@ void bind_find_steady_precession(py::module_& m) {
       "as `momenta steady` (which takes degrees).");
 }
 
+void bind_rolling_steady_motion(py::module_& m) {
+  py::class_<RollingSteadyMotion>(m, "RollingSteadyMotion",
+                                  "A steady motion of a body of revolution rolling on a level "
+                                  "floor (docs/analysis.md, steady motions of rolling bodies).")
+      .def_property_readonly("q", [](const RollingSteadyMotion& r) { return to_numpy(r.point.q); })
+      .def_property_readonly("v", [](const RollingSteadyMotion& r) { return to_numpy(r.point.v); })
+      .def_readonly("lean", &RollingSteadyMotion::lean,
+                    "rad: the disk's plane from the vertical, > 0 towards `lateral`")
+      .def_readonly("precession", &RollingSteadyMotion::precession, "Ω about the vertical, rad/s")
+      .def_readonly("spin", &RollingSteadyMotion::spin, "ω·e, rad/s")
+      .def_readonly("relative_spin", &RollingSteadyMotion::relative_spin,
+                    "σ = ω·e − Ω n·e, rad/s (relative to the turning frame)")
+      .def_readonly("speed", &RollingSteadyMotion::speed, "of the centre of mass, m/s")
+      .def_readonly("radius", &RollingSteadyMotion::radius,
+                    "of the centre of mass's circle, m (> 0: centre on the lateral side; inf on "
+                    "a straight line)")
+      .def_readonly("contact_radius", &RollingSteadyMotion::contact_radius, "m")
+      .def_property_readonly("heading",
+                             [](const RollingSteadyMotion& r) { return to_numpy(r.heading_W); })
+      .def_property_readonly("lateral",
+                             [](const RollingSteadyMotion& r) { return to_numpy(r.lateral_W); })
+      .def_property_readonly(
+          "contact_force", [](const RollingSteadyMotion& r) { return to_numpy(r.contact_force); },
+          "the floor's force on the body: normal, longitudinal, lateral (N)")
+      .def_readonly("residual", &RollingSteadyMotion::residual);
+  py::class_<RollingSteadyModes>(m, "RollingSteadyModes",
+                                 "The disturbed motion about a rolling body's steady motion, "
+                                 "seen from its turning frame.")
+      .def_readonly("motion", &RollingSteadyModes::motion)
+      .def_readonly("reduced", &RollingSteadyModes::reduced, "ẋ = A x (StateSpace, A only)")
+      .def_readonly("eigenvalues", &RollingSteadyModes::eigenvalues,
+                    "the wobbles (each conjugate pair once), ascending |λ|")
+      .def_readonly("circle_shift", &RollingSteadyModes::circle_shift,
+                    "±iΩ: the circle displaced (a neighbouring steady motion)")
+      .def_readonly("zero_eigenvalues", &RollingSteadyModes::zero_eigenvalues)
+      .def_readonly("stable", &RollingSteadyModes::stable)
+      .def_readonly("growth_rate", &RollingSteadyModes::growth_rate, "1/s");
+  m.def(
+      "find_rolling_steady_motions",
+      [](const ModelHandle& h, std::optional<double> lean, std::optional<double> speed,
+         std::optional<double> radius, std::optional<double> precession,
+         std::optional<double> spin) {
+        std::vector<std::pair<RollingCondition, double>> given;
+        if (speed) given.emplace_back(RollingCondition::speed, *speed);
+        if (radius) given.emplace_back(RollingCondition::radius, *radius);
+        if (precession) given.emplace_back(RollingCondition::precession, *precession);
+        if (spin) given.emplace_back(RollingCondition::spin, *spin);
+        if (given.size() != 1) {
+          throw InvalidArgument(fmt::format(
+              "find_rolling_steady_motions: give exactly one of speed, radius, precession or "
+              "spin ({} given)",
+              given.size()));
+        }
+        return find_rolling_steady_motions(h.model(), lean, given[0].first, given[0].second);
+      },
+      py::arg("model"), py::kw_only(), py::arg("lean") = py::none(),
+      py::arg("speed") = py::none(), py::arg("radius") = py::none(),
+      py::arg("precession") = py::none(), py::arg("spin") = py::none(),
+      "The steady motions of the model's rolling body at a lean (rad; none on a pivot) and one of "
+      "speed (m/s), radius (m; math.inf for a straight line), precession or spin (rad/s): slow "
+      "then fast, as `momenta steady` (which takes degrees).");
+  m.def(
+      "rolling_steady_modes",
+      [](const ModelHandle& h, const std::optional<RollingSteadyMotion>& motion,
+         const py::object& q, const py::object& v, double t) {
+        return rolling_steady_modes(
+            h.model(), motion ? *motion : rolling_steady_motion(h.model(), point_of(h, q, v, t)));
+      },
+      py::arg("model"), py::arg("motion") = py::none(), py::kw_only(), py::arg("q") = py::none(),
+      py::arg("v") = py::none(), py::arg("t") = 0.0,
+      "The disturbed motion about a steady motion of the model's rolling body (one found, or the "
+      "initial state or q, v, checked to be steady): wobble eigenvalues, the displaced circle's, "
+      "stability; as `momenta modes --about steady`.");
+}
+
 void bind_campbell(py::module_& m) {
   py::class_<CampbellPoint>(m, "CampbellPoint", "One speed of a Campbell diagram.")
       .def_readonly("speed", &CampbellPoint::speed, "rad/s")
@@ -588,6 +664,7 @@ void bind_analysis(py::module_& m) {
   bind_joint_steady_motion(m);
   bind_steady_precession(m);
   bind_find_steady_precession(m);
+  bind_rolling_steady_motion(m);
   bind_campbell(m);
 }
 

@@ -15,13 +15,6 @@ namespace {
 
 double hertz(double omega) { return omega / (2 * std::numbers::pi); }
 
-// An eigenvalue below this fraction of the largest is a rigid-body (or neutral) mode's zero: the
-// linearization's central differences leave A with errors near 1e-10 of its scale, and a double
-// zero eigenvalue splits by about their square root (the flexible satellite's 2.4e-9 rad/s
-// against its 1 rad/s boom mode). A physical mode this slow beside the fastest is not resolved
-// by the linearization anyway; --json keeps the computed value. A model whose every eigenvalue
-// is that small has no scale here to tell round-off by, and prints them as they are.
-constexpr double kZeroEigenvalueRelative = 1e-6;
 
 }  // namespace
 

@@ -6,12 +6,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "momenta/analysis/equilibrium.hpp"
 #include "momenta/analysis/frequency_response.hpp"
 #include "momenta/analysis/joint_steady_motion.hpp"
 #include "momenta/analysis/modes.hpp"
+#include "momenta/analysis/modes_text.hpp"
+#include "momenta/analysis/rolling_steady_motion.hpp"
 #include "momenta/analysis/time_response.hpp"
 #include "momenta/analysis/transfer_function.hpp"
 #include "momenta/common/error.hpp"
@@ -110,7 +113,18 @@ json analysis_json(const io::ModelFile& file, const analysis::LinearModel& linea
                    const std::string& about, double& fastest_rate) {
   const model::Model& model = file.model;
   const analysis::StateSpace& sys = linear.system;
-  const analysis::Modes modes = analysis::modes(sys);
+  analysis::Modes modes = analysis::modes(sys);
+  // Round-off of a zero eigenvalue (a rigid-body mode, a symmetry) shows as 0, as in `modes`.
+  double largest = 0.0;
+  for (const analysis::Mode& m : modes.modes) largest = std::max(largest, std::abs(m.eigenvalue));
+  for (analysis::Mode& m : modes.modes) {
+    if (std::abs(m.eigenvalue) <= analysis::kZeroEigenvalueRelative * largest) {
+      m.eigenvalue = 0.0;
+      m.natural_frequency = 0.0;
+      m.damped_frequency = 0.0;
+      m.damping_ratio = std::numeric_limits<double>::quiet_NaN();
+    }
+  }
   json poles = json::array(), mode_list = json::array();
   fastest_rate = 0.0;
   for (const analysis::Mode& m : modes.modes) {
@@ -182,6 +196,23 @@ json linear_json(const io::ModelFile& file, const LinearSettings& settings, doub
     options.output_specs = file.outputs;
     analysis::OperatingPoint point;
     std::string about;
+    if (settings.about == "steady" && analysis::rolling_steady_applies(file.model)) {
+      // A rolling body's steady motion, seen from its turning frame (no inputs or outputs).
+      const analysis::RollingSteadyMotion motion = analysis::rolling_steady_motion(
+          file.model, analysis::initial_operating_point(file.model));
+      const analysis::RollingSteadyModes modes = analysis::rolling_steady_modes(file.model, motion);
+      analysis::LinearModel linear;
+      linear.system = modes.reduced;
+      linear.point = motion.point;
+      linear.coordinates = modes.coordinates;
+      return analysis_json(
+          file, linear,
+          fmt::format("the steady rolling motion (precession {:.6g} rad/s, spin {:.6g} rad/s), "
+                      "seen from its turning frame: ±iΩ = ±{:.6g}i is the circle displaced, the "
+                      "zeros are its symmetry",
+                      motion.precession, motion.spin, std::abs(motion.precession)),
+          fastest_rate);
+    }
     if (settings.about == "steady") {
       const analysis::JointSteadyMotion steady = analysis::joint_steady_motion(
           file.model, analysis::initial_operating_point(file.model), options);

@@ -275,6 +275,25 @@ test('rotor on bearings: modes about the steady motion and the Campbell diagram 
   await r.page.close();
 });
 
+test('rolling coin: the steady circle\'s modes seen from its turning frame', async () => {
+  const model = path.join(examples, 'constraints', 'rolling_coin.yaml');
+  const r = await checkSimulationPage('rolling-coin-steady', model, ['--about', 'steady', '--duration', '1']);
+  // The linear panel: the wobble, the displaced circle's ±iΩ and the symmetry's zeros, as
+  // `modes --about steady` gives them.
+  const linear = await r.page.evaluate(() => window.momentaReport.linear());
+  assert.equal(linear.available, true);
+  assert.match(linear.about, /steady rolling motion \(precession 2\.16958 rad\/s/);
+  const modes = JSON.parse(run('modes', model, '--about', 'steady', '--json'));
+  assert.deepEqual(linear.states, modes.state_names);
+  const imaginary = linear.poles.map(([, im]) => im).filter((im) => im > 1e-3).sort((a, b) => a - b);
+  assert.equal(imaginary.length, 2);
+  assert.ok(Math.abs(imaginary[0] - modes.circle_shift[0][1]) < 1e-9, `circle ${imaginary[0]}`);
+  assert.ok(Math.abs(imaginary[1] - modes.eigenvalues[0][1]) < 1e-9, `wobble ${imaginary[1]}`);
+  const shown = await r.page.evaluate(() => document.getElementById('linear').innerText);
+  assert.match(shown, /15\.14/);
+  await r.page.close();
+});
+
 test('a run that blows up still gives a report, with the reason at the top', async () => {
   const model = path.join(sourceDir, 'tests', 'data', 'models', 'stiff_spring.yaml');
   const file = path.join(work, 'blowup.html');

@@ -659,6 +659,64 @@ TEST_F(AnalysisCli, SteadyPrecessionSolver) {
   EXPECT_EQ(momenta("steady " + example("pendulum") + " --tilt 20 --spin 300").code, 1);
 }
 
+// `momenta steady` on rolling bodies (issue 28): the coin's circle of 0.5 m at a lean of 20°
+// (Ω = 2.169577594958739 rad/s from the moment equation, as the example's own state), both
+// circles at its speed, Beer's SP 18.2 from the spin; `modes --about steady` on the example's
+// state gives the wobble and the displaced circle's Ω; usage errors say what a rolling body takes.
+TEST_F(AnalysisCli, SteadyRollingCoinAndDiskOnAxle) {
+  const std::string coin = example("constraints/rolling_coin");
+  const CliRun circle = momenta("steady " + coin + " --lean 20 --radius 0.5 --json");
+  ASSERT_EQ(circle.code, 0) << circle.err;
+  const json j = json::parse(circle.out);
+  ASSERT_EQ(j.at("motions").size(), 1u);
+  const json& m = j.at("motions")[0];
+  EXPECT_NEAR(m.at("precession").get<double>(), 2.169577594958739, 1e-12);
+  EXPECT_NEAR(m.at("spin").get<double>(), 10.84788797479370, 1e-11);
+  EXPECT_NEAR(m.at("contact_force").at("normal").get<double>(), 9.81, 1e-12);
+  EXPECT_TRUE(m.at("stable").get<bool>());
+  EXPECT_EQ(m.at("state").at("q").size(), 7u);
+  const CliRun by_speed = momenta("steady " + coin + " --lean 20 --speed 1.0847887974793695");
+  ASSERT_EQ(by_speed.code, 0) << by_speed.err;
+  EXPECT_NE(by_speed.out.find("1 (slow):\n  precession Ω = 2.169577595 rad/s"), std::string::npos)
+      << by_speed.out;
+  EXPECT_NE(by_speed.out.find("2 (fast):\n  precession Ω = -192.47"), std::string::npos)
+      << by_speed.out;
+  EXPECT_NE(by_speed.out.find("leaning out of the turn"), std::string::npos) << by_speed.out;
+  const CliRun straight = momenta("steady " + coin + " --lean 0 --speed 0.3");
+  ASSERT_EQ(straight.code, 0) << straight.err;
+  EXPECT_NE(straight.out.find("on a straight line"), std::string::npos) << straight.out;
+  EXPECT_NE(straight.out.find("unstable: a disturbance grows at 7.54188 1/s"), std::string::npos)
+      << straight.out;
+
+  const CliRun beer =
+      momenta("steady " + example("constraints/rolling_disk_on_axle") + " --spin 20");
+  ASSERT_EQ(beer.code, 0) << beer.err;
+  EXPECT_NE(beer.out.find("precession Ω = -6.666666667 rad/s"), std::string::npos) << beer.out;
+  EXPECT_NE(beer.out.find("normal 52.5733 N"), std::string::npos) << beer.out;
+
+  const CliRun modes = momenta("modes " + coin + " --about steady --json");
+  ASSERT_EQ(modes.code, 0) << modes.err;
+  const json mj = json::parse(modes.out);
+  EXPECT_EQ(mj.at("motion"), "steady rolling");
+  ASSERT_EQ(mj.at("eigenvalues").size(), 1u);
+  EXPECT_NEAR(mj.at("eigenvalues")[0][1].get<double>(), 15.1414290837, 1e-8);
+  EXPECT_NEAR(mj.at("circle_shift")[0][1].get<double>(), 2.169577594958739, 1e-8);
+  EXPECT_EQ(mj.at("A").size(), 8u);
+
+  // A condition is needed, only one, a lean for a free body, none of a top's options.
+  EXPECT_EQ(momenta("steady " + coin + " --lean 20").code, 2);
+  EXPECT_EQ(momenta("steady " + coin + " --lean 20 --radius 1 --speed 2").code, 2);
+  EXPECT_EQ(momenta("steady " + coin + " --lean 20 --radius zero").code, 2);
+  EXPECT_EQ(momenta("steady " + coin + " --tilt 20 --spin 3").code, 2);
+  const CliRun no_lean = momenta("steady " + coin + " --radius 1");
+  EXPECT_EQ(no_lean.code, 1);
+  EXPECT_NE(no_lean.err.find("give its lean"), std::string::npos) << no_lean.err;
+  EXPECT_EQ(momenta("steady " + example("heavy_top") + " --lean 20 --speed 1").code, 2);
+  const CliRun response = momenta("response " + coin + " --about steady --input x --output y --step");
+  EXPECT_EQ(response.code, 2);
+  EXPECT_NE(response.err.find("rolling body"), std::string::npos) << response.err;
+}
+
 // A rotor in joint coordinates (examples/rotor_on_bearings.yaml): --about steady leaves the spin
 // angle out; modes name each whirl; campbell finds both critical speeds (the closed forms are
 // checked in tests/validation/examples/campbell_examples_test.cpp); response works about the

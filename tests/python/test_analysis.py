@@ -197,6 +197,28 @@ def test_find_steady_precession_is_momenta_steadys():
     assert p.residual < 1e-15
 
 
+def test_rolling_steady_motions_are_momenta_steadys():
+    """The coin's steady circles at a lean and speed equal `momenta steady --json` bit for bit; a
+    state found is recognised as steady, and its modes are `momenta modes --about steady`'s."""
+    path = EXAMPLES / "constraints" / "rolling_coin.yaml"
+    model = momenta.load_model(path)
+    found = momenta.find_rolling_steady_motions(model, lean=20 * np.pi / 180, speed=1.0847887974793695)
+    cli = cli_json("steady", path, "--lean", 20, "--speed", "1.0847887974793695")
+    assert [m.precession for m in found] == [m["precession"] for m in cli["motions"]]
+    assert found[0].radius == pytest.approx(0.5, rel=1e-12)
+    assert found[0].contact_force[0] == pytest.approx(9.81, rel=1e-13)
+    modes = momenta.rolling_steady_modes(model, q=found[0].q, v=found[0].v)
+    assert modes.motion.precession == pytest.approx(found[0].precession, rel=1e-13)
+    assert modes.stable and len(modes.eigenvalues) == 1
+    expected = cli_json("modes", path, "--about", "steady")
+    assert modes.eigenvalues[0].imag == pytest.approx(expected["eigenvalues"][0][1], rel=1e-9)
+    with pytest.raises(momenta.InvalidArgument, match="exactly one"):
+        momenta.find_rolling_steady_motions(model, lean=0.1, speed=1.0, radius=2.0)
+    beer = momenta.load_model(EXAMPLES / "constraints" / "rolling_disk_on_axle.yaml")
+    (disk,) = momenta.find_rolling_steady_motions(beer, spin=20.0)
+    assert disk.precession == pytest.approx(-20.0 * 0.15 / 0.45, rel=1e-14)
+
+
 def test_a_sweep_from_python_is_the_command_lines_file(tmp_path):
     """momenta.sweep gives the columns `momenta sweep` writes, every double the same, whatever
     the thread count; pandas makes a table of them."""
