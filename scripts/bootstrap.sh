@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build ccache pkg-config
   libeigen3-dev libfmt-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
-  libassimp-dev libboost-dev libboost-math-dev libsundials-dev
+  libassimp-dev libboost-dev libboost-math-dev libsundials-dev libtinyxml2-dev
   libgtest-dev libgmock-dev libbenchmark-dev libginac-dev
   python3 python3-numpy python3-scipy
 )

@@ -288,6 +288,7 @@ json describe(const InfoOptions& o, const io::ModelFile& file) {
   if (s.absolute_tolerance) settings["atol"] = *s.absolute_tolerance;
   if (s.every) settings["every"] = *s.every;
   j["simulation"] = std::move(settings);
+  j["not_used"] = file.notes;  // what a URDF says that momenta does not use, with its line
   return j;
 }
 
@@ -357,6 +358,11 @@ void print_text(const json& j, const io::ModelFile& file) {
       columns += (columns.empty() ? "" : ", ") + c.get<std::string>();
     fmt::print("  {}  {} of {}: {}\n", out["name"].get<std::string>(),
                out["quantity"].get<std::string>(), out["target"].get<std::string>(), columns);
+  }
+
+  if (!file.notes.empty()) {
+    fmt::print("\nnot used by momenta ({})\n", file.notes.size());
+    for (const std::string& note : file.notes) fmt::print("  {}\n", note);
   }
 
   if (!j["simulation"].empty()) {

@@ -13,6 +13,7 @@
 #include "model_file_internal.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
+#include "momenta/io/urdf_file.hpp"
 #include "momenta/model/integrators.hpp"
 
 namespace momenta::io {
@@ -298,10 +299,12 @@ ModelFile detail::compose_model_file(const YamlNode& root, const std::filesystem
                    root.file(),
                    item_locations(ctx),
                    std::move(body_parts),
-                   read_symbol_names(root)};
+                   read_symbol_names(root),
+                   {}};
 }
 
 ModelFile read_model_file(const std::filesystem::path& path) {
+  if (is_urdf_path(path)) return read_urdf_file(path);
   return detail::compose_model_file(YamlNode::load_file(path), path.parent_path());
 }
 

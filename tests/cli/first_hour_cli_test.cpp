@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
 
@@ -262,6 +264,43 @@ outputs:
   EXPECT_TRUE(has(overflow.err, "overflows before t = 1000 s; choose a shorter final time"))
       << overflow.err;
   EXPECT_FALSE(shows_non_finite(overflow.out)) << overflow.out;
+}
+
+// A URDF file is a model file (docs/model-formats.md): `info` lists what momenta does not use with
+// its line; `simulate` runs the double pendulum as its YAML twin does, row for row; a bad file is
+// an error at its line, exit 1.
+TEST_F(FirstHourCli, UrdfFilesAreModelFiles) {
+  const std::string arm = quoted(source_dir() + "/tests/data/models/urdf/three_link_arm.urdf");
+  CliRun r = momenta("info " + arm);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "three link arm")) << r.out;
+  EXPECT_TRUE(has(r.out, "not used by momenta (6)")) << r.out;
+  EXPECT_TRUE(has(r.out, "three_link_arm.urdf:39: the limits of joint 'elbow' are not enforced"))
+      << r.out;
+  r = momenta("info " + arm + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out).at("not_used").size(), 6u);
+
+  const std::string urdf = quoted(source_dir() + "/tests/data/models/urdf/double_pendulum.urdf");
+  r = momenta("simulate " + urdf + " --duration 0.5 --dt 0.0005 --every 20 -o " + at("urdf.csv"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string rows = slurp(dir_ / "urdf.csv");
+  EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 52);
+  // Hanging at rest, its normal modes are the double pendulum's: ω² = (g/l)(2 ∓ √2).
+  r = momenta("modes " + urdf + " --about equilibrium --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto normal = nlohmann::json::parse(r.out).at("normal_modes");
+  ASSERT_EQ(normal.size(), 2u);
+  EXPECT_NEAR(normal[0].at("squared_frequency").get<double>(), 9.81 * (2 - std::sqrt(2.0)), 1e-11);
+  EXPECT_NEAR(normal[1].at("squared_frequency").get<double>(), 9.81 * (2 + std::sqrt(2.0)), 1e-11);
+
+  const fs::path bad = write("bad.urdf",
+                             "<robot name='r'>\n<link name='a'/>\n<link name='b'/>\n"
+                             "<joint name='j' type='hinge'><parent link='a'/>"
+                             "<child link='b'/></joint>\n</robot>\n");
+  r = momenta("info " + quoted(bad.string()));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "bad.urdf:4: joint 'j': unknown type 'hinge'")) << r.err;
 }
 
 TEST_F(FirstHourCli, LibraryMessagesAreSaidInMomentasWords) {

@@ -112,3 +112,14 @@ def test_bodies_by_name_or_index():
     assert model.body_mass_properties("mass1").mass == 1.0
     with pytest.raises(IndexError):
         model.body_mass_properties(7)
+
+
+def test_a_urdf_file_loads_as_a_model():
+    """momenta.load_model takes a URDF (docs/model-formats.md): the double pendulum hangs with the
+    normal modes of its YAML twin, ω² = (g/l)(2 ∓ √2); a bad file is a ParseError at its line."""
+    urdf = EXAMPLES.parent / "tests" / "data" / "models" / "urdf" / "double_pendulum.urdf"
+    model = momenta.load_model(urdf)
+    equilibrium = momenta.find_equilibrium(model)
+    squared = sorted(m.squared_frequency for m in momenta.undamped_modes(equilibrium.linear))
+    assert squared == pytest.approx([9.81 * (2 - 2 ** 0.5), 9.81 * (2 + 2 ** 0.5)], rel=1e-11)
+    assert momenta.simulate(model, duration=0.1).time[-1] == pytest.approx(0.1)

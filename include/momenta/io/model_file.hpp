@@ -51,6 +51,9 @@ struct ModelFile {
     int line = 0, column = 0;
   };
   std::map<std::string, SymbolName> symbol_names;
+  /// What the file says that momenta does not use, one `file:line: what` each (a URDF's joint
+  /// limits, visuals, transmissions: docs/model-formats.md); empty for momenta's own files.
+  std::vector<std::string> notes;
   /// The names alone (symbolic::EquationOptions::names).
   std::map<std::string, std::string> given_symbol_names() const {
     std::map<std::string, std::string> names;
@@ -75,7 +78,8 @@ struct ModelFile {
 /// joint or a massless subtree on a joint whose motion is free (singular mass matrix); a non-unit
 /// axis or quaternion; a signal table whose times do not increase; an output that does not fit its
 /// target. Problems found only when the model is assembled are reported at the line of the
-/// body, joint or element they name.
+/// body, joint or element they name. A file named `*.urdf` is read as a URDF robot description
+/// (io/urdf_file.hpp, docs/model-formats.md).
 ModelFile read_model_file(const std::filesystem::path& path);
 
 /// As read_model_file, from YAML text; `file_name` labels messages and `base_dir` resolves

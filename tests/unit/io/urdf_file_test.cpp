@@ -1,0 +1,211 @@
+// The URDF reader (io/urdf_file.hpp): a URDF and an independent description of the same robot
+// give the same dynamics — the double pendulum against its model file, a spatial arm with turned
+// frames against the arm built in code with SciPy-convention Euler angles — and every problem of a
+// file is an error at its line, every element momenta does not use a note at its line.
+
+#include "momenta/io/urdf_file.hpp"
+
+#include <random>
+#include <string>
+#include <variant>
+
+#include <gtest/gtest.h>
+
+#include "momenta/common/error.hpp"
+#include "momenta/dynamics/aba.hpp"
+#include "momenta/dynamics/crba.hpp"
+#include "momenta/dynamics/data.hpp"
+#include "momenta/math/rotation.hpp"
+#include "momenta/model/model_builder.hpp"
+#include "momenta_test/tolerance.hpp"
+
+namespace momenta::io {
+namespace {
+
+std::string urdf_path(const std::string& name) {
+  return test::source_dir() + "/tests/data/models/urdf/" + name + ".urdf";
+}
+
+// max |M_a − M_b| / max |M_b| and the same of ABA's accelerations over `samples` random states
+// (angles in ±π, lengths in ±0.1 m, rates in ±3, efforts in ±5).
+double largest_difference(const model::Model& a, const model::Model& b, int samples) {
+  EXPECT_EQ(a.nq(), b.nq());
+  EXPECT_EQ(a.nv(), b.nv());
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  dynamics::Data da(a), db(b);
+  double worst = 0.0;
+  for (int s = 0; s < samples; ++s) {
+    VecX q = a.initial_q(), v(a.nv()), tau(a.nv());
+    for (int i = 0; i < a.nq(); ++i) q[i] = 3.0 * unit(random);
+    for (int i = 0; i < a.nv(); ++i) {
+      v[i] = 3.0 * unit(random);
+      tau[i] = 5.0 * unit(random);
+    }
+    const MatX Ma = dynamics::crba(a, da, q), Mb = dynamics::crba(b, db, q);
+    worst = std::max(worst, (Ma - Mb).cwiseAbs().maxCoeff() / Mb.cwiseAbs().maxCoeff());
+    const VecX va = dynamics::aba(a, da, q, v, tau), vb = dynamics::aba(b, db, q, v, tau);
+    worst = std::max(worst, (va - vb).cwiseAbs().maxCoeff() / vb.cwiseAbs().maxCoeff());
+  }
+  return worst;
+}
+
+TEST(UrdfFile, DoublePendulumIsItsModelFile) {
+  const ModelFile urdf = read_urdf_file(urdf_path("double_pendulum"));
+  const ModelFile yaml = read_model_file(test::source_dir() + "/examples/double_pendulum.yaml");
+  EXPECT_EQ(urdf.name, "double pendulum");
+  // The root link is welded to the world: a massless body on a fixed joint, and a note says so.
+  EXPECT_EQ(urdf.model.num_bodies(), 4);
+  ASSERT_EQ(urdf.notes.size(), 1u);
+  EXPECT_NE(urdf.notes[0].find(":4: link 'base', the root, is fixed to the world"),
+            std::string::npos)
+      << urdf.notes[0];
+  // The same masses on the same axes: M and ABA agree to round-off.
+  EXPECT_LT(largest_difference(urdf.model, yaml.model, 20), 1e-14);
+}
+
+// The arm built in code: rpy as SciPy's extrinsic "xyz" (roll about x, then pitch about the
+// fixed y, then yaw about the fixed z), the inertia turned into the link's axes by hand.
+model::Model arm_in_code() {
+  const auto pose = [](const Vec3& xyz, const Vec3& rpy) {
+    return Transform(rotation_from_euler("xyz", rpy), xyz);
+  };
+  const auto inertia = [](double xx, double yy, double zz, double xy, double xz, double yz) {
+    Mat3 I;
+    I << xx, xy, xz, xy, yy, yz, xz, yz, zz;
+    return I;
+  };
+  model::ModelBuilder b;
+  b.set_gravity(Vec3(0, 0, -9.81));
+  const Transform X_upper = pose({0.02, 0.01, 0.15}, {0.1, -0.2, 0.3});
+  b.add_body("base", inertia::MassProperties());
+  b.add_body("upper", inertia::MassProperties(
+                          2.0, X_upper.p,
+                          X_upper.R * inertia(0.03, 0.028, 0.012, 0.001, -0.002, 0.0015) *
+                              X_upper.R.transpose()));
+  b.add_body("fore",
+             inertia::MassProperties(1.2, Vec3(0, 0, 0.12), inertia(0.01, 0.012, 0.002, 0, 0, 0)));
+  b.add_body("tool",
+             inertia::MassProperties(0.3, Vec3::Zero(), inertia(1e-4, 1e-4, 5e-5, 0, 0, 0)));
+  const auto joint = [&](std::string name, model::JointType type, std::string parent,
+                         std::string child, const Transform& X_PJ, const Vec3& axis) {
+    model::Joint j;
+    j.name = std::move(name);
+    j.type = type;
+    j.parent = std::move(parent);
+    j.child = std::move(child);
+    j.X_PJ = X_PJ;
+    j.axis = axis.normalized();
+    b.add_joint(j);
+  };
+  joint("base_to_world", model::JointType::fixed, "world", "base", Transform(), Vec3::UnitZ());
+  joint("shoulder", model::JointType::revolute, "base", "upper", pose({0, 0, 0.3}, {0, 0, 0.5}),
+        Vec3::UnitZ());
+  joint("elbow", model::JointType::revolute, "upper", "fore",
+        pose({0, 0.05, 0.3}, {0.3, 0.2, -0.1}), Vec3::UnitY());
+  joint("slide", model::JointType::prismatic, "fore", "tool", pose({0, 0, 0.25}, {-0.4, 0, 0}),
+        Vec3(0.6, 0, 0.8));
+  return b.build();
+}
+
+TEST(UrdfFile, SpatialArmIsTheArmBuiltInCode) {
+  const ModelFile urdf = read_urdf_file(urdf_path("three_link_arm"));
+  EXPECT_LT(largest_difference(urdf.model, arm_in_code(), 50), 1e-13);
+  // Damping kept; limits, friction, visuals and the transmission listed with their lines.
+  EXPECT_EQ(urdf.model.joint(urdf.model.joint_index("elbow")).damping, 0.1);
+  std::string notes;
+  for (const std::string& n : urdf.notes) notes += n + "\n";
+  // In the file's order.
+  EXPECT_NE(notes.find(":5: link 'base'"), std::string::npos);
+  EXPECT_LT(notes.find(":5: link 'base'"), notes.find(":6: <visual>")) << notes;
+  EXPECT_LT(notes.find(":47: the limits"), notes.find(":49: <transmission>")) << notes;
+  for (const char* expected :
+       {":6: <visual> of link 'base': not used by momenta",
+        ":39: the limits of joint 'elbow' are not enforced (lower -2, upper 2); effort 50 and "
+        "velocity 3 recorded only",
+        ":40: the Coulomb friction of joint 'elbow' is not modelled",
+        ":47: the limits of joint 'slide' are not enforced (lower 0, upper 0.1)",
+        ":49: <transmission>: not used by momenta", ":5: link 'base', the root, is fixed"}) {
+    EXPECT_NE(notes.find(expected), std::string::npos) << expected << "\n" << notes;
+  }
+}
+
+// A robot whose root link is named world floats on a floating joint; a mimic joint is a coupler.
+TEST(UrdfFile, WorldRootFloatingBaseAndMimic) {
+  const ModelFile f = parse_urdf(R"(<robot name="gripper">
+  <link name="world"/>
+  <link name="palm"><inertial><mass value="1"/><inertia ixx="1e-3" iyy="1e-3" izz="1e-3"/></inertial></link>
+  <link name="a"><inertial><mass value="0.1"/><inertia ixx="1e-5" iyy="1e-5" izz="1e-5"/></inertial></link>
+  <link name="b"><inertial><mass value="0.1"/><inertia ixx="1e-5" iyy="1e-5" izz="1e-5"/></inertial></link>
+  <joint name="float" type="floating"><parent link="world"/><child link="palm"/></joint>
+  <joint name="left" type="prismatic"><parent link="palm"/><child link="a"/><axis xyz="1 0 0"/></joint>
+  <joint name="right" type="prismatic"><parent link="palm"/><child link="b"/><axis xyz="1 0 0"/>
+    <mimic joint="left" multiplier="-1" offset="0.01"/></joint>
+</robot>)",
+                                 "gripper.urdf");
+  EXPECT_EQ(f.model.num_bodies(), 4);  // the world and three links
+  EXPECT_EQ(f.model.joint(0).type, model::JointType::free);
+  ASSERT_EQ(f.model.constraints().size(), 1u);
+  const auto& coupler = std::get<model::JointCoupler>(f.model.constraints()[0]);
+  EXPECT_EQ(coupler.joint_a, "right");
+  EXPECT_EQ(coupler.joint_b, "left");
+  EXPECT_EQ(coupler.ratio, -1.0);
+  EXPECT_EQ(coupler.offset, 0.01);
+  EXPECT_TRUE(f.notes.empty());
+}
+
+// Each problem at its line, with a did-you-mean where a name is close.
+std::string error_of(const std::string& text) {
+  try {
+    parse_urdf(text, "r.urdf");
+  } catch (const ParseError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no error for\n" << text;
+  return {};
+}
+
+TEST(UrdfFile, ErrorsAreAtTheirLine) {
+  const std::string two_links = R"(<robot name="r">
+<link name="a"><inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1"/></inertial></link>
+<link name="b"><inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1"/></inertial></link>
+)";
+  EXPECT_NE(error_of("<robot><link name='a'>").find("r.urdf:1: not well-formed XML"),
+            std::string::npos);
+  EXPECT_NE(error_of("<model/>").find("root element is <robot>"), std::string::npos);
+  EXPECT_NE(
+      error_of(
+          two_links +
+          R"(<joint name="j" type="revolut"><parent link="a"/><child link="b"/></joint></robot>)")
+          .find("r.urdf:4: joint 'j': unknown type 'revolut' (did you mean 'revolute'?)"),
+      std::string::npos);
+  EXPECT_NE(
+      error_of(
+          two_links +
+          R"(<joint name="j" type="fixed"><parent link="a"/><child link="bb"/></joint></robot>)")
+          .find("r.urdf:4: unknown link 'bb' (did you mean 'b'?)"),
+      std::string::npos);
+  EXPECT_NE(error_of(two_links + "</robot>").find("the links form 2 trees, rooted at 'a', 'b'"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"(<robot name="r">
+<link name="a"><inertial><mass value="-1"/></inertial></link></robot>)")
+                .find("r.urdf:2: the mass of link 'a' is negative"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"(<robot name="r">
+<link name="a"><inertial><mass value="1"/>
+<inertia ixx="1" iyy="1" izz="3"/></inertial></link></robot>)")
+                .find("r.urdf:3:"),
+            std::string::npos);  // no mass distribution has moments 1, 1, 3
+  EXPECT_NE(error_of(R"(<robot name="r"><link name="a">
+<inertial><origin xyz="0 0 x"/><mass value="1"/></inertial></link></robot>)")
+                .find("r.urdf:2: <origin xyz=\"0 0 x\">: expected three finite numbers"),
+            std::string::npos);
+  EXPECT_NE(error_of(two_links + R"(<link name="c"/>
+<joint name="j" type="fixed"><parent link="a"/><child link="b"/></joint>
+<joint name="k" type="fixed"><parent link="c"/><child link="b"/></joint></robot>)")
+                .find("r.urdf:6: link 'b' is the child of joints 'j' and 'k'"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace momenta::io
