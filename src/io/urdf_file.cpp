@@ -341,9 +341,11 @@ ModelFile UrdfReader::read() {
                      "<joint type=\"floating\"> from a link named 'world')",
                      root));
   }
+  std::set<std::string> reached = {root};
   while (!stack.empty()) {
     const std::string link = stack.back();
     stack.pop_back();
+    reached.insert(link);
     for (const std::string& j : children[link]) {
       JointEntry& entry = joints_.at(j);
       if (entry.joint.parent == model::kWorldBodyName && !root_is_world) {
@@ -356,6 +358,17 @@ ModelFile UrdfReader::read() {
       items.push_back(located(ModelItemRef::Kind::joint, j, entry.element));
       stack.push_back(child);
     }
+  }
+  // Links every joint names but the root cannot reach: their joints close a cycle.
+  if (reached.size() != link_order_.size()) {
+    std::vector<std::string> stranded;
+    for (const std::string& l : link_order_) {
+      if (reached.count(l) == 0) stranded.push_back(l);
+    }
+    fail(links_.at(stranded.front()).element,
+         fmt::format("links '{}' do not hang from the root '{}': their joints form a cycle (a URDF "
+                     "describes a tree)",
+                     fmt::join(stranded, "', '"), root));
   }
   // Mimic joints: couplers q = multiplier · q_mimicked + offset.
   for (const std::string& j : joint_order_) {

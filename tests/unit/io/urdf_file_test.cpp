@@ -205,6 +205,13 @@ TEST(UrdfFile, ErrorsAreAtTheirLine) {
 <joint name="k" type="fixed"><parent link="c"/><child link="b"/></joint></robot>)")
                 .find("r.urdf:6: link 'b' is the child of joints 'j' and 'k'"),
             std::string::npos);
+  // A cycle beside the tree: its links would be left out; refused instead.
+  EXPECT_NE(error_of(two_links + R"(<link name="c"/>
+<joint name="j" type="fixed"><parent link="b"/><child link="c"/></joint>
+<joint name="k" type="fixed"><parent link="c"/><child link="b"/></joint></robot>)")
+                .find("r.urdf:3: links 'b', 'c' do not hang from the root 'a': their joints form a "
+                      "cycle"),
+            std::string::npos);
 }
 
 }  // namespace
