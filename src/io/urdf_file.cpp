@@ -424,8 +424,17 @@ ModelFile UrdfReader::read() {
 
 ModelFile parse_document(const tinyxml2::XMLDocument& document, const std::string& file_name) {
   if (document.Error()) {
+    if (document.ErrorID() == tinyxml2::XML_ERROR_EMPTY_DOCUMENT) {
+      throw ParseError(file_name, 0, 0, "the file is empty: a URDF file holds a <robot>");
+    }
+    // tinyxml2's name for the error, in words: XML_ERROR_MISMATCHED_ELEMENT → mismatched element.
+    std::string what = document.ErrorName();
+    if (what.rfind("XML_ERROR_", 0) == 0) what.erase(0, 10);
+    std::transform(what.begin(), what.end(), what.begin(), [](unsigned char c) {
+      return c == '_' ? ' ' : static_cast<char>(std::tolower(c));
+    });
     throw ParseError(file_name, document.ErrorLineNum(), 0,
-                     fmt::format("not well-formed XML: {}", document.ErrorStr()));
+                     fmt::format("not well-formed XML ({})", what));
   }
   return UrdfReader(document, file_name).read();
 }

@@ -170,8 +170,11 @@ TEST(UrdfFile, ErrorsAreAtTheirLine) {
 <link name="a"><inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1"/></inertial></link>
 <link name="b"><inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1"/></inertial></link>
 )";
-  EXPECT_NE(error_of("<robot><link name='a'>").find("r.urdf:1: not well-formed XML"),
+  EXPECT_NE(error_of("<robot><link name='a'>\n</robot>")
+                .find("r.urdf:1: not well-formed XML "
+                      "(mismatched element)"),
             std::string::npos);
+  EXPECT_NE(error_of("").find("r.urdf: the file is empty"), std::string::npos);
   EXPECT_NE(error_of("<model/>").find("root element is <robot>"), std::string::npos);
   EXPECT_NE(
       error_of(
