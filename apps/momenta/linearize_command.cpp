@@ -8,9 +8,9 @@
 
 #include "commands.hpp"
 #include "linear_model_options.hpp"
-#include "rolling_steady_output.hpp"
 #include "momenta/analysis/modes.hpp"
 #include "momenta/frontend/model_loading.hpp"
+#include "rolling_steady_output.hpp"
 
 namespace momenta::cli {
 namespace {

@@ -12,11 +12,11 @@
 
 #include "commands.hpp"
 #include "linear_model_options.hpp"
-#include "rolling_steady_output.hpp"
 #include "momenta/analysis/modes.hpp"
 #include "momenta/analysis/modes_text.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
+#include "rolling_steady_output.hpp"
 
 namespace momenta::cli {
 namespace {

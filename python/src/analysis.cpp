@@ -13,10 +13,10 @@
 #include "momenta/analysis/equilibrium.hpp"
 #include "momenta/analysis/frequency_response.hpp"
 #include "momenta/analysis/joint_steady_motion.hpp"
-#include "momenta/analysis/rolling_steady_motion.hpp"
 #include "momenta/analysis/linearize.hpp"
 #include "momenta/analysis/modes.hpp"
 #include "momenta/analysis/modes_text.hpp"
+#include "momenta/analysis/rolling_steady_motion.hpp"
 #include "momenta/analysis/state_space.hpp"
 #include "momenta/analysis/steady_motion.hpp"
 #include "momenta/analysis/step_info.hpp"
@@ -612,9 +612,9 @@ void bind_rolling_steady_motion(py::module_& m) {
         }
         return find_rolling_steady_motions(h.model(), lean, given[0].first, given[0].second);
       },
-      py::arg("model"), py::kw_only(), py::arg("lean") = py::none(),
-      py::arg("speed") = py::none(), py::arg("radius") = py::none(),
-      py::arg("precession") = py::none(), py::arg("spin") = py::none(),
+      py::arg("model"), py::kw_only(), py::arg("lean") = py::none(), py::arg("speed") = py::none(),
+      py::arg("radius") = py::none(), py::arg("precession") = py::none(),
+      py::arg("spin") = py::none(),
       "The steady motions of the model's rolling body at a lean (rad; none on a pivot) and one of "
       "speed (m/s), radius (m; math.inf for a straight line), precession or spin (rad/s): slow "
       "then fast, as `momenta steady` (which takes degrees).");

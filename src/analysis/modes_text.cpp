@@ -15,7 +15,6 @@ namespace {
 
 double hertz(double omega) { return omega / (2 * std::numbers::pi); }
 
-
 }  // namespace
 
 ModesTable modes_table_cells(const Modes& m) {

@@ -712,7 +712,8 @@ TEST_F(AnalysisCli, SteadyRollingCoinAndDiskOnAxle) {
   EXPECT_EQ(no_lean.code, 1);
   EXPECT_NE(no_lean.err.find("give its lean"), std::string::npos) << no_lean.err;
   EXPECT_EQ(momenta("steady " + example("heavy_top") + " --lean 20 --speed 1").code, 2);
-  const CliRun response = momenta("response " + coin + " --about steady --input x --output y --step");
+  const CliRun response =
+      momenta("response " + coin + " --about steady --input x --output y --step");
   EXPECT_EQ(response.code, 2);
   EXPECT_NE(response.err.find("rolling body"), std::string::npos) << response.err;
 }

@@ -125,8 +125,8 @@ TEST(RollingSteadyMotion, EulersDiskTurnsOnTheSpot) {
       EXPECT_EQ(m.speed, 0.0);
       EXPECT_EQ(m.spin, 0.0);
       EXPECT_EQ(m.radius, 0.0);
-      EXPECT_TRUE(test::relatively_near(std::abs(m.contact_radius),
-                                        kRadius * std::sin(lean), 1e-12));
+      EXPECT_TRUE(
+          test::relatively_near(std::abs(m.contact_radius), kRadius * std::sin(lean), 1e-12));
       EXPECT_LT(m.residual, 1e-14);
     }
   }
