@@ -30,8 +30,11 @@ if ! command -v node >/dev/null || ! command -v npm >/dev/null; then packages+=(
 if [[ "${MOMENTA_WITHOUT_PYTHON:-0}" != 1 ]]; then
   packages+=(chromium firefox-esr xvfb xauth fonts-dejavu-core)
 fi
-# Optional: the side-by-side benchmarks against MuJoCo (MOMENTA_BENCH_MUJOCO=ON).
-if [[ "${MOMENTA_WITH_MUJOCO:-0}" == 1 ]]; then packages+=(libmujoco-dev); fi
+# MuJoCo: the MJCF reader's side-by-side tests (tests/validation/io, built where it is installed)
+# and the benchmarks against it (MOMENTA_BENCH_MUJOCO=ON); left out by run-example.
+if [[ "${MOMENTA_WITHOUT_PYTHON:-0}" != 1 || "${MOMENTA_WITH_MUJOCO:-0}" == 1 ]]; then
+  packages+=(libmujoco-dev)
+fi
 # Optional: the libFuzzer harnesses (scripts/fuzz.sh): clang and its sanitizer runtimes.
 if [[ "${MOMENTA_WITH_FUZZ:-0}" == 1 ]]; then packages+=(clang libclang-rt-14-dev); fi
 

@@ -13,7 +13,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 MOMENTA_WITH_FUZZ=1 scripts/bootstrap.sh
-harnesses=(model_file part_file stl obj state_file sweep_file urdf)
+harnesses=(model_file part_file stl obj state_file sweep_file urdf mjcf)
 # The harnesses and the libraries they link (io and below), not the analysis, report or sweep
 # layers: those are the sanitizer build's to test.
 MOMENTA_TARGET="${harnesses[*]/%/_fuzz}" CXX=clang++ scripts/build.sh build-fuzz \
@@ -37,6 +37,7 @@ declare -A corpora=(
   [state_file]="$(seed state_file)"
   [sweep_file]="$(seed sweep_file examples/sweeps/*.yaml)"
   [urdf]="$(seed urdf tests/data/models/urdf/*.urdf)"
+  [mjcf]="$(seed mjcf tests/data/models/mjcf/*.xml)"
 )
 for harness in "${harnesses[@]}"; do
   binary=build-fuzz/tests/fuzz/${harness}_fuzz

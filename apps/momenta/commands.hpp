@@ -49,6 +49,9 @@ void add_kinematics_command(CLI::App& app);
 /// `momenta diagram MODEL --body NAME [-o fbd.svg]`: free-body and kinetic diagrams.
 void add_diagram_command(CLI::App& app);
 
+/// `momenta export MODEL --mjcf FILE | --urdf FILE`: the model written for MuJoCo or ROS.
+void add_export_command(CLI::App& app);
+
 /// `momenta equations MODEL`: equations of motion in symbols (docs/equations.md).
 void add_equations_command(CLI::App& app);
 

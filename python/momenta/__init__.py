@@ -74,6 +74,8 @@ from ._core import (
     step_info,
     step_response,
     sweep,
+    to_mjcf,
+    to_urdf,
     transfer_function,
     undamped_modes,
 )

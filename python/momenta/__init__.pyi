@@ -688,6 +688,14 @@ def symbolic_transfer_function(model: Model, input: str, coordinate: str, *, rat
     """The transfer function in s from a signal to a free coordinate (or its rate) of the equations linearized in symbols about (t, q, v) (without q and v, the state the model's run reaches at t), as `momenta equations --transfer` prints it: 'F_engine/(m_car*s+c_road)' for the cruise control's u to road ra"""
     ...
 
+def to_mjcf(model: Model) -> str:
+    """The model as MJCF text for MuJoCo, drawn in its consistent initial state, as `momenta export --mjcf` writes it (docs/model-formats.md, "Writing models"). Loads MJCF does not keep are warned about; raises InvalidArgument for what it cannot keep (a rolling contact)."""
+    ...
+
+def to_urdf(model: Model) -> str:
+    """The model as URDF text, as `momenta export --urdf` writes it. Raises InvalidArgument for what URDF cannot keep (a ball joint, a loop)."""
+    ...
+
 def transfer_function(system: StateSpace, input: object, output: object, cancellation_tolerance: float = 1e-06) -> TransferFunction:
     """Zero-pole-gain transfer function of one pair (input and output by name or index), with pole–zero pairs closer than the relative tolerance cancelled."""
     ...

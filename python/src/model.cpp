@@ -9,6 +9,8 @@
 #include "bindings.hpp"
 #include "model_handle.hpp"
 #include "momenta/frontend/model_loading.hpp"
+#include "momenta/io/model_export.hpp"
+#include "momenta/simulate/state_at.hpp"
 #include "momenta/system/freedoms.hpp"
 
 namespace momenta::python {
@@ -178,6 +180,27 @@ joint order: q (nq, quaternions as w, x, y, z) and v (nv); names in q_names and 
       R"doc(Reads a model file (docs/model-format.md), builds it and checks that it can be
 simulated, as `momenta simulate` does. Raises ParseError ('file:line:column: message', with
 .file, .line and .column) for anything wrong in it, FileError when it cannot be read.)doc");
+
+  // What a format does not keep is said as a Python warning, one per load.
+  const auto exported = [](const io::ExportedModel& written) {
+    const py::object warn = py::module_::import("warnings").attr("warn");
+    for (const std::string& lost : written.not_written) warn(fmt::format("not written: {}", lost));
+    return written.text;
+  };
+  m.def(
+      "to_mjcf",
+      [exported](const ModelHandle& h) {
+        return exported(io::write_mjcf(*h.file, simulate::state_at(h.model(), 0.0, {}).q));
+      },
+      py::arg("model"),
+      R"doc(The model as MJCF text for MuJoCo, drawn in its consistent initial state, as
+`momenta export --mjcf` writes it (docs/model-formats.md, "Writing models"). Loads MJCF does not
+keep are warned about; raises InvalidArgument for what it cannot keep (a rolling contact).)doc");
+  m.def(
+      "to_urdf", [exported](const ModelHandle& h) { return exported(io::write_urdf(*h.file)); },
+      py::arg("model"),
+      R"doc(The model as URDF text, as `momenta export --urdf` writes it. Raises InvalidArgument
+for what URDF cannot keep (a ball joint, a loop).)doc");
 }
 
 }  // namespace

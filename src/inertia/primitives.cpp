@@ -89,6 +89,23 @@ MassProperties solid_cylinder(Amount amount, double radius, double length) {
   return centred(m, transverse, transverse, axial, volume);
 }
 
+MassProperties capsule(Amount amount, double radius, double length) {
+  require_size("capsule", "radius", radius);
+  require_size("capsule", "length", length);
+  const double r2 = radius * radius;
+  const double cylinder_volume = kPi * r2 * length;
+  const double spheres_volume = 4.0 / 3.0 * kPi * r2 * radius;
+  const double volume = cylinder_volume + spheres_volume;
+  const double m = amount.mass_for(volume, "capsule");
+  // The mass shared by volume between the cylinder and the two hemispheres (a sphere together).
+  const double m_cylinder = m * (cylinder_volume / volume), m_spheres = m - m_cylinder;
+  const double axial = m_cylinder * r2 / 2.0 + m_spheres * 2.0 * r2 / 5.0;
+  const double offset = length / 2.0 + 3.0 * radius / 8.0;  // each hemisphere's centre of mass
+  const double transverse = m_cylinder * (3.0 * r2 + length * length) / 12.0 +
+                            m_spheres * (83.0 / 320.0 * r2 + offset * offset);
+  return centred(m, transverse, transverse, axial, volume);
+}
+
 MassProperties hollow_cylinder(Amount amount, double inner_radius, double outer_radius,
                                double length) {
   require_size("hollow_cylinder", "outer_radius", outer_radius);

@@ -13,6 +13,7 @@
 #include "model_file_internal.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
+#include "momenta/io/mjcf_file.hpp"
 #include "momenta/io/urdf_file.hpp"
 #include "momenta/model/integrators.hpp"
 
@@ -305,6 +306,7 @@ ModelFile detail::compose_model_file(const YamlNode& root, const std::filesystem
 
 ModelFile read_model_file(const std::filesystem::path& path) {
   if (is_urdf_path(path)) return read_urdf_file(path);
+  if (is_mjcf_path(path)) return read_mjcf_file(path);
   return detail::compose_model_file(YamlNode::load_file(path), path.parent_path());
 }
 

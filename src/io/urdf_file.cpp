@@ -5,7 +5,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <map>
 #include <optional>
 #include <set>
@@ -22,6 +21,7 @@
 #include "momenta/common/suggest.hpp"
 #include "momenta/math/rotation.hpp"
 #include "momenta/model/model_builder.hpp"
+#include "xml_support.hpp"
 
 namespace momenta::io {
 namespace {
@@ -388,21 +388,7 @@ ModelFile UrdfReader::read() {
     builder.add_constraint(coupler);
     items.push_back(located(ModelItemRef::Kind::constraint, coupler.name, entry.mimic_element));
   }
-  model::Model model = [&] {
-    try {
-      return builder.build();
-    } catch (const InvalidArgument& error) {
-      int line = 0;
-      if (error.item()) {
-        for (const ItemLocation& at : items) {
-          if (at.item.kind == error.item()->kind && at.item.name == error.item()->name) {
-            line = at.line;
-          }
-        }
-      }
-      throw ParseError(file_, line, 0, one_line(error.what()));
-    }
-  }();
+  model::Model model = detail::build_at_lines(builder, items, file_);
   const char* robot_name = robot->Attribute("name");
   std::vector<std::vector<PartSummary>> body_parts(model.bodies().size());
   // The notes in the file's order.
@@ -423,19 +409,7 @@ ModelFile UrdfReader::read() {
 }
 
 ModelFile parse_document(const tinyxml2::XMLDocument& document, const std::string& file_name) {
-  if (document.Error()) {
-    if (document.ErrorID() == tinyxml2::XML_ERROR_EMPTY_DOCUMENT) {
-      throw ParseError(file_name, 0, 0, "the file is empty: a URDF file holds a <robot>");
-    }
-    // tinyxml2's name for the error, in words: XML_ERROR_MISMATCHED_ELEMENT → mismatched element.
-    std::string what = document.ErrorName();
-    if (what.rfind("XML_ERROR_", 0) == 0) what.erase(0, 10);
-    std::transform(what.begin(), what.end(), what.begin(), [](unsigned char c) {
-      return c == '_' ? ' ' : static_cast<char>(std::tolower(c));
-    });
-    throw ParseError(file_name, document.ErrorLineNum(), 0,
-                     fmt::format("not well-formed XML ({})", what));
-  }
+  detail::check_xml_document(document, file_name, "a URDF file holds a <robot>");
   return UrdfReader(document, file_name).read();
 }
 
@@ -449,11 +423,7 @@ bool is_urdf_path(const std::filesystem::path& path) {
 }
 
 ModelFile read_urdf_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(fmt::format("{}: cannot open the URDF file", path.string()));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_urdf(text.str(), path.string());
+  return parse_urdf(detail::read_xml_text(path.string(), "URDF file"), path.string());
 }
 
 ModelFile parse_urdf(const std::string& text, const std::string& file_name) {

@@ -48,7 +48,17 @@ export async function openReport(browser, file, { beforeLoad = null } = {}) {
   page.on('requestfailed', (r) => problems.push(`failed request: ${r.url()}`));
   page.on('request', (r) => { if (r.url() !== `file://${file}`) problems.push(`request: ${r.url()}`); });
   const started = Date.now();
-  await page.goto(`file://${file}`, { waitUntil: 'load' });
+  try {
+    await page.goto(`file://${file}`, { waitUntil: 'load' });
+  } catch (error) {
+    // Firefox ESR under WebDriver BiDi now and then never reports 'load' for a local file that
+    // opens at once on the next try (seen once in three runs of the suite here, in the framing
+    // test; never in Chromium): said on stderr and tried once more, so that a stalled browser
+    // is not taken for a broken page, while a page that fails twice still fails.
+    if (browserName !== 'firefox' || error.name !== 'TimeoutError') throw error;
+    console.error(`firefox: no 'load' for ${file} in 30 s; opening it once more`);
+    await page.goto(`file://${file}`, { waitUntil: 'load' });
+  }
   await page.waitForFunction(() => window.momentaReport && window.momentaReport.ready, { timeout: 20000, polling: 20 });
   await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => setTimeout(done, 0))));
   const interactiveMs = Date.now() - started;

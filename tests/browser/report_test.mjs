@@ -358,6 +358,21 @@ test('20 bodies: every link drawn and moving while the page plays', async () => 
   await r.page.close();
 });
 
+// An MJCF model (tests/data/models/mjcf/arm7.xml): its bodies drawn from their geoms — capsules,
+// cylinders, a box and an ellipsoid — and the arm framed as the bundled examples are.
+test('MJCF arm: every link drawn from its geoms and framed', async () => {
+  const model = path.join(sourceDir, 'tests', 'data', 'models', 'mjcf', 'arm7.xml');
+  const r = await checkSimulationPage('arm7_mjcf', model, ['--duration', '2']);
+  for (const link of ['base', 'link1', 'link4', 'link7']) assert.ok(r.hook.bodies.includes(link), link);
+  // A file without a description: no stray word where the description would be.
+  const text = await r.page.evaluate(() => document.body.innerText);
+  assert.ok(!/\b(null|undefined|NaN)\b/.test(text), text.slice(0, 300));
+  const seen = await r.page.evaluate(() => window.momentaReport.framing());
+  const larger = Math.max(seen.width, seen.height);
+  assert.ok(larger >= 0.3 && larger <= 0.9, `the arm spans ${larger.toFixed(2)} of the canvas`);
+  await r.page.close();
+});
+
 test('mass properties page of a mesh and of a part file with a hole', async () => {
   for (const [name, args] of [['mesh_part', [path.join(examples, 'parts', 'meshes', 'l_bracket.obj'), '--density', '2700', '--scale', '0.001']],
     ['bracket_part', [path.join(examples, 'parts', 'bracket.yaml'), '--about', '0', '0', '0']],

@@ -303,6 +303,65 @@ TEST_F(FirstHourCli, UrdfFilesAreModelFiles) {
   EXPECT_TRUE(has(r.err, "bad.urdf:4: joint 'j': unknown type 'hinge'")) << r.err;
 }
 
+TEST_F(FirstHourCli, MjcfFilesAreModelFiles) {
+  const std::string arm = quoted(source_dir() + "/tests/data/models/mjcf/arm7.xml");
+  CliRun r = momenta("info " + arm + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto info = nlohmann::json::parse(r.out);
+  EXPECT_EQ(info.at("not_used").size(), 7u) << r.out;
+  r = momenta("info " + arm);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "arm7.xml:24: the limits of joint 'a1' are not enforced")) << r.out;
+  // The humanoid falls freely for 0.2 s (no contacts): every row written.
+  const std::string human = quoted(source_dir() + "/tests/data/models/mjcf/humanoid.xml");
+  r = momenta("simulate " + human + " --duration 0.2 --dt 0.001 --every 50 -o " + at("fall.csv"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string rows = slurp(dir_ / "fall.csv");
+  EXPECT_EQ(std::count(rows.begin(), rows.end(), '\n'), 6);
+
+  const fs::path bad = write("bad.xml",
+                             "<mujoco>\n<worldbody>\n<body><joint type='hinge' axs='0 1 0'/>"
+                             "<geom size='0.1'/></body>\n</worldbody>\n</mujoco>\n");
+  r = momenta("info " + quoted(bad.string()));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "bad.xml:3:27: <joint>: unknown attribute 'axs' (did you mean 'axis'?)"))
+      << r.err;
+}
+
+TEST_F(FirstHourCli, ExportWritesMjcfAndUrdf) {
+  // The four-bar as MJCF, drawn assembled: read back, its pin is two connects (six rows, two
+  // independent beside the planar pins), one degree of freedom — the crank, now free to turn.
+  const std::string bar = example("constraints/four_bar.yaml");
+  CliRun r = momenta("export " + bar + " --mjcf " + at("bar.xml"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "bar.xml (MJCF: 3 bodies, 3 degrees of freedom)")) << r.out;
+  EXPECT_TRUE(has(r.err, "not written: the prescribed motion of joint 'crank_pin'")) << r.err;
+  r = momenta("info " + at("bar.xml") + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto freedoms = nlohmann::json::parse(r.out).at("degrees_of_freedom");
+  EXPECT_EQ(freedoms.at("constraint_rows"), 6) << r.out;
+  EXPECT_EQ(freedoms.at("independent_constraint_rows"), 2) << r.out;
+  EXPECT_EQ(freedoms.at("free"), 1) << r.out;
+  // Never over the user's file without --force; a loop URDF cannot close is refused by name.
+  r = momenta("export " + bar + " --mjcf " + at("bar.xml"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "the output file exists; pass --force")) << r.err;
+  EXPECT_EQ(momenta("export " + bar + " --mjcf " + at("bar.xml") + " --force").code, 0);
+  r = momenta("export " + bar + " --urdf " + at("bar.urdf"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "constraint 'closure' (hinge): URDF describes trees")) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "bar.urdf"));
+  // The double pendulum as URDF, and its modes from the file written.
+  r = momenta("export " + example("double_pendulum.yaml") + " --urdf " + at("dp.urdf"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = momenta("modes " + at("dp.urdf") + " --about equilibrium --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto normal = nlohmann::json::parse(r.out).at("normal_modes");
+  ASSERT_EQ(normal.size(), 2u);
+  EXPECT_NEAR(normal[0].at("squared_frequency").get<double>(), 9.81 * (2 - std::sqrt(2.0)), 1e-11);
+  EXPECT_EQ(momenta("export " + bar).code, 2);  // neither --mjcf nor --urdf
+}
+
 TEST_F(FirstHourCli, LibraryMessagesAreSaidInMomentasWords) {
   // A 300-character output name: the system's words, with the file, exit 1.
   CliRun r = momenta("simulate " + example("pendulum.yaml") + " -o " + at(std::string(300, 'a')));

@@ -114,6 +114,38 @@ def test_bodies_by_name_or_index():
         model.body_mass_properties(7)
 
 
+def test_an_mjcf_file_loads_as_a_model(tmp_path):
+    """momenta.load_model takes MJCF (docs/model-formats.md): the double pendulum written for
+    MuJoCo hangs with its YAML twin's normal modes; the arm's motors are inputs; a bad file is a
+    ParseError at its line and column."""
+    data = EXAMPLES.parent / "tests" / "data" / "models" / "mjcf"
+    model = momenta.load_model(data / "double_pendulum.xml")
+    equilibrium = momenta.find_equilibrium(model)
+    squared = sorted(m.squared_frequency for m in momenta.undamped_modes(equilibrium.linear))
+    assert squared == pytest.approx([9.81 * (2 - 2 ** 0.5), 9.81 * (2 + 2 ** 0.5)], rel=1e-11)
+    assert momenta.load_model(data / "arm7.xml").nv == 7
+    bad = tmp_path / "bad.xml"
+    bad.write_text("<mujoco>\n<worldbody>\n<body><jiont/></body>\n</worldbody>\n</mujoco>\n")
+    with pytest.raises(momenta.ParseError, match=r"bad.xml:3:7: <jiont> in body 'body1'"):
+        momenta.load_model(bad)
+
+
+def test_models_written_as_mjcf_and_urdf_read_back(tmp_path):
+    """momenta.to_mjcf / to_urdf write what `momenta export` writes: the double pendulum read back
+    from either has its YAML twin's normal modes; what a format cannot keep is said."""
+    model = momenta.load_model(EXAMPLES / "double_pendulum.yaml")
+    for name, text in (("dp.xml", momenta.to_mjcf(model)), ("dp.urdf", momenta.to_urdf(model))):
+        path = tmp_path / name
+        path.write_text(text)
+        back = momenta.find_equilibrium(momenta.load_model(path))
+        squared = sorted(m.squared_frequency for m in momenta.undamped_modes(back.linear))
+        assert squared == pytest.approx([9.81 * (2 - 2 ** 0.5), 9.81 * (2 + 2 ** 0.5)], rel=1e-11)
+    with pytest.warns(UserWarning, match="not written: the prescribed motion of joint 'crank_pin'"):
+        momenta.to_mjcf(momenta.load_model(EXAMPLES / "constraints" / "four_bar.yaml"))
+    with pytest.raises(momenta.InvalidArgument, match="URDF has no such joint"):
+        momenta.to_urdf(momenta.load_model(EXAMPLES / "heavy_top.yaml"))
+
+
 def test_a_urdf_file_loads_as_a_model():
     """momenta.load_model takes a URDF (docs/model-formats.md): the double pendulum hangs with the
     normal modes of its YAML twin, ω² = (g/l)(2 ∓ √2); a bad file is a ParseError at its line."""

@@ -29,6 +29,7 @@ function geometryOf(part, length) {
     case 'thin_disk': return alongZ(new THREE.CylinderGeometry(s.radius, s.radius, thin, 48));
     case 'annulus': return new THREE.RingGeometry(s.inner_radius, s.outer_radius, 48);
     case 'cylinder': return alongZ(new THREE.CylinderGeometry(s.radius, s.radius, s.length, 48));
+    case 'capsule': return alongZ(new THREE.CapsuleGeometry(s.radius, s.length, 12, 32));
     case 'hollow_cylinder': {
       const h = s.length / 2;
       const profile = [[s.inner_radius, -h], [s.outer_radius, -h], [s.outer_radius, h],

@@ -10,7 +10,10 @@ export function summarySection(data) {
       element('strong', {}, `The run stopped at t = ${formatNumber(s.t_end)} s: `), s.stop_reason,
       ' The report shows the rows recorded up to then.'));
   }
-  section.append(element('h1', {}, s.model), s.description ? element('p', { class: 'description' }, s.description) : null);
+  // A model without a description (a URDF or MJCF file, say) has no paragraph: append(null)
+  // would print the word "null".
+  section.append(element('h1', {}, s.model));
+  if (s.description) section.append(element('p', { class: 'description' }, s.description));
   const facts = [
     ['file', s.file], ['bodies', s.bodies], ['joints', s.joints], ['degrees of freedom', s.dof === s.speeds ? s.dof : `${s.dof} (of ${s.speeds} joint speeds, after prescribed motion and constraints)`],
     ['integrator', `${s.integrator} (order ${s.order}${s.adaptive ? ', adaptive' : ''})`],

@@ -32,6 +32,12 @@ MassProperties annulus(Amount amount, double inner_radius, double outer_radius);
 /// A solid cylinder along z (density in kg/m³).
 MassProperties solid_cylinder(Amount amount, double radius, double length);
 
+/// A solid capsule along z (density in kg/m³): a cylinder of `radius` and `length` capped at both
+/// ends by hemispheres of the same radius, so its overall length is length + 2 radius (MuJoCo's
+/// capsule geom, size = [radius, length / 2]). Each hemisphere's centre of mass lies 3r/8 beyond
+/// its flat face and its moment about a diameter through that centre is 83/320 m r².
+MassProperties capsule(Amount amount, double radius, double length);
+
 /// A thick-walled tube along z between two radii (density in kg/m³). inner_radius may be 0.
 MassProperties hollow_cylinder(Amount amount, double inner_radius, double outer_radius,
                                double length);

@@ -116,6 +116,35 @@ TEST(Primitives, ClosedFormsByDensity) {
 }
 
 // Giving the mass instead of the density scales the inertia and keeps the shape.
+// A capsule is a cylinder and a sphere whose halves were pulled apart by the cylinder's length:
+// the sphere's mass and axial moment unchanged, each half's transverse moment about the capsule's
+// centre raised by the parallel-axis terms (m/2)((L/2)² + 2 (L/2)(3r/8)) of the move.
+TEST(Primitives, CapsuleIsACylinderAndASpherePulledApart) {
+  const double rho = 2700, r = 0.07, L = 0.2;
+  const MassProperties capsule_ = capsule(Amount::density(rho), r, L);
+  const MassProperties cylinder = solid_cylinder(Amount::density(rho), r, L);
+  const MassProperties sphere = solid_sphere(Amount::density(rho), r);
+  const double m_s = sphere.mass();
+  EXPECT_REL_NEAR(capsule_.mass(), cylinder.mass() + m_s, 1e-15);
+  EXPECT_REL_NEAR(capsule_.volume(), cylinder.volume() + sphere.volume(), 1e-15);
+  const Mat3 I = capsule_.inertia_about_com();
+  const double moved = m_s * (L * L / 4 + 3 * L * r / 8);
+  EXPECT_REL_NEAR(I(2, 2), cylinder.inertia_about_com()(2, 2) + sphere.inertia_about_com()(2, 2),
+                  1e-15);
+  EXPECT_REL_NEAR(I(0, 0),
+                  cylinder.inertia_about_com()(0, 0) + sphere.inertia_about_com()(0, 0) + moved,
+                  1e-15);
+  EXPECT_REL_NEAR(I(1, 1), I(0, 0), 0.0);
+  EXPECT_MATRIX_NEAR(capsule_.center_of_mass(), Vec3::Zero(), 0.0);
+  // MuJoCo 2.2's capsule (r 0.1, half-length 0.3, water) as it prints it (tests/validation/io
+  // compares whole models): m 23.038346126325152, I 1.1006046263076243, 0.11100294042683936.
+  const MassProperties mujoco = capsule(Amount::density(1000), 0.1, 0.6);
+  EXPECT_REL_NEAR(mujoco.mass(), 23.038346126325152, 1e-15);
+  EXPECT_REL_NEAR(mujoco.inertia_about_com()(0, 0), 1.1006046263076243, 1e-15);
+  EXPECT_REL_NEAR(mujoco.inertia_about_com()(2, 2), 0.11100294042683936, 1e-15);
+  EXPECT_THROW(capsule(Amount::density(rho), 0.0, L), InvalidArgument);
+}
+
 TEST(Primitives, ByMassEqualsByDensityWithTheSameMass) {
   const std::function<MassProperties(Amount)> shapes[] = {
       [](Amount a) { return slender_rod(a, 1.3); },

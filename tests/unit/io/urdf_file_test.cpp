@@ -17,6 +17,7 @@
 #include "momenta/dynamics/data.hpp"
 #include "momenta/math/rotation.hpp"
 #include "momenta/model/model_builder.hpp"
+#include "momenta_test/model_comparison.hpp"
 #include "momenta_test/tolerance.hpp"
 
 namespace momenta::io {
@@ -26,29 +27,7 @@ std::string urdf_path(const std::string& name) {
   return test::source_dir() + "/tests/data/models/urdf/" + name + ".urdf";
 }
 
-// max |M_a − M_b| / max |M_b| and the same of ABA's accelerations over `samples` random states
-// (angles in ±π, lengths in ±0.1 m, rates in ±3, efforts in ±5).
-double largest_difference(const model::Model& a, const model::Model& b, int samples) {
-  EXPECT_EQ(a.nq(), b.nq());
-  EXPECT_EQ(a.nv(), b.nv());
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  dynamics::Data da(a), db(b);
-  double worst = 0.0;
-  for (int s = 0; s < samples; ++s) {
-    VecX q = a.initial_q(), v(a.nv()), tau(a.nv());
-    for (int i = 0; i < a.nq(); ++i) q[i] = 3.0 * unit(random);
-    for (int i = 0; i < a.nv(); ++i) {
-      v[i] = 3.0 * unit(random);
-      tau[i] = 5.0 * unit(random);
-    }
-    const MatX Ma = dynamics::crba(a, da, q), Mb = dynamics::crba(b, db, q);
-    worst = std::max(worst, (Ma - Mb).cwiseAbs().maxCoeff() / Mb.cwiseAbs().maxCoeff());
-    const VecX va = dynamics::aba(a, da, q, v, tau), vb = dynamics::aba(b, db, q, v, tau);
-    worst = std::max(worst, (va - vb).cwiseAbs().maxCoeff() / vb.cwiseAbs().maxCoeff());
-  }
-  return worst;
-}
+using test::largest_difference;
 
 TEST(UrdfFile, DoublePendulumIsItsModelFile) {
   const ModelFile urdf = read_urdf_file(urdf_path("double_pendulum"));

@@ -1,0 +1,28 @@
+# momenta_find_mujoco(<required>): finds MuJoCo (Debian's libmujoco-dev) for the side-by-side
+# tests and benchmarks, setting MOMENTA_HAVE_MUJOCO. Debian's libmujoco-dev 2.2.2 lists include
+# directories it does not install (libqhull_r): only those that exist are kept, or CMake refuses
+# to generate.
+function(momenta_find_mujoco required)
+  if(TARGET mujoco::mujoco)
+    set(MOMENTA_HAVE_MUJOCO ON PARENT_SCOPE)
+    return()
+  endif()
+  if(required)
+    find_package(mujoco REQUIRED)
+  else()
+    find_package(mujoco QUIET)
+  endif()
+  if(NOT TARGET mujoco::mujoco)
+    set(MOMENTA_HAVE_MUJOCO OFF PARENT_SCOPE)
+    return()
+  endif()
+  get_target_property(_includes mujoco::mujoco INTERFACE_INCLUDE_DIRECTORIES)
+  set(_existing)
+  foreach(_dir IN LISTS _includes)
+    if(EXISTS "${_dir}")
+      list(APPEND _existing "${_dir}")
+    endif()
+  endforeach()
+  set_target_properties(mujoco::mujoco PROPERTIES INTERFACE_INCLUDE_DIRECTORIES "${_existing}")
+  set(MOMENTA_HAVE_MUJOCO ON PARENT_SCOPE)
+endfunction()

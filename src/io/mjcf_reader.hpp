@@ -1,0 +1,133 @@
+#pragma once
+// The MJCF reader's parts (mjcf_*.cpp): one MjcfReader reads one document — its compiler settings,
+// default classes and the body tree (mjcf_file.cpp), the frames and geoms' mass properties
+// (mjcf_geometry.cpp), the equality constraints and actuators (mjcf_loads.cpp).
+
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <tinyxml2.h>
+
+#include "momenta/io/model_file.hpp"
+#include "momenta/model/model_builder.hpp"
+
+namespace momenta::io::detail {
+
+using tinyxml2::XMLElement;
+
+/// An attribute's text and the element that gave it (the element itself, or the <default> entry
+/// it inherits from), for messages at the right line.
+struct MjcfAttribute {
+  const char* text = nullptr;
+  const XMLElement* where = nullptr;
+  explicit operator bool() const { return text != nullptr; }
+};
+
+/// An element of the body tree with the default class it takes its missing attributes from.
+struct MjcfElement {
+  const XMLElement* xml = nullptr;
+  std::string kind;        ///< "joint", "geom", "actuator", ...: which defaults apply
+  std::string class_name;  ///< the class in force ("main" at the top)
+};
+
+/// A body as read: its frame in its parent and in the world at the drawn configuration.
+struct MjcfBody {
+  std::string name;           ///< momenta's body name (the final body of a joint chain)
+  const XMLElement* element;  ///< the <body>
+  Transform X_WB;             ///< at the configuration the file draws (every q = 0)
+};
+
+/// A joint as momenta models it: which body it moves and where its frames lie.
+struct MjcfJoint {
+  const XMLElement* element;
+  model::Joint joint;
+};
+
+class MjcfReader {
+ public:
+  MjcfReader(const tinyxml2::XMLDocument& document, std::string_view text, std::string file);
+  ModelFile read();
+
+  // --- messages (mjcf_file.cpp) ----------------------------------------------------------------
+  [[noreturn]] void fail(const XMLElement* at, const std::string& message,
+                         const char* attribute = nullptr) const;
+  void note(const XMLElement* at, const std::string& message);
+
+  // --- attributes through the default classes (mjcf_file.cpp) ---------------------------------
+  MjcfAttribute attribute(const MjcfElement& e, const char* name) const;
+  double number(const MjcfElement& e, const char* name, std::optional<double> fallback) const;
+  /// Between `fewest` and `most` numbers; `fallback` when absent (fails when there is none).
+  std::vector<double> numbers(const MjcfElement& e, const char* name, std::size_t fewest,
+                              std::size_t most,
+                              std::optional<std::vector<double>> fallback = std::nullopt) const;
+  Vec3 vector3(const MjcfElement& e, const char* name, const Vec3& fallback) const;
+  /// One of `choices` (with a did-you-mean), or `fallback` when absent.
+  std::string keyword(const MjcfElement& e, const char* name,
+                      std::initializer_list<std::string_view> choices,
+                      std::string_view fallback) const;
+  bool flag(const MjcfElement& e, const char* name, bool fallback) const;
+  /// Fails at the first attribute of `xml` not in `known`, with a did-you-mean.
+  void check_attributes(const XMLElement* xml, std::initializer_list<std::string_view> known) const;
+
+  // --- frames and mass (mjcf_geometry.cpp)
+  // --------------------------------------------------------
+  /// The element's pose in its parent: pos and one of quat, axisangle, euler, xyaxes, zaxis.
+  Transform pose(const MjcfElement& e) const;
+  /// A body's mass properties from its <inertial>, or its geoms' by MuJoCo's rule; the geoms as
+  /// parts to draw.
+  inertia::MassProperties body_mass_properties(const XMLElement* body, const std::string& name,
+                                               const std::string& class_name,
+                                               std::vector<PartSummary>& parts);
+
+  // --- equality constraints and actuators (mjcf_loads.cpp) ------------------------------------
+  void read_equality(const XMLElement* section);
+  void read_actuators(const XMLElement* section);
+
+ private:
+  struct DefaultClass {
+    std::string parent;                                             // empty for "main"
+    std::map<std::string, const XMLElement*, std::less<>> entries;  // kind → <joint .../> etc.
+  };
+  void read_compiler(const XMLElement* e);
+  void read_option(const XMLElement* e);
+  void read_defaults(const XMLElement* e, const std::string& parent);
+  void read_body(const XMLElement* e, const std::string& parent, const Transform& X_WP,
+                 const std::string& child_class);
+  void read_world_element(const XMLElement* e);
+  std::vector<std::string> body_joints(const XMLElement* body, const std::string& name,
+                                       const std::string& parent, const Transform& X_PB,
+                                       const Transform& X_WB, const std::string& child_class);
+  const MjcfBody& body_named(const XMLElement* at, const char* attribute, const char* name) const;
+  const MjcfJoint& joint_named(const XMLElement* at, const char* attribute, const char* name) const;
+  std::string class_of(const XMLElement* xml, const std::string& inherited) const;
+
+ public:
+  // What the reading found, for the loads (mjcf_loads.cpp) and the geometry.
+  const tinyxml2::XMLDocument& document;
+  std::string_view text;
+  std::string file;
+  double angle_scale =
+      3.14159265358979323846 / 180.0;  // <compiler angle="degree">, MuJoCo's default
+  std::string euler_sequence = "xyz";
+  std::string inertia_from_geom = "auto";
+  model::ModelBuilder builder;
+  std::vector<ItemLocation> items;
+  std::map<std::string, MjcfBody, std::less<>> bodies;   // by the file's body name
+  std::map<std::string, MjcfJoint, std::less<>> joints;  // by joint name
+  std::vector<std::string> joint_order;
+  std::map<std::string, std::vector<PartSummary>> body_parts;  // momenta body → geoms
+  int unnamed_bodies = 0, unnamed_joints = 0;
+
+ private:
+  std::map<std::string, DefaultClass, std::less<>> classes_;
+  std::vector<std::pair<int, std::string>> notes_;  // line, text
+};
+
+/// Where an item is declared (field by field: GCC 12 misreports a braced one's strings).
+ItemLocation located_at(ModelItemRef::Kind kind, const std::string& name, int line, int column);
+
+}  // namespace momenta::io::detail

@@ -1,0 +1,43 @@
+#pragma once
+// Numbers, vectors and rotations as the model writers print them (model_export_*.cpp): the
+// shortest text that reads back to the same double, −0 as 0.
+
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <Eigen/Geometry>
+
+#include "momenta/math/spatial.hpp"
+#include "momenta/model/model.hpp"
+
+namespace momenta::io::detail {
+
+inline std::string number_text(double x) { return fmt::format("{}", x == 0.0 ? 0.0 : x); }
+
+inline std::string vector_text(const Vec3& v) {
+  return fmt::format("{} {} {}", number_text(v.x()), number_text(v.y()), number_text(v.z()));
+}
+
+/// w x y z, w ≥ 0.
+inline std::string quaternion_text(const Mat3& R) {
+  Quat q(R);
+  q.normalize();
+  if (q.w() < 0.0) q.coeffs() *= -1.0;
+  return fmt::format("{} {} {} {}", number_text(q.w()), number_text(q.x()), number_text(q.y()),
+                     number_text(q.z()));
+}
+
+/// The joints out of each body, in the model's joint order: children[b] lists joint indices.
+inline std::vector<std::vector<int>> joints_out_of(const model::Model& model) {
+  std::vector<std::vector<int>> children(static_cast<std::size_t>(model.num_bodies()));
+  for (const model::Joint& joint : model.joints()) {
+    children[static_cast<std::size_t>(joint.parent_index)].push_back(joint.index);
+  }
+  return children;
+}
+
+/// What neither format writes: applied loads and springs between bodies, prescribed motions.
+std::vector<std::string> loads_not_written(const model::Model& model, std::string_view format);
+
+}  // namespace momenta::io::detail

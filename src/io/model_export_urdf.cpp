@@ -1,0 +1,157 @@
+// momenta models as URDF (io/model_export.hpp; docs/model-formats.md, "Writing models").
+
+#include <map>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "model_export_text.hpp"
+#include "momenta/common/error.hpp"
+#include "momenta/io/model_export.hpp"
+#include "momenta/math/rotation.hpp"
+
+namespace momenta::io {
+namespace {
+
+using detail::number_text;
+using detail::vector_text;
+
+// URDF's rpy (fixed-axis roll, pitch, yaw: R = Rz(y) Ry(p) Rx(r)) of a rotation: SciPy's
+// extrinsic "xyz".
+std::string origin_text(const Transform& X) {
+  return fmt::format("<origin xyz=\"{}\" rpy=\"{}\"/>", vector_text(X.p),
+                     vector_text(euler_from_rotation("xyz", X.R)));
+}
+
+void check_representable(const model::Model& model) {
+  for (const model::Joint& joint : model.joints()) {
+    const bool kept =
+        joint.type == model::JointType::fixed || joint.type == model::JointType::revolute ||
+        joint.type == model::JointType::prismatic || joint.type == model::JointType::planar ||
+        (joint.type == model::JointType::free && joint.parent_index == 0);
+    if (!kept) {
+      throw InvalidArgument(
+          fmt::format("joint '{}' ({}{}): URDF has no such joint; write MJCF "
+                      "(--mjcf), which keeps it",
+                      joint.name, model::joint_type_name(joint.type),
+                      joint.type == model::JointType::free ? " below the world" : ""));
+    }
+  }
+  for (const model::Constraint& c : model.constraints()) {
+    if (!std::holds_alternative<model::JointCoupler>(c)) {
+      throw InvalidArgument(
+          fmt::format("constraint '{}' ({}): URDF describes trees (and mimic "
+                      "joints); write MJCF (--mjcf), which keeps loops",
+                      model::constraint_name(c), model::constraint_type_name(c)));
+    }
+  }
+}
+
+}  // namespace
+
+ExportedModel write_urdf(const ModelFile& file) {
+  const model::Model& model = file.model;
+  check_representable(model);
+  std::vector<std::string> lost = detail::loads_not_written(model, "URDF");
+  if (model.gravity() != Vec3(0, 0, -9.81)) {
+    lost.push_back(fmt::format("gravity {} m/s² (URDF has none: readers take (0, 0, −9.81))",
+                               vector_text(model.gravity())));
+  }
+  std::string out = fmt::format(
+      "<!-- Written by momenta export from {} (docs/model-formats.md). "
+      "Each link's frame is its joint's child frame. -->\n",
+      file.file);
+  for (const std::string& l : lost) out += fmt::format("<!-- Not written: {}. -->\n", l);
+  out += fmt::format("<robot name=\"{}\">\n  <link name=\"world\"/>\n", file.name);
+  // The link of body b: its frame J' of b's joint, X_LB = X_CJ⁻¹; the world's the world.
+  const auto X_LB = [&](int body) {
+    return body == 0 ? Transform::identity()
+                     : model.joints()[static_cast<std::size_t>(body - 1)].X_CJ.inverse();
+  };
+  for (std::size_t b = 1; b < model.bodies().size(); ++b) {
+    const model::Body& body = model.bodies()[b];
+    const Transform X = X_LB(static_cast<int>(b));
+    const inertia::MassProperties mp = body.mass_properties.transformed(X.R, X.p);
+    const Mat3& I = mp.inertia_about_com();
+    out += fmt::format(
+        "  <link name=\"{}\">\n    <inertial>\n      <origin xyz=\"{}\" rpy=\"0 0 0\"/>\n"
+        "      <mass value=\"{}\"/>\n      <inertia ixx=\"{}\" ixy=\"{}\" ixz=\"{}\" iyy=\"{}\" "
+        "iyz=\"{}\" izz=\"{}\"/>\n    </inertial>\n",
+        body.name, vector_text(mp.center_of_mass()), number_text(mp.mass()), number_text(I(0, 0)),
+        number_text(I(0, 1)), number_text(I(0, 2)), number_text(I(1, 1)), number_text(I(1, 2)),
+        number_text(I(2, 2)));
+    // What URDF can draw: boxes, cylinders and spheres.
+    for (const PartSummary& part : file.parts_of(static_cast<int>(b))) {
+      std::map<std::string, double> s(part.sizes.begin(), part.sizes.end());
+      std::string geometry;
+      if (part.hole) continue;
+      if (part.kind == "sphere") {
+        geometry = fmt::format("<sphere radius=\"{}\"/>", number_text(s["radius"]));
+      } else if (part.kind == "box") {
+        geometry = fmt::format("<box size=\"{}\"/>",
+                               vector_text(Vec3(s["size.x"], s["size.y"], s["size.z"])));
+      } else if (part.kind == "cylinder") {
+        geometry = fmt::format("<cylinder radius=\"{}\" length=\"{}\"/>", number_text(s["radius"]),
+                               number_text(s["length"]));
+      } else {
+        continue;
+      }
+      out += fmt::format("    <visual>\n      {}\n      <geometry>{}</geometry>\n    </visual>\n",
+                         origin_text(X * Transform(part.R_BS, part.p_BoSo_B)), geometry);
+    }
+    out += "  </link>\n";
+  }
+  // Joints: the origin places J in the parent's link; the child's link is J'.
+  for (const model::Joint& joint : model.joints()) {
+    const char* type = "fixed";
+    switch (joint.type) {
+      case model::JointType::revolute:
+        type = "continuous";
+        break;
+      case model::JointType::prismatic:
+        type = "prismatic";
+        break;
+      case model::JointType::planar:
+        type = "planar";
+        break;
+      case model::JointType::free:
+        type = "floating";
+        break;
+      default:
+        break;
+    }
+    const std::string& parent = model.bodies()[static_cast<std::size_t>(joint.parent_index)].name;
+    out += fmt::format(
+        "  <joint name=\"{}\" type=\"{}\">\n    <parent link=\"{}\"/>\n    <child "
+        "link=\"{}\"/>\n    {}\n",
+        joint.name, type, parent, joint.child, origin_text(X_LB(joint.parent_index) * joint.X_PJ));
+    if (joint.type == model::JointType::revolute || joint.type == model::JointType::prismatic) {
+      out += fmt::format("    <axis xyz=\"{}\"/>\n", vector_text(joint.axis));
+    } else if (joint.type == model::JointType::planar) {
+      out += "    <axis xyz=\"0 0 1\"/>\n";  // momenta's planar joint moves in J's x-y plane
+    }
+    if (joint.type == model::JointType::prismatic) {
+      // URDF requires a prismatic joint's limits; these are wide and momenta reads them as notes.
+      out += "    <limit lower=\"-1e6\" upper=\"1e6\" effort=\"0\" velocity=\"0\"/>\n";
+    }
+    double damping = joint.damping;
+    for (const model::ForceElement& element : model.force_elements()) {
+      if (const auto* f = std::get_if<model::JointFriction>(&element);
+          f && f->joint_index == joint.index) {
+        damping += f->viscous;
+      }
+    }
+    if (damping != 0.0)
+      out += fmt::format("    <dynamics damping=\"{}\"/>\n", number_text(damping));
+    for (const model::Constraint& c : model.constraints()) {
+      const auto& coupler = std::get<model::JointCoupler>(c);
+      if (coupler.joint_a_index != joint.index) continue;
+      out += fmt::format("    <mimic joint=\"{}\" multiplier=\"{}\" offset=\"{}\"/>\n",
+                         coupler.joint_b, number_text(coupler.ratio), number_text(coupler.offset));
+    }
+    out += "  </joint>\n";
+  }
+  return {out + "</robot>\n", lost};
+}
+
+}  // namespace momenta::io

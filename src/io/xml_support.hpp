@@ -1,0 +1,40 @@
+#pragma once
+// What the two XML model readers (URDF, MJCF) share: tinyxml2's errors said in words at their
+// line, whitespace-separated number lists, and where on its line an element or attribute stands.
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <tinyxml2.h>
+
+#include "momenta/io/model_file.hpp"
+#include "momenta/model/model_builder.hpp"
+
+namespace momenta::io::detail {
+
+/// Throws ParseError `file:line: not well-formed XML (mismatched element)` when tinyxml2 could
+/// not read the document, and `file: the file is empty: <empty_hint>` for an empty one.
+void check_xml_document(const tinyxml2::XMLDocument& document, const std::string& file_name,
+                        std::string_view empty_hint);
+
+/// The numbers of a whitespace-separated list ("0 0.1 -9.81"); nullopt when an entry is not a
+/// finite number.
+std::optional<std::vector<double>> parse_number_list(std::string_view text);
+
+/// The 1-based column where `<name` of the element starts on its line, or where ` attribute=`
+/// starts when `attribute` is given and found there; 0 when the text does not show it on that
+/// line. tinyxml2 records lines only: this reads the source text again.
+int xml_column(std::string_view text, const tinyxml2::XMLElement* element,
+               const char* attribute = nullptr);
+
+/// builder.build(), a problem it finds said as ParseError at the line and column of the item it
+/// names (`items`), or at line 0 when it names none.
+model::Model build_at_lines(const model::ModelBuilder& builder,
+                            const std::vector<ItemLocation>& items, const std::string& file_name);
+
+/// The whole file as text; throws FileError `path: cannot open the <what>`.
+std::string read_xml_text(const std::string& path, std::string_view what);
+
+}  // namespace momenta::io::detail

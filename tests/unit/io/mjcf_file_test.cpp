@@ -1,0 +1,313 @@
+// The MJCF reader (io/mjcf_file.hpp): an MJCF file and an independent description of the same
+// system give the same dynamics (the double pendulum against its model file); orientations,
+// default classes, geoms' mass properties, joints, equality constraints and motors map as
+// docs/model-formats.md says, each checked against a value worked out here by another route;
+// every problem of a file is an error at its line and column, every element momenta does not use
+// a note at its line. The side-by-side with MuJoCo itself is tests/validation/io.
+
+#include "momenta/io/mjcf_file.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <variant>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <Eigen/Geometry>
+
+#include "momenta/common/error.hpp"
+#include "momenta/dynamics/constraints.hpp"
+#include "momenta/dynamics/force_elements.hpp"
+#include "momenta/dynamics/kinematics.hpp"
+#include "momenta/dynamics/rnea.hpp"
+#include "momenta/inertia/primitives.hpp"
+#include "momenta/math/rotation.hpp"
+#include "momenta_test/model_comparison.hpp"
+#include "momenta_test/tolerance.hpp"
+
+// A namespace of its own: the executable compiles its test files as one unit (unity build).
+namespace momenta::io::mjcf_test {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+std::string mjcf_path(const std::string& name) {
+  return test::source_dir() + "/tests/data/models/mjcf/" + name + ".xml";
+}
+
+// A model of one body under the world, placed by `placement` (attributes of <body>), with a
+// box geom so that it has mass.
+ModelFile one_body(const std::string& compiler, const std::string& placement) {
+  return parse_mjcf("<mujoco><compiler " + compiler + "/><worldbody><body name='b' " + placement +
+                        "><joint type='hinge'/><geom type='box' size='0.1 0.2 0.3'/></body>"
+                        "</worldbody></mujoco>",
+                    "m.xml");
+}
+
+const model::Joint& joint_of(const ModelFile& file, const std::string& name) {
+  return file.model.joints()[static_cast<std::size_t>(file.model.joint_index(name))];
+}
+
+TEST(MjcfFile, DoublePendulumIsItsModelFile) {
+  const ModelFile mjcf = read_mjcf_file(mjcf_path("double_pendulum"));
+  const ModelFile yaml = read_model_file(test::source_dir() + "/examples/double_pendulum.yaml");
+  EXPECT_EQ(mjcf.name, "double pendulum");
+  EXPECT_EQ(mjcf.model.num_bodies(), 3);
+  EXPECT_TRUE(mjcf.notes.empty());
+  EXPECT_LT(test::largest_difference(mjcf.model, yaml.model, 20), 1e-14);
+  // read_model_file takes *.xml as MJCF.
+  EXPECT_EQ(read_model_file(mjcf_path("double_pendulum")).model.nv(), 2);
+}
+
+// Every way MJCF gives an orientation, against the rotation built here from its definition.
+TEST(MjcfFile, OrientationsAsMuJoCoDefinesThem) {
+  const auto R_of = [](const ModelFile& file) { return joint_of(file, "joint0").X_PJ.R; };
+  const Vec3 axis = Vec3(1, 2, 3).normalized();
+  const Mat3 about = Eigen::AngleAxisd(0.7, axis).toRotationMatrix();
+  // quat (w x y z, normalized) and axisangle in degrees (the default) or radians.
+  const Eigen::Quaterniond q(Eigen::AngleAxisd(0.7, axis));
+  EXPECT_MATRIX_NEAR(R_of(one_body("", fmt::format("quat='{} {} {} {}'", 2 * q.w(), 2 * q.x(),
+                                                   2 * q.y(), 2 * q.z()))),
+                     about, 1e-15);
+  EXPECT_MATRIX_NEAR(R_of(one_body("", fmt::format("axisangle='1 2 3 {:.17g}'", 0.7 * 180 / kPi))),
+                     about, 1e-15);
+  EXPECT_MATRIX_NEAR(R_of(one_body("angle='radian'", "axisangle='1 2 3 0.7'")), about, 1e-15);
+  // euler: lower case turns with the frame (R = Rx Ry Rz for "xyz"), upper case about fixed axes
+  // (R = Rz Ry Rx for "XYZ") — SciPy's opposite spelling.
+  const Vec3 a(0.3, -0.5, 1.1);
+  const Mat3 Rx = Eigen::AngleAxisd(a.x(), Vec3::UnitX()).toRotationMatrix();
+  const Mat3 Ry = Eigen::AngleAxisd(a.y(), Vec3::UnitY()).toRotationMatrix();
+  const Mat3 Rz = Eigen::AngleAxisd(a.z(), Vec3::UnitZ()).toRotationMatrix();
+  const std::string angles = fmt::format("euler='{} {} {}'", a.x(), a.y(), a.z());
+  EXPECT_MATRIX_NEAR(R_of(one_body("angle='radian'", angles)), Rx * Ry * Rz, 1e-15);
+  EXPECT_MATRIX_NEAR(R_of(one_body("angle='radian' eulerseq='XYZ'", angles)), Rz * Ry * Rx, 1e-15);
+  EXPECT_MATRIX_NEAR(R_of(one_body("angle='radian' eulerseq='zXy'", angles)),
+                     Eigen::AngleAxisd(a.y(), Vec3::UnitX()).toRotationMatrix() *
+                         Eigen::AngleAxisd(a.x(), Vec3::UnitZ()).toRotationMatrix() *
+                         Eigen::AngleAxisd(a.z(), Vec3::UnitY()).toRotationMatrix(),
+                     1e-15);
+  // xyaxes: y made perpendicular to x; zaxis: the shortest turn of z onto it.
+  Mat3 frame;
+  frame.col(0) = Vec3(1, 1, 0).normalized();
+  frame.col(1) = Vec3(-1, 1, 0).normalized();
+  frame.col(2) = Vec3::UnitZ();
+  EXPECT_MATRIX_NEAR(R_of(one_body("", "xyaxes='2 2 0 0 3 0'")), frame, 1e-15);
+  const Mat3 tilt = R_of(one_body("", "zaxis='0 1 1'"));
+  EXPECT_MATRIX_NEAR(tilt.col(2), Vec3(0, 1, 1).normalized(), 1e-15);
+  EXPECT_MATRIX_NEAR(tilt, Eigen::AngleAxisd(-kPi / 4, Vec3::UnitX()).toRotationMatrix(), 1e-15);
+}
+
+// The arm: defaults by class and childclass, geoms' masses, an inertial turned by its quat,
+// joints, a spring, motors and the notes.
+TEST(MjcfFile, ArmDefaultsMassesJointsMotorsAndNotes) {
+  const ModelFile arm = read_mjcf_file(mjcf_path("arm7"));
+  EXPECT_EQ(arm.name, "arm7");
+  EXPECT_EQ(arm.model.nv(), 7);
+  EXPECT_EQ(arm.model.num_bodies(), 9);  // the world, the welded base, seven links
+  const auto body = [&](const std::string& name) -> const inertia::MassProperties& {
+    return arm.model.bodies()[static_cast<std::size_t>(arm.model.body_index(name))].mass_properties;
+  };
+  // The base: a 5 kg cylinder 0.0775 m up; link1's capsule (density 2700) is not used beside its
+  // <inertial>; link3 is a 3 kg capsule along z from 0 to 0.2155 m.
+  EXPECT_REL_NEAR(body("base").mass(), 5.0, 1e-15);
+  EXPECT_MATRIX_NEAR(body("base").center_of_mass(), Vec3(0, 0, 0.0775), 1e-17);
+  EXPECT_REL_NEAR(body("link1").mass(), 4.0, 1e-15);
+  const inertia::MassProperties capsule3 =
+      inertia::capsule(inertia::Amount::mass(3.0), 0.065, 0.2155);
+  EXPECT_MATRIX_NEAR(body("link3").inertia_about_com(), capsule3.inertia_about_com(), 1e-15);
+  EXPECT_MATRIX_NEAR(body("link3").center_of_mass(), Vec3(0, 0, 0.2155 / 2), 1e-16);
+  // link4's inertial is turned 30° about x: I = R diag(0.03, 0.03, 0.01) Rᵀ.
+  const Mat3 R30 = Eigen::AngleAxisd(kPi / 6, Vec3::UnitX()).toRotationMatrix();
+  EXPECT_MATRIX_NEAR(body("link4").inertia_about_com(),
+                     Mat3(R30 * Vec3(0.03, 0.03, 0.01).asDiagonal() * R30.transpose()), 1e-8);
+  // link7: a cylinder (density 1500 from class wrist, inherited through link6's childclass) and
+  // a box turned 30° about z, together.
+  const double m_cylinder = 1500 * kPi * 0.04 * 0.04 * 0.045, m_box = 1500 * 0.04 * 0.06 * 0.02;
+  EXPECT_REL_NEAR(body("link7").mass(), m_cylinder + m_box, 1e-14);
+  // Joint damping from the default classes; a6's anchor; the spring a3 at its springref.
+  EXPECT_EQ(joint_of(arm, "a1").damping, 0.5);
+  EXPECT_EQ(joint_of(arm, "a7").damping, 0.1);
+  EXPECT_MATRIX_NEAR(joint_of(arm, "a6").X_CJ.p, Vec3(0, 0, 0.0607), 0.0);
+  EXPECT_MATRIX_NEAR(joint_of(arm, "a4").axis, Vec3(0, -1, 0), 0.0);
+  const auto& elements = arm.model.force_elements();
+  const auto spring = std::find_if(elements.begin(), elements.end(), [](const auto& e) {
+    return model::force_element_name(e) == "a3_spring";
+  });
+  ASSERT_NE(spring, elements.end());
+  const auto& torsional = std::get<model::TorsionalSpringDamper>(*spring);
+  EXPECT_EQ(torsional.stiffness, 20.0);
+  EXPECT_REL_NEAR(torsional.rest_angle, 10 * kPi / 180, 1e-15);
+  // Motors: one input each; the generalized force on the joint is gear · gain · u and no other
+  // joint feels it (the torque pair's two halves cancel there).
+  ASSERT_EQ(arm.model.signals().size(), 7u);
+  dynamics::Data data(arm.model);
+  VecX q = VecX::LinSpaced(7, 0.3, -0.9), v = VecX::LinSpaced(7, -0.5, 0.5);
+  dynamics::forward_kinematics(arm.model, data, q, v);
+  std::vector<double> u(7, 0.0);
+  VecX tau_zero, tau;
+  std::vector<Vec6> f_zero(static_cast<std::size_t>(arm.model.num_bodies())), f_ext = f_zero;
+  dynamics::force_element_forces(arm.model, data, u, q, v, tau_zero, f_zero);
+  const double gains[7] = {1, 2, 1, 1, 3, 1, 1};
+  for (int k = 0; k < 7; ++k) {
+    std::fill(u.begin(), u.end(), 0.0);
+    u[static_cast<std::size_t>(k)] = 1.5;
+    dynamics::force_element_forces(arm.model, data, u, q, v, tau, f_ext);
+    // The wrenches' generalized forces: τ_g = −(RNEA with the wrenches − RNEA without).
+    const VecX with = dynamics::rnea(arm.model, data, q, v, VecX::Zero(7), f_ext);
+    const VecX without = dynamics::rnea(arm.model, data, q, v, VecX::Zero(7), f_zero);
+    VecX expected = VecX::Zero(7);
+    expected[k] = 1.5 * gains[k];
+    EXPECT_MATRIX_NEAR(VecX(without - with), expected, 1e-13) << "motor m" << k + 1;
+  }
+  // What is not used, at its line.
+  const std::vector<std::string> expected_notes = {
+      "arm7.xml:8: <option> timestep and integrator",
+      "arm7.xml:19: <geom name=\"floor\"> in the world: contacts are not modelled",
+      "arm7.xml:20: <light name=\"sun\">: not used by momenta",
+      "arm7.xml:24: the limits of joint 'a1' are not enforced",
+      "arm7.xml:48: <site name=\"flange\"> of body 'link7': not used by momenta",
+      "arm7.xml:59: the control and force ranges of actuator 'm1' are not enforced",
+      "arm7.xml:67: <sensor> (1 element): not used by momenta"};
+  ASSERT_EQ(arm.notes.size(), expected_notes.size());
+  for (std::size_t i = 0; i < expected_notes.size(); ++i) {
+    EXPECT_NE(arm.notes[i].find(expected_notes[i]), std::string::npos) << arm.notes[i];
+  }
+}
+
+// Several joints in one body: a chain of massless bodies whose frames coincide with the body's,
+// as MuJoCo applies them one after the other; a free joint starts where the file draws the body.
+TEST(MjcfFile, HumanoidJointChainsAndFloatingBase) {
+  const ModelFile human = read_mjcf_file(mjcf_path("humanoid"));
+  EXPECT_EQ(human.model.nv(), 6 + 4 * 3 + 32);  // free, four balls, 32 hinges and slides
+  const model::Joint& root = joint_of(human, "root");
+  EXPECT_EQ(root.type, model::JointType::free);
+  const Eigen::Quaterniond q_WB(0.9950042, 0, 0, 0.0998334);
+  ASSERT_EQ(root.q0.size(), 7);
+  EXPECT_MATRIX_NEAR(root.q0.head<3>(), Vec3(0, 0, 1), 0.0);
+  EXPECT_NEAR(root.q0[3], q_WB.normalized().w(), 1e-15);
+  // The left hip's three hinges: x on the pelvis, then y and z on massless links.
+  EXPECT_EQ(joint_of(human, "left_hip_x").child, "left_thigh_left_hip_x");
+  EXPECT_EQ(joint_of(human, "left_hip_y").parent, "left_thigh_left_hip_x");
+  EXPECT_EQ(joint_of(human, "left_hip_z").child, "left_thigh");
+  EXPECT_EQ(joint_of(human, "left_thumb_slide").type, model::JointType::prismatic);
+  // Masses as given: 70 kg in all (Winter's fractions sum to 1).
+  double total = 0.0;
+  for (const auto& b : human.model.bodies()) total += b.mass_properties.mass();
+  EXPECT_NEAR(total, 70.0, 1e-12);
+}
+
+// Equality constraints: a four-bar closed by connect assembles where the file draws it; weld and
+// joint (a coupler) take their partner's pose and the polynomial's linear part.
+TEST(MjcfFile, EqualityConstraintsCloseLoopsWhereTheFileDrawsThem) {
+  const ModelFile bar = parse_mjcf(R"(<mujoco><compiler angle="radian"/>
+<worldbody>
+  <body name="crank"><joint name="crank_pin" axis="0 0 1"/>
+    <geom type="capsule" fromto="0 0 0 0.1 0 0" size="0.01"/>
+    <body name="coupler" pos="0.1 0 0" euler="0 0 1.2"><joint name="coupler_pin" axis="0 0 1"/>
+      <geom type="capsule" fromto="0 0 0 0.3 0 0" size="0.01"/></body></body>
+  <body name="rocker" pos="0.3 0 0" euler="0 0 1.9"><joint name="rocker_pin" axis="0 0 1"/>
+    <geom type="capsule" fromto="0 0 0 0.25 0 0" size="0.01"/></body>
+  <body name="tip" pos="1 0 0"><joint name="slide" type="slide" axis="1 0 0"/>
+    <geom type="sphere" size="0.05"/></body>
+  <body name="follower" pos="2 0 0"><joint name="follow" type="slide" axis="1 0 0"/>
+    <geom type="sphere" size="0.05"/></body>
+</worldbody>
+<equality>
+  <connect name="closure" body1="coupler" body2="rocker" anchor="0.3 0 0"/>
+  <weld name="glue" body1="tip"/>
+  <joint name="gear" joint1="follow" joint2="slide" polycoef="0.1 -2 0 0 0"/>
+</equality></mujoco>)",
+                                   "bar.xml");
+  ASSERT_EQ(bar.model.constraints().size(), 3u);
+  const auto& closure = std::get<model::LoopClosure>(bar.model.constraints()[0]);
+  EXPECT_EQ(closure.type, model::LoopType::point);
+  EXPECT_EQ(closure.b.body, "coupler");
+  EXPECT_EQ(closure.a.body, "rocker");
+  // The anchor's point on the rocker, worked out by hand: the coupler's end in the world, then
+  // into the rocker's frame.
+  const Vec3 coupler_end =
+      Vec3(0.1, 0, 0) + Eigen::AngleAxisd(1.2, Vec3::UnitZ()) * Vec3(0.3, 0, 0);
+  const Vec3 on_rocker = Eigen::AngleAxisd(-1.9, Vec3::UnitZ()) * (coupler_end - Vec3(0.3, 0, 0));
+  EXPECT_MATRIX_NEAR(closure.a.X_BF.p, on_rocker, 1e-15);
+  // At the drawn configuration every position row is satisfied.
+  dynamics::Data data(bar.model);
+  dynamics::ConstraintRows rows(bar.model);
+  const VecX q0 = bar.model.initial_q();
+  dynamics::forward_kinematics(bar.model, data, q0);
+  dynamics::constraint_equations(bar.model, data, q0, rows);
+  ASSERT_EQ(rows.count, 3 + 6 + 1);
+  ASSERT_TRUE(rows.position.allFinite());
+  EXPECT_LT(rows.position.head(9).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_EQ(rows.position[9], -0.1);  // the coupler's offset: follow = 0.1 − 2 slide
+  const auto& glue = std::get<model::LoopClosure>(bar.model.constraints()[1]);
+  EXPECT_EQ(glue.type, model::LoopType::weld);
+  EXPECT_EQ(glue.a.body, "world");
+  EXPECT_MATRIX_NEAR(glue.a.X_BF.p, Vec3(1, 0, 0), 0.0);
+  const auto& gear = std::get<model::JointCoupler>(bar.model.constraints()[2]);
+  EXPECT_EQ(gear.joint_a, "follow");
+  EXPECT_EQ(gear.ratio, -2.0);
+  EXPECT_EQ(gear.offset, 0.1);
+}
+
+std::string error_of(const std::string& body) {
+  try {
+    parse_mjcf(body, "m.xml");
+  } catch (const ParseError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no error for\n" << body;
+  return {};
+}
+
+std::string in_world(const std::string& body) {
+  return "<mujoco>\n<worldbody>\n" + body + "\n</worldbody>\n</mujoco>";
+}
+
+TEST(MjcfFile, ErrorsAreAtTheirLineAndColumn) {
+  const auto has = [](const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos ? ::testing::AssertionSuccess()
+                                                : ::testing::AssertionFailure() << text;
+  };
+  EXPECT_TRUE(has(error_of("<mujoco><worldbody>\n</mujoco>"),
+                  "m.xml:1: not well-formed XML (mismatched element)"));
+  EXPECT_TRUE(has(error_of(""), "m.xml: the file is empty"));
+  EXPECT_TRUE(has(error_of("<robot/>"), "root element is <mujoco> (a URDF <robot>"));
+  EXPECT_TRUE(has(error_of(in_world("<body><joint type='hinge' axs='0 0 1'/></body>")),
+                  "m.xml:3:27: <joint>: unknown attribute 'axs' (did you mean 'axis'?)"));
+  EXPECT_TRUE(has(error_of(in_world("<body><joint type='slid'/><geom size='1'/></body>")),
+                  "m.xml:3:14: <joint type=\"slid\">: not one of hinge, slide, ball, free (did you "
+                  "mean 'slide'?)"));
+  EXPECT_TRUE(has(error_of(in_world("<body><jiont/></body>")),
+                  "m.xml:3:7: <jiont> in body 'body1': not an element of a body (did you mean "
+                  "'joint'?)"));
+  EXPECT_TRUE(has(error_of(in_world("<body><geom size='0.1 x'/></body>")),
+                  "m.xml:3:13: <geom size=\"0.1 x\">: not a list of finite numbers"));
+  EXPECT_TRUE(has(error_of(in_world("<body><geom type='box' size='0.1 0.2'/></body>")),
+                  "a geom of body 'body1' (a box) needs 3 sizes, the file gives 2"));
+  EXPECT_TRUE(has(error_of(in_world("<body><geom class='wide' size='1'/></body>")),
+                  "unknown class 'wide'"));
+  EXPECT_TRUE(has(error_of(in_world("<body><geom type='mesh' mesh='m'/></body>")),
+                  "is a mesh: momenta cannot find its mass; give body 'body1' an <inertial>"));
+  EXPECT_TRUE(has(error_of(in_world("<body quat='1 0 0 0' euler='0 0 1'><geom size='1'/></body>")),
+                  "<body> gives its orientation twice ('quat' and 'euler')"));
+  EXPECT_TRUE(has(
+      error_of(in_world("<body><geom size='1'/><body><freejoint/><geom size='1'/></body></body>")),
+      "a free joint is the only joint of a body of the world"));
+  EXPECT_TRUE(has(error_of(in_world("<body><inertial mass='1' diaginertia='1 1 3'/></body>")),
+                  "m.xml:3:26: body 'body1': principal moments 1, 1, 3"));
+  EXPECT_TRUE(has(error_of("<mujoco><compiler settotalmass='5'/><worldbody/></mujoco>"),
+                  "<compiler settotalmass>: momenta takes the masses as the file gives them"));
+  EXPECT_TRUE(has(error_of("<mujoco><worldbdy/></mujoco>"),
+                  "<worldbdy>: not an element of <mujoco> (did you mean 'worldbody'?)"));
+  EXPECT_TRUE(has(error_of("<mujoco><worldbody><body name='a'><joint/><geom size='1'/></body>"
+                           "</worldbody>\n<equality><connect body1='b' anchor='0 0 0'/></equality>"
+                           "</mujoco>"),
+                  "m.xml:2:20: unknown body 'b' (did you mean 'a'?)"));
+  // A massless body on a joint: the builder's error, at the body's line.
+  EXPECT_TRUE(has(error_of(in_world("<body name='a'>\n<joint/></body>")),
+                  "m.xml:4:1: joint 'joint0' carries only massless bodies"));
+}
+
+}  // namespace
+}  // namespace momenta::io::mjcf_test
