@@ -242,7 +242,8 @@ void MjcfReader::read_defaults(const XMLElement* xml, const std::string& parent)
   if (const char* given = xml->Attribute("class")) name = given;
   if (!parent.empty()) {
     if (xml->Attribute("class") == nullptr) fail(xml, "a nested <default> needs a class");
-    if (classes_.count(name) != 0 && name != "main") {
+    // "main" is the top class: a nested one of that name would be its own ancestor.
+    if (classes_.count(name) != 0) {
       fail(xml, fmt::format("a second default class named '{}'", name), "class");
     }
     classes_[name] = DefaultClass{parent, {}};

@@ -298,6 +298,8 @@ TEST(MjcfFile, ErrorsAreAtTheirLineAndColumn) {
                   "m.xml:3:26: body 'body1': principal moments 1, 1, 3"));
   EXPECT_TRUE(has(error_of("<mujoco><compiler settotalmass='5'/><worldbody/></mujoco>"),
                   "<compiler settotalmass>: momenta takes the masses as the file gives them"));
+  EXPECT_TRUE(has(error_of("<mujoco><default><default class='main'/></default></mujoco>"),
+                  "a second default class named 'main'"));
   EXPECT_TRUE(has(error_of("<mujoco><worldbdy/></mujoco>"),
                   "<worldbdy>: not an element of <mujoco> (did you mean 'worldbody'?)"));
   EXPECT_TRUE(has(error_of("<mujoco><worldbody><body name='a'><joint/><geom size='1'/></body>"
