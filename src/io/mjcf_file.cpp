@@ -225,13 +225,14 @@ void MjcfReader::read_option(const XMLElement* xml) {
   }
 }
 
-std::string MjcfReader::class_of(const XMLElement* xml, const std::string& inherited) const {
-  const char* name = xml->Attribute("class");
+std::string MjcfReader::class_of(const XMLElement* xml, const std::string& inherited,
+                                 const char* attribute) const {
+  const char* name = xml->Attribute(attribute);
   if (name == nullptr) return inherited;
   if (classes_.count(name) == 0) {
     std::vector<std::string_view> known;
     for (const auto& [n, c] : classes_) known.push_back(n);
-    fail(xml, fmt::format("unknown class '{}'{}", name, did_you_mean(name, known)), "class");
+    fail(xml, fmt::format("unknown class '{}'{}", name, did_you_mean(name, known)), attribute);
   }
   return name;
 }
@@ -287,9 +288,9 @@ void MjcfReader::read_body(const XMLElement* xml, const std::string& parent, con
                            const std::string& inherited_class) {
   check_attributes(xml, {"name", "childclass", "pos", "quat", "mocap", "axisangle", "xyaxes",
                          "zaxis", "euler", "user", "gravcomp"});
-  ++unnamed_bodies;  // MuJoCo's body number (the world is 0)
+  ++body_count;  // MuJoCo's body number (the world is 0)
   const char* given = xml->Attribute("name");
-  const std::string name = given != nullptr ? given : fmt::format("body{}", unnamed_bodies);
+  const std::string name = given != nullptr ? given : fmt::format("body{}", body_count);
   if (name == model::kWorldBodyName) fail(xml, "a body named 'world': the world is <worldbody>");
   if (const auto it = bodies.find(name); it != bodies.end()) {
     fail(xml,
@@ -297,15 +298,7 @@ void MjcfReader::read_body(const XMLElement* xml, const std::string& parent, con
                      it->second.element->GetLineNum()),
          "name");
   }
-  std::string child_class = inherited_class;
-  if (const char* cc = xml->Attribute("childclass")) {
-    if (classes_.count(cc) == 0) {
-      std::vector<std::string_view> known;
-      for (const auto& [n, c] : classes_) known.push_back(n);
-      fail(xml, fmt::format("unknown class '{}'{}", cc, did_you_mean(cc, known)), "childclass");
-    }
-    child_class = cc;
-  }
+  const std::string child_class = class_of(xml, inherited_class, "childclass");
   const Transform X_PB = pose(MjcfElement{xml, "body", child_class});
   const Transform X_WB = X_WP * X_PB;
   if (const char* mocap = xml->Attribute("mocap"); mocap && std::string_view(mocap) == "true") {
@@ -410,10 +403,10 @@ std::vector<std::string> MjcfReader::body_joints(const XMLElement* body, const s
                              "actuatorfrcrange"});
     }
     const MjcfElement e{xml, "joint", class_of(xml, child_class)};
-    ++unnamed_joints;
+    ++joint_count;
     const char* given = xml->Attribute("name");
     model::Joint joint;
-    joint.name = given != nullptr ? given : fmt::format("joint{}", unnamed_joints - 1);
+    joint.name = given != nullptr ? given : fmt::format("joint{}", joint_count - 1);
     if (const auto it = joints.find(joint.name); it != joints.end()) {
       fail(xml,
            fmt::format("a second joint named '{}' (the first is at line {})", joint.name,

@@ -82,17 +82,6 @@ Transform MjcfReader::pose(const MjcfElement& e) const {
   return {R, p};
 }
 
-namespace {
-
-// One geom's shape and pose in the body, MuJoCo's sizes: half-lengths, radii.
-struct GeomShape {
-  std::string kind;  // momenta's part kind: sphere, capsule, cylinder, box, ellipsoid
-  std::vector<std::pair<std::string, double>> sizes;
-  Transform X_BG;
-};
-
-}  // namespace
-
 inertia::MassProperties MjcfReader::body_mass_properties(const XMLElement* body,
                                                          const std::string& name,
                                                          const std::string& class_name,
@@ -140,10 +129,10 @@ inertia::MassProperties MjcfReader::body_mass_properties(const XMLElement* body,
     }
     // The shape and its frame: size and pos/orientation, or fromto (the axis from one end to
     // the other, a capsule's or cylinder's length, a box's or ellipsoid's third half-size).
-    GeomShape shape;
-    shape.kind = type == "sphere" || type == "capsule" || type == "box" || type == "ellipsoid"
-                     ? type
-                     : "cylinder";
+    // The geom as a part to draw: momenta's part kinds carry MJCF's five names.
+    PartSummary part;
+    part.kind = type;
+    Transform X_BG;
     const MjcfAttribute fromto = attribute(e, "fromto");
     if (fromto && type == "sphere") {
       fail(fromto.where,
@@ -161,11 +150,10 @@ inertia::MassProperties MjcfReader::body_mass_properties(const XMLElement* body,
       length = (to - from).norm();
       if (!(length > 0.0))
         fail(fromto.where, fmt::format("the ends of {} coincide", label), "fromto");
-      shape.X_BG =
-          Transform(Quat::FromTwoVectors(Vec3::UnitZ(), (to - from) / length).toRotationMatrix(),
-                    (from + to) / 2.0);
+      X_BG = Transform(Quat::FromTwoVectors(Vec3::UnitZ(), (to - from) / length).toRotationMatrix(),
+                       (from + to) / 2.0);
     } else {
-      shape.X_BG = pose(e);
+      X_BG = pose(e);
     }
     const std::size_t needed = type == "sphere"                          ? 1
                                : type == "capsule" || type == "cylinder" ? (along_fromto ? 1 : 2)
@@ -195,35 +183,32 @@ inertia::MassProperties MjcfReader::body_mass_properties(const XMLElement* body,
       const inertia::Amount sized = amount > 0.0 ? material : inertia::Amount::density(1.0);
       if (type == "sphere") {
         in_G = inertia::solid_sphere(sized, size[0]);
-        shape.sizes = {{"radius", size[0]}};
+        part.sizes = {{"radius", size[0]}};
       } else if (type == "capsule") {
         in_G = inertia::capsule(sized, size[0], 2.0 * size[1]);
-        shape.sizes = {{"radius", size[0]}, {"length", 2.0 * size[1]}};
+        part.sizes = {{"radius", size[0]}, {"length", 2.0 * size[1]}};
       } else if (type == "cylinder") {
         in_G = inertia::solid_cylinder(sized, size[0], 2.0 * size[1]);
-        shape.sizes = {{"radius", size[0]}, {"length", 2.0 * size[1]}};
+        part.sizes = {{"radius", size[0]}, {"length", 2.0 * size[1]}};
       } else if (type == "box") {
         const Vec3 edges = 2.0 * Vec3(size[0], size[1], size[2]);
         in_G = inertia::box(sized, edges);
-        shape.sizes = {{"size.x", edges.x()}, {"size.y", edges.y()}, {"size.z", edges.z()}};
+        part.sizes = {{"size.x", edges.x()}, {"size.y", edges.y()}, {"size.z", edges.z()}};
       } else {
         const Vec3 semi(size[0], size[1], size[2]);
         in_G = inertia::ellipsoid(sized, semi);
-        shape.sizes = {
+        part.sizes = {
             {"semi_axes.x", semi.x()}, {"semi_axes.y", semi.y()}, {"semi_axes.z", semi.z()}};
       }
       if (amount == 0.0) in_G = inertia::MassProperties();
     } catch (const InvalidArgument& error) {
       fail(g, fmt::format("{}: {}", label, one_line(error.what())), "size");
     }
-    PartSummary part;
     part.name = given != nullptr ? given : fmt::format("{}.geom{}", name, parts.size());
-    part.kind = shape.kind;
     part.line = g->GetLineNum();
-    part.mass_properties = in_G.transformed(shape.X_BG.R, shape.X_BG.p);
-    part.sizes = shape.sizes;
-    part.R_BS = shape.X_BG.R;
-    part.p_BoSo_B = shape.X_BG.p;
+    part.mass_properties = in_G.transformed(X_BG.R, X_BG.p);
+    part.R_BS = X_BG.R;
+    part.p_BoSo_B = X_BG.p;
     if (from_geoms) from_geom_sum += part.mass_properties;
     parts.push_back(std::move(part));
   }

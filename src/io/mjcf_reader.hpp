@@ -103,7 +103,10 @@ class MjcfReader {
                                        const Transform& X_WB, const std::string& child_class);
   const MjcfBody& body_named(const XMLElement* at, const char* attribute, const char* name) const;
   const MjcfJoint& joint_named(const XMLElement* at, const char* attribute, const char* name) const;
-  std::string class_of(const XMLElement* xml, const std::string& inherited) const;
+  /// The class an element names in `attribute` ("class", or a body's "childclass"), else
+  /// `inherited`; fails at an unknown one with a did-you-mean.
+  std::string class_of(const XMLElement* xml, const std::string& inherited,
+                       const char* attribute = "class") const;
 
  public:
   // What the reading found, for the loads (mjcf_loads.cpp) and the geometry.
@@ -120,7 +123,7 @@ class MjcfReader {
   std::map<std::string, MjcfJoint, std::less<>> joints;  // by joint name
   std::vector<std::string> joint_order;
   std::map<std::string, std::vector<PartSummary>> body_parts;  // momenta body → geoms
-  int unnamed_bodies = 0, unnamed_joints = 0;
+  int body_count = 0, joint_count = 0;  // bodies and joints read so far: MuJoCo's numbers
 
  private:
   std::map<std::string, DefaultClass, std::less<>> classes_;

@@ -7,45 +7,11 @@
 
 #include <fmt/format.h>
 
-#include "model_export_text.hpp"
+#include "model_export_common.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/io/model_export.hpp"
 
 namespace momenta::io {
-namespace detail {
-
-std::vector<std::string> loads_not_written(const model::Model& model, std::string_view format) {
-  std::vector<std::string> lost;
-  for (const model::ForceElement& element : model.force_elements()) {
-    const std::string& name = model::force_element_name(element);
-    std::visit(
-        [&](const auto& e) {
-          using T = std::decay_t<decltype(e)>;
-          if constexpr (std::is_same_v<T, model::LinearSpringDamper>) {
-            lost.push_back(fmt::format("spring-damper '{}' between two points", name));
-          } else if constexpr (std::is_same_v<T, model::TorsionalSpringDamper>) {
-            if (e.joint.empty() || format == "URDF") {
-              lost.push_back(fmt::format("torsional spring '{}'", name));
-            }
-          } else if constexpr (std::is_same_v<T, model::AppliedForce>) {
-            lost.push_back(fmt::format("applied force '{}'", name));
-          } else if constexpr (std::is_same_v<T, model::AppliedTorque>) {
-            lost.push_back(fmt::format("applied torque '{}'", name));
-          }
-        },
-        element);
-  }
-  for (const model::Joint& joint : model.joints()) {
-    if (joint.is_prescribed()) {
-      lost.push_back(
-          fmt::format("the prescribed motion of joint '{}' (written free to move)", joint.name));
-    }
-  }
-  return lost;
-}
-
-}  // namespace detail
-
 namespace {
 
 using detail::number_text;
@@ -196,11 +162,8 @@ class MjcfWriter {
                                   vector_text(X_PB.p), quaternion_text(X_PB.R));
     const std::string inner(static_cast<std::size_t>(indent + 2), ' ');
     // Its joints: the damping and spring of a one-axis joint ride on its MJCF joint.
-    double damping = joint.damping, stiffness = 0.0, rest = 0.0;
+    double damping = detail::joint_viscous_damping(model_, j), stiffness = 0.0, rest = 0.0;
     for (const model::ForceElement& element : model_.force_elements()) {
-      if (const auto* f = std::get_if<model::JointFriction>(&element); f && f->joint_index == j) {
-        damping += f->viscous;
-      }
       if (const auto* s = std::get_if<model::TorsionalSpringDamper>(&element);
           s && s->joint_index == j) {
         damping += s->damping;

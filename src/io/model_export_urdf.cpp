@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "model_export_text.hpp"
+#include "model_export_common.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/io/model_export.hpp"
 #include "momenta/math/rotation.hpp"
@@ -134,13 +134,7 @@ ExportedModel write_urdf(const ModelFile& file) {
       // URDF requires a prismatic joint's limits; these are wide and momenta reads them as notes.
       out += "    <limit lower=\"-1e6\" upper=\"1e6\" effort=\"0\" velocity=\"0\"/>\n";
     }
-    double damping = joint.damping;
-    for (const model::ForceElement& element : model.force_elements()) {
-      if (const auto* f = std::get_if<model::JointFriction>(&element);
-          f && f->joint_index == joint.index) {
-        damping += f->viscous;
-      }
-    }
+    const double damping = detail::joint_viscous_damping(model, joint.index);
     if (damping != 0.0)
       out += fmt::format("    <dynamics damping=\"{}\"/>\n", number_text(damping));
     for (const model::Constraint& c : model.constraints()) {

@@ -8,7 +8,6 @@
 #include <map>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <string_view>
 #include <vector>
 
@@ -105,14 +104,12 @@ double UrdfReader::number(const XMLElement* e, const char* attribute,
 Vec3 UrdfReader::vector3(const XMLElement* e, const char* attribute, const Vec3& fallback) const {
   const char* text = e->Attribute(attribute);
   if (text == nullptr) return fallback;
-  std::istringstream in{std::string(text)};
-  Vec3 v;
-  std::string extra;
-  if (!(in >> v.x() >> v.y() >> v.z()) || (in >> extra) || !v.allFinite()) {
+  const std::optional<std::vector<double>> v = detail::parse_number_list(text);
+  if (!v || v->size() != 3) {
     fail(e,
          fmt::format("<{} {}=\"{}\">: expected three finite numbers", e->Name(), attribute, text));
   }
-  return v;
+  return {(*v)[0], (*v)[1], (*v)[2]};
 }
 
 // <origin xyz rpy>: rpy are fixed-axis roll, pitch, yaw about x, y, z: R = Rz(y) Ry(p) Rx(r).

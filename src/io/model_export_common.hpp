@@ -1,6 +1,8 @@
 #pragma once
-// Numbers, vectors and rotations as the model writers print them (model_export_*.cpp): the
-// shortest text that reads back to the same double, −0 as 0.
+// What the two model writers share (model_export_mjcf.cpp, model_export_urdf.cpp): numbers,
+// vectors and rotations as they print them — the shortest text that reads back to the same
+// double, −0 as 0 — the tree's joints by parent, a joint's viscous damping, and the loads
+// neither format keeps.
 
 #include <string>
 #include <vector>
@@ -37,7 +39,12 @@ inline std::vector<std::vector<int>> joints_out_of(const model::Model& model) {
   return children;
 }
 
-/// What neither format writes: applied loads and springs between bodies, prescribed motions.
+/// A joint's viscous damping: its own plus every joint-friction element's on it (N·m·s/rad or
+/// N·s/m).
+double joint_viscous_damping(const model::Model& model, int joint);
+
+/// What neither format writes: applied loads and springs between bodies, prescribed motions
+/// (and, for "URDF", torsional springs).
 std::vector<std::string> loads_not_written(const model::Model& model, std::string_view format);
 
 }  // namespace momenta::io::detail
