@@ -12,6 +12,7 @@
 
 #include "commands.hpp"
 #include "linear_model_options.hpp"
+#include "model_argument.hpp"
 #include "momenta/analysis/joint_steady_motion.hpp"
 #include "momenta/analysis/steady_motion.hpp"
 #include "momenta/common/error.hpp"
@@ -25,7 +26,7 @@ namespace {
 using json = nlohmann::ordered_json;
 
 struct CampbellOptions {
-  std::string model;
+  ModelArgument model;
   std::vector<double> speed_range;  // rev/min
   int points = 41;
   bool json = false;
@@ -57,7 +58,7 @@ void run(const CampbellOptions& o) {
     throw CLI::ValidationError("--speed-range", "expects 0 < A < B (rev/min)");
   }
   check_csv_target(o.csv, o.force);
-  const io::ModelFile file = frontend::load_model(o.model);
+  const io::ModelFile file = load_model(o.model);
   const analysis::RotorCampbell rotor = analysis::model_campbell_diagram(
       file.model, o.speed_range[0] * kRpm, o.speed_range[1] * kRpm, o.points);
   const analysis::CampbellDiagram& d = rotor.diagram;
@@ -128,12 +129,10 @@ void add_campbell_command(CLI::App& app) {
       "campbell",
       "Campbell diagram of a rotor: its whirl frequencies (forward and backward) against the "
       "spin speed, and the critical speeds");
-  command
-      ->add_option("MODEL", options->model,
-                   "A model file: one body on a spherical or free joint, spinning about its "
-                   "axis of symmetry, or a rotor turning on its joint (a steady motion in joint "
-                   "coordinates)")
-      ->required();
+  add_model_argument(command, options->model,
+                     "A model file: one body on a spherical or free joint, spinning about its "
+                     "axis of symmetry, or a rotor turning on its joint (a steady motion in joint "
+                     "coordinates)");
   command->add_option("--speed-range", options->speed_range, "From A to B rev/min")
       ->expected(2)
       ->required()

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "model_argument.hpp"
 #include "momenta/analysis/free_body.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
@@ -27,7 +28,7 @@ namespace {
 using json = nlohmann::ordered_json;
 
 struct DiagramOptions {
-  std::string model;
+  ModelArgument model;
   std::string body;
   InstantOptions instant;
   std::optional<std::string> output;
@@ -92,7 +93,7 @@ void run(const DiagramOptions& o) {
     throw FileError(
         fmt::format("{}: the output file exists; pass --force to overwrite it", *o.output));
   }
-  const io::ModelFile file = frontend::load_model(o.model);
+  const io::ModelFile file = load_model(o.model);
   const integrate::State state = instant_of(file, o.instant);
   system::MultibodySystem system(file.model);
   const analysis::FreeBodyDiagram d =
@@ -118,7 +119,7 @@ void add_diagram_command(CLI::App& app) {
       "A body's free-body and kinetic diagrams at one instant: every force and couple on it "
       "(gravity, joint and constraint reactions, springs, loads), m a_G and Ḣ_G, and the "
       "residuals of ΣF = m a_G and ΣM_G = Ḣ_G");
-  command->add_option("MODEL", options->model, "A model file (.yaml)")->required();
+  add_model_argument(command, options->model);
   command->add_option("--body", options->body, "The body to isolate")->required();
   add_instant_options(command, options->instant);
   command

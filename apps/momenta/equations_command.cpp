@@ -14,6 +14,7 @@
 #include <fmt/ranges.h>
 
 #include "commands.hpp"
+#include "model_argument.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
 #include "momenta/symbolic/equations.hpp"
@@ -27,7 +28,7 @@ namespace {
 using json = nlohmann::ordered_json;
 
 struct EquationsOptions {
-  std::string model;
+  ModelArgument model;
   std::vector<std::string> symbols;
   bool all_symbols = false;
   bool greek = false;  // --greek, or the word greek in --symbols
@@ -357,7 +358,7 @@ symbolic::Equations derive(const io::ModelFile& file, const EquationsOptions& o)
 }
 
 void run(const EquationsOptions& o) {
-  const io::ModelFile file = frontend::load_model(o.model);
+  const io::ModelFile file = load_model(o.model);
   // The instant is the operating point of a linearization; the equations themselves hold at
   // every instant, so --time or --state elsewhere is a mistake, not something to ignore.
   const bool linearizes = !o.transfer.empty() || o.form == "linear";
@@ -388,7 +389,7 @@ void add_equations_command(CLI::App& app) {
   auto options = std::make_shared<EquationsOptions>();
   CLI::App* command = app.add_subcommand(
       "equations", "Equations of motion in symbols: M(q) v̇ + C(q, v) v + g(q) = Q (GiNaC)");
-  command->add_option("MODEL", options->model, "A model file (.yaml)")->required();
+  add_model_argument(command, options->model);
   CLI::Option* symbols =
       command
           ->add_option("--symbols", options->symbols,

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
+#include "model_argument.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
 #include "momenta/io/model_export.hpp"
@@ -21,7 +22,7 @@ namespace momenta::cli {
 namespace {
 
 struct ExportOptions {
-  std::string model;
+  ModelArgument model;
   std::optional<std::string> mjcf, urdf;
   bool force = false;
 };
@@ -33,7 +34,7 @@ void run(const ExportOptions& o) {
     throw FileError(
         fmt::format("{}: the output file exists; pass --force to overwrite it", output));
   }
-  const io::ModelFile file = frontend::load_model(o.model);
+  const io::ModelFile file = load_model(o.model);
   const io::ExportedModel written =
       o.mjcf ? io::write_mjcf(file, simulate::state_at(file.model, 0.0, {}).q)
              : io::write_urdf(file);
@@ -53,7 +54,7 @@ void add_export_command(CLI::App& app) {
       "export",
       "Write a model as MJCF (MuJoCo) or URDF (ROS, Pinocchio): its bodies' masses, inertias and "
       "frames exactly, its joints, damping, springs (MJCF), loops (MJCF) and couplers");
-  command->add_option("MODEL", options->model, "A model file (.yaml, .urdf, .xml)")->required();
+  add_model_argument(command, options->model);
   auto* mjcf = command->add_option("--mjcf", options->mjcf, "Write MJCF to this file")
                    ->check(not_a_folder());
   auto* urdf = command->add_option("--urdf", options->urdf, "Write URDF to this file")

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "model_argument.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
 #include "momenta/io/model_file.hpp"
@@ -29,7 +30,7 @@ namespace {
 using json = nlohmann::ordered_json;
 
 struct InfoOptions {
-  std::string model;
+  ModelArgument model;
   bool json = false;
 };
 
@@ -212,7 +213,7 @@ json describe(const InfoOptions& o, const io::ModelFile& file) {
   const model::Model& m = file.model;
   const system::MultibodySystem system(m);
   json j;
-  j["file"] = o.model;
+  j["file"] = o.model.file;
   j["name"] = file.name;
   j["description"] = file.description;
   j["gravity"] = vec_json(m.gravity());
@@ -375,7 +376,7 @@ void print_text(const json& j, const io::ModelFile& file) {
 }
 
 void run(const InfoOptions& o) {
-  const io::ModelFile file = frontend::load_model(o.model);
+  const io::ModelFile file = load_model(o.model);
   const json j = describe(o, file);
   if (o.json) {
     fmt::print("{}\n", j.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace));
@@ -392,8 +393,7 @@ void add_info_command(CLI::App& app) {
       "info",
       "Describe a model file: degrees of freedom, bodies and mass properties, joints and their "
       "coordinates, force elements, signals, outputs");
-  command->add_option("MODEL", options->model, "A model file (.yaml; docs/model-format.md)")
-      ->required();
+  add_model_argument(command, options->model);
   command->add_flag("--json", options->json, "Print JSON (SI units) instead of text");
   command->footer(
       "Examples:\n"

@@ -16,6 +16,7 @@
 #include <fmt/ranges.h>
 
 #include "commands.hpp"
+#include "model_argument.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
 #include "momenta/dynamics/momentum.hpp"
@@ -32,7 +33,7 @@ namespace {
 using json = nlohmann::ordered_json;
 
 struct KinematicsOptions {
-  std::string model;
+  ModelArgument model;
   std::string point;  // BODY or BODY:x,y,z
   std::string frame = "world";
   InstantOptions instant;
@@ -165,7 +166,7 @@ json result_json(const std::string& model_name, const Result& r) {
 }
 
 void run(const KinematicsOptions& o) {
-  const io::ModelFile file = frontend::load_model(o.model);
+  const io::ModelFile file = load_model(o.model);
   const model::Model& model = file.model;
   const auto [body, p_BoP_B] = parse_point(model, o.point);
   const int frame = body_named(model, o.frame, "--frame");
@@ -200,7 +201,7 @@ void add_kinematics_command(CLI::App& app) {
       "kinematics",
       "A point's motion seen from a body's frame: relative, transport, Coriolis, centripetal and "
       "Euler terms; its body's momentum and kinetic energy");
-  command->add_option("MODEL", options->model, "A model file (.yaml)")->required();
+  add_model_argument(command, options->model);
   command
       ->add_option("--point", options->point,
                    "BODY or BODY:x,y,z — a point fixed in a body (m, in the body's frame)")

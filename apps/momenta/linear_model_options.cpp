@@ -18,8 +18,7 @@ using json = nlohmann::ordered_json;
 }  // namespace
 
 void add_linear_model_options(CLI::App* command, LinearModelOptions& o, bool with_channels) {
-  command->add_option("MODEL", o.model, "A model file (.yaml; format in docs/model-format.md)")
-      ->required();
+  add_model_argument(command, o.model);
   command
       ->add_option("--about", o.about,
                    "Operating point: 'initial' (the file's initial state), 'equilibrium' (the "
@@ -48,7 +47,7 @@ void add_linear_model_options(CLI::App* command, LinearModelOptions& o, bool wit
 }
 
 LoadedLinearModel load_linear_model(const LinearModelOptions& o) {
-  return load_linear_model(o, frontend::load_model(o.model));
+  return load_linear_model(o, load_model(o.model));
 }
 
 LoadedLinearModel load_linear_model(const LinearModelOptions& o, io::ModelFile file) {

@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "model_argument.hpp"
 #include "momenta/analysis/equilibrium.hpp"
 #include "momenta/analysis/joint_steady_motion.hpp"
 #include "momenta/analysis/linearize.hpp"
@@ -23,7 +24,7 @@
 namespace momenta::cli {
 
 struct LinearModelOptions {
-  std::string model;
+  ModelArgument model;
   std::string about = "initial";  // initial | equilibrium | STATE.json
   std::vector<std::string> inputs;
   std::vector<std::string> outputs;

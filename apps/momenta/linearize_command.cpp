@@ -23,7 +23,7 @@ struct LinearizeOptions {
 };
 
 void run(const LinearizeOptions& o) {
-  io::ModelFile file = frontend::load_model(o.model.model);
+  io::ModelFile file = load_model(o.model.model);
   if (o.model.about == "steady" && analysis::euler_poisson_applies(file.model)) {
     return print_steady_motion(std::move(file), o.json, true);
   }

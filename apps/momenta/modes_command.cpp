@@ -31,7 +31,7 @@ struct ModesOptions {
 double hz(double omega) { return omega / (2 * std::numbers::pi); }
 
 void run(const ModesOptions& o) {
-  io::ModelFile file = frontend::load_model(o.model.model);
+  io::ModelFile file = load_model(o.model.model);
   if (o.model.about == "steady" && analysis::euler_poisson_applies(file.model)) {
     return print_steady_motion(std::move(file), o.json, false);
   }

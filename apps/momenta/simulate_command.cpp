@@ -22,6 +22,7 @@
 
 #include "commands.hpp"
 #include "interrupt.hpp"
+#include "model_argument.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
 #include "momenta/io/model_file.hpp"
@@ -38,7 +39,7 @@ namespace momenta::cli {
 namespace {
 
 struct SimulateOptions {
-  std::string model;
+  ModelArgument model;
   std::optional<double> duration;
   std::optional<double> dt;
   std::optional<double> rtol;
@@ -173,7 +174,7 @@ void check_outputs(const SimulateOptions& o) {
 }
 
 void run(const SimulateOptions& o) {
-  const io::ModelFile file = frontend::load_model(o.model);
+  const io::ModelFile file = load_model(o.model);
   simulate::SimulationOptions options = merge(o, file.simulation);
   check_outputs(o);
   // The report's linear analysis names (--inputs, --outputs) are checked now, not after the run.
@@ -224,7 +225,7 @@ void run(const SimulateOptions& o) {
   writer.reset();  // closes the file before the summary says it is written
   if (o.report) write_run_report(o, file, simulation, table, summary, "");
   if (!o.csv) {
-    fmt::print(stderr, "momenta: simulated {} ({}) for {} s; {} rows\n", file.name, o.model,
+    fmt::print(stderr, "momenta: simulated {} ({}) for {} s; {} rows\n", file.name, o.model.file,
                summary.t_end, summary.rows);
     fmt::print(stderr, "{}", simulate::format_summary(summary));
     return;
@@ -234,11 +235,13 @@ void run(const SimulateOptions& o) {
     fmt::print(
         "{} rows x {} columns in all; to keep every row, write them to a file:\n"
         "  momenta simulate {} -o run.csv\n",
-        preview.rows(), preview.columns(), o.model);
-    fmt::print(stderr, "momenta: simulated {} ({}) for {} s\n", file.name, o.model, summary.t_end);
+        preview.rows(), preview.columns(), o.model.file);
+    fmt::print(stderr, "momenta: simulated {} ({}) for {} s\n", file.name, o.model.file,
+               summary.t_end);
   } else {
     fmt::print(stderr, "momenta: simulated {} ({}) for {} s; {} rows, {} columns to {}\n",
-               file.name, o.model, summary.t_end, summary.rows, simulation.column_names().size(),
+               file.name, o.model.file, summary.t_end, summary.rows,
+               simulation.column_names().size(),
                o.output ? *o.output : std::string("standard output"));
   }
   fmt::print(stderr, "{}", simulate::format_summary(summary));
@@ -246,7 +249,7 @@ void run(const SimulateOptions& o) {
 
 // The options `simulate` and `report` share: the model, how it is integrated, the progress line.
 void add_run_options(CLI::App* command, SimulateOptions& o) {
-  command->add_option("MODEL", o.model, "A model file (.yaml; docs/model-format.md)")->required();
+  add_model_argument(command, o.model);
   command->add_option("--duration", o.duration, "Simulated time, s (default 10)")
       ->check(positive_finite());
   command

@@ -20,6 +20,7 @@
 
 #include "commands.hpp"
 #include "linear_model_options.hpp"
+#include "model_argument.hpp"
 #include "momenta/analysis/rolling_steady_motion.hpp"
 #include "momenta/analysis/steady_motion.hpp"
 #include "momenta/common/error.hpp"
@@ -34,7 +35,7 @@ namespace {
 using json = nlohmann::ordered_json;
 
 struct SteadyOptions {
-  std::string model;
+  ModelArgument model;
   std::optional<double> tilt_deg;
   std::optional<double> spin;  // rad/s
   // A rolling body: its lean and one condition.
@@ -235,7 +236,7 @@ void run(const SteadyOptions& o) {
     throw FileError(
         fmt::format("{}: the state file exists; pass --force to overwrite it", *o.state));
   }
-  const io::ModelFile file = frontend::load_model(o.model);
+  const io::ModelFile file = load_model(o.model);
   if (analysis::rolling_steady_applies(file.model)) return run_rolling(o, file);
   for (const auto& [given, name] :
        {std::pair{o.lean_deg.has_value(), "--lean"}, std::pair{o.speed.has_value(), "--speed"},
@@ -279,12 +280,10 @@ void add_steady_command(CLI::App& app) {
       "(both rates, where they exist, the critical spin, the gyroscopic approximation, the "
       "nutation frequencies), or a rolling disk's steady circle at a lean and a speed, radius, "
       "precession or spin (its rates, circle, contact force and stability)");
-  command
-      ->add_option("MODEL", options->model,
-                   "A model file: one body on a spherical joint, symmetric about the axis "
-                   "through its centre of mass (a top); or one body of revolution on a free or "
-                   "spherical joint with a rolling disk on a level floor")
-      ->required();
+  add_model_argument(command, options->model,
+                     "A model file: one body on a spherical joint, symmetric about the axis "
+                     "through its centre of mass (a top); or one body of revolution on a free or "
+                     "spherical joint with a rolling disk on a level floor");
   command
       ->add_option("--tilt", options->tilt_deg,
                    "A top: tilt of its axis from the upward vertical, °")

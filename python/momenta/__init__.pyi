@@ -640,8 +640,8 @@ def linearize(model: Model, *, inputs: List[str] = [], outputs: List[str] = [], 
     """Linearizes the model about (t, q, v) — its initial state unless given — as `momenta linearize` does: states [δq; v] over the free joints, inputs the named signals (all by default), outputs the named model outputs, states or coordinates (the model file's outputs, or every configuration state, by defa"""
     ...
 
-def load_model(path: os.PathLike[str] | str) -> Model:
-    """Reads a model file (docs/model-format.md), builds it and checks that it can be simulated, as `momenta simulate` does. Raises ParseError ('file:line:column: message', with .file, .line and .column) for anything wrong in it, FileError when it cannot be read."""
+def load_model(path: os.PathLike[str] | str, *, package_path: List[os.PathLike[str] | str] = [], link_density: Optional[float] = None) -> Model:
+    """Reads a model file — momenta's YAML (docs/model-format.md), URDF (.urdf) or MJCF (.xml, .mjcf; docs/model-formats.md) — builds it and checks that it can be simulated, as `momenta simulate` does. For a URDF: `package_path`, folders holding the packages its package://NAME/... meshes name (ROS_PACKAGE_"""
     ...
 
 def modes(system: object) -> Modes:

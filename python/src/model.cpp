@@ -173,13 +173,25 @@ joint order: q (nq, quaternions as w, x, y, z) and v (nv); names in q_names and 
 
   m.def(
       "load_model",
-      [](const std::filesystem::path& path) {
-        return ModelHandle{std::make_shared<const io::ModelFile>(frontend::load_model(path))};
+      [](const std::filesystem::path& path, const std::vector<std::filesystem::path>& package_path,
+         std::optional<double> link_density) {
+        io::ModelFileOptions options;
+        options.package_path = package_path;
+        options.link_density = link_density;
+        return ModelHandle{
+            std::make_shared<const io::ModelFile>(frontend::load_model(path, options))};
       },
-      py::arg("path"),
-      R"doc(Reads a model file (docs/model-format.md), builds it and checks that it can be
-simulated, as `momenta simulate` does. Raises ParseError ('file:line:column: message', with
-.file, .line and .column) for anything wrong in it, FileError when it cannot be read.)doc");
+      py::arg("path"), py::kw_only(),
+      py::arg("package_path") = std::vector<std::filesystem::path>{},
+      py::arg("link_density") = py::none(),
+      R"doc(Reads a model file — momenta's YAML (docs/model-format.md), URDF (.urdf) or MJCF
+(.xml, .mjcf; docs/model-formats.md) — builds it and checks that it can be simulated, as
+`momenta simulate` does. For a URDF: `package_path`, folders holding the packages its
+package://NAME/... meshes name (ROS_PACKAGE_PATH is searched after), and `link_density` (kg/m³),
+filling the collision (else visual) geometry of each link without <inertial> to give it mass.
+Raises ParseError ('file:line:column: message', with .file, .line and .column) for anything wrong
+in it, FileError when it cannot be read, InvalidArgument for a link_density that is not positive
+and finite.)doc");
 
   // What a format does not keep is said as a Python warning, one per load.
   const auto exported = [](const io::ExportedModel& written) {

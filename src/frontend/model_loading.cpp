@@ -28,8 +28,8 @@ void accept_model(const io::ModelFile& file) {
   }
 }
 
-io::ModelFile load_model(const std::filesystem::path& path) {
-  io::ModelFile file = io::read_model_file(path);
+io::ModelFile load_model(const std::filesystem::path& path, const io::ModelFileOptions& options) {
+  io::ModelFile file = io::read_model_file(path, options);
   accept_model(file);
   return file;
 }

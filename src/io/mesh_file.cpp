@@ -10,6 +10,7 @@
 #include <string>
 #include <system_error>
 
+#include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <fmt/format.h>
@@ -24,7 +25,7 @@ namespace {
 namespace fs = std::filesystem;
 using inertia::TriangleMesh;
 
-enum class Format { kBinaryStl, kAsciiStl, kObj };
+enum class Format { kBinaryStl, kAsciiStl, kObj, kCollada };
 
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(),
@@ -162,15 +163,20 @@ inertia::TriangleMesh read_mesh_file(const std::filesystem::path& path, double s
     format = classify_stl(path, size);
   } else if (extension == ".obj") {
     format = Format::kObj;
+  } else if (extension == ".dae") {
+    format = Format::kCollada;
   } else {
-    throw ParseError(name, 0, 0,
-                     fmt::format("unsupported mesh file extension '{}': expected .stl or .obj",
-                                 path.extension().string()));
+    throw ParseError(
+        name, 0, 0,
+        fmt::format("unsupported mesh file extension '{}': expected .stl, .obj or .dae",
+                    path.extension().string()));
   }
 
   // Text formats by their own grammars, in double precision; binary STL (single precision by the
-  // format itself) through assimp, with triangulation only: no vertex joining, normal generation,
-  // degenerate removal or any other step that would change the geometry behind our back.
+  // format itself) and COLLADA through assimp, with triangulation only: no vertex joining, normal
+  // generation, degenerate removal or any other step that would change the geometry behind our
+  // back. COLLADA's <unit meter> is applied; its <up_axis> is not (assimp would turn a Z_UP file
+  // to y up): robot descriptions place a mesh by the coordinates it is written in, as ROS does.
   TriangleMesh soup;
   std::size_t skipped = 0;
   if (format == Format::kObj || format == Format::kAsciiStl) {
@@ -180,10 +186,13 @@ inertia::TriangleMesh read_mesh_file(const std::filesystem::path& path, double s
     for (Vec3& p : soup.vertices) p *= scale;
   } else {
     Assimp::Importer importer;
+    importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
     const aiScene* scene = importer.ReadFile(name, aiProcess_Triangulate);
     if (scene == nullptr || scene->mRootNode == nullptr) {
-      throw ParseError(name, 0, 0,
-                       fmt::format("cannot read the STL file: {}", importer.GetErrorString()));
+      throw ParseError(
+          name, 0, 0,
+          fmt::format("cannot read the {} file: {}", format == Format::kCollada ? "COLLADA" : "STL",
+                      importer.GetErrorString()));
     }
     // Merge every mesh of the scene, in world coordinates (node transforms applied), scaled.
     std::size_t vertices = 0, faces = 0;

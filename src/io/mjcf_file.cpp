@@ -39,8 +39,8 @@ ItemLocation located_at(ModelItemRef::Kind kind, const std::string& name, int li
 }
 
 MjcfReader::MjcfReader(const tinyxml2::XMLDocument& document_, std::string_view text_,
-                       std::string file_)
-    : document(document_), text(text_), file(std::move(file_)) {
+                       std::string file_, const std::filesystem::path& base_dir)
+    : document(document_), text(text_), file(std::move(file_)), mesh_dir(base_dir) {
   classes_["main"] = DefaultClass{};
 }
 
@@ -171,6 +171,15 @@ void MjcfReader::read_compiler(const XMLElement* xml) {
     euler_sequence = s;
   }
   inertia_from_geom = keyword(e, "inertiafromgeom", {"false", "true", "auto"}, "auto");
+  // Mesh files: relative to meshdir, else assetdir, each relative to the model's folder.
+  for (const char* folder : {"meshdir", "assetdir"}) {
+    if (const char* given = xml->Attribute(folder)) {
+      mesh_dir = mesh_dir / given;
+      break;
+    }
+  }
+  strip_path = flag(e, "strippath", false);
+  exact_mesh_inertia = flag(e, "exactmeshinertia", false);
   if (keyword(e, "coordinate", {"local", "global"}, "local") == "global") {
     fail(xml,
          "<compiler coordinate=\"global\">: momenta reads local coordinates only (MuJoCo "
@@ -550,6 +559,10 @@ ModelFile MjcfReader::read() {
     if (kind == "option") read_option(c);
     if (kind == "default") read_defaults(c, "");
   }
+  for (const XMLElement* c = root->FirstChildElement("asset"); c != nullptr;
+       c = c->NextSiblingElement("asset")) {
+    read_assets(c);
+  }
   bool any_body = false;
   for (const XMLElement* world = root->FirstChildElement("worldbody"); world != nullptr;
        world = world->NextSiblingElement("worldbody")) {
@@ -570,7 +583,8 @@ ModelFile MjcfReader::read() {
       read_equality(c);
     } else if (kind == "actuator") {
       read_actuators(c);
-    } else if (kind != "compiler" && kind != "option" && kind != "default" && kind != "worldbody") {
+    } else if (kind != "compiler" && kind != "option" && kind != "default" && kind != "worldbody" &&
+               kind != "asset") {
       int count = 0;
       for (const XMLElement* e = c->FirstChildElement(); e != nullptr; e = e->NextSiblingElement())
         ++count;
@@ -612,14 +626,16 @@ bool is_mjcf_path(const std::filesystem::path& path) {
 }
 
 ModelFile read_mjcf_file(const std::filesystem::path& path) {
-  return parse_mjcf(detail::read_xml_text(path.string(), "MJCF file"), path.string());
+  return parse_mjcf(detail::read_xml_text(path.string(), "MJCF file"), path.string(),
+                    path.parent_path());
 }
 
-ModelFile parse_mjcf(const std::string& text, const std::string& file_name) {
+ModelFile parse_mjcf(const std::string& text, const std::string& file_name,
+                     const std::filesystem::path& base_dir) {
   tinyxml2::XMLDocument document;
   document.Parse(text.c_str(), text.size());
   detail::check_xml_document(document, file_name, "an MJCF file holds a <mujoco>");
-  return detail::MjcfReader(document, text, file_name).read();
+  return detail::MjcfReader(document, text, file_name, base_dir).read();
 }
 
 }  // namespace momenta::io

@@ -10,7 +10,10 @@
 #include "mjcf_reader.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/one_line.hpp"
+#include "momenta/common/suggest.hpp"
+#include "momenta/inertia/mesh_mass_properties.hpp"
 #include "momenta/inertia/primitives.hpp"
+#include "momenta/io/mesh_file.hpp"
 #include "momenta/math/rotation.hpp"
 #include "xml_support.hpp"
 
@@ -82,6 +85,136 @@ Transform MjcfReader::pose(const MjcfElement& e) const {
   return {R, p};
 }
 
+void MjcfReader::read_assets(const XMLElement* section) {
+  for (const XMLElement* m = section->FirstChildElement(); m != nullptr;
+       m = m->NextSiblingElement()) {
+    if (std::string_view(m->Name()) != "mesh") {
+      note(m, fmt::format("<{}> in <asset>: not used by momenta", m->Name()));
+      continue;
+    }
+    check_attributes(m, {"name", "class", "content_type", "file", "vertex", "normal", "texcoord",
+                         "face", "refpos", "refquat", "scale", "smoothnormal"});
+    const MjcfElement e{m, "mesh", class_of(m, "main")};
+    if (m->Attribute("vertex") != nullptr) {
+      fail(m, "<mesh vertex=...>: momenta reads meshes from files (STL, OBJ)", "vertex");
+    }
+    const char* file_name = m->Attribute("file");
+    if (file_name == nullptr || *file_name == '\0') fail(m, "<mesh> needs the attribute 'file'");
+    for (const char* reference : {"refpos", "refquat"}) {
+      if (m->Attribute(reference) != nullptr) {
+        fail(m,
+             fmt::format("<mesh {}>: momenta reads a mesh in the coordinates of its file",
+                         reference),
+             reference);
+      }
+    }
+    std::filesystem::path path = file_name;
+    if (strip_path) path = path.filename();
+    if (!path.is_absolute()) path = mesh_dir / path;
+    const char* given = m->Attribute("name");
+    // MuJoCo names a mesh without a name after its file, without folder and extension.
+    const std::string name =
+        given != nullptr ? std::string(given) : std::filesystem::path(file_name).stem().string();
+    if (meshes_.count(name) != 0) {
+      fail(m,
+           fmt::format("a second mesh named '{}' (the first is at line {})", name,
+                       meshes_.at(name).element->GetLineNum()),
+           "name");
+    }
+    meshes_.emplace(name, MeshAsset{m, path, vector3(e, "scale", Vec3::Ones()), nullptr});
+  }
+}
+
+std::shared_ptr<const inertia::TriangleMesh> MjcfReader::mesh_asset(const XMLElement* at,
+                                                                    const std::string& name) {
+  const auto found = meshes_.find(name);
+  if (found == meshes_.end()) {
+    std::vector<std::string_view> names;
+    for (const auto& [known, asset] : meshes_) names.push_back(known);
+    fail(at, fmt::format("unknown mesh '{}'{}", name, did_you_mean(name, names)), "mesh");
+  }
+  MeshAsset& asset = found->second;
+  if (asset.read) return asset.read;
+  if (!(asset.scale.cwiseAbs().minCoeff() > 0.0)) {
+    fail(asset.element, fmt::format("the scale of mesh '{}' has a zero factor", name), "scale");
+  }
+  inertia::TriangleMesh mesh;
+  try {
+    mesh = read_mesh_file(asset.path);
+  } catch (const Error& error) {
+    fail(asset.element, fmt::format("mesh '{}': {}", name, one_line(error.what())), "file");
+  }
+  // Scaled per axis; a mirroring scale has its triangles' winding turned back.
+  for (Vec3& v : mesh.vertices) v = v.cwiseProduct(asset.scale);
+  if (asset.scale.prod() < 0.0) {
+    for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
+  }
+  asset.read = std::make_shared<const inertia::TriangleMesh>(std::move(mesh));
+  return asset.read;
+}
+
+std::pair<inertia::Amount, double> MjcfReader::geom_amount(const MjcfElement& e,
+                                                           const std::string& label) const {
+  // Its mass, or its density (MuJoCo's default 1000 kg/m³, water).
+  const MjcfAttribute mass_given = attribute(e, "mass");
+  const double amount = mass_given ? number(e, "mass", std::nullopt) : number(e, "density", 1000.0);
+  if (amount < 0.0) {
+    fail(e.xml, fmt::format("{} has a negative {}", label, mass_given ? "mass" : "density"),
+         mass_given ? "mass" : "density");
+  }
+  return {mass_given ? inertia::Amount::mass(amount) : inertia::Amount::density(amount), amount};
+}
+
+// A mesh geom: the mesh asset it names, in its own coordinates (scaled), placed by the geom's
+// pos and orientation — as MuJoCo composes the mesh's own offset into the geom frame, so the
+// mesh lies where its file draws it — and, where the geoms give the body's mass, the solid it
+// bounds (closed, exact: MuJoCo's exactmeshinertia; its legacy default agrees for convex meshes).
+PartSummary MjcfReader::mesh_geom(const MjcfElement& e, const std::string& label,
+                                  const std::string& body, std::size_t index, bool weighed) {
+  const XMLElement* g = e.xml;
+  if (attribute(e, "fromto")) {
+    fail(g,
+         fmt::format("{} is a mesh: fromto gives the axis of a capsule, cylinder, box or "
+                     "ellipsoid (as MuJoCo requires)",
+                     label),
+         "fromto");
+  }
+  const MjcfAttribute named = attribute(e, "mesh");
+  if (!named) fail(g, fmt::format("{} is a mesh and names none (mesh=\"...\")", label));
+  PartSummary part;
+  part.kind = "mesh";
+  part.mesh = mesh_asset(named.where, named.text);
+  const Transform X_BG = pose(e);
+  inertia::MassProperties in_G;
+  const auto [material, amount] = geom_amount(e, label);
+  if (weighed && amount > 0.0) {
+    if (!exact_mesh_inertia && !mesh_inertia_noted_) {
+      note(g,
+           "mesh geoms are weighed as the solids they bound; MuJoCo 2.2 does so with "
+           "<compiler exactmeshinertia=\"true\"> (its default can weigh a mesh otherwise)");
+      mesh_inertia_noted_ = true;
+    }
+    inertia::TriangleMesh solid = *part.mesh;
+    try {
+      inertia::prepare_solid_mesh(solid, named.text);
+      in_G = inertia::solid_mesh_mass_properties(solid, material);
+    } catch (const Error& error) {
+      fail(g,
+           fmt::format("{}: mesh '{}' cannot give body '{}' its mass: {}; give the body an "
+                       "<inertial>",
+                       label, named.text, body, one_line(error.what())),
+           "mesh");
+    }
+  }
+  const char* given = g->Attribute("name");
+  part.name = given != nullptr ? given : fmt::format("{}.geom{}", body, index);
+  part.line = g->GetLineNum();
+  part.mass_properties = in_G.transformed(X_BG.R, X_BG.p);
+  part.R_BS = X_BG.R;
+  part.p_BoSo_B = X_BG.p;
+  return part;
+}
+
 inertia::MassProperties MjcfReader::body_mass_properties(const XMLElement* body,
                                                          const std::string& name,
                                                          const std::string& class_name,
@@ -118,7 +251,12 @@ inertia::MassProperties MjcfReader::body_mass_properties(const XMLElement* body,
         e, "type",
         {"sphere", "capsule", "cylinder", "ellipsoid", "box", "mesh", "plane", "hfield", "sdf"},
         "sphere");
-    if (type == "mesh" || type == "hfield" || type == "plane" || type == "sdf") {
+    if (type == "mesh") {
+      parts.push_back(mesh_geom(e, label, name, parts.size(), from_geoms));
+      if (from_geoms) from_geom_sum += parts.back().mass_properties;
+      continue;
+    }
+    if (type == "hfield" || type == "plane" || type == "sdf") {
       if (from_geoms) {
         fail(g, fmt::format("{} is a {}: momenta cannot find its mass; give body '{}' an "
                             "<inertial>",
@@ -167,16 +305,7 @@ inertia::MassProperties MjcfReader::body_mass_properties(const XMLElement* body,
     }
     if (along_fromto && (type == "box" || type == "ellipsoid")) size.resize(2);
     if (along_fromto) size.push_back(length / 2.0);  // the half-length along the axis
-    // The amount: its mass, or its density (MuJoCo's default 1000 kg/m³, water).
-    const MjcfAttribute mass_given = attribute(e, "mass");
-    const double amount =
-        mass_given ? number(e, "mass", std::nullopt) : number(e, "density", 1000.0);
-    if (amount < 0.0) {
-      fail(g, fmt::format("{} has a negative {}", label, mass_given ? "mass" : "density"),
-           mass_given ? "mass" : "density");
-    }
-    const inertia::Amount material =
-        mass_given ? inertia::Amount::mass(amount) : inertia::Amount::density(amount);
+    const auto [material, amount] = geom_amount(e, label);
     inertia::MassProperties in_G;
     try {
       // A massless geom (mass or density 0) keeps its shape to draw and adds nothing.

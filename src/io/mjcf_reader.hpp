@@ -3,7 +3,9 @@
 // default classes and the body tree (mjcf_file.cpp), the frames and geoms' mass properties
 // (mjcf_geometry.cpp), the equality constraints and actuators (mjcf_loads.cpp).
 
+#include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -49,7 +51,8 @@ struct MjcfJoint {
 
 class MjcfReader {
  public:
-  MjcfReader(const tinyxml2::XMLDocument& document, std::string_view text, std::string file);
+  MjcfReader(const tinyxml2::XMLDocument& document, std::string_view text, std::string file,
+             const std::filesystem::path& base_dir);
   ModelFile read();
 
   // --- messages (mjcf_file.cpp) ----------------------------------------------------------------
@@ -82,6 +85,8 @@ class MjcfReader {
   inertia::MassProperties body_mass_properties(const XMLElement* body, const std::string& name,
                                                const std::string& class_name,
                                                std::vector<PartSummary>& parts);
+  /// The <mesh> entries of an <asset> section (the others noted as not used).
+  void read_assets(const XMLElement* section);
 
   // --- equality constraints and actuators (mjcf_loads.cpp) ------------------------------------
   void read_equality(const XMLElement* section);
@@ -107,6 +112,15 @@ class MjcfReader {
   /// `inherited`; fails at an unknown one with a did-you-mean.
   std::string class_of(const XMLElement* xml, const std::string& inherited,
                        const char* attribute = "class") const;
+  /// A geom's mass or density (default 1000 kg/m³) as an amount, and its value.
+  std::pair<inertia::Amount, double> geom_amount(const MjcfElement& e,
+                                                 const std::string& label) const;
+  /// A mesh geom as a part in the body frame, weighed when `weighed`.
+  PartSummary mesh_geom(const MjcfElement& e, const std::string& label, const std::string& body,
+                        std::size_t index, bool weighed);
+  /// The mesh asset `name`, read (once) and scaled; fails at `at` for an unknown name.
+  std::shared_ptr<const inertia::TriangleMesh> mesh_asset(const XMLElement* at,
+                                                          const std::string& name);
 
  public:
   // What the reading found, for the loads (mjcf_loads.cpp) and the geometry.
@@ -117,6 +131,9 @@ class MjcfReader {
       3.14159265358979323846 / 180.0;  // <compiler angle="degree">, MuJoCo's default
   std::string euler_sequence = "xyz";
   std::string inertia_from_geom = "auto";
+  std::filesystem::path mesh_dir;   // the file's folder, then <compiler meshdir> or assetdir
+  bool strip_path = false;          // <compiler strippath>
+  bool exact_mesh_inertia = false;  // <compiler exactmeshinertia>
   model::ModelBuilder builder;
   std::vector<ItemLocation> items;
   std::map<std::string, MjcfBody, std::less<>> bodies;   // by the file's body name
@@ -126,7 +143,15 @@ class MjcfReader {
   int body_count = 0, joint_count = 0;  // bodies and joints read so far: MuJoCo's numbers
 
  private:
+  struct MeshAsset {
+    const XMLElement* element;
+    std::filesystem::path path;
+    Vec3 scale;
+    std::shared_ptr<const inertia::TriangleMesh> read;  // once a geom uses it
+  };
   std::map<std::string, DefaultClass, std::less<>> classes_;
+  std::map<std::string, MeshAsset, std::less<>> meshes_;
+  bool mesh_inertia_noted_ = false;
   std::vector<std::pair<int, std::string>> notes_;  // line, text
 };
 

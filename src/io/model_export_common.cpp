@@ -48,4 +48,20 @@ std::vector<std::string> loads_not_written(const model::Model& model, std::strin
   return lost;
 }
 
+std::vector<std::string> meshes_not_written(const ModelFile& file) {
+  std::vector<std::string> lost;
+  for (std::size_t b = 0; b < file.body_parts.size(); ++b) {
+    std::vector<std::string> meshes;
+    for (const PartSummary& part : file.body_parts[b]) {
+      if (part.kind == "mesh" && !part.hole) meshes.push_back(part.name);
+    }
+    if (meshes.empty()) continue;
+    lost.push_back(fmt::format(
+        "the mesh{} '{}' of body '{}', not drawn (the body's inertial "
+        "keeps its mass)",
+        meshes.size() == 1 ? "" : "es", fmt::join(meshes, "', '"), file.model.bodies()[b].name));
+  }
+  return lost;
+}
+
 }  // namespace momenta::io::detail

@@ -64,7 +64,8 @@ class MjcfWriter {
     std::string out;
     out += fmt::format("<!-- Written by momenta export from {} (docs/model-formats.md). -->\n",
                        file_.file);
-    const std::vector<std::string> lost = detail::loads_not_written(model_, "MJCF");
+    std::vector<std::string> lost = detail::loads_not_written(model_, "MJCF");
+    for (std::string& mesh : detail::meshes_not_written(file_)) lost.push_back(std::move(mesh));
     for (const std::string& l : lost) out += fmt::format("<!-- Not written: {}. -->\n", l);
     out += fmt::format("<mujoco model=\"{}\">\n", file_.name);
     out += "  <compiler angle=\"radian\" autolimits=\"true\"/>\n";

@@ -304,8 +304,8 @@ ModelFile detail::compose_model_file(const YamlNode& root, const std::filesystem
                    {}};
 }
 
-ModelFile read_model_file(const std::filesystem::path& path) {
-  if (is_urdf_path(path)) return read_urdf_file(path);
+ModelFile read_model_file(const std::filesystem::path& path, const ModelFileOptions& options) {
+  if (is_urdf_path(path)) return read_urdf_file(path, options);
   if (is_mjcf_path(path)) return read_mjcf_file(path);
   return detail::compose_model_file(YamlNode::load_file(path), path.parent_path());
 }

@@ -20,64 +20,38 @@
 #include "momenta/common/suggest.hpp"
 #include "momenta/math/rotation.hpp"
 #include "momenta/model/model_builder.hpp"
+#include "urdf_reader.hpp"
 #include "xml_support.hpp"
 
-namespace momenta::io {
+namespace momenta::io::detail {
 namespace {
-
-using tinyxml2::XMLElement;
 
 constexpr std::array<std::string_view, 6> kJointTypes = {"revolute", "continuous", "prismatic",
                                                          "fixed",    "floating",   "planar"};
 
-// Reads one URDF document: every failure a ParseError at its element's line.
-class UrdfReader {
- public:
-  UrdfReader(const tinyxml2::XMLDocument& document, std::string file)
-      : document_(document), file_(std::move(file)) {}
+}  // namespace
 
-  ModelFile read();
-
- private:
-  struct Link {
-    const XMLElement* element;
-    inertia::MassProperties mass_properties;
-  };
-  struct JointEntry {
-    const XMLElement* element;
-    model::Joint joint;
-    std::string mimic;  // the mimicked joint's name, or empty
-    double multiplier = 1.0, offset = 0.0;
-    const XMLElement* mimic_element = nullptr;
-  };
-
-  [[noreturn]] void fail(const XMLElement* at, const std::string& message) const {
-    throw ParseError(file_, at != nullptr ? at->GetLineNum() : 0, 0, message);
+UrdfReader::UrdfReader(const tinyxml2::XMLDocument& document, std::string file,
+                       const ModelFileOptions& options, std::filesystem::path base_dir)
+    : document_(document),
+      file_(std::move(file)),
+      options_(options),
+      base_dir_(std::move(base_dir)),
+      package_path_(package_search_path(options.package_path)) {
+  if (options.link_density &&
+      !(std::isfinite(*options.link_density) && *options.link_density > 0)) {
+    throw InvalidArgument(fmt::format("{}: the link density {} kg/m³ is not positive and finite",
+                                      file_, *options.link_density));
   }
-  void note(const XMLElement* at, const std::string& message) {
-    notes_.emplace_back(at->GetLineNum(),
-                        fmt::format("{}:{}: {}", file_, at->GetLineNum(), message));
-  }
+}
 
-  std::string name_of(const XMLElement* e, const char* what) const;
-  double number(const XMLElement* e, const char* attribute, std::optional<double> fallback) const;
-  Vec3 vector3(const XMLElement* e, const char* attribute, const Vec3& fallback) const;
-  Transform origin(const XMLElement* parent) const;
-  std::string link_reference(const XMLElement* joint, const char* which) const;
+void UrdfReader::fail(const XMLElement* at, const std::string& message) const {
+  throw ParseError(file_, at != nullptr ? at->GetLineNum() : 0, 0, message);
+}
 
-  void read_link(const XMLElement* e);
-  void read_joint(const XMLElement* e);
-  void note_ignored_children(const XMLElement* e, const std::string& owner,
-                             std::initializer_list<std::string_view> used);
-
-  const tinyxml2::XMLDocument& document_;
-  std::string file_;
-  std::map<std::string, Link> links_;
-  std::vector<std::string> link_order_;
-  std::map<std::string, JointEntry> joints_;
-  std::vector<std::string> joint_order_;
-  std::vector<std::pair<int, std::string>> notes_;  // line, text
-};
+void UrdfReader::note(const XMLElement* at, const std::string& message) {
+  notes_.emplace_back(at->GetLineNum(), fmt::format("{}:{}: {}", file_, at->GetLineNum(), message));
+}
 
 std::string UrdfReader::name_of(const XMLElement* e, const char* what) const {
   const char* name = e->Attribute("name");
@@ -104,7 +78,7 @@ double UrdfReader::number(const XMLElement* e, const char* attribute,
 Vec3 UrdfReader::vector3(const XMLElement* e, const char* attribute, const Vec3& fallback) const {
   const char* text = e->Attribute(attribute);
   if (text == nullptr) return fallback;
-  const std::optional<std::vector<double>> v = detail::parse_number_list(text);
+  const std::optional<std::vector<double>> v = parse_number_list(text);
   if (!v || v->size() != 3) {
     fail(e,
          fmt::format("<{} {}=\"{}\">: expected three finite numbers", e->Name(), attribute, text));
@@ -138,9 +112,10 @@ void UrdfReader::read_link(const XMLElement* e) {
     fail(e, fmt::format("a second link named '{}' (the first is at line {})", name,
                         links_.at(name).element->GetLineNum()));
   }
-  Link link{e, inertia::MassProperties()};
+  Link link{e, inertia::MassProperties(), false, {}};
   const std::string owner = fmt::format("link '{}'", name);
   if (const XMLElement* inertial = e->FirstChildElement("inertial")) {
+    link.has_inertial = true;
     const XMLElement* mass = inertial->FirstChildElement("mass");
     if (mass == nullptr) fail(inertial, fmt::format("the <inertial> of {} needs a <mass>", owner));
     const double m = number(mass, "value", std::nullopt);
@@ -163,8 +138,9 @@ void UrdfReader::read_link(const XMLElement* e) {
     }
     note_ignored_children(inertial, owner + "'s <inertial>", {"origin", "mass", "inertia"});
   }
-  note_ignored_children(e, owner, {"inertial"});
-  links_.emplace(name, link);
+  read_geometry(e, link, owner);
+  note_ignored_children(e, owner, {"inertial", "visual", "collision"});
+  links_.emplace(name, std::move(link));
   link_order_.push_back(name);
 }
 
@@ -264,6 +240,8 @@ void UrdfReader::read_joint(const XMLElement* e) {
   joint_order_.push_back(name);
 }
 
+namespace {
+
 // Where an item is declared (field by field: GCC 12 misreports a braced one's strings).
 ItemLocation located(ModelItemRef::Kind kind, const std::string& name, const XMLElement* at) {
   ItemLocation location;
@@ -272,6 +250,8 @@ ItemLocation located(ModelItemRef::Kind kind, const std::string& name, const XML
   location.line = at->GetLineNum();
   return location;
 }
+
+}  // namespace
 
 ModelFile UrdfReader::read() {
   const XMLElement* robot = document_.RootElement();
@@ -385,9 +365,13 @@ ModelFile UrdfReader::read() {
     builder.add_constraint(coupler);
     items.push_back(located(ModelItemRef::Kind::constraint, coupler.name, entry.mimic_element));
   }
-  model::Model model = detail::build_at_lines(builder, items, file_);
+  model::Model model = build(builder, items);
   const char* robot_name = robot->Attribute("name");
   std::vector<std::vector<PartSummary>> body_parts(model.bodies().size());
+  for (std::size_t b = 0; b < model.bodies().size(); ++b) {
+    const auto link = links_.find(model.bodies()[b].name);
+    if (link != links_.end()) body_parts[b] = link->second.drawn;
+  }
   // The notes in the file's order.
   std::sort(notes_.begin(), notes_.end());
   std::vector<std::string> notes;
@@ -405,12 +389,47 @@ ModelFile UrdfReader::read() {
       std::move(notes)};
 }
 
-ModelFile parse_document(const tinyxml2::XMLDocument& document, const std::string& file_name) {
-  detail::check_xml_document(document, file_name, "a URDF file holds a <robot>");
-  return UrdfReader(document, file_name).read();
+// builder.build(), a joint that would carry only massless links said with the links that have
+// no <inertial> and how to weigh them.
+model::Model UrdfReader::build(const model::ModelBuilder& builder,
+                               const std::vector<ItemLocation>& items) {
+  const auto hint = [&](const InvalidArgument& error) -> std::string {
+    if (!error.item() || error.item()->kind != ModelItemRef::Kind::joint) return {};
+    const auto joint = joints_.find(error.item()->name);
+    if (joint == joints_.end()) return {};
+    std::vector<std::string> unweighed, stack = {joint->second.joint.child};
+    while (!stack.empty()) {
+      const std::string link = stack.back();
+      stack.pop_back();
+      if (!links_.at(link).has_inertial && links_.at(link).mass_properties.mass() == 0.0) {
+        unweighed.push_back(link);
+      }
+      for (const auto& [name, entry] : joints_) {
+        if (entry.joint.parent == link) stack.push_back(entry.joint.child);
+      }
+    }
+    if (unweighed.empty()) return {};
+    return fmt::format(
+        " (link '{}' has no <inertial>: give it one{})", fmt::join(unweighed, "', '"),
+        options_.link_density ? std::string()
+                              : ", or a link density (--link-density, Python link_density=) "
+                                "to take its mass from its collision or visual geometry");
+  };
+  return build_at_lines(builder, items, file_, hint);
+}
+
+namespace {
+
+ModelFile parse_document(const tinyxml2::XMLDocument& document, const std::string& file_name,
+                         const ModelFileOptions& options, const std::filesystem::path& base_dir) {
+  check_xml_document(document, file_name, "a URDF file holds a <robot>");
+  return UrdfReader(document, file_name, options, base_dir).read();
 }
 
 }  // namespace
+}  // namespace momenta::io::detail
+
+namespace momenta::io {
 
 bool is_urdf_path(const std::filesystem::path& path) {
   std::string extension = path.extension().string();
@@ -419,14 +438,16 @@ bool is_urdf_path(const std::filesystem::path& path) {
   return extension == ".urdf";
 }
 
-ModelFile read_urdf_file(const std::filesystem::path& path) {
-  return parse_urdf(detail::read_xml_text(path.string(), "URDF file"), path.string());
+ModelFile read_urdf_file(const std::filesystem::path& path, const ModelFileOptions& options) {
+  return parse_urdf(detail::read_xml_text(path.string(), "URDF file"), path.string(), options,
+                    path.parent_path());
 }
 
-ModelFile parse_urdf(const std::string& text, const std::string& file_name) {
+ModelFile parse_urdf(const std::string& text, const std::string& file_name,
+                     const ModelFileOptions& options, const std::filesystem::path& base_dir) {
   tinyxml2::XMLDocument document;
   document.Parse(text.c_str(), text.size());
-  return parse_document(document, file_name);
+  return detail::parse_document(document, file_name, options, base_dir);
 }
 
 }  // namespace momenta::io

@@ -71,7 +71,8 @@ int xml_column(std::string_view text, const tinyxml2::XMLElement* element, const
 }
 
 model::Model build_at_lines(const model::ModelBuilder& builder,
-                            const std::vector<ItemLocation>& items, const std::string& file_name) {
+                            const std::vector<ItemLocation>& items, const std::string& file_name,
+                            const std::function<std::string(const InvalidArgument&)>& hint) {
   try {
     return builder.build();
   } catch (const InvalidArgument& error) {
@@ -84,7 +85,8 @@ model::Model build_at_lines(const model::ModelBuilder& builder,
         }
       }
     }
-    throw ParseError(file_name, line, column, one_line(error.what()));
+    throw ParseError(file_name, line, column,
+                     one_line(error.what()) + (hint ? hint(error) : std::string()));
   }
 }
 

@@ -2,6 +2,7 @@
 // What the two XML model readers (URDF, MJCF) share: tinyxml2's errors said in words at their
 // line, whitespace-separated number lists, and where on its line an element or attribute stands.
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -30,9 +31,12 @@ int xml_column(std::string_view text, const tinyxml2::XMLElement* element,
                const char* attribute = nullptr);
 
 /// builder.build(), a problem it finds said as ParseError at the line and column of the item it
-/// names (`items`), or at line 0 when it names none.
-model::Model build_at_lines(const model::ModelBuilder& builder,
-                            const std::vector<ItemLocation>& items, const std::string& file_name);
+/// names (`items`), or at line 0 when it names none; `hint`, where given, adds what the format's
+/// reader knows about the problem to its message.
+model::Model build_at_lines(
+    const model::ModelBuilder& builder, const std::vector<ItemLocation>& items,
+    const std::string& file_name,
+    const std::function<std::string(const InvalidArgument&)>& hint = nullptr);
 
 /// The whole file as text; throws FileError `path: cannot open the <what>`.
 std::string read_xml_text(const std::string& path, std::string_view what);

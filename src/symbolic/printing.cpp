@@ -17,6 +17,8 @@ namespace momenta::symbolic {
 namespace {
 
 using detail::print;
+using GiNaC::ex;
+using GiNaC::symbol;
 
 // An expression of the equations printed with its symbols' roles (terms and factors in order),
 // the acceleration of velocity coordinate `leading` first where it appears.
@@ -25,9 +27,6 @@ std::string print_in(const Equations::Impl& impl, const ex& e, Format format, in
   roles.leading_acceleration = leading;
   return print(e, format, &roles);
 }
-
-using GiNaC::ex;
-using GiNaC::symbol;
 
 // Splits Q into the terms with an input (the right-hand side, as a textbook writes u) and the
 // rest (moved to the left).

@@ -358,18 +358,37 @@ test('20 bodies: every link drawn and moving while the page plays', async () => 
   await r.page.close();
 });
 
-// An MJCF model (tests/data/models/mjcf/arm7.xml): its bodies drawn from their geoms — capsules,
-// cylinders, a box and an ellipsoid — and the arm framed as the bundled examples are.
-test('MJCF arm: every link drawn from its geoms and framed', async () => {
-  const model = path.join(sourceDir, 'tests', 'data', 'models', 'mjcf', 'arm7.xml');
-  const r = await checkSimulationPage('arm7_mjcf', model, ['--duration', '2']);
-  for (const link of ['base', 'link1', 'link4', 'link7']) assert.ok(r.hook.bodies.includes(link), link);
-  // A file without a description: no stray word where the description would be.
+// A robot file's page: its links among the bodies, no stray word where a description it does not
+// have would be, and the arm spanning 30–90 % of the canvas, as the bundled examples are framed.
+async function expectLinksDrawnAndFramed(r, links) {
+  for (const link of links) assert.ok(r.hook.bodies.includes(link), link);
   const text = await r.page.evaluate(() => document.body.innerText);
   assert.ok(!/\b(null|undefined|NaN)\b/.test(text), text.slice(0, 300));
   const seen = await r.page.evaluate(() => window.momentaReport.framing());
   const larger = Math.max(seen.width, seen.height);
   assert.ok(larger >= 0.3 && larger <= 0.9, `the arm spans ${larger.toFixed(2)} of the canvas`);
+}
+
+// An MJCF model (tests/data/models/mjcf/arm7.xml): its bodies drawn from their geoms — capsules,
+// cylinders, a box and an ellipsoid — and the arm framed as the bundled examples are.
+test('MJCF arm: every link drawn from its geoms and framed', async () => {
+  const model = path.join(sourceDir, 'tests', 'data', 'models', 'mjcf', 'arm7.xml');
+  const r = await checkSimulationPage('arm7_mjcf', model, ['--duration', '2']);
+  await expectLinksDrawnAndFramed(r, ['base', 'link1', 'link4', 'link7']);
+  await r.page.close();
+});
+
+// A URDF whose links are meshes (tests/data/models/urdf/packages/mesh_arm): STL and COLLADA
+// found on the package path, weighed at 2700 kg/m³, each link drawn from its visual mesh (the
+// hexagonal upper arm, the scaled-cube forearm, the hand in millimetres) and the arm framed.
+test('URDF mesh arm: links drawn from their meshes and framed', async () => {
+  const model = path.join(sourceDir, 'tests', 'data', 'models', 'urdf', 'packages', 'mesh_arm', 'urdf', 'mesh_arm.urdf');
+  const packages = path.join(sourceDir, 'tests', 'data', 'models', 'urdf', 'packages');
+  const r = await checkSimulationPage('mesh_arm_urdf', model, ['--duration', '2', '--package-path', packages, '--link-density', '2700']);
+  await expectLinksDrawnAndFramed(r, ['base', 'upper_arm', 'forearm', 'hand', 'payload']);
+  const parts = await r.page.evaluate(() => JSON.parse(document.getElementById('momenta-data').textContent)
+    .scene.bodies.map((b) => (b.parts || []).map((p) => p.kind).join(',')));
+  assert.equal(parts.filter((k) => k === 'mesh').length, 4, parts.join(' | '));
   await r.page.close();
 });
 

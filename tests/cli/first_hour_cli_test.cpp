@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
+#include "momenta_test/tolerance.hpp"
 
 namespace momenta {
 namespace {
@@ -326,6 +327,36 @@ TEST_F(FirstHourCli, MjcfFilesAreModelFiles) {
   EXPECT_EQ(r.code, 1);
   EXPECT_TRUE(has(r.err, "bad.xml:3:27: <joint>: unknown attribute 'axs' (did you mean 'axis'?)"))
       << r.err;
+}
+
+// A URDF whose links are meshes on package:// paths: found with --package-path, weighed with
+// --link-density (the total: the four solids' closed forms at 2700 kg/m³ plus the 0.5 kg payload,
+// to the COLLADA hand's single precision); without the path, an error at the line that names the
+// package, saying what to give.
+TEST_F(FirstHourCli, UrdfMeshesOnAPackagePath) {
+  const std::string arm =
+      quoted(source_dir() + "/tests/data/models/urdf/packages/mesh_arm/urdf/mesh_arm.urdf");
+  const std::string packages = quoted(source_dir() + "/tests/data/models/urdf/packages");
+  CliRun r = momenta("info " + arm + " --package-path " + packages + " --link-density 2700 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const double solids = 0.25 * 0.25 * 0.125 + 1.5 * std::sqrt(3.0) * 0.04 * 0.04 * 0.375 +
+                        0.3125 * 0.0625 * 0.0625 + 0.05 * 0.08 * 0.03;  // m³
+  EXPECT_NEAR(nlohmann::json::parse(r.out).at("total_mass").get<double>(), 2700 * solids + 0.5,
+              1e-6)
+      << r.out;
+  r = momenta("simulate " + arm + " --package-path " + packages +
+              " --link-density 2700 --duration 0.1 -o " + at("arm.csv"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = momenta("info " + arm);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err,
+                  "mesh_arm.urdf:11: 'package://mesh_arm/meshes/base.stl' names package "
+                  "'mesh_arm', and no package path is given: give the folder that holds "
+                  "it with --package-path"))
+      << r.err;
+  r = momenta("info " + arm + " --package-path " + packages + " --link-density -3");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_TRUE(has(r.err, "--link-density")) << r.err;
 }
 
 TEST_F(FirstHourCli, ExportWritesMjcfAndUrdf) {

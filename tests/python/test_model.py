@@ -130,6 +130,25 @@ def test_an_mjcf_file_loads_as_a_model(tmp_path):
         momenta.load_model(bad)
 
 
+def test_a_urdf_with_meshes_on_a_package_path(monkeypatch):
+    """A URDF's package:// meshes are found on package_path, its links without <inertial> weighed
+    at link_density (the mesh arm: four solids' closed forms at 2700 kg/m³ and a 0.5 kg payload,
+    to the COLLADA hand's single precision); without the path, a ParseError saying what to give."""
+    monkeypatch.delenv("ROS_PACKAGE_PATH", raising=False)
+    packages = EXAMPLES.parent / "tests" / "data" / "models" / "urdf" / "packages"
+    arm = packages / "mesh_arm" / "urdf" / "mesh_arm.urdf"
+    model = momenta.load_model(arm, package_path=[packages], link_density=2700.0)
+    solids = 0.25 * 0.25 * 0.125 + 1.5 * 3 ** 0.5 * 0.04 ** 2 * 0.375 + 0.3125 * 0.0625 ** 2 \
+        + 0.05 * 0.08 * 0.03
+    total = sum(body["mass"] for body in model.info()["bodies"])
+    assert total == pytest.approx(2700 * solids + 0.5, rel=1e-7)
+    assert momenta.load_model(arm, package_path=[packages]).info()["bodies"][1]["mass"] == 0.0
+    with pytest.raises(momenta.ParseError, match=r"mesh_arm.urdf:11: .* --package-path"):
+        momenta.load_model(arm)
+    with pytest.raises(momenta.InvalidArgument, match="link density -1"):
+        momenta.load_model(arm, package_path=[packages], link_density=-1.0)
+
+
 def test_models_written_as_mjcf_and_urdf_read_back(tmp_path):
     """momenta.to_mjcf / to_urdf write what `momenta export` writes: the double pendulum read back
     from either has its YAML twin's normal modes; what a format cannot keep is said."""

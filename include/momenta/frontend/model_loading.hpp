@@ -17,8 +17,10 @@ namespace momenta::frontend {
 /// in a ModelFile with no item locations.
 void accept_model(const io::ModelFile& file);
 
-/// Reads `path` and checks that it can be simulated (accept_model). Throws ParseError
-/// `file:line:column: message` for anything wrong with it, FileError when it cannot be read.
-io::ModelFile load_model(const std::filesystem::path& path);
+/// Reads `path` (io::read_model_file, with `options` for a URDF's meshes and massless links) and
+/// checks that it can be simulated (accept_model). Throws ParseError `file:line:column: message`
+/// for anything wrong with it, FileError when it cannot be read.
+io::ModelFile load_model(const std::filesystem::path& path,
+                         const io::ModelFileOptions& options = {});
 
 }  // namespace momenta::frontend

@@ -32,13 +32,16 @@ bool is_mjcf_path(const std::filesystem::path& path);
 /// Reads an MJCF file. Throws FileError when it cannot be read; ParseError `file:line:column:
 /// message` for malformed XML, a root other than <mujoco>, an unknown element or attribute (with
 /// a did-you-mean), a number that is not finite or a list of the wrong length, an unknown class,
-/// body or joint name, a body whose mass cannot be found (a mesh geom without an <inertial>), an
+/// body, joint or mesh name, a mesh file that cannot be read (relative to <compiler meshdir> or
+/// assetdir, each relative to the file's folder) or that bounds no solid where its body's mass
+/// is wanted, a body whose mass cannot be found (a plane, height field or sdf geom), an
 /// inertia no mass distribution has, what MuJoCo itself refuses (a free joint below the top
 /// level, two orientations on one element), a compiler setting that would change the masses, or a
 /// problem the model builder finds (at the line of the body or joint it names).
 ModelFile read_mjcf_file(const std::filesystem::path& path);
 
-/// The same from text (`file_name` names it in messages).
-ModelFile parse_mjcf(const std::string& text, const std::string& file_name);
+/// The same from text (`file_name` names it in messages; mesh files are found from `base_dir`).
+ModelFile parse_mjcf(const std::string& text, const std::string& file_name,
+                     const std::filesystem::path& base_dir = {});
 
 }  // namespace momenta::io

@@ -67,6 +67,19 @@ struct ModelFile {
   std::optional<ParseError> locate(const Error& error) const;
 };
 
+/// What a robot description needs besides its own text (URDF: docs/model-formats.md#meshes).
+/// momenta's own files and MJCF do not use these.
+struct ModelFileOptions {
+  /// Folders searched, in order, for the package a `package://NAME/path` URI names: the first
+  /// that is itself named NAME or holds a folder NAME (as ROS_PACKAGE_PATH's entries do). The
+  /// folders of the environment's ROS_PACKAGE_PATH are searched after these.
+  std::vector<std::filesystem::path> package_path;
+  /// The density (kg/m³) of the links a URDF gives no <inertial>: each gets the mass properties
+  /// of its collision geometry (else its visual geometry) filled with it. Without it such links
+  /// are massless, as URDF says.
+  std::optional<double> link_density;
+};
+
 /// Reads, checks and builds a model file. Paths inside it (part files, meshes, CSV tables) are
 /// relative to its folder.
 ///
@@ -79,8 +92,9 @@ struct ModelFile {
 /// axis or quaternion; a signal table whose times do not increase; an output that does not fit its
 /// target. Problems found only when the model is assembled are reported at the line of the
 /// body, joint or element they name. A file named `*.urdf` is read as a URDF robot description
-/// (io/urdf_file.hpp, docs/model-formats.md).
-ModelFile read_model_file(const std::filesystem::path& path);
+/// (io/urdf_file.hpp, docs/model-formats.md), `*.xml` or `*.mjcf` as MJCF (io/mjcf_file.hpp);
+/// `options` serve URDF files.
+ModelFile read_model_file(const std::filesystem::path& path, const ModelFileOptions& options = {});
 
 /// As read_model_file, from YAML text; `file_name` labels messages and `base_dir` resolves
 /// relative paths.

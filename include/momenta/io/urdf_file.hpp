@@ -12,8 +12,11 @@
 // + offset. URDF's <inertia> gives the tensor's entries (ixy = −∫xy dm), as momenta's does.
 // The root link is welded to the world, unless it is named "world" (then it is the world). What
 // momenta does not use — limits, effort and velocity, friction, calibration, safety controllers,
-// visual and collision geometry, transmissions, gazebo extensions — is listed in
-// ModelFile::notes, each with its line, not silently dropped.
+// materials, transmissions, gazebo extensions — is listed in ModelFile::notes, each with its line,
+// not silently dropped. A link's <visual> geometry (box, cylinder, sphere, mesh: STL, OBJ, DAE) is
+// what the report draws (its <collision> geometry where it has no visual); a link without
+// <inertial> takes its mass properties from its geometry when ModelFileOptions::link_density is
+// given.
 
 #include <filesystem>
 #include <string>
@@ -25,14 +28,22 @@ namespace momenta::io {
 /// True when `path` names a URDF file (extension .urdf, any case).
 bool is_urdf_path(const std::filesystem::path& path);
 
-/// Reads a URDF file. Throws FileError when it cannot be read; ParseError `file:line: message`
-/// for malformed XML, a missing or unknown element, attribute or name (with a did-you-mean), a
-/// number that is not finite or out of range, a link that is the child of two joints, more than
-/// one root, an inertia no mass distribution has, or a problem the model builder finds (at the
-/// line of the link or joint it names).
-ModelFile read_urdf_file(const std::filesystem::path& path);
+/// Reads a URDF file. Mesh file names are `package://NAME/path` (NAME found on
+/// options.package_path, then ROS_PACKAGE_PATH), `file:///absolute/path`, or paths relative to
+/// the URDF's folder. Throws FileError when it or a mesh cannot be read; ParseError
+/// `file:line: message` for malformed XML, a missing or unknown element, attribute or name (with
+/// a did-you-mean), a number that is not finite or out of range, a link that is the child of two
+/// joints, more than one root, an inertia no mass distribution has, a package that is not found
+/// (naming the folders searched), a mesh that cannot be read or — where its mass is wanted — does
+/// not bound a solid, or a problem the model builder finds (at the line of the link or joint it
+/// names; a massless link that needs a mass with the hint to give an <inertial> or a
+/// link_density).
+ModelFile read_urdf_file(const std::filesystem::path& path, const ModelFileOptions& options = {});
 
-/// The same from text (`file_name` names it in messages).
-ModelFile parse_urdf(const std::string& text, const std::string& file_name);
+/// The same from text (`file_name` names it in messages; relative mesh paths are taken from
+/// `base_dir`).
+ModelFile parse_urdf(const std::string& text, const std::string& file_name,
+                     const ModelFileOptions& options = {},
+                     const std::filesystem::path& base_dir = {});
 
 }  // namespace momenta::io

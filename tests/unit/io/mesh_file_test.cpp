@@ -336,6 +336,29 @@ TEST_F(MeshFile, TruncatedAsciiStl) {
   EXPECT_TRUE(contains(what, "endsolid")) << what;
 }
 
+// COLLADA through assimp: the mesh arm's hand, a 50 x 80 x 30 mm box written in millimetres with
+// <unit meter="0.001"> and <up_axis>Z_UP: read in metres, its axes as written (not turned to y
+// up), a closed solid of the box's volume to single precision (assimp keeps the unit as a float:
+// two roundings of 2^-24 per length, three lengths: 4e-7).
+TEST_F(MeshFile, ColladaInItsUnitAndAxes) {
+  TriangleMesh hand = read_mesh_file(std::filesystem::path(test::source_dir()) /
+                                     "tests/data/models/urdf/packages/mesh_arm/meshes/hand.dae");
+  EXPECT_EQ(hand.vertices.size(), 8u);
+  EXPECT_EQ(hand.triangles.size(), 12u);
+  Vec3 extent = Vec3::Zero();
+  for (const Vec3& v : hand.vertices) extent = extent.cwiseMax(v.cwiseAbs());
+  EXPECT_TRUE(test::matrices_near(extent, Vec3(0.025, 0.04, 0.015), 1.2e-7 * 0.04)) << extent;
+  EXPECT_FALSE(inertia::prepare_solid_mesh(hand, "hand.dae"));
+  EXPECT_TRUE(
+      test::relatively_near(inertia::solid_mesh_mass_properties(hand, Amount::density(1.0)).mass(),
+                            0.05 * 0.08 * 0.03, 4e-7));
+  // Not COLLADA inside: assimp's complaint, with the file's name.
+  write_text(file("broken.dae"), "<COLLADA><library_geometries>");
+  const std::string what = error_of<ParseError>([&] { read_mesh_file(file("broken.dae")); });
+  EXPECT_TRUE(contains(what, "broken.dae")) << what;
+  EXPECT_TRUE(contains(what, "cannot read the COLLADA file")) << what;
+}
+
 TEST_F(MeshFile, MissingEmptyAndUnsupportedFiles) {
   std::string what = error_of<FileError>([&] { read_mesh_file(file("nowhere.stl")); });
   EXPECT_TRUE(contains(what, "nowhere.stl")) << what;

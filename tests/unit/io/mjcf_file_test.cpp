@@ -288,7 +288,9 @@ TEST(MjcfFile, ErrorsAreAtTheirLineAndColumn) {
   EXPECT_TRUE(has(error_of(in_world("<body><geom class='wide' size='1'/></body>")),
                   "unknown class 'wide'"));
   EXPECT_TRUE(has(error_of(in_world("<body><geom type='mesh' mesh='m'/></body>")),
-                  "is a mesh: momenta cannot find its mass; give body 'body1' an <inertial>"));
+                  "m.xml:3:25: unknown mesh 'm'"));
+  EXPECT_TRUE(has(error_of(in_world("<body><geom type='plane' size='1 1 1'/></body>")),
+                  "is a plane: momenta cannot find its mass; give body 'body1' an <inertial>"));
   EXPECT_TRUE(has(error_of(in_world("<body quat='1 0 0 0' euler='0 0 1'><geom size='1'/></body>")),
                   "<body> gives its orientation twice ('quat' and 'euler')"));
   EXPECT_TRUE(has(
@@ -309,6 +311,79 @@ TEST(MjcfFile, ErrorsAreAtTheirLineAndColumn) {
   // A massless body on a joint: the builder's error, at the body's line.
   EXPECT_TRUE(has(error_of(in_world("<body name='a'>\n<joint/></body>")),
                   "m.xml:4:1: joint 'joint0' carries only massless bodies"));
+}
+
+// Mesh geoms: each mesh in its file's coordinates, placed by the geom and weighed as the solid it
+// bounds — the cube scaled per axis against the box's closed form (±0.5 is exact in the binary
+// STL's floats: 1e-15), the prism against the regular hexagonal prism (its corners rounded to
+// single precision in the file: 1e-7), the wedge by the geom's mass.
+TEST(MjcfFile, MeshGeomsWeighAsTheirSolids) {
+  const ModelFile arm = read_mjcf_file(mjcf_path("mesh_arm"));
+  const auto body = [&](const std::string& name) {
+    return arm.model.bodies()[static_cast<std::size_t>(arm.model.body_index(name))].mass_properties;
+  };
+  const inertia::MassProperties cube =
+      inertia::box(inertia::Amount::density(2700), Vec3(0.3, 0.06, 0.06))
+          .transformed(Mat3::Identity(), Vec3(0.15, 0, 0));
+  EXPECT_NEAR(body("fore").mass(), cube.mass(), 1e-15 * cube.mass());
+  EXPECT_MATRIX_NEAR(body("fore").inertia_about_com(), cube.inertia_about_com(), 1e-15 * 0.03);
+  const double r = 0.04, l = 0.375, prism = 2700 * 1.5 * std::sqrt(3.0) * r * r * l;
+  EXPECT_NEAR(body("upper").mass(), prism, 1e-7 * prism);
+  EXPECT_NEAR(body("upper").inertia_about_com()(0, 0), prism * 5 * r * r / 12, 1e-7 * 0.003);
+  EXPECT_MATRIX_NEAR(body("upper").center_of_mass(), Vec3(0.1875, 0, 0), 1e-9);
+  // The wedge's 0.4 kg beside a water sphere of radius 2 cm.
+  EXPECT_NEAR(body("hand").mass(), 0.4 + 1000 * 4.0 / 3.0 * std::numbers::pi * 8e-6, 1e-15);
+  // Drawn as meshes in the body frame; the note says what MuJoCo's default would do otherwise.
+  const std::span<const PartSummary> hand = arm.parts_of(arm.model.body_index("hand"));
+  ASSERT_EQ(hand.size(), 2u);
+  EXPECT_EQ(hand[0].kind, "mesh");
+  EXPECT_EQ(hand[0].mesh->triangles.size(), 8u);
+  EXPECT_EQ(arm.notes.size(), 1u);  // the <material> asset; exactmeshinertia is set
+  const std::string unset = R"(<mujoco><asset><mesh file="box.stl"/></asset><worldbody>
+<body><joint type="hinge"/><geom type="mesh" mesh="box"/></body></worldbody></mujoco>)";
+  const ModelFile f = parse_mjcf(unset, "m.xml",
+                                 test::source_dir() +
+                                     "/tests/data/models/urdf/packages/mesh_arm/"
+                                     "meshes");
+  ASSERT_EQ(f.notes.size(), 1u);
+  EXPECT_NE(f.notes[0].find("m.xml:2: mesh geoms are weighed as the solids they bound; MuJoCo 2.2 "
+                            "does so with <compiler exactmeshinertia=\"true\">"),
+            std::string::npos)
+      << f.notes[0];
+  EXPECT_NEAR(f.model.bodies()[1].mass_properties.mass(), 1000.0, 1e-12);
+}
+
+TEST(MjcfFile, MeshErrorsAreAtTheirLine) {
+  const auto error = [](const std::string& asset, const std::string& geom) {
+    try {
+      parse_mjcf("<mujoco>\n<asset>" + asset + "</asset>\n<worldbody>\n<body><joint/>" + geom +
+                     "</body>\n</worldbody>\n</mujoco>",
+                 "m.xml", test::source_dir() + "/tests/data/models/urdf/packages/mesh_arm/meshes");
+    } catch (const ParseError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string box = "<mesh name='box' file='box.stl'/>";
+  EXPECT_EQ(error(box, "<geom type='mesh' mesh='bx'/>"),
+            "m.xml:4:33: unknown mesh 'bx' (did you mean 'box'?)");
+  EXPECT_EQ(error(box, "<geom type='mesh'/>"),
+            "m.xml:4:15: a geom of body 'body1' is a mesh and names none (mesh=\"...\")");
+  EXPECT_EQ(error(box, "<geom type='mesh' mesh='box' fromto='0 0 0 1 0 0'/>"),
+            "m.xml:4:44: a geom of body 'body1' is a mesh: fromto gives the axis of a capsule, "
+            "cylinder, box or ellipsoid (as MuJoCo requires)");
+  EXPECT_EQ(error(box + "\n" + box, ""),
+            "m.xml:3:7: a second mesh named 'box' (the first is at line 2)");
+  EXPECT_EQ(error("<mesh vertex='0 0 0 1 0 0 0 1 0 0 0 1'/>", ""),
+            "m.xml:2:14: <mesh vertex=...>: momenta reads meshes from files (STL, OBJ)");
+  EXPECT_EQ(error("<mesh file='box.stl' refpos='0 0 1'/>", ""),
+            "m.xml:2:29: <mesh refpos>: momenta reads a mesh in the coordinates of its file");
+  const std::string missing =
+      error("<mesh file='nothing.stl'/>", "<geom type='mesh' mesh='nothing'/>");
+  EXPECT_NE(missing.find("m.xml:2:14: mesh 'nothing': "), std::string::npos) << missing;
+  EXPECT_NE(missing.find("nothing.stl: mesh file not found"), std::string::npos) << missing;
+  EXPECT_EQ(error("<mesh file='box.stl' scale='1 0 1'/>", "<geom type='mesh' mesh='box'/>"),
+            "m.xml:2:29: the scale of mesh 'box' has a zero factor");
 }
 
 }  // namespace

@@ -90,16 +90,15 @@ model::Model arm_in_code() {
 TEST(UrdfFile, SpatialArmIsTheArmBuiltInCode) {
   const ModelFile urdf = read_urdf_file(urdf_path("three_link_arm"));
   EXPECT_LT(largest_difference(urdf.model, arm_in_code(), 50), 1e-13);
-  // Damping kept; limits, friction, visuals and the transmission listed with their lines.
+  // Damping kept; limits, friction and the transmission listed with their lines.
   EXPECT_EQ(urdf.model.joint(urdf.model.joint_index("elbow")).damping, 0.1);
   std::string notes;
   for (const std::string& n : urdf.notes) notes += n + "\n";
   // In the file's order.
   EXPECT_NE(notes.find(":5: link 'base'"), std::string::npos);
-  EXPECT_LT(notes.find(":5: link 'base'"), notes.find(":6: <visual>")) << notes;
   EXPECT_LT(notes.find(":47: the limits"), notes.find(":49: <transmission>")) << notes;
   for (const char* expected :
-       {":6: <visual> of link 'base': not used by momenta",
+       {":5: link 'base' has no <inertial>: massless",
         ":39: the limits of joint 'elbow' are not enforced (lower -2, upper 2); effort 50 and "
         "velocity 3 recorded only",
         ":40: the Coulomb friction of joint 'elbow' is not modelled",
@@ -107,6 +106,11 @@ TEST(UrdfFile, SpatialArmIsTheArmBuiltInCode) {
         ":49: <transmission>: not used by momenta", ":5: link 'base', the root, is fixed"}) {
     EXPECT_NE(notes.find(expected), std::string::npos) << expected << "\n" << notes;
   }
+  // The base's visual cylinder is drawn.
+  const std::span<const PartSummary> base = urdf.parts_of(urdf.model.body_index("base"));
+  ASSERT_EQ(base.size(), 1u);
+  EXPECT_EQ(base[0].kind, "cylinder");
+  EXPECT_EQ(base[0].line, 6);
 }
 
 // A robot whose root link is named world floats on a floating joint; a mimic joint is a coupler.

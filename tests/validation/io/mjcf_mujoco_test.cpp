@@ -216,17 +216,25 @@ Worst compare(const std::string& name, int samples) {
 // at κ 2.3e8; the arm 1.5e-13 at κ 1.5e4).
 constexpr double kAgreement = 1e-12;
 
-void expect_agreement(const Worst& w) {
-  EXPECT_LT(w.mass_matrix, kAgreement);
-  EXPECT_LT(w.bias, kAgreement);
-  EXPECT_LT(w.element_forces, kAgreement);
-  EXPECT_LT(w.residual, kAgreement);
-  EXPECT_LT(w.forward, w.condition * 1e-14);
+void expect_agreement(const Worst& w, double agreement = kAgreement) {
+  EXPECT_LT(w.mass_matrix, agreement);
+  EXPECT_LT(w.bias, agreement);
+  EXPECT_LT(w.element_forces, agreement);
+  EXPECT_LT(w.residual, agreement);
+  EXPECT_LT(w.forward, w.condition * agreement / 100.0);
 }
 
 TEST(MjcfMuJoCo, SevenAxisArmWithMotorsSpringsAndDampers) { expect_agreement(compare("arm7", 50)); }
 
 TEST(MjcfMuJoCo, HumanoidOnAFloatingBase) { expect_agreement(compare("humanoid", 50)); }
+
+// Mesh geoms (binary STL): a hexagonal prism turned by its geom, a cube scaled per axis, a wedge
+// its file draws away from the origin, by density and by mass (exactmeshinertia="true": MuJoCo's
+// legacy default weighs the prism 3.8 % light). MuJoCo keeps mesh vertices in single precision
+// (mjModel.mesh_vert is float) and re-centres them there, so its masses and inertias differ from
+// the solids the same float coordinates bound by up to a few 2^-24 ≈ 6e-8 per length (a mass goes
+// as length³, an inertia as length⁵: up to 3e-7; measured M 2.7e-9, bias 7.7e-9): held to 1e-6.
+TEST(MjcfMuJoCo, MeshGeomsWeighAsInMuJoCo) { expect_agreement(compare("mesh_arm", 50), 1e-6); }
 
 }  // namespace
 }  // namespace momenta
