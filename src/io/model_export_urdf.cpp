@@ -74,13 +74,17 @@ ExportedModel write_urdf(const ModelFile& file) {
     const Transform X = X_LB(static_cast<int>(b));
     const inertia::MassProperties mp = body.mass_properties.transformed(X.R, X.p);
     const Mat3& I = mp.inertia_about_com();
-    out += fmt::format(
-        "  <link name=\"{}\">\n    <inertial>\n      <origin xyz=\"{}\" rpy=\"0 0 0\"/>\n"
-        "      <mass value=\"{}\"/>\n      <inertia ixx=\"{}\" ixy=\"{}\" ixz=\"{}\" iyy=\"{}\" "
-        "iyz=\"{}\" izz=\"{}\"/>\n    </inertial>\n",
-        body.name, vector_text(mp.center_of_mass()), number_text(mp.mass()), number_text(I(0, 0)),
-        number_text(I(0, 1)), number_text(I(0, 2)), number_text(I(1, 1)), number_text(I(1, 2)),
-        number_text(I(2, 2)));
+    out += fmt::format("  <link name=\"{}\">\n", body.name);
+    // A massless body is a link without <inertial>, URDF's way to say so.
+    if (mp.mass() != 0.0 || !I.isZero(0.0)) {
+      out += fmt::format(
+          "    <inertial>\n      <origin xyz=\"{}\" rpy=\"0 0 0\"/>\n"
+          "      <mass value=\"{}\"/>\n      <inertia ixx=\"{}\" ixy=\"{}\" ixz=\"{}\" iyy=\"{}\" "
+          "iyz=\"{}\" izz=\"{}\"/>\n    </inertial>\n",
+          vector_text(mp.center_of_mass()), number_text(mp.mass()), number_text(I(0, 0)),
+          number_text(I(0, 1)), number_text(I(0, 2)), number_text(I(1, 1)), number_text(I(1, 2)),
+          number_text(I(2, 2)));
+    }
     // What URDF can draw: boxes, cylinders and spheres.
     for (const PartSummary& part : file.parts_of(static_cast<int>(b))) {
       std::map<std::string, double> s(part.sizes.begin(), part.sizes.end());

@@ -129,12 +129,15 @@ void UrdfReader::read_link(const XMLElement* e) {
       I << ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz;
     }
     // The inertia is about the inertial frame's origin (the centre of mass), in its axes.
+    // A zero mass with no inertia is a massless link, as a link without <inertial> is.
     const Transform X_BI = origin(inertial);
-    link.mass_properties = inertia::MassProperties(m, X_BI.p, X_BI.R * I * X_BI.R.transpose());
-    try {
-      link.mass_properties.check_physical(owner);
-    } catch (const Error& error) {
-      fail(in != nullptr ? in : inertial, one_line(error.what()));
+    if (m != 0.0 || !I.isZero(0.0)) {
+      link.mass_properties = inertia::MassProperties(m, X_BI.p, X_BI.R * I * X_BI.R.transpose());
+      try {
+        link.mass_properties.check_physical(owner);
+      } catch (const Error& error) {
+        fail(in != nullptr ? in : inertial, one_line(error.what()));
+      }
     }
     note_ignored_children(inertial, owner + "'s <inertial>", {"origin", "mass", "inertia"});
   }
