@@ -33,6 +33,20 @@ std::string lower(std::string s) {
   return s;
 }
 
+// A uniform scale as its one number, a per-axis one as three.
+std::string scale_text(const Vec3& scale) {
+  return scale.x() == scale.y() && scale.y() == scale.z()
+             ? fmt::format("{}", scale.x())
+             : fmt::format("({}, {}, {})", scale.x(), scale.y(), scale.z());
+}
+
+InvalidArgument scale_out_of_range(const fs::path& path, const Vec3& scale) {
+  return InvalidArgument(fmt::format(
+      "{}: unit scale {} is outside 1e-9 … 1e9 metres per unit of the file (0.001 reads "
+      "millimetres)",
+      path.string(), scale_text(scale)));
+}
+
 // Reads up to `count` bytes from `offset` (fewer at the end of the file).
 std::string read_bytes(const fs::path& path, std::uintmax_t offset, std::size_t count) {
   std::ifstream in(path, std::ios::binary);
@@ -89,15 +103,15 @@ Format classify_stl(const fs::path& path, std::uintmax_t size) {
 
 // Appends the triangles of every mesh under `node`, each vertex moved by the node's transform
 // composed with its parents' (`parent`, row-major 4×4 as assimp stores it).
-void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& parent, double scale,
-             TriangleMesh& out, std::size_t& skipped) {
+void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& parent,
+             const Vec3& scale, TriangleMesh& out, std::size_t& skipped) {
   const aiMatrix4x4& t = node.mTransformation;
   Eigen::Matrix4d local;
   local << t.a1, t.a2, t.a3, t.a4, t.b1, t.b2, t.b3, t.b4, t.c1, t.c2, t.c3, t.c4, t.d1, t.d2, t.d3,
       t.d4;
   const Eigen::Matrix4d world = parent * local;
-  const Mat3 linear = scale * world.topLeftCorner<3, 3>();
-  const Vec3 offset = scale * world.topRightCorner<3, 1>();
+  const Mat3 linear = scale.asDiagonal() * world.topLeftCorner<3, 3>();
+  const Vec3 offset = scale.cwiseProduct(world.topRightCorner<3, 1>());
   // A mirroring transform turns an outward mesh inside out: swap the winding back.
   const bool mirrored = linear.determinant() < 0;
   for (unsigned m = 0; m < node.mNumMeshes; ++m) {
@@ -137,14 +151,17 @@ void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& pa
 }  // namespace
 
 inertia::TriangleMesh read_mesh_file(const std::filesystem::path& path, double scale) {
+  if (!(scale > 0.0)) throw scale_out_of_range(path, Vec3::Constant(scale));  // no mirroring
+  return read_mesh_file(path, Vec3::Constant(scale));
+}
+
+inertia::TriangleMesh read_mesh_file(const std::filesystem::path& path, const Vec3& scale) {
   const std::string name = path.string();
   // From a nanometre to a million kilometres a unit: beyond, a triangle's area (scale²) and the
   // solid's volume (scale³) leave double precision, and the mesh would read as empty.
-  if (!std::isfinite(scale) || !(scale >= 1e-9) || !(scale <= 1e9)) {
-    throw InvalidArgument(fmt::format(
-        "{}: unit scale {} is outside 1e-9 … 1e9 metres per unit of the file (0.001 reads "
-        "millimetres)",
-        name, scale));
+  const Vec3 magnitude = scale.cwiseAbs();
+  if (!scale.allFinite() || !(magnitude.minCoeff() >= 1e-9) || !(magnitude.maxCoeff() <= 1e9)) {
+    throw scale_out_of_range(path, scale);
   }
 
   // The file itself: present, a regular file, not empty, of a supported kind.
@@ -183,7 +200,11 @@ inertia::TriangleMesh read_mesh_file(const std::filesystem::path& path, double s
     const std::string text = read_bytes(path, 0, static_cast<std::size_t>(size));
     soup = format == Format::kObj ? detail::parse_obj(text, name, skipped)
                                   : detail::parse_ascii_stl(text, name);
-    for (Vec3& p : soup.vertices) p *= scale;
+    for (Vec3& p : soup.vertices) p = p.cwiseProduct(scale);
+    // A mirroring scale turns an outward mesh inside out: swap the winding back.
+    if (scale.prod() < 0.0) {
+      for (auto& t : soup.triangles) std::swap(t[1], t[2]);
+    }
   } else {
     Assimp::Importer importer;
     importer.SetPropertyBool(AI_CONFIG_IMPORT_COLLADA_IGNORE_UP_DIRECTION, true);
@@ -214,9 +235,11 @@ inertia::TriangleMesh read_mesh_file(const std::filesystem::path& path, double s
   for (std::size_t v = 0; v < soup.vertices.size(); ++v) {
     const Vec3& p = soup.vertices[v];
     if (!p.allFinite()) {
-      throw ParseError(name, 0, 0,
-                       fmt::format("vertex {} ({}, {}, {}) is not finite{}", v, p.x(), p.y(), p.z(),
-                                   scale != 1.0 ? fmt::format(" (scaled by {})", scale) : ""));
+      throw ParseError(
+          name, 0, 0,
+          fmt::format(
+              "vertex {} ({}, {}, {}) is not finite{}", v, p.x(), p.y(), p.z(),
+              scale != Vec3::Ones() ? fmt::format(" (scaled by {})", scale_text(scale)) : ""));
     }
   }
 

@@ -138,18 +138,12 @@ std::shared_ptr<const inertia::TriangleMesh> MjcfReader::mesh_asset(const XMLEle
   if (!(asset.scale.cwiseAbs().minCoeff() > 0.0)) {
     fail(asset.element, fmt::format("the scale of mesh '{}' has a zero factor", name), "scale");
   }
-  inertia::TriangleMesh mesh;
   try {
-    mesh = read_mesh_file(asset.path);
+    asset.read =
+        std::make_shared<const inertia::TriangleMesh>(read_mesh_file(asset.path, asset.scale));
   } catch (const Error& error) {
     fail(asset.element, fmt::format("mesh '{}': {}", name, one_line(error.what())), "file");
   }
-  // Scaled per axis; a mirroring scale has its triangles' winding turned back.
-  for (Vec3& v : mesh.vertices) v = v.cwiseProduct(asset.scale);
-  if (asset.scale.prod() < 0.0) {
-    for (auto& t : mesh.triangles) std::swap(t[1], t[2]);
-  }
-  asset.read = std::make_shared<const inertia::TriangleMesh>(std::move(mesh));
   return asset.read;
 }
 

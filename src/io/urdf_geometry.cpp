@@ -123,19 +123,12 @@ std::shared_ptr<const inertia::TriangleMesh> UrdfReader::mesh(const XMLElement* 
   } catch (const InvalidArgument& error) {
     fail(at, one_line(error.what()));
   }
-  inertia::TriangleMesh read;
+  std::shared_ptr<const inertia::TriangleMesh> shared;
   try {
-    read = read_mesh_file(path);
+    shared = std::make_shared<const inertia::TriangleMesh>(read_mesh_file(path, scale));
   } catch (const Error& error) {
     fail(at, fmt::format("mesh '{}': {}", uri, one_line(error.what())));
   }
-  // URDF's scale is per axis; a mirroring one (an odd number of negative factors) turns the
-  // triangles inside out, so their winding is turned back.
-  for (Vec3& v : read.vertices) v = v.cwiseProduct(scale);
-  if (scale.prod() < 0.0) {
-    for (auto& t : read.triangles) std::swap(t[1], t[2]);
-  }
-  auto shared = std::make_shared<const inertia::TriangleMesh>(std::move(read));
   meshes_.emplace(key, shared);
   return shared;
 }
@@ -231,8 +224,10 @@ void UrdfReader::read_geometry(const XMLElement* e, Link& link, const std::strin
   // The solid that gives a link without <inertial> its mass: its collision geometry, else its
   // visual geometry. What is drawn: its visual geometry, else its collision geometry.
   const bool weighed = !link.has_inertial && options_.link_density.has_value();
-  const std::vector<const XMLElement*>& solids = collisions.empty() ? visuals : collisions;
-  const std::vector<const XMLElement*>& drawn = visuals.empty() ? collisions : visuals;
+  const bool solid_is_collision = !collisions.empty();
+  const bool drawn_is_visual = !visuals.empty();
+  const std::vector<const XMLElement*>& solids = solid_is_collision ? collisions : visuals;
+  const std::vector<const XMLElement*>& drawn = drawn_is_visual ? visuals : collisions;
   std::vector<PartSummary> weighed_parts;
   if (weighed) {
     for (std::size_t i = 0; i < solids.size(); ++i) {
@@ -244,7 +239,8 @@ void UrdfReader::read_geometry(const XMLElement* e, Link& link, const std::strin
                         "give it the mass of its geometry)",
                         owner));
   }
-  if (weighed && &drawn == &solids) {
+  // The weighed parts are drawn as they are when they are what is drawn (one kind of geometry).
+  if (weighed && solid_is_collision != drawn_is_visual) {
     link.drawn = std::move(weighed_parts);
   } else {
     for (std::size_t i = 0; i < drawn.size(); ++i) {
@@ -252,7 +248,7 @@ void UrdfReader::read_geometry(const XMLElement* e, Link& link, const std::strin
     }
   }
   // Collision geometry neither drawn nor weighed.
-  if (&drawn != &collisions && !(weighed && &solids == &collisions)) {
+  if (drawn_is_visual && !(weighed && solid_is_collision)) {
     for (const XMLElement* c : collisions) {
       note(c, fmt::format("<collision> of {}: not used by momenta (contacts are not modelled)",
                           owner));

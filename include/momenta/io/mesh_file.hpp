@@ -29,4 +29,10 @@ namespace momenta::io {
 /// if it holds no triangles, or if a coordinate is not finite.
 inertia::TriangleMesh read_mesh_file(const std::filesystem::path& path, double scale = 1.0);
 
+/// The same with a scale per axis (a robot description's mesh scale): each factor's magnitude
+/// within 1e-9 … 1e9; a negative factor mirrors the mesh, and a mirroring scale (an odd number of
+/// negative factors) has its triangles' winding turned back so outward stays outward. Throws as
+/// above.
+inertia::TriangleMesh read_mesh_file(const std::filesystem::path& path, const Vec3& scale);
+
 }  // namespace momenta::io
