@@ -3,31 +3,18 @@
 // the mass matrix (CRBA), n = 7, 32, 128. Targets: ABA 1.30/6.34/25.7 µs, RNEA 0.47/2.22/8.72 µs,
 // CRBA 0.46/3.07/24.0 µs.
 
-#include <random>
-
 #include <benchmark/benchmark.h>
 
+#include "chain_state.hpp"
 #include "momenta/dynamics/aba.hpp"
 #include "momenta/dynamics/crba.hpp"
 #include "momenta/dynamics/rnea.hpp"
-#include "momenta_test/multibody_models.hpp"
 
 namespace {
 
 using namespace momenta;
 
-struct Chain {
-  explicit Chain(int n) : model(test::revolute_chain(n)), data(model) {
-    std::mt19937 rng(42);
-    q = test::random_vector(model.nq(), rng, 3.14);
-    v = test::random_vector(model.nv(), rng, 1.0);
-    tau = test::random_vector(model.nv(), rng, 1.0);
-    vdot = test::random_vector(model.nv(), rng, 1.0);
-  }
-  model::Model model;
-  dynamics::Data data;
-  VecX q, v, tau, vdot;
-};
+using bench::Chain;
 
 void BM_Aba(benchmark::State& state) {
   Chain c(static_cast<int>(state.range(0)));

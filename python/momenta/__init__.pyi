@@ -552,6 +552,9 @@ class Workspace:
     def aba(self, q: ArrayLike, v: ArrayLike, tau: ArrayLike, f_ext: object = None) -> numpy.ndarray:
         """Forward dynamics by the articulated-body algorithm: v̇ = M⁻¹ (τ − C v − g + Jᵀ f_ext). Every joint is driven by its τ (prescription and force elements are the simulator's)."""
         ...
+    def aba_derivatives(self, q: ArrayLike, v: ArrayLike, tau: ArrayLike, f_ext: object = None) -> tuple:
+        """(∂v̇/∂q, ∂v̇/∂v, M⁻¹), each (nv, nv), of v̇ = aba(q, v, tau), analytically (Carpentier & Mansard 2018). ∂/∂q is along the configuration's tangent, one column per velocity coordinate (a ball joint's rotation vector in its child frame); f_ext is held in its bodies."""
+        ...
     def body_acceleration(self, body: object) -> numpy.ndarray:
         """[alpha_WB_W; a_WBo_W] (6,), the classical acceleration of Bo, after forward_kinematics with v and vdot."""
         ...
@@ -598,6 +601,9 @@ class Workspace:
         ...
     def rnea(self, q: ArrayLike, v: ArrayLike, vdot: ArrayLike, f_ext: object = None) -> numpy.ndarray:
         """Inverse dynamics by recursive Newton–Euler: τ = M v̇ + C v + g − Jᵀ f_ext."""
+        ...
+    def rnea_derivatives(self, q: ArrayLike, v: ArrayLike, vdot: ArrayLike, f_ext: object = None) -> tuple:
+        """(∂τ/∂q, ∂τ/∂v, M), each (nv, nv), of τ = rnea(q, v, vdot), analytically (Carpentier & Mansard 2018); ∂/∂q along the configuration's tangent, f_ext held in its bodies."""
         ...
 
 def bode(system: StateSpace, input: object, output: object, *, frequencies: object = None, omega_min: float = 0.01, omega_max: float = 100.0, points: int = 200) -> FrequencyResponse:

@@ -7,6 +7,7 @@
 #include "bindings.hpp"
 #include "model_handle.hpp"
 #include "momenta/dynamics/aba.hpp"
+#include "momenta/dynamics/aba_derivatives.hpp"
 #include "momenta/dynamics/crba.hpp"
 #include "momenta/dynamics/data.hpp"
 #include "momenta/dynamics/energy.hpp"
@@ -15,6 +16,7 @@
 #include "momenta/dynamics/point_kinematics.hpp"
 #include "momenta/dynamics/reactions.hpp"
 #include "momenta/dynamics/rnea.hpp"
+#include "momenta/dynamics/rnea_derivatives.hpp"
 
 namespace momenta::python {
 namespace {
@@ -107,6 +109,34 @@ Results are new arrays. Not thread-safe: one workspace per thread.)doc")
           },
           py::arg("q"), py::arg("v"), py::arg("vdot"), py::arg("f_ext") = py::none(),
           "Inverse dynamics by recursive Newton–Euler: τ = M v̇ + C v + g − Jᵀ f_ext.")
+      .def(
+          "aba_derivatives",
+          [](Workspace& w, const py::handle& q, const py::handle& v, const py::handle& tau,
+             const py::object& f_ext) {
+            Storage sq, sv, st;
+            dynamics::aba_derivatives(w.model(), w.data, w.q(q, sq), w.v(v, "v", sv),
+                                      w.v(tau, "tau", st), w.external(f_ext));
+            return py::make_tuple(to_numpy(w.data.dvdot_dq), to_numpy(w.data.dvdot_dv),
+                                  to_numpy(w.data.Minv));
+          },
+          py::arg("q"), py::arg("v"), py::arg("tau"), py::arg("f_ext") = py::none(),
+          "(∂v̇/∂q, ∂v̇/∂v, M⁻¹), each (nv, nv), of v̇ = aba(q, v, tau), analytically (Carpentier "
+          "& Mansard 2018). ∂/∂q is along the configuration's tangent, one column per velocity "
+          "coordinate (a ball joint's rotation vector in its child frame); f_ext is held in its "
+          "bodies.")
+      .def(
+          "rnea_derivatives",
+          [](Workspace& w, const py::handle& q, const py::handle& v, const py::handle& vdot,
+             const py::object& f_ext) {
+            Storage sq, sv, sa;
+            dynamics::rnea_derivatives(w.model(), w.data, w.q(q, sq), w.v(v, "v", sv),
+                                       w.v(vdot, "vdot", sa), w.external(f_ext));
+            return py::make_tuple(to_numpy(w.data.dtau_dq), to_numpy(w.data.dtau_dv),
+                                  to_numpy(w.data.M));
+          },
+          py::arg("q"), py::arg("v"), py::arg("vdot"), py::arg("f_ext") = py::none(),
+          "(∂τ/∂q, ∂τ/∂v, M), each (nv, nv), of τ = rnea(q, v, vdot), analytically (Carpentier & "
+          "Mansard 2018); ∂/∂q along the configuration's tangent, f_ext held in its bodies.")
       .def(
           "crba",
           [](Workspace& w, const py::handle& q) {

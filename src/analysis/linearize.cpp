@@ -64,6 +64,11 @@ struct Differentiated {
       outputs.evaluate(residual.system(), t, q, v, std::span<double>(out.data() + nf, columns));
     }
   }
+  // The output columns alone at (q, v).
+  void evaluate_outputs(const VecX& q, const VecX& v, VecX& out) const {
+    out.resize(columns);
+    outputs.evaluate(residual.system(), t, q, v, std::span<double>(out.data(), columns));
+  }
   double configuration_step(int i) const { return steps.configuration(i, q0); }
   // The smallest configuration step of the coordinates a prescribed signal drives.
   double prescribed_step(int signal) const {
@@ -82,28 +87,34 @@ struct Differentiated {
   }
 };
 
-// ∂g/∂δq by Richardson-extrapolated central differences; ∂g/∂v by exact central differences.
+// ∂g/∂δq and ∂g/∂v: the equations of motion analytically (ModelResidual::derivatives), the output
+// columns by differences — Richardson-extrapolated on δq, exact central ones on v.
 void differentiate_state(const Differentiated& f, const std::vector<int>& free, Jacobians& J) {
   J.dq.resize(f.nf + f.columns, f.nf);
   J.dv.resize(f.nf + f.columns, f.nf);
+  MatX dr_dq, dr_dv;
+  f.residual.derivatives(f.t, f.q0, f.v0, f.a_free, dr_dq, dr_dv);
+  J.dq.topRows(f.nf) = dr_dq;
+  J.dv.topRows(f.nf) = dr_dv;
+  if (f.columns == 0) return;
   VecX plus, minus, coarse, d, tangent, q_step, v_step;
   for (int k = 0; k < f.nf; ++k) {
     const int i = free[static_cast<std::size_t>(k)];
     detail::richardson_difference(
         [&](double s, VecX& out) {
           detail::displace(f.model, f.q0, i, s, tangent, q_step);
-          f.evaluate(q_step, f.v0, out);
+          f.evaluate_outputs(q_step, f.v0, out);
         },
         f.configuration_step(i), plus, minus, coarse, d);
-    J.dq.col(k) = d;
+    J.dq.col(k).tail(f.columns) = d;
     detail::central_difference(
         [&](double s, VecX& out) {
           v_step = f.v0;
           v_step[i] += s;
-          f.evaluate(f.q0, v_step, out);
+          f.evaluate_outputs(f.q0, v_step, out);
         },
         kExactStep, plus, minus, d);
-    J.dv.col(k) = d;
+    J.dv.col(k).tail(f.columns) = d;
   }
 }
 

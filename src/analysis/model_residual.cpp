@@ -7,7 +7,9 @@
 
 #include "momenta/common/error.hpp"
 #include "momenta/dynamics/crba.hpp"
+#include "momenta/dynamics/force_element_derivatives.hpp"
 #include "momenta/dynamics/rnea.hpp"
+#include "momenta/dynamics/rnea_derivatives.hpp"
 
 namespace momenta::analysis::detail {
 
@@ -84,6 +86,28 @@ void ModelResidual::residual_and_scale(double t, const VecX& q, const VecX& v, c
     elements = std::max(elements, std::abs(tau_plain[i] - r[k]));
   }
   scale = plain + elements;
+}
+
+void ModelResidual::derivatives(double t, const VecX& q, const VecX& v, const VecX& a_free,
+                                MatX& dr_dq, MatX& dr_dv) {
+  // The state and accelerations residual() differentiates, and the signals' values there.
+  residual(t, q, v, a_free, r_);
+  signal_values_.clear();
+  for (const model::SignalSample& s : system_.signal_samples()) signal_values_.push_back(s.value);
+
+  // r = ID(q, v, v̇) − Q(q, v): inverse dynamics without the elements, less the elements' force.
+  dynamics::rnea_derivatives(model_, data_, q_, v_, vdot_);
+  dynamics::force_element_derivatives(model_, data_, signal_values_);
+  dr_dq.resize(nf(), nf());
+  dr_dv.resize(nf(), nf());
+  for (int a = 0; a < nf(); ++a) {
+    const int i = free_[static_cast<std::size_t>(a)];
+    for (int b = 0; b < nf(); ++b) {
+      const int j = free_[static_cast<std::size_t>(b)];
+      dr_dq(a, b) = data_.dtau_dq(i, j) - data_.dQ_dq(i, j);
+      dr_dv(a, b) = data_.dtau_dv(i, j) - data_.dQ_dv(i, j);
+    }
+  }
 }
 
 MatX ModelResidual::free_mass(double t, const VecX& q) {

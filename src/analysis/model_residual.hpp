@@ -39,6 +39,11 @@ class ModelResidual {
   void residual_and_scale(double t, const VecX& q, const VecX& v, const VecX& a_free, VecX& r,
                           double& scale);
 
+  /// ∂r_f/∂δq_f and ∂r_f/∂v_f (nf × nf) at (t, q, v) with the free accelerations a_free, analytic:
+  /// rnea_derivatives less force_element_derivatives (dynamics/), on the free rows and columns.
+  void derivatives(double t, const VecX& q, const VecX& v, const VecX& a_free, MatX& dr_dq,
+                   MatX& dr_dv);
+
   /// M_ff (nf × nf) at q with the prescribed coordinates from their signals at t.
   MatX free_mass(double t, const VecX& q);
 
@@ -48,7 +53,8 @@ class ModelResidual {
   dynamics::Data data_;
   std::vector<int> free_;
   std::vector<double> offset_value_, offset_rate_, offset_acceleration_;
-  VecX q_, v_, vdot_;
+  VecX q_, v_, vdot_, r_;
+  std::vector<double> signal_values_;  // the signals' values at the last residual()
 };
 
 /// True when velocity coordinate i of the model is an angle (revolute, a cylindrical or planar

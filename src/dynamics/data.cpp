@@ -31,6 +31,24 @@ Data::Data(const Model& model) {
   axis_sin = VecX::Zero(static_cast<Eigen::Index>(model.joint_constants().size()));
   g = VecX::Zero(nv);
   M = MatX::Zero(nv, nv);
+  dV_W.assign(nb, Vec6::Zero());
+  dA_W.assign(nb, Vec6::Zero());
+  dF_W.assign(nb, Vec6::Zero());
+  dIc_W.assign(nb, Mat6::Zero());
+  dB_W.assign(nb, Mat6::Zero());
+  dS_W = MatX::Zero(6, nv);
+  dDeltaV_W = MatX::Zero(6, nv);
+  dX_W = MatX::Zero(6, nv);
+  dW_W = MatX::Zero(6, nv);
+  dtau_dq = MatX::Zero(nv, nv);
+  dtau_dv = MatX::Zero(nv, nv);
+  dvdot_dq = MatX::Zero(nv, nv);
+  dvdot_dv = MatX::Zero(nv, nv);
+  Minv = MatX::Zero(nv, nv);
+  dQ_dq = MatX::Zero(nv, nv);
+  dQ_dv = MatX::Zero(nv, nv);
+  dLoad_W.assign(nb, Vec6::Zero());
+  M_factor = Eigen::LLT<MatX>(nv);
   scratch_nv = VecX::Zero(nv);
   prescribed_mask.resize(nj);
   for (std::size_t j = 0; j < nj; ++j) {

@@ -8,10 +8,14 @@
 #include "momenta/common/error.hpp"
 #include "momenta/math/rotation.hpp"
 
+#include "force_element_geometry.hpp"
+
 namespace momenta::dynamics {
 
 namespace {
 
+using detail::kMinDirectionLength;
+using detail::relative_rotation_vector;
 using model::AppliedForce;
 using model::AppliedTorque;
 using model::BodyPoint;
@@ -19,11 +23,6 @@ using model::JointFriction;
 using model::LinearSpringDamper;
 using model::LoadFrame;
 using model::TorsionalSpringDamper;
-
-// Below this length (m) a linear spring's direction p_b − p_a is not computed: |d| comes from the
-// squared norm, which loses precision once it nears the underflow threshold (|d| ~ 1e-154). No
-// model has points this close on purpose; it is the coincident-points case.
-constexpr double kMinDirectionLength = 1e-100;
 
 // The scale of an applied load: its signal's value, or 1 without a signal.
 double load_scale(int signal_index, std::span<const double> signal_values) {
@@ -45,15 +44,6 @@ void add_force_at(const Data& data, const BodyPoint& P, const Vec3& f_W, std::sp
   const Vec3 f_B = data.X_WB[P.body_index].R.transpose() * f_W;
   f_ext[P.body_index].head<3>() += P.p_BoP_B.cross(f_B);
   f_ext[P.body_index].tail<3>() += f_B;
-}
-
-// Rotation vector θ (in B, |θ| ≤ π) of body b relative to body a, measured from R_AB_rest.
-Vec3 relative_rotation_vector(const Data& data, const TorsionalSpringDamper& e) {
-  const Mat3 R_AB = data.X_WB[e.body_a_index].R.transpose() * data.X_WB[e.body_b_index].R;
-  // R_AB = R_AB_rest · Exp(θ): θ is fixed by its own rotation, so its components are the same
-  // in B and in B's rest frame.
-  const Mat3 R_rest_B = e.R_AB_rest.transpose() * R_AB;
-  return quaternion_log(Quat(R_rest_B));
 }
 
 // Linear spring: the force on b's point, in W (the opposite force acts on a's point).

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "momenta/dynamics/aba.hpp"
+#include "momenta/dynamics/aba_derivatives.hpp"
 #include "momenta/dynamics/crba.hpp"
 #include "momenta/dynamics/data.hpp"
 #include "momenta/dynamics/energy.hpp"
@@ -19,6 +20,7 @@
 #include "momenta/dynamics/point_kinematics.hpp"
 #include "momenta/dynamics/reactions.hpp"
 #include "momenta/dynamics/rnea.hpp"
+#include "momenta/dynamics/rnea_derivatives.hpp"
 #include "momenta/frontend/model_loading.hpp"
 
 namespace {
@@ -84,6 +86,10 @@ int main(int argc, char** argv) {
   out["crba"] = to_json(MatX(dynamics::crba(model, data, q)));
   out["nonlinear_effects"] = to_json(VecX(dynamics::nonlinear_effects(model, data, q, v)));
   out["generalized_gravity"] = to_json(VecX(dynamics::generalized_gravity(model, data, q)));
+  dynamics::rnea_derivatives(model, data, q, v, vdot);
+  out["rnea_derivatives"] = {to_json(data.dtau_dq), to_json(data.dtau_dv), to_json(data.M)};
+  dynamics::aba_derivatives(model, data, q, v, tau);
+  out["aba_derivatives"] = {to_json(data.dvdot_dq), to_json(data.dvdot_dv), to_json(data.Minv)};
   dynamics::joint_reactions(model, data, q, v, vdot);
   out["joint_reactions"] = reactions(model, data);
 

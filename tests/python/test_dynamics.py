@@ -51,6 +51,10 @@ def test_every_algorithm_is_the_cpp_call_bit_for_bit(name):
     same(ws.aba(q, v, tau), ref["aba"])
     same(ws.rnea(q, v, vdot), ref["rnea"])
     same(ws.crba(q), ref["crba"])
+    for actual, expected in zip(ws.rnea_derivatives(q, v, vdot), ref["rnea_derivatives"]):
+        same(actual, expected)
+    for actual, expected in zip(ws.aba_derivatives(q, v, tau), ref["aba_derivatives"]):
+        same(actual, expected)
     same(ws.nonlinear_effects(q, v), ref["nonlinear_effects"])
     same(ws.generalized_gravity(q), ref["generalized_gravity"])
     for frame, expected in ref["joint_reactions"].items():
@@ -84,6 +88,34 @@ def test_rnea_inverts_aba(case):
     tau = rng.standard_normal(model.nv)
     vdot = ws.aba(q, v, tau)
     np.testing.assert_allclose(ws.rnea(q, v, vdot), tau, rtol=0, atol=TOL * (1 + np.abs(tau).max()))
+
+
+def test_derivatives_are_those_of_rnea_and_aba():
+    # The double pendulum (every coordinate an angle, so q + h e_k is the tangent step): central
+    # differences at h = 1e-5 (truncation h²/6 |f‴| ~ 1e-11, round-off ε|f|/h ~ 1e-11) against
+    # the analytic ∂/∂q to 1e-8 of the scale; τ and v̇ are quadratic in v, so ∂/∂v differences
+    # of step 1 are exact (round-off); M and M⁻¹ against crba.
+    model = momenta.load_model(EXAMPLES / "double_pendulum.yaml")
+    ws = momenta.Workspace(model)
+    rng = np.random.default_rng(3)
+    q, v, vdot, tau = (rng.standard_normal(model.nv) for _ in range(4))
+    dtau_dq, dtau_dv, M = ws.rnea_derivatives(q, v, vdot)
+    dvdot_dq, dvdot_dv, Minv = ws.aba_derivatives(q, v, tau)
+    assert all(x.shape == (model.nv, model.nv) for x in (dtau_dq, dtau_dv, M, dvdot_dq, dvdot_dv, Minv))
+    h = 1e-5
+    for k in range(model.nv):
+        e = np.zeros(model.nv)
+        e[k] = 1.0
+        d_tau = (ws.rnea(q + h * e, v, vdot) - ws.rnea(q - h * e, v, vdot)) / (2 * h)
+        d_vdot = (ws.aba(q + h * e, v, tau) - ws.aba(q - h * e, v, tau)) / (2 * h)
+        np.testing.assert_allclose(dtau_dq[:, k], d_tau, rtol=0, atol=1e-8 * np.abs(dtau_dq).max())
+        np.testing.assert_allclose(dvdot_dq[:, k], d_vdot, rtol=0, atol=1e-8 * np.abs(dvdot_dq).max())
+        d_tau_v = (ws.rnea(q, v + e, vdot) - ws.rnea(q, v - e, vdot)) / 2
+        d_vdot_v = (ws.aba(q, v + e, tau) - ws.aba(q, v - e, tau)) / 2
+        np.testing.assert_allclose(dtau_dv[:, k], d_tau_v, rtol=0, atol=1e-12 * np.abs(dtau_dv).max())
+        np.testing.assert_allclose(dvdot_dv[:, k], d_vdot_v, rtol=0, atol=1e-12 * np.abs(dvdot_dv).max())
+    np.testing.assert_allclose(M, ws.crba(q), rtol=0, atol=1e-14 * np.abs(M).max())
+    np.testing.assert_allclose(Minv @ M, np.eye(model.nv), rtol=0, atol=1e-13)
 
 
 def test_mass_matrix_columns_are_rnea_differences(case):

@@ -21,15 +21,17 @@
 // and 0 elsewhere (so T = 0 at rest).
 //
 // Derivatives (docs/analysis.md, "Model linearization"):
-//  - ∂/∂v: r is quadratic in v at fixed q (Coriolis and centrifugal terms quadratic, dampers
-//    linear), and for a quadratic the central difference [r(v + h) − r(v − h)] / 2h is the
-//    derivative exactly, for any h: round-off only (h = 1 rad/s or m/s).
+//  - K and C_v analytically: ∂r/∂δq and ∂r/∂v are rnea_derivatives (at v̇ = v̇₀) less
+//    force_element_derivatives (dynamics/), exact to round-off.
+//  - Output columns, ∂/∂v: outputs are at most quadratic in v at fixed q, and for a quadratic the
+//    central difference [y(v + h) − y(v − h)] / 2h is the derivative exactly, for any h: round-off
+//    only (h = 1 rad/s or m/s).
 //  - ∂/∂u: loads are linear in their signals' values, and a prescribed motion's rate enters
 //    quadratically and its acceleration linearly, so these central differences are exact too.
-//  - ∂/∂δq (and a prescribed motion's value): central differences with one Richardson
-//    extrapolation, R(h) = (4 D(h/2) − D(h)) / 3 = f' + O(h⁴); truncation ~h⁴ against round-off
-//    ~ε/h puts the best step near ε^(1/5) ≈ 7e-4 of the coordinate's scale: h = 1e-3 rad on
-//    angles and 1e-3·L on lengths, L the model's characteristic length. Error ~1e-12 relative.
+//  - Output columns ∂/∂δq, and a prescribed motion's value: central differences with one
+//    Richardson extrapolation, R(h) = (4 D(h/2) − D(h)) / 3 = f' + O(h⁴); truncation ~h⁴ against
+//    round-off ~ε/h puts the best step near ε^(1/5) ≈ 7e-4 of the coordinate's scale: h = 1e-3 rad
+//    on angles and 1e-3·L on lengths, L the model's characteristic length. Error ~1e-12 relative.
 //
 // Prescribed motion as an input. A prescribed coordinate p(t) (a road profile under a tire)
 // acts through its value, rate and acceleration: δv̇ = … + b₀ δp + b₁ δṗ + b₂ δp̈. The input is

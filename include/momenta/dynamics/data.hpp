@@ -17,6 +17,8 @@
 #include <utility>
 #include <vector>
 
+#include <Eigen/Cholesky>
+
 #include "momenta/math/spatial.hpp"
 #include "momenta/model/model.hpp"
 
@@ -71,6 +73,30 @@ struct Data {
   /// ancestors, merged into contiguous runs (one run for a serial chain). Fixed by the model.
   std::vector<std::vector<std::pair<int, int>>> support_ranges;
   bool all_dofs_related = true;  ///< Every pair of joints is ancestor-related (M has no zeros).
+
+  // --- Workspace of rnea_derivatives / aba_derivatives (world frame, about Wo) --------------
+  std::vector<Vec6> dV_W;   ///< Per body: spatial velocity V_WB in W.
+  std::vector<Vec6> dA_W;   ///< Per body: spatial acceleration shifted by −g, in W.
+  std::vector<Vec6> dF_W;   ///< Per body: net force of B's subtree, in W (after the pass).
+  std::vector<Mat6> dIc_W;  ///< Per body: composite inertia of B's subtree, in W.
+  std::vector<Mat6> dB_W;   ///< Per body: Σ over B's subtree of ∂(I V) ×* terms (the Coriolis
+                           ///< inertia Bᵢ x = −Iᵢ(Vᵢ × x) + x ×* Iᵢ Vᵢ + Vᵢ ×* Iᵢ x), in W.
+  /// 6 × nv per velocity coordinate k, in W: its motion-subspace column S_k, and the terms its
+  /// derivatives need (rnea_derivatives.cpp): ΔV_k = V_p × S_k, x_k = A_p × S_k − ΔV_k × V_p,
+  /// W_k = (V_s + V_p) × S_k, with V_p, A_p the velocity and acceleration of the frame before
+  /// the coordinate's stage of its joint and V_s after it.
+  MatX dS_W, dDeltaV_W, dX_W, dW_W;
+
+  // --- Results of rnea_derivatives / aba_derivatives -----------------------------------------
+  MatX dtau_dq;   ///< nv × nv: ∂τ/∂q on the tangent space (rnea_derivatives).
+  MatX dtau_dv;   ///< nv × nv: ∂τ/∂v (rnea_derivatives).
+  MatX dvdot_dq;  ///< nv × nv: ∂v̇/∂q on the tangent space (aba_derivatives).
+  MatX dvdot_dv;  ///< nv × nv: ∂v̇/∂v (aba_derivatives).
+  MatX Minv;      ///< nv × nv: M(q)⁻¹ = ∂v̇/∂τ (aba_derivatives).
+  MatX dQ_dq;     ///< nv × nv: ∂Q/∂q of the force elements (force_element_derivatives).
+  MatX dQ_dv;     ///< nv × nv: ∂Q/∂v of the force elements (force_element_derivatives).
+  std::vector<Vec6> dLoad_W;  ///< Per body: the force elements' wrench on B's subtree, in W.
+  Eigen::LLT<MatX> M_factor;  ///< aba_derivatives' Cholesky factor of M (sized nv).
 
   // --- Results -------------------------------------------------------------------------------
   VecX tau;   ///< nv: rnea's inverse dynamics; hybrid_dynamics' full generalized forces.

@@ -11,6 +11,7 @@
 #include "momenta/model/model_builder.hpp"
 #include "momenta/system/multibody_system.hpp"
 #include "momenta_test/hand_models.hpp"
+#include "momenta_test/tangent_differences.hpp"
 #include "momenta_test/tolerance.hpp"
 
 namespace momenta::analysis {
@@ -150,10 +151,9 @@ TEST(Linearize, PendulumAtAnAngleMatchesClosedForm) {
   const MatX& A = lin.system.A();
   EXPECT_EQ(A(0, 0), 0.0);
   EXPECT_EQ(A(0, 1), 1.0);
-  // Richardson: truncation h⁴/480·|f⁽⁵⁾| ≈ 2e-15 at h = 1e-3 rad, round-off ε/h ≈ 2e-13 of
-  // |r| ≈ m g l: 1e-11 relative leaves margin. A plain central difference at the same step
-  // would be off by (g/l) cos θ₀ h²/6 ≈ 1e-7 relative.
-  EXPECT_TRUE(test::relatively_near(A(1, 0), -(kG / l) * std::cos(theta0), 1e-11));
+  // Analytic (rnea_derivatives): round-off of a few operations, 4 ε relative. (The finite
+  // differences linearize used before reached 1e-11 here.)
+  EXPECT_TRUE(test::relatively_near(A(1, 0), -(kG / l) * std::cos(theta0), 4 * test::kEps));
   // Velocity: exact (quadratic in v); no velocity dependence here at all.
   EXPECT_EQ(A(1, 1), 0.0);
   // B from a load linear in its signal: exact to round-off of M⁻¹.
@@ -179,6 +179,32 @@ TEST(Linearize, MatchesFiniteDifferencesOfTheNonlinearAcceleration) {
     const MatX reference = finite_difference_A(model, p, 1e-6);
     const double scale = reference.cwiseAbs().maxCoeff();
     EXPECT_MATRIX_NEAR(lin.system.A(), reference, 1e-7 * scale) << "seed " << seed;
+  }
+}
+
+TEST(Linearize, AnalyticDerivativesMatchHighOrderDifferences) {
+  // linearize differentiates the equations of motion analytically (rnea_derivatives,
+  // force_element_derivatives): ∂v̇/∂δq against twice-extrapolated central differences of the
+  // simulator's own accelerations (tangent_differences.hpp, h = 0.01: ~1e-12 of the scale), on
+  // the mixed chain (every force element kind) and on a free body and a ball joint (quaternions).
+  for (const model::Model& model : {mixed_chain(), free_and_ball()}) {
+    system::MultibodySystem system(model);
+    for (unsigned seed : {1u, 2u, 3u}) {
+      const OperatingPoint p = moving_point(model, seed);
+      const LinearModel lin = linearize(model, p);
+      const int nv = model.nv();
+      VecX a(nv);
+      const MatX reference = test::tangent_jacobian(
+          model, p.q,
+          [&](const VecX& q) {
+            system.acceleration(p.t, q, p.v, a);
+            return VecX(a);
+          },
+          0.01);
+      const double scale = std::max(1.0, reference.cwiseAbs().maxCoeff());
+      EXPECT_MATRIX_NEAR(lin.system.A().bottomLeftCorner(nv, nv), reference, 1e-10 * scale)
+          << "nv " << nv << ", seed " << seed;
+    }
   }
 }
 
@@ -270,11 +296,12 @@ TEST(Linearize, SphericalPendulumAboutTheBottom) {
   const NormalModes nm = undamped_modes(lin);
   ASSERT_EQ(nm.modes.size(), 3u);
   EXPECT_EQ(nm.modes[0].natural_frequency, 0.0);
-  // Ascending: the larger pivot inertia (about y) first. Richardson accuracy ~1e-12.
+  // Ascending: the larger pivot inertia (about y) first. The stiffness is analytic, so the
+  // eigensolver's round-off is all that is left (1e-14).
   EXPECT_TRUE(
-      test::relatively_near(nm.modes[1].squared_frequency, m * kG * l / (Iyy + m * l * l), 1e-11));
+      test::relatively_near(nm.modes[1].squared_frequency, m * kG * l / (Iyy + m * l * l), 1e-14));
   EXPECT_TRUE(
-      test::relatively_near(nm.modes[2].squared_frequency, m * kG * l / (Ixx + m * l * l), 1e-11));
+      test::relatively_near(nm.modes[2].squared_frequency, m * kG * l / (Ixx + m * l * l), 1e-14));
 }
 
 // The quarter car written two ways: (1) wheel, body and road on their own prismatic joints to

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "momenta/dynamics/aba.hpp"
+#include "momenta/dynamics/aba_derivatives.hpp"
 #include "momenta/dynamics/crba.hpp"
 #include "momenta/dynamics/energy.hpp"
 #include "momenta/dynamics/hybrid_dynamics.hpp"
@@ -13,6 +14,7 @@
 #include "momenta/dynamics/point_kinematics.hpp"
 #include "momenta/dynamics/reactions.hpp"
 #include "momenta/dynamics/rnea.hpp"
+#include "momenta/dynamics/rnea_derivatives.hpp"
 #include "momenta_test/allocation_counter.hpp"
 #include "momenta_test/multibody_models.hpp"
 #include "momenta_test/tolerance.hpp"
@@ -56,6 +58,8 @@ TEST(DynamicsAllocation, AlgorithmsDoNotAllocate) {
   model::integrate(m, q, v, 0.1, q_out);
   model::difference(m, q, q_out, d);
   model::configuration_rate(m, q, v, qdot);
+  rnea_derivatives(m, data, q, v, a, f_ext);
+  aba_derivatives(m, data, q, v, a, f_ext);
   EXPECT_EQ(test::allocation_count() - before, 0);
 
   // Inputs that are parts of larger vectors (a stacked state [q; v], a mapped buffer) bind to
