@@ -94,6 +94,13 @@ void run(const ResponseOptions& o) {
   const LoadedLinearModel loaded = load_linear_model(model);
   const analysis::StateSpace& sys = loaded.linear.system;
   const analysis::TransferFunction tf = analysis::transfer_function(sys, 0, 0);
+  if (!o.bode.empty() && tf.gain == 0.0) {
+    // G ≡ 0 has no magnitude in dB to plot (−∞ everywhere).
+    throw InvalidArgument(fmt::format(
+        "--bode: the output '{}' does not respond to the input '{}' (G ≡ 0: no state the input "
+        "moves is seen by the output), so it has no Bode plot; try another --output",
+        o.output, o.input));
+  }
 
   // The samples, as CSV text and as JSON.
   std::string csv;

@@ -752,6 +752,17 @@ TEST_F(AnalysisCli, RotorInJointCoordinatesAboutItsSteadyMotion) {
   ASSERT_EQ(r.code, 0) << r.err;
   const json rj = json::parse(r.out);
   EXPECT_NEAR(rj.at("dc_gain").get<double>(), 1 / 3e5, 1e-9 / 3e5);
+  // Bearing B's y: its zeros (a double imaginary pair) are where Eigen's QZ cycles; they come
+  // from A − b c / d instead. The axial direction does not respond at all: no Bode plot, said so.
+  const CliRun by = momenta("response " + rotor +
+                            " --about steady --input hammer --output bearing_B.y --bode 10 1000");
+  EXPECT_EQ(by.code, 0) << by.err;
+  const CliRun bz = momenta("response " + rotor +
+                            " --about steady --input hammer --output bearing_B.z --bode 10 1000");
+  EXPECT_EQ(bz.code, 1);
+  EXPECT_NE(bz.err.find("'bearing_B.z' does not respond to the input 'hammer' (G ≡ 0"),
+            std::string::npos)
+      << bz.err;
   // An output that reads the spin angle is not one of the reduced model.
   const CliRun angle = momenta("linearize " + rotor + " --about steady --outputs spin.angle");
   EXPECT_EQ(angle.code, 1);
