@@ -37,9 +37,10 @@ struct ResponseOptions {
   std::optional<double> duration;
   std::optional<std::size_t> points;
   bool json = false;
-  // Significant digits of poles, zeros and gains in the text. The linearization behind them is by
-  // central differences, good to about 1e-10 relative: ten digits are the meaningful ones
-  // (0.02, not 0.019999999999999997); --json keeps every bit.
+  // Significant digits of poles, zeros and gains in the text. The linearization behind them is
+  // exact to round-off in the dynamics and ~1e-12 in the outputs (differences), and the eigenvalue
+  // solvers add their conditioning: ten digits are the meaningful ones (0.02, not
+  // 0.019999999999999997); --json keeps every bit.
   int digits = 10;
 };
 
@@ -224,7 +225,7 @@ void add_response_command(CLI::App& app) {
   command
       ->add_option("--digits", options->digits,
                    "Significant digits of poles, zeros, gains and step figures in the text "
-                   "(the linearization is good to about 1e-10; --json keeps every bit)")
+                   "(poles and zeros are good to about 1e-10; --json keeps every bit)")
       ->check(CLI::Range(1, 17));
   command
       ->add_option("--duration", options->duration,
