@@ -4,7 +4,9 @@
 
 namespace momenta::dynamics {
 
-Data::Data(const Model& model) {
+// M_factor is sized here, not assigned: Eigen's sized LLT leaves its status unset until compute(),
+// and moving it would read that.
+Data::Data(const Model& model) : M_factor(model.nv()) {
   const auto nb = static_cast<std::size_t>(model.num_bodies());
   const auto nj = static_cast<std::size_t>(model.num_joints());
   const int nv = model.nv();
@@ -48,7 +50,6 @@ Data::Data(const Model& model) {
   dQ_dq = MatX::Zero(nv, nv);
   dQ_dv = MatX::Zero(nv, nv);
   dLoad_W.assign(nb, Vec6::Zero());
-  M_factor = Eigen::LLT<MatX>(nv);
   scratch_nv = VecX::Zero(nv);
   prescribed_mask.resize(nj);
   for (std::size_t j = 0; j < nj; ++j) {
