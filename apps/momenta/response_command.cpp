@@ -95,7 +95,7 @@ void run(const ResponseOptions& o) {
   const LoadedLinearModel loaded = load_linear_model(model);
   const analysis::StateSpace& sys = loaded.linear.system;
   const analysis::TransferFunction tf = analysis::transfer_function(sys, 0, 0);
-  if (!o.bode.empty() && tf.gain == 0.0) {
+  if (!o.bode.empty() && tf.is_zero()) {
     // G ≡ 0 has no magnitude in dB to plot (−∞ everywhere).
     throw InvalidArgument(fmt::format(
         "--bode: the output '{}' does not respond to the input '{}' (G ≡ 0: no state the input "

@@ -106,7 +106,7 @@ int element_loads(const Data& data, const model::ForceElement& element,
         } else if constexpr (std::is_same_v<T, AppliedForce>) {
           // A world load keeps its direction; a follower load turns with its body.
           const int b = e.at.body_index;
-          const double scale = e.signal_index < 0 ? 1.0 : signal_values[e.signal_index];
+          const double scale = detail::load_scale(e.signal_index, signal_values);
           const Vec3 f = e.frame == LoadFrame::body ? Vec3(data.X_WB[b].R * (scale * e.vector))
                                                     : Vec3(scale * e.vector);
           const BodyMotion m = motion(b);
@@ -116,7 +116,7 @@ int element_loads(const Data& data, const model::ForceElement& element,
           return 1;
         } else if constexpr (std::is_same_v<T, AppliedTorque>) {
           const int b = e.body_index;
-          const double scale = e.signal_index < 0 ? 1.0 : signal_values[e.signal_index];
+          const double scale = detail::load_scale(e.signal_index, signal_values);
           const Vec3 n = e.frame == LoadFrame::body ? Vec3(data.X_WB[b].R * (scale * e.vector))
                                                     : Vec3(scale * e.vector);
           const BodyMotion m = motion(b);
@@ -230,8 +230,7 @@ void force_element_derivatives(const Model& model, Data& data,
       const Vec6 moved = cross_force(data.dS_W.col(vk), w);
       for (const auto& [start, length] : data.support_ranges[j]) {
         for (int m = start; m < start + length; ++m) {
-          const bool own = m >= c.v_index;
-          if (own && detail::joint_stage(c.type, m - c.v_index) >= stage_k) continue;
+          if (detail::support_stage(c, m) >= stage_k) continue;  // m is not above k
           data.dQ_dq(m, vk) += data.dS_W.col(m).dot(moved);
         }
       }

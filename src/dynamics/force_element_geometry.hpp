@@ -2,6 +2,8 @@
 // What force_element_forces and force_element_derivatives share about the elements' geometry
 // (private to src/dynamics).
 
+#include <span>
+
 #include "momenta/dynamics/data.hpp"
 #include "momenta/math/rotation.hpp"
 #include "momenta/model/force_element.hpp"
@@ -12,6 +14,11 @@ namespace momenta::dynamics::detail {
 // squared norm, which loses precision once it nears the underflow threshold (|d| ~ 1e-154). No
 // model has points this close on purpose; it is the coincident-points case.
 inline constexpr double kMinDirectionLength = 1e-100;
+
+// The scale of an applied load: its signal's value, or 1 without a signal.
+inline double load_scale(int signal_index, std::span<const double> signal_values) {
+  return signal_index < 0 ? 1.0 : signal_values[signal_index];
+}
 
 // Rotation vector θ (in B, |θ| ≤ π) of body b relative to body a, measured from R_AB_rest.
 inline Vec3 relative_rotation_vector(const Data& data, const model::TorsionalSpringDamper& e) {

@@ -15,6 +15,7 @@ namespace momenta::dynamics {
 namespace {
 
 using detail::kMinDirectionLength;
+using detail::load_scale;
 using detail::relative_rotation_vector;
 using model::AppliedForce;
 using model::AppliedTorque;
@@ -23,11 +24,6 @@ using model::JointFriction;
 using model::LinearSpringDamper;
 using model::LoadFrame;
 using model::TorsionalSpringDamper;
-
-// The scale of an applied load: its signal's value, or 1 without a signal.
-double load_scale(int signal_index, std::span<const double> signal_values) {
-  return signal_index < 0 ? 1.0 : signal_values[signal_index];
-}
 
 // Position and velocity of a body point in the world (the world's own points are at rest).
 Vec3 point_position_W(const Data& data, const BodyPoint& P) {

@@ -6,6 +6,7 @@
 // earlier stages' columns stay.
 
 #include "momenta/model/joint.hpp"
+#include "momenta/model/model.hpp"
 
 namespace momenta::dynamics::detail {
 
@@ -33,6 +34,13 @@ inline int joint_stage_count(model::JointType type) {
     default:
       return 1;
   }
+}
+
+/// The stage of velocity coordinate k (an index into v) seen from joint c, k being c's own or one
+/// of an ancestor's: its stage in c, or −1 for an ancestor's (every stage of which moves c).
+/// Coordinate k moves c's coordinate m exactly when support_stage(c, k) ≤ c's stage of m.
+inline int support_stage(const model::JointConstants& c, int k) {
+  return k >= c.v_index ? joint_stage(c.type, k - c.v_index) : -1;
 }
 
 }  // namespace momenta::dynamics::detail

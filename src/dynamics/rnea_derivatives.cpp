@@ -115,8 +115,7 @@ void rnea_derivatives(const Model& model, Data& data, VecRef q, VecRef v, VecRef
       const Vec6 H = Ic * data.dW_W.col(vm) + B * S_m;
       for (const auto& [start, length] : data.support_ranges[j]) {
         for (int k = start; k < start + length; ++k) {
-          const bool own = k >= c.v_index;
-          const int stage_k = own ? joint_stage(c.type, k - c.v_index) : -1;
+          const int stage_k = detail::support_stage(c, k);
           if (stage_k <= stage_m) {  // k moves m
             data.dtau_dq(vm, k) = IS_m.dot(data.dX_W.col(k)) + BtS_m.dot(data.dDeltaV_W.col(k));
             data.dtau_dv(vm, k) = IS_m.dot(data.dW_W.col(k)) + BtS_m.dot(data.dS_W.col(k));

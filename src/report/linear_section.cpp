@@ -141,7 +141,7 @@ json analysis_json(const io::ModelFile& file, const analysis::LinearModel& linea
   for (std::size_t i = 0; i < m; ++i) {
     for (std::size_t o = 0; o < p && static_cast<int>(pairs.size()) < kMaxPairs; ++o) {
       const analysis::TransferFunction tf = analysis::transfer_function(sys, i, o);
-      if (tf.gain == 0.0) continue;  // G ≡ 0: the output does not respond; nothing to plot
+      if (tf.is_zero()) continue;  // the output does not respond: nothing to plot
       const analysis::FrequencyResponse f =
           analysis::frequency_response(sys, i, o, low, high, kBodePoints);
       json zeros = json::array();
