@@ -2,7 +2,8 @@
 # Builds the libFuzzer harnesses of momenta's file readers with clang (AddressSanitizer +
 # UndefinedBehaviorSanitizer) and runs each one.
 #
-# Usage: scripts/fuzz.sh [SECONDS]        each harness for SECONDS (default 60), then exits
+# Usage: scripts/fuzz.sh [SECONDS]        each harness for SECONDS (default 60), one per core at a
+#                                          time (MOMENTA_FUZZ_JOBS=N for N), then exits
 #        MOMENTA_FUZZ_RUNS=1000000 scripts/fuzz.sh   each harness for that many executions
 #
 # Each harness first replays tests/fuzz/regressions/<harness>/ (inputs that once crashed: they
@@ -39,19 +40,44 @@ declare -A corpora=(
   [urdf]="$(seed urdf tests/data/models/urdf/*.urdf)"
   [mjcf]="$(seed mjcf tests/data/models/mjcf/*.xml)"
 )
-for harness in "${harnesses[@]}"; do
-  binary=build-fuzz/tests/fuzz/${harness}_fuzz
-  regressions=tests/fuzz/regressions/$harness
+# One harness per core at a time (MOMENTA_FUZZ_JOBS to change): each still fuzzes for SECONDS,
+# the whole run takes SECONDS × harnesses / cores. Their reports are printed in order at the end.
+fuzz_harness() {
+  local harness=$1
+  local binary=build-fuzz/tests/fuzz/${harness}_fuzz
+  local regressions=tests/fuzz/regressions/$harness
   if compgen -G "$regressions/*" >/dev/null; then
     echo "== $harness: replaying $regressions"
     "$binary" "$regressions"/* 2>&1 | tail -n 2
   fi
-  limit=(-max_total_time="$seconds")
+  local limit=(-max_total_time="$seconds")
   [[ -n "${MOMENTA_FUZZ_RUNS:-}" ]] && limit=(-runs="$MOMENTA_FUZZ_RUNS")
   echo "== $harness: fuzzing ${limit[*]}"
   "$binary" "${corpora[$harness]}" "${limit[@]}" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
     -artifact_prefix=build-fuzz/artifacts/"$harness"- -print_final_stats=1 2>&1 |
     grep -E "^(#[0-9]+.*DONE|stat::number_of_executed_units|stat::average_exec_per_sec|==[0-9]+==ERROR|SUMMARY)" || true
   # libFuzzer exits non-zero on a finding; pipefail carries it here.
+}
+logs=build-fuzz/logs
+rm -rf "$logs"
+mkdir -p "$logs"
+at_once=${MOMENTA_FUZZ_JOBS:-$(nproc)}
+for harness in "${harnesses[@]}"; do
+  while (($(jobs -rp | wc -l) >= at_once)); do wait -n || true; done
+  (
+    status=0
+    fuzz_harness "$harness" >"$logs/$harness.log" 2>&1 || status=$?
+    echo "$status" >"$logs/$harness.status"
+  ) &
 done
+wait
+failed=()
+for harness in "${harnesses[@]}"; do
+  cat "$logs/$harness.log"
+  [[ "$(cat "$logs/$harness.status" 2>/dev/null)" == 0 ]] || failed+=("$harness")
+done
+if ((${#failed[@]} > 0)); then
+  echo "fuzz: FAILED: ${failed[*]} (inputs in build-fuzz/artifacts/)" >&2
+  exit 1
+fi
 echo "fuzz: all harnesses clean"

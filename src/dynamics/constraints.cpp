@@ -216,7 +216,10 @@ void write_coupler(const JointCoupler& c, const Model& model, VecRef q, RowWrite
                 -c.ratio);
 }
 
-// G's rows of the wrench rows: G_i = Σ over the joints supporting b of wᵀ s − the same for a.
+// G's rows of the wrench rows: G_i = w_iᵀ (J_b − J_a), with J a body's Jacobian — the
+// motion-subspace columns in W of the joints supporting it. A constraint's rows share their
+// bodies, so they are formed together, Wᵀ (6 × run) times the columns of each contiguous run of
+// the supports (Data::support_ranges).
 void assemble_jacobian(const Model& model, const Data& data, ConstraintRows& rows) {
   for (int j = 0; j < model.num_joints(); ++j) {
     const auto& c = model.joint_constants()[j];
@@ -224,20 +227,31 @@ void assemble_jacobian(const Model& model, const Data& data, ConstraintRows& row
       rows.S_world.col(c.v_index + k) = data.X_WB[c.child].act_motion(data.S[j].col(k));
     }
   }
-  for (int i = 0; i < rows.count; ++i) {
-    if (rows.body_a[i] == rows.body_b[i]) continue;  // a coupler's row is written already
-    auto g = rows.G.row(i);
+  const auto is_coupler = [&](int i) { return rows.body_a[i] == rows.body_b[i]; };
+  for (int first = 0; first < rows.count;) {
+    if (is_coupler(first)) {  // a coupler's row is written already
+      ++first;
+      continue;
+    }
+    int end = first + 1;
+    while (end < rows.count && !is_coupler(end) && rows.body_a[end] == rows.body_a[first] &&
+           rows.body_b[end] == rows.body_b[first] && end - first < 6)
+      ++end;
+    const int n = end - first;
+    Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor, 6, 6> W_t(n, 6);
+    for (int r = 0; r < n; ++r) W_t.row(r) = rows.wrench_W[first + r].transpose();
+    auto g = rows.G.middleRows(first, n);
     g.setZero();
-    const Vec6& w = rows.wrench_W[i];
     const auto add_support = [&](int body, double sign) {
-      for (; body > 0; body = model.parent(body)) {
-        const auto& c = model.joint_constants()[body - 1];
-        for (int k = 0; k < c.nv; ++k)
-          g[c.v_index + k] += sign * w.dot(rows.S_world.col(c.v_index + k));
+      if (body == 0) return;
+      for (const auto& [start, size] : data.support_ranges[body - 1]) {
+        g.middleCols(start, size).noalias() +=
+            (sign * W_t).lazyProduct(rows.S_world.middleCols(start, size));
       }
     };
-    add_support(rows.body_b[i], 1.0);
-    add_support(rows.body_a[i], -1.0);
+    add_support(rows.body_b[first], 1.0);
+    add_support(rows.body_a[first], -1.0);
+    first = end;
   }
 }
 
@@ -335,18 +349,22 @@ void constraint_forces(const Model& model, const Data& data, const ConstraintRow
 void add_constraint_forces(const Model& model, const Data& data, const ConstraintRows& rows,
                            VecRef lambda, std::span<Vec6> f_ext, VecX& tau) {
   (void)model;
-  for (int i = 0; i < rows.count; ++i) {
-    const Vec6& w = rows.wrench_W[i];
-    if (rows.body_a[i] == rows.body_b[i]) {  // a coupler: a generalized force
-      tau.noalias() += rows.G.row(i).transpose() * lambda[i];
+  // Rows that share their bodies (a constraint's) add one wrench, carried into each body once.
+  for (int first = 0; first < rows.count;) {
+    const int a = rows.body_a[first], b = rows.body_b[first];
+    if (a == b) {  // a coupler: a generalized force
+      tau.noalias() += rows.G.row(first).transpose() * lambda[first];
+      ++first;
       continue;
     }
-    const Vec6 f = w * lambda[i];
+    Vec6 f = rows.wrench_W[first] * lambda[first];
+    int end = first + 1;
+    for (; end < rows.count && rows.body_a[end] == a && rows.body_b[end] == b; ++end)
+      f += rows.wrench_W[end] * lambda[end];
+    first = end;
     // W about Wo → B about Bo.
-    if (rows.body_b[i] != 0)
-      f_ext[rows.body_b[i]] += data.X_WB[rows.body_b[i]].act_force_inverse(f);
-    if (rows.body_a[i] != 0)
-      f_ext[rows.body_a[i]] -= data.X_WB[rows.body_a[i]].act_force_inverse(f);
+    if (b != 0) f_ext[b] += data.X_WB[b].act_force_inverse(f);
+    if (a != 0) f_ext[a] -= data.X_WB[a].act_force_inverse(f);
   }
 }
 

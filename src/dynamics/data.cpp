@@ -24,6 +24,8 @@ Data::Data(const Model& model) : M_factor(model.nv()) {
   U.assign(nj, Mat6::Zero());
   Dinv.assign(nj, Mat6::Zero());
   u.assign(nj, Vec6::Zero());
+  solve_f.assign(nb, SolveColumns::Zero());
+  solve_a.assign(nb, SolveColumns::Zero());
   I_composite.assign(nb, SpatialInertia());
   S_W = MatX::Zero(nv, 6);
   tau = VecX::Zero(nv);

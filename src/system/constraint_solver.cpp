@@ -6,7 +6,9 @@
 #include <fmt/format.h>
 
 #include "momenta/common/error.hpp"
+#include "momenta/dynamics/articulated_solve.hpp"
 #include "momenta/dynamics/crba.hpp"
+#include "momenta/dynamics/hybrid_dynamics.hpp"
 #include "momenta/dynamics/kinematics.hpp"
 #include "ordered_cholesky.hpp"
 
@@ -50,6 +52,8 @@ ConstraintSolver::ConstraintSolver(const model::Model& model)
   G_f_ = MatX::Zero(m, nf);
   W_ = MatX::Zero(nf, m);
   A_ = MatX::Zero(m, m);
+  Y_ = MatX::Zero(model.nv(), m);
+  if (model.has_prescribed_joints()) prescribed_ = dynamics::prescribed_joint_mask(model);
   dv_ = VecX::Zero(nf);
   all_rows_.assign(m, 1);
   position_rows_.assign(rows_.holonomic.begin(), rows_.holonomic.end());
@@ -124,18 +128,33 @@ void ConstraintSolver::find_redundant_rows(dynamics::Data& data, VecRef q) {
 bool ConstraintSolver::correct_accelerations(dynamics::Data& data, VecRef q, VecX& vdot) {
   dynamics::constraint_equations(model_, data, q, rows_,
                                  dynamics::RowTerms::with_velocity_products);
-  gather_free_columns();
-  factor_mass_matrix(data, q);
-  factor_rows(all_rows_);
+  if (method_ == AccelerationMethod::articulated) {
+    factor_rows_articulated(data);
+  } else {
+    gather_free_columns();
+    factor_mass_matrix(data, q);
+    factor_rows(all_rows_);
+  }
   if (cholesky_->rank() < reference_rank_) return false;
   // λ from (G M⁻¹ Gᵀ) λ = −k − G v̇₀ (the full G: prescribed accelerations enter too).
   rhs_.noalias() = -rows_.bias;
   rhs_.noalias() -= rows_.G * vdot;
   cholesky_->solve_in_place(rhs_);
   lambda_ = rhs_;
+  if (method_ == AccelerationMethod::articulated) {
+    vdot.noalias() += Y_ * lambda_;
+    return true;
+  }
   apply_row_forces(lambda_);
   for (int c = 0; c < static_cast<int>(free_.size()); ++c) vdot[free_[c]] += dv_[c];
   return true;
+}
+
+void ConstraintSolver::factor_rows_articulated(dynamics::Data& data) {
+  Y_ = rows_.G.transpose();
+  dynamics::articulated_solve(model_, data, prescribed_, Y_);
+  A_.noalias() = rows_.G.lazyProduct(Y_);
+  cholesky_->factorize(A_, kDependentRow);
 }
 
 NumericalError ConstraintSolver::singular_configuration_error(double t) const {

@@ -64,6 +64,13 @@ struct Data {
   std::vector<Mat6> Dinv;  ///< (Sᵀ IA S)⁻¹ per joint (leading nv × nv block).
   std::vector<Vec6> u;     ///< τ − Sᵀ pA per joint (leading nv entries).
 
+  // --- Workspace of articulated_solve (kSolveColumns columns at a time) ------------------------
+  static constexpr int kSolveColumns = 4;
+  using SolveColumns = Eigen::Matrix<double, 6, kSolveColumns>;
+  /// Per body: the forces its subtree passes to its joint, in B (zero between calls).
+  std::vector<SolveColumns> solve_f;
+  std::vector<SolveColumns> solve_a;  ///< Per body: its spatial accelerations, in B.
+
   // --- Workspace of crba -----------------------------------------------------------------------
   std::vector<SpatialInertia> I_composite;  ///< Composite inertia of B's subtree, in B about Bo.
   /// nv × 6: row k is velocity coordinate k's motion-subspace column in W about Wo, transposed

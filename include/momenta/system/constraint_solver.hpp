@@ -10,9 +10,12 @@
 //
 //     M v̇ = τ − h + Gᵀλ,  G v̇ + k = 0   ⇒   (G M⁻¹ Gᵀ) λ = −k − G v̇₀,   v̇ = v̇₀ + M⁻¹ Gᵀ λ,
 //
-// M by CRBA and its Cholesky factor, G M⁻¹ Gᵀ by a Cholesky factorization in row order that
-// skips rows depending on earlier ones (they carry no force: λ = 0; dependent rows are redundant
-// and name themselves, see redundant_rows()).
+// M⁻¹ Gᵀ by the articulated-body factors the forward dynamics left behind (one pair of 6-vector
+// passes per row, dynamics/articulated_solve.hpp: O(n m), M never formed), and G M⁻¹ Gᵀ by a
+// Cholesky factorization in row order that skips rows depending on earlier ones (they carry no
+// force: λ = 0; dependent rows are redundant and name themselves, see redundant_rows()). The
+// former method — M by CRBA and its dense Cholesky factor, O(n³) — stays selectable
+// (AccelerationMethod::dense) as the independent check; the two agree to round-off.
 //
 // Projection (Hairer, Lubich & Wanner, Geometric Numerical Integration, §IV.4; Ascher et al.
 // 1995), after every step: positions by Newton's method on φ(q) = 0 with the step of least
@@ -64,6 +67,12 @@ struct ConstraintResiduals {
   double velocity = 0.0;
 };
 
+/// How correct_accelerations forms M⁻¹ Gᵀ.
+enum class AccelerationMethod {
+  articulated,  ///< by the articulated-body factors of aba / hybrid_dynamics: O(n m) (default)
+  dense,        ///< by CRBA and a dense Cholesky factor of M: O(n³); the check
+};
+
 class ConstraintSolver {
  public:
   /// Sizes every workspace for `model` (which must outlive the solver) and finds the rows that
@@ -83,9 +92,15 @@ class ConstraintSolver {
   /// initial one, or the last consistent_state()): redundant, they carry no force.
   const std::vector<std::string>& redundant_rows() const { return redundant_; }
 
+  /// Chooses how correct_accelerations forms M⁻¹ Gᵀ (AccelerationMethod::articulated unless
+  /// set).
+  void set_acceleration_method(AccelerationMethod method) { method_ = method; }
+
   /// Corrects the unconstrained accelerations vdot (size nv; prescribed coordinates kept) at
-  /// (t, q, v) to the constrained ones, stores λ and returns true. `data` holds the kinematics
-  /// of (q, v) as aba or hybrid_dynamics leave them; crba overwrites its mass matrix. Returns
+  /// (t, q, v) to the constrained ones, stores λ and returns true. `data` holds what aba(q, v, …)
+  /// — or, where the model has prescribed joints, hybrid_dynamics(q, v, …) with data's
+  /// prescribed_mask — left in it (kinematics and articulated-body factors); the dense method's
+  /// crba overwrites its mass matrix. Returns
   /// false, vdot and λ undetermined, at a singular configuration — fewer independent rows than
   /// at the reference (a four-bar at a dead point): the rows there do not fix the accelerations
   /// (MultibodySystem takes their limit along the motion). No allocation.
@@ -140,12 +155,17 @@ class ConstraintSolver {
                             ConsistentState& report);
   // dv_ = M⁻¹ G_fᵀ λ (the free coordinates' accelerations of row forces λ).
   void apply_row_forces(const VecX& lambda);
+  // Y = M⁻¹ Gᵀ by articulated_solve on data's factors, and A = G Y factorized in row order.
+  void factor_rows_articulated(dynamics::Data& data);
 
   const model::Model& model_;
   dynamics::ConstraintRows rows_;
   std::vector<int> free_;  // velocity indices not prescribed
   std::vector<char> all_rows_, position_rows_;
   MatX M_ff_, G_f_, W_, A_;  // W = L⁻¹ G_fᵀ with M_ff = L Lᵀ; A = Wᵀ W
+  MatX Y_;                   // nv × rows: M⁻¹ Gᵀ (articulated; 0 on prescribed coordinates)
+  std::vector<char> prescribed_;  // per joint, or empty when none is prescribed
+  AccelerationMethod method_ = AccelerationMethod::articulated;
   Eigen::LLT<MatX> llt_;
   VecX lambda_, rhs_, dv_, delta_, q_saved_;
   std::unique_ptr<detail::OrderedCholesky> cholesky_;

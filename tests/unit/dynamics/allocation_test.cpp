@@ -6,6 +6,7 @@
 
 #include "momenta/dynamics/aba.hpp"
 #include "momenta/dynamics/aba_derivatives.hpp"
+#include "momenta/dynamics/articulated_solve.hpp"
 #include "momenta/dynamics/crba.hpp"
 #include "momenta/dynamics/energy.hpp"
 #include "momenta/dynamics/hybrid_dynamics.hpp"
@@ -32,7 +33,7 @@ TEST(DynamicsAllocation, AlgorithmsDoNotAllocate) {
   std::vector<Vec6> f_ext(m.num_bodies(), Vec6::Ones());
   std::vector<char> mask(m.num_joints(), 0);
   mask[1] = mask[4] = 1;
-  MatX J(6, m.nv());
+  MatX J(6, m.nv()), X = MatX::Ones(m.nv(), 3);
   VecX q_out(m.nq()), d(m.nv()), qdot(m.nq());
   const long before = test::allocation_count();
   forward_kinematics(m, data, q);
@@ -60,6 +61,10 @@ TEST(DynamicsAllocation, AlgorithmsDoNotAllocate) {
   model::configuration_rate(m, q, v, qdot);
   rnea_derivatives(m, data, q, v, a, f_ext);
   aba_derivatives(m, data, q, v, a, f_ext);
+  aba(m, data, q, v, a);
+  articulated_solve(m, data, {}, X);
+  hybrid_dynamics(m, data, mask, q, v, a, a);
+  articulated_solve(m, data, mask, X);
   EXPECT_EQ(test::allocation_count() - before, 0);
 
   // Inputs that are parts of larger vectors (a stacked state [q; v], a mapped buffer) bind to

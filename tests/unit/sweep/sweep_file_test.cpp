@@ -1,6 +1,7 @@
 // Sweep files (io/sweep_file.hpp) and what the runner checks before any run
 // (sweep/runner.hpp): every mistake is refused at its line, before a run starts.
 
+#include <cmath>
 #include <fstream>
 #include <string>
 

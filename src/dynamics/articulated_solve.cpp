@@ -1,0 +1,122 @@
+#include "momenta/dynamics/articulated_solve.hpp"
+
+#include "argument_checks.hpp"
+#include "forward_pass.hpp"
+
+namespace momenta::dynamics {
+namespace {
+
+using VecN = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
+constexpr int kGroup = Data::kSolveColumns;
+
+// Up to kGroup columns of X go through the passes together: each body's step is a chain of
+// dependent operations on its parent's (or child's) result, and a second, independent column
+// fills the wait (one column alone takes twice as long per body).
+struct Columns {
+  double* x[kGroup];
+  int count = 0;
+};
+
+// Leaves to root: x_j ← u_j = x_j − S_jᵀ p_i, and the force each joint passes on to its parent,
+// p_λ += ᵖX_i* (p_i + U_j D_j⁻¹ u_j). Each body's forces are zeroed once passed on (they start
+// and end at zero).
+void pass_forces(const Model& model, Data& data, std::span<const char> prescribed,
+                 const Columns& cols) {
+  const auto& joints = model.joint_constants();
+  for (int j = static_cast<int>(joints.size()) - 1; j >= 0; --j) {
+    const auto& c = joints[j];
+    auto& p = data.solve_f[c.child];
+    const bool held = !prescribed.empty() && prescribed[j];
+    for (int k = 0; k < cols.count; ++k) {
+      double* x = cols.x[k] + c.v_index;
+      auto p_k = p.col(k);
+      if (c.nv == 1 && !held) {
+        const double u = x[0] - (c.S_basis >= 0 ? p_k[c.S_basis] : data.S[j].col(0).dot(p_k));
+        x[0] = u;
+        p_k.noalias() += data.U[j].col(0) * (data.Dinv[j](0, 0) * u);
+      } else if (c.nv > 0 && !held) {
+        const int n = c.nv;
+        auto u = Eigen::Map<VecN>(x, n);
+        u.noalias() -= data.S[j].leftCols(n).transpose() * p_k;
+        const VecN Dinv_u = data.Dinv[j].topLeftCorner(n, n) * u;
+        p_k.noalias() += data.U[j].leftCols(n) * Dinv_u;
+      }
+    }
+    if (c.parent != 0) {
+      auto& to = data.solve_f[c.parent];
+      for (int k = 0; k < cols.count; ++k) {
+        double f[6];
+        detail::to_parent(c, data.X_PB[c.child], p.col(k).data(), f);
+        for (int r = 0; r < 6; ++r) to(r, k) += f[r];
+      }
+    }
+    p.leftCols(cols.count).setZero();
+  }
+}
+
+// Root to leaves: a_i = ⁱX_λ a_λ, ẍ_j = D_j⁻¹ (u_j − U_jᵀ a_i) written over u_j, a_i += S_j ẍ_j;
+// a prescribed joint's ẍ_j is 0.
+void pass_accelerations(const Model& model, Data& data, std::span<const char> prescribed,
+                        const Columns& cols) {
+  const auto& joints = model.joint_constants();
+  const Vec6 at_rest = Vec6::Zero();
+  for (int j = 0; j < static_cast<int>(joints.size()); ++j) {
+    const auto& c = joints[j];
+    auto& a = data.solve_a[c.child];
+    const bool held = !prescribed.empty() && prescribed[j];
+    for (int k = 0; k < cols.count; ++k) {
+      auto a_k = a.col(k);
+      detail::to_child(c, data.X_PB[c.child],
+                       c.parent == 0 ? at_rest.data() : data.solve_a[c.parent].col(k).data(),
+                       a_k.data());
+      double* x = cols.x[k] + c.v_index;
+      if (c.nv == 0) continue;
+      if (held) {
+        for (int r = 0; r < c.nv; ++r) x[r] = 0.0;
+      } else if (c.nv == 1) {
+        const double xdd = data.Dinv[j](0, 0) * (x[0] - data.U[j].col(0).dot(a_k));
+        x[0] = xdd;
+        if (c.S_basis >= 0) {
+          a_k[c.S_basis] += xdd;
+        } else {
+          a_k.noalias() += data.S[j].col(0) * xdd;
+        }
+      } else {
+        const int n = c.nv;
+        auto u = Eigen::Map<VecN>(x, n);
+        const VecN xdd =
+            data.Dinv[j].topLeftCorner(n, n) * (u - data.U[j].leftCols(n).transpose() * a_k);
+        u = xdd;
+        a_k.noalias() += data.S[j].leftCols(n) * xdd;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void articulated_solve(const Model& model, Data& data, std::span<const char> prescribed,
+                       Eigen::Ref<MatX> X) {
+  detail::check_size("articulated_solve", "data (built for another model?)",
+                     static_cast<long>(data.X_WB.size()), model.num_bodies(), "one pose per body");
+  detail::check_size("articulated_solve", "X (rows)", static_cast<long>(X.rows()), model.nv(),
+                     "nv");
+  if (!prescribed.empty()) {
+    detail::check_size("articulated_solve", "prescribed", static_cast<long>(prescribed.size()),
+                       model.num_joints(), "one flag per joint");
+  }
+  Columns cols;
+  const auto solve = [&] {
+    pass_forces(model, data, prescribed, cols);
+    pass_accelerations(model, data, prescribed, cols);
+    cols.count = 0;
+  };
+  for (Eigen::Index k = 0; k < X.cols(); ++k) {
+    if (X.col(k).isZero(0.0)) continue;  // M⁻¹ 0 = 0: a row that exerts no force here is free
+    cols.x[cols.count++] = X.col(k).data();
+    if (cols.count == kGroup) solve();
+  }
+  if (cols.count > 0) solve();
+}
+
+}  // namespace momenta::dynamics
