@@ -53,10 +53,15 @@ fuzz_harness() {
   local limit=(-max_total_time="$seconds")
   [[ -n "${MOMENTA_FUZZ_RUNS:-}" ]] && limit=(-runs="$MOMENTA_FUZZ_RUNS")
   echo "== $harness: fuzzing ${limit[*]}"
+  # libFuzzer exits non-zero on a finding: that status is the harness's (the summary's grep must
+  # not hide it).
+  local status=0
   "$binary" "${corpora[$harness]}" "${limit[@]}" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
-    -artifact_prefix=build-fuzz/artifacts/"$harness"- -print_final_stats=1 2>&1 |
-    grep -E "^(#[0-9]+.*DONE|stat::number_of_executed_units|stat::average_exec_per_sec|==[0-9]+==ERROR|SUMMARY)" || true
-  # libFuzzer exits non-zero on a finding; pipefail carries it here.
+    -artifact_prefix=build-fuzz/artifacts/"$harness"- -print_final_stats=1 \
+    >"$logs/$harness.fuzz" 2>&1 || status=$?
+  grep -E "^(#[0-9]+.*DONE|stat::number_of_executed_units|stat::average_exec_per_sec|==[0-9]+==ERROR|SUMMARY)" \
+    "$logs/$harness.fuzz" || true
+  return "$status"
 }
 logs=build-fuzz/logs
 rm -rf "$logs"
