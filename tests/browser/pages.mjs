@@ -35,6 +35,11 @@ export async function launchBrowser() {
   });
 }
 
+// How long a page may take to come up. Generous: the tests say whether a report opens and what
+// it shows, report_bench.mjs how fast; a loaded machine (a sanitizer test suite running beside
+// this one on two cores) once took more than 30 s to load one report.
+export const kLoadLimitMs = 120000;
+
 // Opens a report and waits for its test hook. `interactiveMs` runs from the request to the first
 // moment the page's main thread answers after the hook is ready (the first 3-D frame, which
 // compiles the shaders, included).
@@ -47,9 +52,13 @@ export async function openReport(browser, file, { beforeLoad = null } = {}) {
   page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
   page.on('requestfailed', (r) => problems.push(`failed request: ${r.url()}`));
   page.on('request', (r) => { if (r.url() !== `file://${file}`) problems.push(`request: ${r.url()}`); });
+  page.setDefaultTimeout(kLoadLimitMs);
+  page.setDefaultNavigationTimeout(kLoadLimitMs);
   const started = Date.now();
   try {
-    await page.goto(`file://${file}`, { waitUntil: 'load' });
+    // Firefox's first try keeps 30 s: see below.
+    await page.goto(`file://${file}`,
+                    { waitUntil: 'load', timeout: browserName === 'firefox' ? 30000 : kLoadLimitMs });
   } catch (error) {
     // Firefox ESR under WebDriver BiDi now and then never reports 'load' for a local file that
     // opens at once on the next try (seen once in three runs of the suite here, in the framing
@@ -59,7 +68,7 @@ export async function openReport(browser, file, { beforeLoad = null } = {}) {
     console.error(`firefox: no 'load' for ${file} in 30 s; opening it once more`);
     await page.goto(`file://${file}`, { waitUntil: 'load' });
   }
-  await page.waitForFunction(() => window.momentaReport && window.momentaReport.ready, { timeout: 20000, polling: 20 });
+  await page.waitForFunction(() => window.momentaReport && window.momentaReport.ready, { timeout: kLoadLimitMs, polling: 20 });
   await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => setTimeout(done, 0))));
   const interactiveMs = Date.now() - started;
   return { page, problems, interactiveMs };

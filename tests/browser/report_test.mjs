@@ -18,7 +18,9 @@ import fs from 'node:fs';
 import path from 'node:path';
 import assert from 'node:assert/strict';
 import { test, after, before } from 'node:test';
-import { canvasDigest, chainModel, examples, launchBrowser, momenta, openReport, run } from './pages.mjs';
+import {
+  canvasDigest, chainModel, examples, kLoadLimitMs, launchBrowser, momenta, openReport, run,
+} from './pages.mjs';
 
 const sourceDir = process.env.MOMENTA_SOURCE_DIR;
 const artifacts = process.env.MOMENTA_ARTIFACTS;
@@ -40,7 +42,7 @@ const open = (file) => openReport(browser, file);
 
 // The 3-D view has drawn its first frame (shaders compiled) once the hook's frame count moves.
 async function firstFrame(page) {
-  await page.waitForFunction(() => window.momentaReport.framesDrawn() > 1, { timeout: 20000, polling: 20 });
+  await page.waitForFunction(() => window.momentaReport.framesDrawn() > 1, { timeout: kLoadLimitMs, polling: 20 });
 }
 
 async function screenshots(page, name) {
