@@ -20,11 +20,16 @@ inline void check_size(const char* algorithm, const char* argument, long given, 
   }
 }
 
+/// data built for a model of this size.
+inline void check_data(const char* algorithm, const Model& model, const Data& data) {
+  check_size(algorithm, "data (built for another model?)", static_cast<long>(data.X_WB.size()),
+             model.num_bodies(), "one pose per body");
+}
+
 /// data built for a model of this size; q of size nq.
 inline void check_data_and_q(const char* algorithm, const Model& model, const Data& data,
                              VecRef q) {
-  check_size(algorithm, "data (built for another model?)", static_cast<long>(data.X_WB.size()),
-             model.num_bodies(), "one pose per body");
+  check_data(algorithm, model, data);
   check_size(algorithm, "q", q.size(), model.nq(), "nq");
 }
 

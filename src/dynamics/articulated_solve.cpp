@@ -97,8 +97,7 @@ void pass_accelerations(const Model& model, Data& data, std::span<const char> pr
 
 void articulated_solve(const Model& model, Data& data, std::span<const char> prescribed,
                        Eigen::Ref<MatX> X) {
-  detail::check_size("articulated_solve", "data (built for another model?)",
-                     static_cast<long>(data.X_WB.size()), model.num_bodies(), "one pose per body");
+  detail::check_data("articulated_solve", model, data);
   detail::check_size("articulated_solve", "X (rows)", static_cast<long>(X.rows()), model.nv(),
                      "nv");
   if (!prescribed.empty()) {

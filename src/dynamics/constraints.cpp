@@ -1,6 +1,7 @@
 #include "momenta/dynamics/constraints.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -216,9 +217,16 @@ void write_coupler(const JointCoupler& c, const Model& model, VecRef q, RowWrite
                 -c.ratio);
 }
 
+// The rows [first, end) of constraint k.
+std::pair<int, int> rows_of(const ConstraintRows& rows, int k) {
+  const int first = rows.first_row[k];
+  const bool last = k + 1 == static_cast<int>(rows.first_row.size());
+  return {first, last ? rows.count : rows.first_row[k + 1]};
+}
+
 // G's rows of the wrench rows: G_i = w_iᵀ (J_b − J_a), with J a body's Jacobian — the
 // motion-subspace columns in W of the joints supporting it. A constraint's rows share their
-// bodies, so they are formed together, Wᵀ (6 × run) times the columns of each contiguous run of
+// bodies, so they are formed together, Wᵀ (6 × rows) times the columns of each contiguous run of
 // the supports (Data::support_ranges).
 void assemble_jacobian(const Model& model, const Data& data, ConstraintRows& rows) {
   for (int j = 0; j < model.num_joints(); ++j) {
@@ -227,16 +235,10 @@ void assemble_jacobian(const Model& model, const Data& data, ConstraintRows& row
       rows.S_world.col(c.v_index + k) = data.X_WB[c.child].act_motion(data.S[j].col(k));
     }
   }
-  const auto is_coupler = [&](int i) { return rows.body_a[i] == rows.body_b[i]; };
-  for (int first = 0; first < rows.count;) {
-    if (is_coupler(first)) {  // a coupler's row is written already
-      ++first;
-      continue;
-    }
-    int end = first + 1;
-    while (end < rows.count && !is_coupler(end) && rows.body_a[end] == rows.body_a[first] &&
-           rows.body_b[end] == rows.body_b[first] && end - first < 6)
-      ++end;
+  for (int k = 0; k < static_cast<int>(rows.first_row.size()); ++k) {
+    const auto [first, end] = rows_of(rows, k);
+    const int a = rows.body_a[first], b = rows.body_b[first];
+    if (a == b) continue;  // a coupler's row is written already
     const int n = end - first;
     Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor, 6, 6> W_t(n, 6);
     for (int r = 0; r < n; ++r) W_t.row(r) = rows.wrench_W[first + r].transpose();
@@ -249,9 +251,8 @@ void assemble_jacobian(const Model& model, const Data& data, ConstraintRows& row
             (sign * W_t).lazyProduct(rows.S_world.middleCols(start, size));
       }
     };
-    add_support(rows.body_b[first], 1.0);
-    add_support(rows.body_a[first], -1.0);
-    first = end;
+    add_support(b, 1.0);
+    add_support(a, -1.0);
   }
 }
 
@@ -349,19 +350,16 @@ void constraint_forces(const Model& model, const Data& data, const ConstraintRow
 void add_constraint_forces(const Model& model, const Data& data, const ConstraintRows& rows,
                            VecRef lambda, std::span<Vec6> f_ext, VecX& tau) {
   (void)model;
-  // Rows that share their bodies (a constraint's) add one wrench, carried into each body once.
-  for (int first = 0; first < rows.count;) {
+  // A constraint's rows share their bodies: one wrench, carried into each body once.
+  for (int k = 0; k < static_cast<int>(rows.first_row.size()); ++k) {
+    const auto [first, end] = rows_of(rows, k);
     const int a = rows.body_a[first], b = rows.body_b[first];
     if (a == b) {  // a coupler: a generalized force
       tau.noalias() += rows.G.row(first).transpose() * lambda[first];
-      ++first;
       continue;
     }
-    Vec6 f = rows.wrench_W[first] * lambda[first];
-    int end = first + 1;
-    for (; end < rows.count && rows.body_a[end] == a && rows.body_b[end] == b; ++end)
-      f += rows.wrench_W[end] * lambda[end];
-    first = end;
+    Vec6 f = Vec6::Zero();
+    for (int i = first; i < end; ++i) f += rows.wrench_W[i] * lambda[i];
     // W about Wo → B about Bo.
     if (b != 0) f_ext[b] += data.X_WB[b].act_force_inverse(f);
     if (a != 0) f_ext[a] -= data.X_WB[a].act_force_inverse(f);

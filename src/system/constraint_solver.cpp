@@ -8,7 +8,6 @@
 #include "momenta/common/error.hpp"
 #include "momenta/dynamics/articulated_solve.hpp"
 #include "momenta/dynamics/crba.hpp"
-#include "momenta/dynamics/hybrid_dynamics.hpp"
 #include "momenta/dynamics/kinematics.hpp"
 #include "ordered_cholesky.hpp"
 
@@ -53,7 +52,6 @@ ConstraintSolver::ConstraintSolver(const model::Model& model)
   W_ = MatX::Zero(nf, m);
   A_ = MatX::Zero(m, m);
   Y_ = MatX::Zero(model.nv(), m);
-  if (model.has_prescribed_joints()) prescribed_ = dynamics::prescribed_joint_mask(model);
   dv_ = VecX::Zero(nf);
   all_rows_.assign(m, 1);
   position_rows_.assign(rows_.holonomic.begin(), rows_.holonomic.end());
@@ -152,7 +150,11 @@ bool ConstraintSolver::correct_accelerations(dynamics::Data& data, VecRef q, Vec
 
 void ConstraintSolver::factor_rows_articulated(dynamics::Data& data) {
   Y_ = rows_.G.transpose();
-  dynamics::articulated_solve(model_, data, prescribed_, Y_);
+  // Held where the forward dynamics was hybrid (the model's own prescribed joints).
+  const std::span<const char> prescribed = model_.has_prescribed_joints()
+                                               ? std::span<const char>(data.prescribed_mask)
+                                               : std::span<const char>();
+  dynamics::articulated_solve(model_, data, prescribed, Y_);
   A_.noalias() = rows_.G.lazyProduct(Y_);
   cholesky_->factorize(A_, kDependentRow);
 }

@@ -164,7 +164,6 @@ class ConstraintSolver {
   std::vector<char> all_rows_, position_rows_;
   MatX M_ff_, G_f_, W_, A_;  // W = L⁻¹ G_fᵀ with M_ff = L Lᵀ; A = Wᵀ W
   MatX Y_;                   // nv × rows: M⁻¹ Gᵀ (articulated; 0 on prescribed coordinates)
-  std::vector<char> prescribed_;  // per joint, or empty when none is prescribed
   AccelerationMethod method_ = AccelerationMethod::articulated;
   Eigen::LLT<MatX> llt_;
   VecX lambda_, rhs_, dv_, delta_, q_saved_;
