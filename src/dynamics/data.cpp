@@ -4,9 +4,7 @@
 
 namespace momenta::dynamics {
 
-// M_factor is sized here, not assigned: Eigen's sized LLT leaves its status unset until compute(),
-// and moving it would read that.
-Data::Data(const Model& model) : M_factor(model.nv()) {
+Data::Data(const Model& model) {
   const auto nb = static_cast<std::size_t>(model.num_bodies());
   const auto nj = static_cast<std::size_t>(model.num_joints());
   const int nv = model.nv();
@@ -44,6 +42,9 @@ Data::Data(const Model& model) : M_factor(model.nv()) {
   dDeltaV_W = MatX::Zero(6, nv);
   dX_W = MatX::Zero(6, nv);
   dW_W = MatX::Zero(6, nv);
+  minv_U_W = MatX::Zero(6, nv);
+  minv_F_W = MatX::Zero(6, nv);
+  minv_A_W.assign(nb, Mat6X::Zero(6, nv));
   dtau_dq = MatX::Zero(nv, nv);
   dtau_dv = MatX::Zero(nv, nv);
   dvdot_dq = MatX::Zero(nv, nv);
@@ -80,6 +81,21 @@ Data::Data(const Model& model) : M_factor(model.nv()) {
     for (auto it = joints_on_path.rbegin(); it != joints_on_path.rend(); ++it) {
       const model::Joint& joint = model.joint(*it);
       if (joint.nv() == 0) continue;
+      if (!ranges.empty() && ranges.back().first + ranges.back().second == joint.v_index) {
+        ranges.back().second += joint.nv();
+      } else {
+        ranges.emplace_back(joint.v_index, joint.nv());
+      }
+    }
+  }
+  // Descendant velocity ranges per joint: each joint's own range added to its own and every
+  // ancestor's list (parents come before children, so the lists grow in ascending order), merged.
+  subtree_ranges.resize(nj);
+  for (std::size_t j = 0; j < nj; ++j) {
+    const model::Joint& joint = model.joint(static_cast<int>(j));
+    if (joint.nv() == 0) continue;
+    for (int b = static_cast<int>(j) + 1; b > 0; b = model.parent(b)) {
+      auto& ranges = subtree_ranges[static_cast<std::size_t>(b - 1)];
       if (!ranges.empty() && ranges.back().first + ranges.back().second == joint.v_index) {
         ranges.back().second += joint.nv();
       } else {

@@ -89,9 +89,11 @@ void rnea_derivatives(const Model& model, Data& data, VecRef q, VecRef v, VecRef
   detail::check_f_ext("rnea_derivatives", model, f_ext);
   forward_pass(model, data, q, v, vdot, f_ext);
 
-  data.dtau_dq.setZero();
-  data.dtau_dv.setZero();
-  data.M.setZero();
+  if (!data.all_dofs_related) {  // otherwise the pass below writes every entry
+    data.dtau_dq.setZero();
+    data.dtau_dv.setZero();
+    data.M.setZero();
+  }
   const auto& joints = model.joint_constants();
   for (int j = static_cast<int>(joints.size()) - 1; j >= 0; --j) {
     const auto& c = joints[j];

@@ -5,6 +5,9 @@
 //     ∂v̇/∂q = −M⁻¹ ∂τ/∂q,   ∂v̇/∂v = −M⁻¹ ∂τ/∂v,   ∂v̇/∂τ = M⁻¹,
 //
 // with ∂τ/∂(q, v) taken at v̇ = ABA(q, v, τ). Tangent space and f_ext as in rnea_derivatives.hpp.
+// M⁻¹ comes from the articulated-body factors of that ABA pass by Carpentier's recursion
+// ("Analytical inverse of the joint space inertia matrix", 2018): O(n d) for a tree of depth d,
+// neither M nor a factorization of it formed; what remains O(n³) is the two dense products.
 
 #include <span>
 
@@ -14,10 +17,11 @@ namespace momenta::dynamics {
 
 /// ∂v̇/∂q (tangent space), ∂v̇/∂v and M⁻¹ (each nv × nv) of v̇ = aba(q, v, tau, f_ext). Writes
 /// data.dvdot_dq, data.dvdot_dv, data.Minv and data.vdot (v̇ itself), and what rnea_derivatives
-/// writes. Arguments checked as aba's; throws NumericalError when M is not positive definite
-/// (a massless chain end). The recursions do not allocate; the two dense products M⁻¹ ∂τ are
-/// Eigen's, which may take blocking workspace from the heap at large nv (none at the 16-body tree
-/// of the allocation test).
+/// writes, and the workspace fields minv_*. Arguments checked as aba's; throws NumericalError when
+/// M is not positive definite (a joint's D = Sᵀ IA S singular: no mass or inertia along one of its
+/// axes). The recursions do not allocate; the two dense products M⁻¹ ∂τ are Eigen's, which above
+/// 16 coordinates may take blocking workspace from the heap (none at the 16-body tree of the
+/// allocation test).
 void aba_derivatives(const Model& model, Data& data, VecRef q, VecRef v, VecRef tau,
                      std::span<const Vec6> f_ext = {});
 

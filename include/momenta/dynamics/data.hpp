@@ -94,16 +94,28 @@ struct Data {
   /// the coordinate's stage of its joint and V_s after it.
   MatX dS_W, dDeltaV_W, dX_W, dW_W;
 
+  // --- Workspace of aba_derivatives' M⁻¹ (Carpentier 2018; aba_derivatives.cpp), in W ----------
+  MatX minv_U_W;  ///< 6 × nv: U = IA S of each velocity coordinate's joint, column by column.
+  /// 6 × nv: column k, the force that a unit generalized force at coordinate k passes up through
+  /// the bodies below the joint being visited (the backward pass).
+  MatX minv_F_W;
+  /// Per body, 6 × nv: column k (for k at or after the body's joint), its acceleration under a
+  /// unit generalized force at coordinate k (the forward pass; the world's stays zero).
+  std::vector<Mat6X> minv_A_W;
+  /// Per joint: the velocity-coordinate ranges [start, start + size) of the joint and all its
+  /// descendants, merged into contiguous runs, ascending (the joint's own first). Fixed by the
+  /// model.
+  std::vector<std::vector<std::pair<int, int>>> subtree_ranges;
+
   // --- Results of rnea_derivatives / aba_derivatives -----------------------------------------
   MatX dtau_dq;   ///< nv × nv: ∂τ/∂q on the tangent space (rnea_derivatives).
   MatX dtau_dv;   ///< nv × nv: ∂τ/∂v (rnea_derivatives).
   MatX dvdot_dq;  ///< nv × nv: ∂v̇/∂q on the tangent space (aba_derivatives).
   MatX dvdot_dv;  ///< nv × nv: ∂v̇/∂v (aba_derivatives).
-  MatX Minv;      ///< nv × nv: M(q)⁻¹ = ∂v̇/∂τ (aba_derivatives).
+  MatX Minv;      ///< nv × nv: M(q)⁻¹ = ∂v̇/∂τ (aba_derivatives; both triangles filled).
   MatX dQ_dq;     ///< nv × nv: ∂Q/∂q of the force elements (force_element_derivatives).
   MatX dQ_dv;     ///< nv × nv: ∂Q/∂v of the force elements (force_element_derivatives).
   std::vector<Vec6> dLoad_W;  ///< Per body: the force elements' wrench on B's subtree, in W.
-  Eigen::LLT<MatX> M_factor;  ///< aba_derivatives' Cholesky factor of M (sized nv).
 
   // --- Results -------------------------------------------------------------------------------
   VecX tau;   ///< nv: rnea's inverse dynamics; hybrid_dynamics' full generalized forces.
