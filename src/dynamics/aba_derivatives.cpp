@@ -112,18 +112,15 @@ void inverse_mass_matrix(const Model& model, Data& data) {
       backward_step_1dof(data, c, j);
       continue;
     }
+    const bool passes_up = c.parent != 0;
+    if (passes_up) data.minv_F_W.middleCols(c.v_index, n).noalias() = U * Dinv;
     const auto& ranges = data.subtree_ranges[j];
     for (std::size_t r = 0; r < ranges.size(); ++r) {
       const auto [start, size] = below_joint(ranges, r, n);
-      Minv.block(start, c.v_index, size, n).noalias() =
-          -(data.minv_F_W.middleCols(start, size).transpose() * S) * Dinv;
-    }
-    if (c.parent == 0) continue;
-    data.minv_F_W.middleCols(c.v_index, n).noalias() = U * Dinv;
-    for (std::size_t r = 0; r < ranges.size(); ++r) {
-      const auto [start, size] = below_joint(ranges, r, n);
-      data.minv_F_W.middleCols(start, size).noalias() +=
-          U * Minv.block(start, c.v_index, size, n).transpose();
+      auto F = data.minv_F_W.middleCols(start, size);
+      auto below = Minv.block(start, c.v_index, size, n);
+      below.noalias() = -(F.transpose() * S) * Dinv;
+      if (passes_up) F.noalias() += U * below.transpose();
     }
   }
 

@@ -3,6 +3,20 @@
 #include "momenta/model/joint.hpp"
 
 namespace momenta::dynamics {
+namespace {
+
+// Appends a joint's velocity coordinates to ascending runs, merged into the last run where they
+// continue it (nothing for a joint without coordinates).
+void add_joint_range(std::vector<std::pair<int, int>>& ranges, const model::Joint& joint) {
+  if (joint.nv() == 0) return;
+  if (!ranges.empty() && ranges.back().first + ranges.back().second == joint.v_index) {
+    ranges.back().second += joint.nv();
+  } else {
+    ranges.emplace_back(joint.v_index, joint.nv());
+  }
+}
+
+}  // namespace
 
 Data::Data(const Model& model) {
   const auto nb = static_cast<std::size_t>(model.num_bodies());
@@ -79,13 +93,7 @@ Data::Data(const Model& model) {
     }
     auto& ranges = support_ranges[j];
     for (auto it = joints_on_path.rbegin(); it != joints_on_path.rend(); ++it) {
-      const model::Joint& joint = model.joint(*it);
-      if (joint.nv() == 0) continue;
-      if (!ranges.empty() && ranges.back().first + ranges.back().second == joint.v_index) {
-        ranges.back().second += joint.nv();
-      } else {
-        ranges.emplace_back(joint.v_index, joint.nv());
-      }
+      add_joint_range(ranges, model.joint(*it));
     }
   }
   // Descendant velocity ranges per joint: each joint's own range added to its own and every
@@ -95,12 +103,7 @@ Data::Data(const Model& model) {
     const model::Joint& joint = model.joint(static_cast<int>(j));
     if (joint.nv() == 0) continue;
     for (int b = static_cast<int>(j) + 1; b > 0; b = model.parent(b)) {
-      auto& ranges = subtree_ranges[static_cast<std::size_t>(b - 1)];
-      if (!ranges.empty() && ranges.back().first + ranges.back().second == joint.v_index) {
-        ranges.back().second += joint.nv();
-      } else {
-        ranges.emplace_back(joint.v_index, joint.nv());
-      }
+      add_joint_range(subtree_ranges[static_cast<std::size_t>(b - 1)], joint);
     }
   }
   // M has structural zeros unless the joints with degrees of freedom form one chain, where
