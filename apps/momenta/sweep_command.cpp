@@ -274,17 +274,27 @@ void run_sweep(const SweepOptions& o) {
     const std::span<const long> runs = std::span(all).subspan(root ? skipped : 0);
 
     Progress progress(root && !o.quiet && isatty(STDERR_FILENO), runs.size());
+    // A folder's CSV files are written by the threads that ran their runs (docs/sweeps.md, "On
+    // every core"); the rest is written here, in run order, by this one thread.
+    const sweep::Finish finish = [&](sweep::RunOutcome& outcome) {
+      if (!trajectories || !trajectories->writes_concurrently()) return;
+      trajectories->write(outcome);
+      outcome.trajectory = {};
+      outcome.trajectory_columns = {};
+      outcome.trajectory_stored = true;
+    };
     const sweep::Deliver deliver = [&](sweep::RunOutcome&& outcome) {
       writer->write(sweep::results_row(outcome, !o.no_timing));
-      if (trajectories) trajectories->write(outcome);
+      if (trajectories && !outcome.trajectory_stored) trajectories->write(outcome);
       progress.count(outcome.ok);
     };
     const std::atomic<bool>& stop = stop_on_signals();
     const auto start = std::chrono::steady_clock::now();
     std::size_t delivered = 0;
     try {
-      delivered = world ? sweep::run_across_ranks(*world, runner, runs, threads, deliver, &stop)
-                        : sweep::run_in_order(runner, runs, threads, deliver, &stop);
+      delivered =
+          world ? sweep::run_across_ranks(*world, runner, runs, threads, deliver, &stop, finish)
+                : sweep::run_in_order(runner, runs, threads, deliver, &stop, finish);
     } catch (...) {
       progress.clear();
       if (world && world->size() > 1) {

@@ -34,6 +34,7 @@ std::pair<int, int> below_joint(const std::vector<std::pair<int, int>>& ranges, 
 // The two passes' steps for a joint with one coordinate k, column by column over 6-vectors (the
 // general blocks' dispatch would cost more than their arithmetic at these sizes).
 using ConstVec6Map = Eigen::Map<const Vec6>;
+using Mat6N = Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6>;  // a joint's columns, on the stack
 using Vec6Map = Eigen::Map<Vec6>;
 
 void backward_step_1dof(Data& data, const model::JointConstants& c, int j) {
@@ -113,14 +114,20 @@ void inverse_mass_matrix(const Model& model, Data& data) {
       continue;
     }
     const bool passes_up = c.parent != 0;
+    Mat6N minus_S_Dinv(6, n);  // the sign here: Eigen would copy a negated F or S to the heap
+    minus_S_Dinv.noalias() = S * Dinv;
+    minus_S_Dinv = -minus_S_Dinv;
     if (passes_up) data.minv_F_W.middleCols(c.v_index, n).noalias() = U * Dinv;
     const auto& ranges = data.subtree_ranges[j];
     for (std::size_t r = 0; r < ranges.size(); ++r) {
       const auto [start, size] = below_joint(ranges, r, n);
       auto F = data.minv_F_W.middleCols(start, size);
       auto below = Minv.block(start, c.v_index, size, n);
-      below.noalias() = -(F.transpose() * S) * Dinv;
-      if (passes_up) F.noalias() += U * below.transpose();
+      below.noalias() = F.transpose() * minus_S_Dinv;
+      if (!passes_up) continue;
+      for (int col = 0; col < size; ++col) {  // a column at a time: Eigen would copy below
+        F.col(col).noalias() += U * below.row(col).transpose();
+      }
     }
   }
 
@@ -143,7 +150,8 @@ void inverse_mass_matrix(const Model& model, Data& data) {
     const auto Dinv = data.Dinv[j].topLeftCorner(n, n);
     auto after = Minv.block(c.v_index, c.v_index, tail, n);
     if (c.parent != 0) {
-      after.noalias() -= (A_parent.transpose() * U) * Dinv;
+      const Mat6N U_Dinv = U * Dinv;
+      after.noalias() -= A_parent.transpose() * U_Dinv;
       A = A_parent;
       A.noalias() += S * after.transpose();
     } else {

@@ -54,7 +54,7 @@ const VecX& hybrid_dynamics(const Model& model, Data& data, const std::vector<ch
     Vec6 a_known = data.c_B[i];
     Vec6 pa = data.pA[i];
     if (prescribed[j] && n > 0) {
-      a_known += S * vdot_in.segment(c.v_index, n);
+      a_known.noalias() += S * vdot_in.segment(c.v_index, n);
     } else if (n > 0) {
       auto U = data.U[j].leftCols(n);
       U.noalias() = IA * S;
@@ -62,7 +62,8 @@ const VecX& hybrid_dynamics(const Model& model, Data& data, const std::vector<ch
       auto Dinv = data.Dinv[j].topLeftCorner(n, n);
       Dinv = Eigen::LLT<MatN>(D).solve(MatN::Identity(n, n));
       auto u = data.u[j].head(n);
-      u = tau_in.segment(c.v_index, n) - S.transpose() * data.pA[i];
+      u = tau_in.segment(c.v_index, n);
+      u.noalias() -= S.transpose() * data.pA[i];
       if (p == 0) continue;
       const Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6> U_Dinv = U * Dinv;
       IA.noalias() -= U_Dinv * U.transpose();
@@ -88,14 +89,15 @@ const VecX& hybrid_dynamics(const Model& model, Data& data, const std::vector<ch
     if (prescribed[j]) {
       // IA here is still the full articulated inertia of the subtree (pass 2 left it whole).
       data.vdot.segment(c.v_index, n) = vdot_in.segment(c.v_index, n);
-      a += S * vdot_in.segment(c.v_index, n);
-      data.tau.segment(c.v_index, n) = S.transpose() * (data.IA[i] * a + data.pA[i]);
+      a.noalias() += S * vdot_in.segment(c.v_index, n);
+      const Vec6 f = data.IA[i] * a + data.pA[i];
+      data.tau.segment(c.v_index, n).noalias() = S.transpose() * f;
     } else {
       const VecN qdd = data.Dinv[j].topLeftCorner(n, n) *
                        (data.u[j].head(n) - data.U[j].leftCols(n).transpose() * a);
       data.vdot.segment(c.v_index, n) = qdd;
       data.tau.segment(c.v_index, n) = tau_in.segment(c.v_index, n);
-      a += S * qdd;
+      a.noalias() += S * qdd;
     }
   }
   return data.vdot;

@@ -147,10 +147,11 @@ void work_for_root(const SweepRunner& runner, int threads) {
 // --- rank 0 -------------------------------------------------------------------------------------
 
 std::size_t lead(const MpiWorld& world, const SweepRunner& runner, std::span<const long> runs,
-                 int threads, const Deliver& deliver, const std::atomic<bool>* stop) {
+                 int threads, const Deliver& deliver, const std::atomic<bool>* stop,
+                 const Finish& finish) {
   const auto stopped = [stop] { return stop != nullptr && stop->load(std::memory_order_relaxed); };
   std::atomic<std::size_t> next{0};  // shared by this rank's threads and the other ranks
-  detail::RunPool pool(runner, runs, threads, next, stopped);
+  detail::RunPool pool(runner, runs, threads, next, stopped, finish);
   int remote_working = world.size() - 1;
   std::size_t delivered = 0;
   while (true) {
@@ -230,12 +231,12 @@ void MpiWorld::abort(int code) const {
 
 std::size_t run_across_ranks(const MpiWorld& world, const SweepRunner& runner,
                              std::span<const long> runs, int threads, const Deliver& deliver,
-                             const std::atomic<bool>* stop) {
+                             const std::atomic<bool>* stop, const Finish& finish) {
   if (world.rank() != kRoot) {
     work_for_root(runner, threads);
     return 0;
   }
-  return lead(world, runner, runs, threads, deliver, stop);
+  return lead(world, runner, runs, threads, deliver, stop, finish);
 }
 
 }  // namespace momenta::sweep

@@ -17,7 +17,7 @@ bool MpiWorld::agree(bool ready) const { return ready; }
 void MpiWorld::abort(int) const { throw InvalidArgument("MPI is not available"); }
 
 std::size_t run_across_ranks(const MpiWorld&, const SweepRunner&, std::span<const long>, int,
-                             const Deliver&, const std::atomic<bool>*) {
+                             const Deliver&, const std::atomic<bool>*, const Finish&) {
   throw InvalidArgument("MPI is not available");
 }
 

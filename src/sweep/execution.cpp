@@ -10,12 +10,14 @@ int default_thread_count() {
 }
 
 std::size_t run_in_order(const SweepRunner& runner, std::span<const long> runs, int threads,
-                         const Deliver& deliver, const std::atomic<bool>* stop) {
+                         const Deliver& deliver, const std::atomic<bool>* stop,
+                         const Finish& finish) {
   std::atomic<std::size_t> next{0};
   std::atomic<bool> abandon{false};  // the deliverer failed: take nothing more
-  detail::RunPool pool(runner, runs, threads, next, [&] {
-    return abandon.load() || (stop != nullptr && stop->load(std::memory_order_relaxed));
-  });
+  detail::RunPool pool(
+      runner, runs, threads, next,
+      [&] { return abandon.load() || (stop != nullptr && stop->load(std::memory_order_relaxed)); },
+      finish);
   std::size_t delivered = 0;
   try {
     while (delivered < runs.size()) {

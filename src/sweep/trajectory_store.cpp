@@ -29,6 +29,7 @@ class CsvFolder final : public TrajectoryStore {
     }
     csv.flush();
   }
+  bool writes_concurrently() const override { return true; }
 
  private:
   std::filesystem::path folder_;
@@ -47,6 +48,7 @@ class Hdf5File final : public TrajectoryStore {
   ~Hdf5File() override { H5Fclose(file_); }
   Hdf5File(const Hdf5File&) = delete;
   Hdf5File& operator=(const Hdf5File&) = delete;
+  bool writes_concurrently() const override { return false; }
 
   void write(const RunOutcome& outcome) override {
     if (!outcome.ok) return;

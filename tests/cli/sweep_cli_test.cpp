@@ -60,6 +60,16 @@ std::vector<std::string> cells_of(const std::string& line) {
   return cells;
 }
 
+// A sweep file with CSV trajectories into the folder `folder`: four quarter cars.
+void write_trajectory_sweep(const std::filesystem::path& path, const std::string& folder) {
+  std::ofstream(path) << "model: "
+                      << std::filesystem::absolute("examples/quarter_car.yaml").string()
+                      << "\nsimulation: {duration: 0.5, step: 0.001, integrator: rk4, every: 10}\n"
+                         "parameters:\n  - {path: bodies.body.mass, name: m2, values: [300, 350, "
+                         "400, 450]}\nmetrics:\n  - final: body_y\ntrajectories: "
+                      << folder << "\n";
+}
+
 TEST_F(SweepCli, ThreadCountsRanksAndShardsGiveTheSameFile) {
   const CliRun one = momenta("sweep " + kRide + " -o " + at("t1.csv") + " --threads 1 --no-timing");
   ASSERT_EQ(one.code, 0) << one.err;
@@ -116,6 +126,25 @@ TEST_F(SweepCli, MpiRanksGiveTheFileOneProcessWrites) {
         << file("shell.out");
   }
 }
+
+// Rank 0 writes every run's trajectory: its own threads' as they finish, the other ranks' as
+// they arrive. The files are those of one process.
+TEST_F(SweepCli, MpiRanksWriteTheTrajectoriesOneProcessWrites) {
+  write_trajectory_sweep(dir_ / "one.yaml", "one");
+  ASSERT_EQ(momenta("sweep " + at("one.yaml") + " -o " + at("one.csv") + " --no-timing").code, 0);
+  write_trajectory_sweep(dir_ / "mpi.yaml", "mpi");
+  const int code = shell(
+      "ASAN_OPTIONS=\"$ASAN_OPTIONS:detect_leaks=0\" OMPI_ALLOW_RUN_AS_ROOT=1 "
+      "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 timeout 120 mpirun "
+      "--oversubscribe -n 2",
+      "sweep " + at("mpi.yaml") + " -o " + at("mpi.csv") + " --no-timing --threads 1");
+  ASSERT_EQ(code, 0) << file("shell.out");
+  EXPECT_EQ(file("mpi.csv"), file("one.csv"));
+  for (int run = 0; run < 4; ++run) {
+    const std::string name = fmt::format("run_{:06d}.csv", run);
+    EXPECT_EQ(slurp(dir_ / "mpi" / name), slurp(dir_ / "one" / name)) << name;
+  }
+}
 #endif
 
 TEST_F(SweepCli, AKilledSweepResumesToTheFileAnUninterruptedOneWrites) {
@@ -155,16 +184,13 @@ TEST_F(SweepCli, AKilledSweepResumesToTheFileAnUninterruptedOneWrites) {
 }
 
 TEST_F(SweepCli, TrajectoriesHoldEveryRunsWholeTable) {
-  std::ofstream(dir_ / "traj.yaml")
-      << "model: " << std::filesystem::absolute("examples/quarter_car.yaml").string()
-      << "\nsimulation: {duration: 0.5, step: 0.001, integrator: rk4, every: 10}\n"
-         "parameters:\n  - {path: bodies.body.mass, name: m2, values: [300, 450]}\n"
-         "metrics:\n  - final: body_y\ntrajectories: runs\n";
+  write_trajectory_sweep(dir_ / "traj.yaml", "runs");
   const CliRun r = momenta("sweep " + at("traj.yaml") + " -o " + at("traj.csv") + " --no-timing");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto rows = lines_of(file("traj.csv"));
-  for (int run = 0; run < 2; ++run) {
-    const auto table = lines_of(slurp(dir_ / "runs" / fmt::format("run_{:06d}.csv", run)));
+  for (int run = 0; run < 4; ++run) {
+    const std::string name = fmt::format("run_{:06d}.csv", run);
+    const auto table = lines_of(slurp(dir_ / "runs" / name));
     ASSERT_EQ(table.size(), 52U) << run;  // the header and 51 rows: every 10th of 500 steps
     const auto header = cells_of(table[0]);
     const auto y = static_cast<std::size_t>(std::find(header.begin(), header.end(), "body_y") -
@@ -172,6 +198,22 @@ TEST_F(SweepCli, TrajectoriesHoldEveryRunsWholeTable) {
     ASSERT_LT(y, header.size());
     // The metric is the table's last body_y, the same digits.
     EXPECT_EQ(cells_of(table.back())[y], cells_of(rows[static_cast<std::size_t>(run) + 1])[2]);
+  }
+  // Each thread writes the files of its own runs: one thread writes the same bytes as three.
+  write_trajectory_sweep(dir_ / "traj1.yaml", "runs1");
+  ASSERT_EQ(
+      momenta("sweep " + at("traj1.yaml") + " -o " + at("traj1.csv") + " --no-timing --threads 1")
+          .code,
+      0);
+  write_trajectory_sweep(dir_ / "traj3.yaml", "runs3");
+  ASSERT_EQ(
+      momenta("sweep " + at("traj3.yaml") + " -o " + at("traj3.csv") + " --no-timing --threads 3")
+          .code,
+      0);
+  for (int run = 0; run < 4; ++run) {
+    const std::string name = fmt::format("run_{:06d}.csv", run);
+    EXPECT_EQ(slurp(dir_ / "runs1" / name), slurp(dir_ / "runs" / name)) << name;
+    EXPECT_EQ(slurp(dir_ / "runs3" / name), slurp(dir_ / "runs" / name)) << name;
   }
   // Run again without --force: the folder with its tables is kept.
   EXPECT_EQ(momenta("sweep " + at("traj.yaml") + " -o " + at("traj2.csv") + " --no-timing").code,

@@ -46,9 +46,11 @@ class MpiWorld {
 /// On rank 0: carries out `runs` across every rank (each with `threads` threads) and delivers
 /// the outcomes in list order, returning the count delivered (fewer when `stop` was raised). On
 /// the other ranks: runs what rank 0 hands out until it says it is done; `runs`, `deliver` and
-/// `stop` are not used and 0 is returned. Every rank must call it, after agree(true).
+/// `stop` are not used and 0 is returned. Every rank must call it, after agree(true). `finish`
+/// takes rank 0's own outcomes on the threads that ran them (run_in_order); the other ranks'
+/// arrive unfinished.
 std::size_t run_across_ranks(const MpiWorld& world, const SweepRunner& runner,
                              std::span<const long> runs, int threads, const Deliver& deliver,
-                             const std::atomic<bool>* stop = nullptr);
+                             const std::atomic<bool>* stop = nullptr, const Finish& finish = {});
 
 }  // namespace momenta::sweep

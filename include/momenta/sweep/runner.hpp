@@ -21,6 +21,8 @@ struct RunOutcome {
   /// Its whole table when the spec asks for trajectories (simulate jobs), row-major.
   std::vector<std::string> trajectory_columns;
   std::vector<double> trajectory;
+  /// Whether the table is already stored (by the thread that ran it) and dropped from here.
+  bool trajectory_stored = false;
 };
 
 class SweepRunner {

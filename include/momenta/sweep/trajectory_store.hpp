@@ -15,6 +15,10 @@ class TrajectoryStore {
   virtual ~TrajectoryStore() = default;
   /// Stores a run's table (a failed run's: nothing). Throws FileError when writing fails.
   virtual void write(const RunOutcome& outcome) = 0;
+  /// Whether write may be called from several threads at once: a folder's files are
+  /// independent, so each run's is written by the thread that ran it; one HDF5 file is written
+  /// by one thread, in run order.
+  virtual bool writes_concurrently() const = 0;
 };
 
 /// Whether this build can write HDF5 (MOMENTA_HDF5).

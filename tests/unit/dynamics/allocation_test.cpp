@@ -1,5 +1,5 @@
-// The algorithms must not allocate once Data exists: counts global operator new around them, on
-// a random tree with every joint type.
+// The algorithms must not allocate once Data exists: counts heap allocations (malloc and operator
+// new) around them, on a random tree with every joint type.
 #include <random>
 
 #include <gtest/gtest.h>
@@ -22,6 +22,20 @@
 
 namespace momenta::dynamics {
 namespace {
+
+// The counter sees Eigen's own heap (aligned_malloc calls malloc, not operator new), so a dynamic
+// temporary inside an algorithm would count: an expression that nests a negated block, or a sum
+// with a product assigned without noalias(), makes one.
+TEST(DynamicsAllocation, CounterSeesEigenTemporaries) {
+  if (!test::allocation_count_includes_malloc()) {
+    GTEST_SKIP() << "under the sanitizers only operator new is counted";
+  }
+  volatile int size = 64;
+  const long before = test::allocation_count();
+  const VecX x = VecX::Ones(size);
+  EXPECT_EQ(test::allocation_count() - before, 1);
+  EXPECT_EQ(x.sum(), 64.0);
+}
 
 TEST(DynamicsAllocation, AlgorithmsDoNotAllocate) {
   const Model m = test::random_tree(16, 9);

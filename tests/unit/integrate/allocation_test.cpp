@@ -1,4 +1,4 @@
-// Integrator steps must not allocate: counts global operator new calls around them.
+// Integrator steps must not allocate: counts heap allocations (malloc, operator new) around them.
 #include <gtest/gtest.h>
 
 #include "momenta/integrate/runge_kutta.hpp"
@@ -16,6 +16,9 @@ TEST(IntegratorAllocation, StepsDoNotAllocate) {
     State state{0.0, VecX(4), VecX(Vec3(0.01, 2.0, 0.01))};
     state.q << 1.0, 0.0, 0.0, 0.0;
     integrator->initialize(system, state);
+    // The first step is outside the count: CVODE (bdf) allocates its saved Jacobian there, once
+    // per run (cvLsInitialize), not per step.
+    integrator->step(system, state, 1e-2);
     const long before = momenta::test::allocation_count();
     for (int i = 0; i < 100; ++i) integrator->step(system, state, 1e-2);
     EXPECT_EQ(momenta::test::allocation_count() - before, 0) << name;
