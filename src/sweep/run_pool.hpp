@@ -25,10 +25,10 @@ class RunPool {
   /// Starts `threads` threads taking positions from `next` until the list is done or `stopped`
   /// says so; each hands its outcome to `finish` (if any) before it waits to be taken.
   RunPool(const SweepRunner& runner, std::span<const long> runs, int threads,
-          std::atomic<std::size_t>& next, std::function<bool()> stopped, const Finish& finish = {})
+          std::atomic<std::size_t>& next, std::function<bool()> stopped, Finish finish)
       : working_(threads) {
     for (int t = 0; t < threads; ++t) {
-      pool_.emplace_back([this, &runner, runs, &next, stopped, &finish] {
+      pool_.emplace_back([this, &runner, runs, &next, stopped, finish] {
         while (!stopped() && !failed()) {
           const std::size_t position = next.fetch_add(1);
           if (position >= runs.size()) break;
