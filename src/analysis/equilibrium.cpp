@@ -115,6 +115,35 @@ class StaticProblem {
     r = T.transpose() * (residual_.free_mass(t_, q) * a_f);
   }
 
+  // K = ∂r/∂(unknowns) at q. Without constraints, analytic: the free rows and columns of
+  // ∂τ/∂δq less the force elements' (ModelResidual::derivatives, as linearize() takes them). On a
+  // constraint chart, Richardson-extrapolated differences of r along each unknown, steps from
+  // `step`.
+  template <class Step>
+  void stiffness(const VecX& q, const Step& step, MatX& K) {
+    if (!chart_) {
+      residual_.derivatives(t_, q, v_, a_zero_, K, dr_dv_);
+      return;
+    }
+    const int n = unknowns();
+    if (n == 0) {  // nothing to move: K has r's rows and no column
+      residual(q, d_);
+      K.resize(d_.size(), 0);
+    }
+    for (int k = 0; k < n; ++k) {
+      detail::richardson_difference(
+          [&](double s, VecX& out) {
+            unit_ = VecX::Zero(n);
+            unit_[k] = 1.0;
+            move(q, unit_, s, q_step_);
+            residual(q_step_, out);
+          },
+          step(k), plus_, minus_, coarse_, d_);
+      if (k == 0) K.resize(d_.size(), n);
+      K.col(k) = d_;
+    }
+  }
+
   MatX mass(const VecX& q) {
     const MatX M = residual_.free_mass(t_, q);
     if (!chart_) return M;
@@ -127,6 +156,8 @@ class StaticProblem {
   ModelResidual& residual_;
   double t_;
   VecX v_, a_zero_, delta_;
+  VecX unit_, q_step_, plus_, minus_, coarse_, d_;  // stiffness()'s differences
+  MatX dr_dv_;
   std::optional<detail::ConstraintChart> chart_;
 };
 
@@ -173,22 +204,11 @@ Equilibrium find_equilibrium(const model::Model& model, const VecX& q_guess,
   const auto step = [&](int k) { return is_angle(k) ? 1e-3 : 1e-3 * length; };
 
   Equilibrium result;
-  MatX K(r.size(), n);  // square unless nonholonomic rows leave fewer velocities than unknowns
-  VecX plus, minus, coarse, d, q_step, r_trial, delta, q_trial, unit;
+  MatX K;  // square unless nonholonomic rows leave fewer velocities than unknowns
+  VecX r_trial, delta, q_trial;
   int iteration = 0;
   for (; iteration < options.max_iterations && !converged(r); ++iteration) {
-    // K = ∂r/∂(unknowns) at q.
-    for (int k = 0; k < n; ++k) {
-      detail::richardson_difference(
-          [&](double s, VecX& out) {
-            unit = VecX::Zero(n);
-            unit[k] = 1.0;
-            problem.move(q, unit, s, q_step);
-            problem.residual(q_step, out);
-          },
-          step(k), plus, minus, coarse, d);
-      K.col(k) = d;
-    }
+    problem.stiffness(q, step, K);
     if (!K.allFinite()) {
       throw NumericalError(fmt::format(
           "find_equilibrium: the stiffness ∂r/∂q is not finite at iteration {}", iteration));

@@ -118,6 +118,34 @@ void differentiate_state(const Differentiated& f, const std::vector<int>& free, 
   }
 }
 
+// The velocity coordinates whose value a signal sets one to one (a prescribed joint's coordinate,
+// a free joint's position), when that is all the signal does: then ∂r_f/∂u is the sum of their
+// columns of ∂r_f/∂δq. Nothing when it also turns a ball or free joint (its rotation is no sum of
+// tangents) or drives a load.
+std::optional<std::vector<int>> coordinates_set_by(const model::Model& model, int signal) {
+  for (const model::ForceElement& element : model.force_elements()) {
+    const int used = std::visit(
+        [](const auto& e) {
+          if constexpr (requires { e.signal_index; }) return e.signal_index;
+          return -1;
+        },
+        element);
+    if (used == signal) return std::nullopt;
+  }
+  std::vector<int> coordinates;
+  for (const model::Joint& joint : model.joints()) {
+    const auto& signals = joint.prescribed_signal_indices;
+    for (int k = 0; k < static_cast<int>(signals.size()); ++k) {
+      if (signals[static_cast<std::size_t>(k)] != signal) continue;
+      const bool turns = joint.type == model::JointType::spherical ||
+                         (joint.type == model::JointType::free && k < 3);
+      if (turns) return std::nullopt;
+      coordinates.push_back(joint.v_index + k);
+    }
+  }
+  return coordinates;
+}
+
 // ∂g/∂u: value, rate and acceleration offsets of each input's signal.
 void differentiate_inputs(const Differentiated& f, const std::vector<Input>& inputs, Jacobians& J) {
   const int m = static_cast<int>(inputs.size());
@@ -134,9 +162,15 @@ void differentiate_inputs(const Differentiated& f, const std::vector<Input>& inp
       };
     };
     if (input.prescribed) {
-      // The value moves prescribed coordinates: nonlinear, as the configuration.
+      // The value moves prescribed coordinates: nonlinear, as the configuration. The equations'
+      // rows analytically where the signal sets coordinates one to one (differentiate_state left
+      // ∂r_f/∂δq of every coordinate), the output columns by differences.
       detail::richardson_difference(perturbed(1, 0, 0), f.prescribed_step(input.signal), plus,
                                     minus, coarse, d);
+      if (const auto set = coordinates_set_by(f.model, input.signal)) {
+        d.head(f.nf).setZero();
+        for (int i : *set) d.head(f.nf) += f.residual.dr_dq_all().col(i);
+      }
       J.du0.col(j) = d;
       detail::central_difference(perturbed(0, 1, 0), kExactStep, plus, minus, d);
       J.du1.col(j) = d;

@@ -98,13 +98,16 @@ void ModelResidual::derivatives(double t, const VecX& q, const VecX& v, const Ve
   // r = ID(q, v, v̇) − Q(q, v): inverse dynamics without the elements, less the elements' force.
   dynamics::rnea_derivatives(model_, data_, q_, v_, vdot_);
   dynamics::force_element_derivatives(model_, data_, signal_values_);
+  dr_dq_all_.resize(nf(), model_.nv());
   dr_dq.resize(nf(), nf());
   dr_dv.resize(nf(), nf());
   for (int a = 0; a < nf(); ++a) {
     const int i = free_[static_cast<std::size_t>(a)];
+    for (int j = 0; j < model_.nv(); ++j)
+      dr_dq_all_(a, j) = data_.dtau_dq(i, j) - data_.dQ_dq(i, j);
     for (int b = 0; b < nf(); ++b) {
       const int j = free_[static_cast<std::size_t>(b)];
-      dr_dq(a, b) = data_.dtau_dq(i, j) - data_.dQ_dq(i, j);
+      dr_dq(a, b) = dr_dq_all_(a, j);
       dr_dv(a, b) = data_.dtau_dv(i, j) - data_.dQ_dv(i, j);
     }
   }

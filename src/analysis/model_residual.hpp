@@ -43,6 +43,9 @@ class ModelResidual {
   /// rnea_derivatives less force_element_derivatives (dynamics/), on the free rows and columns.
   void derivatives(double t, const VecX& q, const VecX& v, const VecX& a_free, MatX& dr_dq,
                    MatX& dr_dv);
+  /// ∂r_f/∂δq_i (nf × nv) for every velocity coordinate i, the prescribed ones included, from the
+  /// last derivatives(): how r moves when a prescribed coordinate's value does.
+  const MatX& dr_dq_all() const { return dr_dq_all_; }
 
   /// M_ff (nf × nf) at q with the prescribed coordinates from their signals at t.
   MatX free_mass(double t, const VecX& q);
@@ -54,6 +57,7 @@ class ModelResidual {
   std::vector<int> free_;
   std::vector<double> offset_value_, offset_rate_, offset_acceleration_;
   VecX q_, v_, vdot_, r_;
+  MatX dr_dq_all_;
   std::vector<double> signal_values_;  // the signals' values at the last residual()
 };
 

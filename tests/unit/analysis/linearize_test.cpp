@@ -407,6 +407,38 @@ TEST(Linearize, PrescribedMotionFoldsIntoOneInputWhateverTheLayout) {
   EXPECT_NO_THROW(linearize(serial, initial_operating_point(serial), options));
 }
 
+// A link hinged (about y) at the end of an arm whose angle φ about y a signal sets, gravity −ẑ.
+// With J = I_c + m c² about the hinge, the link's equation at rest (φ̇ = φ̈ = 0) is
+// J θ̈ = m g c cos(φ + θ), so ∂θ̈/∂φ = ∂θ̈/∂θ = −m g c sin(φ + θ) / J: the input's value column
+// of B and the stiffness, both analytic (∂τ/∂δq's column of the arm's coordinate).
+TEST(Linearize, ASetCoordinatesInputColumnIsTheClosedFormToRoundOff) {
+  const double m = 2.0, c = 0.3, Ic = 0.05, L1 = 0.5, phi = 0.4, theta = 0.3;
+  ModelBuilder b;
+  b.set_gravity(Vec3(0, 0, -kG));
+  b.add_signal(model::Signal("arm_angle", model::ConstantSignal{phi}));
+  b.add_body("arm", inertia::MassProperties(1.0, Vec3(0.25, 0, 0), Mat3::Identity() * 0.01));
+  b.add_body("link", inertia::MassProperties(m, Vec3(c, 0, 0),
+                                             Vec3(0.01, Ic, Ic).asDiagonal().toDenseMatrix()));
+  Joint arm = make_joint("arm", JointType::revolute, "world", "arm", Vec3::UnitY());
+  arm.prescribed_signals = {"arm_angle"};
+  b.add_joint(arm);
+  Joint hinge = make_joint("hinge", JointType::revolute, "arm", "link", Vec3::UnitY());
+  hinge.X_PJ = Transform::translation(Vec3(L1, 0, 0));
+  b.add_joint(hinge);
+  const model::Model model = b.build();
+  LinearizationOptions options;
+  options.inputs = {"arm.angle"};
+  const LinearModel lin =
+      linearize(model, {0.0, Eigen::Vector2d(phi, theta), VecX::Zero(2)}, options);
+  const double J = Ic + m * c * c;
+  const double expected = -m * kG * c * std::sin(phi + theta) / J;
+  const auto rate = static_cast<Eigen::Index>(lin.system.state_index("hinge.angle_rate"));
+  // Differences of the signal's value had left 2e-13 relative here.
+  EXPECT_TRUE(test::relatively_near(lin.input_value(rate, 0), expected, 1e-14))
+      << lin.input_value(rate, 0) << " against " << expected;
+  EXPECT_TRUE(test::relatively_near(lin.system.A()(rate, 0), expected, 1e-14));
+}
+
 TEST(Linearize, OutputsFromModelQuantitiesAndCoordinates) {
   // The bob's position x = −l sin θ, z = −l cos θ; velocity ẋ = −l cos θ θ̇.
   const double m = 1.0, l = 0.7, theta0 = 0.4, w0 = 0.9;
