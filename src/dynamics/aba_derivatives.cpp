@@ -5,7 +5,7 @@
 
 #include "momenta/common/error.hpp"
 #include "momenta/dynamics/aba.hpp"
-#include "momenta/dynamics/rnea_derivatives.hpp"
+#include "rnea_derivatives_detail.hpp"
 
 namespace momenta::dynamics {
 namespace {
@@ -177,7 +177,7 @@ void aba_derivatives(const Model& model, Data& data, VecRef q, VecRef v, VecRef 
   // v̇ (with the bodies' poses and the coordinates' columns in W), then M⁻¹ from the factors.
   aba(model, data, q, v, tau, f_ext);
   check_articulated_factors(model, data);
-  rnea_derivatives(model, data, q, v, data.vdot, f_ext);
+  detail::rnea_derivatives_at_current_positions(model, data, q, v, data.vdot, f_ext);
   inverse_mass_matrix(model, data);
   if (model.nv() <= kLazyProductMaxNv) {
     data.dvdot_dq.noalias() = -data.Minv.lazyProduct(data.dtau_dq);

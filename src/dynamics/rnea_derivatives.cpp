@@ -4,6 +4,7 @@
 
 #include "forward_pass.hpp"
 #include "joint_stages.hpp"
+#include "rnea_derivatives_detail.hpp"
 
 namespace momenta::dynamics {
 namespace {
@@ -26,7 +27,7 @@ Mat6 force_cross_of_motion(const Vec6& h) {
 // Forward pass in W: each body's V, A (shifted by −g), own net force f = I A + V ×* I V − f_ext,
 // inertia I and Coriolis inertia B, and each velocity coordinate's column and derivative terms.
 void forward_pass(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot,
-                  std::span<const Vec6> f_ext) {
+                  std::span<const Vec6> f_ext, bool positions_current) {
   const auto& joints = model.joint_constants();
   data.dV_W[0].setZero();
   data.dA_W[0] = spatial(Vec3::Zero(), -model.gravity());
@@ -36,7 +37,7 @@ void forward_pass(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdo
   for (int j = 0; j < static_cast<int>(joints.size()); ++j) {
     const auto& c = joints[j];
     const int i = c.child;
-    detail::position_step(c, j, q.data(), data);
+    if (!positions_current) detail::position_step(c, j, q.data(), data);
     const Transform X_WB = data.X_WB[c.parent] * data.X_PB[i];
     data.X_WB[i] = X_WB;
 
@@ -73,21 +74,16 @@ void forward_pass(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdo
     if (!f_ext.empty()) f -= X_WB.act_force(f_ext[i]);
     data.dF_W[i] = f;
     data.dIc_W[i] = I;
-    data.dB_W[i].noalias() = crf(V) * I;
-    data.dB_W[i].noalias() -= I * crm(V);
-    data.dB_W[i] += force_cross_of_motion(h);
+    // B = crf(V) I − I crm(V) + (· ×* h); with crf(V) = −crm(V)ᵀ and I symmetric the first term is
+    // −(I crm(V))ᵀ: one product.
+    const Mat6 P = I * crm(V);
+    data.dB_W[i] = force_cross_of_motion(h) - P - P.transpose();
   }
 }
 
-}  // namespace
-
-void rnea_derivatives(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot,
-                      std::span<const Vec6> f_ext) {
-  detail::check_data_and_q("rnea_derivatives", model, data, q);
-  detail::check_nv("rnea_derivatives", "v", model, v);
-  detail::check_nv("rnea_derivatives", "vdot", model, vdot);
-  detail::check_f_ext("rnea_derivatives", model, f_ext);
-  forward_pass(model, data, q, v, vdot, f_ext);
+void derivative_passes(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot,
+                       std::span<const Vec6> f_ext, bool positions_current) {
+  forward_pass(model, data, q, v, vdot, f_ext, positions_current);
 
   if (!data.all_dofs_related) {  // otherwise the pass below writes every entry
     data.dtau_dq.setZero();
@@ -137,6 +133,23 @@ void rnea_derivatives(const Model& model, Data& data, VecRef q, VecRef v, VecRef
     data.dB_W[c.parent] += B;
     data.dF_W[c.parent] += F;
   }
+}
+
+}  // namespace
+
+void rnea_derivatives(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot,
+                      std::span<const Vec6> f_ext) {
+  detail::check_data_and_q("rnea_derivatives", model, data, q);
+  detail::check_nv("rnea_derivatives", "v", model, v);
+  detail::check_nv("rnea_derivatives", "vdot", model, vdot);
+  detail::check_f_ext("rnea_derivatives", model, f_ext);
+  derivative_passes(model, data, q, v, vdot, f_ext, false);
+}
+
+void detail::rnea_derivatives_at_current_positions(const Model& model, Data& data, VecRef q,
+                                                   VecRef v, VecRef vdot,
+                                                   std::span<const Vec6> f_ext) {
+  derivative_passes(model, data, q, v, vdot, f_ext, true);
 }
 
 }  // namespace momenta::dynamics
