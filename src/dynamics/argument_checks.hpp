@@ -46,4 +46,14 @@ inline void check_f_ext(const char* algorithm, const Model& model, std::span<con
   }
 }
 
+/// The arguments of an inverse-dynamics pass (rnea, joint_reactions, rnea_derivatives): data, q,
+/// v, vdot and f_ext, each checked as above.
+inline void check_inverse_dynamics(const char* algorithm, const Model& model, const Data& data,
+                                   VecRef q, VecRef v, VecRef vdot, std::span<const Vec6> f_ext) {
+  check_data_and_q(algorithm, model, data, q);
+  check_nv(algorithm, "v", model, v);
+  check_nv(algorithm, "vdot", model, vdot);
+  check_f_ext(algorithm, model, f_ext);
+}
+
 }  // namespace momenta::dynamics::detail

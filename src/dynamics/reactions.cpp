@@ -11,10 +11,7 @@ namespace momenta::dynamics {
 
 void joint_reactions(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot,
                      std::span<const Vec6> f_ext) {
-  detail::check_data_and_q("joint_reactions", model, data, q);
-  detail::check_nv("joint_reactions", "v", model, v);
-  detail::check_nv("joint_reactions", "vdot", model, vdot);
-  detail::check_f_ext("joint_reactions", model, f_ext);
+  detail::check_inverse_dynamics("joint_reactions", model, data, q, v, vdot, f_ext);
   // The backward pass of RNEA leaves in F_B the wrench each joint transmits to its subtree
   // (Newton–Euler of the subtree: Σ of I a + v ×* I v − f_ext over it).
   rnea(model, data, q, v, vdot, f_ext);

@@ -8,10 +8,7 @@ namespace momenta::dynamics {
 
 const VecX& rnea(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot,
                  std::span<const Vec6> f_ext) {
-  detail::check_data_and_q("rnea", model, data, q);
-  detail::check_nv("rnea", "v", model, v);
-  detail::check_nv("rnea", "vdot", model, vdot);
-  detail::check_f_ext("rnea", model, f_ext);
+  detail::check_inverse_dynamics("rnea", model, data, q, v, vdot, f_ext);
   const auto& joints = model.joint_constants();
   const int nj = static_cast<int>(joints.size());
   // Gravity enters as a fictitious upward acceleration of the base (Featherstone 2008, §5.3).

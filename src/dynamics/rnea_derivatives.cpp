@@ -139,10 +139,7 @@ void derivative_passes(const Model& model, Data& data, VecRef q, VecRef v, VecRe
 
 void rnea_derivatives(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot,
                       std::span<const Vec6> f_ext) {
-  detail::check_data_and_q("rnea_derivatives", model, data, q);
-  detail::check_nv("rnea_derivatives", "v", model, v);
-  detail::check_nv("rnea_derivatives", "vdot", model, vdot);
-  detail::check_f_ext("rnea_derivatives", model, f_ext);
+  detail::check_inverse_dynamics("rnea_derivatives", model, data, q, v, vdot, f_ext);
   derivative_passes(model, data, q, v, vdot, f_ext, false);
 }
 
