@@ -20,6 +20,10 @@ struct Columns {
 // Leaves to root: x_j ← u_j = x_j − S_jᵀ p_i, and the force each joint passes on to its parent,
 // p_λ += ᵖX_i* (p_i + U_j D_j⁻¹ u_j). Each body's forces are zeroed once passed on (they start
 // and end at zero).
+//
+// A 1-dof joint passes ᵖX_i* p_i + (ᵖX_i* U_j D_j⁻¹) u_j: the second factor once per joint
+// (data.solve_U_parent, which pass_accelerations reads too), off the chain of dependent
+// operations, so that each column's transform of p_i need not wait for u_j.
 void pass_forces(const Model& model, Data& data, std::span<const char> prescribed,
                  const Columns& cols) {
   const auto& joints = model.joint_constants();
@@ -27,14 +31,32 @@ void pass_forces(const Model& model, Data& data, std::span<const char> prescribe
     const auto& c = joints[j];
     auto& p = data.solve_f[c.child];
     const bool held = !prescribed.empty() && prescribed[j];
+    if (c.nv == 1 && !held) {
+      const Transform& X = data.X_PB[c.child];
+      double* U_parent = data.solve_U_parent[j].data();
+      if (c.parent != 0) {
+        const double D_inv = data.Dinv[j](0, 0);
+        detail::to_parent(c, X, data.U[j].col(0).data(), U_parent);
+        for (int r = 0; r < 6; ++r) U_parent[r] *= D_inv;
+      }
+      for (int k = 0; k < cols.count; ++k) {
+        double* x = cols.x[k] + c.v_index;
+        auto p_k = p.col(k);
+        const double u = x[0] - (c.S_basis >= 0 ? p_k[c.S_basis] : data.S[j].col(0).dot(p_k));
+        x[0] = u;
+        if (c.parent == 0) continue;
+        double f[6];
+        detail::to_parent(c, X, p_k.data(), f);
+        auto to = data.solve_f[c.parent].col(k);
+        for (int r = 0; r < 6; ++r) to[r] += f[r] + U_parent[r] * u;
+      }
+      p.leftCols(cols.count).setZero();
+      continue;
+    }
     for (int k = 0; k < cols.count; ++k) {
       double* x = cols.x[k] + c.v_index;
       auto p_k = p.col(k);
-      if (c.nv == 1 && !held) {
-        const double u = x[0] - (c.S_basis >= 0 ? p_k[c.S_basis] : data.S[j].col(0).dot(p_k));
-        x[0] = u;
-        p_k.noalias() += data.U[j].col(0) * (data.Dinv[j](0, 0) * u);
-      } else if (c.nv > 0 && !held) {
+      if (c.nv > 0 && !held) {
         const int n = c.nv;
         auto u = Eigen::Map<VecN>(x, n);
         u.noalias() -= data.S[j].leftCols(n).transpose() * p_k;
@@ -56,6 +78,10 @@ void pass_forces(const Model& model, Data& data, std::span<const char> prescribe
 
 // Root to leaves: a_i = ⁱX_λ a_λ, ẍ_j = D_j⁻¹ (u_j − U_jᵀ a_i) written over u_j, a_i += S_j ẍ_j;
 // a prescribed joint's ẍ_j is 0.
+//
+// A 1-dof joint takes U_jᵀ a_i as (ⁱX_λᵀ U_j)ᵀ a_λ = (ᵖX_i* U_j)ᵀ a_λ, with the force U_j
+// carried to the parent by pass_forces (data.solve_U_parent), so that each column's ẍ_j and
+// ⁱX_λ a_λ are computed side by side from a_λ rather than one after the other.
 void pass_accelerations(const Model& model, Data& data, std::span<const char> prescribed,
                         const Columns& cols) {
   const auto& joints = model.joint_constants();
@@ -64,6 +90,39 @@ void pass_accelerations(const Model& model, Data& data, std::span<const char> pr
     const auto& c = joints[j];
     auto& a = data.solve_a[c.child];
     const bool held = !prescribed.empty() && prescribed[j];
+    if (c.nv == 1 && !held) {
+      const double D_inv = data.Dinv[j](0, 0);
+      if (c.parent == 0) {
+        for (int k = 0; k < cols.count; ++k) {
+          double* x = cols.x[k] + c.v_index;
+          x[0] *= D_inv;
+          a.col(k).setZero();
+          if (c.S_basis >= 0) {
+            a(c.S_basis, k) = x[0];
+          } else {
+            a.col(k) = data.S[j].col(0) * x[0];
+          }
+        }
+        continue;
+      }
+      const double* U_parent = data.solve_U_parent[j].data();  // ᵖX_i* U_j D_j⁻¹
+      for (int k = 0; k < cols.count; ++k) {
+        const double* a_parent = data.solve_a[c.parent].col(k).data();
+        auto a_k = a.col(k);
+        detail::to_child(c, data.X_PB[c.child], a_parent, a_k.data());
+        double Ua = 0.0;
+        for (int r = 0; r < 6; ++r) Ua += U_parent[r] * a_parent[r];
+        double* x = cols.x[k] + c.v_index;
+        const double xdd = D_inv * x[0] - Ua;
+        x[0] = xdd;
+        if (c.S_basis >= 0) {
+          a_k[c.S_basis] += xdd;
+        } else {
+          a_k.noalias() += data.S[j].col(0) * xdd;
+        }
+      }
+      continue;
+    }
     for (int k = 0; k < cols.count; ++k) {
       auto a_k = a.col(k);
       detail::to_child(c, data.X_PB[c.child],
@@ -73,14 +132,6 @@ void pass_accelerations(const Model& model, Data& data, std::span<const char> pr
       if (c.nv == 0) continue;
       if (held) {
         for (int r = 0; r < c.nv; ++r) x[r] = 0.0;
-      } else if (c.nv == 1) {
-        const double xdd = data.Dinv[j](0, 0) * (x[0] - data.U[j].col(0).dot(a_k));
-        x[0] = xdd;
-        if (c.S_basis >= 0) {
-          a_k[c.S_basis] += xdd;
-        } else {
-          a_k.noalias() += data.S[j].col(0) * xdd;
-        }
       } else {
         const int n = c.nv;
         auto u = Eigen::Map<VecN>(x, n);

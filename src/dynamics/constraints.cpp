@@ -24,22 +24,37 @@ using model::RollingShape;
 constexpr double kDegenerate = 1e-9;
 
 // The motion of a frame fixed in a body at one instant, in W: its pose, the body's spatial
-// velocity and velocity-product acceleration about Wo, and the frame origin's velocity.
+// velocity and an acceleration about Wo (the velocity-product part, or the whole acceleration:
+// see Accelerations), and the frame origin's velocity.
 struct FrameMotion {
   Transform X_WF;
   Vec6 V = Vec6::Zero();  // [ω; velocity of the body point at Wo]
-  Vec6 A = Vec6::Zero();  // its rate with v̇ = 0
+  Vec6 A = Vec6::Zero();  // its rate: with v̇ = 0, or with data's v̇
   Vec3 w() const { return V.head<3>(); }
   Vec3 point_velocity(const Vec3& p) const { return V.tail<3>() + V.head<3>().cross(p); }
 };
 
-FrameMotion frame_motion(const Data& data, int body, const Transform& X_BF, bool velocities) {
+// Which accelerations a row's term w·(A_b − A_a) + ẇ·(V_b − V_a) takes: none (positions and G
+// only), the velocity products (k), or the whole accelerations of data's last aba or
+// hybrid_dynamics (G v̇ + k).
+struct Accelerations {
+  enum Kind { none, velocity_products, whole } kind = none;
+  Vec6 gravity_W = Vec6::Zero();  // data.A_gf is shifted by −g: added back, in W
+  bool velocities() const { return kind != none; }
+};
+
+FrameMotion frame_motion(const Data& data, int body, const Transform& X_BF,
+                         const Accelerations& acc) {
   FrameMotion m;
   const Transform& X_WB = data.X_WB[body];
   m.X_WF = X_WB * X_BF;
-  if (velocities && body != 0) {
+  if (acc.velocities() && body != 0) {
     m.V = X_WB.act_motion(data.V_WB_B[body]);
-    m.A = X_WB.act_motion(data.A_bias_B[body]);
+    if (acc.kind == Accelerations::velocity_products) {
+      m.A = X_WB.act_motion(data.A_bias_B[body]);
+    } else {
+      m.A = X_WB.act_motion(data.A_gf[body]) + acc.gravity_W;
+    }
   }
   return m;
 }
@@ -47,7 +62,10 @@ FrameMotion frame_motion(const Data& data, int body, const Transform& X_BF, bool
 // Writes rows one at a time: φ, the wrench w and its rate ẇ (the rate only with velocities).
 class RowWriter {
  public:
-  RowWriter(ConstraintRows& rows, bool velocities) : rows_(rows), velocities_(velocities) {}
+  RowWriter(ConstraintRows& rows, const Accelerations& acc, const VecX& vdot)
+      : rows_(rows),
+        velocities_(acc.velocities()),
+        vdot_(acc.kind == Accelerations::whole ? &vdot : nullptr) {}
 
   // A row whose wrench acts on body b (and its opposite on body a).
   void wrench_row(double phi, bool holonomic, int a, int b, const Vec6& w, const Vec6& w_rate,
@@ -69,13 +87,14 @@ class RowWriter {
     rows_.G.row(i_).setZero();
     rows_.G(i_, v_a) = g_a;
     rows_.G(i_, v_b) = g_b;
-    if (velocities_) rows_.bias[i_] = 0.0;
+    if (velocities_) rows_.bias[i_] = vdot_ ? g_a * (*vdot_)[v_a] + g_b * (*vdot_)[v_b] : 0.0;
     ++i_;
   }
 
  private:
   ConstraintRows& rows_;
   bool velocities_;
+  const VecX* vdot_;  // the accelerations of G v̇ + k, or none (k)
   int i_ = 0;
 };
 
@@ -95,9 +114,9 @@ Vec3 unit_rate(const Vec3& u, const Vec3& x_rate, double norm) {
   throw NumericalError(fmt::format("constraint '{}': {}", name, why));
 }
 
-void write_loop(const LoopClosure& c, const Data& data, bool vel, RowWriter& out) {
-  const FrameMotion ma = frame_motion(data, c.a.body_index, c.a.X_BF, vel);
-  const FrameMotion mb = frame_motion(data, c.b.body_index, c.b.X_BF, vel);
+void write_loop(const LoopClosure& c, const Data& data, const Accelerations& acc, RowWriter& out) {
+  const FrameMotion ma = frame_motion(data, c.a.body_index, c.a.X_BF, acc);
+  const FrameMotion mb = frame_motion(data, c.b.body_index, c.b.X_BF, acc);
   const Mat3& RA = ma.X_WF.R;
   const Mat3& RB = mb.X_WF.R;
   const Vec3& pB = mb.X_WF.p;
@@ -134,9 +153,10 @@ void write_loop(const LoopClosure& c, const Data& data, bool vel, RowWriter& out
   }
 }
 
-void write_distance(const DistanceLink& c, const Data& data, bool vel, RowWriter& out) {
-  const FrameMotion ma = frame_motion(data, c.a.body_index, c.a.X_BF, vel);
-  const FrameMotion mb = frame_motion(data, c.b.body_index, c.b.X_BF, vel);
+void write_distance(const DistanceLink& c, const Data& data, const Accelerations& acc,
+                    RowWriter& out) {
+  const FrameMotion ma = frame_motion(data, c.a.body_index, c.a.X_BF, acc);
+  const FrameMotion mb = frame_motion(data, c.b.body_index, c.b.X_BF, acc);
   const Vec3& pa = ma.X_WF.p;
   const Vec3& pb = mb.X_WF.p;
   const Vec3 d = pb - pa;
@@ -153,9 +173,10 @@ void write_distance(const DistanceLink& c, const Data& data, bool vel, RowWriter
                  force_rate(pb, pb_rate, e, e_rate), ma, mb);
 }
 
-void write_rolling(const RollingContact& c, const Data& data, bool vel, RowWriter& out) {
+void write_rolling(const RollingContact& c, const Data& data, const Accelerations& acc,
+                   RowWriter& out) {
   const FrameMotion world;
-  const FrameMotion mb = frame_motion(data, c.frame.body_index, c.frame.X_BF, vel);
+  const FrameMotion mb = frame_motion(data, c.frame.body_index, c.frame.X_BF, acc);
   const Vec3& n = c.plane_normal;
   const Vec3& centre = mb.X_WF.p;
   Vec3 u = -n, u_rate = Vec3::Zero();         // from the centre to the contact
@@ -193,9 +214,10 @@ void write_rolling(const RollingContact& c, const Data& data, bool vel, RowWrite
                  force_rate(contact, contact_rate, lateral, lateral_rate), world, mb);
 }
 
-void write_knife_edge(const KnifeEdge& c, const Data& data, bool vel, RowWriter& out) {
+void write_knife_edge(const KnifeEdge& c, const Data& data, const Accelerations& acc,
+                      RowWriter& out) {
   const FrameMotion world;
-  const FrameMotion mb = frame_motion(data, c.frame.body_index, c.frame.X_BF, vel);
+  const FrameMotion mb = frame_motion(data, c.frame.body_index, c.frame.X_BF, acc);
   const Vec3& n = c.plane_normal;
   const Vec3 blade = mb.X_WF.R.col(0);
   const Vec3 across = n.cross(blade);
@@ -231,8 +253,21 @@ std::pair<int, int> rows_of(const ConstraintRows& rows, int k) {
 void assemble_jacobian(const Model& model, const Data& data, ConstraintRows& rows) {
   for (int j = 0; j < model.num_joints(); ++j) {
     const auto& c = model.joint_constants()[j];
+    const Transform& X_WB = data.X_WB[c.child];
+    if (c.nv == 1 && c.S_basis >= 0) {  // a column of ᵂX_B: [R e; p × R e] or [0; R e]
+      auto s = rows.S_world.col(c.v_index);
+      if (c.S_basis < 3) {
+        const Vec3 w = X_WB.R.col(c.S_basis);
+        s.head<3>() = w;
+        s.tail<3>() = X_WB.p.cross(w);
+      } else {
+        s.head<3>().setZero();
+        s.tail<3>() = X_WB.R.col(c.S_basis - 3);
+      }
+      continue;
+    }
     for (int k = 0; k < c.nv; ++k) {
-      rows.S_world.col(c.v_index + k) = data.X_WB[c.child].act_motion(data.S[j].col(k));
+      rows.S_world.col(c.v_index + k) = X_WB.act_motion(data.S[j].col(k));
     }
   }
   for (int k = 0; k < static_cast<int>(rows.first_row.size()); ++k) {
@@ -269,18 +304,14 @@ void bias_accelerations(const Model& model, Data& data) {
   }
 }
 
-void write_rows(const Model& model, const Data& data, VecRef q, bool velocities,
+void write_rows(const Model& model, const Data& data, VecRef q, const Accelerations& acc,
                 ConstraintRows& rows) {
-  RowWriter out(rows, velocities);
+  RowWriter out(rows, acc, data.vdot);
   for (const Constraint& constraint : model.constraints()) {
-    if (const auto* c = std::get_if<LoopClosure>(&constraint))
-      write_loop(*c, data, velocities, out);
-    if (const auto* c = std::get_if<DistanceLink>(&constraint))
-      write_distance(*c, data, velocities, out);
-    if (const auto* c = std::get_if<RollingContact>(&constraint))
-      write_rolling(*c, data, velocities, out);
-    if (const auto* c = std::get_if<KnifeEdge>(&constraint))
-      write_knife_edge(*c, data, velocities, out);
+    if (const auto* c = std::get_if<LoopClosure>(&constraint)) write_loop(*c, data, acc, out);
+    if (const auto* c = std::get_if<DistanceLink>(&constraint)) write_distance(*c, data, acc, out);
+    if (const auto* c = std::get_if<RollingContact>(&constraint)) write_rolling(*c, data, acc, out);
+    if (const auto* c = std::get_if<KnifeEdge>(&constraint)) write_knife_edge(*c, data, acc, out);
     if (const auto* c = std::get_if<JointCoupler>(&constraint)) write_coupler(*c, model, q, out);
   }
   assemble_jacobian(model, data, rows);
@@ -313,10 +344,16 @@ ConstraintRows::ConstraintRows(const Model& model)
 
 void constraint_equations(const Model& model, Data& data, VecRef q, ConstraintRows& rows,
                           RowTerms terms) {
-  const bool velocities = terms == RowTerms::with_velocity_products;
+  Accelerations acc;
+  if (terms == RowTerms::with_velocity_products) {
+    acc.kind = Accelerations::velocity_products;
+  } else if (terms == RowTerms::with_acceleration_residual) {
+    acc.kind = Accelerations::whole;
+    acc.gravity_W = spatial(Vec3::Zero(), model.gravity());
+  }
   world_poses(model, data);
-  if (velocities) bias_accelerations(model, data);
-  write_rows(model, data, q, velocities, rows);
+  if (acc.kind == Accelerations::velocity_products) bias_accelerations(model, data);
+  write_rows(model, data, q, acc, rows);
 }
 
 void constraint_forces(const Model& model, const Data& data, const ConstraintRows& rows,

@@ -38,6 +38,7 @@ Data::Data(const Model& model) {
   u.assign(nj, Vec6::Zero());
   solve_f.assign(nb, SolveColumns::Zero());
   solve_a.assign(nb, SolveColumns::Zero());
+  solve_U_parent.assign(nj, Vec6::Zero());
   I_composite.assign(nb, SpatialInertia());
   S_W = MatX::Zero(nv, 6);
   tau = VecX::Zero(nv);

@@ -54,6 +54,7 @@ ConstraintSolver::ConstraintSolver(const model::Model& model)
   Y_ = MatX::Zero(model.nv(), m);
   dv_ = VecX::Zero(nf);
   all_rows_.assign(m, 1);
+  exerts_.assign(m, 0);
   position_rows_.assign(rows_.holonomic.begin(), rows_.holonomic.end());
   if (m > 0) {
     dynamics::Data data(model);
@@ -124,19 +125,25 @@ void ConstraintSolver::find_redundant_rows(dynamics::Data& data, VecRef q) {
 }
 
 bool ConstraintSolver::correct_accelerations(dynamics::Data& data, VecRef q, VecX& vdot) {
-  dynamics::constraint_equations(model_, data, q, rows_,
-                                 dynamics::RowTerms::with_velocity_products);
+  // λ from (G M⁻¹ Gᵀ) λ = −(G v̇₀ + k) (the full G: prescribed accelerations enter too). The
+  // articulated method reads G v̇₀ + k off the bodies' accelerations of the free dynamics just
+  // computed (vdot is data.vdot there); the dense one, the check, forms k and G v̇₀ apart.
   if (method_ == AccelerationMethod::articulated) {
+    dynamics::constraint_equations(model_, data, q, rows_,
+                                   dynamics::RowTerms::with_acceleration_residual);
     factor_rows_articulated(data);
+    rhs_.noalias() = -rows_.bias;
+    rows_.bias.noalias() -= rows_.G.lazyProduct(vdot);  // k, for whoever reads the rows
   } else {
+    dynamics::constraint_equations(model_, data, q, rows_,
+                                   dynamics::RowTerms::with_velocity_products);
     gather_free_columns();
     factor_mass_matrix(data, q);
     factor_rows(all_rows_);
+    rhs_.noalias() = -rows_.bias;
+    rhs_.noalias() -= rows_.G * vdot;
   }
   if (cholesky_->rank() < reference_rank_) return false;
-  // λ from (G M⁻¹ Gᵀ) λ = −k − G v̇₀ (the full G: prescribed accelerations enter too).
-  rhs_.noalias() = -rows_.bias;
-  rhs_.noalias() -= rows_.G * vdot;
   cholesky_->solve_in_place(rhs_);
   lambda_ = rhs_;
   if (method_ == AccelerationMethod::articulated) {
@@ -155,7 +162,18 @@ void ConstraintSolver::factor_rows_articulated(dynamics::Data& data) {
                                                ? std::span<const char>(data.prescribed_mask)
                                                : std::span<const char>();
   dynamics::articulated_solve(model_, data, prescribed, Y_);
-  A_.noalias() = rows_.G.lazyProduct(Y_);
+  // A = G Y, symmetric: its lower triangle (what the factorization reads), and nothing to form
+  // for a row that exerts no force here (its column of Y is zero: a planar loop's out-of-plane
+  // rows).
+  const int m = rows_.count;
+  for (int c = 0; c < m; ++c) {
+    exerts_[c] = !Y_.col(c).isZero(0.0);
+    if (!exerts_[c]) A_.col(c).setZero();
+  }
+  for (int c = 0; c < m; ++c) {
+    if (!exerts_[c]) continue;
+    for (int r = c; r < m; ++r) A_(r, c) = exerts_[r] ? rows_.G.row(r).dot(Y_.col(c)) : 0.0;
+  }
   cholesky_->factorize(A_, kDependentRow);
 }
 

@@ -37,13 +37,15 @@ namespace momenta::dynamics {
 struct ConstraintRows {
   explicit ConstraintRows(const Model& model);
 
-  int count = 0;                    ///< rows (model.num_constraint_rows())
-  std::vector<int> constraint;      ///< per row: index into model.constraints()
-  std::vector<int> first_row;       ///< per constraint: its first row
-  std::vector<char> holonomic;      ///< per row: 1 for a position row
-  VecX position;                    ///< φ per row (m or rad); 0 on velocity-only rows
-  MatX G;                           ///< count × nv
-  VecX bias;                        ///< k = Ġ v per row (after constraint_equations with v)
+  int count = 0;                ///< rows (model.num_constraint_rows())
+  std::vector<int> constraint;  ///< per row: index into model.constraints()
+  std::vector<int> first_row;   ///< per constraint: its first row
+  std::vector<char> holonomic;  ///< per row: 1 for a position row
+  VecX position;                ///< φ per row (m or rad); 0 on velocity-only rows
+  MatX G;                       ///< count × nv
+  /// k = Ġ v per row (RowTerms::with_velocity_products), or G v̇ + k at data's accelerations
+  /// (RowTerms::with_acceleration_residual).
+  VecX bias;
   std::vector<Vec6> wrench_W;       ///< per row: w_i on body b, in W about Wo; zero for a coupler
   std::vector<int> body_a, body_b;  ///< per row: the bodies w_i acts on (a may be the world, 0)
   std::vector<std::string> names;   ///< per row: "<constraint>.<row>" for messages
@@ -55,15 +57,20 @@ struct ConstraintRows {
 enum class RowTerms {
   jacobian,                ///< φ, G and the wrenches: needs data's poses of q
   with_velocity_products,  ///< also k: needs data's velocities of (q, v) as well
+  /// G v̇ + k in `bias` instead of k, for the v̇ of the last aba or hybrid_dynamics (data.vdot
+  /// and the bodies' accelerations data.A_gf): what the constraint solver's right-hand side
+  /// needs, without the velocity-product pass over the bodies or the product G v̇.
+  with_acceleration_residual,
 };
 
 /// φ, G and the wrenches at the configuration of `data`, whose X_PB and S must be those of q (set
 /// by forward_kinematics(q), aba, rnea, crba or hybrid_dynamics); also sets data.X_WB. With
 /// RowTerms::with_velocity_products, also k: data must then hold the velocities of (q, v) too
 /// (V_WB_B and c_B, from forward_kinematics(q, v), aba or hybrid_dynamics), and data.A_bias_B is
-/// set. Throws NumericalError when a constraint has no direction there (a distance link's points
-/// coincide, a rolling disk lies flat on its plane, a knife edge stands on its blade's end). No
-/// allocation.
+/// set. With RowTerms::with_acceleration_residual, bias = G v̇ + k for the accelerations of the
+/// aba or hybrid_dynamics call that set data's velocities (data.A_bias_B is not set). Throws
+/// NumericalError when a constraint has no direction there (a distance link's points coincide, a
+/// rolling disk lies flat on its plane, a knife edge stands on its blade's end). No allocation.
 void constraint_equations(const Model& model, Data& data, VecRef q, ConstraintRows& rows,
                           RowTerms terms = RowTerms::jacobian);
 

@@ -70,6 +70,9 @@ struct Data {
   /// Per body: the forces its subtree passes to its joint, in B (zero between calls).
   std::vector<SolveColumns> solve_f;
   std::vector<SolveColumns> solve_a;  ///< Per body: its spatial accelerations, in B.
+  /// Per 1-dof joint: ᵖX_i* U_j D_j⁻¹, its articulated factor carried to the parent (the first
+  /// pass sets it, the second reads it).
+  std::vector<Vec6> solve_U_parent;
 
   // --- Workspace of crba -----------------------------------------------------------------------
   std::vector<SpatialInertia> I_composite;  ///< Composite inertia of B's subtree, in B about Bo.

@@ -99,8 +99,10 @@ class ConstraintSolver {
   /// Corrects the unconstrained accelerations vdot (size nv; prescribed coordinates kept) at
   /// (t, q, v) to the constrained ones, stores λ and returns true. `data` holds what aba(q, v, …)
   /// — or, where the model has prescribed joints, hybrid_dynamics(q, v, …) with data's
-  /// prescribed_mask — left in it (kinematics and articulated-body factors); the dense method's
-  /// crba overwrites its mass matrix. Returns
+  /// prescribed_mask — left in it (kinematics, the bodies' accelerations and the articulated-body
+  /// factors), and vdot is those accelerations (data.vdot, or a copy: the articulated method
+  /// reads G v̇ + k off the bodies' accelerations in data); the dense method's crba overwrites
+  /// its mass matrix. Returns
   /// false, vdot and λ undetermined, at a singular configuration — fewer independent rows than
   /// at the reference (a four-bar at a dead point): the rows there do not fix the accelerations
   /// (MultibodySystem takes their limit along the motion). No allocation.
@@ -162,8 +164,9 @@ class ConstraintSolver {
   dynamics::ConstraintRows rows_;
   std::vector<int> free_;  // velocity indices not prescribed
   std::vector<char> all_rows_, position_rows_;
-  MatX M_ff_, G_f_, W_, A_;  // W = L⁻¹ G_fᵀ with M_ff = L Lᵀ; A = Wᵀ W
-  MatX Y_;                   // nv × rows: M⁻¹ Gᵀ (articulated; 0 on prescribed coordinates)
+  MatX M_ff_, G_f_, W_, A_;   // W = L⁻¹ G_fᵀ with M_ff = L Lᵀ; A = Wᵀ W
+  MatX Y_;                    // nv × rows: M⁻¹ Gᵀ (articulated; 0 on prescribed coordinates)
+  std::vector<char> exerts_;  // per row: its column of Y is not zero (articulated)
   AccelerationMethod method_ = AccelerationMethod::articulated;
   Eigen::LLT<MatX> llt_;
   VecX lambda_, rhs_, dv_, delta_, q_saved_;

@@ -19,6 +19,7 @@
 #include "momenta/dynamics/aba.hpp"
 #include "momenta/dynamics/constraints.hpp"
 #include "momenta/dynamics/crba.hpp"
+#include "momenta/dynamics/hybrid_dynamics.hpp"
 #include "momenta/dynamics/kinematics.hpp"
 #include "momenta/inertia/primitives.hpp"
 #include "momenta/model/model_builder.hpp"
@@ -156,6 +157,32 @@ TEST_F(ConstraintRowsTest, VelocityProductTermIsTheRateOfTheVelocityRows) {
       EXPECT_NEAR(accel[i], rate[i], 1e-7 * (1 + std::abs(accel[i])))
           << rows.names[i] << " trial " << trial;
     }
+  }
+}
+
+// The solver's right-hand side read off the bodies' accelerations of aba or hybrid_dynamics
+// (RowTerms::with_acceleration_residual) is G v̇ + k formed from G and k: both are sums of the
+// same few products, so they agree to round-off of the largest term (measured ≤ 5.8e-16 of
+// it; a wrong term would show at O(1)).
+TEST_F(ConstraintRowsTest, AccelerationResidualIsGTimesTheAccelerationsPlusK) {
+  std::vector<char> prescribed(model.num_joints(), 0);
+  prescribed[0] = prescribed[3] = 1;  // j1 and j4: the gear's two joints, driven
+  for (int trial = 0; trial < 20; ++trial) {
+    const RandomState s = random_state(model, rng);
+    const VecX tau = 5.0 * s.vdot.reverse();
+    const bool hybrid = trial % 2 == 1;
+    const VecX vdot =
+        hybrid ? dynamics::hybrid_dynamics(model, data, prescribed, s.q, s.v, s.vdot, tau)
+               : dynamics::aba(model, data, s.q, s.v, tau);
+    dynamics::constraint_equations(model, data, s.q, rows,
+                                   dynamics::RowTerms::with_acceleration_residual);
+    const VecX residual = rows.bias;
+    rows_at(s.q, s.v);
+    const VecX expected = rows.G * vdot + rows.bias;
+    const double scale = std::max({1.0, rows.G.cwiseAbs().maxCoeff() * vdot.cwiseAbs().maxCoeff(),
+                                   rows.bias.cwiseAbs().maxCoeff()});
+    ASSERT_TRUE(residual.allFinite());
+    EXPECT_MATRIX_NEAR(residual, expected, 1e-14 * scale) << "trial " << trial;
   }
 }
 

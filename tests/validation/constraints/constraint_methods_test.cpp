@@ -15,6 +15,7 @@
 #include <Eigen/SVD>
 
 #include "momenta/dynamics/aba.hpp"
+#include "momenta/dynamics/constraints.hpp"
 #include "momenta/dynamics/crba.hpp"
 #include "momenta/dynamics/hybrid_dynamics.hpp"
 #include "momenta/dynamics/rnea.hpp"
@@ -47,9 +48,13 @@ Corrected correct(const model::Model& model, const VecX& q, const VecX& v,
                   : dynamics::aba(model, data, q, v, zero);
   EXPECT_TRUE(solver.correct_accelerations(data, q, vdot));
   Corrected out{vdot, solver.multipliers()};
-  const dynamics::ConstraintRows& rows = solver.rows();
+  // G and k formed apart from the solver (whose articulated method reads G v̇₀ + k off the
+  // bodies' accelerations and the rows' k from that).
+  const VecX tau_total = dynamics::rnea(model, data, q, v, vdot);
+  dynamics::ConstraintRows rows(model);
+  dynamics::constraint_equations(model, data, q, rows, dynamics::RowTerms::with_velocity_products);
   const VecX generalized = rows.G.transpose() * out.lambda;
-  const VecX tau = dynamics::rnea(model, data, q, v, vdot) - generalized;
+  const VecX tau = tau_total - generalized;
   for (const model::Joint& j : model.joints()) {
     if (j.is_prescribed()) continue;
     for (int k = 0; k < j.nv(); ++k)
