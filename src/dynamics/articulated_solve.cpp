@@ -34,11 +34,9 @@ void pass_forces(const Model& model, Data& data, std::span<const char> prescribe
     if (c.nv == 1 && !held) {
       const Transform& X = data.X_PB[c.child];
       double* U_parent = data.solve_U_parent[j].data();
-      if (c.parent != 0) {
-        const double D_inv = data.Dinv[j](0, 0);
-        detail::to_parent(c, X, data.U[j].col(0).data(), U_parent);
-        for (int r = 0; r < 6; ++r) U_parent[r] *= D_inv;
-      }
+      const double D_inv = data.Dinv[j](0, 0);
+      detail::to_parent(c, X, data.U[j].col(0).data(), U_parent);
+      for (int r = 0; r < 6; ++r) U_parent[r] *= D_inv;
       for (int k = 0; k < cols.count; ++k) {
         double* x = cols.x[k] + c.v_index;
         auto p_k = p.col(k);
@@ -92,22 +90,10 @@ void pass_accelerations(const Model& model, Data& data, std::span<const char> pr
     const bool held = !prescribed.empty() && prescribed[j];
     if (c.nv == 1 && !held) {
       const double D_inv = data.Dinv[j](0, 0);
-      if (c.parent == 0) {
-        for (int k = 0; k < cols.count; ++k) {
-          double* x = cols.x[k] + c.v_index;
-          x[0] *= D_inv;
-          a.col(k).setZero();
-          if (c.S_basis >= 0) {
-            a(c.S_basis, k) = x[0];
-          } else {
-            a.col(k) = data.S[j].col(0) * x[0];
-          }
-        }
-        continue;
-      }
       const double* U_parent = data.solve_U_parent[j].data();  // ᵖX_i* U_j D_j⁻¹
       for (int k = 0; k < cols.count; ++k) {
-        const double* a_parent = data.solve_a[c.parent].col(k).data();
+        const double* a_parent =
+            c.parent == 0 ? at_rest.data() : data.solve_a[c.parent].col(k).data();
         auto a_k = a.col(k);
         detail::to_child(c, data.X_PB[c.child], a_parent, a_k.data());
         double Ua = 0.0;

@@ -39,7 +39,8 @@ struct FrameMotion {
 // hybrid_dynamics (G v̇ + k).
 struct Accelerations {
   enum Kind { none, velocity_products, whole } kind = none;
-  Vec6 gravity_W = Vec6::Zero();  // data.A_gf is shifted by −g: added back, in W
+  Vec6 gravity_W = Vec6::Zero();  // whole: data.A_gf is shifted by −g, added back in W
+  const VecX* vdot = nullptr;     // whole: data.vdot, for a coupler's row
   bool velocities() const { return kind != none; }
 };
 
@@ -62,10 +63,8 @@ FrameMotion frame_motion(const Data& data, int body, const Transform& X_BF,
 // Writes rows one at a time: φ, the wrench w and its rate ẇ (the rate only with velocities).
 class RowWriter {
  public:
-  RowWriter(ConstraintRows& rows, const Accelerations& acc, const VecX& vdot)
-      : rows_(rows),
-        velocities_(acc.velocities()),
-        vdot_(acc.kind == Accelerations::whole ? &vdot : nullptr) {}
+  RowWriter(ConstraintRows& rows, const Accelerations& acc)
+      : rows_(rows), velocities_(acc.velocities()), vdot_(acc.vdot) {}
 
   // A row whose wrench acts on body b (and its opposite on body a).
   void wrench_row(double phi, bool holonomic, int a, int b, const Vec6& w, const Vec6& w_rate,
@@ -306,7 +305,7 @@ void bias_accelerations(const Model& model, Data& data) {
 
 void write_rows(const Model& model, const Data& data, VecRef q, const Accelerations& acc,
                 ConstraintRows& rows) {
-  RowWriter out(rows, acc, data.vdot);
+  RowWriter out(rows, acc);
   for (const Constraint& constraint : model.constraints()) {
     if (const auto* c = std::get_if<LoopClosure>(&constraint)) write_loop(*c, data, acc, out);
     if (const auto* c = std::get_if<DistanceLink>(&constraint)) write_distance(*c, data, acc, out);
@@ -350,6 +349,7 @@ void constraint_equations(const Model& model, Data& data, VecRef q, ConstraintRo
   } else if (terms == RowTerms::with_acceleration_residual) {
     acc.kind = Accelerations::whole;
     acc.gravity_W = spatial(Vec3::Zero(), model.gravity());
+    acc.vdot = &data.vdot;
   }
   world_poses(model, data);
   if (acc.kind == Accelerations::velocity_products) bias_accelerations(model, data);

@@ -54,7 +54,6 @@ ConstraintSolver::ConstraintSolver(const model::Model& model)
   Y_ = MatX::Zero(model.nv(), m);
   dv_ = VecX::Zero(nf);
   all_rows_.assign(m, 1);
-  exerts_.assign(m, 0);
   position_rows_.assign(rows_.holonomic.begin(), rows_.holonomic.end());
   if (m > 0) {
     dynamics::Data data(model);
@@ -167,12 +166,11 @@ void ConstraintSolver::factor_rows_articulated(dynamics::Data& data) {
   // rows).
   const int m = rows_.count;
   for (int c = 0; c < m; ++c) {
-    exerts_[c] = !Y_.col(c).isZero(0.0);
-    if (!exerts_[c]) A_.col(c).setZero();
-  }
-  for (int c = 0; c < m; ++c) {
-    if (!exerts_[c]) continue;
-    for (int r = c; r < m; ++r) A_(r, c) = exerts_[r] ? rows_.G.row(r).dot(Y_.col(c)) : 0.0;
+    if (Y_.col(c).isZero(0.0)) {
+      A_.col(c).setZero();
+      continue;
+    }
+    for (int r = c; r < m; ++r) A_(r, c) = rows_.G.row(r).dot(Y_.col(c));
   }
   cholesky_->factorize(A_, kDependentRow);
 }

@@ -164,9 +164,8 @@ class ConstraintSolver {
   dynamics::ConstraintRows rows_;
   std::vector<int> free_;  // velocity indices not prescribed
   std::vector<char> all_rows_, position_rows_;
-  MatX M_ff_, G_f_, W_, A_;   // W = L⁻¹ G_fᵀ with M_ff = L Lᵀ; A = Wᵀ W
-  MatX Y_;                    // nv × rows: M⁻¹ Gᵀ (articulated; 0 on prescribed coordinates)
-  std::vector<char> exerts_;  // per row: its column of Y is not zero (articulated)
+  MatX M_ff_, G_f_, W_, A_;  // W = L⁻¹ G_fᵀ with M_ff = L Lᵀ; A = Wᵀ W
+  MatX Y_;                   // nv × rows: M⁻¹ Gᵀ (articulated; 0 on prescribed coordinates)
   AccelerationMethod method_ = AccelerationMethod::articulated;
   Eigen::LLT<MatX> llt_;
   VecX lambda_, rhs_, dv_, delta_, q_saved_;
