@@ -15,6 +15,9 @@
 //   BM_SimulatedSecond/<model>/...  one simulated second: 1000 RK4 steps of 1 ms through
 //                                   integrate::run, with the projection onto the constraints after
 //                                   every step in the closed cases.
+//   BM_Linearize/<model>            analysis::linearize of the closed model at its moving
+//                                   consistent state (independent coordinates, A and the reduced
+//                                   mass, stiffness and damping; no inputs, the states as outputs).
 //
 // Run: build-bench/bench/constraints_bench --benchmark_repetitions=5
 //      --benchmark_report_aggregates_only=true
@@ -25,6 +28,7 @@
 #include <benchmark/benchmark.h>
 #include <fmt/format.h>
 
+#include "momenta/analysis/linearize.hpp"
 #include "momenta/integrate/run.hpp"
 #include "momenta/integrate/runge_kutta.hpp"
 #include "momenta/io/model_file.hpp"
@@ -115,7 +119,17 @@ void BM_SimulatedSecond(benchmark::State& bench) {
   label(bench);
 }
 
+void BM_Linearize(benchmark::State& bench) {
+  Setup s(static_cast<int>(bench.range(0)), 0);
+  const analysis::OperatingPoint point{0.0, s.state.q, s.state.v};
+  for (auto _ : bench) {
+    benchmark::DoNotOptimize(analysis::linearize(s.file.model, point).system.A().data());
+  }
+  bench.SetLabel(kModels[bench.range(0)]);
+}
+
 BENCHMARK(BM_Acceleration)->ArgsProduct({{0, 1, 2}, {0, 1, 2}});
 BENCHMARK(BM_SimulatedSecond)->ArgsProduct({{0, 1, 2}, {0, 1, 2}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Linearize)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

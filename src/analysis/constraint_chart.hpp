@@ -30,6 +30,11 @@ class ConstraintChart {
   const std::vector<int>& dependent_positions() const { return position_dependent_; }
   const std::vector<int>& dependent_velocities() const { return velocity_dependent_; }
 
+  /// The independent rows of G at the operating point: the holonomic ones, and those with the
+  /// velocity-only rows after them (the rows the dependent coordinates solve).
+  const std::vector<int>& holonomic_rows() const { return holonomic_rows_; }
+  const std::vector<int>& velocity_rows() const { return velocity_rows_; }
+
   /// q(ξ) = q0 ⊕ δ with δ on the configuration states ξ, on the dependent coordinates solved so
   /// that the independent holonomic rows hold (Newton's method until |φ| stops decreasing), 0
   /// elsewhere; also returns δ. Throws NumericalError when |φ| stays above 1e-9 (m or rad): ξ

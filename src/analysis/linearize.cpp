@@ -27,9 +27,7 @@ using detail::Jacobians;
 using detail::kExactStep;
 using detail::ModelResidual;
 using detail::OutputRow;
-
-// Tangent step for ∂δ̇/∂δ: exact for any |h| < π (J_r(δ)⁻¹ beyond its linear term is even in δ).
-constexpr double kRotationRateStep = 0.5;
+using detail::rotation_rate_jacobian;
 
 void check_arguments(const OperatingPoint& point, const LinearizationOptions& options) {
   if (!std::isfinite(point.t)) {
@@ -88,33 +86,43 @@ struct Differentiated {
 };
 
 // ∂g/∂δq and ∂g/∂v: the equations of motion analytically (ModelResidual::derivatives), the output
-// columns by differences — Richardson-extrapolated on δq, exact central ones on v.
-void differentiate_state(const Differentiated& f, const std::vector<int>& free, Jacobians& J) {
+// columns by differences — Richardson-extrapolated on δq, exact central ones on v. With
+// `differences`, the equations' rows by the same differences as the outputs (the check).
+void differentiate_state(const Differentiated& f, const std::vector<int>& free, bool differences,
+                         Jacobians& J) {
   J.dq.resize(f.nf + f.columns, f.nf);
   J.dv.resize(f.nf + f.columns, f.nf);
   MatX dr_dq, dr_dv;
   f.residual.derivatives(f.t, f.q0, f.v0, f.a_free, dr_dq, dr_dv);
   J.dq.topRows(f.nf) = dr_dq;
   J.dv.topRows(f.nf) = dr_dv;
-  if (f.columns == 0) return;
+  if (f.columns == 0 && !differences) return;
+  const auto evaluate = [&](const VecX& q, const VecX& v, VecX& out) {
+    if (differences) {
+      f.evaluate(q, v, out);
+    } else {
+      f.evaluate_outputs(q, v, out);
+    }
+  };
+  const int first = differences ? 0 : f.nf;  // the first row the differences fill
   VecX plus, minus, coarse, d, tangent, q_step, v_step;
   for (int k = 0; k < f.nf; ++k) {
     const int i = free[static_cast<std::size_t>(k)];
     detail::richardson_difference(
         [&](double s, VecX& out) {
           detail::displace(f.model, f.q0, i, s, tangent, q_step);
-          f.evaluate_outputs(q_step, f.v0, out);
+          evaluate(q_step, f.v0, out);
         },
         f.configuration_step(i), plus, minus, coarse, d);
-    J.dq.col(k).tail(f.columns) = d;
+    J.dq.col(k).tail(f.nf + f.columns - first) = d;
     detail::central_difference(
         [&](double s, VecX& out) {
           v_step = f.v0;
           v_step[i] += s;
-          f.evaluate_outputs(f.q0, v_step, out);
+          evaluate(f.q0, v_step, out);
         },
         kExactStep, plus, minus, d);
-    J.dv.col(k).tail(f.columns) = d;
+    J.dv.col(k).tail(f.nf + f.columns - first) = d;
   }
 }
 
@@ -147,7 +155,8 @@ std::optional<std::vector<int>> coordinates_set_by(const model::Model& model, in
 }
 
 // ∂g/∂u: value, rate and acceleration offsets of each input's signal.
-void differentiate_inputs(const Differentiated& f, const std::vector<Input>& inputs, Jacobians& J) {
+void differentiate_inputs(const Differentiated& f, const std::vector<Input>& inputs,
+                          bool differences, Jacobians& J) {
   const int m = static_cast<int>(inputs.size());
   J.du0 = MatX::Zero(f.nf + f.columns, m);
   J.du1 = MatX::Zero(f.nf + f.columns, m);
@@ -167,7 +176,7 @@ void differentiate_inputs(const Differentiated& f, const std::vector<Input>& inp
       // ∂r_f/∂δq of every coordinate), the output columns by differences.
       detail::richardson_difference(perturbed(1, 0, 0), f.prescribed_step(input.signal), plus,
                                     minus, coarse, d);
-      if (const auto set = coordinates_set_by(f.model, input.signal)) {
+      if (const auto set = differences ? std::nullopt : coordinates_set_by(f.model, input.signal)) {
         d.head(f.nf).setZero();
         for (int i : *set) d.head(f.nf) += f.residual.dr_dq_all().col(i);
       }
@@ -184,27 +193,6 @@ void differentiate_inputs(const Differentiated& f, const std::vector<Input>& inp
     }
     f.residual.clear_offsets();
   }
-}
-
-// T = ∂δ̇/∂δ from δ̇ = J_r(δ)⁻¹ ω (zero unless a ball or free joint turns).
-MatX rotation_rate_jacobian(const model::Model& model, const std::vector<int>& free,
-                            const VecX& v0) {
-  const int nf = static_cast<int>(free.size());
-  MatX T = MatX::Zero(nf, nf);
-  VecX tangent(model.nv()), rate_plus(model.nv()), rate_minus(model.nv());
-  for (int k = 0; k < nf; ++k) {
-    const int i = free[static_cast<std::size_t>(k)];
-    tangent.setZero();
-    tangent[i] = kRotationRateStep;
-    model::local_coordinate_rate(model, tangent, v0, rate_plus);
-    tangent[i] = -kRotationRateStep;
-    model::local_coordinate_rate(model, tangent, v0, rate_minus);
-    for (int a = 0; a < nf; ++a) {
-      const int ia = free[static_cast<std::size_t>(a)];
-      T(a, k) = (rate_plus[ia] - rate_minus[ia]) / (2 * kRotationRateStep);
-    }
-  }
-  return T;
 }
 
 // A = [T 1; −M⁻¹ K  −M⁻¹ C_v] and the input columns B = [0; −M⁻¹ ∂r_f/∂u] of each kind.
@@ -315,8 +303,9 @@ LinearModel linearize(const model::Model& model, const OperatingPoint& point,
   VecX g0;
   f.evaluate(q0, v0, g0);
   Jacobians J;
-  differentiate_state(f, free, J);
-  differentiate_inputs(f, inputs, J);
+  const bool differences = options.derivatives == LinearizationOptions::Derivatives::differences;
+  differentiate_state(f, free, differences, J);
+  differentiate_inputs(f, inputs, differences, J);
   detail::check_jacobians_finite(J);
 
   // M_ff and its Cholesky factor: ∂a/∂(·) = −M⁻¹ ∂r/∂(·).

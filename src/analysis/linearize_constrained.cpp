@@ -56,6 +56,86 @@ class ChartedMotion {
   VecX q_, v_, delta_, delta_rate_;
 };
 
+// The velocity indices `coordinates` as positions in the free coordinates.
+std::vector<int> slots_of(const std::vector<int>& coordinates, const std::vector<int>& free) {
+  std::vector<int> slots;
+  for (int i : coordinates)
+    slots.push_back(static_cast<int>(std::find(free.begin(), free.end(), i) - free.begin()));
+  return slots;
+}
+
+// The state equations' rows of A, [∂ξ̇/∂ξ ∂ξ̇/∂ζ; ∂ζ̇/∂ξ ∂ζ̇/∂ζ], analytically (linearize.hpp,
+// "Models with constraints"): the chart's maps from its rows' Jacobian G and their derivatives
+// (dynamics/constraint_derivatives.hpp), the accelerations' from the derivatives of the
+// constrained equations r_f(q, v, v̇) − G_fᵀ λ = 0, G v̇ + k = 0 (r_f: ModelResidual).
+MatX charted_state_matrix(ModelResidual& residual, ConstraintChart& chart,
+                          const OperatingPoint& p) {
+  const model::Model& model = residual.model();
+  const std::vector<int>& free = residual.free();
+  const int nf = residual.nf();
+  const std::vector<int> xi = slots_of(chart.positions(), free);
+  const std::vector<int> zeta = slots_of(chart.velocities(), free);
+  const std::vector<int> position_dependent = slots_of(chart.dependent_positions(), free);
+  const std::vector<int> velocity_dependent = slots_of(chart.dependent_velocities(), free);
+  const std::vector<int>& rows = chart.velocity_rows();  // the independent rows
+  const auto all = Eigen::all;
+
+  // The tree's residual, the multipliers the solver finds at the point and the rows' derivatives.
+  system::MultibodySystem& system = residual.system();
+  const VecX& vdot = system.evaluate(p.t, p.q, p.v);
+  VecX a_free(nf);
+  for (int k = 0; k < nf; ++k) a_free[k] = vdot[free[static_cast<std::size_t>(k)]];
+  MatX dr_dq, dr_dv;
+  residual.derivatives(p.t, p.q, p.v, a_free, dr_dq, dr_dv);
+  dynamics::ConstraintDerivatives rows_d(model);
+  residual.constraint_derivatives(system.constraints()->multipliers(), rows_d);
+  const MatX G = rows_d.rows.G(rows, free);
+
+  // ∂δ/∂ξ = Q: unit on ξ, the dependent coordinates keeping the holonomic rows (G_h Q = 0).
+  MatX Q = MatX::Zero(nf, static_cast<Eigen::Index>(xi.size()));
+  for (std::size_t k = 0; k < xi.size(); ++k) Q(xi[k], static_cast<Eigen::Index>(k)) = 1.0;
+  if (!position_dependent.empty()) {
+    const MatX G_h = rows_d.rows.G(chart.holonomic_rows(), free);
+    Q(position_dependent, all) =
+        MatX(-G_h(all, position_dependent).partialPivLu().solve(G_h(all, xi)));
+  }
+  // ∂v/∂δ = P at fixed ζ: the dependent velocities keeping G(q) v = 0.
+  MatX P = MatX::Zero(nf, nf);
+  const Eigen::PartialPivLU<MatX> G_dependent(G(all, velocity_dependent));
+  if (!velocity_dependent.empty())
+    P(velocity_dependent, all) = MatX(-G_dependent.solve(rows_d.velocity_dq(rows, free)));
+
+  // ∂v̇ along δ or v from M ∂v̇ − Gᵀ ∂λ = −R, G ∂v̇ = −E: ∂v̇ = d + T y with d on the dependent
+  // velocities (G d = −E) and Tᵀ M T y = −Tᵀ (R + M d), T = ∂v_f/∂ζ (G T = 0).
+  const MatX T = chart.velocity_map(p.q);
+  const MatX M = residual.free_mass(p.t, p.q);
+  const Eigen::LLT<MatX> reduced_mass(T.transpose() * M * T);
+  if (reduced_mass.info() != Eigen::Success) {
+    throw NumericalError(
+        "linearize: the reduced mass matrix of the independent coordinates is not positive "
+        "definite");
+  }
+  const auto acceleration_derivative = [&](const MatX& R, const MatX& E) {
+    MatX D = MatX::Zero(nf, R.cols());
+    if (!velocity_dependent.empty()) D(velocity_dependent, all) = MatX(G_dependent.solve(-E));
+    D += T * reduced_mass.solve(-T.transpose() * (R + M * D));
+    return D;
+  };
+  const MatX dvdot_dq =
+      acceleration_derivative(dr_dq - rows_d.force_dq(free, free), rows_d.residual_dq(rows, free));
+  const MatX dvdot_dv = acceleration_derivative(dr_dv, rows_d.residual_dv(rows, free));
+
+  // ξ̇ = [J_r(δ)⁻¹ v]_ξ and ζ̇ = [v̇]_ζ along the chart.
+  const MatX rate_dxi = (rotation_rate_jacobian(model, free, p.v) + P) * Q;
+  const MatX vdot_dxi = (dvdot_dq + dvdot_dv * P) * Q;
+  const MatX vdot_dzeta = dvdot_dv * T;
+  const auto nx = static_cast<Eigen::Index>(xi.size());
+  const auto nz = static_cast<Eigen::Index>(zeta.size());
+  MatX A(nx + nz, nx + nz);
+  A << rate_dxi(xi, all), T(xi, all), vdot_dxi(zeta, all), vdot_dzeta(zeta, all);
+  return A;
+}
+
 // The reduced second-order form of a holonomic model (linearize.hpp): mass = Tᵀ M_ff T with
 // T = ∂v_f/∂ζ, stiffness = −mass ∂ζ̇/∂ξ, damping = −mass ∂ζ̇/∂ζ.
 void reduced_second_order_form(LinearModel& result, ModelResidual& residual, ConstraintChart& chart,
@@ -124,7 +204,9 @@ LinearModel linearize_constrained(const model::Model& model, const OperatingPoin
   for (const OutputRow& row : rows) output_names.push_back(row.name);
   for (const Input& input : inputs) input_names.push_back(input.name);
 
-  // g = [ξ̇; ζ̇; outputs] differentiated at ξ = 0, ζ = ζ₀.
+  // g = [ξ̇; ζ̇; outputs] at ξ = 0, ζ = ζ₀: its state rows differentiated analytically, the
+  // output columns by differences (Richardson on ξ, exact on ζ; the state rows too with
+  // Derivatives::differences), the loads by exact differences.
   ChartedMotion motion(residual, chart, output_set, t);
   const DifferenceSteps steps(model, options);
   const VecX xi0 = VecX::Zero(nx);
@@ -132,29 +214,38 @@ LinearModel linearize_constrained(const model::Model& model, const OperatingPoin
   for (int k = 0; k < nz; ++k) zeta0[k] = v0[velocities[static_cast<std::size_t>(k)]];
   VecX g0, plus, minus, coarse, d, xi, zeta;
   motion.evaluate(xi0, zeta0, g0);
+  const int n = nx + nz;
   const auto rows_g = g0.size();
   const auto m = static_cast<Eigen::Index>(inputs.size());
   Jacobians J{MatX(rows_g, nx), MatX(rows_g, nz), MatX::Zero(rows_g, m), MatX::Zero(rows_g, m),
               MatX::Zero(rows_g, m)};
-  for (int k = 0; k < nx; ++k) {
-    richardson_difference(
-        [&](double s, VecX& out) {
-          xi = xi0;
-          xi[k] += s;
-          motion.evaluate(xi, zeta0, out);
-        },
-        steps.configuration(positions[static_cast<std::size_t>(k)], q0), plus, minus, coarse, d);
-    J.dq.col(k) = d;
+  const bool differences = options.derivatives == LinearizationOptions::Derivatives::differences;
+  if (rows_g > n || differences) {
+    for (int k = 0; k < nx; ++k) {
+      richardson_difference(
+          [&](double s, VecX& out) {
+            xi = xi0;
+            xi[k] += s;
+            motion.evaluate(xi, zeta0, out);
+          },
+          steps.configuration(positions[static_cast<std::size_t>(k)], q0), plus, minus, coarse, d);
+      J.dq.col(k) = d;
+    }
+    for (int k = 0; k < nz; ++k) {
+      central_difference(
+          [&](double s, VecX& out) {
+            zeta = zeta0;
+            zeta[k] += s;
+            motion.evaluate(xi0, zeta, out);
+          },
+          kExactStep, plus, minus, d);
+      J.dv.col(k) = d;
+    }
   }
-  for (int k = 0; k < nz; ++k) {
-    central_difference(
-        [&](double s, VecX& out) {
-          zeta = zeta0;
-          zeta[k] += s;
-          motion.evaluate(xi0, zeta, out);
-        },
-        kExactStep, plus, minus, d);
-    J.dv.col(k) = d;
+  if (!differences) {
+    const MatX state_rows = charted_state_matrix(residual, chart, result.point);
+    J.dq.topRows(n) = state_rows.leftCols(nx);
+    J.dv.topRows(n) = state_rows.rightCols(nz);
   }
   for (Eigen::Index j = 0; j < m; ++j) {
     // Loads are linear in their signal: one exact central difference.
@@ -171,7 +262,6 @@ LinearModel linearize_constrained(const model::Model& model, const OperatingPoin
   }
   check_jacobians_finite(J);
 
-  const int n = nx + nz;
   MatX A(n, n);
   A << J.dq.topRows(n), J.dv.topRows(n);
   result.input_value = J.du0.topRows(n);

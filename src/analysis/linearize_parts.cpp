@@ -283,4 +283,27 @@ void fold_input_rates(LinearModel& result, const MatX& A, const MatX& C,
   }
 }
 
+// Tangent step for ∂δ̇/∂δ: exact for any |h| < π (J_r(δ)⁻¹ beyond its linear term is even in δ).
+constexpr double kRotationRateStep = 0.5;
+
+MatX rotation_rate_jacobian(const model::Model& model, const std::vector<int>& free,
+                            const VecX& v0) {
+  const int nf = static_cast<int>(free.size());
+  MatX T = MatX::Zero(nf, nf);
+  VecX tangent(model.nv()), rate_plus(model.nv()), rate_minus(model.nv());
+  for (int k = 0; k < nf; ++k) {
+    const int i = free[static_cast<std::size_t>(k)];
+    tangent.setZero();
+    tangent[i] = kRotationRateStep;
+    model::local_coordinate_rate(model, tangent, v0, rate_plus);
+    tangent[i] = -kRotationRateStep;
+    model::local_coordinate_rate(model, tangent, v0, rate_minus);
+    for (int a = 0; a < nf; ++a) {
+      const int ia = free[static_cast<std::size_t>(a)];
+      T(a, k) = (rate_plus[ia] - rate_minus[ia]) / (2 * kRotationRateStep);
+    }
+  }
+  return T;
+}
+
 }  // namespace momenta::analysis::detail

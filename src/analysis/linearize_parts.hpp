@@ -88,6 +88,12 @@ void fold_input_rates(LinearModel& result, const MatX& A, const MatX& C,
                       const std::vector<Input>& inputs,
                       const std::vector<std::string>& output_names, MatX& B, MatX& D);
 
+/// T = ∂δ̇/∂δ (free × free coordinates) from δ̇ = J_r(δ)⁻¹ ω at δ = 0 and velocities v0: −½[ω]×
+/// on a ball or free joint's rotation tangent, zero elsewhere (and at rest). Exact: central
+/// differences of a step on which J_r(δ)⁻¹ ω is linear but for an even part.
+MatX rotation_rate_jacobian(const model::Model& model, const std::vector<int>& free,
+                            const VecX& v0);
+
 /// linearize() for a model with constraints (linearize_constrained.cpp).
 LinearModel linearize_constrained(const model::Model& model, const OperatingPoint& point,
                                   const LinearizationOptions& options);

@@ -113,6 +113,11 @@ void ModelResidual::derivatives(double t, const VecX& q, const VecX& v, const Ve
   }
 }
 
+void ModelResidual::constraint_derivatives(const VecX& lambda,
+                                           dynamics::ConstraintDerivatives& out) {
+  dynamics::constraint_derivatives(model_, data_, q_, v_, vdot_, lambda, out);
+}
+
 MatX ModelResidual::free_mass(double t, const VecX& q) {
   q_ = q;
   v_.setZero();

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "momenta/dynamics/constraint_derivatives.hpp"
 #include "momenta/dynamics/data.hpp"
 #include "momenta/math/types.hpp"
 #include "momenta/model/model.hpp"
@@ -46,6 +47,11 @@ class ModelResidual {
   /// ∂r_f/∂δq_i (nf × nv) for every velocity coordinate i, the prescribed ones included, from the
   /// last derivatives(): how r moves when a prescribed coordinate's value does.
   const MatX& dr_dq_all() const { return dr_dq_all_; }
+
+  /// The constraint rows' derivatives (dynamics/constraint_derivatives.hpp) at the state of the
+  /// last derivatives() — its prescribed coordinates from their signals, its accelerations —
+  /// with multipliers lambda.
+  void constraint_derivatives(const VecX& lambda, dynamics::ConstraintDerivatives& out);
 
   /// M_ff (nf × nf) at q with the prescribed coordinates from their signals at t.
   MatX free_mass(double t, const VecX& q);

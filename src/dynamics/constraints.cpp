@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "constraint_row_formulas.hpp"
 #include "momenta/common/error.hpp"
 
 namespace momenta::dynamics {
@@ -19,20 +20,7 @@ using model::LoopType;
 using model::RollingContact;
 using model::RollingShape;
 
-// Below this the direction a constraint acts along is not defined (a unit vector from a
-// difference or cross product of near-parallel ones).
-constexpr double kDegenerate = 1e-9;
-
-// The motion of a frame fixed in a body at one instant, in W: its pose, the body's spatial
-// velocity and an acceleration about Wo (the velocity-product part, or the whole acceleration:
-// see Accelerations), and the frame origin's velocity.
-struct FrameMotion {
-  Transform X_WF;
-  Vec6 V = Vec6::Zero();  // [ω; velocity of the body point at Wo]
-  Vec6 A = Vec6::Zero();  // its rate: with v̇ = 0, or with data's v̇
-  Vec3 w() const { return V.head<3>(); }
-  Vec3 point_velocity(const Vec3& p) const { return V.tail<3>() + V.head<3>().cross(p); }
-};
+using FrameMotion = detail::FrameMotionOf<double>;
 
 // Which accelerations a row's term w·(A_b − A_a) + ẇ·(V_b − V_a) takes: none (positions and G
 // only), the velocity products (k), or the whole accelerations of data's last aba or
@@ -48,7 +36,9 @@ FrameMotion frame_motion(const Data& data, int body, const Transform& X_BF,
                          const Accelerations& acc) {
   FrameMotion m;
   const Transform& X_WB = data.X_WB[body];
-  m.X_WF = X_WB * X_BF;
+  const Transform X_WF = X_WB * X_BF;
+  m.R = X_WF.R;
+  m.p = X_WF.p;
   if (acc.velocities() && body != 0) {
     m.V = X_WB.act_motion(data.V_WB_B[body]);
     if (acc.kind == Accelerations::velocity_products) {
@@ -97,138 +87,17 @@ class RowWriter {
   int i_ = 0;
 };
 
-Vec6 force_at(const Vec3& p, const Vec3& f) { return spatial(p.cross(f), f); }
-
-// ẇ of a force f at a point p, with rates ṗ and ḟ.
-Vec6 force_rate(const Vec3& p, const Vec3& p_rate, const Vec3& f, const Vec3& f_rate) {
-  return spatial(p_rate.cross(f) + p.cross(f_rate), f_rate);
-}
-
-// The rate of a unit vector u = x / |x| given ẋ and |x|.
-Vec3 unit_rate(const Vec3& u, const Vec3& x_rate, double norm) {
-  return (x_rate - u * u.dot(x_rate)) / norm;
-}
-
-[[noreturn]] void degenerate(const std::string& name, const std::string& why) {
-  throw NumericalError(fmt::format("constraint '{}': {}", name, why));
-}
-
-void write_loop(const LoopClosure& c, const Data& data, const Accelerations& acc, RowWriter& out) {
-  const FrameMotion ma = frame_motion(data, c.a.body_index, c.a.X_BF, acc);
-  const FrameMotion mb = frame_motion(data, c.b.body_index, c.b.X_BF, acc);
-  const Mat3& RA = ma.X_WF.R;
-  const Mat3& RB = mb.X_WF.R;
-  const Vec3& pB = mb.X_WF.p;
-  const Vec3 d = pB - ma.X_WF.p;
-  const Vec3 pB_rate = mb.point_velocity(pB);
-  const int a = c.a.body_index, b = c.b.body_index;
-
-  // Translations along A's axes (all three, or the two across a slider's axis).
-  const int translations = c.type == LoopType::slider ? 2 : 3;
-  for (int k = 0; k < translations; ++k) {
-    const Vec3 e = RA.col(k);
-    const Vec3 e_rate = ma.w().cross(e);
-    out.wrench_row(e.dot(d), true, a, b, force_at(pB, e), force_rate(pB, pB_rate, e, e_rate), ma,
-                   mb);
-  }
-  // Rotations: n_A · m_B = 0 for the pairs of axes that are perpendicular when aligned. A unit
-  // multiplier is the moment −(n × m) on B.
-  static constexpr int kAligned[3][2] = {{0, 1}, {1, 2}, {2, 0}};
-  static constexpr int kHinge[2][2] = {{0, 2}, {1, 2}};
-  const auto rotation_row = [&](int i, int j) {
-    const Vec3 n = RA.col(i);
-    const Vec3 m = RB.col(j);
-    const Vec3 n_rate = ma.w().cross(n);
-    const Vec3 m_rate = mb.w().cross(m);
-    const Vec3 moment = -n.cross(m);
-    const Vec3 moment_rate = -(n_rate.cross(m) + n.cross(m_rate));
-    out.wrench_row(n.dot(m), true, a, b, spatial(moment, Vec3::Zero()),
-                   spatial(moment_rate, Vec3::Zero()), ma, mb);
-  };
-  if (c.type == LoopType::hinge) {
-    for (const auto& pair : kHinge) rotation_row(pair[0], pair[1]);
-  } else if (c.type != LoopType::point) {
-    for (const auto& pair : kAligned) rotation_row(pair[0], pair[1]);
-  }
-}
-
-void write_distance(const DistanceLink& c, const Data& data, const Accelerations& acc,
-                    RowWriter& out) {
-  const FrameMotion ma = frame_motion(data, c.a.body_index, c.a.X_BF, acc);
-  const FrameMotion mb = frame_motion(data, c.b.body_index, c.b.X_BF, acc);
-  const Vec3& pa = ma.X_WF.p;
-  const Vec3& pb = mb.X_WF.p;
-  const Vec3 d = pb - pa;
-  const double length = d.norm();
-  if (!(length > kDegenerate * c.length)) {
-    degenerate(c.name, fmt::format("its two points coincide (distance {:.3g} m of {} m): the "
-                                   "link has no direction",
-                                   length, c.length));
-  }
-  const Vec3 e = d / length;
-  const Vec3 pb_rate = mb.point_velocity(pb);
-  const Vec3 e_rate = unit_rate(e, pb_rate - ma.point_velocity(pa), length);
-  out.wrench_row(length - c.length, true, c.a.body_index, c.b.body_index, force_at(pb, e),
-                 force_rate(pb, pb_rate, e, e_rate), ma, mb);
-}
-
-void write_rolling(const RollingContact& c, const Data& data, const Accelerations& acc,
-                   RowWriter& out) {
-  const FrameMotion world;
-  const FrameMotion mb = frame_motion(data, c.frame.body_index, c.frame.X_BF, acc);
-  const Vec3& n = c.plane_normal;
-  const Vec3& centre = mb.X_WF.p;
-  Vec3 u = -n, u_rate = Vec3::Zero();         // from the centre to the contact
-  Vec3 forward, forward_rate = Vec3::Zero();  // rolling direction
-  if (c.shape == RollingShape::disk) {
-    const Vec3 axis = mb.X_WF.R.col(2);
-    const Vec3 axis_rate = mb.w().cross(axis);
-    const Vec3 w = n - n.dot(axis) * axis;  // the normal's part in the disk's plane
-    const double s = w.norm();
-    if (!(s > kDegenerate)) {
-      degenerate(c.name,
-                 "the disk lies flat on the plane (its axis is along the normal): its "
-                 "rim touches everywhere and no rolling direction exists");
-    }
-    const Vec3 w_rate = -n.dot(axis_rate) * axis - n.dot(axis) * axis_rate;
-    u = -w / s;
-    u_rate = -unit_rate(w / s, w_rate, s);
-    forward = axis.cross(n) / s;  // |axis × n| = s
-    forward_rate = unit_rate(forward, axis_rate.cross(n), s);
-  } else {
-    // A sphere: any fixed tangent basis of the plane.
-    const Vec3 x = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
-    forward = (x - n * n.dot(x)).normalized();
-  }
-  const Vec3 lateral = n.cross(forward);
-  const Vec3 lateral_rate = n.cross(forward_rate);
-  const Vec3 contact = centre + c.radius * u;
-  const Vec3 contact_rate = mb.point_velocity(centre) + c.radius * u_rate;
-  const int b = c.frame.body_index;
-  out.wrench_row(n.dot(contact - c.plane_point), true, 0, b, force_at(contact, n),
-                 force_rate(contact, contact_rate, n, Vec3::Zero()), world, mb);
-  out.wrench_row(0.0, false, 0, b, force_at(contact, forward),
-                 force_rate(contact, contact_rate, forward, forward_rate), world, mb);
-  out.wrench_row(0.0, false, 0, b, force_at(contact, lateral),
-                 force_rate(contact, contact_rate, lateral, lateral_rate), world, mb);
-}
-
-void write_knife_edge(const KnifeEdge& c, const Data& data, const Accelerations& acc,
-                      RowWriter& out) {
-  const FrameMotion world;
-  const FrameMotion mb = frame_motion(data, c.frame.body_index, c.frame.X_BF, acc);
-  const Vec3& n = c.plane_normal;
-  const Vec3 blade = mb.X_WF.R.col(0);
-  const Vec3 across = n.cross(blade);
-  const double s = across.norm();
-  if (!(s > kDegenerate)) {
-    degenerate(c.name, "the blade stands along the plane's normal: no direction across it");
-  }
-  const Vec3 side = across / s;
-  const Vec3 side_rate = unit_rate(side, n.cross(mb.w().cross(blade)), s);
-  const Vec3& p = mb.X_WF.p;
-  out.wrench_row(0.0, false, 0, c.frame.body_index, force_at(p, side),
-                 force_rate(p, mb.point_velocity(p), side, side_rate), world, mb);
+// The rows of a constraint between two bodies' frames (every kind but a coupler), by the
+// formulas of constraint_row_formulas.hpp.
+void write_wrench_rows(const Constraint& constraint, const Data& data, const Accelerations& acc,
+                       RowWriter& out) {
+  const detail::JoinedFrames f = detail::joined_frames(constraint);
+  const FrameMotion ma = frame_motion(data, f.a, f.X_aF, acc);
+  const FrameMotion mb = frame_motion(data, f.b, f.X_bF, acc);
+  detail::wrench_rows(constraint, ma, mb,
+                      [&](double phi, bool holonomic, const Vec6& w, const Vec6& w_rate) {
+                        out.wrench_row(phi, holonomic, f.a, f.b, w, w_rate, ma, mb);
+                      });
 }
 
 void write_coupler(const JointCoupler& c, const Model& model, VecRef q, RowWriter& out) {
@@ -307,11 +176,11 @@ void write_rows(const Model& model, const Data& data, VecRef q, const Accelerati
                 ConstraintRows& rows) {
   RowWriter out(rows, acc);
   for (const Constraint& constraint : model.constraints()) {
-    if (const auto* c = std::get_if<LoopClosure>(&constraint)) write_loop(*c, data, acc, out);
-    if (const auto* c = std::get_if<DistanceLink>(&constraint)) write_distance(*c, data, acc, out);
-    if (const auto* c = std::get_if<RollingContact>(&constraint)) write_rolling(*c, data, acc, out);
-    if (const auto* c = std::get_if<KnifeEdge>(&constraint)) write_knife_edge(*c, data, acc, out);
-    if (const auto* c = std::get_if<JointCoupler>(&constraint)) write_coupler(*c, model, q, out);
+    if (const auto* c = std::get_if<JointCoupler>(&constraint)) {
+      write_coupler(*c, model, q, out);
+    } else {
+      write_wrench_rows(constraint, data, acc, out);
+    }
   }
   assemble_jacobian(model, data, rows);
 }

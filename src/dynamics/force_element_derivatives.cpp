@@ -37,15 +37,6 @@ struct Load {
   Vec3 rate = Vec3::Zero();
 };
 
-// True when velocity coordinate k moves body b (k's joint is on b's path to the world).
-bool supports(const Data& data, int b, int k) {
-  if (b == 0) return false;
-  for (const auto& [start, length] : data.support_ranges[b - 1]) {
-    if (k >= start && k < start + length) return true;
-  }
-  return false;
-}
-
 // A body point's position and velocity in W, and their rates under the body's motion.
 struct PointMotion {
   Vec3 p, p_rate, v, v_rate;
@@ -191,7 +182,7 @@ void force_element_derivatives(const Model& model, Data& data,
       const Vec6 S_k = data.dS_W.col(k);
       const auto motion = [&](int b) {
         BodyMotion m;
-        if (!supports(data, b, k)) return m;
+        if (!detail::supports(data, b, k)) return m;
         if (configuration) {
           m.dX = S_k;
           m.dV = cross_motion(S_k, data.dV_W[b]) + data.dDeltaV_W.col(k);
@@ -206,7 +197,7 @@ void force_element_derivatives(const Model& model, Data& data,
           const Load& load = loads[l];
           if (load.body == 0) continue;
           Vec3 rate = load.rate;
-          if (configuration && supports(data, load.body, k)) {
+          if (configuration && detail::supports(data, load.body, k)) {
             rate -= S_k.head<3>().cross(load.value);  // what a load fixed in the body does
           }
           const Vec6 w =

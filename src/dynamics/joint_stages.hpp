@@ -5,6 +5,7 @@
 // moves its own stage's columns, the later stages' and everything below the joint rigidly; the
 // earlier stages' columns stay.
 
+#include "momenta/dynamics/data.hpp"
 #include "momenta/model/joint.hpp"
 #include "momenta/model/model.hpp"
 
@@ -41,6 +42,16 @@ inline int joint_stage_count(model::JointType type) {
 /// Coordinate k moves c's coordinate m exactly when support_stage(c, k) ≤ c's stage of m.
 inline int support_stage(const model::JointConstants& c, int k) {
   return k >= c.v_index ? joint_stage(c.type, k - c.v_index) : -1;
+}
+
+/// True when velocity coordinate k moves body b (k's joint is on b's path to the world; never
+/// for the world itself).
+inline bool supports(const Data& data, int b, int k) {
+  if (b == 0) return false;
+  for (const auto& [start, length] : data.support_ranges[b - 1]) {
+    if (k >= start && k < start + length) return true;
+  }
+  return false;
 }
 
 }  // namespace momenta::dynamics::detail

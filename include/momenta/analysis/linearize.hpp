@@ -22,7 +22,8 @@
 //
 // Derivatives (docs/analysis.md, "Model linearization"):
 //  - K and C_v analytically: ∂r/∂δq and ∂r/∂v are rnea_derivatives (at v̇ = v̇₀) less
-//    force_element_derivatives (dynamics/), exact to round-off.
+//    force_element_derivatives (dynamics/), exact to round-off. (LinearizationOptions::derivatives
+//    = differences takes them by the differences below instead: the tests' check.)
 //  - Output columns, ∂/∂v: outputs are at most quadratic in v at fixed q, and for a quadratic the
 //    central difference [y(v + h) − y(v − h)] / 2h is the derivative exactly, for any h: round-off
 //    only (h = 1 rad/s or m/s).
@@ -58,8 +59,10 @@
 //
 //     ξ̇ = [δ̇(δ, v)]_ξ,     ζ̇ = [v̇(q, v)]_ζ (the constrained forward dynamics),
 //
-// differentiated as above (Richardson on ξ; ζ̇ is quadratic and ξ̇ linear in ζ, so their ζ
-// differences are exact). For holonomic constraints the second-order form is the reduced one:
+// differentiated analytically: the chart's maps from G and the rows' derivatives
+// (dynamics/constraint_derivatives.hpp), the accelerations' from the derivatives of the constrained
+// equations r_f − G_fᵀ λ = 0, G v̇ + k = 0 (docs/constraints.md, "The derivatives"). For holonomic
+// constraints the second-order form is the reduced one:
 // mass = Tᵀ M_ff T with T = ∂v_f/∂ζ, stiffness = −mass ∂ζ̇/∂ξ, damping = −mass ∂ζ̇/∂ζ (at an
 // equilibrium the stiffness is the Hessian of the potential in ξ, symmetric). With nonholonomic
 // rows there are more configuration than velocity states and no such form: mass, damping and
@@ -104,6 +107,14 @@ struct LinearizationOptions {
   double angle_step = 0.0;
   /// The same on lengths, m; 0: automatic (1e-3 · characteristic_length(model)).
   double length_step = 0.0;
+  /// How the equations of motion's rows of A (and of B for a prescribed motion's value) are
+  /// differentiated: analytically, exact to round-off (rnea_derivatives, force elements'
+  /// derivatives and, with constraints, constraint_derivatives), or by central differences with
+  /// one Richardson extrapolation along the same coordinates (error ~1e-10 relative; the
+  /// independent check the tests hold the analytic derivatives to). Outputs are differenced
+  /// either way.
+  enum class Derivatives { analytic, differences };
+  Derivatives derivatives = Derivatives::analytic;
   /// Models with constraints: coordinates (model::Model::q_name, or a rotation tangent's
   /// "<joint>.rx") to keep as states where the constraints allow; empty: automatic.
   std::vector<std::string> independent;

@@ -208,6 +208,22 @@ TEST(Linearize, AnalyticDerivativesMatchHighOrderDifferences) {
   }
 }
 
+TEST(Linearize, TheDifferencesCheckAgreesWithTheAnalyticDerivatives) {
+  // LinearizationOptions::Derivatives::differences: the equations' rows by Richardson
+  // differences (error ~1e-12 of the scale, linearize.hpp), the same A to 1e-10.
+  for (const model::Model& model : {mixed_chain(), free_and_ball()}) {
+    for (unsigned seed : {1u, 2u}) {
+      const OperatingPoint p = moving_point(model, seed);
+      LinearizationOptions options;
+      const MatX analytic = linearize(model, p, options).system.A();
+      options.derivatives = LinearizationOptions::Derivatives::differences;
+      const MatX differences = linearize(model, p, options).system.A();
+      const double scale = std::max(1.0, analytic.cwiseAbs().maxCoeff());
+      EXPECT_MATRIX_NEAR(differences, analytic, 1e-10 * scale) << "seed " << seed;
+    }
+  }
+}
+
 TEST(Linearize, VelocityDerivativeIsExactBecauseDynamicsAreQuadraticInV) {
   // v̇ = M(q)⁻¹ (τ(q, v) − C(q, v) v − g(q)) is a quadratic polynomial in v at fixed q (Coriolis
   // and centrifugal terms quadratic, dampers linear). Proof on the mixed chain:

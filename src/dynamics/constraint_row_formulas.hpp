@@ -1,0 +1,229 @@
+#pragma once
+// Internal to momenta::dynamics: the constraint rows of dynamics/constraints.hpp as formulas of
+// the motions of the frames they join, written once for any scalar S — double for the rows
+// themselves (constraints.cpp), detail::Dual for their exact derivatives along a direction
+// (constraint_derivatives.cpp).
+//
+// The small helpers are forced inline: they run in every evaluation of the constrained dynamics
+// (constraint_equations), where calls to them cost ~5 % of the four-bar's v̇.
+//
+// Each formula hands its rows, in row order, to row(φ, holonomic, w, ẇ): the row's position
+// value (0 on a velocity-only row), the wrench w it applies to body b (W, about Wo, [moment;
+// force]) and w's rate ẇ along the frames' motion. The row's velocity value is then
+// w · (V_b − V_a) and its acceleration value ẇ · (V_b − V_a) + w · (A_b − A_a).
+
+#include <cmath>
+#include <string>
+#include <variant>
+
+#include <fmt/format.h>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "dual.hpp"
+#include "momenta/common/error.hpp"
+#include "momenta/math/spatial.hpp"
+#include "momenta/math/types.hpp"
+#include "momenta/model/constraint.hpp"
+
+namespace momenta::dynamics::detail {
+
+template <class S>
+using Vec3Of = Eigen::Matrix<S, 3, 1>;
+template <class S>
+using Vec6Of = Eigen::Matrix<S, 6, 1>;
+template <class S>
+using Mat3Of = Eigen::Matrix<S, 3, 3>;
+
+// Below this the direction a constraint acts along is not defined (a unit vector from a
+// difference or cross product of near-parallel ones).
+inline constexpr double kDegenerate = 1e-9;
+
+// The motion of a frame F fixed in a body at one instant, in W: its pose (R = R_WF, p = p_WoFo),
+// the body's spatial velocity V = [ω; velocity of the body point at Wo] and an acceleration A
+// about Wo (its rate: the velocity-product part, or the whole acceleration).
+template <class S>
+struct FrameMotionOf {
+  Mat3Of<S> R = Mat3Of<S>::Identity();
+  Vec3Of<S> p = Vec3Of<S>::Zero();
+  Vec6Of<S> V = Vec6Of<S>::Zero();
+  Vec6Of<S> A = Vec6Of<S>::Zero();
+  Vec3Of<S> w() const { return V.template head<3>(); }
+  Vec3Of<S> point_velocity(const Vec3Of<S>& x) const { return V.template tail<3>() + w().cross(x); }
+};
+
+template <class S>
+[[gnu::always_inline]] inline Vec6Of<S> spatial_of(const Vec3Of<S>& angular,
+                                                   const Vec3Of<S>& linear) {
+  Vec6Of<S> out;
+  out << angular, linear;
+  return out;
+}
+
+template <class S>
+[[gnu::always_inline]] inline Vec6Of<S> force_at(const Vec3Of<S>& p, const Vec3Of<S>& f) {
+  return spatial_of<S>(p.cross(f), f);
+}
+
+// ẇ of a force f at a point p, with rates ṗ and ḟ.
+template <class S>
+[[gnu::always_inline]] inline Vec6Of<S> force_rate(const Vec3Of<S>& p, const Vec3Of<S>& p_rate,
+                                                   const Vec3Of<S>& f, const Vec3Of<S>& f_rate) {
+  return spatial_of<S>(p_rate.cross(f) + p.cross(f_rate), f_rate);
+}
+
+// The rate of a unit vector u = x / |x| given ẋ and |x|.
+template <class S>
+[[gnu::always_inline]] inline Vec3Of<S> unit_rate(const Vec3Of<S>& u, const Vec3Of<S>& x_rate,
+                                                  const S& norm) {
+  return (x_rate - u * u.dot(x_rate)) / norm;
+}
+
+[[noreturn]] inline void degenerate(const std::string& name, const std::string& why) {
+  throw NumericalError(fmt::format("constraint '{}': {}", name, why));
+}
+
+// Loop closure: translations along A's axes (all three, or the two across a slider's axis),
+// then rotations n_A · m_B = 0 for the pairs of axes that are perpendicular when aligned, a unit
+// multiplier being the moment −(n × m) on B.
+template <class S, class Row>
+void loop_rows(const model::LoopClosure& c, const FrameMotionOf<S>& ma, const FrameMotionOf<S>& mb,
+               Row&& row) {
+  const Vec3Of<S> d = mb.p - ma.p;
+  const Vec3Of<S> pB_rate = mb.point_velocity(mb.p);
+  const int translations = c.type == model::LoopType::slider ? 2 : 3;
+  for (int k = 0; k < translations; ++k) {
+    const Vec3Of<S> e = ma.R.col(k);
+    const Vec3Of<S> e_rate = ma.w().cross(e);
+    row(e.dot(d), true, force_at<S>(mb.p, e), force_rate<S>(mb.p, pB_rate, e, e_rate));
+  }
+  static constexpr int kAligned[3][2] = {{0, 1}, {1, 2}, {2, 0}};
+  static constexpr int kHinge[2][2] = {{0, 2}, {1, 2}};
+  const auto rotation_row = [&](int i, int j) {
+    const Vec3Of<S> n = ma.R.col(i);
+    const Vec3Of<S> m = mb.R.col(j);
+    const Vec3Of<S> n_rate = ma.w().cross(n);
+    const Vec3Of<S> m_rate = mb.w().cross(m);
+    const Vec3Of<S> moment = -n.cross(m);
+    const Vec3Of<S> moment_rate = -(n_rate.cross(m) + n.cross(m_rate));
+    row(n.dot(m), true, spatial_of<S>(moment, Vec3Of<S>::Zero()),
+        spatial_of<S>(moment_rate, Vec3Of<S>::Zero()));
+  };
+  if (c.type == model::LoopType::hinge) {
+    for (const auto& pair : kHinge) rotation_row(pair[0], pair[1]);
+  } else if (c.type != model::LoopType::point) {
+    for (const auto& pair : kAligned) rotation_row(pair[0], pair[1]);
+  }
+}
+
+// Distance link: |p_b − p_a| − length along e = (p_b − p_a) / |p_b − p_a|.
+template <class S, class Row>
+void distance_rows(const model::DistanceLink& c, const FrameMotionOf<S>& ma,
+                   const FrameMotionOf<S>& mb, Row&& row) {
+  const Vec3Of<S> d = mb.p - ma.p;
+  const S length = d.norm();
+  if (!(value_of(length) > kDegenerate * c.length)) {
+    degenerate(c.name, fmt::format("its two points coincide (distance {:.3g} m of {} m): the "
+                                   "link has no direction",
+                                   value_of(length), c.length));
+  }
+  const Vec3Of<S> e = d / length;
+  const Vec3Of<S> pb_rate = mb.point_velocity(mb.p);
+  const Vec3Of<S> e_rate = unit_rate<S>(e, pb_rate - ma.point_velocity(ma.p), length);
+  row(length - c.length, true, force_at<S>(mb.p, e), force_rate<S>(mb.p, pb_rate, e, e_rate));
+}
+
+// Rolling contact of the body of mb on the ground: the contact's height, then no slip along
+// the rolling direction and sideways.
+template <class S, class Row>
+void rolling_rows(const model::RollingContact& c, const FrameMotionOf<S>& mb, Row&& row) {
+  const Vec3Of<S> n = c.plane_normal.cast<S>();
+  const Vec3Of<S>& centre = mb.p;
+  Vec3Of<S> u = -n, u_rate = Vec3Of<S>::Zero();         // from the centre to the contact
+  Vec3Of<S> forward, forward_rate = Vec3Of<S>::Zero();  // rolling direction
+  if (c.shape == model::RollingShape::disk) {
+    const Vec3Of<S> axis = mb.R.col(2);
+    const Vec3Of<S> axis_rate = mb.w().cross(axis);
+    const Vec3Of<S> w = n - n.dot(axis) * axis;  // the normal's part in the disk's plane
+    const S s = w.norm();
+    if (!(value_of(s) > kDegenerate)) {
+      degenerate(c.name,
+                 "the disk lies flat on the plane (its axis is along the normal): its "
+                 "rim touches everywhere and no rolling direction exists");
+    }
+    const Vec3Of<S> w_rate = -n.dot(axis_rate) * axis - n.dot(axis) * axis_rate;
+    u = -w / s;
+    u_rate = -unit_rate<S>(w / s, w_rate, s);
+    forward = axis.cross(n) / s;  // |axis × n| = s
+    forward_rate = unit_rate<S>(forward, axis_rate.cross(n), s);
+  } else {
+    // A sphere: any fixed tangent basis of the plane.
+    const Vec3 n0 = c.plane_normal;
+    const Vec3 x = std::abs(n0.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+    forward = (x - n0 * n0.dot(x)).normalized().cast<S>();
+  }
+  const Vec3Of<S> lateral = n.cross(forward);
+  const Vec3Of<S> lateral_rate = n.cross(forward_rate);
+  const Vec3Of<S> contact = centre + c.radius * u;
+  const Vec3Of<S> contact_rate = mb.point_velocity(centre) + c.radius * u_rate;
+  const Vec3Of<S> plane_point = c.plane_point.cast<S>();
+  row(n.dot(contact - plane_point), true, force_at<S>(contact, n),
+      force_rate<S>(contact, contact_rate, n, Vec3Of<S>::Zero()));
+  row(S(0.0), false, force_at<S>(contact, forward),
+      force_rate<S>(contact, contact_rate, forward, forward_rate));
+  row(S(0.0), false, force_at<S>(contact, lateral),
+      force_rate<S>(contact, contact_rate, lateral, lateral_rate));
+}
+
+// Knife edge on the body of mb: no velocity of the point across the blade, s = n × x_B / |…|.
+template <class S, class Row>
+void knife_edge_rows(const model::KnifeEdge& c, const FrameMotionOf<S>& mb, Row&& row) {
+  const Vec3Of<S> n = c.plane_normal.cast<S>();
+  const Vec3Of<S> blade = mb.R.col(0);
+  const Vec3Of<S> across = n.cross(blade);
+  const S s = across.norm();
+  if (!(value_of(s) > kDegenerate)) {
+    degenerate(c.name, "the blade stands along the plane's normal: no direction across it");
+  }
+  const Vec3Of<S> side = across / s;
+  const Vec3Of<S> side_rate = unit_rate<S>(side, n.cross(mb.w().cross(blade)), s);
+  row(S(0.0), false, force_at<S>(mb.p, side),
+      force_rate<S>(mb.p, mb.point_velocity(mb.p), side, side_rate));
+}
+
+// The two frames a constraint joins (every kind but a coupler): body a (0, the ground, for a
+// rolling contact or a knife edge) with X_aF, and body b with X_bF.
+struct JoinedFrames {
+  int a = 0;
+  Transform X_aF;
+  int b = 0;
+  Transform X_bF;
+};
+
+inline JoinedFrames joined_frames(const model::Constraint& constraint) {
+  if (const auto* c = std::get_if<model::LoopClosure>(&constraint))
+    return {c->a.body_index, c->a.X_BF, c->b.body_index, c->b.X_BF};
+  if (const auto* c = std::get_if<model::DistanceLink>(&constraint))
+    return {c->a.body_index, c->a.X_BF, c->b.body_index, c->b.X_BF};
+  if (const auto* c = std::get_if<model::RollingContact>(&constraint))
+    return {0, Transform::identity(), c->frame.body_index, c->frame.X_BF};
+  const auto& c = std::get<model::KnifeEdge>(constraint);
+  return {0, Transform::identity(), c.frame.body_index, c.frame.X_BF};
+}
+
+// The rows of a constraint (every kind but a coupler) from the motions of its two frames.
+template <class S, class Row>
+void wrench_rows(const model::Constraint& constraint, const FrameMotionOf<S>& ma,
+                 const FrameMotionOf<S>& mb, Row&& row) {
+  if (const auto* loop = std::get_if<model::LoopClosure>(&constraint)) {
+    loop_rows(*loop, ma, mb, row);
+  } else if (const auto* link = std::get_if<model::DistanceLink>(&constraint)) {
+    distance_rows(*link, ma, mb, row);
+  } else if (const auto* contact = std::get_if<model::RollingContact>(&constraint)) {
+    rolling_rows(*contact, mb, row);
+  } else {
+    knife_edge_rows(std::get<model::KnifeEdge>(constraint), mb, row);
+  }
+}
+
+}  // namespace momenta::dynamics::detail
