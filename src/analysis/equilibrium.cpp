@@ -11,6 +11,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
 
+#include "charted_derivatives.hpp"
 #include "constraint_chart.hpp"
 #include "linearize_parts.hpp"
 #include "model_residual.hpp"
@@ -115,33 +116,20 @@ class StaticProblem {
     r = T.transpose() * (residual_.free_mass(t_, q) * a_f);
   }
 
-  // K = ∂r/∂(unknowns) at q. Without constraints, analytic: the free rows and columns of
-  // ∂τ/∂δq less the force elements' (ModelResidual::derivatives, as linearize() takes them). On a
-  // constraint chart, Richardson-extrapolated differences of r along each unknown, steps from
-  // `step`.
-  template <class Step>
-  void stiffness(const VecX& q, const Step& step, MatX& K) {
+  // K = ∂r/∂(unknowns) at q, analytic. Without constraints the free rows and columns of ∂τ/∂δq
+  // less the force elements' (ModelResidual::derivatives, as linearize() takes them). On a
+  // constraint chart r = Tᵀ M T ζ̇ (at rest v̇ = T ζ̇), and K = Tᵀ M T ∂ζ̇/∂ξ
+  // (charted_state_matrix): the part ∂(Tᵀ M T)/∂ξ ζ̇ is left out, which vanishes with r, so Newton
+  // still converges quadratically.
+  void stiffness(const VecX& q, MatX& K) {
     if (!chart_) {
       residual_.derivatives(t_, q, v_, a_zero_, K, dr_dv_);
       return;
     }
-    const int n = unknowns();
-    if (n == 0) {  // nothing to move: K has r's rows and no column
-      residual(q, d_);
-      K.resize(d_.size(), 0);
-    }
-    for (int k = 0; k < n; ++k) {
-      detail::richardson_difference(
-          [&](double s, VecX& out) {
-            unit_ = VecX::Zero(n);
-            unit_[k] = 1.0;
-            move(q, unit_, s, q_step_);
-            residual(q_step_, out);
-          },
-          step(k), plus_, minus_, coarse_, d_);
-      if (k == 0) K.resize(d_.size(), n);
-      K.col(k) = d_;
-    }
+    const auto nx = static_cast<Eigen::Index>(chart_->positions().size());
+    const auto nz = static_cast<Eigen::Index>(chart_->velocities().size());
+    const MatX A = detail::charted_state_matrix(residual_, *chart_, {t_, q, v_});
+    K = mass(q) * A.block(nx, 0, nz, nx);
   }
 
   MatX mass(const VecX& q) {
@@ -156,7 +144,6 @@ class StaticProblem {
   ModelResidual& residual_;
   double t_;
   VecX v_, a_zero_, delta_;
-  VecX unit_, q_step_, plus_, minus_, coarse_, d_;  // stiffness()'s differences
   MatX dr_dv_;
   std::optional<detail::ConstraintChart> chart_;
 };
@@ -196,19 +183,17 @@ Equilibrium find_equilibrium(const model::Model& model, const VecX& q_guess,
     return x.size() == 0 || x.cwiseAbs().maxCoeff() <= allowed;
   };
 
-  // Configuration steps as linearize() takes them.
   const double length = characteristic_length(model);
   const auto is_angle = [&](int k) {
     return detail::is_angle_coordinate(model, problem.coordinate(k));
   };
-  const auto step = [&](int k) { return is_angle(k) ? 1e-3 : 1e-3 * length; };
 
   Equilibrium result;
   MatX K;  // square unless nonholonomic rows leave fewer velocities than unknowns
   VecX r_trial, delta, q_trial;
   int iteration = 0;
   for (; iteration < options.max_iterations && !converged(r); ++iteration) {
-    problem.stiffness(q, step, K);
+    problem.stiffness(q, K);
     if (!K.allFinite()) {
       throw NumericalError(fmt::format(
           "find_equilibrium: the stiffness ∂r/∂q is not finite at iteration {}", iteration));
