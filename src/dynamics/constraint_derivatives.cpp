@@ -2,7 +2,6 @@
 
 #include <utility>
 
-#include <fmt/format.h>
 
 #include "argument_checks.hpp"
 #include "constraint_row_formulas.hpp"
@@ -17,13 +16,7 @@ using detail::Dual;
 using FrameMotion = detail::FrameMotionOf<double>;
 using DualMotion = detail::FrameMotionOf<Dual>;
 
-// A frame's motion and its derivative along one direction (the same members, as rates).
-struct MotionSlope {
-  Mat3 R = Mat3::Zero();
-  Vec3 p = Vec3::Zero();
-  Vec6 V = Vec6::Zero();
-  Vec6 A = Vec6::Zero();
-};
+using detail::Along;
 
 template <int Rows, int Cols>
 Eigen::Matrix<Dual, Rows, Cols> with_slope(const Eigen::Matrix<double, Rows, Cols>& value,
@@ -33,10 +26,6 @@ Eigen::Matrix<Dual, Rows, Cols> with_slope(const Eigen::Matrix<double, Rows, Col
   return out;
 }
 
-DualMotion dual_motion(const FrameMotion& m, const MotionSlope& s) {
-  return {with_slope(m.R, s.R), with_slope(m.p, s.p), with_slope(m.V, s.V), with_slope(m.A, s.A)};
-}
-
 template <int Rows>
 Eigen::Matrix<double, Rows, 1> slope_of(const Eigen::Matrix<Dual, Rows, 1>& x) {
   Eigen::Matrix<double, Rows, 1> out;
@@ -44,17 +33,8 @@ Eigen::Matrix<double, Rows, 1> slope_of(const Eigen::Matrix<Dual, Rows, 1>& x) {
   return out;
 }
 
-// Whether coordinate k moves the column of coordinate j, both supporting one body: k in an
-// ancestor joint, or in j's joint at j's stage or an earlier one.
-bool moves_column(const Model& model, int k, int j) {
-  const model::JointConstants& c = model.joint_constants()[model.joint_of_v(j)];
-  if (k < c.v_index) return true;
-  if (k >= c.v_index + c.nv) return false;
-  return detail::joint_stage(c.type, k - c.v_index) <= detail::joint_stage(c.type, j - c.v_index);
-}
-
-// The motions of one constraint's frames at the state of rnea_derivatives (A as whole
-// accelerations), and their derivatives along each coordinate.
+// The motions of one constraint's two frames at the state of rnea_derivatives (A as whole
+// accelerations), and as dual numbers along one coordinate.
 class ConstraintSeeds {
  public:
   ConstraintSeeds(const Model& model, const Data& data, detail::JoinedFrames frames)
@@ -69,16 +49,10 @@ class ConstraintSeeds {
     return detail::supports(data_, frames_.a, k) || detail::supports(data_, frames_.b, k);
   }
 
-  // Along δq_k: a moved frame turns and shifts by the twist S_k, its velocity and acceleration
-  // change as the header says.
-  std::pair<DualMotion, DualMotion> along_configuration(int k) const {
-    return {dual_motion(ma_, configuration_slope(frames_.a, ma_, k)),
-            dual_motion(mb_, configuration_slope(frames_.b, mb_, k))};
-  }
-  // Along δv_k: poses fixed, ∂V = S_k, ∂A = S_k × V + W_k for a body coordinate k supports.
-  std::pair<DualMotion, DualMotion> along_velocity(int k) const {
-    return {dual_motion(ma_, velocity_slope(frames_.a, ma_, k)),
-            dual_motion(mb_, velocity_slope(frames_.b, mb_, k))};
+  // Both frames along coordinate k: a moved frame turns and shifts by the body's twist, its
+  // velocity and acceleration change at the body's rates (detail::body_motion_rate).
+  std::pair<DualMotion, DualMotion> along(int k, Along direction) const {
+    return {seeded(frames_.a, ma_, k, direction), seeded(frames_.b, mb_, k, direction)};
   }
 
  private:
@@ -92,27 +66,12 @@ class ConstraintSeeds {
     return m;
   }
 
-  MotionSlope configuration_slope(int body, const FrameMotion& m, int k) const {
-    MotionSlope s;
-    if (!detail::supports(data_, body, k)) return s;
-    const Vec6 S = data_.dS_W.col(k);
-    const Vec6 delta_V = data_.dDeltaV_W.col(k);
-    const Vec3 turn = S.head<3>();
-    s.R = skew(turn) * m.R;
-    s.p = turn.cross(m.p) + S.tail<3>();
-    s.V = cross_motion(S, m.V) + delta_V;
-    // x_k was formed with the shifted accelerations: S_k × A with them too.
-    s.A = cross_motion(S, data_.dA_W[body]) + cross_motion(delta_V, m.V) + data_.dX_W.col(k);
-    return s;
-  }
-
-  MotionSlope velocity_slope(int body, const FrameMotion& m, int k) const {
-    MotionSlope s;
-    if (!detail::supports(data_, body, k)) return s;
-    const Vec6 S = data_.dS_W.col(k);
-    s.V = S;
-    s.A = cross_motion(S, m.V) + data_.dW_W.col(k);
-    return s;
+  DualMotion seeded(int body, const FrameMotion& m, int k, Along direction) const {
+    const detail::BodyMotionRate rate = detail::body_motion_rate(data_, body, k, direction);
+    const Vec3 turn = rate.twist.head<3>();
+    return {with_slope(m.R, Mat3(skew(turn) * m.R)),
+            with_slope(m.p, Vec3(turn.cross(m.p) + rate.twist.tail<3>())), with_slope(m.V, rate.V),
+            with_slope(m.A, rate.A)};
   }
 
   const Data& data_;
@@ -120,8 +79,6 @@ class ConstraintSeeds {
   Vec6 gravity_W_;
   FrameMotion ma_, mb_;
 };
-
-enum class Along { configuration, velocity };
 
 // The derivative parts of one constraint's rows (from row `first`) along coordinate `column`:
 // along δq its wrenches', G v's and G v̇ + k's; along δv, G v̇ + k's.
@@ -144,37 +101,28 @@ void write_slopes(const model::Constraint& constraint, const DualMotion& ma, con
       });
 }
 
-// ∂(Gᵀ λ)/∂q: body by body, its constraint wrench F (λ-weighted, in W) reaches coordinate j
-// as S_j · F over the coordinates supporting it, so ∂/∂q_k = S_j · ∂F/∂q_k + (S_k × S_j) · F
-// where k moves S_j.
-void constraint_force_derivative(const Model& model, const Data& data, VecRef lambda,
-                                 ConstraintDerivatives& out) {
-  const ConstraintRows& rows = out.rows;
-  out.force_dq.setZero();
-  Mat6X dF(6, model.nv());
-  for (int c = 0; c < static_cast<int>(rows.first_row.size()); ++c) {
-    const int first = rows.first_row[c];
-    const int end =
-        c + 1 < static_cast<int>(rows.first_row.size()) ? rows.first_row[c + 1] : rows.count;
-    const int a = rows.body_a[first], b = rows.body_b[first];
-    if (a == b) continue;  // a coupler
-    Vec6 F = Vec6::Zero();
-    dF.setZero();
-    for (int i = first; i < end; ++i) {
-      F += lambda[i] * rows.wrench_W[i];
-      dF += lambda[i] * out.wrench_dq[i];
-    }
-    for (const auto& [body, sign] : {std::pair{b, 1.0}, std::pair{a, -1.0}}) {
-      if (body == 0) continue;
-      for (const auto& [start, size] : data.support_ranges[body - 1]) {
-        for (int j = start; j < start + size; ++j) {
-          const Vec6 S_j = data.dS_W.col(j);
-          out.force_dq.row(j) += sign * S_j.transpose() * dF;
-          for (const auto& [k_start, k_size] : data.support_ranges[body - 1]) {
-            for (int k = k_start; k < k_start + k_size; ++k) {
-              if (moves_column(model, k, j))
-                out.force_dq(j, k) += sign * cross_motion(data.dS_W.col(k), S_j).dot(F);
-            }
+// One constraint's share of ∂(Gᵀ λ)/∂q (rows [first, first + count) on bodies a and b): each
+// body's wrench F (λ-weighted, in W) reaches coordinate j as S_j · F over the coordinates
+// supporting it, so ∂/∂q_k = S_j · ∂F/∂q_k + (S_k × S_j) · F where k moves S_j.
+void add_force_derivative(const Model& model, const Data& data, VecRef lambda, int first, int count,
+                          const detail::JoinedFrames& frames, ConstraintDerivatives& out) {
+  Vec6 F = Vec6::Zero();
+  Mat6X dF = Mat6X::Zero(6, model.nv());
+  for (int i = first; i < first + count; ++i) {
+    F += lambda[i] * out.rows.wrench_W[i];
+    dF += lambda[i] * out.wrench_dq[i];
+  }
+  for (const auto& [body, sign] : {std::pair{frames.b, 1.0}, std::pair{frames.a, -1.0}}) {
+    if (body == 0) continue;
+    const auto& support = data.support_ranges[body - 1];
+    for (const auto& [start, size] : support) {
+      for (int j = start; j < start + size; ++j) {
+        const Vec6 S_j = data.dS_W.col(j);
+        out.force_dq.row(j) += sign * S_j.transpose() * dF;
+        for (const auto& [k_start, k_size] : support) {
+          for (int k = k_start; k < k_start + k_size; ++k) {
+            if (detail::moves_column(model, k, j))
+              out.force_dq(j, k) += sign * cross_motion(data.dS_W.col(k), S_j).dot(F);
           }
         }
       }
@@ -205,6 +153,7 @@ void constraint_derivatives(const Model& model, Data& data, VecRef q, VecRef v, 
   out.velocity_dq.setZero();
   out.residual_dq.setZero();
   out.residual_dv.setZero();
+  out.force_dq.setZero();
   for (Mat6X& w : out.wrench_dq) w.setZero();
 
   for (int c = 0; c < static_cast<int>(model.constraints().size()); ++c) {
@@ -215,13 +164,14 @@ void constraint_derivatives(const Model& model, Data& data, VecRef q, VecRef v, 
     const int first = out.rows.first_row[c];
     for (int k = 0; k < model.nv(); ++k) {
       if (!seeds.moved_by(k)) continue;
-      const auto [qa, qb] = seeds.along_configuration(k);
-      write_slopes(constraint, qa, qb, first, k, Along::configuration, out);
-      const auto [va, vb] = seeds.along_velocity(k);
-      write_slopes(constraint, va, vb, first, k, Along::velocity, out);
+      for (const Along direction : {Along::configuration, Along::velocity}) {
+        const auto [ma, mb] = seeds.along(k, direction);
+        write_slopes(constraint, ma, mb, first, k, direction, out);
+      }
     }
+    add_force_derivative(model, data, lambda, first, model::constraint_rows(constraint), frames,
+                         out);
   }
-  constraint_force_derivative(model, data, lambda, out);
 }
 
 }  // namespace momenta::dynamics

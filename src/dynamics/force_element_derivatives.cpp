@@ -181,15 +181,9 @@ void force_element_derivatives(const Model& model, Data& data,
     for (int k = 0; k < nv; ++k) {
       const Vec6 S_k = data.dS_W.col(k);
       const auto motion = [&](int b) {
-        BodyMotion m;
-        if (!detail::supports(data, b, k)) return m;
-        if (configuration) {
-          m.dX = S_k;
-          m.dV = cross_motion(S_k, data.dV_W[b]) + data.dDeltaV_W.col(k);
-        } else {
-          m.dV = S_k;
-        }
-        return m;
+        const detail::BodyMotionRate rate = detail::body_motion_rate(
+            data, b, k, configuration ? detail::Along::configuration : detail::Along::velocity);
+        return BodyMotion{rate.twist, rate.V};
       };
       for (const model::ForceElement& element : elements) {
         const int count = element_loads(data, element, signal_values, motion, loads);

@@ -3,7 +3,8 @@
 // (rnea_derivatives.hpp): a multi-dof joint is a sequence of stages whose motion-subspace columns
 // are fixed in the frame the stage moves, each stage moving the next. Perturbing a coordinate
 // moves its own stage's columns, the later stages' and everything below the joint rigidly; the
-// earlier stages' columns stay.
+// earlier stages' columns stay. Also what that does to the bodies it moves (body_motion_rate),
+// shared by the derivatives of the force elements and of the constraint rows.
 
 #include "momenta/dynamics/data.hpp"
 #include "momenta/model/joint.hpp"
@@ -52,6 +53,45 @@ inline bool supports(const Data& data, int b, int k) {
     if (k >= start && k < start + length) return true;
   }
   return false;
+}
+
+/// Which derivative: along the configuration's tangent δq_k or along the velocity v_k.
+enum class Along { configuration, velocity };
+
+/// How body b's motion changes along coordinate k, from the terms rnea_derivatives leaves in
+/// Data (W, about Wo): the twist its pose moves by, and the rates of its spatial velocity and of
+/// its acceleration (dA_W's, shifted by −g; the shift's rate is zero). Coordinate k moves the
+/// bodies below its stage rigidly along S_k:
+///   along δq_k   twist S_k,  ∂V = S_k × V + ΔV_k,  ∂A = S_k × A + ΔV_k × V + x_k;
+///   along v_k    no twist,   ∂V = S_k,             ∂A = S_k × V + W_k.
+/// All zero where k does not support b.
+struct BodyMotionRate {
+  Vec6 twist = Vec6::Zero();
+  Vec6 V = Vec6::Zero();
+  Vec6 A = Vec6::Zero();
+};
+
+inline BodyMotionRate body_motion_rate(const Data& data, int b, int k, Along along) {
+  BodyMotionRate rate;
+  if (!supports(data, b, k)) return rate;
+  const Vec6 S = data.dS_W.col(k);
+  if (along == Along::configuration) {
+    const Vec6 delta_V = data.dDeltaV_W.col(k);
+    rate.twist = S;
+    rate.V = cross_motion(S, data.dV_W[b]) + delta_V;
+    rate.A = cross_motion(S, data.dA_W[b]) + cross_motion(delta_V, data.dV_W[b]) + data.dX_W.col(k);
+  } else {
+    rate.V = S;
+    rate.A = cross_motion(S, data.dV_W[b]) + data.dW_W.col(k);
+  }
+  return rate;
+}
+
+/// Whether coordinate k moves the motion-subspace column of coordinate j, both supporting one
+/// body: k in an ancestor joint, or in j's joint at j's stage or an earlier one.
+inline bool moves_column(const Model& model, int k, int j) {
+  const model::JointConstants& c = model.joint_constants()[model.joint_of_v(j)];
+  return k < c.v_index + c.nv && support_stage(c, k) <= joint_stage(c.type, j - c.v_index);
 }
 
 }  // namespace momenta::dynamics::detail

@@ -14,21 +14,27 @@ namespace momenta::test {
 
 using model::JointType;
 
+// A joint of `type` from parent to child at `at` (in the parent) about or along `axis` (a
+// universal joint's second axis: y).
+inline void add_joint(model::ModelBuilder& b, const char* name, JointType type, const char* parent,
+                      const char* child, const Vec3& at, const Vec3& axis) {
+  model::Joint j;
+  j.name = name;
+  j.type = type;
+  j.parent = parent;
+  j.child = child;
+  j.X_PJ = Transform::translation(at);
+  j.axis = axis;
+  b.add_joint(j);
+}
+
 // Five boxes on revolute, spherical, free, prismatic and planar joints.
 inline void add_tree_of_joint_types(model::ModelBuilder& b) {
   const auto box = inertia::box(inertia::Amount::mass(1.0), Vec3(0.1, 0.2, 0.3));
   for (const char* name : {"b1", "b2", "b3", "b4", "b5"}) b.add_body(name, box);
   const auto joint = [&](const char* name, JointType type, const char* parent, const char* child,
-                         const Vec3& at, const Vec3& axis) {
-    model::Joint j;
-    j.name = name;
-    j.type = type;
-    j.parent = parent;
-    j.child = child;
-    j.X_PJ = Transform::translation(at);
-    j.axis = axis;
-    b.add_joint(j);
-  };
+                         const Vec3& at,
+                         const Vec3& axis) { add_joint(b, name, type, parent, child, at, axis); };
   joint("j1", JointType::revolute, "world", "b1", Vec3::Zero(), Vec3::UnitZ());
   joint("j2", JointType::spherical, "b1", "b2", Vec3(0.3, 0, 0), Vec3::UnitZ());
   joint("j3", JointType::free, "world", "b3", Vec3::Zero(), Vec3::UnitZ());

@@ -29,23 +29,8 @@ model::Model deep_constraint_model() {
   const auto box = inertia::box(inertia::Amount::mass(0.5), Vec3(0.2, 0.1, 0.1));
   b.add_body("b6", box);
   b.add_body("b7", box);
-  model::Joint u;
-  u.name = "j6";
-  u.type = JointType::universal;
-  u.parent = "b2";
-  u.child = "b6";
-  u.X_PJ = Transform::translation(Vec3(0.1, 0.2, 0));
-  u.axis = Vec3::UnitX();
-  u.axis2 = Vec3::UnitY();
-  b.add_joint(u);
-  model::Joint cyl;
-  cyl.name = "j7";
-  cyl.type = JointType::cylindrical;
-  cyl.parent = "b6";
-  cyl.child = "b7";
-  cyl.X_PJ = Transform::translation(Vec3(0, 0, 0.3));
-  cyl.axis = Vec3(0.6, 0, 0.8);
-  b.add_joint(cyl);
+  test::add_joint(b, "j6", JointType::universal, "b2", "b6", Vec3(0.1, 0.2, 0), Vec3::UnitX());
+  test::add_joint(b, "j7", JointType::cylindrical, "b6", "b7", Vec3(0, 0, 0.3), Vec3(0.6, 0, 0.8));
   const Transform X(Eigen::AngleAxisd(0.7, Vec3(-1, 2, 1).normalized()).toRotationMatrix(),
                     Vec3(0.05, 0.1, -0.2));
   b.add_constraint(
