@@ -48,7 +48,7 @@ export function inertiaPage(app, data) {
   });
   viewer.frame(boxCorners(solids));
   let frames = 0;
-  const animate = () => { viewer.render(); frames++; requestAnimationFrame(animate); };
+  const animate = () => { if (viewer.renderIfStale()) frames++; requestAnimationFrame(animate); };
   requestAnimationFrame(animate);
   app.append(element('p', { class: 'note' }, 'Black dot: centre of mass. Arrows: principal axes 1, 2, 3 (red, green, blue; moments ascending). Gold: the uniform ellipsoid with the same mass and inertia. Dark wireframes: holes.'));
   const facts = element('section', {}, element('h2', {}, 'The part'),

@@ -32,17 +32,18 @@ function simulationPage(app, data) {
   if (campbell) app.append(campbell.section);
   const diagrams = diagramsSection(data.diagrams, timeline);
   app.append(diagrams.section);
+  // Every animation frame advances the clock; the view is drawn only when what it shows changed.
   let frames = 0;
+  const draw = (now) => { if (motion.render(now)) frames++; };
   const loop = (now) => {
     timeline.tick(now);
-    motion.render(now);
-    frames++;
+    draw(now);
     requestAnimationFrame(loop);
   };
   requestAnimationFrame(loop);
   return {
     kind: 'simulation',
-    setTime: (t) => { motion.playMode(null); timeline.set(t); motion.render(performance.now()); },
+    setTime: (t) => { motion.playMode(null); timeline.set(t); draw(performance.now()); },
     time: () => timeline.time,
     frameTimes: () => Array.from(motion.time),
     bodyNames: () => data.scene.bodies.map((b) => b.name),

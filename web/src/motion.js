@@ -263,6 +263,7 @@ export class Motion {
   setTrace(b) {
     this.toggles.trace = b;
     this.trace.visible = b >= 0;
+    this.viewer.invalidate();
     if (b < 0) return;
     const points = [];
     for (let k = 0; k < this.time.length; k++) points.push(new THREE.Vector3(...this.bodyPoint(b, this.bodies[b].com, this.time[k])));
@@ -271,7 +272,9 @@ export class Motion {
     this.show(this.timeline.time);
   }
 
+  // Moves every body, link, spring and marker to the poses `poseOf` gives; the view is drawn anew.
   placeBodies(poseOf) {
+    this.viewer.invalidate();
     const poses = this.bodies.map((_, b) => poseOf(b));
     poses.forEach(([p, q], b) => {
       this.groups[b].position.set(p[0], p[1], p[2]);
@@ -358,9 +361,11 @@ export class Motion {
       Array.from(m.quaternion.subarray(4 * (k * this.nb + b), 4 * (k * this.nb + b) + 4))]);
   }
 
+  // Draws the view if anything it shows has changed (every frame while a mode animates); true
+  // when it drew.
   render(now) {
     if (this.mode) this.animateMode(now);
-    this.viewer.render();
+    return this.viewer.renderIfStale();
   }
 
   // What the reaction arrows show now (for the test hook): each one's name, whether it is drawn,

@@ -41,6 +41,11 @@ export class Viewer {
     container.append(surface);
     this.controls = new OrbitControls(this.camera, surface);
     this.controls.enableDamping = false;
+    // Drawn on demand: only after something the view shows has changed (the time, the camera, a
+    // toggle, the size), not on every animation frame — an open report that is not playing keeps
+    // no core busy (a software rasterizer's frame at 1280 × 900 costs tens of milliseconds).
+    this.stale = true;
+    this.controls.addEventListener('change', () => this.invalidate());
     this.scene.add(new THREE.HemisphereLight(0xffffff, 0x888888, 1.6));
     const sun = new THREE.DirectionalLight(0xffffff, 1.4);
     sun.position.set(3, -2, 5);
@@ -110,6 +115,7 @@ export class Viewer {
     this.controls.update();
     this.placeGrid(box, radius);
     this.framed = { box, radius };
+    this.invalidate();
   }
 
   // From the front right and a little above, whichever way is up: (0.6, −1, 0.45) with z up.
@@ -156,9 +162,19 @@ export class Viewer {
     this.camera.aspect = width / height;
     this.camera.updateProjectionMatrix();
     if (this.renderer) this.renderer.setSize(width, height, false);
+    this.invalidate();
   }
 
-  render() { if (this.renderer) this.renderer.render(this.scene, this.camera); }
+  // Says that what the view shows has changed: the next renderIfStale() draws it.
+  invalidate() { this.stale = true; }
+
+  // Draws the scene if it changed since it was last drawn; true when it drew.
+  renderIfStale() {
+    if (!this.stale || !this.renderer) return false;
+    this.renderer.render(this.scene, this.camera);
+    this.stale = false;
+    return true;
+  }
 }
 
 // An arrow from `origin` along `vector`, reused frame to frame.
