@@ -2,7 +2,6 @@
 
 #include <utility>
 
-
 #include "argument_checks.hpp"
 #include "constraint_row_formulas.hpp"
 #include "joint_stages.hpp"

@@ -32,14 +32,11 @@ inline void add_joint(model::ModelBuilder& b, const char* name, JointType type, 
 inline void add_tree_of_joint_types(model::ModelBuilder& b) {
   const auto box = inertia::box(inertia::Amount::mass(1.0), Vec3(0.1, 0.2, 0.3));
   for (const char* name : {"b1", "b2", "b3", "b4", "b5"}) b.add_body(name, box);
-  const auto joint = [&](const char* name, JointType type, const char* parent, const char* child,
-                         const Vec3& at,
-                         const Vec3& axis) { add_joint(b, name, type, parent, child, at, axis); };
-  joint("j1", JointType::revolute, "world", "b1", Vec3::Zero(), Vec3::UnitZ());
-  joint("j2", JointType::spherical, "b1", "b2", Vec3(0.3, 0, 0), Vec3::UnitZ());
-  joint("j3", JointType::free, "world", "b3", Vec3::Zero(), Vec3::UnitZ());
-  joint("j4", JointType::prismatic, "world", "b4", Vec3(0, 1, 0), Vec3(0.6, 0.8, 0));
-  joint("j5", JointType::planar, "world", "b5", Vec3::Zero(), Vec3::UnitZ());
+  add_joint(b, "j1", JointType::revolute, "world", "b1", Vec3::Zero(), Vec3::UnitZ());
+  add_joint(b, "j2", JointType::spherical, "b1", "b2", Vec3(0.3, 0, 0), Vec3::UnitZ());
+  add_joint(b, "j3", JointType::free, "world", "b3", Vec3::Zero(), Vec3::UnitZ());
+  add_joint(b, "j4", JointType::prismatic, "world", "b4", Vec3(0, 1, 0), Vec3(0.6, 0.8, 0));
+  add_joint(b, "j5", JointType::planar, "world", "b5", Vec3::Zero(), Vec3::UnitZ());
 }
 
 inline model::BodyFrame frame(const char* body, const Transform& X_BF) {
