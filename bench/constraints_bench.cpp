@@ -3,14 +3,16 @@
 // five rows are redundant in the plane):
 //   four_bar      crank 0.10 m, coupler 0.30 m, rocker 0.25 m, ground 0.30 m (n = 3);
 //   slider_crank  crank 0.05 m, rod 0.20 m, a 0.8 kg piston on a slider (n = 3);
-//   loop_30       thirty 0.1 m links hanging in a V between pins 2.6 m apart (n = 30).
+//   loop_30       thirty 0.1 m links hanging in a V between pins 2.6 m apart (n = 30);
+//   loop_120      the same with 120 links, 10.4 m apart (n = 120).
 // Slender rods of 0.1 kg each (the slider-crank's as in examples/constraints/slider_crank.yaml,
 // its crank free here), gravity −y, a consistent state with velocities from a fixed seed.
 // Measured:
 //   BM_Acceleration/<model>/closed  MultibodySystem::acceleration with the constraint: ABA, the
 //                                   rows, M⁻¹Gᵀ by the articulated-body factors, the Cholesky of
-//                                   G M⁻¹ Gᵀ (the default method)
-//   BM_Acceleration/<model>/dense   the same by CRBA and a dense Cholesky of M (the check)
+//                                   G M⁻¹ Gᵀ (the default method; the projection's too)
+//   BM_Acceleration/<model>/dense   the same by CRBA and a dense Cholesky of M (the check), in
+//                                   the accelerations and the projection alike
 //   BM_Acceleration/<model>/tree    the same tree without the constraint (ABA only)
 //   BM_SimulatedSecond/<model>/...  one simulated second: 1000 RK4 steps of 1 ms through
 //                                   integrate::run, with the projection onto the constraints after
@@ -39,7 +41,7 @@ namespace {
 
 using namespace momenta;
 
-const char* const kModels[] = {"four_bar", "slider_crank", "loop_30"};
+const char* const kModels[] = {"four_bar", "slider_crank", "loop_30", "loop_120"};
 const char* const kVariants[] = {"closed", "dense", "tree"};
 
 std::string slider_crank_text(bool closed) {
@@ -68,7 +70,9 @@ joints:
 io::ModelFile model_file(int model, bool closed) {
   if (model == 0) return io::parse_model_file(test::four_bar_text(closed), "four_bar.yaml", ".");
   if (model == 1) return io::parse_model_file(slider_crank_text(closed), "slider_crank.yaml", ".");
-  return io::parse_model_file(test::v_loop_text(30, closed), "loop_30.yaml", ".");
+  const int links = model == 2 ? 30 : 120;
+  return io::parse_model_file(test::v_loop_text(links, closed), fmt::format("loop_{}.yaml", links),
+                              ".");
 }
 
 // A model, its system and a consistent state with velocities from a fixed seed (the tree takes
@@ -128,8 +132,10 @@ void BM_Linearize(benchmark::State& bench) {
   bench.SetLabel(kModels[bench.range(0)]);
 }
 
-BENCHMARK(BM_Acceleration)->ArgsProduct({{0, 1, 2}, {0, 1, 2}});
-BENCHMARK(BM_SimulatedSecond)->ArgsProduct({{0, 1, 2}, {0, 1, 2}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Acceleration)->ArgsProduct({{0, 1, 2, 3}, {0, 1, 2}});
+BENCHMARK(BM_SimulatedSecond)
+    ->ArgsProduct({{0, 1, 2, 3}, {0, 1, 2}})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Linearize)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -6,8 +6,10 @@
 #include <fmt/format.h>
 
 #include "momenta/common/error.hpp"
+#include "momenta/dynamics/aba.hpp"
 #include "momenta/dynamics/articulated_solve.hpp"
 #include "momenta/dynamics/crba.hpp"
+#include "momenta/dynamics/hybrid_dynamics.hpp"
 #include "momenta/dynamics/kinematics.hpp"
 #include "ordered_cholesky.hpp"
 
@@ -53,6 +55,8 @@ ConstraintSolver::ConstraintSolver(const model::Model& model)
   A_ = MatX::Zero(m, m);
   Y_ = MatX::Zero(model.nv(), m);
   dv_ = VecX::Zero(nf);
+  zero_ = VecX::Zero(model.nv());
+  if (m > 0) iterate_data_ = std::make_unique<dynamics::Data>(model);
   all_rows_.assign(m, 1);
   position_rows_.assign(rows_.holonomic.begin(), rows_.holonomic.end());
   if (m > 0) {
@@ -130,7 +134,7 @@ bool ConstraintSolver::correct_accelerations(dynamics::Data& data, VecRef q, Vec
   if (method_ == AccelerationMethod::articulated) {
     dynamics::constraint_equations(model_, data, q, rows_,
                                    dynamics::RowTerms::with_acceleration_residual);
-    factor_rows_articulated(data);
+    factor_rows_articulated(data, all_rows_);
     rhs_.noalias() = -rows_.bias;
     rows_.bias.noalias() -= rows_.G.lazyProduct(vdot);  // k, for whoever reads the rows
   } else {
@@ -154,23 +158,25 @@ bool ConstraintSolver::correct_accelerations(dynamics::Data& data, VecRef q, Vec
   return true;
 }
 
-void ConstraintSolver::factor_rows_articulated(dynamics::Data& data) {
+void ConstraintSolver::factor_rows_articulated(dynamics::Data& data, std::span<const char> mask) {
   Y_ = rows_.G.transpose();
+  for (int i = 0; i < rows_.count; ++i)
+    if (!mask[i]) Y_.col(i).setZero();
   // Held where the forward dynamics was hybrid (the model's own prescribed joints).
   const std::span<const char> prescribed = model_.has_prescribed_joints()
                                                ? std::span<const char>(data.prescribed_mask)
                                                : std::span<const char>();
   dynamics::articulated_solve(model_, data, prescribed, Y_);
-  // A = G Y, symmetric: its lower triangle (what the factorization reads), and nothing to form
-  // for a row that exerts no force here (its column of Y is zero: a planar loop's out-of-plane
-  // rows).
+  // A = G Y, symmetric: its lower triangle (what the factorization reads), zero outside the
+  // mask, and nothing to form for a row that exerts no force here (its column of Y is zero: a
+  // planar loop's out-of-plane rows).
   const int m = rows_.count;
   for (int c = 0; c < m; ++c) {
     if (Y_.col(c).isZero(0.0)) {
       A_.col(c).setZero();
       continue;
     }
-    for (int r = c; r < m; ++r) A_(r, c) = rows_.G.row(r).dot(Y_.col(c));
+    for (int r = c; r < m; ++r) A_(r, c) = mask[r] ? rows_.G.row(r).dot(Y_.col(c)) : 0.0;
   }
   cholesky_->factorize(A_, kDependentRow);
 }
@@ -203,33 +209,61 @@ void ConstraintSolver::add_forces(const dynamics::Data& data, std::span<Vec6> f_
   dynamics::add_constraint_forces(model_, data, rows_, lambda_, f_ext, tau);
 }
 
+void ConstraintSolver::factor_metric(dynamics::Data& data, VecRef q, VecRef v) {
+  if (method_ == AccelerationMethod::dense) {
+    dynamics::forward_kinematics(model_, data, q);
+    factor_mass_matrix(data, q);
+  } else if (model_.has_prescribed_joints()) {
+    dynamics::hybrid_dynamics(model_, data, q, v, zero_, zero_);
+  } else {
+    dynamics::aba(model_, data, q, v, zero_);
+  }
+}
+
+void ConstraintSolver::factor_metric_rows(dynamics::Data& data, std::span<const char> mask) {
+  if (method_ == AccelerationMethod::dense) {
+    gather_free_columns();
+    factor_rows(mask);
+  } else {
+    factor_rows_articulated(data, mask);
+  }
+}
+
+void ConstraintSolver::metric_step(const VecX& lambda, VecX& dx) {
+  if (method_ == AccelerationMethod::dense) {
+    apply_row_forces(lambda);
+    dx.setZero();
+    for (int c = 0; c < static_cast<int>(free_.size()); ++c) dx[free_[c]] = dv_[c];
+  } else {
+    dx.noalias() = Y_ * lambda;  // zero on prescribed coordinates
+  }
+}
+
 bool ConstraintSolver::project(double t, dynamics::Data& data, VecX& q, VecX& v) {
   if (rows_.count == 0) return false;
   bool changed = false;
   // Positions: Newton with the mass metric (M at the step's end state, kept through the
-  // iterations), until round-off.
-  dynamics::forward_kinematics(model_, data, q);
-  factor_mass_matrix(data, q);
+  // iterations), until round-off. The articulated method keeps M's factors in `data` and forms
+  // the iterates' rows in a Data of its own; the dense one keeps M's Cholesky factor.
+  factor_metric(data, q, v);
+  dynamics::Data& iterate = method_ == AccelerationMethod::articulated ? *iterate_data_ : data;
   dynamics::constraint_equations(model_, data, q, rows_);
   double residual = max_abs_over(rows_.position, position_rows_);
   for (int it = 0; it < kProjectionIterations && residual > kPositionTolerance; ++it) {
-    gather_free_columns();
-    factor_rows(position_rows_);
+    factor_metric_rows(data, position_rows_);
     rhs_ = -rows_.position;
     cholesky_->solve_in_place(rhs_);
-    apply_row_forces(rhs_);
-    delta_.setZero();
-    for (int c = 0; c < static_cast<int>(free_.size()); ++c) delta_[free_[c]] = dv_[c];
+    metric_step(rhs_, delta_);
     q_saved_ = q;
     model::integrate(model_, q_saved_, delta_, 1.0, q);
-    dynamics::forward_kinematics(model_, data, q);
-    dynamics::constraint_equations(model_, data, q, rows_);
+    dynamics::forward_kinematics(model_, iterate, q);
+    dynamics::constraint_equations(model_, iterate, q, rows_);
     const double next = max_abs_over(rows_.position, position_rows_);
     if (!(next < residual)) {  // round-off reached: keep the better state
       if (!(next <= residual)) {
         q = q_saved_;
-        dynamics::forward_kinematics(model_, data, q);
-        dynamics::constraint_equations(model_, data, q, rows_);
+        dynamics::forward_kinematics(model_, iterate, q);
+        dynamics::constraint_equations(model_, iterate, q, rows_);
       }
       break;
     }
@@ -250,13 +284,12 @@ bool ConstraintSolver::project(double t, dynamics::Data& data, VecX& q, VecX& v)
         t, rows_.names[static_cast<std::size_t>(worst)], residual));
   }
   // Velocities: v ← v − M⁻¹Gᵀ (G M⁻¹ Gᵀ)⁻¹ G v over every row.
-  gather_free_columns();
-  factor_rows(all_rows_);
+  factor_metric_rows(data, all_rows_);
   rhs_.noalias() = -rows_.G * v;
   if (rhs_.cwiseAbs().maxCoeff() > 0.0) {
     cholesky_->solve_in_place(rhs_);
-    apply_row_forces(rhs_);
-    for (int c = 0; c < static_cast<int>(free_.size()); ++c) v[free_[c]] += dv_[c];
+    metric_step(rhs_, delta_);
+    v += delta_;
     changed = true;
   }
   return changed;

@@ -21,8 +21,10 @@
 // 1995), after every step: positions by Newton's method on φ(q) = 0 with the step of least
 // kinetic metric, q ← q ⊕ −M⁻¹Gᵀ(G M⁻¹ Gᵀ)⁻¹ φ over the holonomic rows, until |φ| stops
 // decreasing or is below 1e-14 (m or rad); then velocities onto G v = 0 by the same M-orthogonal
-// projection, which removes the kinetic energy of the violation only. The residuals stay at
-// round-off; no Baumgarte terms, nothing to tune.
+// projection, which removes the kinetic energy of the violation only. M is that of the state the
+// projection starts from, kept through the iterations; M⁻¹ Gᵀ by the same method as the
+// accelerations (the articulated-body factors of aba at that state, or M's Cholesky factor). The
+// residuals stay at round-off; no Baumgarte terms, nothing to tune.
 
 #include <memory>
 #include <span>
@@ -122,10 +124,11 @@ class ConstraintSolver {
   void add_forces(const dynamics::Data& data, std::span<Vec6> f_ext, VecX& tau) const;
 
   /// Projects (q, v) onto the constraints (see the header comment); prescribed coordinates are
-  /// not moved. Returns true when the state changed. Throws NumericalError naming the time t
-  /// and the row with the largest residual when Newton's method does not bring |φ| below 1e-6
-  /// (the step left the constraints too far behind: a limit of the motion, or too large a
-  /// step). No allocation.
+  /// not moved. Overwrites data (the articulated method leaves aba's, or hybrid_dynamics', results
+  /// at (q, v) and zero forces there). Returns true when the state changed. Throws NumericalError
+  /// naming the time t and the row with the largest residual when Newton's method does not bring
+  /// |φ| below 1e-6 (the step left the constraints too far behind: a limit of the motion, or too
+  /// large a step). No allocation.
   bool project(double t, dynamics::Data& data, VecX& q, VecX& v);
 
   /// The residuals of (q, v). Overwrites data's poses and velocities. No allocation.
@@ -157,8 +160,17 @@ class ConstraintSolver {
                             ConsistentState& report);
   // dv_ = M⁻¹ G_fᵀ λ (the free coordinates' accelerations of row forces λ).
   void apply_row_forces(const VecX& lambda);
-  // Y = M⁻¹ Gᵀ by articulated_solve on data's factors, and A = G Y factorized in row order.
-  void factor_rows_articulated(dynamics::Data& data);
+  // Y = M⁻¹ Gᵀ over the rows in `mask` (other columns zero) by articulated_solve on data's
+  // factors, and A = G Y factorized in row order.
+  void factor_rows_articulated(dynamics::Data& data, std::span<const char> mask);
+  // The projection's metric M at (q, v) by the chosen method: its articulated-body factors in
+  // `data` (aba, or hybrid_dynamics with the model's prescribed joints held, at zero forces), or
+  // its Cholesky factor of the free coordinates.
+  void factor_metric(dynamics::Data& data, VecRef q, VecRef v);
+  // G M⁻¹ Gᵀ over the rows in `mask`, factorized, for the current rows and that metric.
+  void factor_metric_rows(dynamics::Data& data, std::span<const char> mask);
+  // dx ← M⁻¹ Gᵀ λ on the free coordinates, 0 on the prescribed ones.
+  void metric_step(const VecX& lambda, VecX& dx);
 
   const model::Model& model_;
   dynamics::ConstraintRows rows_;
@@ -168,7 +180,10 @@ class ConstraintSolver {
   MatX Y_;                   // nv × rows: M⁻¹ Gᵀ (articulated; 0 on prescribed coordinates)
   AccelerationMethod method_ = AccelerationMethod::articulated;
   Eigen::LLT<MatX> llt_;
-  VecX lambda_, rhs_, dv_, delta_, q_saved_;
+  VecX lambda_, rhs_, dv_, delta_, q_saved_, zero_;
+  // The projection's iterates' kinematics and rows (articulated method), apart from the metric's
+  // factors in the caller's Data.
+  std::unique_ptr<dynamics::Data> iterate_data_;
   std::unique_ptr<detail::OrderedCholesky> cholesky_;
   int reference_rank_ = 0;
   std::vector<std::string> redundant_;
