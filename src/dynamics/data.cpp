@@ -16,6 +16,60 @@ void add_joint_range(std::vector<std::pair<int, int>>& ranges, const model::Join
   }
 }
 
+// Buffers handed out and taken back in the order the sweeps visit the joints, reusing the
+// lowest free one: how many a sweep needs is how many sums are alive at once.
+class BufferPool {
+ public:
+  int take() {
+    if (free_.empty()) return count_++;
+    const int buffer = free_.back();
+    free_.pop_back();
+    return buffer;
+  }
+  void give_back(int buffer) { free_.push_back(buffer); }
+  int count() const { return count_; }
+
+ private:
+  std::vector<int> free_;
+  int count_ = 0;
+};
+
+// aba_derivatives' subtree sums, visited leaves to root: a joint takes over its last child's
+// buffer and adds its other children's, which are freed; a leaf takes a free one. A root joint's
+// sum is nobody's child's, so its buffer is freed once it is done.
+int assign_subtree_sums(const std::vector<std::vector<int>>& child_joints,
+                        const std::vector<int>& parent_joint, std::vector<int>& slot) {
+  BufferPool pool;
+  const auto nj = static_cast<int>(child_joints.size());
+  slot.assign(child_joints.size(), -1);
+  for (int j = nj - 1; j >= 0; --j) {
+    const auto& children = child_joints[j];
+    if (children.empty()) {
+      slot[j] = pool.take();
+    } else {
+      slot[j] = slot[children.back()];
+      for (std::size_t k = 0; k + 1 < children.size(); ++k) pool.give_back(slot[children[k]]);
+    }
+    if (parent_joint[j] < 0) pool.give_back(slot[j]);
+  }
+  return pool.count();
+}
+
+// Its sums over the ancestors, visited root to leaves: a joint takes over its parent's buffer
+// if it is the parent's last child, otherwise a free one (a copy); a leaf's is freed once done.
+int assign_path_sums(const std::vector<std::vector<int>>& child_joints,
+                     const std::vector<int>& parent_joint, std::vector<int>& slot) {
+  BufferPool pool;
+  slot.assign(child_joints.size(), -1);
+  for (std::size_t j = 0; j < child_joints.size(); ++j) {
+    const int p = parent_joint[j];
+    const bool last_child = p >= 0 && child_joints[p].back() == static_cast<int>(j);
+    slot[j] = last_child ? slot[p] : pool.take();
+    if (child_joints[j].empty()) pool.give_back(slot[j]);
+  }
+  return pool.count();
+}
+
 }  // namespace
 
 Data::Data(const Model& model) {
@@ -51,15 +105,18 @@ Data::Data(const Model& model) {
   dV_W.assign(nb, Vec6::Zero());
   dA_W.assign(nb, Vec6::Zero());
   dF_W.assign(nb, Vec6::Zero());
-  dIc_W.assign(nb, Mat6::Zero());
-  dB_W.assign(nb, Mat6::Zero());
-  dS_W = MatX::Zero(6, nv);
-  dDeltaV_W = MatX::Zero(6, nv);
-  dX_W = MatX::Zero(6, nv);
-  dW_W = MatX::Zero(6, nv);
-  minv_U_W = MatX::Zero(6, nv);
-  minv_F_W = MatX::Zero(6, nv);
+  dIc_W.assign(nb, SpatialInertia());
+  dB_W.assign(nb, CoriolisInertia());
+  dS_W = Mat6X::Zero(6, nv);
+  dDeltaV_W = Mat6X::Zero(6, nv);
+  dX_W = Mat6X::Zero(6, nv);
+  dW_W = Mat6X::Zero(6, nv);
+  minv_U_W = Mat6X::Zero(6, nv);
+  minv_F_W = Mat6X::Zero(6, nv);
   minv_A_W.assign(nb, Mat6X::Zero(6, nv));
+  dtau_lower_W.setZero(9, nv);
+  dtau_upper_q_W = Mat6X::Zero(6, nv);
+  dtau_upper_v_W = Mat6X::Zero(6, nv);
   dtau_dq = MatX::Zero(nv, nv);
   dtau_dv = MatX::Zero(nv, nv);
   dvdot_dq = MatX::Zero(nv, nv);
@@ -118,6 +175,18 @@ Data::Data(const Model& model) {
       all_dofs_related = false;
     }
   }
+
+  // The joints' children, and the buffers of aba_derivatives' running sums.
+  std::vector<int> parent_joint(nj);
+  child_joints.assign(nj, {});
+  for (std::size_t j = 0; j < nj; ++j) {
+    parent_joint[j] = model.parent(static_cast<int>(j) + 1) - 1;
+    if (parent_joint[j] >= 0) child_joints[parent_joint[j]].push_back(static_cast<int>(j));
+  }
+  const int lower_buffers = assign_subtree_sums(child_joints, parent_joint, minv_lower_slot);
+  const int upper_buffers = assign_path_sums(child_joints, parent_joint, minv_upper_slot);
+  minv_lower_sums.assign(lower_buffers, MatX::Zero(nv, 9));
+  minv_upper_sums.assign(upper_buffers, MatX::Zero(nv, 6));
 }
 
 }  // namespace momenta::dynamics

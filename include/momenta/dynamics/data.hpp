@@ -26,6 +26,17 @@ namespace momenta::dynamics {
 
 using model::Model;
 
+/// The Coriolis inertia of rigid bodies moving with spatial velocities Vᵢ, Σ Bᵢ with
+/// Bᵢ = crf(Vᵢ) Iᵢ − Iᵢ crm(Vᵢ) + (· ×* Iᵢ Vᵢ): how their momenta's rate changes with a
+/// perturbation x of their velocities, beyond I ẋ. For a rigid body's inertia [I_O [h]×; [h]×ᵀ m 1]
+/// its matrix is [B_ω 0; −2 [p]× 0], p = m v − h × ω the body's linear momentum and
+/// B_ω = −(I_O [ω]× + [h]× [v]×) − (…)ᵀ − [n]×, n its angular momentum about the origin: its
+/// right-hand blocks vanish (rnea_derivatives.cpp), and so do a sum's.
+struct CoriolisInertia {
+  Mat3 angular = Mat3::Zero();   ///< B_ω, the upper-left block.
+  Vec3 momentum = Vec3::Zero();  ///< p: the lower-left block is −2 [p]×.
+};
+
 struct Data {
   /// Sizes every array for `model`.
   explicit Data(const Model& model);
@@ -85,23 +96,24 @@ struct Data {
   bool all_dofs_related = true;  ///< Every pair of joints is ancestor-related (M has no zeros).
 
   // --- Workspace of rnea_derivatives / aba_derivatives (world frame, about Wo) --------------
-  std::vector<Vec6> dV_W;   ///< Per body: spatial velocity V_WB in W.
-  std::vector<Vec6> dA_W;   ///< Per body: spatial acceleration shifted by −g, in W.
-  std::vector<Vec6> dF_W;   ///< Per body: net force of B's subtree, in W (after the pass).
-  std::vector<Mat6> dIc_W;  ///< Per body: composite inertia of B's subtree, in W.
-  std::vector<Mat6> dB_W;   ///< Per body: Σ over B's subtree of ∂(I V) ×* terms (the Coriolis
-                           ///< inertia Bᵢ x = −Iᵢ(Vᵢ × x) + x ×* Iᵢ Vᵢ + Vᵢ ×* Iᵢ x), in W.
+  std::vector<Vec6> dV_W;  ///< Per body: spatial velocity V_WB in W.
+  std::vector<Vec6> dA_W;  ///< Per body: spatial acceleration shifted by −g, in W.
+  std::vector<Vec6> dF_W;  ///< Per body: net force of B's subtree, in W (after the pass).
+  std::vector<SpatialInertia> dIc_W;  ///< Per body: composite inertia of B's subtree, in W.
+  /// Per body: Σ over B's subtree of the bodies' Coriolis inertias Bᵢ x = −Iᵢ(Vᵢ × x) +
+  /// x ×* Iᵢ Vᵢ + Vᵢ ×* Iᵢ x, in W.
+  std::vector<CoriolisInertia> dB_W;
   /// 6 × nv per velocity coordinate k, in W: its motion-subspace column S_k, and the terms its
   /// derivatives need (rnea_derivatives.cpp): ΔV_k = V_p × S_k, x_k = A_p × S_k − ΔV_k × V_p,
   /// W_k = (V_s + V_p) × S_k, with V_p, A_p the velocity and acceleration of the frame before
   /// the coordinate's stage of its joint and V_s after it.
-  MatX dS_W, dDeltaV_W, dX_W, dW_W;
+  Mat6X dS_W, dDeltaV_W, dX_W, dW_W;
 
   // --- Workspace of aba_derivatives' M⁻¹ (Carpentier 2018; aba_derivatives.cpp), in W ----------
-  MatX minv_U_W;  ///< 6 × nv: U = IA S of each velocity coordinate's joint, column by column.
+  Mat6X minv_U_W;  ///< 6 × nv: U = IA S of each velocity coordinate's joint, column by column.
   /// 6 × nv: column k, the force that a unit generalized force at coordinate k passes up through
   /// the bodies below the joint being visited (the backward pass).
-  MatX minv_F_W;
+  Mat6X minv_F_W;
   /// Per body, 6 × nv: column k (for k at or after the body's joint), its acceleration under a
   /// unit generalized force at coordinate k (the forward pass; the world's stays zero). With
   /// 6 nv doubles a body, the largest of Data's arrays (as many as six nv × nv matrices for a
@@ -111,6 +123,23 @@ struct Data {
   /// descendants, merged into contiguous runs, ascending (the joint's own first). Fixed by the
   /// model.
   std::vector<std::vector<std::pair<int, int>>> subtree_ranges;
+
+  // --- Workspace of aba_derivatives' products −M⁻¹ ∂τ (aba_derivatives.cpp), in W -------------
+  /// 9 × nv: per velocity coordinate m, [Ic S_m; (Bᵀ S_m)_ω] (Ic, B of its joint's subtree;
+  /// (Bᵀ S_m)_v is zero): the entries (m, k) of ∂τ where k moves m (k ≤ m in a chain) are its
+  /// dot products with [x_k; (ΔV_k)_ω] (∂/∂q) and [W_k; (S_k)_ω] (∂/∂v).
+  Eigen::Matrix<double, 9, Eigen::Dynamic> dtau_lower_W;
+  /// 6 × nv each: per velocity coordinate m, G_m and H_m: the entries (k, m) of ∂τ/∂q and ∂τ/∂v
+  /// where k is above m (k < m in a chain) are S_kᵀ G_m and S_kᵀ H_m.
+  Mat6X dtau_upper_q_W, dtau_upper_v_W;
+  /// Running sums of M⁻¹'s columns times those factors, nv × 9 (Σ M⁻¹ₘ (dtau_lower_W)ₘᵀ over
+  /// a joint's subtree) and nv × 6 (Σ M⁻¹ₖ S_kᵀ over a joint's ancestors), in a few buffers
+  /// that the joints share: one each for a chain, one more per branch still open for a tree.
+  std::vector<MatX> minv_lower_sums, minv_upper_sums;
+  std::vector<int> minv_lower_slot;  ///< Per joint: which of minv_lower_sums holds its sum.
+  std::vector<int> minv_upper_slot;  ///< Per joint: which of minv_upper_sums holds its sum.
+  /// Per joint: the joints whose parent body is its child body, ascending. Fixed by the model.
+  std::vector<std::vector<int>> child_joints;
 
   // --- Results of rnea_derivatives / aba_derivatives -----------------------------------------
   MatX dtau_dq;   ///< nv × nv: ∂τ/∂q on the tangent space (rnea_derivatives).

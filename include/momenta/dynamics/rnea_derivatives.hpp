@@ -19,8 +19,9 @@
 // and 1-dof joints: one stage). Perturbing coordinate k moves everything after its stage rigidly
 // by its column S_k, so each body's force changes by S_k ×* f plus a part linear in
 // ΔV_k = V_p × S_k and A_p × S_k (V_p, A_p: the frame before the stage) through the subtree's
-// composite inertia and its Coriolis inertia B = Σ (−I (V×) + (I V)×̄* + V ×* I). Cost
-// O(n d) beyond the O(n) pass, d the depth of the tree.
+// composite inertia and its Coriolis inertia B = Σ (−I (V×) + (I V)×̄* + V ×* I), whose right-hand
+// blocks vanish (data.hpp, CoriolisInertia). Cost O(n d) beyond the O(n) pass, d the depth of the
+// tree.
 
 #include <span>
 

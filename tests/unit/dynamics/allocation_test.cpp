@@ -97,5 +97,20 @@ TEST(DynamicsAllocation, AlgorithmsDoNotAllocate) {
                      aba(m, data, q, v, a), 0.0);
 }
 
+// aba_derivatives' products with M⁻¹ are running sums in Data's buffers, not Eigen's blocked
+// products (which take workspace from the heap at these sizes): none at 64 coordinates either.
+TEST(DynamicsAllocation, AbaDerivativesOfALongChainDoNotAllocate) {
+  const Model m = test::revolute_chain(64);
+  Data data(m);
+  std::mt19937 rng(2);
+  const VecX q = test::random_configuration(m, rng);
+  const VecX v = test::random_vector(m.nv(), rng);
+  const VecX tau = test::random_vector(m.nv(), rng);
+  const long before = test::allocation_count();
+  aba_derivatives(m, data, q, v, tau);
+  EXPECT_EQ(test::allocation_count() - before, 0);
+  EXPECT_TRUE(data.dvdot_dq.allFinite());
+}
+
 }  // namespace
 }  // namespace momenta::dynamics
