@@ -175,6 +175,20 @@ void inverse_mass_matrix(const Model& model, Data& data) {
 // where the dense products take 2 n² (4 n³ flops).
 using Vec9 = Eigen::Matrix<double, 9, 1>;
 
+// Coordinate k's column factors of ∂τ's entries where k moves m: y_k = [x_k; (ΔV_k)_ω] (∂/∂q)
+// and [W_k; (S_k)_ω] (∂/∂v).
+Vec9 lower_column_factor_q(const Data& data, int k) {
+  Vec9 y;
+  y << data.dX_W.col(k), data.dDeltaV_W.col(k).head<3>();
+  return y;
+}
+
+Vec9 lower_column_factor_v(const Data& data, int k) {
+  Vec9 z;
+  z << data.dW_W.col(k), data.dS_W.col(k).head<3>();
+  return z;
+}
+
 // A 1-dof joint's coordinate k in one pass over a sum Σ (n × K, column-major): its two columns
 // out_q = base + Σ a − M⁻¹ₖ α_q and out_v = base + Σ b − M⁻¹ₖ α_v with Σ as it was, base their
 // own old values or zero, and then Σ −= M⁻¹ₖ wᵀ (a rank-one update). Rows::RowsAtCompileTime
@@ -283,9 +297,8 @@ void subtree_sums_step(const Model& model, Data& data, int j) {
   }
   if (c.nv == 1) {  // R after the update, applied as R before it minus M⁻¹ₖ (pᵀ y)
     const int k = c.v_index;
-    Vec9 along_q, along_v;
-    along_q << data.dX_W.col(k), data.dDeltaV_W.col(k).head<3>();
-    along_v << data.dW_W.col(k), data.dS_W.col(k).head<3>();
+    const Vec9 along_q = lower_column_factor_q(data, k);
+    const Vec9 along_v = lower_column_factor_v(data, k);
     const Vec9 p_k = data.dtau_lower_W.col(k);
     apply_and_update<9, true>(R.data(), static_cast<int>(R.rows()), data.Minv.col(k).data(),
                               along_q.data(), along_v.data(), p_k.dot(along_q), p_k.dot(along_v),
@@ -301,11 +314,8 @@ void subtree_sums_step(const Model& model, Data& data, int j) {
     for (int k = 0; k < c.nv; ++k) {
       if (detail::joint_stage(c.type, k) != s) continue;
       const int vk = c.v_index + k;
-      Vec9 along_q, along_v;
-      along_q << data.dX_W.col(vk), data.dDeltaV_W.col(vk).head<3>();
-      along_v << data.dW_W.col(vk), data.dS_W.col(vk).head<3>();
-      data.dvdot_dq.col(vk).noalias() += R * along_q;
-      data.dvdot_dv.col(vk).noalias() += R * along_v;
+      data.dvdot_dq.col(vk).noalias() += R * lower_column_factor_q(data, vk);
+      data.dvdot_dv.col(vk).noalias() += R * lower_column_factor_v(data, vk);
     }
   }
 }
