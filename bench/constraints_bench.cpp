@@ -8,9 +8,10 @@
 // Slender rods of 0.1 kg each (the slider-crank's as in examples/constraints/slider_crank.yaml,
 // its crank free here), gravity −y, a consistent state with velocities from a fixed seed.
 // Measured:
-//   BM_Acceleration/<model>/closed  MultibodySystem::acceleration with the constraint: ABA, the
-//                                   rows, M⁻¹Gᵀ by the articulated-body factors, the Cholesky of
-//                                   G M⁻¹ Gᵀ (the default method; the projection's too)
+//   BM_Acceleration/<model>/closed  MultibodySystem::acceleration with the constraint: ABA's
+//                                   first two passes, the rows, their leaves-to-root pass
+//                                   (L Gᵀ and G v̇₀), the Cholesky of G M⁻¹ Gᵀ, ABA's third pass
+//                                   with the row forces (the default method)
 //   BM_Acceleration/<model>/dense   the same by CRBA and a dense Cholesky of M (the check), in
 //                                   the accelerations and the projection alike
 //   BM_Acceleration/<model>/tree    the same tree without the constraint (ABA only)

@@ -108,19 +108,22 @@ void articulate(Data& data, int j, const double* tau, bool root, Vec6& pa, int n
   pa.noalias() += U_Dinv * u;
 }
 
-// Pass 3 for joint j: v̇_j = D⁻¹ (u − Uᵀ a) and a += S v̇_j.
+// Pass 3 for joint j: v̇_j = D⁻¹ (u + du − Uᵀ a) and a += S v̇_j (du: the joint's entries of
+// aba_accelerate's, or null).
 template <int N>
-void accelerate(Data& data, int j, int v_index, Vec6& a, int n = N) {
-  const VecNd<N> qdd = corner<N>(data.Dinv[j], n) *
-                       (segment<N>(data.u[j], 0, n) - left_cols<N>(data.U[j], n).transpose() * a);
+void accelerate(Data& data, int j, int v_index, const double* du, Vec6& a, int n = N) {
+  VecNd<N> u = segment<N>(data.u[j], 0, n);
+  if (du != nullptr) u += Eigen::Map<const VecNd<N>>(du + v_index, n);
+  const VecNd<N> qdd =
+      corner<N>(data.Dinv[j], n) * (u - left_cols<N>(data.U[j], n).transpose() * a);
   segment<N>(data.vdot, v_index, n) = qdd;
   a.noalias() += left_cols<N>(data.S[j], n) * qdd;
 }
 
 }  // namespace detail
 
-const VecX& aba(const Model& model, Data& data, VecRef q, VecRef v, VecRef tau,
-                std::span<const Vec6> f_ext) {
+void aba_articulate(const Model& model, Data& data, VecRef q, VecRef v, VecRef tau,
+                    std::span<const Vec6> f_ext) {
   detail::check_data_and_q("aba", model, data, q);
   detail::check_nv("aba", "v", model, v);
   detail::check_nv("aba", "tau", model, tau);
@@ -212,6 +215,13 @@ const VecX& aba(const Model& model, Data& data, VecRef q, VecRef v, VecRef tau,
     detail::add_transformed_inertia(data.X_PB[i], IA, data.IA[p]);
     data.pA[p] += data.X_PB[i].act_force(pa);
   }
+}
+
+const VecX& aba_accelerate(const Model& model, Data& data, VecRef du) {
+  const auto& joints = model.joint_constants();
+  const int nj = static_cast<int>(joints.size());
+  const bool added = du.size() > 0;
+  if (added) detail::check_nv("aba_accelerate", "du", model, du);
 
   // Pass 3 (root to leaves): accelerations; gravity as an upward acceleration of the base.
   const Vec6 a_base = spatial(Vec3::Zero(), -model.gravity());
@@ -226,7 +236,8 @@ const VecX& aba(const Model& model, Data& data, VecRef q, VecRef v, VecRef tau,
       const double* U = data.U[j].data();
       double Ua = 0.0;
       for (int r = 0; r < 6; ++r) Ua += U[r] * a[r];
-      const double qdd = data.Dinv[j](0, 0) * (data.u[j][0] - Ua);
+      const double u = added ? data.u[j][0] + du[c.v_index] : data.u[j][0];
+      const double qdd = data.Dinv[j](0, 0) * (u - Ua);
       data.vdot[c.v_index] = qdd;
       if (c.S_basis >= 0) {
         a[c.S_basis] += qdd;
@@ -236,21 +247,28 @@ const VecX& aba(const Model& model, Data& data, VecRef q, VecRef v, VecRef tau,
     } else if (c.nv > 0) {
       switch (c.nv) {
         case 2:
-          detail::accelerate<2>(data, j, c.v_index, a);
+          detail::accelerate<2>(data, j, c.v_index, added ? du.data() : nullptr, a);
           break;
         case 3:
-          detail::accelerate<3>(data, j, c.v_index, a);
+          detail::accelerate<3>(data, j, c.v_index, added ? du.data() : nullptr, a);
           break;
         case 6:
-          detail::accelerate<6>(data, j, c.v_index, a);
+          detail::accelerate<6>(data, j, c.v_index, added ? du.data() : nullptr, a);
           break;
         default:
-          detail::accelerate<Eigen::Dynamic>(data, j, c.v_index, a, c.nv);
+          detail::accelerate<Eigen::Dynamic>(data, j, c.v_index, added ? du.data() : nullptr, a,
+                                             c.nv);
           break;
       }
     }
   }
   return data.vdot;
+}
+
+const VecX& aba(const Model& model, Data& data, VecRef q, VecRef v, VecRef tau,
+                std::span<const Vec6> f_ext) {
+  aba_articulate(model, data, q, v, tau, f_ext);
+  return aba_accelerate(model, data);
 }
 
 VecX forward_dynamics(const Model& model, VecRef q, VecRef v, VecRef tau,

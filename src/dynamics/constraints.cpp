@@ -23,10 +23,10 @@ using model::RollingShape;
 using FrameMotion = detail::FrameMotionOf<double>;
 
 // Which accelerations a row's term w·(A_b − A_a) + ẇ·(V_b − V_a) takes: none (positions and G
-// only), the velocity products (k), or the whole accelerations of data's last aba or
-// hybrid_dynamics (G v̇ + k).
+// only), the velocity products (k), the whole accelerations of data's last aba or
+// hybrid_dynamics (G v̇ + k), or zero (ẇ·(V_b − V_a) alone).
 struct Accelerations {
-  enum Kind { none, velocity_products, whole } kind = none;
+  enum Kind { none, velocity_products, whole, zero } kind = none;
   Vec6 gravity_W = Vec6::Zero();  // whole: data.A_gf is shifted by −g, added back in W
   const VecX* vdot = nullptr;     // whole: data.vdot, for a coupler's row
   bool velocities() const { return kind != none; }
@@ -43,7 +43,7 @@ FrameMotion frame_motion(const Data& data, int body, const Transform& X_BF,
     m.V = X_WB.act_motion(data.V_WB_B[body]);
     if (acc.kind == Accelerations::velocity_products) {
       m.A = X_WB.act_motion(data.A_bias_B[body]);
-    } else {
+    } else if (acc.kind == Accelerations::whole) {
       m.A = X_WB.act_motion(data.A_gf[body]) + acc.gravity_W;
     }
   }
@@ -143,15 +143,16 @@ void assemble_jacobian(const Model& model, const Data& data, ConstraintRows& row
     const int a = rows.body_a[first], b = rows.body_b[first];
     if (a == b) continue;  // a coupler's row is written already
     const int n = end - first;
-    Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor, 6, 6> W_t(n, 6);
-    for (int r = 0; r < n; ++r) W_t.row(r) = rows.wrench_W[first + r].transpose();
-    auto g = rows.G.middleRows(first, n);
-    g.setZero();
+    rows.G.middleRows(first, n).setZero();
+    // Column by column: the constraint's n entries of a column of G are contiguous.
     const auto add_support = [&](int body, double sign) {
       if (body == 0) return;
       for (const auto& [start, size] : data.support_ranges[body - 1]) {
-        g.middleCols(start, size).noalias() +=
-            (sign * W_t).lazyProduct(rows.S_world.middleCols(start, size));
+        for (int col = start; col < start + size; ++col) {
+          const Eigen::Map<const Vec6> s(rows.S_world.col(col).data());
+          double* g = &rows.G(first, col);
+          for (int r = 0; r < n; ++r) g[r] += sign * rows.wrench_W[first + r].dot(s);
+        }
       }
     };
     add_support(b, 1.0);
@@ -219,6 +220,8 @@ void constraint_equations(const Model& model, Data& data, VecRef q, ConstraintRo
     acc.kind = Accelerations::whole;
     acc.gravity_W = spatial(Vec3::Zero(), model.gravity());
     acc.vdot = &data.vdot;
+  } else if (terms == RowTerms::with_wrench_rates) {
+    acc.kind = Accelerations::zero;
   }
   world_poses(model, data);
   if (acc.kind == Accelerations::velocity_products) bias_accelerations(model, data);

@@ -54,6 +54,9 @@ ConstraintSolver::ConstraintSolver(const model::Model& model)
   W_ = MatX::Zero(nf, m);
   A_ = MatX::Zero(m, m);
   Y_ = MatX::Zero(model.nv(), m);
+  Dinv_LGt_ = MatX::Zero(model.nv(), m);
+  du_ = VecX::Zero(model.nv());
+  active_.assign(m, 0);
   dv_ = VecX::Zero(nf);
   zero_ = VecX::Zero(model.nv());
   if (m > 0) iterate_data_ = std::make_unique<dynamics::Data>(model);
@@ -128,6 +131,7 @@ void ConstraintSolver::find_redundant_rows(dynamics::Data& data, VecRef q) {
 }
 
 bool ConstraintSolver::correct_accelerations(dynamics::Data& data, VecRef q, VecX& vdot) {
+  if (finishes_forward_dynamics()) return accelerations_with_row_forces(data, q, vdot);
   // λ from (G M⁻¹ Gᵀ) λ = −(G v̇₀ + k) (the full G: prescribed accelerations enter too). The
   // articulated method reads G v̇₀ + k off the bodies' accelerations of the free dynamics just
   // computed (vdot is data.vdot there); the dense one, the check, forms k and G v̇₀ apart.
@@ -155,6 +159,44 @@ bool ConstraintSolver::correct_accelerations(dynamics::Data& data, VecRef q, Vec
   }
   apply_row_forces(lambda_);
   for (int c = 0; c < static_cast<int>(free_.size()); ++c) vdot[free_[c]] += dv_[c];
+  return true;
+}
+
+bool ConstraintSolver::accelerations_with_row_forces(dynamics::Data& data, VecRef q, VecX& vdot) {
+  // (G M⁻¹ Gᵀ) λ = −(G v̇₀ + k) with M⁻¹ = Lᵀ D⁻¹ L: G M⁻¹ Gᵀ = (L Gᵀ)ᵀ D⁻¹ (L Gᵀ), and G v̇₀ + k
+  // as the rows' accelerations at v̇₀ (the adjoint of aba's pass 3) plus ẇ·(V_b − V_a); then
+  // v̇ = v̇₀ + Lᵀ D⁻¹ (L Gᵀ λ) is pass 3 run once, with the row forces. A row that exerts no force
+  // here (a zero row of G) has a zero row and column.
+  dynamics::constraint_equations(model_, data, q, rows_, dynamics::RowTerms::with_wrench_rates);
+  // Only the rows that exert a force here are `active` (the others' columns are not written).
+  const int active =
+      dynamics::articulated_row_factors(model_, data, rows_, Y_, Dinv_LGt_, rhs_, active_);
+  rhs_ += rows_.bias;  // G v̇₀ + k
+  A_.setZero();
+  for (int i = 0; i < active; ++i) {
+    const int c = active_[i];
+    for (int k = i; k < active; ++k) A_(active_[k], c) = Y_.col(active_[k]).dot(Dinv_LGt_.col(c));
+  }
+  cholesky_->factorize(A_, kDependentRow);
+  if (cholesky_->rank() < reference_rank_) return false;
+  rows_.bias = rhs_;
+  cholesky_->solve_in_place(rhs_);
+  lambda_ = -rhs_;
+  du_.setZero();
+  for (int i = 0; i < active; ++i) du_.noalias() += Y_.col(active_[i]) * lambda_[active_[i]];
+  const VecX& constrained = dynamics::aba_accelerate(model_, data, du_);
+  if (&vdot != &constrained) vdot = constrained;
+  // k, for whoever reads the rows: (G v̇₀ + k) − G v̇₀, with G v̇₀ = G v̇ − (G M⁻¹ Gᵀ) λ (0 on a
+  // row that exerts no force).
+  for (int i = 0; i < active; ++i) {
+    const int r = active_[i];
+    double G_vdot0 = rows_.G.row(r).dot(constrained);
+    for (int k = 0; k < active; ++k) {
+      const int c = active_[k];
+      G_vdot0 -= (c <= r ? A_(r, c) : A_(c, r)) * lambda_[c];
+    }
+    rows_.bias[r] -= G_vdot0;
+  }
   return true;
 }
 

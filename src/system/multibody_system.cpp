@@ -105,7 +105,7 @@ int MultibodySystem::nq() const { return model_.nq(); }
 int MultibodySystem::nv() const { return model_.nv(); }
 
 const VecX& MultibodySystem::compute(double t, const VecX& q, const VecX& v, model::Limit limit) {
-  free_dynamics(t, q, v, limit);
+  free_dynamics(t, q, v, limit, constraints_ && constraints_->finishes_forward_dynamics());
   if (constraints_) {
     if (!constraints_->correct_accelerations(data_, q_, data_.vdot)) {
       accelerations_at_singular_configuration(t, limit);
@@ -117,7 +117,8 @@ const VecX& MultibodySystem::compute(double t, const VecX& q, const VecX& v, mod
   return data_.vdot;
 }
 
-void MultibodySystem::free_dynamics(double t, const VecX& q, const VecX& v, model::Limit limit) {
+void MultibodySystem::free_dynamics(double t, const VecX& q, const VecX& v, model::Limit limit,
+                                    bool factors_only) {
   // Every signal once at t (offsets added), from the side `limit` says at a breakpoint.
   const auto& signals = model_.signals();
   for (std::size_t i = 0; i < signals.size(); ++i) {
@@ -145,6 +146,9 @@ void MultibodySystem::free_dynamics(double t, const VecX& q, const VecX& v, mode
   // generalized forces the prescription needs).
   if (prescribed) {
     dynamics::hybrid_dynamics(model_, data_, q_, v_, vdot_prescribed_, tau_elements_, f_ext);
+  } else if (factors_only) {
+    dynamics::aba_articulate(model_, data_, q_, v_, tau_elements_, f_ext);
+    data_.tau = tau_elements_;
   } else {
     dynamics::aba(model_, data_, q_, v_, tau_elements_, f_ext);
     data_.tau = tau_elements_;

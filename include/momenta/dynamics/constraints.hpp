@@ -43,8 +43,8 @@ struct ConstraintRows {
   std::vector<char> holonomic;  ///< per row: 1 for a position row
   VecX position;                ///< φ per row (m or rad); 0 on velocity-only rows
   MatX G;                       ///< count × nv
-  /// k = Ġ v per row (RowTerms::with_velocity_products), or G v̇ + k at data's accelerations
-  /// (RowTerms::with_acceleration_residual).
+  /// k = Ġ v per row (RowTerms::with_velocity_products), G v̇ + k at data's accelerations
+  /// (RowTerms::with_acceleration_residual), or ẇ·(V_b − V_a) (RowTerms::with_wrench_rates).
   VecX bias;
   std::vector<Vec6> wrench_W;       ///< per row: w_i on body b, in W about Wo; zero for a coupler
   std::vector<int> body_a, body_b;  ///< per row: the bodies w_i acts on (a may be the world, 0)
@@ -61,6 +61,9 @@ enum class RowTerms {
   /// and the bodies' accelerations data.A_gf): what the constraint solver's right-hand side
   /// needs, without the velocity-product pass over the bodies or the product G v̇.
   with_acceleration_residual,
+  /// ẇ·(V_b − V_a) in `bias` (0 for a coupler): the part of G v̇ + k that
+  /// articulated_row_factors' accelerations leave out (dynamics/articulated_solve.hpp).
+  with_wrench_rates,
 };
 
 /// φ, G and the wrenches at the configuration of `data`, whose X_PB and S must be those of q (set
@@ -68,7 +71,8 @@ enum class RowTerms {
 /// RowTerms::with_velocity_products, also k: data must then hold the velocities of (q, v) too
 /// (V_WB_B and c_B, from forward_kinematics(q, v), aba or hybrid_dynamics), and data.A_bias_B is
 /// set. With RowTerms::with_acceleration_residual, bias = G v̇ + k for the accelerations of the
-/// aba or hybrid_dynamics call that set data's velocities (data.A_bias_B is not set). Throws
+/// aba or hybrid_dynamics call that set data's velocities (data.A_bias_B is not set); with
+/// RowTerms::with_wrench_rates, bias = ẇ·(V_b − V_a), for data's velocities alone. Throws
 /// NumericalError when a constraint has no direction there (a distance link's points coincide, a
 /// rolling disk lies flat on its plane, a knife edge stands on its blade's end). No allocation.
 void constraint_equations(const Model& model, Data& data, VecRef q, ConstraintRows& rows,

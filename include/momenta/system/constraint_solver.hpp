@@ -10,10 +10,14 @@
 //
 //     M v̇ = τ − h + Gᵀλ,  G v̇ + k = 0   ⇒   (G M⁻¹ Gᵀ) λ = −k − G v̇₀,   v̇ = v̇₀ + M⁻¹ Gᵀ λ,
 //
-// M⁻¹ Gᵀ by the articulated-body factors the forward dynamics left behind (one pair of 6-vector
-// passes per row, dynamics/articulated_solve.hpp: O(n m), M never formed), and G M⁻¹ Gᵀ by a
-// Cholesky factorization in row order that skips rows depending on earlier ones (they carry no
-// force: λ = 0; dependent rows are redundant and name themselves, see redundant_rows()). The
+// inside the forward dynamics' articulated-body algorithm (M never formed; docs/constraints.md):
+// without prescribed joints ABA's first two passes, then one leaves-to-root pass of 6-vectors per
+// row that exerts a force — L Gᵀ with M⁻¹ = Lᵀ D⁻¹ L, and G v̇₀ by the adjoint of ABA's third
+// pass (dynamics/articulated_solve.hpp's articulated_row_factors) — and ABA's third pass once,
+// with the row forces Gᵀλ; with prescribed joints hybrid_dynamics, then M⁻¹ Gᵀ by a pair of
+// passes per row (articulated_solve). O(n m) either way. G M⁻¹ Gᵀ is factorized by a Cholesky
+// factorization in row order that skips rows depending on earlier ones (they carry no force:
+// λ = 0; dependent rows are redundant and name themselves, see redundant_rows()). The
 // former method — M by CRBA and its dense Cholesky factor, O(n³) — stays selectable
 // (AccelerationMethod::dense) as the independent check; the two agree to round-off.
 //
@@ -98,13 +102,22 @@ class ConstraintSolver {
   /// set).
   void set_acceleration_method(AccelerationMethod method) { method_ = method; }
 
-  /// Corrects the unconstrained accelerations vdot (size nv; prescribed coordinates kept) at
-  /// (t, q, v) to the constrained ones, stores λ and returns true. `data` holds what aba(q, v, …)
-  /// — or, where the model has prescribed joints, hybrid_dynamics(q, v, …) with data's
-  /// prescribed_mask — left in it (kinematics, the bodies' accelerations and the articulated-body
-  /// factors), and vdot is those accelerations (data.vdot, or a copy: the articulated method
-  /// reads G v̇ + k off the bodies' accelerations in data); the dense method's crba overwrites
-  /// its mass matrix. Returns
+  /// Whether correct_accelerations finishes the forward dynamics itself: the articulated method
+  /// on a model without prescribed joints, which needs only aba_articulate(q, v, …) before it
+  /// (the constraint forces enter aba's one pass 3, dynamics/articulated_solve.hpp's
+  /// articulated_row_factors). Otherwise the whole aba, or hybrid_dynamics, comes first.
+  bool finishes_forward_dynamics() const {
+    return method_ == AccelerationMethod::articulated && !model_.has_prescribed_joints();
+  }
+
+  /// Sets vdot (size nv) to the constrained accelerations at (t, q, v), stores λ and returns
+  /// true. `data` holds what aba(q, v, …) — or, where the model has prescribed joints,
+  /// hybrid_dynamics(q, v, …) with data's prescribed_mask — left in it (kinematics, the bodies'
+  /// accelerations and the articulated-body factors), and vdot is those accelerations (data.vdot,
+  /// or a copy), corrected here with prescribed coordinates kept; except where
+  /// finishes_forward_dynamics(), when aba_articulate's state is enough (a whole aba's does too),
+  /// vdot is only written and data's accelerations become the constrained ones. The dense
+  /// method's crba overwrites its mass matrix. Returns
   /// false, vdot and λ undetermined, at a singular configuration — fewer independent rows than
   /// at the reference (a four-bar at a dead point): the rows there do not fix the accelerations
   /// (MultibodySystem takes their limit along the motion). No allocation.
@@ -163,6 +176,9 @@ class ConstraintSolver {
   // Y = M⁻¹ Gᵀ over the rows in `mask` (other columns zero) by articulated_solve on data's
   // factors, and A = G Y factorized in row order.
   void factor_rows_articulated(dynamics::Data& data, std::span<const char> mask);
+  // correct_accelerations where finishes_forward_dynamics(): L Gᵀ, G M⁻¹ Gᵀ = (L Gᵀ)ᵀ D⁻¹ L Gᵀ
+  // and G v̇₀ from the articulated-body factors, λ, then aba's pass 3 with the row forces.
+  bool accelerations_with_row_forces(dynamics::Data& data, VecRef q, VecX& vdot);
   // The projection's metric M at (q, v) by the chosen method: its articulated-body factors in
   // `data` (aba, or hybrid_dynamics with the model's prescribed joints held, at zero forces), or
   // its Cholesky factor of the free coordinates.
@@ -177,10 +193,13 @@ class ConstraintSolver {
   std::vector<int> free_;  // velocity indices not prescribed
   std::vector<char> all_rows_, position_rows_;
   MatX M_ff_, G_f_, W_, A_;  // W = L⁻¹ G_fᵀ with M_ff = L Lᵀ; A = Wᵀ W
-  MatX Y_;                   // nv × rows: M⁻¹ Gᵀ (articulated; 0 on prescribed coordinates)
+  MatX Y_;                   // nv × rows: M⁻¹ Gᵀ (articulated; 0 on prescribed coordinates),
+                             // or L Gᵀ where finishes_forward_dynamics()
+  MatX Dinv_LGt_;            // nv × rows: D⁻¹ L Gᵀ, where finishes_forward_dynamics()
+  std::vector<int> active_;  // there: the rows that exert a force (nonzero rows of G)
   AccelerationMethod method_ = AccelerationMethod::articulated;
   Eigen::LLT<MatX> llt_;
-  VecX lambda_, rhs_, dv_, delta_, q_saved_, zero_;
+  VecX lambda_, rhs_, dv_, delta_, q_saved_, zero_, du_;
   // The projection's iterates' kinematics and rows (articulated method), apart from the metric's
   // factors in the caller's Data.
   std::unique_ptr<dynamics::Data> iterate_data_;

@@ -126,8 +126,10 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   // breakpoint), prescribed state, kinematics, force elements, forward dynamics.
   const VecX& compute(double t, const VecX& q, const VecX& v, model::Limit limit);
   // compute() up to the constraints: signals, the prescribed state, force elements and the
-  // unconstrained forward dynamics into data_.
-  void free_dynamics(double t, const VecX& q, const VecX& v, model::Limit limit);
+  // unconstrained forward dynamics into data_ — only aba_articulate's passes where `factors_only`
+  // (the constraint solver finishes aba with the constraint forces).
+  void free_dynamics(double t, const VecX& q, const VecX& v, model::Limit limit,
+                     bool factors_only = false);
   // At a singular configuration (the constraint rows lose rank: a dead point or a bifurcation
   // passed exactly, or the start there) the rows do not fix the accelerations; along the motion
   // they are continuous. Takes the mean of the accelerations and multipliers at the assembled
