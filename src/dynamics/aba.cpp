@@ -220,8 +220,8 @@ void aba_articulate(const Model& model, Data& data, VecRef q, VecRef v, VecRef t
 const VecX& aba_accelerate(const Model& model, Data& data, VecRef du) {
   const auto& joints = model.joint_constants();
   const int nj = static_cast<int>(joints.size());
-  const bool added = du.size() > 0;
-  if (added) detail::check_nv("aba_accelerate", "du", model, du);
+  const double* extra = du.size() > 0 ? du.data() : nullptr;  // the joints' du, if any
+  if (extra != nullptr) detail::check_nv("aba_accelerate", "du", model, du);
 
   // Pass 3 (root to leaves): accelerations; gravity as an upward acceleration of the base.
   const Vec6 a_base = spatial(Vec3::Zero(), -model.gravity());
@@ -236,7 +236,7 @@ const VecX& aba_accelerate(const Model& model, Data& data, VecRef du) {
       const double* U = data.U[j].data();
       double Ua = 0.0;
       for (int r = 0; r < 6; ++r) Ua += U[r] * a[r];
-      const double u = added ? data.u[j][0] + du[c.v_index] : data.u[j][0];
+      const double u = extra != nullptr ? data.u[j][0] + extra[c.v_index] : data.u[j][0];
       const double qdd = data.Dinv[j](0, 0) * (u - Ua);
       data.vdot[c.v_index] = qdd;
       if (c.S_basis >= 0) {
@@ -247,17 +247,16 @@ const VecX& aba_accelerate(const Model& model, Data& data, VecRef du) {
     } else if (c.nv > 0) {
       switch (c.nv) {
         case 2:
-          detail::accelerate<2>(data, j, c.v_index, added ? du.data() : nullptr, a);
+          detail::accelerate<2>(data, j, c.v_index, extra, a);
           break;
         case 3:
-          detail::accelerate<3>(data, j, c.v_index, added ? du.data() : nullptr, a);
+          detail::accelerate<3>(data, j, c.v_index, extra, a);
           break;
         case 6:
-          detail::accelerate<6>(data, j, c.v_index, added ? du.data() : nullptr, a);
+          detail::accelerate<6>(data, j, c.v_index, extra, a);
           break;
         default:
-          detail::accelerate<Eigen::Dynamic>(data, j, c.v_index, added ? du.data() : nullptr, a,
-                                             c.nv);
+          detail::accelerate<Eigen::Dynamic>(data, j, c.v_index, extra, a, c.nv);
           break;
       }
     }
