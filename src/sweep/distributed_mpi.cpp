@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <deque>
 #include <map>
 #include <mutex>
 #include <thread>
@@ -20,7 +21,7 @@ namespace momenta::sweep {
 namespace {
 
 constexpr int kRoot = 0;
-constexpr int kAskTag = 1;     // a rank's outcomes so far and how many runs it wants next
+constexpr int kAskTag = 1;     // a rank's outcomes so far and how many runs it wants (0: done)
 constexpr int kAssignTag = 2;  // rank 0's answer: the runs to do (none: done)
 
 // --- outcomes as bytes ----------------------------------------------------------------------
@@ -125,22 +126,87 @@ std::vector<char> receive(int from, int tag, int* source = nullptr) {
 
 // --- a rank other than 0 ------------------------------------------------------------------------
 
-void work_for_root(const SweepRunner& runner, int threads) {
-  Writer report;
-  report.put(static_cast<std::uint64_t>(threads));  // the first ask: no outcomes yet
+// The runs rank 0 has handed this rank and its threads' outcomes, shared by those threads and
+// the rank's MPI thread. The threads take runs as they free up; the MPI thread asks for more
+// while a few are still queued, so that no thread waits on a round trip to rank 0 or for the
+// slowest run of a batch (docs/sweeps.md, "On many cores").
+struct RankQueue {
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::deque<std::pair<std::uint64_t, long>> queued;           // position in rank 0's list, run
+  std::vector<std::pair<std::uint64_t, RunOutcome>> finished;  // not yet sent
+  int running = 0;
+  bool closed = false;  // no more runs will come (rank 0 has none, or this rank failed)
+
+  // Closes early (a failure on this rank): runs not yet started are dropped.
+  void close() {
+    const std::lock_guard lock(mutex);
+    closed = true;
+    queued.clear();
+    changed.notify_all();
+  }
+};
+
+void take_runs(const SweepRunner& runner, RankQueue& queue) {
+  std::unique_lock lock(queue.mutex);
   while (true) {
-    send(report.bytes, kRoot, kAskTag);
+    queue.changed.wait(lock, [&] { return !queue.queued.empty() || queue.closed; });
+    if (queue.queued.empty()) return;
+    const auto [position, run] = queue.queued.front();
+    queue.queued.pop_front();
+    ++queue.running;
+    queue.changed.notify_all();  // the MPI thread asks for more as the queue runs low
+    lock.unlock();
+    RunOutcome outcome = runner.run(run);
+    lock.lock();
+    --queue.running;
+    queue.finished.emplace_back(position, std::move(outcome));
+    queue.changed.notify_all();
+  }
+}
+
+void work_for_root(const SweepRunner& runner, int threads) {
+  // Asks again when fewer than `reserve` runs wait, for enough to keep every thread busy and
+  // `reserve` waiting: the round trip is hidden, and at the end of the list this rank holds at
+  // most `reserve` runs the others might have shared.
+  const int reserve = std::max(1, threads / 4);
+  RankQueue queue;
+  struct Closing {  // however this ends, the threads stop waiting for runs
+    RankQueue& queue;
+    ~Closing() { queue.close(); }
+  };
+  std::vector<std::jthread> pool;
+  const Closing closing{queue};  // after the pool: destroyed first, it closes before the join
+  for (int t = 0; t < threads; ++t) pool.emplace_back([&] { take_runs(runner, queue); });
+  std::uint64_t wanted = static_cast<std::uint64_t>(threads + reserve);
+  while (true) {
+    // Ask: the outcomes so far and how many runs are wanted (0: this rank is done).
+    std::vector<std::pair<std::uint64_t, RunOutcome>> finished;
+    {
+      const std::lock_guard lock(queue.mutex);
+      finished.swap(queue.finished);
+    }
+    Writer ask;
+    ask.put(wanted);
+    for (const auto& [position, outcome] : finished) put_outcome(ask, position, outcome);
+    send(ask.bytes, kRoot, kAskTag);
+    if (wanted == 0) return;
     const std::vector<char> assignment = receive(kRoot, kAssignTag);
     Reader r(assignment);
-    const auto first = r.get<std::uint64_t>();
-    std::vector<long> runs;
-    while (!r.done()) runs.push_back(static_cast<long>(r.get<std::int64_t>()));
-    if (runs.empty()) return;
-    report = Writer();
-    report.put(static_cast<std::uint64_t>(threads));
-    std::uint64_t position = first;
-    run_in_order(runner, runs, threads,
-                 [&](RunOutcome&& o) { put_outcome(report, position++, o); });
+    std::uint64_t position = r.get<std::uint64_t>();
+    std::unique_lock lock(queue.mutex);
+    if (r.done()) queue.closed = true;  // none: rank 0's list is exhausted (or it stopped)
+    while (!r.done())
+      queue.queued.emplace_back(position++, static_cast<long>(r.get<std::int64_t>()));
+    queue.changed.notify_all();
+    if (queue.closed) {
+      queue.changed.wait(lock, [&] { return queue.queued.empty() && queue.running == 0; });
+      wanted = 0;
+    } else {
+      queue.changed.wait(lock, [&] { return static_cast<int>(queue.queued.size()) < reserve; });
+      wanted = static_cast<std::uint64_t>(threads + reserve -
+                                          static_cast<int>(queue.queued.size()) - queue.running);
+    }
   }
 }
 
@@ -181,18 +247,22 @@ std::size_t lead(const MpiWorld& world, const SweepRunner& runner, std::span<con
     int rank = 0;
     const std::vector<char> ask = receive(MPI_ANY_SOURCE, kAskTag, &rank);
     Reader r(ask);
-    const auto wanted = std::max<std::uint64_t>(1, r.get<std::uint64_t>());
+    const auto wanted = r.get<std::uint64_t>();
     while (!r.done()) {
       auto [position, outcome] = get_outcome(r);
       pool.add(position, std::move(outcome));
     }
+    if (wanted == 0) {  // its last outcomes: that rank is done
+      --remote_working;
+      continue;
+    }
     Writer assignment;
-    const std::size_t first = stopped() ? runs.size() : next.fetch_add(wanted);
+    const std::size_t first =
+        stopped() ? runs.size() : std::min(next.fetch_add(wanted), runs.size());
     assignment.put(static_cast<std::uint64_t>(first));
     for (std::size_t p = first; p < std::min<std::size_t>(first + wanted, runs.size()); ++p) {
       assignment.put(static_cast<std::int64_t>(runs[p]));
     }
-    if (first >= runs.size()) --remote_working;
     send(assignment.bytes, rank, kAssignTag);
   }
   return delivered;

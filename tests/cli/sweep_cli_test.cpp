@@ -110,18 +110,23 @@ TEST_F(SweepCli, ThreadCountsRanksAndShardsGiveTheSameFile) {
 #ifdef MOMENTA_TEST_MPI
 TEST_F(SweepCli, MpiRanksGiveTheFileOneProcessWrites) {
   ASSERT_EQ(momenta("sweep " + kRide + " -o " + at("one.csv") + " --no-timing").code, 0);
-  for (const char* ranks : {"1", "2", "3"}) {
-    const std::string name = std::string("mpi") + ranks + ".csv";
+  // Ranks × threads: one thread a rank, and several (a rank's threads take the runs it was
+  // handed as they free up, and it asks for more before they run out).
+  const std::vector<std::pair<std::string, std::string>> splits = {
+      {"1", "1"}, {"2", "1"}, {"3", "1"}, {"2", "3"}};
+  for (const auto& [ranks, threads] : splits) {
+    const std::string name = "mpi" + ranks + "x" + threads + ".csv";
     // Under AddressSanitizer (CI's second build), OpenMPI's own allocations at exit are not
     // momenta's leaks: leak checking is off for the ranks.
-    const int code = shell(std::string("ASAN_OPTIONS=\"$ASAN_OPTIONS:detect_leaks=0\" "
-                                       "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
-                                       "OMPI_MCA_rmaps_base_oversubscribe=1 timeout 120 mpirun "
-                                       "--oversubscribe -n ") +
-                               ranks,
-                           "sweep " + kRide + " -o " + at(name) + " --no-timing --threads 1");
+    const int code =
+        shell(std::string("ASAN_OPTIONS=\"$ASAN_OPTIONS:detect_leaks=0\" "
+                          "OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 "
+                          "OMPI_MCA_rmaps_base_oversubscribe=1 timeout 120 mpirun "
+                          "--oversubscribe -n ") +
+                  ranks,
+              "sweep " + kRide + " -o " + at(name) + " --no-timing --threads " + threads);
     ASSERT_EQ(code, 0) << file("shell.out");
-    EXPECT_EQ(file(name), file("one.csv")) << ranks << " ranks";
+    EXPECT_EQ(file(name), file("one.csv")) << ranks << " ranks × " << threads << " threads";
     EXPECT_NE(file("shell.out").find(std::string("on ") + ranks + " ranks"), std::string::npos)
         << file("shell.out");
   }
