@@ -275,12 +275,20 @@ void run_sweep(const SweepOptions& o) {
 
     Progress progress(root && !o.quiet && isatty(STDERR_FILENO), runs.size());
     // A folder's CSV files are written by the threads that ran their runs (docs/sweeps.md, "On
-    // every core"); the rest is written here, in run order, by this one thread.
+    // every core"); under MPI another rank's are formatted by its threads, and written by rank
+    // 0's between their runs. The rest is written here, in run order, by this one thread.
+    const auto& trajectory_path = runner.spec().trajectories;
+    const bool csv_files = trajectory_path && sweep::stores_csv_files(*trajectory_path);
     const sweep::Finish finish = [&](sweep::RunOutcome& outcome) {
+      if (!root) {
+        if (csv_files) sweep::format_csv_trajectory(outcome);
+        return;
+      }
       if (!trajectories || !trajectories->writes_concurrently()) return;
       trajectories->write(outcome);
       outcome.trajectory = {};
       outcome.trajectory_columns = {};
+      outcome.trajectory_csv = {};
       outcome.trajectory_stored = true;
     };
     const sweep::Deliver deliver = [&](sweep::RunOutcome&& outcome) {

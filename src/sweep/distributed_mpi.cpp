@@ -88,6 +88,7 @@ void put_outcome(Writer& w, std::uint64_t position, const RunOutcome& o) {
   w.put(static_cast<std::uint64_t>(o.trajectory_columns.size()));
   for (const std::string& c : o.trajectory_columns) w.put(c);
   w.put(o.trajectory);
+  w.put(o.trajectory_csv);
 }
 
 std::pair<std::uint64_t, RunOutcome> get_outcome(Reader& r) {
@@ -102,6 +103,7 @@ std::pair<std::uint64_t, RunOutcome> get_outcome(Reader& r) {
   o.trajectory_columns.resize(r.get<std::uint64_t>());
   for (std::string& c : o.trajectory_columns) c = r.text();
   o.trajectory = r.numbers();
+  o.trajectory_csv = r.text();
   return {position, std::move(o)};
 }
 
@@ -147,7 +149,9 @@ struct RankQueue {
   }
 };
 
-void take_runs(const SweepRunner& runner, RankQueue& queue) {
+// One of the rank's threads: runs what is queued, each outcome through `finish` (if any) on this
+// thread; an outcome `finish` fails on goes to rank 0 as it is.
+void take_runs(const SweepRunner& runner, const Finish& finish, RankQueue& queue) {
   std::unique_lock lock(queue.mutex);
   while (true) {
     queue.changed.wait(lock, [&] { return !queue.queued.empty() || queue.closed; });
@@ -158,6 +162,12 @@ void take_runs(const SweepRunner& runner, RankQueue& queue) {
     queue.changed.notify_all();  // the MPI thread asks for more as the queue runs low
     lock.unlock();
     RunOutcome outcome = runner.run(run);
+    if (finish) {
+      try {
+        finish(outcome);
+      } catch (...) {  // rank 0 takes the outcome unfinished (and finishes it if it must)
+      }
+    }
     lock.lock();
     --queue.running;
     queue.finished.emplace_back(position, std::move(outcome));
@@ -165,7 +175,7 @@ void take_runs(const SweepRunner& runner, RankQueue& queue) {
   }
 }
 
-void work_for_root(const SweepRunner& runner, int threads) {
+void work_for_root(const SweepRunner& runner, int threads, const Finish& finish) {
   // Asks again when fewer than `reserve` runs wait, for enough to keep every thread busy and
   // `reserve` waiting: the round trip is hidden, and at the end of the list this rank holds at
   // most `reserve` runs the others might have shared.
@@ -177,7 +187,7 @@ void work_for_root(const SweepRunner& runner, int threads) {
   };
   std::vector<std::jthread> pool;
   const Closing closing{queue};  // after the pool: destroyed first, it closes before the join
-  for (int t = 0; t < threads; ++t) pool.emplace_back([&] { take_runs(runner, queue); });
+  for (int t = 0; t < threads; ++t) pool.emplace_back([&] { take_runs(runner, finish, queue); });
   std::uint64_t wanted = static_cast<std::uint64_t>(threads + reserve);
   while (true) {
     // Ask: the outcomes so far and how many runs are wanted (0: this rank is done).
@@ -250,7 +260,7 @@ std::size_t lead(const MpiWorld& world, const SweepRunner& runner, std::span<con
     const auto wanted = r.get<std::uint64_t>();
     while (!r.done()) {
       auto [position, outcome] = get_outcome(r);
-      pool.add(position, std::move(outcome));
+      pool.add_arrived(position, std::move(outcome));
     }
     if (wanted == 0) {  // its last outcomes: that rank is done
       --remote_working;
@@ -303,7 +313,7 @@ std::size_t run_across_ranks(const MpiWorld& world, const SweepRunner& runner,
                              std::span<const long> runs, int threads, const Deliver& deliver,
                              const std::atomic<bool>* stop, const Finish& finish) {
   if (world.rank() != kRoot) {
-    work_for_root(runner, threads);
+    work_for_root(runner, threads, finish);
     return 0;
   }
   return lead(world, runner, runs, threads, deliver, stop, finish);

@@ -1,5 +1,11 @@
 #include "momenta/sweep/trajectory_store.hpp"
 
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+
 #include <fmt/format.h>
 
 #include "momenta/common/error.hpp"
@@ -14,20 +20,39 @@ namespace {
 
 std::string run_name(long run) { return fmt::format("run_{:06d}", run); }
 
+// A run's table as `momenta simulate` writes it: the CSV file of a folder store.
+void write_table(const RunOutcome& outcome, simulate::CsvWriter& csv) {
+  csv.begin(outcome.trajectory_columns);
+  const std::size_t columns = outcome.trajectory_columns.size();
+  for (std::size_t at = 0; at + columns <= outcome.trajectory.size(); at += columns) {
+    csv.row(std::span(outcome.trajectory).subspan(at, columns));
+  }
+  csv.flush();
+}
+
 class CsvFolder final : public TrajectoryStore {
  public:
   explicit CsvFolder(std::filesystem::path folder) : folder_(std::move(folder)) {}
 
   void write(const RunOutcome& outcome) override {
     if (!outcome.ok) return;
-    // The table as `momenta simulate` writes it; a resumed sweep's run replaces its file.
-    simulate::CsvWriter csv(folder_ / (run_name(outcome.run) + ".csv"), true);
-    csv.begin(outcome.trajectory_columns);
-    const std::size_t columns = outcome.trajectory_columns.size();
-    for (std::size_t at = 0; at + columns <= outcome.trajectory.size(); at += columns) {
-      csv.row(std::span(outcome.trajectory).subspan(at, columns));
+    // A resumed sweep's run replaces its file.
+    const std::filesystem::path path = folder_ / (run_name(outcome.run) + ".csv");
+    if (outcome.trajectory_csv.empty()) {
+      simulate::CsvWriter csv(path, true);
+      write_table(outcome, csv);
+      return;
     }
-    csv.flush();
+    std::FILE* file = std::fopen(path.string().c_str(), "wb");  // formatted where it ran
+    if (file == nullptr) {
+      throw FileError(fmt::format("{}: cannot create the output file: {}", path.string(),
+                                  std::strerror(errno)));
+    }
+    const std::string& text = outcome.trajectory_csv;
+    const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
+    if (std::fclose(file) != 0 || !written) {
+      throw FileError(fmt::format("{}: writing failed: {}", path.string(), std::strerror(errno)));
+    }
   }
   bool writes_concurrently() const override { return true; }
 
@@ -95,6 +120,29 @@ bool is_hdf5_path(const std::filesystem::path& path) {
 }
 
 }  // namespace
+
+bool stores_csv_files(const std::filesystem::path& path) { return !is_hdf5_path(path); }
+
+void format_csv_trajectory(RunOutcome& outcome) {
+  if (!outcome.ok || outcome.trajectory_columns.empty()) return;
+  // The same CsvWriter as a folder's file, into memory (POSIX open_memstream).
+  char* data = nullptr;
+  std::size_t size = 0;
+  std::FILE* memory = open_memstream(&data, &size);
+  if (memory == nullptr) return;  // left as numbers: rank 0 formats them
+  bool formatted = true;
+  try {
+    simulate::CsvWriter csv(memory, "memory");
+    write_table(outcome, csv);
+  } catch (const FileError&) {
+    formatted = false;
+  }
+  std::fclose(memory);
+  const std::unique_ptr<char, void (*)(void*)> text(data, std::free);
+  if (!formatted) return;
+  outcome.trajectory_csv.assign(text.get(), size);
+  outcome.trajectory = {};
+}
 
 bool hdf5_available() {
 #ifdef MOMENTA_HDF5

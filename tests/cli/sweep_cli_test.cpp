@@ -132,22 +132,26 @@ TEST_F(SweepCli, MpiRanksGiveTheFileOneProcessWrites) {
   }
 }
 
-// Rank 0 writes every run's trajectory: its own threads' as they finish, the other ranks' as
-// they arrive. The files are those of one process.
+// Rank 0 writes every run's trajectory: its own threads' as they finish, the other ranks' (their
+// text formatted there) as they arrive. The files are those of one process.
 TEST_F(SweepCli, MpiRanksWriteTheTrajectoriesOneProcessWrites) {
   write_trajectory_sweep(dir_ / "one.yaml", "one");
   ASSERT_EQ(momenta("sweep " + at("one.yaml") + " -o " + at("one.csv") + " --no-timing").code, 0);
-  write_trajectory_sweep(dir_ / "mpi.yaml", "mpi");
-  const int code = shell(
-      "ASAN_OPTIONS=\"$ASAN_OPTIONS:detect_leaks=0\" OMPI_ALLOW_RUN_AS_ROOT=1 "
-      "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 timeout 120 mpirun "
-      "--oversubscribe -n 2",
-      "sweep " + at("mpi.yaml") + " -o " + at("mpi.csv") + " --no-timing --threads 1");
-  ASSERT_EQ(code, 0) << file("shell.out");
-  EXPECT_EQ(file("mpi.csv"), file("one.csv"));
-  for (int run = 0; run < 4; ++run) {
-    const std::string name = fmt::format("run_{:06d}.csv", run);
-    EXPECT_EQ(slurp(dir_ / "mpi" / name), slurp(dir_ / "one" / name)) << name;
+  for (const std::string threads : {"1", "3"}) {
+    const std::string mpi = "mpi" + threads;
+    write_trajectory_sweep(dir_ / (mpi + ".yaml"), mpi);
+    const int code = shell(
+        "ASAN_OPTIONS=\"$ASAN_OPTIONS:detect_leaks=0\" OMPI_ALLOW_RUN_AS_ROOT=1 "
+        "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 timeout 120 mpirun "
+        "--oversubscribe -n 2",
+        "sweep " + at(mpi + ".yaml") + " -o " + at(mpi + ".csv") + " --no-timing --threads " +
+            threads);
+    ASSERT_EQ(code, 0) << file("shell.out");
+    EXPECT_EQ(file(mpi + ".csv"), file("one.csv")) << threads << " threads";
+    for (int run = 0; run < 4; ++run) {
+      const std::string name = fmt::format("run_{:06d}.csv", run);
+      EXPECT_EQ(slurp(dir_ / mpi / name), slurp(dir_ / "one" / name)) << name;
+    }
   }
 }
 #endif

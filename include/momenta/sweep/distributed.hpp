@@ -47,8 +47,10 @@ class MpiWorld {
 /// the outcomes in list order, returning the count delivered (fewer when `stop` was raised). On
 /// the other ranks: runs what rank 0 hands out until it says it is done; `runs`, `deliver` and
 /// `stop` are not used and 0 is returned. Every rank must call it, after agree(true). `finish`
-/// takes rank 0's own outcomes on the threads that ran them (run_in_order); the other ranks'
-/// arrive unfinished.
+/// takes each outcome on the thread that ran it, on every rank (run_in_order), each rank's own
+/// `finish`: the other ranks' outcomes go to rank 0 as theirs left them (one it threw on, as it
+/// was), and there through rank 0's `finish` too, on one of its threads between its runs, before
+/// they are delivered. An exception from rank 0's `finish` fails the sweep.
 std::size_t run_across_ranks(const MpiWorld& world, const SweepRunner& runner,
                              std::span<const long> runs, int threads, const Deliver& deliver,
                              const std::atomic<bool>* stop = nullptr, const Finish& finish = {});

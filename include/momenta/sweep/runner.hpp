@@ -21,6 +21,9 @@ struct RunOutcome {
   /// Its whole table when the spec asks for trajectories (simulate jobs), row-major.
   std::vector<std::string> trajectory_columns;
   std::vector<double> trajectory;
+  /// Its table as the text of its CSV file, in place of `trajectory`: formatted on the MPI rank
+  /// that ran it (sweep/trajectory_store.hpp's format_csv_trajectory); empty otherwise.
+  std::string trajectory_csv;
   /// Whether the table is already stored (by the thread that ran it) and dropped from here.
   bool trajectory_stored = false;
 };

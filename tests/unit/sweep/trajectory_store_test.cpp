@@ -2,6 +2,7 @@
 // the HDF5 file (a dataset per run, its columns in an attribute) or the folder of CSV files.
 
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -46,6 +47,45 @@ TEST_F(TrajectoryStoreTest, AFolderGetsACsvFilePerRunWithEveryDigit) {
   // A folder with files in it is not written into without --force (or --resume).
   EXPECT_THROW(open_trajectory_store(dir_ / "runs", false, false), FileError);
   EXPECT_NO_THROW(open_trajectory_store(dir_ / "runs", true, false));
+}
+
+// Under MPI a rank other than 0 formats its runs' tables as text (format_csv_trajectory) and rank
+// 0 writes that text: the bytes a folder writes from the numbers, header quoting and the numbers'
+// shortest round-trip forms (NaN, a subnormal, the largest double) included.
+TEST_F(TrajectoryStoreTest, ATableFormattedWhereItRanIsTheFileAFolderWrites) {
+  RunOutcome numbers = table_of(3);
+  numbers.trajectory_columns = {"time", "f \"x\", N"};
+  numbers.trajectory.insert(numbers.trajectory.end(),
+                            {std::numeric_limits<double>::quiet_NaN(), 4.9e-324,
+                             std::numeric_limits<double>::max(), -1e-5});
+  RunOutcome text = numbers;
+  format_csv_trajectory(text);
+  EXPECT_TRUE(text.trajectory.empty());
+  EXPECT_EQ(text.trajectory_columns, numbers.trajectory_columns);
+  {
+    const auto from_numbers = open_trajectory_store(dir_ / "numbers", false, false);
+    from_numbers->write(numbers);
+    const auto from_text = open_trajectory_store(dir_ / "text", false, false);
+    from_text->write(text);
+  }
+  const auto slurp = [](const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream bytes;
+    bytes << in.rdbuf();
+    return bytes.str();
+  };
+  const std::string expected = slurp(dir_ / "numbers" / "run_000003.csv");
+  EXPECT_EQ(expected,
+            "time,\"f \"\"x\"\", N\"\n0,3\n0.5,3.1\n1,3.4\n1.5,3.9000000000000004\nnan,5e-324\n"
+            "1.7976931348623157e+308,-1e-05\n");
+  EXPECT_EQ(text.trajectory_csv, expected);
+  EXPECT_EQ(slurp(dir_ / "text" / "run_000003.csv"), expected);
+  // A failed run has no table: nothing to format, nothing written.
+  RunOutcome failed = table_of(4);
+  failed.ok = false;
+  format_csv_trajectory(failed);
+  EXPECT_TRUE(failed.trajectory_csv.empty());
+  EXPECT_EQ(failed.trajectory.size(), 8U);
 }
 
 #ifdef MOMENTA_TEST_HDF5
