@@ -19,7 +19,9 @@ about 50 ms) once per configuration and prints, for each:
   the run order) keeps of the cores;
 - CPU s per run: user + system time of the whole command per run; it stays put as threads are
   added when nothing spins or contends (also on a machine with fewer cores than threads);
-- whether the results are those of 1 thread, every column but wall_s compared as text.
+- whether the results are those of 1 thread, every column but wall_s compared as text;
+- schedule: the E the schedule alone allows N threads with the 1-thread run times (the last runs
+  end unevenly; sweep_schedule_model.py), the bound E·s approaches when nothing else is lost.
 
 Only the standard library: it runs wherever momenta does.
 """
@@ -35,6 +37,8 @@ import subprocess
 import sys
 import tempfile
 import time
+
+from sweep_schedule_model import continuous
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
@@ -125,20 +129,22 @@ def main():
     if reference is None:
         sys.exit("sweep_scaling: --threads must include 1 (the reference)")
     t1 = reference[2] - start
-    run1 = statistics.fmean(float(r["wall_s"]) for r in reference[4])
+    times1 = [float(r["wall_s"]) for r in reference[4]]
+    run1 = statistics.fmean(times1)
     print(f"{args.sweep.name}: {runs} runs, trajectories: {args.trajectories}; "
           f"{cores} cores here; process start {start:.3f} s")
     print("| ranks × threads | wall (s) | wall − start (s) | E | run slowdown s | E·s "
-          "| CPU s per run | same results |")
-    print("|---|---|---|---|---|---|---|---|")
+          "| schedule | CPU s per run | same results |")
+    print("|---|---|---|---|---|---|---|---|---|")
     for ranks, threads, wall, cpu, rows in results:
         n = ranks * threads
         efficiency = t1 / (n * (wall - start))
         slowdown = statistics.fmean(float(r["wall_s"]) for r in rows) / run1
         same = without_timing(rows) == without_timing(reference[4])
+        schedule = sum(times1) / (n * continuous(times1, n))
         print(f"| {ranks} × {threads} | {wall:.2f} | {wall - start:.2f} | {efficiency:.0%} "
-              f"| {slowdown:.2f} | {efficiency * slowdown:.0%} | {1000 * cpu / runs:.1f} ms "
-              f"| {'yes' if same else 'NO'} |")
+              f"| {slowdown:.2f} | {efficiency * slowdown:.0%} | {schedule:.0%} "
+              f"| {1000 * cpu / runs:.1f} ms | {'yes' if same else 'NO'} |")
 
 
 if __name__ == "__main__":
