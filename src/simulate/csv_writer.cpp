@@ -78,10 +78,12 @@ void CsvWriter::flush() {
   }
 }
 
-void CsvWriter::write_buffer() {
-  if (std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size()) {
+void CsvWriter::write_text(std::string_view text) {
+  if (std::fwrite(text.data(), 1, text.size(), file_) != text.size()) {
     throw FileError(fmt::format("{}: writing failed: {}", label_, std::strerror(errno)));
   }
 }
+
+void CsvWriter::write_buffer() { write_text(std::string_view(buffer_.data(), buffer_.size())); }
 
 }  // namespace momenta::simulate

@@ -1,9 +1,7 @@
 #include "momenta/sweep/trajectory_store.hpp"
 
-#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <memory>
 
 #include <fmt/format.h>
@@ -36,22 +34,13 @@ class CsvFolder final : public TrajectoryStore {
 
   void write(const RunOutcome& outcome) override {
     if (!outcome.ok) return;
-    // A resumed sweep's run replaces its file.
-    const std::filesystem::path path = folder_ / (run_name(outcome.run) + ".csv");
+    // A resumed sweep's run replaces its file; its text may have been formatted where it ran.
+    simulate::CsvWriter csv(folder_ / (run_name(outcome.run) + ".csv"), true);
     if (outcome.trajectory_csv.empty()) {
-      simulate::CsvWriter csv(path, true);
       write_table(outcome, csv);
-      return;
-    }
-    std::FILE* file = std::fopen(path.string().c_str(), "wb");  // formatted where it ran
-    if (file == nullptr) {
-      throw FileError(fmt::format("{}: cannot create the output file: {}", path.string(),
-                                  std::strerror(errno)));
-    }
-    const std::string& text = outcome.trajectory_csv;
-    const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
-    if (std::fclose(file) != 0 || !written) {
-      throw FileError(fmt::format("{}: writing failed: {}", path.string(), std::strerror(errno)));
+    } else {
+      csv.write_text(outcome.trajectory_csv);
+      csv.flush();
     }
   }
   bool writes_concurrently() const override { return true; }

@@ -147,11 +147,8 @@ void MultibodySystem::free_dynamics(double t, const VecX& q, const VecX& v, mode
   if (prescribed) {
     dynamics::hybrid_dynamics(model_, data_, q_, v_, vdot_prescribed_, tau_elements_, f_ext);
   } else {
-    if (factors_only) {
-      dynamics::aba_articulate(model_, data_, q_, v_, tau_elements_, f_ext);
-    } else {
-      dynamics::aba(model_, data_, q_, v_, tau_elements_, f_ext);
-    }
+    dynamics::aba_articulate(model_, data_, q_, v_, tau_elements_, f_ext);
+    if (!factors_only) dynamics::aba_accelerate(model_, data_);
     data_.tau = tau_elements_;
   }
 }

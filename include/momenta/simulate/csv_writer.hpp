@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -29,6 +30,9 @@ class CsvWriter final : public RowSink {
   /// FileError when the write fails (a full disk).
   void row(std::span<const double> values) override;
   void flush() override;
+  /// Writes text already in this format (a table formatted by another CsvWriter, into memory on
+  /// another MPI rank). Throws FileError when the write fails.
+  void write_text(std::string_view text);
 
  private:
   void write_buffer();
