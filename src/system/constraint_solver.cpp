@@ -41,6 +41,7 @@ ConstraintSolver::ConstraintSolver(const model::Model& model)
       rhs_(VecX::Zero(rows_.count)),
       delta_(VecX::Zero(model.nv())),
       q_saved_(VecX::Zero(model.nq())),
+      lambda_active_(VecX::Zero(rows_.count)),
       cholesky_(std::make_unique<detail::OrderedCholesky>(rows_.count)) {
   for (const model::Joint& j : model.joints()) {
     if (j.is_prescribed()) continue;
@@ -166,36 +167,39 @@ bool ConstraintSolver::accelerations_with_row_forces(dynamics::Data& data, VecRe
   // (G M⁻¹ Gᵀ) λ = −(G v̇₀ + k) with M⁻¹ = Lᵀ D⁻¹ L: G M⁻¹ Gᵀ = (L Gᵀ)ᵀ D⁻¹ (L Gᵀ), and G v̇₀ + k
   // as the rows' accelerations at v̇₀ (the adjoint of aba's pass 3) plus ẇ·(V_b − V_a); then
   // v̇ = v̇₀ + Lᵀ D⁻¹ (L Gᵀ λ) is pass 3 run once, with the row forces. A row that exerts no force
-  // here (a zero row of G) has a zero row and column.
+  // here (a zero row of G) has a zero row and column, which the ordered factorization would
+  // skip: the system is formed over the others alone (`active` of them, in row order), λ = 0 on it.
   dynamics::constraint_equations(model_, data, q, rows_, dynamics::RowTerms::with_wrench_rates);
-  // Only the rows that exert a force here are `active` (the others' columns are not written).
+  // Only the active rows' columns of Y_ and Dinv_LGt_ are written.
   const int active =
       dynamics::articulated_row_factors(model_, data, rows_, Y_, Dinv_LGt_, rhs_, active_);
   rhs_ += rows_.bias;  // G v̇₀ + k
-  A_.setZero();
+  rows_.bias = rhs_;
+  auto A = A_.topLeftCorner(active, active);  // lower triangle, over the active rows
+  auto b = lambda_active_.head(active);
   for (int i = 0; i < active; ++i) {
     const int c = active_[i];
-    for (int k = i; k < active; ++k) A_(active_[k], c) = Y_.col(active_[k]).dot(Dinv_LGt_.col(c));
+    for (int k = i; k < active; ++k) A(k, i) = Y_.col(active_[k]).dot(Dinv_LGt_.col(c));
+    b[i] = rhs_[c];
   }
-  cholesky_->factorize(A_, kDependentRow);
+  cholesky_->factorize(A, kDependentRow, std::span<const int>(active_).first(active));
   if (cholesky_->rank() < reference_rank_) return false;
-  rows_.bias = rhs_;
-  cholesky_->solve_in_place(rhs_);
-  lambda_ = -rhs_;
+  cholesky_->solve_in_place(b);
+  lambda_.setZero();
   du_.setZero();
-  for (int i = 0; i < active; ++i) du_.noalias() += Y_.col(active_[i]) * lambda_[active_[i]];
+  for (int i = 0; i < active; ++i) {
+    b[i] = -b[i];
+    lambda_[active_[i]] = b[i];
+    du_.noalias() += Y_.col(active_[i]) * b[i];
+  }
   const VecX& constrained = dynamics::aba_accelerate(model_, data, du_);
   if (&vdot != &constrained) vdot = constrained;
   // k, for whoever reads the rows: (G v̇₀ + k) − G v̇₀, with G v̇₀ = G v̇ − (G M⁻¹ Gᵀ) λ (0 on a
   // row that exerts no force).
   for (int i = 0; i < active; ++i) {
-    const int r = active_[i];
-    double G_vdot0 = rows_.G.row(r).dot(constrained);
-    for (int k = 0; k < active; ++k) {
-      const int c = active_[k];
-      G_vdot0 -= (c <= r ? A_(r, c) : A_(c, r)) * lambda_[c];
-    }
-    rows_.bias[r] -= G_vdot0;
+    double G_vdot0 = rows_.G.row(active_[i]).dot(constrained);
+    for (int k = 0; k < active; ++k) G_vdot0 -= (k <= i ? A(i, k) : A(k, i)) * b[k];
+    rows_.bias[active_[i]] -= G_vdot0;
   }
   return true;
 }

@@ -200,6 +200,7 @@ class ConstraintSolver {
   AccelerationMethod method_ = AccelerationMethod::articulated;
   Eigen::LLT<MatX> llt_;
   VecX lambda_, rhs_, dv_, delta_, q_saved_, zero_, du_;
+  VecX lambda_active_;  // accelerations_with_row_forces: λ over the active rows, in their order
   // The projection's iterates' kinematics and rows (articulated method), apart from the metric's
   // factors in the caller's Data.
   std::unique_ptr<dynamics::Data> iterate_data_;
