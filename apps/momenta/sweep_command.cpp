@@ -314,9 +314,18 @@ void run_sweep(const SweepOptions& o) {
     progress.clear();
     if (!root) return;
     if (delivered < runs.size()) {
-      throw Interrupted(fmt::format(
+      const std::string message = fmt::format(
           "interrupted: {} of {} runs written to {}; `momenta sweep {} -o {} --resume` goes on",
-          skipped + delivered, all.size(), o.output, o.sweep, o.output));
+          skipped + delivered, all.size(), o.output, o.sweep, o.output);
+      // Interrupted under mpirun, the whole job ends: mpirun sends every rank SIGTERM, then
+      // SIGKILL a second later, and MPI_Finalize (as `world` goes) waits on mpirun, which no
+      // longer answers. So it is said now, while mpirun still passes rank 0's words on.
+      if (world) {
+        fmt::print(stderr, "momenta: {}\n", message);
+        std::fflush(stderr);
+        throw QuietExit{130};
+      }
+      throw Interrupted(message);
     }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

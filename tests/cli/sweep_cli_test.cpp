@@ -2,6 +2,7 @@
 // count, MPI rank count or shard split; a killed sweep resumed to the file an uninterrupted one
 // writes; rows equal to `momenta simulate` and `momenta modes` runs of the changed model.
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
@@ -153,6 +154,49 @@ TEST_F(SweepCli, MpiRanksWriteTheTrajectoriesOneProcessWrites) {
       EXPECT_EQ(slurp(dir_ / mpi / name), slurp(dir_ / "one" / name)) << name;
     }
   }
+}
+
+// Ctrl-C under mpirun ends the whole job: mpirun sends every rank SIGTERM a second later and
+// SIGKILL a second after that, and MPI_Finalize waits on mpirun, which no longer answers. Rank 0
+// says how to go on before then; the rows written are whole. (960 runs of about 12 ms: the job
+// outlasts the second before the SIGTERM on any machine; the interrupt comes once rows are
+// written, whatever the build's speed. `timeout --foreground` passes the one SIGINT on to mpirun
+// alone: without it, timeout also signals its process group, and mpirun, seeing a second Ctrl-C,
+// kills the job at once.)
+TEST_F(SweepCli, AnInterruptedMpiSweepSaysHowToGoOn) {
+  std::ofstream(dir_ / "long.yaml")
+      << "model: " << std::filesystem::absolute("examples/quarter_car.yaml").string()
+      << "\nsimulation: {duration: 2.0, step: 0.001, integrator: rk4}\n"
+         "parameters:\n"
+         "  - {path: forces.suspension.stiffness, range: {from: 6e4, to: 2e5, count: 40}}\n"
+         "  - {path: forces.suspension.damping, range: {from: 2000, to: 20000, count: 24}}\n"
+         "metrics:\n  - max: body_y\n";
+  const std::string out = at("cut.csv");
+  const std::string script =
+      "ASAN_OPTIONS=\"$ASAN_OPTIONS:detect_leaks=0\" OMPI_ALLOW_RUN_AS_ROOT=1 "
+      "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1 timeout --foreground "
+      "120 mpirun --oversubscribe -n 2 " +
+      quoted(MOMENTA_CLI_PATH) + " sweep " + at("long.yaml") + " -o " + out +
+      " --no-timing --threads 1 >" + at("shell.out") + " 2>&1 & pid=$!; i=0; while [ \"$(cat " +
+      out +
+      " 2>/dev/null | wc -l)\" -lt 4 ] && [ $i -lt 3000 ] && kill -0 $pid 2>/dev/null; do sleep "
+      "0.02; i=$((i+1)); done; kill -INT $pid; wait $pid; echo $? >" +
+      at("code");
+  ASSERT_EQ(std::system(script.c_str()), 0);
+  const std::string said = file("shell.out");
+  EXPECT_NE(file("code").find("1"), std::string::npos) << file("code");  // mpirun's, not ours
+  const std::regex interrupted(
+      "momenta: interrupted: ([0-9]+) of 960 runs written to .*cut\\.csv; "
+      "`momenta sweep .*long\\.yaml -o .*cut\\.csv --resume` goes on");
+  std::smatch match;
+  ASSERT_TRUE(std::regex_search(said, match, interrupted)) << said;
+  const auto rows = lines_of(file("cut.csv"));
+  EXPECT_EQ(rows.size(), std::stoul(match[1]) + 1);  // the header and the runs it names
+  EXPECT_LT(rows.size(), 961U);
+  const auto commas = [](const std::string& row) {
+    return std::count(row.begin(), row.end(), ',');
+  };
+  for (const std::string& row : rows) EXPECT_EQ(commas(row), commas(rows[0])) << row;
 }
 #endif
 
