@@ -87,11 +87,11 @@ TEST_F(SweepCli, ThreadCountsRanksAndShardsGiveTheSameFile) {
   }
   // Three shards, merged (given out of order).
   for (int k = 1; k <= 3; ++k) {
-    const std::string name = "s" + std::to_string(k) + ".csv";
-    ASSERT_EQ(momenta("sweep " + kRide + " -o " + at(name) + " --no-timing --shard " +
-                      std::to_string(k) + "/3")
-                  .code,
-              0);
+    const std::string name = fmt::format("s{}.csv", k);
+    ASSERT_EQ(
+        momenta("sweep " + kRide + " -o " + at(name) + fmt::format(" --no-timing --shard {}/3", k))
+            .code,
+        0);
   }
   const CliRun merged = momenta("sweep-merge " + kRide + " " + at("s3.csv") + " " + at("s1.csv") +
                                 " " + at("s2.csv") + " -o " + at("merged.csv") + " --no-timing");
