@@ -174,7 +174,6 @@ bool ConstraintSolver::accelerations_with_row_forces(dynamics::Data& data, VecRe
   const int active =
       dynamics::articulated_row_factors(model_, data, rows_, Y_, Dinv_LGt_, rhs_, active_);
   rhs_ += rows_.bias;  // G v̇₀ + k
-  rows_.bias = rhs_;
   auto A = A_.topLeftCorner(active, active);  // lower triangle, over the active rows
   auto b = lambda_active_.head(active);
   for (int i = 0; i < active; ++i) {
@@ -184,6 +183,7 @@ bool ConstraintSolver::accelerations_with_row_forces(dynamics::Data& data, VecRe
   }
   cholesky_->factorize(A, kDependentRow, std::span<const int>(active_).first(active));
   if (cholesky_->rank() < reference_rank_) return false;
+  rows_.bias = rhs_;
   cholesky_->solve_in_place(b);
   lambda_.setZero();
   du_.setZero();
