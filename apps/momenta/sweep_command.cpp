@@ -6,6 +6,7 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
@@ -314,18 +315,15 @@ void run_sweep(const SweepOptions& o) {
     progress.clear();
     if (!root) return;
     if (delivered < runs.size()) {
-      const std::string message = fmt::format(
-          "interrupted: {} of {} runs written to {}; `momenta sweep {} -o {} --resume` goes on",
-          skipped + delivered, all.size(), o.output, o.sweep, o.output);
-      // Interrupted under mpirun, the whole job ends: mpirun sends every rank SIGTERM, then
-      // SIGKILL a second later, and MPI_Finalize (as `world` goes) waits on mpirun, which no
-      // longer answers. So it is said now, while mpirun still passes rank 0's words on.
-      if (world) {
-        fmt::print(stderr, "momenta: {}\n", message);
-        std::fflush(stderr);
-        throw QuietExit{130};
-      }
-      throw Interrupted(message);
+      // Said here, not by main: interrupted under mpirun, the whole job ends — mpirun sends every
+      // rank SIGTERM, then SIGKILL a second later, and MPI_Finalize (as `world` goes) waits on
+      // mpirun, which no longer answers.
+      fmt::print(stderr,
+                 "momenta: interrupted: {} of {} runs written to {}; `momenta sweep {} -o {} "
+                 "--resume` goes on\n",
+                 skipped + delivered, all.size(), o.output, o.sweep, o.output);
+      std::fflush(stderr);
+      throw QuietExit{130};
     }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -173,7 +173,7 @@ bool ConstraintSolver::accelerations_with_row_forces(dynamics::Data& data, VecRe
   // Only the active rows' columns of Y_ and Dinv_LGt_ are written.
   const int active =
       dynamics::articulated_row_factors(model_, data, rows_, Y_, Dinv_LGt_, rhs_, active_);
-  rhs_ += rows_.bias;  // G v̇₀ + k
+  rhs_ += rows_.bias;                         // G v̇₀ + k
   auto A = A_.topLeftCorner(active, active);  // lower triangle, over the active rows
   auto b = lambda_active_.head(active);
   for (int i = 0; i < active; ++i) {
