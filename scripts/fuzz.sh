@@ -8,6 +8,9 @@
 #
 # Each harness first replays tests/fuzz/regressions/<harness>/ (inputs that once crashed: they
 # must not again), then fuzzes a corpus seeded from examples/ and tests/fuzz/corpus/<harness>/.
+# The corpus is kept outside the checkout, like the compiler cache
+# (~/.cache/momenta/fuzz-corpus/<harness>, or MOMENTA_FUZZ_CORPUS/<harness>): each run on a machine
+# — CI's fresh clones included — goes on from the inputs the runs before it found.
 # Any crash, hang (> 10 s on one input), leak or sanitizer report fails the script; the input
 # that caused it is left in build-fuzz/artifacts/ — add it to tests/fuzz/regressions/<harness>/.
 set -euo pipefail
@@ -23,9 +26,10 @@ MOMENTA_TARGET="${harnesses[*]/%/_fuzz}" CXX=clang++ scripts/build.sh build-fuzz
   -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 mkdir -p build-fuzz/artifacts
+corpus_root=${MOMENTA_FUZZ_CORPUS:-${XDG_CACHE_HOME:-$HOME/.cache}/momenta/fuzz-corpus}
 seed() {  # harness, then the example files that seed it
   local harness=$1; shift
-  local corpus=build-fuzz/corpus/$harness
+  local corpus=$corpus_root/$harness
   mkdir -p "$corpus"
   for f in "$@" tests/fuzz/corpus/"$harness"/*; do [[ -f $f ]] && cp -f "$f" "$corpus/" || true; done
   echo "$corpus"
@@ -50,13 +54,23 @@ fuzz_harness() {
     echo "== $harness: replaying $regressions"
     "$binary" "$regressions"/* 2>&1 | tail -n 2
   fi
+  # libFuzzer leaves in the corpus the inputs of earlier runs that later ones superseded: past
+  # 2000 inputs the corpus is first cut to those that add coverage (its merge), so that loading
+  # it stays a small part of a run.
+  local corpus=${corpora[$harness]}
+  if (($(find "$corpus" -type f | wc -l) > 2000)); then
+    echo "== $harness: merging its corpus of $(find "$corpus" -type f | wc -l) inputs"
+    rm -rf "$corpus.merged" && mkdir -p "$corpus.merged"
+    "$binary" -merge=1 -timeout=10 -rss_limit_mb=2048 "$corpus.merged" "$corpus" \
+      >"$logs/$harness.merge" 2>&1 && rm -rf "$corpus" && mv "$corpus.merged" "$corpus"
+  fi
   local limit=(-max_total_time="$seconds")
   [[ -n "${MOMENTA_FUZZ_RUNS:-}" ]] && limit=(-runs="$MOMENTA_FUZZ_RUNS")
   echo "== $harness: fuzzing ${limit[*]}"
   # libFuzzer exits non-zero on a finding: that status is the harness's (the summary's grep must
   # not hide it).
   local status=0
-  "$binary" "${corpora[$harness]}" "${limit[@]}" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
+  "$binary" "$corpus" "${limit[@]}" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
     -artifact_prefix=build-fuzz/artifacts/"$harness"- -print_final_stats=1 \
     >"$logs/$harness.fuzz" 2>&1 || status=$?
   grep -E "^(#[0-9]+.*DONE|stat::number_of_executed_units|stat::average_exec_per_sec|==[0-9]+==ERROR|SUMMARY)" \

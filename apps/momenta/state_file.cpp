@@ -10,7 +10,6 @@
 #include <utility>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include "momenta/common/error.hpp"
 #include "momenta/io/state_file.hpp"
@@ -19,8 +18,6 @@
 #include "option_checks.hpp"
 
 namespace momenta::cli {
-
-using json = nlohmann::ordered_json;
 
 analysis::OperatingPoint read_state_file(const std::string& path, const model::Model& model) {
   const io::StateFile state = io::read_state_file(path, model.nq(), model.nv());

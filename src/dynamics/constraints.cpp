@@ -139,7 +139,10 @@ void assemble_jacobian(const Model& model, const Data& data, ConstraintRows& row
     }
   }
   for (int k = 0; k < static_cast<int>(rows.first_row.size()); ++k) {
-    const auto [first, end] = rows_of(rows, k);
+    // Named apart, not bound: the lambda below captures them (clang before 16 cannot capture a
+    // structured binding).
+    const std::pair<int, int> range = rows_of(rows, k);
+    const int first = range.first, end = range.second;
     const int a = rows.body_a[first], b = rows.body_b[first];
     if (a == b) continue;  // a coupler's row is written already
     const int n = end - first;

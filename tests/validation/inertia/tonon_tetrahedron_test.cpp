@@ -13,8 +13,10 @@
 
 #include <gtest/gtest.h>
 // Boost.Multiprecision's small-integer buffer trips GCC 12's -Wmaybe-uninitialized (a false
-// positive inside the library).
+// positive inside the library; clang has no such warning).
+#if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <boost/multiprecision/cpp_int.hpp>
 
 #include "momenta/inertia/mesh_mass_properties.hpp"
