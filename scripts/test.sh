@@ -11,7 +11,8 @@ if [[ "${1:-}" == "--sanitize" ]]; then
   export LSAN_OPTIONS="suppressions=$PWD/scripts/lsan-suppressions.txt:print_suppressions=0"
   # -Og -g1 (line tables for the reports' stack traces). Measured cold on this 2-core machine:
   # -O2 -g took twice the compile time of -O1 -g1; -Og takes a quarter less again (the build
-  # 11 min 16 s → 8 min 14 s, 1321 → 976 s of CPU) for tests that run 20 % longer (169 → 202 s).
+  # 11 min 16 s → 8 min 14 s, 1321 → 976 s of CPU) for tests that run up to 20 % longer (169 s
+  # at -O1; 172 and 202 s in two runs at -Og).
   # -Og is -O1 less the passes that hinder debugging: it hides no access from the sanitizers.
   BUILD_TYPE=RelWithDebInfo scripts/build.sh build-sanitize -DMOMENTA_SANITIZE=ON \
     -DMOMENTA_BUILD_BENCHMARKS=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-Og -g1 -DNDEBUG"
