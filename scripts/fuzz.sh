@@ -58,8 +58,10 @@ fuzz_harness() {
   # 2000 inputs the corpus is first cut to those that add coverage (its merge), so that loading
   # it stays a small part of a run.
   local corpus=${corpora[$harness]}
-  if (($(find "$corpus" -type f | wc -l) > 2000)); then
-    echo "== $harness: merging its corpus of $(find "$corpus" -type f | wc -l) inputs"
+  local inputs
+  inputs=$(find "$corpus" -type f | wc -l)
+  if ((inputs > 2000)); then
+    echo "== $harness: merging its corpus of $inputs inputs"
     rm -rf "$corpus.merged" && mkdir -p "$corpus.merged"
     "$binary" -merge=1 -timeout=10 -rss_limit_mb=2048 "$corpus.merged" "$corpus" \
       >"$logs/$harness.merge" 2>&1 && rm -rf "$corpus" && mv "$corpus.merged" "$corpus"
