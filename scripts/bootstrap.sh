@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ninja-build ccache pkg-config
   libeigen3-dev libfmt-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
   libassimp-dev libboost-dev libboost-math-dev libsundials-dev libtinyxml2-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libginac-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libginac-dev libssl-dev
   python3 python3-numpy python3-scipy
 )
 # The Python package (python/) and its tests, examples and notebook; left out by

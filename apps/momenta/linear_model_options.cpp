@@ -312,12 +312,17 @@ void print_matrix(const char* name, const MatX& M, const std::vector<std::string
   if (M.rows() == 0 || M.cols() == 0) return;
   std::size_t width = 0;
   for (const std::string& r : rows) width = std::max(width, r.size());
+  // Each column as wide as its whole name (road.position and road.position_rate stay apart).
+  std::vector<std::size_t> widths;
+  for (const std::string& c : columns) widths.push_back(std::max<std::size_t>(13, c.size()));
   fmt::print("  {:<{}}", "", width);
-  for (const std::string& c : columns) fmt::print(" {:>13.13}", c);
+  for (std::size_t k = 0; k < columns.size(); ++k) fmt::print(" {:>{}}", columns[k], widths[k]);
   fmt::print("\n");
   for (Eigen::Index i = 0; i < M.rows(); ++i) {
     fmt::print("  {:<{}}", rows[static_cast<std::size_t>(i)], width);
-    for (Eigen::Index k = 0; k < M.cols(); ++k) fmt::print(" {:>13.6g}", M(i, k) + 0.0);
+    for (Eigen::Index k = 0; k < M.cols(); ++k) {
+      fmt::print(" {:>{}.6g}", M(i, k) + 0.0, widths[static_cast<std::size_t>(k)]);
+    }
     fmt::print("\n");
   }
 }

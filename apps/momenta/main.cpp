@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "interrupt.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
 #include "stable_addresses.hpp"
@@ -74,6 +75,9 @@ void print_command_list() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // First of all: a stop asked for while the command line is parsed or the model read is kept
+  // for the run, not lost (apps/momenta/interrupt.hpp).
+  if (argc > 1 && momenta::cli::stops_on_request(argv[1])) momenta::cli::stop_on_signals();
   CLI::App app{
       "momenta — model, simulate and analyse mechanical systems from first principles.\n"
       "Run `momenta <command> --help` for a command's options and an example."};

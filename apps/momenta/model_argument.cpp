@@ -1,5 +1,7 @@
 #include "model_argument.hpp"
 
+#include <fmt/format.h>
+
 #include "momenta/frontend/model_loading.hpp"
 #include "option_checks.hpp"
 
@@ -21,7 +23,11 @@ io::ModelFile load_model(const ModelArgument& model) {
   io::ModelFileOptions options;
   options.package_path.assign(model.package_path.begin(), model.package_path.end());
   options.link_density = model.link_density;
-  return frontend::load_model(model.file, options);
+  io::ModelFile file = frontend::load_model(model.file, options);
+  // What the file says that is allowed but likely not meant: said before any result.
+  for (const std::string& warning : file.warnings)
+    fmt::print(stderr, "momenta: note: {}\n", warning);
+  return file;
 }
 
 }  // namespace momenta::cli

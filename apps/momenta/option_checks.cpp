@@ -87,6 +87,11 @@ CLI::Validator finite() {
   return bounded_number([](double) { return true; }, "a finite number", "NUMBER");
 }
 
+CLI::Validator finite_nonzero() {
+  return bounded_number([](double x) { return x != 0.0; }, "a finite number other than 0",
+                        "NUMBER");
+}
+
 CLI::Validator whole_number_from_one(long long most) {
   return CLI::Validator(
       [most](std::string& text) -> std::string {

@@ -30,6 +30,9 @@ CLI::Validator finite_within(double lo, double hi);
 /// Any finite number (a coordinate of a point).
 CLI::Validator finite();
 
+/// A finite number other than 0 (a step's height).
+CLI::Validator finite_nonzero();
+
 /// A whole number from 1 up (a row stride, a count).
 CLI::Validator whole_number_from_one(long long most = std::numeric_limits<int>::max());
 

@@ -31,6 +31,8 @@ struct ResponseOptions {
   std::string output;
   bool step = false;
   bool impulse = false;
+  // The step's height (or the impulse's area), in the input's unit: 500 for a 500 N force step.
+  double amplitude = 1.0;
   std::vector<double> bode;  // FMIN FMAX, rad/s
   std::optional<std::string> csv;
   bool force = false;
@@ -110,8 +112,10 @@ void run(const ResponseOptions& o) {
   std::optional<analysis::StepInfo> info;
   if (o.bode.empty()) {
     const analysis::TimeGrid grid{o.duration.value_or(0.0), o.points.value_or(0)};
-    const analysis::TimeResponse r =
+    analysis::TimeResponse r =
         o.step ? analysis::step_response(sys, 0, grid) : analysis::impulse_response(sys, 0, grid);
+    // The model is linear: a step of height a answers a times the unit step.
+    r.outputs *= o.amplitude;
     check_samples(o.step ? "step response" : "impulse response", r.time, "s", r.outputs);
     csv = fmt::format("time,{}\n", o.output);
     for (Eigen::Index k = 0; k < r.time.size(); ++k)
@@ -120,16 +124,24 @@ void run(const ResponseOptions& o) {
     if (o.step) {
       // The figures of the analytic response, refined from these samples (exact).
       info = analysis::step_info(sys, 0, 0, grid);
+      // Scaled as the samples are: the final value and the peak (|y|); times and % unchanged.
+      info->final_value *= o.amplitude;
+      info->peak *= std::abs(o.amplitude);
       // A figure with its unit, or "undefined" alone (an integrating model has no final value).
       const auto in = [&](double x, const char* unit) { return quantity_text(x, o.digits, unit); };
       summary += fmt::format(
-          "unit step: final value {}, rise time {}, settling time (2 %) {}, overshoot {}, peak {} "
+          "{}: final value {}, rise time {}, settling time (2 %) {}, overshoot {}, peak {} "
           "at {}\n",
+          o.amplitude == 1.0 ? std::string("unit step")
+                             : fmt::format("step of {}", number_text(o.amplitude, o.digits)),
           in(info->final_value, ""), in(info->rise_time, " s"), in(info->settling_time, " s"),
           in(info->overshoot, " %"), in(info->peak, ""), in(info->peak_time, " s"));
     } else {
-      summary += fmt::format("unit impulse: {} samples over {:.6g} s\n", r.time.size(),
-                             r.time[r.time.size() - 1]);
+      summary += fmt::format("{}: {} samples over {:.6g} s\n",
+                             o.amplitude == 1.0
+                                 ? std::string("unit impulse")
+                                 : fmt::format("impulse of {}", number_text(o.amplitude, o.digits)),
+                             r.time.size(), r.time[r.time.size() - 1]);
     }
   } else {
     const analysis::FrequencyResponse f =
@@ -161,6 +173,7 @@ void run(const ResponseOptions& o) {
     j["output"] = o.output;
     j["about"] = loaded.about;
     j["response"] = o.step ? "step" : o.impulse ? "impulse" : "bode";
+    if (o.bode.empty()) j["amplitude"] = o.amplitude;
     j["gain"] = tf.gain;
     j["relative_degree"] = tf.relative_degree();
     j["poles"] = complex_json(tf.poles);
@@ -231,6 +244,11 @@ void add_response_command(CLI::App& app) {
       ->add_option("--duration", options->duration,
                    "Step/impulse: last sample time, s (default: from the poles)")
       ->check(positive_finite());
+  command
+      ->add_option("--amplitude", options->amplitude,
+                   "Step/impulse: the step's height (the impulse's area) in the input's unit, "
+                   "e.g. 500 for a 500 N force (default 1, a unit step)")
+      ->check(finite_nonzero());
   command
       ->add_option("--points", options->points,
                    "Number of samples or frequencies (default: from the poles; 200 for Bode)")

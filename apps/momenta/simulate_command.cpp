@@ -186,6 +186,8 @@ void run(const SimulateOptions& o) {
   // Built before the output is opened: a bad option, or a run refused up front (a step count
   // past the limit), leaves no file behind.
   simulate::Simulation simulation(file.model, file.outputs, options);
+  // A stop asked for while the model was read: nothing has been written, and nothing will be.
+  throw_if_stop_requested("nothing was written");
 
   // Without -o, a terminal gets a short table; a pipe or a file gets every row as CSV.
   const bool preview_only = o.csv && !o.output && isatty(STDOUT_FILENO);

@@ -20,10 +20,12 @@
 #include "commands.hpp"
 #include "interrupt.hpp"
 #include "momenta/common/error.hpp"
+#include "momenta/io/files_read.hpp"
 #include "momenta/io/sweep_file.hpp"
 #include "momenta/report/report.hpp"
 #include "momenta/sweep/distributed.hpp"
 #include "momenta/sweep/execution.hpp"
+#include "momenta/sweep/inputs_digest.hpp"
 #include "momenta/sweep/results_file.hpp"
 #include "momenta/sweep/trajectory_store.hpp"
 #include "option_checks.hpp"
@@ -113,22 +115,15 @@ std::vector<long> runs_of(long run_count, const Shard& shard) {
   return runs;
 }
 
-// With --resume: the file must be this sweep's, of this model: written after the sweep and model
-// files were last changed (else the rows would mix two models), its runs the first of the list,
+// With --resume: the file must be this sweep's, of this model: each row made from the inputs the
+// sweep file and the files its model reads have now (else the rows would mix two models; by their
+// contents, not their times, which a copy or a checkout changes), its runs the first of the list,
 // each with the parameter values this sweep gives it (else they came from another range or
 // design with the same columns).
 std::size_t finished_prefix(const SweepOptions& o, const sweep::SweepRunner& runner,
-                            const std::vector<std::string>& header, const std::vector<long>& runs) {
-  for (const std::filesystem::path& input : {std::filesystem::path(o.sweep), runner.spec().model}) {
-    std::error_code ec;
-    if (std::filesystem::last_write_time(input, ec) > std::filesystem::last_write_time(o.output)) {
-      throw FileError(fmt::format(
-          "{}: {} changed after these results were written; resuming would mix two versions of "
-          "it in one file. Start over with --force, or write to another file",
-          o.output, input.string()));
-    }
-  }
-  const std::vector<long> finished = sweep::read_finished_runs(o.output, header);
+                            const std::vector<std::string>& header, const std::vector<long>& runs,
+                            const std::string& inputs) {
+  const std::vector<long> finished = sweep::read_finished_runs(o.output, header, inputs);
   const sweep::ResultsColumns written =
       sweep::read_result_columns(o.output, runner.parameter_columns());
   for (std::size_t i = 0; i < finished.size(); ++i) {
@@ -237,7 +232,10 @@ void run_sweep(const SweepOptions& o) {
   const bool root = !world || world->rank() == 0;
   try {
     check_input_file(o.sweep, "a sweep file");
+    // What the results are made from: the sweep file and every file its model reads.
+    io::FilesReadLog files_read;
     const sweep::SweepRunner runner(io::read_sweep_file(o.sweep));
+    const std::string inputs = sweep::inputs_digest(files_read.files());
     check_sweep_outputs(o, runner);
     const Shard shard = o.shard ? parse_shard(*o.shard, runner.run_count()) : Shard{};
     const std::vector<long> all = runs_of(runner.run_count(), shard);
@@ -256,7 +254,7 @@ void run_sweep(const SweepOptions& o) {
               fmt::format("{}: the report file exists; pass --force to overwrite it", o.report));
         }
         const bool resuming = o.resume && std::filesystem::exists(o.output);
-        if (resuming) skipped = finished_prefix(o, runner, header, all);
+        if (resuming) skipped = finished_prefix(o, runner, header, all, inputs);
         writer = std::make_unique<sweep::ResultsWriter>(o.output, header, o.force, resuming);
         if (const auto& path = runner.spec().trajectories) {
           std::filesystem::path where = *path;
@@ -293,7 +291,7 @@ void run_sweep(const SweepOptions& o) {
       outcome.trajectory_stored = true;
     };
     const sweep::Deliver deliver = [&](sweep::RunOutcome&& outcome) {
-      writer->write(sweep::results_row(outcome, !o.no_timing));
+      writer->write(sweep::results_row(outcome, !o.no_timing, inputs));
       if (trajectories && !outcome.trajectory_stored) trajectories->write(outcome);
       progress.count(outcome.ok);
     };

@@ -28,7 +28,8 @@ void check_options(const State& state, const RunOptions& options) {
   if (options.t_end + options.h == options.t_end || state.t + options.h == state.t) {
     throw InvalidArgument(fmt::format(
         "the step {:.3g} s is below the resolution of time at t = {:.6g} s (double precision "
-        "holds about 16 digits): no step would advance it; take a larger step",
+        "holds about 16 digits): no step would advance it; take a larger step or a shorter "
+        "duration",
         options.h, options.t_end));
   }
 }

@@ -12,6 +12,7 @@
 #include "model_file_internal.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
+#include "momenta/io/files_read.hpp"
 #include "part_file_internal.hpp"
 #include "yaml_access.hpp"
 
@@ -105,6 +106,7 @@ PathTarget find_target(const YAML::Node& root, const std::string& path) {
 
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
+  note_file_read(path);
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();

@@ -18,6 +18,7 @@
 
 #include "mesh_text_formats.hpp"
 #include "momenta/common/error.hpp"
+#include "momenta/io/files_read.hpp"
 
 namespace momenta::io {
 namespace {
@@ -173,6 +174,7 @@ inertia::TriangleMesh read_mesh_file(const std::filesystem::path& path, const Ve
   }
   const std::uintmax_t size = fs::file_size(path, error);
   if (error) throw FileError(fmt::format("{}: cannot read its size: {}", name, error.message()));
+  note_file_read(path);
   if (size == 0) throw FileError(fmt::format("{}: mesh file is empty", name));
   const std::string extension = lower(path.extension().string());
   Format format;

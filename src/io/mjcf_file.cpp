@@ -613,7 +613,8 @@ ModelFile MjcfReader::read() {
                    std::move(items),
                    std::move(parts),
                    {},
-                   std::move(notes)};
+                   std::move(notes),
+                   {}};
 }
 
 }  // namespace detail

@@ -90,18 +90,23 @@ const EntryType& entry_type(const YamlNode& entry, const std::vector<EntryType>&
 }
 
 std::optional<VecX> find_coordinates(const YamlNode& map, std::string_view key,
-                                     bool degrees_allowed, std::string_view why_not_degrees) {
+                                     bool degrees_allowed, std::string_view why_not_degrees,
+                                     bool rpm_allowed) {
   const std::string deg = fmt::format("{}_deg", key);
-  const std::array<std::string_view, 2> names = {key, deg};
-  const auto which = map.which_of(names);
+  const std::string rpm = fmt::format("{}_rpm", key);
+  const std::array<std::string_view, 3> names = {key, deg, rpm};
+  const auto which = map.which_of(rpm_allowed ? std::span<const std::string_view>(names)
+                                              : std::span<const std::string_view>(names).first(2));
   if (!which) return std::nullopt;
   const YamlNode node = map.at(*which);
-  if (*which == deg && !degrees_allowed) {
-    node.fail(fmt::format("degrees are not allowed here ({}): give '{}' in SI units",
-                          why_not_degrees, key));
+  if ((*which == deg || *which == rpm) && !degrees_allowed) {
+    node.fail(fmt::format("{} are not allowed here ({}): give '{}' in SI units",
+                          *which == deg ? "degrees" : "revolutions per minute", why_not_degrees,
+                          key));
   }
   VecX values = node.is_sequence() ? node.as_vector() : VecX::Constant(1, node.as_double());
   if (*which == deg) values *= std::numbers::pi / 180.0;
+  if (*which == rpm) values *= 2.0 * std::numbers::pi / 60.0;
   return values;
 }
 
@@ -228,8 +233,12 @@ model::SimulationSettings detail::read_simulation(const YamlNode& root) {
   if (!node || node->is_null()) return s;
   node->expect_map("a map {duration, step, integrator, rtol, atol, every, events}");
   node->check_keys({"duration", "step", "integrator", "rtol", "atol", "every", "events"});
+  s.position = {node->line(), node->column()};
   s.duration = node->find_number("duration", Bound::kPositive);
+  if (s.duration)
+    s.duration_position = {node->at("duration").line(), node->at("duration").column()};
   s.step = node->find_number("step", Bound::kPositive);
+  if (s.step) s.step_position = {node->at("step").line(), node->at("step").column()};
   s.relative_tolerance = node->find_number("rtol", Bound::kPositive);
   s.absolute_tolerance = node->find_number("atol", Bound::kPositive);
   if (const auto integrator = node->find("integrator")) {
@@ -292,16 +301,18 @@ ModelFile detail::compose_model_file(const YamlNode& root, const std::filesystem
   for (std::size_t b = 1; b < body_parts.size(); ++b) {
     body_parts[b] = std::move(ctx.body_parts[model.bodies()[b].name]);
   }
-  return ModelFile{std::move(name),
-                   std::move(description),
-                   std::move(model),
-                   std::move(outputs),
-                   simulation,
-                   root.file(),
-                   item_locations(ctx),
-                   std::move(body_parts),
-                   read_symbol_names(root),
-                   {}};
+  ModelFile file{std::move(name),
+                 std::move(description),
+                 std::move(model),
+                 std::move(outputs),
+                 simulation,
+                 root.file(),
+                 item_locations(ctx),
+                 std::move(body_parts),
+                 read_symbol_names(root),
+                 {},
+                 std::move(ctx.warnings)};
+  return file;
 }
 
 ModelFile read_model_file(const std::filesystem::path& path, const ModelFileOptions& options) {

@@ -62,6 +62,8 @@ struct Context {
   std::map<std::string, model::JointType, std::less<>> joint_types;
   /// What each body is made of, by body name, placed in its frame (ModelFile::body_parts).
   std::map<std::string, std::vector<PartSummary>, std::less<>> body_parts;
+  /// ModelFile::warnings, as the reader meets them.
+  std::vector<std::string> warnings;
 };
 
 /// The body `ref` names, which must be declared and may not be the world: a load, a wheel or a
@@ -101,9 +103,11 @@ void read_constraints(const YamlNode& root, Context& ctx, model::ModelBuilder& b
 std::vector<model::OutputSpec> read_outputs(const YamlNode& root, const Context& ctx,
                                             const model::Model& model);
 
-/// A list of numbers or a single number (one coordinate), with its unit converted: `key` in SI or
-/// `key_deg` in degrees where `degrees_allowed`. Nothing when neither key is present.
+/// A list of numbers or a single number (one coordinate), with its unit converted: `key` in SI,
+/// `key_deg` in degrees where `degrees_allowed`, and with `rpm_allowed` (a rate) `key_rpm` in
+/// revolutions per minute. Nothing when none of the keys is present.
 std::optional<VecX> find_coordinates(const YamlNode& map, std::string_view key,
-                                     bool degrees_allowed, std::string_view why_not_degrees);
+                                     bool degrees_allowed, std::string_view why_not_degrees,
+                                     bool rpm_allowed = false);
 
 }  // namespace momenta::io::detail

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -23,9 +24,9 @@ using model::JointType;
 // builder's 1e-9 check sees a unit vector.
 constexpr double kUnitTolerance = 1e-6;
 
-constexpr std::array<std::string_view, 14> kJointKeys = {
-    "name",  "type", "parent", "child", "in_parent", "in_child", "axis",
-    "axis2", "q0",   "q0_deg", "v0",    "v0_deg",    "damping",  "prescribed"};
+constexpr std::array<std::string_view, 15> kJointKeys = {
+    "name", "type",   "parent", "child",  "in_parent", "in_child", "axis",      "axis2",
+    "q0",   "q0_deg", "v0",     "v0_deg", "v0_rpm",    "damping",  "prescribed"};
 
 bool has_axis(JointType t) {
   return t == JointType::revolute || t == JointType::prismatic || t == JointType::cylindrical ||
@@ -102,7 +103,7 @@ std::string_view coordinate_units(JointType t) {
 
 // q0 and v0: a number (one coordinate) or a list, in SI or, for angles only, in degrees; a
 // spherical or free joint's q0 may be a pose map.
-void read_initial_state(const YamlNode& e, model::Joint& j) {
+void read_initial_state(const YamlNode& e, model::Joint& j, Context& ctx) {
   const std::string type(model::joint_type_name(j.type));
   const std::string not_angles = fmt::format("a {} joint's coordinates are not all angles", type);
   const auto size_check = [&](const VecX& values, std::string_view key, int expected) {
@@ -123,9 +124,25 @@ void read_initial_state(const YamlNode& e, model::Joint& j) {
       read_quaternion(e.at(key), Eigen::Vector4d(q0->segment<4>(k)), *q0, k);
     }
     j.q0 = *q0;
+    // An angle past a whole turn written in radians is more often degrees meant: said, not
+    // refused (a wound spring's 10 rad is meant).
+    if (key == "q0" && angles_only_q(j.type)) {
+      for (Eigen::Index i = 0; i < q0->size(); ++i) {
+        const double angle = (*q0)[i];
+        if (std::abs(angle) <= 2.0 * std::numbers::pi) continue;
+        const YamlNode node = e.at("q0");
+        ctx.warnings.push_back(
+            ParseError(node.file(), node.line(), node.column(),
+                       fmt::format("{}: {} rad is {:.3g} turns; if degrees are meant, write "
+                                   "q0_deg: {}",
+                                   node.key_path(), angle, angle / (2.0 * std::numbers::pi), angle))
+                .what());
+        break;
+      }
+    }
   }
-  if (auto v0 = find_coordinates(e, "v0", angles_only_v(j.type), not_angles)) {
-    size_check(*v0, e.has("v0") ? "v0" : "v0_deg", j.nv());
+  if (auto v0 = find_coordinates(e, "v0", angles_only_v(j.type), not_angles, true)) {
+    size_check(*v0, e.which_of({"v0", "v0_deg", "v0_rpm"}).value_or("v0"), j.nv());
     j.v0 = *v0;
   }
 }
@@ -136,7 +153,7 @@ void read_prescribed(const YamlNode& e, model::Joint& j, const Context& ctx) {
   const YamlNode node = e.at("prescribed");
   const std::string type(model::joint_type_name(j.type));
   if (j.nv() == 0) node.fail("a fixed joint has no motion to prescribe");
-  for (const std::string_view key : {"q0", "q0_deg", "v0", "v0_deg"}) {
+  for (const std::string_view key : {"q0", "q0_deg", "v0", "v0_deg", "v0_rpm"}) {
     if (e.has(key)) {
       e.at(key).fail("a prescribed joint takes its initial state from its signals: remove it");
     }
@@ -175,7 +192,8 @@ model::Joint read_joint(const YamlNode& e, Context& ctx) {
   if (!has_axis(j.type)) refuse("axis", "only revolute, prismatic, cylindrical, universal do");
   if (j.type != JointType::universal) refuse("axis2", "only the universal joint has two axes");
   if (j.nv() == 0) {
-    for (const std::string_view key : {"q0", "q0_deg", "v0", "v0_deg", "damping", "prescribed"}) {
+    for (const std::string_view key :
+         {"q0", "q0_deg", "v0", "v0_deg", "v0_rpm", "damping", "prescribed"}) {
       refuse(key, "it has no degrees of freedom");
     }
   }
@@ -194,7 +212,7 @@ model::Joint read_joint(const YamlNode& e, Context& ctx) {
   if (const auto pose = e.find("in_child")) j.X_CJ = read_pose(*pose);
   if (const auto axis = e.find("axis")) j.axis = read_axis(*axis);
   if (const auto axis2 = e.find("axis2")) j.axis2 = read_axis(*axis2);
-  read_initial_state(e, j);
+  read_initial_state(e, j, ctx);
   j.damping = e.find_number("damping", Bound::kNonNegative).value_or(0.0);
   if (e.has("prescribed")) read_prescribed(e, j, ctx);
   return j;

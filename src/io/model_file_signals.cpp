@@ -13,6 +13,7 @@
 #include "model_file_internal.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
+#include "momenta/io/files_read.hpp"
 
 namespace momenta::io::detail {
 namespace {
@@ -57,6 +58,7 @@ model::TableSignal read_csv_table(const YamlNode& ref, const std::filesystem::pa
                                           path.string()))
                         .what());
   }
+  note_file_read(path);
   model::TableSignal table;
   std::string line;
   int number = 0;

@@ -199,6 +199,12 @@ sweep::SweepSpec compose_sweep_file(const YamlNode& root, const std::filesystem:
   const auto file_key = root.which_of({"model", "part"});
   if (!file_key) root.fail("give the model file (model: FILE) or the part file (part: FILE)");
   spec.model = dir / root.at(*file_key).as_string();
+  // A folder (`model: .`) is refused here, at the key, not by the model reader without a line.
+  std::error_code error;
+  if (std::filesystem::is_directory(spec.model, error)) {
+    root.at(*file_key).fail(fmt::format("'{}' is a folder, not a {} file; name the file",
+                                        root.at(*file_key).as_string(), *file_key));
+  }
   constexpr std::array<std::string_view, 4> kJobs = {"simulate", "linearize", "modes", "inertia"};
   const std::string job = root.has("job")       ? choice(root.at("job"), kJobs)
                           : *file_key == "part" ? "inertia"

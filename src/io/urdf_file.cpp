@@ -389,7 +389,8 @@ ModelFile UrdfReader::read() {
       std::move(items),
       std::move(body_parts),
       {},
-      std::move(notes)};
+      std::move(notes),
+      {}};
 }
 
 // builder.build(), a joint that would carry only massless links said with the links that have

@@ -11,6 +11,7 @@
 
 #include "momenta/common/error.hpp"
 #include "momenta/common/one_line.hpp"
+#include "momenta/io/files_read.hpp"
 
 namespace momenta::io::detail {
 
@@ -93,6 +94,7 @@ model::Model build_at_lines(const model::ModelBuilder& builder,
 std::string read_xml_text(const std::string& path, std::string_view what) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError(fmt::format("{}: cannot open the {}", path, what));
+  note_file_read(path);
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();

@@ -1,6 +1,7 @@
 #include "momenta/io/yaml_reader.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -9,11 +10,13 @@
 #include <sstream>
 #include <string_view>
 #include <system_error>
+#include <vector>
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include "momenta/common/suggest.hpp"
+#include "momenta/io/files_read.hpp"
 #include "yaml_access.hpp"
 
 namespace momenta::io {
@@ -197,6 +200,63 @@ std::string describe(const YAML::Node& node) {
   return std::string(kind_of(node));
 }
 
+// Where the innermost flow sequence `[` or map `{` still open at byte `until` began (1-based
+// line and column), quoted strings and comments skipped; nothing when all are closed.
+std::optional<std::pair<int, int>> unclosed_flow_opener(const std::string& text,
+                                                        std::size_t until) {
+  std::vector<std::pair<int, int>> open;
+  int line = 1, column = 0;
+  char quote = 0;
+  bool comment = false;
+  for (std::size_t i = 0; i < std::min(until, text.size()); ++i) {
+    const char c = text[i];
+    ++column;
+    if (c == '\n') {
+      ++line;
+      column = 0;
+      comment = false;
+      continue;
+    }
+    if (comment) continue;
+    if (quote != 0) {
+      if (quote == '"' && c == '\\') {
+        ++i;
+        ++column;
+      } else if (c == quote) {
+        quote = 0;
+      }
+      continue;
+    }
+    if (c == '#' && (i == 0 || std::isspace(static_cast<unsigned char>(text[i - 1])))) {
+      comment = true;
+    } else if (c == '"' || c == '\'') {
+      quote = c;
+    } else if (c == '[' || c == '{') {
+      open.emplace_back(line, column);
+    } else if ((c == ']' || c == '}') && !open.empty()) {
+      open.pop_back();
+    }
+  }
+  if (open.empty()) return std::nullopt;
+  return open.back();
+}
+
+// yaml-cpp's message, and for a flow sequence or map that is not closed, where it began: the
+// parser notices only where the next key is.
+std::string malformed_message(const YAML::Exception& e, const std::string& text) {
+  std::string message = fmt::format("malformed YAML: {}", e.msg);
+  const bool flow_end =
+      e.msg == YAML::ErrorMsg::END_OF_SEQ_FLOW || e.msg == YAML::ErrorMsg::END_OF_MAP_FLOW;
+  if (!flow_end || e.mark.is_null() || e.mark.pos < 0) return message;
+  if (const auto opener = unclosed_flow_opener(text, static_cast<std::size_t>(e.mark.pos))) {
+    message +=
+        fmt::format(": the {} that begins at line {}, column {} has no closing {}",
+                    e.msg == YAML::ErrorMsg::END_OF_SEQ_FLOW ? "list [" : "map {", opener->first,
+                    opener->second, e.msg == YAML::ErrorMsg::END_OF_SEQ_FLOW ? "]" : "}");
+  }
+  return message;
+}
+
 }  // namespace
 
 YamlNode YamlNode::make(Impl impl) {
@@ -208,12 +268,9 @@ YamlNode YamlNode::load_string(const std::string& text, const std::string& file_
   YAML::Node root;
   try {
     root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    const auto [line, column] = position_of(e.mark);
-    throw ParseError(file_name, line, column, fmt::format("malformed YAML: {}", e.msg));
   } catch (const YAML::Exception& e) {
     const auto [line, column] = position_of(e.mark);
-    throw ParseError(file_name, line, column, fmt::format("malformed YAML: {}", e.msg));
+    throw ParseError(file_name, line, column, malformed_message(e, text));
   }
   if (!root.IsDefined() || root.IsNull()) {
     throw ParseError(file_name, 0, 0, "the file holds no YAML document (it is empty)");
@@ -247,6 +304,7 @@ YamlNode YamlNode::load_file(const std::filesystem::path& path) {
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError(fmt::format("{}: cannot open the file for reading", name));
+  note_file_read(path);
   std::ostringstream text;
   text << in.rdbuf();
   if (in.bad()) throw FileError(fmt::format("{}: read error", name));

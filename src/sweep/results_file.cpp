@@ -101,6 +101,16 @@ void check_header(const Lines& file, std::span<const std::string> header,
   if (file.lines.empty()) {
     throw ParseError(path.string(), 1, 1, "no header: not the results of a sweep");
   }
+  const std::vector<std::string> written = fields_of(file.lines[0]);
+  if (std::find(header.begin(), header.end(), "inputs") != header.end() &&
+      std::find(written.begin(), written.end(), "inputs") == written.end() &&
+      std::find(written.begin(), written.end(), "status") != written.end()) {
+    throw ParseError(path.string(), 1, 1,
+                     "the file does not record what its results were made from (no 'inputs' "
+                     "column: an earlier momenta wrote it), so it cannot be checked that the "
+                     "sweep and model files are unchanged. Start over with --force, or write to "
+                     "another file");
+  }
   if (file.lines[0] != header_line(header)) {
     throw ParseError(path.string(), 1, 1,
                      fmt::format("the columns differ from this sweep's ({}): the file holds the "
@@ -124,23 +134,35 @@ long run_of(const std::string& line, const std::filesystem::path& path, std::siz
   return run;
 }
 
+// The index of column `name` in `header` (header.size() when it has none).
+std::size_t column_index(std::span<const std::string> header, std::string_view name) {
+  return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+}
+
 }  // namespace
+
+bool is_own_results_column(std::string_view name) {
+  return name == "run" || name == "status" || name == "inputs" || name == "wall_s" ||
+         name == "message";
+}
 
 std::vector<std::string> results_header(const SweepRunner& runner, bool with_timing) {
   std::vector<std::string> header{"run"};
   header.insert(header.end(), runner.parameter_columns().begin(), runner.parameter_columns().end());
   header.insert(header.end(), runner.metric_columns().begin(), runner.metric_columns().end());
   header.emplace_back("status");
+  header.emplace_back("inputs");
   if (with_timing) header.emplace_back("wall_s");
   header.emplace_back("message");
   return header;
 }
 
-std::string results_row(const RunOutcome& outcome, bool with_timing) {
+std::string results_row(const RunOutcome& outcome, bool with_timing, std::string_view inputs) {
   std::string row = fmt::format("{}", outcome.run);
   for (double value : outcome.parameters) append_number(row, value);
   for (double value : outcome.metrics) append_number(row, value);
-  row += outcome.ok ? ",ok" : ",failed";
+  row += outcome.ok ? ",ok," : ",failed,";
+  row += inputs;
   if (with_timing) fmt::format_to(std::back_inserter(row), ",{:.6f}", outcome.wall_seconds);
   row += ',';
   row += quoted(outcome.message);
@@ -149,7 +171,7 @@ std::string results_row(const RunOutcome& outcome, bool with_timing) {
 }
 
 std::vector<long> read_finished_runs(const std::filesystem::path& path,
-                                     std::span<const std::string> header) {
+                                     std::span<const std::string> header, std::string_view inputs) {
   const Lines file = read_lines(path);
   check_header(file, header, path);
   if (file.partial_last) {
@@ -160,9 +182,18 @@ std::vector<long> read_finished_runs(const std::filesystem::path& path,
           fmt::format("{}: cannot cut the partial last row: {}", path.string(), error.message()));
     }
   }
+  const std::size_t inputs_column = column_index(header, "inputs");
   std::vector<long> runs;
   for (std::size_t i = 1; i < file.lines.size(); ++i) {
     runs.push_back(run_of(file.lines[i], path, i + 1, header.size()));
+    const std::string made_from = fields_of(file.lines[i])[inputs_column];
+    if (made_from != inputs) {
+      throw FileError(fmt::format(
+          "{}: row {} (run {}) was made from other inputs ({}) than the sweep file and the files "
+          "its model reads now ({}): one of them changed, and resuming would mix two models in "
+          "one file. Start over with --force, or write to another file",
+          path.string(), i + 1, runs.back(), made_from, inputs));
+    }
   }
   return runs;
 }
@@ -207,11 +238,27 @@ void merge_results(std::span<const std::filesystem::path> parts,
                    const std::filesystem::path& output, bool overwrite) {
   std::map<long, std::string> rows;
   std::map<long, std::string> source;
+  // Every row made from the same inputs as the first (shards of one sweep of one model).
+  const std::size_t inputs_column = column_index(header, "inputs");
+  std::string inputs, inputs_source;
   for (const std::filesystem::path& part : parts) {
     const Lines file = read_lines(part);
     check_header(file, header, part);
     for (std::size_t i = 1; i < file.lines.size(); ++i) {
       const long run = run_of(file.lines[i], part, i + 1, header.size());
+      if (inputs_column < header.size()) {
+        const std::string made_from = fields_of(file.lines[i])[inputs_column];
+        const std::string here = fmt::format("{}:{}", part.string(), i + 1);
+        if (inputs_source.empty()) {
+          inputs = made_from;
+          inputs_source = here;
+        } else if (made_from != inputs) {
+          throw InvalidArgument(fmt::format(
+              "{} was made from other inputs ({}) than {} ({}): the shards ran different sweep or "
+              "model files; run them again from one",
+              here, made_from, inputs_source, inputs));
+        }
+      }
       if (run >= run_count) {
         throw InvalidArgument(fmt::format("{}:{}: run {} is past this sweep's {} runs",
                                           part.string(), i + 1, run, run_count));

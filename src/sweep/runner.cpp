@@ -18,6 +18,7 @@
 #include "momenta/io/file_template.hpp"
 #include "momenta/simulate/run_request.hpp"
 #include "momenta/sweep/metrics.hpp"
+#include "momenta/sweep/results_file.hpp"
 
 namespace momenta::sweep {
 namespace {
@@ -125,6 +126,15 @@ SweepRunner::SweepRunner(SweepSpec spec)
                                    p.path, spec_.parameters[j].line));
       }
     }
+    // A parameter named like one of the results file's own columns would make the results
+    // ambiguous (a `status` parameter read as the runs' status); two of one name the reader
+    // refuses.
+    if (is_own_results_column(p.name)) {
+      throw error_at(spec_, p.line, p.column,
+                     fmt::format("parameter name '{}' is one of the results file's own columns "
+                                 "({}): give the parameter another name (name: ...)",
+                                 p.name, kOwnResultsColumns));
+    }
     parameter_columns_.push_back(p.name);
     try {
       parameter_units_.push_back(
@@ -159,9 +169,22 @@ SweepRunner::SweepRunner(SweepSpec spec)
   if (spec_.job == JobKind::kSimulate) {
     for (const Metric& m : spec_.metrics) job_->reactions |= m.kind == Kind::kMaxReaction;
     const io::ModelFile& file = job_->model->nominal();
-    simulate::Simulation nominal(file.model, file.outputs, job_->simulation_options(spec_, file));
-    recorded = nominal.column_names();
-    recorded_units = nominal.column_units();
+    // A run refused up front (a step below time's resolution at the duration, a step count past
+    // the limit) is refused at the sweep file's simulation section: its duration, or its step.
+    std::optional<simulate::Simulation> nominal;
+    try {
+      nominal.emplace(file.model, file.outputs, job_->simulation_options(spec_, file));
+    } catch (const InvalidArgument& e) {
+      const model::SimulationSettings& run = spec_.run;
+      const auto [key, at] =
+          run.duration_position.line > 0 ? std::pair{"simulation.duration: ", run.duration_position}
+          : run.step_position.line > 0   ? std::pair{"simulation.step: ", run.step_position}
+                                         : std::pair{"", run.position};
+      if (at.line == 0) throw;  // the model file's settings: its reader names them
+      throw error_at(spec_, at.line, at.column, key + one_line(e.what()));
+    }
+    recorded = nominal->column_names();
+    recorded_units = nominal->column_units();
   } else if (spec_.job == JobKind::kLinearize) {
     job_->linear_states =
         static_cast<int>(Job::linearize(spec_, job_->model->nominal()).system.A().rows());
@@ -189,8 +212,7 @@ SweepRunner::SweepRunner(SweepSpec spec)
     // Every results column once: a metric named like a parameter, another metric or one of
     // the file's own columns would make the results ambiguous.
     for (const std::string& column : columns) {
-      const bool reserved =
-          column == "run" || column == "status" || column == "wall_s" || column == "message";
+      const bool reserved = is_own_results_column(column);
       const bool taken = std::find(parameter_columns_.begin(), parameter_columns_.end(), column) !=
                              parameter_columns_.end() ||
                          std::find(metric_columns_.begin(), metric_columns_.end(), column) !=
@@ -198,9 +220,10 @@ SweepRunner::SweepRunner(SweepSpec spec)
       if (reserved || taken) {
         throw error_at(spec_, m.line, m.column,
                        fmt::format("metric column '{}' {}: give the metric another name", column,
-                                   reserved ? "is one of the results file's own columns (run, "
-                                              "status, wall_s, message)"
-                                            : "is already a column of the results"));
+                                   reserved ? fmt::format("is one of the results file's own "
+                                                          "columns ({})",
+                                                          kOwnResultsColumns)
+                                            : std::string("is already a column of the results")));
       }
     }
     metric_columns_.insert(metric_columns_.end(), columns.begin(), columns.end());

@@ -243,5 +243,103 @@ TEST_F(BadInputCli, InterruptLeavesWholeRows) {
   EXPECT_EQ(text.back(), '\n');
 }
 
+// Every line of a CSV has the header's number of columns and ends in a newline ("" passes: no
+// file was written).
+void expect_whole_rows(const std::string& text) {
+  if (text.empty()) return;
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  const auto columns = std::count(line.begin(), line.end(), ',');
+  int row = 0;
+  while (std::getline(in, line)) {
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), columns) << "row " << row;
+    ++row;
+  }
+  EXPECT_EQ(text.back(), '\n');
+}
+
+// Runs `momenta <args>` as a shell script's background job (SIGINT ignored until momenta takes
+// it), sends SIGINT as soon as /proc shows it caught (bit 2 of SigCgt), and returns the exit
+// status; a watchdog kills the run after 60 s (exit 137), so a lost signal fails, not hangs.
+int interrupt_once_caught(const std::string& args) {
+  const std::string command =
+      quoted(MOMENTA_CLI_PATH) + " " + args +
+      " & pid=$!; (sleep 60 & s=$!; trap \"kill $s; exit\" TERM; wait $s; kill -KILL $pid) "
+      ">/dev/null 2>&1 & watchdog=$!;"
+      " for i in $(seq 100000); do"
+      "   mask=$(sed -n 's/^SigCgt:[[:space:]]*//p' /proc/$pid/status 2>/dev/null);"
+      "   [ -n \"$mask\" ] && (( 0x$mask & 2 )) && break; done;"
+      " kill -INT $pid; wait $pid; code=$?; kill $watchdog; exit $code";
+  return std::system(("bash -c " + quoted(command)).c_str());
+}
+
+// A signal that comes as a run starts — while the model is read — is kept for the run, not lost.
+// A shell's background job starts with SIGINT ignored, and an ignored signal is discarded: momenta
+// takes SIGINT as main() begins, before the command line is parsed or the model read. The signal
+// goes as soon as /proc shows it caught (bit 2 of SigCgt), so before or while the model loads on
+// any machine but a very fast one; the run (100 000 s) must end within the watchdog's 60 s with
+// exit 130, no file or whole rows, and the reason said.
+TEST_F(BadInputCli, InterruptAsTheRunStartsIsHonoured) {
+  const fs::path csv = dir_ / "early.csv", err = dir_ / "err.txt";
+  const int status = interrupt_once_caught("simulate " + quoted(example("double_pendulum.yaml")) +
+                                           " --duration 100000 --every 10 -q -o " +
+                                           quoted(csv.string()) + " 2>" + quoted(err.string()));
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130) << slurp(err);
+  EXPECT_TRUE(has(slurp(err), "stopped")) << slurp(err);
+  expect_whole_rows(slurp(csv));
+}
+
+// The same while the model loads for long enough (a 300 000-row signal table, ~0.3 s here) that
+// the signal surely comes during it: the run never begins, and nothing is written. (Before the
+// handler was taken first, it came before the handler and was discarded, or, on a slow poll,
+// after the load, and the run began.)
+TEST_F(BadInputCli, InterruptWhileTheModelLoadsEndsBeforeTheRun) {
+  std::ofstream table(dir_ / "road.csv");
+  table << "time,value\n";
+  for (int i = 0; i < 300000; ++i) table << i * 0.001 << ',' << (i % 2 == 0 ? 0 : 500) << '\n';
+  table.close();
+  std::string car = slurp(example("cruise_control.yaml"));
+  const std::size_t step = car.find("    type: step");
+  ASSERT_NE(step, std::string::npos);
+  car.replace(step, car.find("final: 500.0") - step, "    type: table\n    csv: road.csv\n    ");
+  car.replace(car.find("final: 500.0"), 12, "");
+  std::ofstream(dir_ / "slow.yaml") << car;
+  const fs::path csv = dir_ / "slow.csv", err = dir_ / "err.txt";
+  const int status = interrupt_once_caught("simulate " + quoted((dir_ / "slow.yaml").string()) +
+                                           " --duration 100000 -q -o " + quoted(csv.string()) +
+                                           " 2>" + quoted(err.string()));
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130) << slurp(err);
+  EXPECT_TRUE(has(slurp(err), "stopped on request before the run began; nothing was written"))
+      << slurp(err);
+  EXPECT_FALSE(fs::exists(csv));
+}
+
+// With SIGINT's default action inherited (a terminal's foreground job), a signal at any moment
+// ends the run promptly: killed before main() (no file), or stopped by momenta with whole rows.
+// The delay counts from momenta's exec (/proc/PID/exe), not from the shell's fork: until `env`
+// has reset it, the background job's SIGINT is the shell's ignored one.
+TEST_F(BadInputCli, InterruptAtAnyMomentEndsTheRunPromptly) {
+  for (const char* delay : {"0", "0.005", "0.02", "0.05", "0.2"}) {
+    SCOPED_TRACE(delay);
+    const fs::path csv = dir_ / (std::string("at_") + delay + ".csv");
+    const std::string command =
+        "env --default-signal=INT " + quoted(MOMENTA_CLI_PATH) + " simulate " +
+        quoted(example("double_pendulum.yaml")) + " --duration 100000 --every 10 -q -o " +
+        quoted(csv.string()) +
+        " 2>/dev/null & pid=$!; (sleep 60 & s=$!; trap \"kill $s; exit\" TERM; wait $s; kill -KILL "
+        "$pid) >/dev/null 2>&1 &" +
+        " watchdog=$!; for i in $(seq 100000); do"
+        " [[ $(readlink /proc/$pid/exe) == */momenta ]] && break; done; sleep " +
+        delay + "; kill -INT $pid; wait $pid; code=$?; kill $watchdog; exit $code";
+    const int status = std::system(("bash -c " + quoted(command)).c_str());
+    ASSERT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 130);  // 128 + SIGINT, killed or stopped: not the watchdog's 137
+    expect_whole_rows(slurp(csv));
+  }
+}
+
 }  // namespace
 }  // namespace momenta

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -475,6 +476,42 @@ TEST_F(FirstHourCli, SweepsRefuseWhatWouldMixLoseOrExhaust) {
       " -o " + at("w.csv"));
   EXPECT_EQ(r.code, 1);
   EXPECT_TRUE(has(r.err, "is varied twice")) << r.err;
+  // A model that is a folder, and a duration no step can reach: refused at their lines and keys.
+  r = momenta("sweep " +
+              quoted(write("folder.yaml",
+                           "model: .\nparameters:\n  - {path: forces.suspension.stiffness, "
+                           "values: [6e4]}\nmetrics:\n  - max: body_y\n")
+                         .string()) +
+              " -o " + at("f.csv"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "folder.yaml:1:8: model: '.' is a folder, not a model file")) << r.err;
+  r = momenta("sweep " +
+              quoted(write("long.yaml", "model: " + source_dir() +
+                                            "/examples/quarter_car.yaml\n"
+                                            "simulation: {duration: 1e100}\nparameters:\n"
+                                            "  - {path: forces.suspension.stiffness, values: "
+                                            "[6e4]}\nmetrics:\n  - max: body_y\n")
+                         .string()) +
+              " -o " + at("l.csv"));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err,
+                  "long.yaml:2:24: simulation.duration: the step 0.001 s is below the "
+                  "resolution of time at t = 1e+100 s"))
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "l.csv"));
+  // A parameter named like one of the file's own columns: refused at its line.
+  for (const std::string name : {"run", "status", "inputs", "wall_s", "message"}) {
+    r = momenta("sweep " +
+                quoted(sweep_file("p.yaml", "  - {path: forces.suspension.stiffness, name: " +
+                                                name + ", values: [6e4, 8e4]}\n")
+                           .string()) +
+                " -o " + at("p.csv"));
+    EXPECT_EQ(r.code, 1) << name;
+    EXPECT_TRUE(has(r.err, "p.yaml:6:5: parameter name '" + name +
+                               "' is one of the results file's own columns"))
+        << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "p.csv"));
+  }
   for (const std::string metrics :
        {"  - {max: body_y, name: status}\n", "  - max: body_y\n  - max: body_y\n"}) {
     r = momenta("sweep " + quoted(sweep_file("m.yaml", grid, metrics).string()) + " -o " +
@@ -490,7 +527,8 @@ TEST_F(FirstHourCli, ResumeRefusesAnotherSweepsFileOrAChangedModel) {
   ASSERT_EQ(momenta("sweep " + quoted(first.string()) + " -o " + at("r.csv") + " --no-timing").code,
             0);
   const std::string written = slurp(dir_ / "r.csv");
-  // Another range with the same columns: its run 0 is not this file's run 0.
+  // Another range with the same columns, in a file older than the results: its run 0 is not
+  // this file's run 0, and the file's contents say so.
   const fs::path other = sweep_file(
       "other.yaml",
       "  - {path: forces.suspension.stiffness, name: ks, values: [6e4, 9e4, 1.2e5, 1.5e5]}\n");
@@ -498,17 +536,141 @@ TEST_F(FirstHourCli, ResumeRefusesAnotherSweepsFileOrAChangedModel) {
   CliRun r =
       momenta("sweep " + quoted(other.string()) + " -o " + at("r.csv") + " --no-timing --resume");
   EXPECT_EQ(r.code, 1);
-  EXPECT_TRUE(has(r.err, "written by another sweep")) << r.err;
+  EXPECT_TRUE(has(r.err, "was made from other inputs")) << r.err;
   EXPECT_EQ(slurp(dir_ / "r.csv"), written);
   // The sweep file changed after the results were written.
   const fs::path grown = sweep_file(
       "first.yaml",
       "  - {path: forces.suspension.stiffness, name: ks, values: [6e4, 8e4, 1e5, 1.2e5]}\n");
-  fs::last_write_time(grown, fs::last_write_time(dir_ / "r.csv") + std::chrono::hours(1));
   r = momenta("sweep " + quoted(grown.string()) + " -o " + at("r.csv") + " --no-timing --resume");
   EXPECT_EQ(r.code, 1);
-  EXPECT_TRUE(has(r.err, "changed after these results were written")) << r.err;
+  EXPECT_TRUE(has(r.err, "was made from other inputs")) << r.err;
   EXPECT_EQ(slurp(dir_ / "r.csv"), written);
+}
+
+// The model a sweep reads changed, but its file is older than the results (copied, checked out,
+// restored from a backup): refused by the files' contents, which every row records; the same
+// bytes at a newer time resume.
+TEST_F(FirstHourCli, ResumeChecksTheModelsContentsNotItsTime) {
+  const std::string car = slurp(source_dir() + "/examples/quarter_car.yaml");
+  ASSERT_TRUE(has(car, "mass: 375.0"));
+  const fs::path model = write("car.yaml", car);
+  const fs::path sweep =
+      write("s.yaml",
+            "model: car.yaml\njob: simulate\nsimulation: {duration: 0.05, step: 0.001}\n"
+            "parameters:\n  - {path: forces.suspension.stiffness, name: ks, values: [6e4, "
+            "8e4, 1e5]}\nmetrics:\n  - max: body_y\n");
+  ASSERT_EQ(momenta("sweep " + quoted(sweep.string()) + " -o " + at("r.csv") + " --no-timing").code,
+            0);
+  const std::string whole = slurp(dir_ / "r.csv");
+  const std::size_t header_end = whole.find('\n');
+  ASSERT_TRUE(has(whole.substr(0, header_end), ",status,inputs,message")) << whole;
+  // Keep the header and the first run, as a sweep killed after it would.
+  std::ofstream(dir_ / "r.csv", std::ios::binary)
+      << whole.substr(0, whole.find('\n', header_end + 1) + 1);
+  const auto results_time = fs::last_write_time(dir_ / "r.csv");
+  std::string heavier = car;
+  heavier.replace(heavier.find("mass: 375.0"), 11, "mass: 400.0");
+  write("car.yaml", heavier);
+  fs::last_write_time(model, results_time - std::chrono::hours(24));
+  CliRun r =
+      momenta("sweep " + quoted(sweep.string()) + " -o " + at("r.csv") + " --no-timing --resume");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "row 2 (run 0) was made from other inputs")) << r.err;
+  EXPECT_TRUE(has(r.err, "resuming would mix two models")) << r.err;
+  // The original bytes again, newer than the results: the same inputs, so the sweep goes on.
+  write("car.yaml", car);
+  fs::last_write_time(model, results_time + std::chrono::hours(1));
+  r = momenta("sweep " + quoted(sweep.string()) + " -o " + at("r.csv") + " --no-timing --resume");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(slurp(dir_ / "r.csv"), whole);
+  // A results file that does not record its inputs (an earlier momenta's) is refused, saying so.
+  std::ofstream(dir_ / "old.csv", std::ios::binary)
+      << "run,ks,max(body_y),status,message\n0,60000,0.1,ok,\n";
+  r = momenta("sweep " + quoted(sweep.string()) + " -o " + at("old.csv") + " --no-timing --resume");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "does not record what its results were made from")) << r.err;
+}
+
+// What a student writing the notes' problems from scratch met, each as they met it.
+TEST_F(FirstHourCli, LinearizeShowsEachColumnsWholeName) {
+  const CliRun r = momenta("linearize " + source_dir() + "/examples/cruise_control.yaml");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::size_t a = r.out.find("A (2×2):\n");
+  ASSERT_NE(a, std::string::npos) << r.out;
+  const std::string header = r.out.substr(a, r.out.find('\n', r.out.find('\n', a) + 1) - a);
+  EXPECT_TRUE(has(header, " road.position ")) << header;
+  EXPECT_TRUE(has(header, " road.position_rate")) << header;
+}
+
+// The cruise car's 500 N step (Franklin ch. 2: m v̇ + b v = u): final speed u/b = 10 m/s, rise
+// time (10 % → 90 %) ln 9 · m/b = 43.944491546724 s, the same as the unit step's.
+TEST_F(FirstHourCli, ResponseTakesTheStepsAmplitude) {
+  const std::string car = source_dir() + "/examples/cruise_control.yaml";
+  const CliRun unit = momenta("response " + car + " --input u --output speed --step");
+  ASSERT_EQ(unit.code, 0) << unit.err;
+  EXPECT_TRUE(has(unit.out, "unit step: final value 0.02,")) << unit.out;
+  const CliRun step =
+      momenta("response " + car + " --input u --output speed --step --amplitude 500");
+  ASSERT_EQ(step.code, 0) << step.err;
+  EXPECT_TRUE(has(step.out, "step of 500: final value 10, rise time 43.94449155 s")) << step.out;
+  const CliRun csv = momenta("response " + car +
+                             " --input u --output speed --step --amplitude 500 --points 3 "
+                             "--duration 20 --csv -");
+  ASSERT_EQ(csv.code, 0) << csv.err;
+  // v(20 s) = 10 (1 − e⁻¹) m/s.
+  const std::string last = csv.out.substr(csv.out.rfind("\n", csv.out.size() - 2) + 1);
+  EXPECT_NEAR(std::stod(last.substr(last.find(',') + 1)), 10.0 * (1.0 - std::exp(-1.0)), 1e-9)
+      << csv.out;
+  EXPECT_EQ(momenta("response " + car + " --input u --output speed --step --amplitude 0").code, 2);
+}
+
+// A revolute q0 past a whole turn is taken as written, in radians, with a note at its line; a
+// spinning joint's rate in rpm.
+TEST_F(FirstHourCli, AJointAngleBeyondATurnIsNotedAndRatesTakeRpm) {
+  std::string pendulum = slurp(source_dir() + "/examples/pendulum.yaml");
+  ASSERT_TRUE(has(pendulum, "q0_deg: 120 ") && has(pendulum, "v0: 0 ")) << pendulum;
+  pendulum.replace(pendulum.find("q0_deg: 120 "), 12, "q0: 30 ");
+  pendulum.replace(pendulum.find("v0: 0 "), 6, "v0_rpm: 60 ");
+  const fs::path model = write("p.yaml", pendulum);
+  const CliRun r =
+      momenta("simulate " + quoted(model.string()) + " --duration 0.001 -o " + at("p.csv"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(has(r.err, "momenta: note: " + model.string() + ":")) << r.err;
+  EXPECT_TRUE(has(r.err, "q0: 30 rad is 4.77 turns; if degrees are meant, write q0_deg: 30"))
+      << r.err;
+  // The first row: q = 30 rad, v = 60 rpm = 2π rad/s.
+  const std::string csv = slurp(dir_ / "p.csv");
+  const std::string first = csv.substr(csv.find('\n') + 1);
+  std::vector<double> cells;
+  std::istringstream in(first.substr(0, first.find('\n')));
+  for (std::string cell; std::getline(in, cell, ',');) cells.push_back(std::stod(cell));
+  ASSERT_GE(cells.size(), 3U);
+  EXPECT_EQ(cells[1], 30.0);
+  EXPECT_NEAR(cells[2], 2.0 * std::numbers::pi, 1e-15);
+  // In degrees, no note.
+  std::string degrees = pendulum;
+  degrees.replace(degrees.find("q0: 30"), 6, "q0_deg: 30");
+  const CliRun quiet = momenta("simulate " + quoted(write("d.yaml", degrees).string()) +
+                               " --duration 0.001 -o " + at("d.csv"));
+  ASSERT_EQ(quiet.code, 0) << quiet.err;
+  EXPECT_FALSE(has(quiet.err, "note:")) << quiet.err;
+}
+
+// A flow list or map left open: the parser notices at the next key; the message says where it
+// began.
+TEST_F(FirstHourCli, AnUnclosedListIsNamedWhereItBegan) {
+  const fs::path list = write("l.yaml", "name: x\nbodies: [a, b\njoints: []\n");
+  CliRun r = momenta("info " + quoted(list.string()));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "the list [ that begins at line 2, column 9 has no closing ]")) << r.err;
+  const fs::path map =
+      write("m.yaml",
+            "name: x  # a comment with [ and {\nbodies:\n  - {name: 'a[', mass: 1\n"
+            "joints: []\n");
+  r = momenta("info " + quoted(map.string()));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err, "the map { that begins at line 3, column 5 has no closing }")) << r.err;
 }
 
 }  // namespace first_hour

@@ -31,6 +31,11 @@ class SweepCli : public CliTest {
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
   std::string file(const std::string& name) const { return slurp(dir_ / name); }
+  // A results file with its `inputs` cells blanked: for sweeps of two sweep files that differ in
+  // their trajectories' folder alone, whose inputs differ as their bytes do.
+  std::string file_but_inputs(const std::string& name) const {
+    return std::regex_replace(file(name), std::regex(",sha256:[0-9a-f]{16},"), ",,");
+  }
   // Starts a sweep in the background and kills it (SIGKILL: no chance to tidy up) as soon as its
   // file holds a few rows, whatever the build's speed (a fixed timeout killed a sanitizer build
   // before its first row). Gives up waiting after 60 s.
@@ -105,7 +110,7 @@ TEST_F(SweepCli, ThreadCountsRanksAndShardsGiveTheSameFile) {
   // The default file carries each run's wall time: the same rows but for that column.
   ASSERT_EQ(momenta("sweep " + kRide + " -o " + at("timed.csv")).code, 0);
   const auto timed = lines_of(file("timed.csv"));
-  EXPECT_EQ(cells_of(timed[0]).at(9), "wall_s");
+  EXPECT_EQ(cells_of(timed[0]).at(10), "wall_s");
 }
 
 #ifdef MOMENTA_TEST_MPI
@@ -148,7 +153,7 @@ TEST_F(SweepCli, MpiRanksWriteTheTrajectoriesOneProcessWrites) {
         "sweep " + at(mpi + ".yaml") + " -o " + at(mpi + ".csv") + " --no-timing --threads " +
             threads);
     ASSERT_EQ(code, 0) << file("shell.out");
-    EXPECT_EQ(file(mpi + ".csv"), file("one.csv")) << threads << " threads";
+    EXPECT_EQ(file_but_inputs(mpi + ".csv"), file_but_inputs("one.csv")) << threads << " threads";
     for (int run = 0; run < 4; ++run) {
       const std::string name = fmt::format("run_{:06d}.csv", run);
       EXPECT_EQ(slurp(dir_ / mpi / name), slurp(dir_ / "one" / name)) << name;

@@ -222,12 +222,20 @@ export class Motion {
   buildVectors(frames) {
     const maxOf = (array) => { let m = 0; for (let i = 0; i < array.length; i += 3) m = Math.max(m, Math.hypot(array[i], array[i + 1], array[i + 2])); return m; };
     const scaleFor = (maximum) => (maximum > 0 ? (0.6 * this.length) / maximum : 1);
-    this.omegaScale = scaleFor(maxOf(this.omega));
+    // The display rule (house style §11): ω that turns no body by a nanoradian over the whole run
+    // is round-off (7.7e-34 rad/s at rest), and so is H below that ω times the bodies' inertia:
+    // neither has an arrow or a scale then.
+    const span = Math.max(this.time[this.time.length - 1] - this.time[0], 1e-300);
+    const omegaMax = maxOf(this.omega);
+    this.omegaShown = omegaMax * span > 1e-9;
+    this.omegaScale = scaleFor(omegaMax);
     // H of each body about its centre of mass: R I_Bcm Rᵀ ω, in W.
     let hmax = 0;
     for (let k = 0; k < this.time.length; k++) {
       for (let b = 0; b < this.nb; b++) hmax = Math.max(hmax, Math.hypot(...this.momentumAt(k, b)));
     }
+    const inertia = Math.max(0, ...this.bodies.map((b) => (b.inertia[0] + b.inertia[4] + b.inertia[8]) / 3));
+    this.hShown = hmax * span > 1e-9 * inertia;
     this.hScale = scaleFor(hmax);
     this.omegaArrows = this.bodies.map(() => makeArrow(0xd62728));
     this.hArrows = this.bodies.map(() => makeArrow(0x1f77b4));
@@ -323,8 +331,8 @@ export class Motion {
     this.bodies.forEach((body, b) => {
       const c = world(b, body.com);
       const w = this.omega.subarray(3 * (k * this.nb + b), 3 * (k * this.nb + b) + 3);
-      setArrow(this.omegaArrows[b], c, w, this.omegaScale, this.toggles.omega);
-      setArrow(this.hArrows[b], c, this.momentumAt(k, b), this.hScale, this.toggles.H);
+      setArrow(this.omegaArrows[b], c, w, this.omegaScale, this.toggles.omega && this.omegaShown);
+      setArrow(this.hArrows[b], c, this.momentumAt(k, b), this.hScale, this.toggles.H && this.hShown);
     });
     if (this.loads) {
       this.loadElements.forEach((e, i) => {
@@ -396,8 +404,8 @@ export class Motion {
       ...this.bodies.map((b, i) => element('option', { value: i }, b.name)));
     trace.addEventListener('change', () => this.setTrace(Number(trace.value)));
     const legend = element('div', { class: 'legend' },
-      element('span', { style: 'color:#d62728' }, `ω: 1 m = ${formatNumber(1 / this.omegaScale, 3)} rad/s`), ' · ',
-      element('span', { style: 'color:#1f77b4' }, `H: 1 m = ${formatNumber(1 / this.hScale, 3)} kg·m²/s`),
+      element('span', { style: 'color:#d62728' }, this.omegaShown ? `ω: 1 m = ${formatNumber(1 / this.omegaScale, 3)} rad/s` : 'ω: 0 (no body turns)'), ' · ',
+      element('span', { style: 'color:#1f77b4' }, this.hShown ? `H: 1 m = ${formatNumber(1 / this.hScale, 3)} kg·m²/s` : 'H: 0'),
       this.loads ? element('span', { style: 'color:#2ca02c' }, ` · loads: 1 m = ${formatNumber(1 / this.loadScale, 3)} N`) : null,
       this.reactions ? element('span', { style: 'color:#9467bd' }, ` · reactions: 1 m = ${formatNumber(1 / this.reactionScale, 3)} N`) : null);
     const notes = this.bodies.some((b) => !b.parts.length && b.equivalent)

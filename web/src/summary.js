@@ -28,7 +28,8 @@ export function summarySection(data) {
     section.append(table(['quantity', 'initial', 'max drift', 'final drift', 'allowed', 'verdict'],
       s.audit.map((a) => [a.name, formatNumber(a.initial), formatNumber(a.max_drift, 3), formatNumber(a.final_drift, 3),
         formatNumber(a.allowed, 2), a.verdict])));
-    section.append(element('p', { class: 'note' }, 'Drifts are relative (the quaternion norm error absolute). Allowed: what the integrator\'s order and step imply over the run (docs/report.md).'));
+    if (s.verdict_reason) section.append(element('p', { class: 'note verdict-reason' }, `Not vouched for: ${s.verdict_reason}.`));
+    section.append(element('p', { class: 'note' }, 'Drifts are relative (the quaternion norm error absolute). Allowed: what the integrator\'s order and step imply over the run, at most 0.1 (docs/report.md).'));
   }
   return section;
 }

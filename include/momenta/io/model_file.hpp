@@ -54,6 +54,10 @@ struct ModelFile {
   /// What the file says that momenta does not use, one `file:line: what` each (a URDF's joint
   /// limits, visuals, transmissions: docs/model-formats.md); empty for momenta's own files.
   std::vector<std::string> notes;
+  /// What the file says that is allowed but likely not meant, one `file:line:column: what` each
+  /// (a revolute joint's q0 of 30, beyond a turn: 30 rad, or 30 degrees meant?). The front ends
+  /// show them when they read the file.
+  std::vector<std::string> warnings;
   /// The names alone (symbolic::EquationOptions::names).
   std::map<std::string, std::string> given_symbol_names() const {
     std::map<std::string, std::string> names;

@@ -24,6 +24,9 @@ struct SimulationSettings {
     int line = 0, column = 0;
   };
   std::vector<Position> event_positions;
+  /// Where the file writes the section, its duration and its step (0: not written), for a run
+  /// refused for them (a step below time's resolution at the duration).
+  Position position, duration_position, step_position;
 };
 
 }  // namespace momenta::model

@@ -67,7 +67,7 @@ TEST(QuarterCarSweep, RowsEqualTheModelRunOnItsOwnAndDoNotDependOnTheThreadCount
   const std::vector<RunOutcome> three = run_all(runner, 3);
   ASSERT_EQ(one.size(), three.size());
   for (std::size_t k = 0; k < one.size(); ++k) {
-    EXPECT_EQ(results_row(one[k], false), results_row(three[k], false));
+    EXPECT_EQ(results_row(one[k], false, ""), results_row(three[k], false, ""));
   }
   // Run 13 on its own: the model file with its two numbers, integrated as `momenta simulate`
   // does with the sweep's options, the metrics taken from the whole table.
