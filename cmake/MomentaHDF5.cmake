@@ -28,6 +28,7 @@ if(HDF5_FOUND AND HDF5_IS_PARALLEL)
     set(MOMENTA_HAVE_HDF5 OFF)
   endif()
 endif()
+set(flavour none)
 if(MOMENTA_HAVE_HDF5)
   set(flavour serial)
   if(MOMENTA_HDF5_PARALLEL)
@@ -35,6 +36,7 @@ if(MOMENTA_HAVE_HDF5)
   endif()
   message(STATUS "momenta: HDF5 ${HDF5_VERSION} (${flavour}) from ${HDF5_C_INCLUDE_DIRS}")
 endif()
+set(MOMENTA_HDF5_FLAVOUR "${flavour}" CACHE INTERNAL "The HDF5 the sweep library uses (cmake/MomentaHDF5.cmake)")
 
 # Links HDF5 (and MPI's C target where HDF5 is the parallel flavour) into TARGET, privately, and
 # defines DEFINITION there; nothing without HDF5.

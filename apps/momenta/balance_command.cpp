@@ -47,7 +47,8 @@ struct BalanceOptions {
   std::optional<double> radius;
   bool remove = false;
   std::optional<double> grade;
-  double gravity = kStandardGravity;
+  // g for the static loads: --gravity, else a model file's |gravity|, else standard gravity.
+  std::optional<double> gravity;
   bool json = false;
   std::optional<std::string> report;
   bool force = false;
@@ -126,8 +127,9 @@ struct Rotor {
   std::string name;
   inertia::MassProperties mass_properties;
   inertia::RotorAxis axis;
-  std::string joint;  // the model's joint, when from a model file
-  ReadPart part;      // the part file or mesh read, otherwise
+  std::string joint;                    // the model's joint, when from a model file
+  ReadPart part;                        // the part file or mesh read, otherwise
+  std::optional<double> model_gravity;  // |g| of the model file, m/s²
 };
 
 bool is_model_file(const std::string& file) {
@@ -150,6 +152,7 @@ Rotor read_rotor(const BalanceOptions& o) {
     r.mass_properties = found.rotor;
     r.axis = found.axis;
     r.joint = found.joint;
+    r.model_gravity = file.model.gravity().norm();
     return r;
   }
   if (!o.body.empty()) throw CLI::ValidationError("--body", "names a body of a model file");
@@ -169,6 +172,7 @@ struct Balance {
   std::optional<Unbalance> corrected;
   std::vector<double> speeds;  // rad/s
   std::vector<inertia::BearingReactions> reactions, reactions_after;
+  double gravity = kStandardGravity;  // the g of the static loads, m/s² (0: none)
   std::optional<Vec2> static_loads;
   std::optional<inertia::GradeCheck> grade, grade_after;
 };
@@ -177,6 +181,7 @@ Balance compute(const BalanceOptions& o) {
   check_options(o);
   Balance b;
   b.source = read_rotor(o);
+  b.gravity = o.gravity.value_or(b.source.model_gravity.value_or(kStandardGravity));
   b.rotor = inertia::unbalance(b.source.mass_properties, b.source.axis);
   if (o.planes.size() == 2) {
     const auto pair = inertia::two_plane_correction(b.rotor, o.planes[0], o.planes[1]);
@@ -194,7 +199,7 @@ Balance compute(const BalanceOptions& o) {
         b.reactions_after.push_back(inertia::bearing_reactions(*b.corrected, zA, zB, w, o.alpha));
       }
     }
-    if (o.gravity > 0.0) b.static_loads = inertia::static_bearing_loads(b.rotor, zA, zB, o.gravity);
+    if (b.gravity > 0.0) b.static_loads = inertia::static_bearing_loads(b.rotor, zA, zB, b.gravity);
     if (o.grade) {
       const double w = *o.speed_rpm * kRpm;
       b.grade = inertia::check_grade(b.rotor, *o.grade, w, zA, zB);
@@ -256,7 +261,7 @@ void print_json(const BalanceOptions& o, const Balance& b) {
     j["reactions"] = std::move(rows);
   }
   if (b.static_loads) {
-    j["static_loads"] = {{"g", o.gravity}, {"A", b.static_loads->x()}, {"B", b.static_loads->y()}};
+    j["static_loads"] = {{"g", b.gravity}, {"A", b.static_loads->x()}, {"B", b.static_loads->y()}};
   }
   if (!b.corrections.empty()) {
     json list = json::array();
@@ -340,8 +345,13 @@ void print_text(const BalanceOptions& o, const Balance& b) {
       fmt::print("  drive torque α I_zz = {:.6g} N·m\n", b.reactions.front().drive_torque);
   }
   if (b.static_loads) {
-    fmt::print("static loads (horizontal shaft, g = {:.6g} m/s², upward): A {:.6g} N, B {:.6g} N\n",
-               o.gravity, b.static_loads->x(), b.static_loads->y());
+    fmt::print(
+        "static loads (horizontal shaft, g = {:.6g} m/s²{}, upward): A {:.6g} N, B {:.6g} N\n",
+        b.gravity, o.gravity || !b.source.model_gravity ? "" : ", the model's", b.static_loads->x(),
+        b.static_loads->y());
+  } else if (!o.bearings.empty() && b.gravity == 0.0) {
+    fmt::print("static loads: none (g = 0{})\n",
+               o.gravity || !b.source.model_gravity ? "" : ", the model's gravity");
   }
   if (!b.corrections.empty()) {
     fmt::print("\n{}-plane correction ({} mass):\n", b.corrections.size() == 2 ? "two" : "single",
@@ -461,9 +471,9 @@ void add_balance_command(CLI::App& app) {
       ->check(positive_finite());
   command
       ->add_option("--gravity", options->gravity,
-                   "g for the static bearing loads of a horizontal shaft, m/s² (0: none)")
-      ->check(non_negative_finite())
-      ->capture_default_str();
+                   "g for the static bearing loads of a horizontal shaft, m/s² (0: none; "
+                   "default: a model file's own gravity, else 9.80665)")
+      ->check(non_negative_finite());
   command->add_flag("--json", options->json, "Print JSON (SI units, angles in degrees)");
   command
       ->add_option("--report", options->report,

@@ -17,6 +17,8 @@
 #include "model_argument.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
+#include "momenta/math/rotation.hpp"
+#include "momenta/model/euler_coordinates.hpp"
 #include "momenta/symbolic/equations.hpp"
 #include "momenta/symbolic/linear_equations.hpp"
 #include "output_format.hpp"
@@ -36,9 +38,10 @@ struct EquationsOptions {
   bool principal_axes = false;
   bool normal_tangential = false;  // --nt
   bool text = false, latex = false, json = false, cpp = false, python = false;
-  std::string name;        // the generated code's namespace or module name
-  std::string transfer;    // INPUT:OUTPUT
-  InstantOptions instant;  // the operating point of --form linear and --transfer
+  std::string name;                        // the generated code's namespace or module name
+  std::string transfer;                    // INPUT:OUTPUT
+  InstantOptions instant;                  // the operating point of --form linear and --transfer
+  std::string coordinates = "quaternion";  // or euler:SEQUENCE for ball and free joints
 };
 
 // The linearization about the instant the options name (the initial state by default).
@@ -358,7 +361,12 @@ symbolic::Equations derive(const io::ModelFile& file, const EquationsOptions& o)
 }
 
 void run(const EquationsOptions& o) {
-  const io::ModelFile file = load_model(o.model);
+  io::ModelFile file = load_model(o.model);
+  // Ball and free joints in Euler angles (precession, nutation, spin), as the notes write a top:
+  // every form below, and a state file, then speak of those coordinates.
+  if (o.coordinates.starts_with("euler:")) {
+    file.model = model::with_euler_coordinates(file.model, o.coordinates.substr(6));
+  }
   // The instant is the operating point of a linearization; the equations themselves hold at
   // every instant, so --time or --state elsewhere is a mistake, not something to ignore.
   const bool linearizes = !o.transfer.empty() || o.form == "linear";
@@ -413,6 +421,25 @@ void add_equations_command(CLI::App& app) {
   command->add_flag("--nt", options->normal_tangential,
                     "With --form newton-euler on a planar model: a body on a fixed pivot with "
                     "ΣF_n = m r̄ ω² and ΣF_t = m r̄ α (n towards the pivot, t along G's motion)");
+  command
+      ->add_option("--coordinates", options->coordinates,
+                   "Ball and free joints' rotation: quaternion (the default, as the engine "
+                   "integrates it) or euler:SEQUENCE, three Euler angles phi, theta, psi as the "
+                   "notes write a top (euler:ZXZ: precession, nutation, spin)")
+      ->check(CLI::Validator(
+          [](std::string& value) -> std::string {
+            if (value == "quaternion") return {};
+            if (value.starts_with("euler:")) {
+              try {
+                check_euler_sequence(value.substr(6));
+                return {};
+              } catch (const InvalidArgument& e) {
+                return e.what();
+              }
+            }
+            return fmt::format("'{}': give quaternion or euler:SEQUENCE (euler:ZXZ)", value);
+          },
+          "quaternion|euler:ZXZ"));
   command->add_option("--transfer", options->transfer,
                       "INPUT:OUTPUT — the transfer function in s from a signal to a joint "
                       "output (or a coordinate, its rate with _dot), about the operating point");

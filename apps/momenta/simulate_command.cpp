@@ -20,6 +20,7 @@
 
 #include <fmt/format.h>
 
+#include "column_selection.hpp"
 #include "commands.hpp"
 #include "interrupt.hpp"
 #include "model_argument.hpp"
@@ -34,6 +35,7 @@
 #include "momenta/simulate/simulation.hpp"
 #include "option_checks.hpp"
 #include "row_preview.hpp"
+#include "state_file.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -49,6 +51,8 @@ struct SimulateOptions {
   std::optional<long> every;
   std::vector<std::string> events;     // --event: conditions recorded
   std::vector<std::string> stop_when;  // --stop-when: conditions that end the run
+  std::vector<std::string> columns;    // --columns: the columns shown and written
+  std::optional<std::string> state;    // --state: the initial state from a state file
   bool force = false;
   bool reactions = false;
   bool quiet = false;
@@ -174,7 +178,17 @@ void check_outputs(const SimulateOptions& o) {
 }
 
 void run(const SimulateOptions& o) {
-  const io::ModelFile file = load_model(o.model);
+  io::ModelFile file = load_model(o.model);
+  if (o.state) {
+    // The run starts at t = 0 from the file's q and v (steady --state writes t = 0).
+    const analysis::OperatingPoint start = read_state_file(*o.state, file.model);
+    file.model = file.model.with_initial_state(start.q, start.v);
+    if (start.t != 0.0) {
+      fmt::print(stderr,
+                 "momenta: note: {} is the state at t = {} s; the run starts from it at t = 0\n",
+                 *o.state, start.t);
+    }
+  }
   simulate::SimulationOptions options = merge(o, file.simulation);
   check_outputs(o);
   // The report's linear analysis names (--inputs, --outputs) are checked now, not after the run.
@@ -191,6 +205,15 @@ void run(const SimulateOptions& o) {
 
   // Without -o, a terminal gets a short table; a pipe or a file gets every row as CSV.
   const bool preview_only = o.csv && !o.output && isatty(STDOUT_FILENO);
+  // The columns: --columns for the table and the CSV alike (checked before a file is opened);
+  // else the table in the order a person reads it, the CSV in the run's own.
+  const std::vector<std::string>& all_columns = simulation.column_names();
+  std::optional<std::vector<std::size_t>> shown;
+  if (!o.columns.empty()) {
+    shown = chosen_columns(o.columns, all_columns);
+  } else if (preview_only) {
+    shown = reading_order(all_columns, file.outputs);
+  }
   std::unique_ptr<simulate::CsvWriter> writer;
   RowPreview preview(3, 3);
   if (!o.csv || preview_only) {
@@ -206,9 +229,12 @@ void run(const SimulateOptions& o) {
   };
   simulate::SimulationSummary summary;
   simulate::TableSink table;
-  simulate::RowSink& rows = preview_only ? static_cast<simulate::RowSink&>(preview)
-                            : writer     ? static_cast<simulate::RowSink&>(*writer)
-                                         : static_cast<simulate::RowSink&>(table);
+  simulate::RowSink& written = preview_only ? static_cast<simulate::RowSink&>(preview)
+                               : writer     ? static_cast<simulate::RowSink&>(*writer)
+                                            : static_cast<simulate::RowSink&>(table);
+  std::optional<SelectedColumns> selected;
+  if (shown && &written != &table) selected.emplace(written, *shown);
+  simulate::RowSink& rows = selected ? static_cast<simulate::RowSink&>(*selected) : written;
   std::unique_ptr<TeeSink> both;
   if (o.report && &rows != &table) both = std::make_unique<TeeSink>(rows, table);
   simulate::RowSink& sink = both ? static_cast<simulate::RowSink&>(*both) : rows;
@@ -243,7 +269,7 @@ void run(const SimulateOptions& o) {
   } else {
     fmt::print(stderr, "momenta: simulated {} ({}) for {} s; {} rows, {} columns to {}\n",
                file.name, o.model.file, summary.t_end, summary.rows,
-               simulation.column_names().size(),
+               shown ? shown->size() : all_columns.size(),
                o.output ? *o.output : std::string("standard output"));
   }
   fmt::print(stderr, "{}", simulate::format_summary(summary));
@@ -252,6 +278,9 @@ void run(const SimulateOptions& o) {
 // The options `simulate` and `report` share: the model, how it is integrated, the progress line.
 void add_run_options(CLI::App* command, SimulateOptions& o) {
   add_model_argument(command, o.model);
+  command->add_option("--state", o.state,
+                      "Start from a STATE.json file {\"q\": [...], \"v\": [...]} (as `momenta "
+                      "steady --state` writes) instead of the model's q0 and v0");
   command->add_option("--duration", o.duration, "Simulated time, s (default 10)")
       ->check(positive_finite());
   command
@@ -348,6 +377,11 @@ void add_simulate_command(CLI::App& app) {
                     "Overwrite the --output and --report files if they exist");
   command->add_flag("--reactions", options->reactions,
                     "Add every joint's reaction force and moment (world frame) to each row");
+  command
+      ->add_option("--columns", options->columns,
+                   "The columns to show and write, in this order (NAME,NAME,...; default: every "
+                   "one, a terminal's table leading with the model's outputs)")
+      ->delimiter(',');
   command
       ->add_option("--report", options->report,
                    "Also write the run's HTML report (docs/report.md) to this file")

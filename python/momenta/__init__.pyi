@@ -691,7 +691,7 @@ def sweep(path: os.PathLike[str] | str, threads: Optional[int] = None) -> dict:
     ...
 
 def symbolic_transfer_function(model: Model, input: str, coordinate: str, *, rate: bool = False, symbols: List[str] = [], all_symbols: bool = False, q: object = None, v: object = None, t: float = 0.0, format: str = 'text') -> str:
-    """The transfer function in s from a signal to a free coordinate (or its rate) of the equations linearized in symbols about (t, q, v) (without q and v, the state the model's run reaches at t), as `momenta equations --transfer` prints it: 'F_engine/(m_car*s+c_road)' for the cruise control's u to road ra"""
+    """The transfer function in s from a signal to a free coordinate (or its rate) of the equations linearized in symbols about (t, q, v) (without q and v, the state the model's run reaches at t), as `momenta equations --transfer` prints it: '1/(m_car*s+c_road)' for the cruise control's u to road rate (doc"""
     ...
 
 def to_mjcf(model: Model) -> str:

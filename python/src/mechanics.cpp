@@ -229,7 +229,7 @@ over the model file's `symbols:` section; `greek` writes the revolute joints' an
       R"doc(The transfer function in s from a signal to a free coordinate (or its rate) of the
 equations linearized in symbols about (t, q, v) (without q and v, the state the model's run
 reaches at t), as `momenta equations --transfer` prints it:
-'F_engine/(m_car*s+c_road)' for the cruise control's u to road rate (docs/equations.md).)doc");
+'1/(m_car*s+c_road)' for the cruise control's u to road rate (docs/equations.md).)doc");
 #endif  // MOMENTA_WITH_SYMBOLIC
 }
 

@@ -108,6 +108,7 @@ void read_bodies(const YamlNode& root, Context& ctx, model::ModelBuilder& builde
 
     // Mass properties in B: a shape or a mesh (as in part files), a part file, or explicit.
     MassProperties mass_properties;
+    bool uniform_solid = false;
     std::vector<PartSummary>& parts = ctx.body_parts[name];
     if (body.has("hole")) {
       body.at("hole").fail("a body cannot be a hole: cut holes in a part file and use 'part'");
@@ -117,12 +118,17 @@ void read_bodies(const YamlNode& root, Context& ctx, model::ModelBuilder& builde
       parts.push_back(read_part(body, i, 1.0, std::nullopt, ctx.base_dir));
       parts.back().name = name;
       mass_properties = parts.back().mass_properties;
+      uniform_solid = true;
     } else if (kind) {
       mass_properties = read_part_body(body, ctx, parts);
     } else {
       mass_properties = read_explicit_body(body, name);
     }
-    builder.add_body(name, mass_properties);
+    model::Body b;
+    b.name = name;
+    b.mass_properties = mass_properties;
+    b.inertia_scales_with_mass = uniform_solid;
+    builder.add_body(std::move(b));
   }
 }
 

@@ -51,6 +51,28 @@ int quaternion_offset(JointType type) {
 
 }  // namespace
 
+Model Model::with_initial_state(const VecX& q, const VecX& v) const {
+  if (q.size() != nq_ || v.size() != nv_) {
+    throw InvalidArgument(
+        fmt::format("an initial state of {} coordinates and {} speeds for a model of {} and {}",
+                    q.size(), v.size(), nq_, nv_));
+  }
+  for (int i = 0; i < nq_; ++i) {
+    if (!std::isfinite(q[i])) {
+      throw InvalidArgument(fmt::format("initial coordinate {} is {}", q_names_[i], q[i]));
+    }
+  }
+  for (int i = 0; i < nv_; ++i) {
+    if (!std::isfinite(v[i])) {
+      throw InvalidArgument(fmt::format("initial speed {} is {}", v_names_[i], v[i]));
+    }
+  }
+  Model model = *this;
+  model.q0_ = q;
+  model.v0_ = v;
+  return model;
+}
+
 std::optional<int> Model::find_body(std::string_view name) const {
   return find_by_name(bodies_, name, [](const Body& b) -> std::string_view { return b.name; });
 }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
 #include <optional>
 #include <set>
 #include <variant>
@@ -141,6 +142,15 @@ class Parameters {
     return {{(*this)(stem + axes[0], value.x(), "m"), (*this)(stem + axes[1], value.y(), "m"),
              (*this)(stem + axes[2], value.z(), "m")}};
   }
+
+  // Whether `raw_name` is to be a symbol (every one, or asked for by it or its given name).
+  bool asked(const std::string& raw_name) const {
+    const std::string name = identifier(raw_name);
+    return all_ || asked_.count(name) != 0 || asked_.count(given(name)) != 0;
+  }
+
+  // Marks a parameter's name as known (--symbols may name it) where it cancels from the equations.
+  void known(const std::string& raw_name) { names_.push_back(identifier(raw_name)); }
 
   // The name a person gave `name` (options.names), or `name`.
   std::string given(const std::string& name) const {
@@ -410,17 +420,35 @@ class Derivation {
     greek_display();
   }
 
-  // θ (θ₁, θ₂, …) for the angles collected in angles_ (EquationOptions::greek).
+  // θ (θ₁, θ₂, …) for the angles collected in angles_ (EquationOptions::greek); an angle named
+  // by a Greek letter (the Euler angles phi, theta, psi) keeps its own: φ, θ, ψ.
   void greek_display() {
     static const char* const subscripts[] = {"₀", "₁", "₂", "₃", "₄", "₅", "₆", "₇", "₈", "₉"};
-    const bool numbered = angles_.size() > 1;
-    for (std::size_t k = 0; k < angles_.size(); ++k) {
+    static const std::map<std::string_view, const char*> own_letters = {
+        {"alpha", "α"}, {"beta", "β"},  {"gamma", "γ"}, {"delta", "δ"}, {"phi", "φ"},
+        {"psi", "ψ"},   {"theta", "θ"}, {"chi", "χ"},   {"eta", "η"},   {"xi", "ξ"}};
+    std::vector<std::string> others;
+    bool theta_taken = false;  // then the others are numbered θ₁, θ₂, … however many
+    for (const std::string& name : angles_) {
+      const auto own = own_letters.find(name);
+      if (own == own_letters.end()) {
+        others.push_back(name);
+        continue;
+      }
+      theta_taken = theta_taken || name == "theta";
+      const std::string letter = own->second, latex = "\\" + name;
+      impl_.display[name] = {letter, latex};
+      impl_.display[name + "_dot"] = {letter + "\u0307", "\\dot{" + latex + "}"};
+      impl_.display[name + "_ddot"] = {letter + "\u0308", "\\ddot{" + latex + "}"};
+    }
+    const bool numbered = others.size() > 1 || theta_taken;
+    for (std::size_t k = 0; k < others.size(); ++k) {
       std::string text_index, latex_index;
       if (numbered) {
         for (char digit : std::to_string(k + 1)) text_index += subscripts[digit - '0'];
         latex_index = "_{" + std::to_string(k + 1) + "}";
       }
-      const std::string& name = angles_[k];
+      const std::string& name = others[k];
       impl_.display[name] = {"θ" + text_index, "\\theta" + latex_index};
       impl_.display[name + "_dot"] = {"θ\u0307" + text_index, "\\dot{\\theta}" + latex_index};
       impl_.display[name + "_ddot"] = {"θ\u0308" + text_index, "\\ddot{\\theta}" + latex_index};
@@ -590,11 +618,21 @@ class Derivation {
                                 "L_" + body.name);
     const double moment = Ic.cwiseAbs().maxCoeff();
     const char* axes = "xyz";
+    // A uniform solid's inertia with its mass a symbol: m × its tensor per unit mass (a rod's
+    // I_G = m L²/12), unless its moments are asked for as symbols themselves.
+    const bool scales = body.inertia_scales_with_mass && !GiNaC::is_a<GiNaC::numeric>(m);
     M3 I;
     for (int r = 0; r < 3; ++r) {
       for (int col = r; col < 3; ++col) {
-        const ex e = params_(fmt::format("I_{}_{}{}", body.name, axes[r], axes[col]),
-                             shown_value(Ic(r, col), moment), "kg·m²");
+        const std::string name = fmt::format("I_{}_{}{}", body.name, axes[r], axes[col]);
+        const double value = shown_value(Ic(r, col), moment);
+        ex e;
+        if (scales && !params_.asked(name)) {
+          params_.known(name);
+          e = m * exact_number(value / mp.mass());
+        } else {
+          e = params_(name, value, "kg·m²");
+        }
         I(r, col) = e;
         I(col, r) = e;
       }
@@ -634,14 +672,14 @@ class Derivation {
       const std::string name = model::force_element_name(element);
       if (const auto* s = std::get_if<model::LinearSpringDamper>(&element)) {
         const ex k = params_("k_" + name, s->stiffness, "N/m"),
-                 c = params_("c_" + name, s->damping, "N·s/m"),
-                 l0 = params_("l0_" + name, s->free_length, "m");
+                 c = params_("c_" + name, s->damping, "N·s/m");
         const int a = s->a.body_index, b = s->b.body_index;
         const V3 pa = to_v3(s->a.p_BoP_B), pb = to_v3(s->b.p_BoP_B);
         const V3 d = world_point(b, pb) - world_point(a, pa);
-        const ex length = line_length(d);
+        bool along_a_line = false;
+        const ex length = line_length(d, &along_a_line);
         const ex length_rate = dot(d, world_velocity(b, pb) - world_velocity(a, pa)) / length;
-        const ex T = k * (length - l0) + c * length_rate;
+        const ex T = k * stretch(name, s->free_length, length, along_a_line) + c * length_rate;
         push(b, pb, (-T / length) * d);
         push(a, pa, (T / length) * d);
       } else if (const auto* t = std::get_if<model::TorsionalSpringDamper>(&element);
@@ -742,10 +780,28 @@ class Derivation {
     push_moment(t.body_a_index, +1.0);
   }
 
+  // A spring's stretch, length − l0. Along a line (line_length) the length is the joints'
+  // offsets plus the coordinates; its value at q = 0 (inputs at 0 too) is the offsets' part. A
+  // textbook writes the spring relaxed there, k (x − y): where l0 is that value, offsets and free
+  // length cancel and are left out; where not, their difference, the stretch at q = 0, is the
+  // parameter d0_<spring> (m). Off a line, √(d·d) − l0 as it is.
+  ex stretch(const std::string& name, double free_length, const ex& length, bool along_a_line) {
+    if (!along_a_line) return length - params_("l0_" + name, free_length, "m");
+    GiNaC::exmap zero;
+    for (const ex& q : impl_.q) zero[q] = 0;
+    const ex at_zero = GiNaC::expand(length.subs(zero));
+    const double offsets = initial_value(at_zero);
+    params_.known("l0_" + name);
+    double d0 = offsets - free_length;
+    if (std::abs(d0) <= 1e-12 * std::max({1.0, std::abs(offsets), std::abs(free_length)})) d0 = 0;
+    return GiNaC::expand(length - at_zero) + params_("d0_" + name, d0, "m");
+  }
+
   // |d|. Where the line keeps one direction (d has one nonzero component, as a suspension's
   // vertical spring) it is ±d_k with the sign d_k has at the initial configuration — a spring
   // that does not pass through zero length, as a textbook writes k (x_b − x_a) — else √(d·d).
-  ex line_length(const V3& d) {
+  // `along_a_line`, when given, says which.
+  ex line_length(const V3& d, bool* along_a_line = nullptr) {
     int nonzero = -1, count = 0;
     for (int k = 0; k < 3; ++k) {
       if (!GiNaC::expand(d[k]).is_zero()) {
@@ -757,6 +813,7 @@ class Derivation {
     const ex component = GiNaC::expand(d[nonzero]);
     const double at_start = initial_value(component);
     if (at_start == 0.0) return GiNaC::sqrt(dot(d, d));
+    if (along_a_line != nullptr) *along_a_line = true;
     return at_start > 0 ? component : -component;
   }
 
@@ -786,7 +843,9 @@ class Derivation {
   V3 load(const std::string& name, const Vec3& vector, int signal, model::LoadFrame frame, int body,
           std::string_view unit) {
     const double size = vector.norm();
-    const ex magnitude = params_("F_" + name, size, unit);
+    // A signal's unit direction (N per unit of u, of length 1) is no parameter of the physics:
+    // the force is u along it. A gain of another size, or a constant load, is one.
+    const ex magnitude = signal >= 0 && size == 1.0 ? ex(1) : params_("F_" + name, size, unit);
     V3 v = size > 0 ? magnitude * to_v3(vector / size) : V3{};
     if (signal >= 0) v = input_of_signal_[static_cast<std::size_t>(signal)] * v;
     if (frame == model::LoadFrame::body) v = R_WB_[body] * v;

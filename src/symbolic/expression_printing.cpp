@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <tuple>
 
@@ -177,6 +178,37 @@ void print_sum(const GiNaC::add& sum, const GiNaC::print_context& context, unsig
   if (parenthesize) c.s << (std::is_same_v<Context, decimal_latex> ? "\\right)" : ")");
 }
 
+// Whether `e` holds the leading coordinate's (the equation's own) coordinate or speed.
+bool holds_own_coordinate(const ex& e, const PrintRoles* roles) {
+  if (roles == nullptr || roles->leading_acceleration < 0) return false;
+  if (GiNaC::is_a<GiNaC::symbol>(e)) {
+    const auto found = roles->by_name.find(GiNaC::ex_to<GiNaC::symbol>(e).get_name());
+    return found != roles->by_name.end() && found->second.index == roles->leading_acceleration &&
+           (found->second.role == SymbolRole::coordinate ||
+            found->second.role == SymbolRole::speed);
+  }
+  for (std::size_t k = 0; k < e.nops(); ++k) {
+    if (holds_own_coordinate(e.op(k), roles)) return true;
+  }
+  return false;
+}
+
+// A sum that is a factor of a product, as text: where a term holds the equation's own coordinate
+// or speed, that term first (its sign the product's): k_s (x − y) and b (ẋ − ẏ) in equation x,
+// k_s (y − x) in equation y, as the notes write a spring and a damper. Nothing otherwise.
+template <class Context>
+std::optional<std::string> own_coordinate_first(const ex& sum, const Context& c) {
+  if (sum.nops() > 6) return std::nullopt;
+  ex own = 0, rest = 0;
+  for (std::size_t k = 0; k < sum.nops(); ++k) {
+    (holds_own_coordinate(sum.op(k), c.roles) ? own : rest) += sum.op(k);
+  }
+  if (own.is_zero() || rest.is_zero() || GiNaC::is_a<GiNaC::add>(own)) return std::nullopt;
+  const std::string first = text_of(own, c, kSumPrecedence);
+  const std::string others = text_of(rest, c, 0);
+  return first + (others.starts_with("-") ? " - " + others.substr(1) : " + " + others);
+}
+
 template <class Context>
 void print_product(const GiNaC::mul& product, const GiNaC::print_context& context, unsigned level) {
   const auto& c = static_cast<const Context&>(context);
@@ -201,7 +233,14 @@ void print_product(const GiNaC::mul& product, const GiNaC::print_context& contex
       // A sum leads with a positive term, the product taking the minus (GiNaC keeps −c·(a − b)
       // or c·(b − a) as its hash order fell); printed bare, parenthesized here.
       std::string sum = text_of(shown, c, 0);
-      if (sum.starts_with("-")) {
+      if (const auto own = own_coordinate_first(shown, c)) {
+        sum = *own;
+        if (sum.starts_with("-")) {
+          shown = -shown;
+          coefficient = -coefficient;
+          sum = *own_coordinate_first(shown, c);
+        }
+      } else if (sum.starts_with("-")) {
         shown = -shown;
         coefficient = -coefficient;
         sum = text_of(shown, c, 0);
@@ -219,9 +258,16 @@ void print_product(const GiNaC::mul& product, const GiNaC::print_context& contex
   std::sort(numerator.begin(), numerator.end(), by_order);
   std::sort(denominator.begin(), denominator.end(), by_order);
   const char* times = latex ? " " : "*";
+  // In LaTeX a product juxtaposes its factors; a multi-letter name (upright, \mathrm{tip\_qw})
+  // is set apart from its neighbours by a thin space, or tip_qw tip_qy would read as one word.
+  const auto word = [](const std::string& text) { return text.starts_with("\\mathrm{"); };
   const auto join = [&](const std::vector<Factor>& factors) {
     std::string s;
-    for (std::size_t i = 0; i < factors.size(); ++i) s += (i ? times : "") + factors[i].text;
+    for (std::size_t i = 0; i < factors.size(); ++i) {
+      if (i > 0)
+        s += latex && (word(factors[i - 1].text) || word(factors[i].text)) ? " \\, " : times;
+      s += factors[i].text;
+    }
     return s;
   };
 

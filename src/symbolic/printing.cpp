@@ -179,7 +179,16 @@ std::string Equations::equation(int row, Format format) const {
     accelerations.append(impl_->vdot[static_cast<std::size_t>(impl_->free[c])]);
   }
   detail::check_printable(left);  // before expanding: that is what takes the time
-  left = GiNaC::collect(GiNaC::expand(left), accelerations);
+  // Each spring's and damper's terms over its constant, as the notes write them: k_s (x − y),
+  // b (ẋ − ẏ) — the stiffnesses and dampings are the parameters in those units.
+  GiNaC::lst grouped = accelerations;
+  for (std::size_t k = 0; k < impl_->parameters.size(); ++k) {
+    const std::string& unit = impl_->parameters[k].unit;
+    if (unit == "N/m" || unit == "N·s/m" || unit == "N·m/rad" || unit == "N·m·s/rad") {
+      grouped.append(impl_->parameter_symbols[k]);
+    }
+  }
+  left = GiNaC::collect(GiNaC::expand(left), grouped);
   // The constraint forces' generalized forces Gᵀλ on the right, each λ once.
   ex constraint_force = 0;
   for (const auto& c : impl_->constraints)

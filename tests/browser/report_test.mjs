@@ -241,6 +241,29 @@ test('heavy top: reports its spin, a rigid body drawn as its cone', async () => 
   await r.page.close();
 });
 
+// The display rule in the 3-D view: a car on a road never turns, so ω and H have no arrow and
+// no scale (the legend said "ω: 1 m = 7.69e-34 rad/s" of round-off before); a swinging rod's
+// have both (a point mass's H about its centre of mass is 0: no arrow either).
+test('a body that never turns: no ω or H arrow and no scale in the legend', async () => {
+  const legendOf = async (name, model) => {
+    const file = path.join(work, `${name}-legend.html`);
+    run('report', model, '-o', file, '-q', '--duration', '2');
+    const { page, problems } = await open(file);
+    await firstFrame(page);
+    const text = await page.$eval('#motion .legend', (e) => e.textContent);
+    await page.close();
+    assert.deepEqual(problems, []);
+    return text;
+  };
+  const car = await legendOf('cruise_control', path.join(examples, 'cruise_control.yaml'));
+  assert.ok(car.includes('ω: 0 (no body turns)') && car.includes('H: 0'), car);
+  assert.ok(!car.includes('rad/s') && !car.includes('kg·m²/s'), car);
+  const rod = await legendOf('compound_pendulum', path.join(examples, 'compound_pendulum.yaml'));
+  assert.match(rod, /ω: 1 m = [0-9.e+-]+ rad\/s · H: 1 m = [0-9.e+-]+ kg·m²\/s/);
+  const bob = await legendOf('pendulum', path.join(examples, 'pendulum.yaml'));
+  assert.match(bob, /ω: 1 m = [0-9.e+-]+ rad\/s · H: 0/);
+});
+
 test('four-bar: the closure\'s force drawn in 3-D beside the joints\' reactions', async () => {
   const model = path.join(examples, 'constraints', 'four_bar.yaml');
   const file = path.join(work, 'four_bar.html');

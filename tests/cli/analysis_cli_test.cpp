@@ -198,25 +198,25 @@ std::string canonical_after(const std::string& out, const std::string& prefix) {
 }
 
 TEST_F(AnalysisCli, EquationsTheirLinearizationAndATransferFunctionInSymbols) {
-  // The cruise control (FPE ch. 2): m v̇ + b v = F u, and V(s)/U(s) = F/(m s + b).
+  // The cruise control (FPE ch. 2): m v̇ + b v = u, and V(s)/U(s) = 1/(m s + b): the engine's
+  // unit direction (1 N per unit of u) is no symbol.
   const CliRun eom = momenta("equations " + example("cruise_control") + " --all-symbols --text");
   ASSERT_EQ(eom.code, 0) << eom.err;
   const auto line = eom.out.substr(eom.out.find('\n') + 1);
   const auto equals = line.find(" = ");
   EXPECT_EQ(canonical(line.substr(0, equals)), canonical("m_car*road_ddot+c_road*road_dot"))
       << eom.out;
-  EXPECT_EQ(canonical_after(line, " = "), canonical("F_engine*u")) << eom.out;
+  EXPECT_EQ(canonical_after(line, " = "), canonical("u")) << eom.out;
   const CliRun tf =
       momenta("equations " + example("cruise_control") + " --all-symbols --transfer u:speed");
   ASSERT_EQ(tf.code, 0) << tf.err;
-  EXPECT_EQ(canonical_after(tf.out, "G(s) = speed(s) / u(s) = "),
-            canonical("F_engine/(m_car*s+c_road)"))
+  EXPECT_EQ(canonical_after(tf.out, "G(s) = speed(s) / u(s) = "), canonical("1/(m_car*s+c_road)"))
       << tf.out;
   const CliRun linear =
       momenta("equations " + example("cruise_control") + " --all-symbols --form linear");
   ASSERT_EQ(linear.code, 0) << linear.err;
   EXPECT_EQ(canonical_after(linear.out, "A[1,1] = "), "-c_road/m_car") << linear.out;
-  EXPECT_EQ(canonical_after(linear.out, "B[1,0] = "), "F_engine/m_car") << linear.out;
+  EXPECT_EQ(canonical_after(linear.out, "B[1,0] = "), "1/m_car") << linear.out;
   const CliRun bad = momenta("equations " + example("cruise_control") + " --transfer x:speed");
   EXPECT_NE(bad.code, 0);
   EXPECT_NE(bad.err.find("no input 'x'; the inputs are u"), std::string::npos) << bad.err;
@@ -291,8 +291,8 @@ TEST_F(AnalysisCli, EquationsReadAccelerationsFirst) {
       << pendulum.out;
   const CliRun flexible = momenta("equations " + example("flexible_satellite") + " --all-symbols");
   EXPECT_NE(joined(flexible.out)
-                .find("\nI_hub_zz*theta1_ddot + c_boom*theta1_dot - c_boom*theta2_dot + "
-                      "k_boom*theta1 - k_boom*theta2 = F_control*tc\n"),
+                .find("\nI_hub_zz*theta1_ddot + c_boom*(theta1_dot - theta2_dot) + "
+                      "k_boom*(theta1 - theta2) = tc\n"),
             std::string::npos)
       << flexible.out;
   // Equation k leads with coordinate k's own acceleration, positive: the sleigh's third (its
@@ -316,6 +316,58 @@ TEST_F(AnalysisCli, EquationsReadAccelerationsFirst) {
 // product of inertia of 1.9e-20 kg·m² (against 5.6e-3) that printed as
 // "-1.88799714869e-20*sin(spin)*pivot_wx_dot" and, with --all-symbols, as a parameter I_rotor_xz.
 // The textbook's symbols: the file's `symbols:` names, θ on request, a wrong name at its line.
+// A uniform rod (shape: slender_rod, 2 kg, 1 m, pivoted at its end) with its mass a symbol: its
+// inertia is m × its tensor per unit mass, so the equation reads m L²/3 θ̈ + m g L/2 sin θ = 0 in
+// m — (1/12 + 1/4) m = 0.333333333333 m — not 0.1666… + 0.25 m with I_G a number. Asked for
+// as a symbol itself, I_rod_yy stays one.
+TEST_F(AnalysisCli, AUniformRodsInertiaScalesWithItsMassSymbol) {
+  const CliRun m = momenta("equations " + example("compound_pendulum") + " --symbols m_rod");
+  ASSERT_EQ(m.code, 0) << m.err;
+  EXPECT_NE(m.out.find("\n0.333333333333*m_rod*pivot_ddot + 4.905*m_rod*sin(pivot) = 0\n"),
+            std::string::npos)
+      << m.out;
+  const CliRun I =
+      momenta("equations " + example("compound_pendulum") + " --symbols m_rod,I_rod_yy");
+  ASSERT_EQ(I.code, 0) << I.err;
+  EXPECT_NE(I.out.find("I_rod_yy"), std::string::npos) << I.out;
+}
+
+// The heavy top in the notes' Euler angles (--coordinates euler:ZXZ): precession φ, nutation θ,
+// spin ψ, as Goldstein (§5.7) writes the symmetric top, with the file's symbols A (transverse
+// about G), C (axial), m, l: the spin's equation d/dt[C (ψ̇ + φ̇ cos θ)] = 0 and the nutation's
+// gravity term −m g l sin θ. The equations themselves against Lagrange's: SymbolicEquations.
+// TheHeavyTopInEulerAnglesReadsAsLagrangeWritesIt.
+TEST_F(AnalysisCli, EquationsOfATopInEulerAngles) {
+  const fs::path top = write(
+      "top.yaml",
+      "name: top\ngravity: [0, 0, -9.81]\nbodies:\n  - {name: top, shape: cone, mass: 1.0, "
+      "radius: 0.05, height: 0.1}\njoints:\n  - {name: tip, type: spherical, parent: world, child: "
+      "top, q0: {euler: {sequence: ZXZ, angles_deg: [0, 20, 0]}}}\nsymbols: {I_top_xx: A, "
+      "I_top_yy: A, I_top_zz: C, m_top: m, L_top: l}\n");
+  const CliRun r = momenta("equations " + test::quoted(top.string()) +
+                           " --coordinates euler:ZXZ --all-symbols --greek");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\nC*ψ̈ + C*cos(θ)*φ̈ - C*sin(θ)*φ̇*θ̇ = 0\n"), std::string::npos) << r.out;
+  EXPECT_NE(joined(r.out).find("θ̈*(A + l^2*m)"), std::string::npos) << r.out;
+  EXPECT_NE(joined(r.out).find("- g*l*m*sin(θ) = 0"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("_qw"), std::string::npos) << r.out;  // no quaternion component
+  // Refused, with the reason: the top upright (gimbal lock), an extrinsic sequence, no ball joint.
+  std::string upright = slurp(top);
+  upright.replace(upright.find("[0, 20, 0]"), 10, "[0, 0, 0]");
+  CliRun bad = momenta("equations " + test::quoted(write("upright.yaml", upright).string()) +
+                       " --coordinates euler:ZXZ");
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_NE(bad.err.find("gimbal lock"), std::string::npos) << bad.err;
+  bad = momenta("equations " + test::quoted(top.string()) + " --coordinates euler:zxz");
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_NE(bad.err.find("extrinsic"), std::string::npos) << bad.err;
+  bad = momenta("equations " + example("pendulum") + " --coordinates euler:ZXZ");
+  EXPECT_EQ(bad.code, 1);
+  EXPECT_NE(bad.err.find("no ball (spherical) or free joint"), std::string::npos) << bad.err;
+  EXPECT_EQ(momenta("equations " + test::quoted(top.string()) + " --coordinates euler:ABC").code,
+            2);
+}
+
 TEST_F(AnalysisCli, EquationsInTheTextbooksSymbols) {
   const std::string pendulum =
       "name: pendulum\n"

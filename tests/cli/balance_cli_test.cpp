@@ -84,6 +84,34 @@ TEST_F(BalanceCli, ModelFileRotorIsItsBodyOnTheRevoluteJoint) {
   EXPECT_MATRIX_NEAR(RA + RB, Vec2::Zero(), 1e-12);
 }
 
+// The static loads use the model file's own gravity: its |g| (9.81 here, not 9.80665), split
+// m g between the bearings; a model without gravity has none, and says so. --gravity overrides.
+TEST_F(BalanceCli, StaticLoadsTakeTheModelsGravity) {
+  const std::string rotor = example("../unbalanced_rotor.yaml");
+  const std::string args = " --bearings 0 0.4 --speed 1000";
+  const CliRun own = momenta("balance " + rotor + args + " --json");
+  ASSERT_EQ(own.code, 0) << own.err;
+  const json j = json::parse(own.out);
+  const double m = j.at("mass");
+  EXPECT_EQ(j.at("static_loads").at("g"), 9.81);
+  EXPECT_NEAR(double(j.at("static_loads").at("A")) + double(j.at("static_loads").at("B")), m * 9.81,
+              1e-12 * m * 9.81);
+  const CliRun text = momenta("balance " + rotor + args);
+  EXPECT_NE(text.out.find("g = 9.81 m/s², the model's"), std::string::npos) << text.out;
+  std::string weightless =
+      slurp(std::filesystem::current_path() / "examples" / "unbalanced_rotor.yaml");
+  const std::size_t g = weightless.find("gravity: [0, 0, -9.81]");
+  ASSERT_NE(g, std::string::npos);
+  weightless.replace(g, 22, "gravity: [0, 0, 0]");
+  const CliRun none = momenta("balance " + quoted(write("rotor.yaml", weightless).string()) + args);
+  ASSERT_EQ(none.code, 0) << none.err;
+  EXPECT_NE(none.out.find("static loads: none (g = 0, the model's gravity)"), std::string::npos)
+      << none.out;
+  EXPECT_EQ(none.out.find("9.80665"), std::string::npos) << none.out;
+  const CliRun given = momenta("balance " + rotor + args + " --gravity 9.80665 --json");
+  EXPECT_EQ(json::parse(given.out).at("static_loads").at("g"), 9.80665);
+}
+
 TEST_F(BalanceCli, RemovingMassPlacesItOpposite) {
   const std::string base =
       "balance " + example("two_disk_shaft.yaml") + " --planes 0.25 0.75 --json";

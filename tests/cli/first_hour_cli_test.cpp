@@ -59,6 +59,20 @@ class FirstHourCli : public test::CliTest {
     EXPECT_EQ(std::system(command.c_str()), 0) << command;
     return slurp(out);
   }
+  // The same with the exit code and stderr kept apart.
+  CliRun on_a_terminal_run(const std::string& args) const {
+    const fs::path out = dir_ / "terminal.txt", err = dir_ / "terminal_err.txt";
+    const std::string command =
+        "script -qec " +
+        quoted(quoted(MOMENTA_CLI_PATH) + " " + args + " 2>" + quoted(err.string())) +
+        " /dev/null >" + quoted(out.string());
+    CliRun r;
+    const int status = std::system(command.c_str());
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = slurp(out);
+    r.err = slurp(err);
+    return r;
+  }
   // A sweep file beside the scratch folder's files, over the example quarter car.
   fs::path sweep_file(const std::string& name, const std::string& parameters,
                       const std::string& metrics = "  - max: body_y\n",
@@ -671,6 +685,48 @@ TEST_F(FirstHourCli, AnUnclosedListIsNamedWhereItBegan) {
   r = momenta("info " + quoted(map.string()));
   EXPECT_EQ(r.code, 1);
   EXPECT_TRUE(has(r.err, "the map { that begins at line 3, column 5 has no closing }")) << r.err;
+}
+
+// On a terminal the table leads with what the model file asks for: the cruise car's outputs
+// speed, distance and u after the time, the momentum (nothing of a car on a road) not in the
+// seven columns shown. --columns chooses for the table and the CSV alike, checked before a file.
+TEST_F(FirstHourCli, SimulateShowsTheModelsOutputsFirstAndTakesColumns) {
+  const std::string car = source_dir() + "/examples/cruise_control.yaml";
+  const std::string shown = on_a_terminal("simulate " + car + " --duration 1");
+  EXPECT_TRUE(std::regex_search(shown, std::regex("^ *time +speed +distance +u +road\\.position")))
+      << shown;
+  EXPECT_FALSE(has(shown.substr(0, shown.find('\n')), "H_x")) << shown;
+  const CliRun chosen = momenta("simulate " + car + " --duration 1 --columns time,speed");
+  ASSERT_EQ(chosen.code, 0) << chosen.err;
+  EXPECT_EQ(chosen.out.substr(0, chosen.out.find('\n')), "time,speed");
+  EXPECT_EQ(std::count(chosen.out.begin(), chosen.out.end(), ','),
+            std::count(chosen.out.begin(), chosen.out.end(), '\n'));  // two columns a line
+  const CliRun table = on_a_terminal_run("simulate " + car + " --duration 1 --columns u,speed");
+  EXPECT_TRUE(std::regex_search(table.out, std::regex("^ *u +speed\r?\n"))) << table.out;
+  const CliRun wrong =
+      momenta("simulate " + car + " --duration 1 --columns time,sped -o " + at("x.csv"));
+  EXPECT_EQ(wrong.code, 1);
+  EXPECT_TRUE(has(wrong.err, "--columns: the run has no column 'sped' (did you mean 'speed'?)"))
+      << wrong.err;
+  EXPECT_FALSE(fs::exists(dir_ / "x.csv"));
+}
+
+// A state file (as `momenta steady --state` writes) is where a run starts: its first row.
+TEST_F(FirstHourCli, SimulateAndReportStartFromAStateFile) {
+  const fs::path state = write("s.json", R"({"q": [0.5], "v": [0.25], "t": 0})");
+  const std::string pendulum = source_dir() + "/examples/pendulum.yaml";
+  const CliRun r = momenta("simulate " + pendulum + " --duration 0.01 --state " +
+                           quoted(state.string()) + " --columns time,pivot.angle,pivot.angle_rate");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::string first = r.out.substr(r.out.find('\n') + 1);
+  EXPECT_EQ(first.substr(0, first.find('\n')), "0,0.5,0.25");
+  const CliRun page = momenta("report " + pendulum + " --duration 0.01 --state " +
+                              quoted(state.string()) + " -o " + at("p.html"));
+  ASSERT_EQ(page.code, 0) << page.err;
+  const CliRun wrong = momenta("simulate " + pendulum + " --state " +
+                               quoted(write("w.json", R"({"q": [0.5, 1], "v": [0]})").string()));
+  EXPECT_EQ(wrong.code, 1);
+  EXPECT_TRUE(has(wrong.err, "w.json")) << wrong.err;
 }
 
 }  // namespace first_hour

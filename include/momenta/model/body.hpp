@@ -20,6 +20,10 @@ inline constexpr const char* kWorldBodyName = "world";
 struct Body {
   std::string name;
   inertia::MassProperties mass_properties;
+  /// Whether the mass properties are a uniform solid's (a `shape` or `mesh` of one density): its
+  /// inertia then scales with its mass, I = m × (its tensor per unit mass), as the equations in
+  /// symbols keep it when the mass is a symbol (I_G = m L²/12 for a rod).
+  bool inertia_scales_with_mass = false;
 
   // --- set by ModelBuilder::build() ----------------------------------------------------------
   int index = -1;         ///< Index in Model::bodies(); 0 is the world.

@@ -115,6 +115,10 @@ class Model {
   /// The initial state: each joint's q0 and v0 (neutral and zero where not given), stacked.
   const VecX& initial_q() const { return q0_; }
   const VecX& initial_v() const { return v0_; }
+  /// This model starting from `q` (size nq) and `v` (size nv) instead: a state file's (`momenta
+  /// simulate --state`). Throws InvalidArgument naming the size expected, or the first
+  /// non-finite entry with its coordinate's name.
+  Model with_initial_state(const VecX& q, const VecX& v) const;
 
   /// Per-joint constants for the algorithms (see JointConstants).
   const std::vector<JointConstants>& joint_constants() const { return constants_; }

@@ -10,6 +10,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <numbers>
 #include <random>
 #include <sstream>
 #include <string>
@@ -24,6 +26,7 @@
 #include "momenta/dynamics/crba.hpp"
 #include "momenta/dynamics/reactions.hpp"
 #include "momenta/io/model_file.hpp"
+#include "momenta/model/euler_coordinates.hpp"
 #include "momenta/symbolic/equations.hpp"
 #include "momenta/symbolic/linear_equations.hpp"
 #include "momenta/system/multibody_system.hpp"
@@ -341,10 +344,10 @@ TEST(SymbolicEquations, LumpedClassicsReadAsTheTextbookWritesThem) {
   const symbolic::Equations cruise = symbols_of("cruise_control");
   ASSERT_EQ(cruise.free_speeds().size(), 1u);
   expect_same_equation(cruise.equation(0, symbolic::Format::text),
-                       "m_car*road_ddot + c_road*road_dot = F_engine*u");
-  // Satellite attitude: I θ̈ = F_c d (the thrusters' couple scaled by the signal).
+                       "m_car*road_ddot + c_road*road_dot = u");
+  // Satellite attitude: I θ̈ = T, the thrusters' couple T = F_c d being the signal.
   expect_same_equation(symbols_of("satellite_attitude").equation(0, symbolic::Format::text),
-                       "I_satellite_zz*attitude_ddot = F_thrusters*thrust");
+                       "I_satellite_zz*attitude_ddot = thrust");
   // Pendulum: m L² θ̈ + m g L sin θ = 0, L the bob's (positive) distance below the pivot.
   expect_same_equation(symbols_of("pendulum").equation(0, symbolic::Format::text),
                        "m_bob*L_bob^2*pivot_ddot + m_bob*g*L_bob*sin(pivot) = 0");
@@ -357,7 +360,7 @@ TEST(SymbolicEquations, LumpedClassicsReadAsTheTextbookWritesThem) {
   const symbolic::Equations flexible = symbols_of("flexible_satellite");
   expect_same_equation(flexible.equation(0, symbolic::Format::text),
                        "I_hub_zz*theta1_ddot + c_boom*(theta1_dot - theta2_dot) + "
-                       "k_boom*(theta1 - theta2) = F_control*tc");
+                       "k_boom*(theta1 - theta2) = tc");
   expect_same_equation(flexible.equation(1, symbolic::Format::text),
                        "I_appendage_zz*theta2_ddot + c_boom*(theta2_dot - theta1_dot) + "
                        "k_boom*(theta2 - theta1) = 0");
@@ -502,6 +505,61 @@ TEST(SymbolicEquations, PlanarNewtonEulerHasThreeRowsPerBody) {
   EXPECT_GE(top.newton_euler_rows(), 6);
 }
 
+// The heavy top in the notes' Euler angles (ZXZ: precession φ, nutation θ, spin ψ), against
+// Lagrange's equations of the symmetric top (Goldstein §5.7): with A and C its moments about the
+// apex (transverse, axial) and V = m g l cos θ,
+//   T = ½ A (θ̇² + φ̇² sin²θ) + ½ C (ψ̇ + φ̇ cos θ)²,
+//   M = [[A sin²θ + C cos²θ, 0, C cos θ], [0, A, 0], [C cos θ, 0, C]],
+//   b = θ̇ (∂M/∂θ) q̇ − ½ q̇ᵀ(∂M/∂θ)q̇ e_θ − m g l sin θ e_θ  (M q̈ + b = 0),
+// at random states; and the file's initial state, (0, 20°, 0) with ω_B = [0, Ω sin θ, ω3], as
+// φ̇ = Ω, θ̇ = 0, ψ̇ = ω3 − Ω cos θ.
+TEST(SymbolicEquations, TheHeavyTopInEulerAnglesReadsAsLagrangeWritesIt) {
+  const model::Model quaternion = io::read_model_file(example("heavy_top")).model;
+  const model::Model top = model::with_euler_coordinates(quaternion, "ZXZ");
+  ASSERT_EQ(top.nq(), 3);
+  ASSERT_EQ(top.nv(), 3);
+  EXPECT_EQ(top.q_name(0), "phi.angle");
+  EXPECT_EQ(top.q_name(2), "psi.angle");
+  const double theta0 = 20.0 * std::numbers::pi / 180.0, omega3 = 300.0;
+  const double Omega = 1.2376467625713699 / std::sin(theta0);
+  EXPECT_NEAR(top.initial_q()[0], 0.0, 1e-15);
+  EXPECT_NEAR(top.initial_q()[1], theta0, 1e-15);
+  EXPECT_NEAR(top.initial_q()[2], 0.0, 1e-15);
+  EXPECT_NEAR(top.initial_v()[0], Omega, 1e-12);
+  EXPECT_NEAR(top.initial_v()[1], 0.0, 1e-12);
+  EXPECT_NEAR(top.initial_v()[2], omega3 - Omega * std::cos(theta0), 1e-12);
+  EXPECT_NEAR(Omega, 3.618637, 1e-6);  // the file's slow precession
+
+  const double m = 1.0, r = 0.05, h = 0.1, g = 9.81, l = 0.75 * h;
+  const double A = 0.6 * m * h * h + 0.15 * m * r * r, C = 0.3 * m * r * r;
+  const symbolic::Equations e = symbolic::derive_equations(top);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> angle(-3.0, 3.0), rate(-20.0, 20.0);
+  for (int trial = 0; trial < 20; ++trial) {
+    const Vec3 q(angle(random), 0.2 + std::abs(angle(random)) * 0.9, angle(random));
+    const Vec3 v(rate(random), rate(random), rate(random));
+    const double s = std::sin(q[1]), c = std::cos(q[1]);
+    Mat3 M_expected, dM;
+    M_expected << A * s * s + C * c * c, 0, C * c, 0, A, 0, C * c, 0, C;
+    dM << 2 * (A - C) * s * c, 0, -C * s, 0, 0, 0, -C * s, 0, 0;
+    Vec3 b_expected = v[1] * dM * v;
+    b_expected[1] += -0.5 * v.dot(dM * v) - m * g * l * s;
+    MatX M;
+    VecX b;
+    e.evaluate(q, v, VecX::Zero(3), VecX(), M, b);
+    EXPECT_MATRIX_NEAR(M, M_expected, 1e-15);
+    EXPECT_MATRIX_NEAR(b, b_expected, 1e-12 * (1.0 + b_expected.norm()));
+  }
+  // A state at the sequence's gimbal lock (θ = 0, the top upright) has no Euler rates.
+  std::ifstream file(example("heavy_top"));
+  std::string upright((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const std::size_t tilt = upright.find("angles_deg: [0, 20, 0]");
+  ASSERT_NE(tilt, std::string::npos);
+  upright.replace(tilt, 22, "angles_deg: [0, 0, 0]");
+  const model::Model standing = io::parse_model_file(upright, "upright.yaml", ".").model;
+  EXPECT_THROW(model::with_euler_coordinates(standing, "ZXZ"), InvalidArgument);
+}
+
 // The numeric linearization of the same model about the same point, with its inputs and outputs.
 analysis::LinearModel numeric_linearization(const io::ModelFile& file, const VecX& q, const VecX& v,
                                             std::vector<std::string> inputs,
@@ -514,7 +572,7 @@ analysis::LinearModel numeric_linearization(const io::ModelFile& file, const Vec
 }
 
 TEST(SymbolicLinearization, CruiseControlTransferFunctionIsOneOverMsPlusB) {
-  // FPE ch. 2: V(s)/U(s) = 1/(m s + b) per unit of force; the model's force is F_engine u.
+  // FPE ch. 2: V(s)/U(s) = 1/(m s + b) per unit of force; the model's force is u along the road.
   const io::ModelFile file = io::read_model_file(example("cruise_control"));
   const symbolic::Equations e = symbols_of("cruise_control");
   const VecX q = file.model.initial_q(), v = file.model.initial_v();
@@ -522,7 +580,7 @@ TEST(SymbolicLinearization, CruiseControlTransferFunctionIsOneOverMsPlusB) {
   ASSERT_EQ(l.input_names(), std::vector<std::string>{"u"});
   const std::string G = l.transfer_function(0, 0, true, symbolic::Format::text);
   GiNaC::parser reader;
-  EXPECT_TRUE(GiNaC::normal(reader(G) - reader("F_engine/(m_car*s + c_road)")).is_zero()) << G;
+  EXPECT_TRUE(GiNaC::normal(reader(G) - reader("1/(m_car*s + c_road)")).is_zero()) << G;
   ASSERT_TRUE(l.has_state_space());
   EXPECT_TRUE(
       GiNaC::normal(reader(l.entry(symbolic::LinearMatrix::A, 1, 1, symbolic::Format::text)) +
