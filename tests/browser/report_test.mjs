@@ -264,6 +264,24 @@ test('a body that never turns: no ω or H arrow and no scale in the legend', asy
   assert.match(bob, /ω: 1 m = [0-9.e+-]+ rad\/s · H: 0/);
 });
 
+// The audit cannot pass vacuously: the double pendulum under RK4 at h = 0.05 s (|λ|h = 0.29 for
+// its fastest mode, 5.79 1/s) would be allowed 10 ω T (ω h)^4 = 2 — more than the whole energy —
+// and passed its 6 % drift; the allowance is capped at 0.1 and the panel says why it cannot judge.
+test('a step too coarse for the fastest mode: the audit says so instead of passing', async () => {
+  const file = path.join(work, 'coarse.html');
+  run('report', path.join(examples, 'double_pendulum.yaml'), '--integrator', 'rk4', '--dt', '0.05', '-o', file, '-q');
+  const { page, problems } = await open(file);
+  const summary = await page.evaluate(() => window.momentaReport.summary());
+  assert.equal(summary.verdict, 'warn');
+  assert.match(summary.verdict_reason, /the step is too large for the fastest mode to vouch for accuracy: \|λ\|h = 0\.29/);
+  for (const a of summary.audit) assert.ok(a.allowed <= 0.1, JSON.stringify(a));
+  const shown = await page.$eval('#summary .verdict-reason', (e) => e.textContent);
+  assert.ok(shown.startsWith('Not vouched for: the step is too large'), shown);
+  await page.screenshot({ path: path.join(artifacts, 'coarse-summary.png') });
+  await page.close();
+  assert.deepEqual(problems, []);
+});
+
 test('four-bar: the closure\'s force drawn in 3-D beside the joints\' reactions', async () => {
   const model = path.join(examples, 'constraints', 'four_bar.yaml');
   const file = path.join(work, 'four_bar.html');
