@@ -614,7 +614,7 @@ def campbell_diagram(model: Model, speed_from: float, speed_to: float, points: i
     """The Campbell diagram of the model's rotor — one body on a ball or free joint, or a rotor turning on its joint — from speed_from to speed_to (rad/s), as `momenta campbell` (which takes rev/min)."""
     ...
 
-def equations(model: Model, *, symbols: List[str] = [], all_symbols: bool = False, form: str = 'lagrange', format: str = 'text', principal_axes: bool = False, greek: bool = False, names: Dict[str, str] = {}) -> List[str]:
+def equations(model: Model, *, symbols: List[str] = [], all_symbols: bool = False, form: str = 'lagrange', format: str = 'text', principal_axes: bool = False, greek: bool = False, names: Dict[str, str] = {}, coordinates: str = 'quaternion') -> List[str]:
     """The model's equations of motion in symbols, one string per equation, as `momenta equations` prints them: 'lagrange' (one per free speed, each with its constraint forces G^T lambda, then each constraint row as '<row>: phi = 0' or '<row>: G v = 0') or 'newton-euler' (each body's ΣF = m a_G and ΣM_G = """
     ...
 
@@ -708,4 +708,8 @@ def transfer_function(system: StateSpace, input: object, output: object, cancell
 
 def undamped_modes(linear: LinearModel) -> NormalModes:
     """Normal modes of M δq̈ + K δq = 0 from a LinearModel (an equilibrium of a conservative model)."""
+    ...
+
+def with_initial_state(model: Model, q: object, v: object) -> Model:
+    """The same model starting from q (nq values: coordinates, quaternions for ball and free joints) and v (nv values) instead of its q0 and v0 — the state `momenta steady --state` writes, as `momenta simulate --state` takes it. Raises InvalidArgument naming the size expected or the first non-finite entry."""
     ...

@@ -12,6 +12,7 @@
 #include "momenta/analysis/free_body.hpp"
 #include "momenta/dynamics/momentum.hpp"
 #include "momenta/dynamics/relative_kinematics.hpp"
+#include "momenta/model/euler_coordinates.hpp"
 #include "momenta/report/free_body_svg.hpp"
 #include "momenta/simulate/run_request.hpp"
 #include "momenta/simulate/state_at.hpp"
@@ -164,8 +165,13 @@ and Coriolis terms, every vector in the frame's axes, as `momenta kinematics` gi
       "equations",
       [](const ModelHandle& h, std::vector<std::string> symbols, bool all_symbols,
          const std::string& form, const std::string& format, bool principal_axes, bool greek,
-         const std::map<std::string, std::string>& names) {
+         const std::map<std::string, std::string>& names, const std::string& coordinates) {
         const symbolic::Format f = format_arg(format);
+        if (coordinates != "quaternion" && !coordinates.starts_with("euler:")) {
+          throw InvalidArgument(fmt::format(
+              "coordinates '{}': expected 'quaternion' or 'euler:SEQUENCE' (euler:ZXZ)",
+              coordinates));
+        }
         if (form != "lagrange" && form != "newton-euler") {
           throw InvalidArgument(
               fmt::format("form '{}': expected 'lagrange' or 'newton-euler'", form));
@@ -173,7 +179,12 @@ and Coriolis terms, every vector in the frame's axes, as `momenta kinematics` gi
         symbolic::EquationOptions options = equation_options(
             h, std::move(symbols), all_symbols, form == "newton-euler", principal_axes, names);
         options.greek = greek;
-        const symbolic::Equations e = symbolic::derive_equations(h.model(), options);
+        // Ball and free joints as Euler angles, as `momenta equations --coordinates` writes them.
+        const symbolic::Equations e = symbolic::derive_equations(
+            coordinates == "quaternion"
+                ? h.model()
+                : model::with_euler_coordinates(h.model(), coordinates.substr(6)),
+            options);
         std::vector<std::string> lines;
         if (form == "lagrange") {
           for (int r = 0; r < static_cast<int>(e.free_speeds().size()); ++r)
@@ -190,6 +201,7 @@ and Coriolis terms, every vector in the frame's axes, as `momenta kinematics` gi
       py::arg("all_symbols") = false, py::arg("form") = "lagrange", py::arg("format") = "text",
       py::arg("principal_axes") = false, py::arg("greek") = false,
       py::arg("names") = std::map<std::string, std::string>{},
+      py::arg("coordinates") = "quaternion",
       R"doc(The model's equations of motion in symbols, one string per equation, as
 `momenta equations` prints them: 'lagrange' (one per free speed, each with its constraint forces
 G^T lambda, then each constraint row as '<row>: phi = 0' or '<row>: G v = 0') or 'newton-euler'
@@ -197,7 +209,9 @@ G^T lambda, then each constraint row as '<row>: phi = 0' or '<row>: G v = 0') or
 multipliers, prefixed with the body; `principal_axes` writes a body with products of inertia in
 its principal axes); 'text' or 'latex'. `symbols` names the parameters to keep as symbols
 (docs/equations.md); `names` renames parameters and coordinates ({'m_bob': 'm', 'L_bob': 'L'}),
-over the model file's `symbols:` section; `greek` writes the revolute joints' angles θ (θ₁, θ₂, …).)doc");
+over the model file's `symbols:` section; `greek` writes the revolute joints' angles θ (θ₁, θ₂, …);
+coordinates='euler:ZXZ' writes ball and free joints as three Euler angles phi, theta, psi (as
+`momenta equations --coordinates`), the default 'quaternion' as the engine integrates them.)doc");
 
   m.def(
       "symbolic_transfer_function",

@@ -275,6 +275,21 @@ An existing file is kept (FileError) unless force=True. Returns the path.)doc")
                            r.summary.integrator);
       });
 
+  m.def(
+      "with_initial_state",
+      [](const ModelHandle& h, const py::object& q, const py::object& v) {
+        ArgStorage storage;
+        const VecX q0 = vector_arg(q, "q", h.model().nq(), "the model's nq", storage);
+        const VecX v0 = vector_arg(v, "v", h.model().nv(), "the model's nv", storage);
+        auto file = std::make_shared<io::ModelFile>(*h.file);
+        file->model = h.model().with_initial_state(q0, v0);
+        return ModelHandle{std::move(file)};
+      },
+      py::arg("model"), py::arg("q"), py::arg("v"),
+      R"doc(The same model starting from q (nq values: coordinates, quaternions for ball and free
+joints) and v (nv values) instead of its q0 and v0 — the state `momenta steady --state` writes,
+as `momenta simulate --state` takes it. Raises InvalidArgument naming the size expected or the
+first non-finite entry.)doc");
   m.def("simulate", &run_simulation, py::arg("model"), py::kw_only(),
         py::arg("duration") = py::none(), py::arg("dt") = py::none(),
         py::arg("integrator") = py::none(), py::arg("rtol") = py::none(),

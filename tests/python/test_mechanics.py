@@ -137,3 +137,17 @@ def test_newton_euler_rows_in_principal_axes(tmp_path):
     principal = momenta.equations(model, form="newton-euler", principal_axes=True)
     assert not any("principal axes" in row for row in body_axes)
     assert sum(row.startswith("plate (principal axes e1 = ") for row in principal) >= 3, principal
+
+
+@needs_symbolic
+def test_a_top_in_euler_angles_as_the_command_line_writes_it():
+    # The heavy top's equations in precession, nutation and spin (ZXZ), as
+    # `momenta equations --coordinates euler:ZXZ` prints them.
+    path = EXAMPLES / "heavy_top.yaml"
+    model = momenta.load_model(path)
+    mine = momenta.equations(model, coordinates="euler:ZXZ")
+    printed = run_cli("equations", path, "--coordinates", "euler:ZXZ").splitlines()[1:]
+    assert " ".join(mine) == " ".join(line.strip() for line in printed)
+    assert any("theta_ddot" in line for line in mine) and not any("_qw" in line for line in mine)
+    with pytest.raises(momenta.InvalidArgument, match="euler:SEQUENCE"):
+        momenta.equations(model, coordinates="angles")

@@ -174,3 +174,17 @@ def test_a_urdf_file_loads_as_a_model():
     squared = sorted(m.squared_frequency for m in momenta.undamped_modes(equilibrium.linear))
     assert squared == pytest.approx([9.81 * (2 - 2 ** 0.5), 9.81 * (2 + 2 ** 0.5)], rel=1e-11)
     assert momenta.simulate(model, duration=0.1).time[-1] == pytest.approx(0.1)
+
+
+def test_a_model_starts_from_a_given_state_as_simulate_state_does(tmp_path):
+    # momenta.with_initial_state is `momenta simulate --state`: the first row is the state.
+    pendulum = momenta.load_model(EXAMPLES / "pendulum.yaml")
+    started = momenta.with_initial_state(pendulum, [0.5], [0.25])
+    result = momenta.simulate(started, duration=0.01)
+    first = dict(zip(result.columns, result.data[0]))
+    assert first["pivot.angle"] == 0.5 and first["pivot.angle_rate"] == 0.25
+    assert momenta.simulate(pendulum, duration=0.01).data[0][1] != 0.5  # the original unchanged
+    with pytest.raises(ValueError, match="q"):
+        momenta.with_initial_state(pendulum, [0.5, 1.0], [0.0])
+    with pytest.raises(momenta.InvalidArgument, match="initial coordinate pivot.angle is nan"):
+        momenta.with_initial_state(pendulum, [float("nan")], [0.0])
