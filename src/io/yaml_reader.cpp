@@ -1,6 +1,7 @@
 #include "momenta/io/yaml_reader.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <fstream>
@@ -241,10 +242,55 @@ std::optional<std::pair<int, int>> unclosed_flow_opener(const std::string& text,
   return open.back();
 }
 
+// For a block list whose item at 0-based (line, column) is indented unlike its siblings: where
+// the list begins and the column of its items, 1-based; nothing when no sibling is found above.
+std::optional<std::array<int, 3>> misaligned_list_item(const std::string& text, int line,
+                                                       int column) {
+  std::vector<std::string_view> lines;
+  for (std::size_t start = 0; start <= text.size();) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    lines.push_back(std::string_view(text).substr(start, end - start));
+    start = end + 1;
+  }
+  const auto indent = [&](int k) {
+    const std::size_t first = lines[static_cast<std::size_t>(k)].find_first_not_of(' ');
+    return first == std::string_view::npos ? -1 : static_cast<int>(first);
+  };
+  const auto is_item = [&](int k) {
+    const int at = indent(k);
+    return at >= 0 && lines[static_cast<std::size_t>(k)][static_cast<std::size_t>(at)] == '-';
+  };
+  for (int k = std::min(line, static_cast<int>(lines.size())) - 1; k >= 0; --k) {
+    if (!is_item(k) || indent(k) == column) continue;
+    const int items = indent(k);
+    int first = k;
+    for (int up = k - 1; up >= 0; --up) {
+      if (indent(up) < 0 || indent(up) > items) continue;
+      if (indent(up) == items && is_item(up)) {
+        first = up;
+        continue;
+      }
+      break;
+    }
+    return std::array<int, 3>{first + 1, items + 1, items + 1};
+  }
+  return std::nullopt;
+}
+
 // yaml-cpp's message, and for a flow sequence or map that is not closed, where it began: the
-// parser notices only where the next key is.
+// parser notices only where the next key is; for a block list item out of line with the others,
+// where the list begins and the column of its items.
 std::string malformed_message(const YAML::Exception& e, const std::string& text) {
   std::string message = fmt::format("malformed YAML: {}", e.msg);
+  if (e.msg == YAML::ErrorMsg::END_OF_SEQ && !e.mark.is_null() && e.mark.line >= 0) {
+    if (const auto list = misaligned_list_item(text, e.mark.line, e.mark.column)) {
+      message += fmt::format(
+          ": the list that begins at line {}, column {} has its items ('-') at column {}; this "
+          "one is at column {}: line it up with them",
+          (*list)[0], (*list)[1], (*list)[2], e.mark.column + 1);
+    }
+    return message;
+  }
   const bool flow_end =
       e.msg == YAML::ErrorMsg::END_OF_SEQ_FLOW || e.msg == YAML::ErrorMsg::END_OF_MAP_FLOW;
   if (!flow_end || e.mark.is_null() || e.mark.pos < 0) return message;

@@ -685,6 +685,18 @@ TEST_F(FirstHourCli, AnUnclosedListIsNamedWhereItBegan) {
   r = momenta("info " + quoted(map.string()));
   EXPECT_EQ(r.code, 1);
   EXPECT_TRUE(has(r.err, "the map { that begins at line 3, column 5 has no closing }")) << r.err;
+  // A block list's item out of line with its siblings ("end of sequence not found").
+  const fs::path block =
+      write("b.yaml",
+            "name: x\nbodies:\n  - {name: a, mass: 1}\n  - name: b\n    mass: 2\n"
+            "   - name: c\njoints: []\n");
+  r = momenta("info " + quoted(block.string()));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_TRUE(has(r.err,
+                  "b.yaml:6:4: malformed YAML: end of sequence not found: the list that "
+                  "begins at line 3, column 3 has its items ('-') at column 3; this one is "
+                  "at column 4"))
+      << r.err;
 }
 
 // On a terminal the table leads with what the model file asks for: the cruise car's outputs
