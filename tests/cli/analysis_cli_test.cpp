@@ -316,6 +316,33 @@ TEST_F(AnalysisCli, EquationsReadAccelerationsFirst) {
 // product of inertia of 1.9e-20 kg·m² (against 5.6e-3) that printed as
 // "-1.88799714869e-20*sin(spin)*pivot_wx_dot" and, with --all-symbols, as a parameter I_rotor_xz.
 // The textbook's symbols: the file's `symbols:` names, θ on request, a wrong name at its line.
+// The quarter car as Franklin writes it (FPE ch. 2), m₁ẍ + b(ẋ − ẏ) + k_s(x − y) + k_w(x − r) = 0:
+// each spring is relaxed at q = 0, so its free length and the joints' offsets cancel and are left
+// out. A suspension 5 cm shorter than that is stretched by 5 cm at q = 0: d0_suspension names it.
+TEST_F(AnalysisCli, TheQuarterCarsSpringsReadAsFranklinWritesThem) {
+  const CliRun r = momenta("equations " + example("quarter_car") + " --all-symbols");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(joined(r.out).find("m_wheel*wheel_travel_ddot + c_suspension*(wheel_travel_dot - "
+                               "body_travel_dot) + k_suspension*(wheel_travel - body_travel) + "
+                               "k_tyre*(wheel_travel - road) = 0"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(joined(r.out).find("m_body*body_travel_ddot + c_suspension*(body_travel_dot - "
+                               "wheel_travel_dot) + k_suspension*(body_travel - wheel_travel) = 0"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("l0_"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("L_"), std::string::npos) << r.out;
+  std::string car = slurp(test::source_dir() + "/examples/quarter_car.yaml");
+  car.replace(car.find("free_length: 0.5 "), 17, "free_length: 0.45");
+  const CliRun shorter =
+      momenta("equations " + test::quoted(write("short.yaml", car).string()) + " --all-symbols");
+  ASSERT_EQ(shorter.code, 0) << shorter.err;
+  EXPECT_NE(joined(shorter.out).find("k_suspension*(wheel_travel - body_travel - d0_suspension)"),
+            std::string::npos)
+      << shorter.out;
+}
+
 // A uniform rod (shape: slender_rod, 2 kg, 1 m, pivoted at its end) with its mass a symbol: its
 // inertia is m × its tensor per unit mass, so the equation reads m L²/3 θ̈ + m g L/2 sin θ = 0 in
 // m — (1/12 + 1/4) m = 0.333333333333 m — not 0.1666… + 0.25 m with I_G a number. Asked for
