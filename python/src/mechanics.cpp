@@ -168,9 +168,9 @@ and Coriolis terms, every vector in the frame's axes, as `momenta kinematics` gi
          const std::map<std::string, std::string>& names, const std::string& coordinates) {
         const symbolic::Format f = format_arg(format);
         if (coordinates != "quaternion" && !coordinates.starts_with("euler:")) {
-          throw InvalidArgument(fmt::format(
-              "coordinates '{}': expected 'quaternion' or 'euler:SEQUENCE' (euler:ZXZ)",
-              coordinates));
+          throw InvalidArgument(
+              fmt::format("coordinates '{}': expected 'quaternion' or 'euler:SEQUENCE' (euler:ZXZ)",
+                          coordinates));
         }
         if (form != "lagrange" && form != "newton-euler") {
           throw InvalidArgument(

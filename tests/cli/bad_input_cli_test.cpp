@@ -212,6 +212,23 @@ TEST_F(BadInputCli, ToleranceChoosesDopri5AndRowsLandOnTheGrid) {
   EXPECT_EQ(last, 5.0);
 }
 
+// Every line of a CSV has the header's number of columns and ends in a newline ("" passes: no
+// file was written); returns the number of rows.
+int expect_whole_rows(const std::string& text) {
+  if (text.empty()) return 0;
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);
+  const auto columns = std::count(line.begin(), line.end(), ',');
+  int row = 0;
+  while (std::getline(in, line)) {
+    EXPECT_EQ(std::count(line.begin(), line.end(), ','), columns) << "row " << row;
+    ++row;
+  }
+  EXPECT_EQ(text.back(), '\n');
+  return row;
+}
+
 // SIGINT or SIGTERM ends the run on a whole row: every line of the CSV has every column; exit
 // 130. (SIGTERM here: a shell's background job ignores SIGINT until the program takes it.) The
 // signal goes once the CSV has rows — the handler is in place before the file is opened — not
@@ -228,35 +245,7 @@ TEST_F(BadInputCli, InterruptLeavesWholeRows) {
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 130) << slurp(err);
   EXPECT_TRUE(has(slurp(err), "whole rows written")) << slurp(err);
-  const std::string text = slurp(csv);
-  std::istringstream in(text);
-  std::string line;
-  std::getline(in, line);
-  const auto columns = std::count(line.begin(), line.end(), ',');
-  int rows = 0;
-  while (std::getline(in, line)) {
-    EXPECT_EQ(std::count(line.begin(), line.end(), ','), columns) << "row " << rows;
-    ++rows;
-  }
-  EXPECT_GT(rows, 10);
-  ASSERT_FALSE(text.empty());
-  EXPECT_EQ(text.back(), '\n');
-}
-
-// Every line of a CSV has the header's number of columns and ends in a newline ("" passes: no
-// file was written).
-void expect_whole_rows(const std::string& text) {
-  if (text.empty()) return;
-  std::istringstream in(text);
-  std::string line;
-  std::getline(in, line);
-  const auto columns = std::count(line.begin(), line.end(), ',');
-  int row = 0;
-  while (std::getline(in, line)) {
-    EXPECT_EQ(std::count(line.begin(), line.end(), ','), columns) << "row " << row;
-    ++row;
-  }
-  EXPECT_EQ(text.back(), '\n');
+  EXPECT_GT(expect_whole_rows(slurp(csv)), 10);
 }
 
 // Runs `momenta <args>` as a shell script's background job (SIGINT ignored until momenta takes
