@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "momenta/common/error.hpp"
+#include "momenta/inertia/unit_moments.hpp"
 
 namespace momenta::inertia {
 namespace {
@@ -33,9 +34,10 @@ void require_inner(std::string_view shape, double inner, double outer) {
   }
 }
 
-// A body centred on its frame's origin with a diagonal inertia about it.
-MassProperties centred(double mass, double ixx, double iyy, double izz, double volume) {
-  return MassProperties(mass, Vec3::Zero(), Vec3(ixx, iyy, izz).asDiagonal(), volume);
+// A body of mass m centred on its frame's origin, its principal moments m × the unit moments.
+MassProperties centred(double m, const PrincipalMoments<double>& unit, double volume) {
+  return MassProperties(m, Vec3::Zero(), (m * Vec3(unit.xx, unit.yy, unit.zz)).asDiagonal(),
+                        volume);
 }
 
 }  // namespace
@@ -50,22 +52,19 @@ MassProperties point_mass(double mass) {
 MassProperties slender_rod(Amount amount, double length) {
   require_size("slender_rod", "length", length);
   const double m = amount.mass_for(length, "slender_rod");
-  const double i = m * length * length / 12.0;
-  return centred(m, i, i, 0.0, 0.0);
+  return centred(m, slender_rod_unit_moments(length), 0.0);
 }
 
 MassProperties thin_ring(Amount amount, double radius) {
   require_size("thin_ring", "radius", radius);
   const double m = amount.mass_for(2.0 * kPi * radius, "thin_ring");
-  const double r2 = radius * radius;
-  return centred(m, m * r2 / 2.0, m * r2 / 2.0, m * r2, 0.0);
+  return centred(m, thin_ring_unit_moments(radius), 0.0);
 }
 
 MassProperties thin_disk(Amount amount, double radius) {
   require_size("thin_disk", "radius", radius);
   const double m = amount.mass_for(kPi * radius * radius, "thin_disk");
-  const double r2 = radius * radius;
-  return centred(m, m * r2 / 4.0, m * r2 / 4.0, m * r2 / 2.0, 0.0);
+  return centred(m, annulus_unit_moments(0.0, radius), 0.0);
 }
 
 MassProperties annulus(Amount amount, double inner_radius, double outer_radius) {
@@ -74,8 +73,7 @@ MassProperties annulus(Amount amount, double inner_radius, double outer_radius) 
   // r_o² − r_i² factored, so a narrow washer keeps its digits.
   const double area = kPi * (outer_radius - inner_radius) * (outer_radius + inner_radius);
   const double m = amount.mass_for(area, "annulus");
-  const double r2 = inner_radius * inner_radius + outer_radius * outer_radius;
-  return centred(m, m * r2 / 4.0, m * r2 / 4.0, m * r2 / 2.0, 0.0);
+  return centred(m, annulus_unit_moments(inner_radius, outer_radius), 0.0);
 }
 
 MassProperties solid_cylinder(Amount amount, double radius, double length) {
@@ -83,10 +81,7 @@ MassProperties solid_cylinder(Amount amount, double radius, double length) {
   require_size("solid_cylinder", "length", length);
   const double volume = kPi * radius * radius * length;
   const double m = amount.mass_for(volume, "solid_cylinder");
-  const double r2 = radius * radius;
-  const double axial = m * r2 / 2.0;
-  const double transverse = m * (3.0 * r2 + length * length) / 12.0;
-  return centred(m, transverse, transverse, axial, volume);
+  return centred(m, cylinder_unit_moments(radius, length), volume);
 }
 
 MassProperties capsule(Amount amount, double radius, double length) {
@@ -97,13 +92,7 @@ MassProperties capsule(Amount amount, double radius, double length) {
   const double spheres_volume = 4.0 / 3.0 * kPi * r2 * radius;
   const double volume = cylinder_volume + spheres_volume;
   const double m = amount.mass_for(volume, "capsule");
-  // The mass shared by volume between the cylinder and the two hemispheres (a sphere together).
-  const double m_cylinder = m * (cylinder_volume / volume), m_spheres = m - m_cylinder;
-  const double axial = m_cylinder * r2 / 2.0 + m_spheres * 2.0 * r2 / 5.0;
-  const double offset = length / 2.0 + 3.0 * radius / 8.0;  // each hemisphere's centre of mass
-  const double transverse = m_cylinder * (3.0 * r2 + length * length) / 12.0 +
-                            m_spheres * (83.0 / 320.0 * r2 + offset * offset);
-  return centred(m, transverse, transverse, axial, volume);
+  return centred(m, capsule_unit_moments(radius, length), volume);
 }
 
 MassProperties hollow_cylinder(Amount amount, double inner_radius, double outer_radius,
@@ -114,28 +103,21 @@ MassProperties hollow_cylinder(Amount amount, double inner_radius, double outer_
   const double volume =
       kPi * (outer_radius - inner_radius) * (outer_radius + inner_radius) * length;
   const double m = amount.mass_for(volume, "hollow_cylinder");
-  const double r2 = inner_radius * inner_radius + outer_radius * outer_radius;
-  const double axial = m * r2 / 2.0;
-  const double transverse = m * (3.0 * r2 + length * length) / 12.0;
-  return centred(m, transverse, transverse, axial, volume);
+  return centred(m, hollow_cylinder_unit_moments(inner_radius, outer_radius, length), volume);
 }
 
 MassProperties cylindrical_shell(Amount amount, double radius, double length) {
   require_size("cylindrical_shell", "radius", radius);
   require_size("cylindrical_shell", "length", length);
   const double m = amount.mass_for(2.0 * kPi * radius * length, "cylindrical_shell");
-  const double r2 = radius * radius;
-  const double axial = m * r2;
-  const double transverse = m * r2 / 2.0 + m * length * length / 12.0;
-  return centred(m, transverse, transverse, axial, 0.0);
+  return centred(m, cylindrical_shell_unit_moments(radius, length), 0.0);
 }
 
 MassProperties solid_sphere(Amount amount, double radius) {
   require_size("solid_sphere", "radius", radius);
   const double volume = 4.0 / 3.0 * kPi * radius * radius * radius;
   const double m = amount.mass_for(volume, "solid_sphere");
-  const double i = 0.4 * m * radius * radius;
-  return centred(m, i, i, i, volume);
+  return centred(m, sphere_unit_moments(radius), volume);
 }
 
 MassProperties hollow_sphere(Amount amount, double inner_radius, double outer_radius) {
@@ -143,21 +125,16 @@ MassProperties hollow_sphere(Amount amount, double inner_radius, double outer_ra
   require_inner("hollow_sphere", inner_radius, outer_radius);
   const double a = inner_radius;
   const double b = outer_radius;
-  // b³ − a³ = (b − a)(b² + ab + a²) and (b⁵ − a⁵)/(b³ − a³) factored, so a thin wall keeps its
-  // digits (the differences cancel to (b − a) exactly).
-  const double q3 = b * b + a * b + a * a;
-  const double q5 = b * b * b * b + b * b * b * a + b * b * a * a + b * a * a * a + a * a * a * a;
-  const double volume = 4.0 / 3.0 * kPi * (b - a) * q3;
+  // b³ − a³ = (b − a)(b² + ab + a²), factored so that a thin wall keeps its digits.
+  const double volume = 4.0 / 3.0 * kPi * (b - a) * (b * b + a * b + a * a);
   const double m = amount.mass_for(volume, "hollow_sphere");
-  const double i = 0.4 * m * q5 / q3;
-  return centred(m, i, i, i, volume);
+  return centred(m, hollow_sphere_unit_moments(a, b), volume);
 }
 
 MassProperties spherical_shell(Amount amount, double radius) {
   require_size("spherical_shell", "radius", radius);
   const double m = amount.mass_for(4.0 * kPi * radius * radius, "spherical_shell");
-  const double i = 2.0 / 3.0 * m * radius * radius;
-  return centred(m, i, i, i, 0.0);
+  return centred(m, spherical_shell_unit_moments(radius), 0.0);
 }
 
 MassProperties box(Amount amount, const Vec3& size) {
@@ -166,18 +143,14 @@ MassProperties box(Amount amount, const Vec3& size) {
   require_size("box", "size z", size.z());
   const double volume = size.x() * size.y() * size.z();
   const double m = amount.mass_for(volume, "box");
-  const Vec3 s2 = size.cwiseProduct(size);
-  return centred(m, m * (s2.y() + s2.z()) / 12.0, m * (s2.x() + s2.z()) / 12.0,
-                 m * (s2.x() + s2.y()) / 12.0, volume);
+  return centred(m, box_unit_moments(size.x(), size.y(), size.z()), volume);
 }
 
 MassProperties thin_rectangular_plate(Amount amount, double width, double height) {
   require_size("thin_rectangular_plate", "width", width);
   require_size("thin_rectangular_plate", "height", height);
   const double m = amount.mass_for(width * height, "thin_rectangular_plate");
-  const double w2 = width * width;
-  const double h2 = height * height;
-  return centred(m, m * h2 / 12.0, m * w2 / 12.0, m * (w2 + h2) / 12.0, 0.0);
+  return centred(m, thin_plate_unit_moments(width, height), 0.0);
 }
 
 MassProperties solid_cone(Amount amount, double base_radius, double height) {
@@ -185,13 +158,11 @@ MassProperties solid_cone(Amount amount, double base_radius, double height) {
   require_size("solid_cone", "height", height);
   const double volume = kPi * base_radius * base_radius * height / 3.0;
   const double m = amount.mass_for(volume, "solid_cone");
-  const double r2 = base_radius * base_radius;
-  // About the centroid (at 3/4 h from the apex): I_axial = 3/10 m r², I_transverse =
-  // 3/20 m r² + 3/80 m h²; about the apex the transverse moment is 3/20 m r² + 3/5 m h².
-  const double axial = 0.3 * m * r2;
-  const double transverse = m * (3.0 / 20.0 * r2 + 3.0 / 80.0 * height * height);
+  // About the centroid, 3/4 h from the apex (about the apex the transverse moment is
+  // 3/20 m r² + 3/5 m h²).
+  const PrincipalMoments<double> unit = cone_unit_moments(base_radius, height);
   return MassProperties(m, Vec3(0.0, 0.0, 0.75 * height),
-                        Vec3(transverse, transverse, axial).asDiagonal(), volume);
+                        (m * Vec3(unit.xx, unit.yy, unit.zz)).asDiagonal(), volume);
 }
 
 MassProperties ellipsoid(Amount amount, const Vec3& semi_axes) {
@@ -200,9 +171,7 @@ MassProperties ellipsoid(Amount amount, const Vec3& semi_axes) {
   require_size("ellipsoid", "semi-axis c", semi_axes.z());
   const double volume = 4.0 / 3.0 * kPi * semi_axes.x() * semi_axes.y() * semi_axes.z();
   const double m = amount.mass_for(volume, "ellipsoid");
-  const Vec3 s2 = semi_axes.cwiseProduct(semi_axes);
-  return centred(m, m * (s2.y() + s2.z()) / 5.0, m * (s2.x() + s2.z()) / 5.0,
-                 m * (s2.x() + s2.y()) / 5.0, volume);
+  return centred(m, ellipsoid_unit_moments(semi_axes.x(), semi_axes.y(), semi_axes.z()), volume);
 }
 
 }  // namespace momenta::inertia

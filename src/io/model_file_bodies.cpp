@@ -109,6 +109,7 @@ void read_bodies(const YamlNode& root, Context& ctx, model::ModelBuilder& builde
     // Mass properties in B: a shape or a mesh (as in part files), a part file, or explicit.
     MassProperties mass_properties;
     bool uniform_solid = false;
+    std::optional<inertia::PrimitiveShape> shape;
     std::vector<PartSummary>& parts = ctx.body_parts[name];
     if (body.has("hole")) {
       body.at("hole").fail("a body cannot be a hole: cut holes in a part file and use 'part'");
@@ -119,6 +120,9 @@ void read_bodies(const YamlNode& root, Context& ctx, model::ModelBuilder& builde
       parts.back().name = name;
       mass_properties = parts.back().mass_properties;
       uniform_solid = true;
+      if (*kind == "shape") {
+        shape = inertia::PrimitiveShape{parts.back().kind, parts.back().sizes, parts.back().R_BS};
+      }
     } else if (kind) {
       mass_properties = read_part_body(body, ctx, parts);
     } else {
@@ -128,6 +132,7 @@ void read_bodies(const YamlNode& root, Context& ctx, model::ModelBuilder& builde
     b.name = name;
     b.mass_properties = mass_properties;
     b.inertia_scales_with_mass = uniform_solid;
+    b.shape = std::move(shape);
     builder.add_body(std::move(b));
   }
 }

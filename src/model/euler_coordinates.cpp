@@ -136,6 +136,7 @@ Model with_euler_coordinates(const Model& model, std::string_view sequence) {
     kept.name = body.name;
     kept.mass_properties = body.mass_properties;
     kept.inertia_scales_with_mass = body.inertia_scales_with_mass;
+    kept.shape = body.shape;
     builder.add_body(std::move(kept));
   }
   for (const Joint& j : model.joints()) {

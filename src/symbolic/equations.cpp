@@ -18,6 +18,7 @@
 #include "momenta/common/error.hpp"
 #include "momenta/common/number_text.hpp"
 #include "momenta/common/suggest.hpp"
+#include "momenta/inertia/unit_moments.hpp"
 #include "momenta/model/units.hpp"
 
 namespace momenta::symbolic {
@@ -618,16 +619,28 @@ class Derivation {
                                 "L_" + body.name);
     const double moment = Ic.cwiseAbs().maxCoeff();
     const char* axes = "xyz";
-    // A uniform solid's inertia with its mass a symbol: m × its tensor per unit mass (a rod's
-    // I_G = m L²/12), unless its moments are asked for as symbols themselves.
-    const bool scales = body.inertia_scales_with_mass && !GiNaC::is_a<GiNaC::numeric>(m);
+    const auto moment_name = [&](int r, int col) {
+      return fmt::format("I_{}_{}{}", body.name, axes[r], axes[col]);
+    };
+    bool moments_asked = false;
+    for (int r = 0; r < 3; ++r)
+      for (int col = r; col < 3; ++col)
+        moments_asked = moments_asked || params_.asked(moment_name(r, col));
+    // A uniform solid's inertia, unless its moments are asked for as symbols themselves: m × its
+    // tensor per unit mass when its mass is a symbol (a rod's I_G = m L²/12), and in its
+    // dimensions when those are symbols too (shape_inertia).
     M3 I;
+    const std::optional<M3> in_dimensions = shape_inertia(body, m, moments_asked);
     for (int r = 0; r < 3; ++r) {
       for (int col = r; col < 3; ++col) {
-        const std::string name = fmt::format("I_{}_{}{}", body.name, axes[r], axes[col]);
+        const std::string name = moment_name(r, col);
         const double value = shown_value(Ic(r, col), moment);
         ex e;
-        if (scales && !params_.asked(name)) {
+        if (in_dimensions) {
+          params_.known(name);
+          e = (*in_dimensions)(r, col);
+        } else if (!moments_asked && body.inertia_scales_with_mass &&
+                   !GiNaC::is_a<GiNaC::numeric>(m)) {
           params_.known(name);
           e = m * exact_number(value / mp.mass());
         } else {
@@ -647,6 +660,46 @@ class Derivation {
       for (int col = 0; col < 3; ++col)
         out.I_o(r, col) = I(r, col) + m * ((r == col ? cc : ex(0)) - c[r] * c[col]);
     return out;
+  }
+
+  // A body that is one standard shape, with a dimension of it asked for as a symbol (its
+  // `<size>_<body>`: length_rod, radius_wheel, size_x_block): its inertia about the centre of mass,
+  // R_BS (m × its unit moments in those dimensions) R_BSᵀ. Its other dimensions are numbers.
+  // Nothing when no dimension is asked for, or its moments are (every parameter is, with
+  // --all-symbols, which keeps the body's moments as the symbols I_*).
+  std::optional<M3> shape_inertia(const model::Body& body, const ex& m, bool moments_asked) {
+    if (!body.shape) return std::nullopt;
+    const inertia::PrimitiveShape& shape = *body.shape;
+    const auto size_name = [&](const std::string& key) { return key + "_" + body.name; };
+    bool asked = false;
+    for (const auto& [key, value] : shape.sizes) {
+      params_.known(size_name(key));
+      asked = asked || params_.asked(size_name(key));
+    }
+    if (!asked || moments_asked) return std::nullopt;
+    const auto size = [&](std::string_view key) -> ex {
+      for (const auto& [k, value] : shape.sizes) {
+        if (k == key) return params_(size_name(k), value, "m");
+      }
+      throw InvalidArgument(
+          fmt::format("equations: body '{}' ({}) has no size '{}'", body.name, shape.kind, key));
+    };
+    const auto unit = inertia::unit_moments_of<ex>(shape.kind, size);
+    if (!unit) return std::nullopt;
+    const ex moments[3] = {unit->xx, unit->yy, unit->zz};
+    M3 I;
+    for (int r = 0; r < 3; ++r) {
+      for (int col = r; col < 3; ++col) {
+        ex e = 0;
+        for (int k = 0; k < 3; ++k) {
+          const double rr = shape.R_BS(r, k) * shape.R_BS(col, k);
+          if (std::abs(rr) > 1e-15) e += exact_number(rr) * moments[k];
+        }
+        I(r, col) = m * e;
+        I(col, r) = I(r, col);
+      }
+    }
+    return I;
   }
 
   // Q: the elements' wrenches projected on the speeds, and the joint-space terms.

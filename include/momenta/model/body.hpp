@@ -1,9 +1,11 @@
 #pragma once
 // Bodies: rigid parts with mass properties, connected into a tree by joints.
 
+#include <optional>
 #include <string>
 
 #include "momenta/inertia/mass_properties.hpp"
+#include "momenta/inertia/unit_moments.hpp"
 
 namespace momenta::model {
 
@@ -24,6 +26,10 @@ struct Body {
   /// inertia then scales with its mass, I = m × (its tensor per unit mass), as the equations in
   /// symbols keep it when the mass is a symbol (I_G = m L²/12 for a rod).
   bool inertia_scales_with_mass = false;
+  /// The standard shape it is, when it is one (a model file's `shape:`): its kind, sizes and
+  /// orientation in B, from which the equations in symbols keep its inertia in its dimensions
+  /// when those are symbols (I_G = m L²/12 with L the rod's `length_<body>`).
+  std::optional<inertia::PrimitiveShape> shape;
 
   // --- set by ModelBuilder::build() ----------------------------------------------------------
   int index = -1;         ///< Index in Model::bodies(); 0 is the world.

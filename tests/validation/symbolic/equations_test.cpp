@@ -375,6 +375,107 @@ TEST(SymbolicEquations, LumpedClassicsReadAsTheTextbookWritesThem) {
                        "130000*(body_travel - wheel_travel) = 0");
 }
 
+// A shape's inertia in its dimensions when those are symbols: the compound pendulum (Beer &
+// Johnston §16.2, a uniform rod of length L on a pivot d from its centre G) reads
+// (m L²/12 + m d²) θ̈ + m g d sin θ = 0 — Ī = m L²/12, not a number; its length alone asked for
+// gives 2 kg × L²/12. Asked for as a symbol itself, I_rod_yy stays one.
+// The same expression up to the printed decimals: lhs − rhs of the two, expanded, evaluated with
+// every symbol at 1.1, 1.2, … (angles too), is round-off of the sum of its terms' sizes (1/12
+// prints as 0.08333333333333333, 17 digits: 1e-16 relative).
+void expect_same_equation_to_round_off(const std::string& printed, const std::string& expected) {
+  GiNaC::parser reader;
+  const auto sides = [&](const std::string& equation) {
+    const auto eq = equation.find(" = ");
+    return reader(equation.substr(0, eq)) - reader(equation.substr(eq + 3));
+  };
+  const GiNaC::ex difference = GiNaC::expand(sides(printed) - sides(expected));
+  GiNaC::exmap values;
+  double next = 1.1;
+  for (const auto& [name, symbol] : reader.get_syms()) {
+    values[symbol] = next;
+    next += 0.1;
+  }
+  const auto value = [&](const GiNaC::ex& e) {
+    return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e.subs(values))).to_double();
+  };
+  double size = 0.0;
+  if (GiNaC::is_a<GiNaC::add>(difference)) {
+    for (std::size_t k = 0; k < difference.nops(); ++k) size += std::abs(value(difference.op(k)));
+  }
+  const GiNaC::ex printed_lhs = GiNaC::expand(sides(printed));
+  for (std::size_t k = 0; k < printed_lhs.nops(); ++k) size += std::abs(value(printed_lhs.op(k)));
+  EXPECT_LE(std::abs(value(difference)), 1e-15 * size)
+      << "printed: " << printed << "\nexpected: " << expected;
+}
+
+TEST(SymbolicEquations, AShapesInertiaKeepsItsDimensionsAsSymbols) {
+  symbolic::EquationOptions options;
+  options.newton_euler = true;
+  options.symbols = {"m", "g", "L", "d"};
+  options.names = {{"m_rod", "m"}, {"length_rod", "L"}, {"L_rod", "d"}};
+  const model::Model rod = io::read_model_file(example("compound_pendulum")).model;
+  const symbolic::Equations e = symbolic::derive_equations(rod, options);
+  expect_same_equation_to_round_off(e.equation(0, symbolic::Format::text),
+                                    "(m*L^2/12 + m*d^2)*pivot_ddot + m*g*d*sin(pivot) = 0");
+  expect_matches_numerics(rod, e, 5, 2);
+  options.symbols = {"length_rod"};
+  options.names = {};
+  expect_same_equation_to_round_off(
+      symbolic::derive_equations(rod, options).equation(0, symbolic::Format::text),
+      "(length_rod^2/6 + 1/2)*pivot_ddot + 981/100*sin(pivot) = 0");
+  options.symbols = {"length_rod", "I_rod_yy"};
+  expect_same_equation(symbolic::derive_equations(rod, options).equation(0, symbolic::Format::text),
+                       "(I_rod_yy + 1/2)*pivot_ddot + 981/100*sin(pivot) = 0");
+}
+
+// Every standard shape of a model file, turned (ZYX 20°, 30°, 40°) and set off its body's origin
+// on a ball joint, with its mass and every dimension a symbol: the equations evaluate to CRBA's
+// mass matrix and the forward dynamics of the numeric engine, whose inertia the primitives give
+// (checked against the textbooks' tables: tests/validation/inertia).
+TEST(SymbolicEquations, EveryShapesInertiaInItsDimensionsEqualsTheNumericOne) {
+  const auto dir = test::make_scratch_dir("equations_shapes");
+  const std::vector<std::pair<std::string, std::string>> shapes = {
+      {"slender_rod", "length: 0.8"},
+      {"thin_ring", "radius: 0.3"},
+      {"thin_disk", "radius: 0.3"},
+      {"annulus", "inner_radius: 0.1, outer_radius: 0.3"},
+      {"cylinder", "radius: 0.1, length: 0.6"},
+      {"hollow_cylinder", "inner_radius: 0.05, outer_radius: 0.1, length: 0.6"},
+      {"cylindrical_shell", "radius: 0.1, length: 0.6"},
+      {"sphere", "radius: 0.2"},
+      {"hollow_sphere", "inner_radius: 0.1, outer_radius: 0.2"},
+      {"spherical_shell", "radius: 0.2"},
+      {"box", "size: [0.2, 0.3, 0.5]"},
+      {"thin_plate", "width: 0.4, height: 0.2"},
+      {"cone", "radius: 0.1, height: 0.3"},
+      {"ellipsoid", "semi_axes: [0.1, 0.2, 0.3]"},
+  };
+  for (const auto& [kind, sizes] : shapes) {
+    SCOPED_TRACE(kind);
+    const std::filesystem::path path = dir / (kind + ".yaml");
+    std::ofstream(path) << "name: " << kind
+                        << "\ngravity: [0, 0, -9.81]\nbodies:\n  - {name: body, shape: " << kind
+                        << ", mass: 2.0, " << sizes
+                        << ", position: [0.1, 0.05, -0.3], euler: {sequence: ZYX, angles_deg: "
+                           "[20, 30, 40]}}\njoints:\n  - {name: ball, type: spherical, parent: "
+                           "world, child: body}\n";
+    const model::Model model = io::read_model_file(path).model;
+    ASSERT_TRUE(model.body(1).shape.has_value());
+    symbolic::EquationOptions options;
+    options.newton_euler = true;
+    options.symbols = {"m_body"};
+    for (const auto& [key, value] : model.body(1).shape->sizes) {
+      std::string name = key + "_body";
+      std::replace(name.begin(), name.end(), '.', '_');
+      options.symbols.push_back(name);
+    }
+    const symbolic::Equations e = symbolic::derive_equations(model, options);
+    // Every dimension is in the equations (a symbol that cancelled would leave it a number).
+    EXPECT_EQ(e.parameters().size(), options.symbols.size());
+    expect_matches_numerics(model, e, 11, 2);
+  }
+}
+
 // The equations of `name` with every parameter a symbol and the textbook's names for them.
 symbolic::Equations textbook_symbols_of(const std::string& name,
                                         std::map<std::string, std::string> names) {
