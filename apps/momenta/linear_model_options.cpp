@@ -10,6 +10,7 @@
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
 #include "output_format.hpp"
+#include "rolling_steady_output.hpp"
 #include "state_file.hpp"
 
 namespace momenta::cli {
@@ -23,8 +24,10 @@ void add_linear_model_options(CLI::App* command, LinearModelOptions& o, bool wit
       ->add_option("--about", o.about,
                    "Operating point: 'initial' (the file's initial state), 'equilibrium' (the "
                    "static equilibrium Newton finds from it), 'steady' (the steady motion at "
-                   "the initial state: of one spinning body on a ball or free joint, or of a "
-                   "rotor turning on its joint, its angle left out) or a STATE.json file "
+                   "the initial state: of one spinning body on a ball or free joint, of a "
+                   "rolling body, or of a rotor turning on its joint, its angle left out), "
+                   "'auto' (the initial state at rest, else its steady motion, else the "
+                   "equilibrium: the report's default) or a STATE.json file "
                    "{\"q\": [...], \"v\": [...], \"t\": 0}")
       ->capture_default_str();
   command
@@ -51,47 +54,28 @@ LoadedLinearModel load_linear_model(const LinearModelOptions& o) {
 }
 
 LoadedLinearModel load_linear_model(const LinearModelOptions& o, io::ModelFile file) {
-  LoadedLinearModel r{std::move(file), {}, {}, std::nullopt};
-  const model::Model& model = r.file.model;
+  const model::Model& model = file.model;
   analysis::LinearizationOptions options;
   options.inputs = o.inputs;
   options.outputs = o.outputs;
   options.independent = o.independent;
-  options.output_specs = r.file.outputs;
-  analysis::OperatingPoint point;
-  if (o.about == "steady") {
-    if (analysis::euler_poisson_applies(model)) {
-      throw CLI::ValidationError(
-          "--about",
-          "steady: a body spinning on a ball or free joint is analysed in Euler–Poisson "
-          "variables, which have no inputs or outputs (`momenta modes` and `momenta linearize` "
-          "show them); for a response, hold the rotor by a universal joint and a revolute spin "
-          "joint (examples/rotor_on_bearings.yaml)");
+  options.output_specs = file.outputs;
+  const std::optional<analysis::OperatingPointChoice> choice =
+      analysis::operating_point_choice(o.about);
+  std::optional<analysis::OperatingPoint> given;
+  if (!choice) {
+    if (!std::filesystem::exists(o.about)) {
+      throw FileError(fmt::format(
+          "--about '{}': not 'auto', 'initial', 'equilibrium', 'steady' or an existing state file",
+          o.about));
     }
-    if (analysis::rolling_steady_applies(model)) {
-      throw CLI::ValidationError(
-          "--about",
-          "steady: a rolling body's steady motion is linearized seen from its turning frame, "
-          "without inputs or outputs (`momenta modes` and `momenta linearize` show it)");
-    }
-    r.steady =
-        analysis::joint_steady_motion(model, analysis::initial_operating_point(model), options);
-    r.linear = r.steady->full;
-    r.linear.system = r.steady->reduced;
-    r.about = fmt::format(
-        "the steady motion: {} turning at {:.6g}, the turning position{} left out (residual "
-        "{:.2g}, cyclic to {:.2g})",
-        fmt::join(r.steady->turning_names, ", "), r.steady->speed,
-        r.steady->turning.size() == 1 ? "" : "s", r.steady->residual, r.steady->cyclic_residual);
-    return r;
+    given = read_state_file(o.about, model);
   }
-  if (o.about == "initial") {
-    point = analysis::initial_operating_point(model);
-    r.about = "the initial state";
-  } else if (o.about == "equilibrium") {
-    const analysis::Equilibrium e = analysis::find_equilibrium(model, model.initial_q());
-    point = e.point;
-    r.about = fmt::format("the static equilibrium ({} Newton iterations)", e.iterations);
+  analysis::LinearAnalysis result = analysis::linear_analysis_about(
+      model, choice.value_or(analysis::OperatingPointChoice::given), options, given, o.about);
+  if (result.equilibrium) {
+    const analysis::Equilibrium& e = *result.equilibrium;
+    result.about += fmt::format(" ({} Newton iterations)", e.iterations);
     if (!e.stable()) {
       std::vector<std::string> growth;
       for (const auto& z : e.unstable_eigenvalues) growth.push_back(complex_text(z));
@@ -100,42 +84,42 @@ LoadedLinearModel load_linear_model(const LinearModelOptions& o, io::ModelFile f
                  "part {}\n",
                  fmt::join(growth, ", "));
     }
-  } else {
-    if (!std::filesystem::exists(o.about)) {
-      throw FileError(
-          fmt::format("--about '{}': not 'initial', 'equilibrium' or an existing state "
-                      "file",
-                      o.about));
-    }
-    point = read_state_file(o.about, model);
-    r.about = o.about;
   }
-  r.linear = analysis::linearize(model, point, options);
-  return r;
+  return LoadedLinearModel{std::move(file), std::move(result)};
 }
 
-LoadedSteadyMotion load_steady_motion(io::ModelFile file) {
-  LoadedSteadyMotion r{std::move(file), {}, {}, std::nullopt};
-  r.body = analysis::spinning_body(r.file.model, analysis::initial_operating_point(r.file.model));
-  try {
-    r.modes = analysis::steady_motion_modes(r.body);
-  } catch (const InvalidArgument& not_steady) {
-    // A symmetric top precessing steadily at a tilt is steady in its precessing frame.
-    std::optional<analysis::SteadyPrecession> p;
-    try {
-      p = analysis::steady_precession(r.body);
-    } catch (const InvalidArgument&) {
-      throw not_steady;
-    }
-    if (!(p->residual <= 1e-6)) throw not_steady;
-    r.precession = p;
+void require_channels(const LoadedLinearModel& loaded) {
+  switch (loaded.result.kind) {
+    case analysis::LinearAnalysisKind::joint_coordinates:
+    case analysis::LinearAnalysisKind::joint_steady:
+      return;
+    case analysis::LinearAnalysisKind::spinning_body:
+    case analysis::LinearAnalysisKind::steady_precession:
+      throw CLI::ValidationError(
+          "--about",
+          "steady: a body spinning on a ball or free joint is analysed in Euler–Poisson "
+          "variables, which have no inputs or outputs (`momenta modes` and `momenta linearize` "
+          "show them); for a response, hold the rotor by a universal joint and a revolute spin "
+          "joint (examples/rotor_on_bearings.yaml)");
+    case analysis::LinearAnalysisKind::rolling_steady:
+      throw CLI::ValidationError(
+          "--about",
+          "steady: a rolling body's steady motion is linearized seen from its turning frame, "
+          "without inputs or outputs (`momenta modes` and `momenta linearize` show it)");
   }
-  return r;
 }
 
 namespace {
 
-void print_precession_text(const LoadedSteadyMotion& s) {
+// What the spinning body's printers read: the file, the body and its modes or precession.
+struct SpinningBodyView {
+  const io::ModelFile& file;
+  const analysis::SpinningBody& body;
+  const std::optional<analysis::SteadyMotionModes>& modes;
+  const std::optional<analysis::SteadyPrecession>& precession;
+};
+
+void print_precession_text(const SpinningBodyView& s) {
   const analysis::SteadyPrecession& p = *s.precession;
   const double deg = 180.0 / M_PI;
   fmt::print(
@@ -165,7 +149,7 @@ void print_precession_text(const LoadedSteadyMotion& s) {
       "potential in θ; small disturbances nutate about it\n");
 }
 
-json precession_json(const LoadedSteadyMotion& s) {
+json precession_json(const SpinningBodyView& s) {
   json j = {{"model", s.file.name},
             {"about", "steady"},
             {"motion", "steady precession"},
@@ -177,9 +161,9 @@ json precession_json(const LoadedSteadyMotion& s) {
   return j;
 }
 
-void print_steady_motion_text(const LoadedSteadyMotion& s, bool with_matrix) {
+void print_steady_motion_text(const SpinningBodyView& s, bool with_matrix) {
   const analysis::SpinningBody& b = s.body;
-  const analysis::SteadyMotionModes& m = s.modes;
+  const analysis::SteadyMotionModes& m = *s.modes;
   fmt::print("{}: steady motion of body '{}' on {} joint '{}' (Euler–Poisson residual {:.3g})\n",
              s.file.name, b.body, b.fixed_point ? "spherical" : "free", b.joint, m.residual);
   fmt::print("  ω = [{:.6g}, {:.6g}, {:.6g}] rad/s in the body frame", b.w_B.x(), b.w_B.y(),
@@ -206,8 +190,8 @@ void print_steady_motion_text(const LoadedSteadyMotion& s, bool with_matrix) {
   fmt::print("\n{}\n", m.verdict);
 }
 
-json steady_motion_json(const LoadedSteadyMotion& s) {
-  const analysis::SteadyMotionModes& m = s.modes;
+json steady_motion_json(const SpinningBodyView& s) {
+  const analysis::SteadyMotionModes& m = *s.modes;
   json j;
   j["model"] = s.file.name;
   j["about"] = "steady";
@@ -287,21 +271,43 @@ json whirls_json(const analysis::JointSteadyMotion& steady) {
   return j;
 }
 
-void print_steady_motion(io::ModelFile file, bool json, bool with_matrix) {
-  const LoadedSteadyMotion steady = load_steady_motion(std::move(file));
+namespace {
+
+void print_spinning_body(const LoadedLinearModel& loaded, bool as_json, bool with_matrix) {
+  const analysis::LinearAnalysis& r = loaded.result;
+  const SpinningBodyView steady{loaded.file, *r.spinning_body, r.spinning_modes, r.precession};
   if (steady.precession) {
-    if (json) {
+    if (as_json) {
       fmt::print("{}\n", json_text(precession_json(steady)));
     } else {
       print_precession_text(steady);
     }
     return;
   }
-  if (json) {
+  if (as_json) {
     fmt::print("{}\n", json_text(steady_motion_json(steady)));
   } else {
     print_steady_motion_text(steady, with_matrix);
   }
+}
+
+}  // namespace
+
+bool print_motion_without_channels(const LoadedLinearModel& loaded, bool as_json,
+                                   bool with_matrix) {
+  switch (loaded.result.kind) {
+    case analysis::LinearAnalysisKind::spinning_body:
+    case analysis::LinearAnalysisKind::steady_precession:
+      print_spinning_body(loaded, as_json, with_matrix);
+      return true;
+    case analysis::LinearAnalysisKind::rolling_steady:
+      print_rolling_steady_modes(loaded.file, *loaded.result.rolling_steady, as_json, with_matrix);
+      return true;
+    case analysis::LinearAnalysisKind::joint_coordinates:
+    case analysis::LinearAnalysisKind::joint_steady:
+      return false;
+  }
+  return false;
 }
 
 json complex_json(std::complex<double> z) { return json::array({z.real() + 0.0, z.imag() + 0.0}); }

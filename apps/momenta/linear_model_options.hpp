@@ -15,6 +15,7 @@
 #include "momenta/analysis/equilibrium.hpp"
 #include "momenta/analysis/joint_steady_motion.hpp"
 #include "momenta/analysis/linearize.hpp"
+#include "momenta/analysis/operating_point.hpp"
 #include "momenta/analysis/rolling_steady_motion.hpp"
 #include "momenta/analysis/steady_motion.hpp"
 #include "momenta/common/number_text.hpp"
@@ -25,7 +26,7 @@ namespace momenta::cli {
 
 struct LinearModelOptions {
   ModelArgument model;
-  std::string about = "initial";  // initial | equilibrium | STATE.json
+  std::string about = "initial";  // auto | initial | equilibrium | steady | STATE.json
   std::vector<std::string> inputs;
   std::vector<std::string> outputs;
   std::vector<std::string> independent;  // constrained models: coordinates to keep as states
@@ -35,36 +36,26 @@ struct LinearModelOptions {
 /// command.
 void add_linear_model_options(CLI::App* command, LinearModelOptions& options, bool with_channels);
 
-/// The model file and its linearization about the point --about names. An unstable equilibrium
-/// is noted on stderr.
+/// The model file and its linear analysis about the point --about names
+/// (analysis::linear_analysis_about: the rule the report and Python share). An equilibrium's
+/// sentence gains its Newton iterations, and an unstable one is noted on stderr.
 struct LoadedLinearModel {
   io::ModelFile file;
-  analysis::LinearModel linear;
-  std::string about;  // "initial state", "equilibrium", "steady motion …" or the state file
-  /// --about steady on a model in joint coordinates: the steady motion; `linear` is its full
-  /// linearization with `system` the reduced one (the turning positions left out).
-  std::optional<analysis::JointSteadyMotion> steady;
+  analysis::LinearAnalysis result;
 };
 LoadedLinearModel load_linear_model(const LinearModelOptions& options);
 /// The same with the model file already read.
 LoadedLinearModel load_linear_model(const LinearModelOptions& options, io::ModelFile file);
 
-/// --about steady: the model's one spinning body at its initial state, checked to be in a
-/// steady motion, and the linear analysis about it (analysis/steady_motion.hpp).
-struct LoadedSteadyMotion {
-  io::ModelFile file;
-  analysis::SpinningBody body;
-  analysis::SteadyMotionModes modes;
-  /// Set instead of `modes` when the state is a symmetric top's steady precession at a tilt.
-  std::optional<analysis::SteadyPrecession> precession;
-};
-LoadedSteadyMotion load_steady_motion(io::ModelFile file);
+/// Throws CLI::ValidationError on --about unless the analysis has inputs and outputs (a
+/// spinning body's and a rolling body's steady motions have none): what `response` needs.
+void require_channels(const LoadedLinearModel& loaded);
 
-/// `modes` and `linearize` with --about steady on one body on a ball or free joint
-/// (analysis::euler_poisson_applies): prints the steady motion's analysis in Euler–Poisson
-/// variables, as JSON or as text (with the matrix A when `with_matrix`). Other models' steady
-/// motions are in joint coordinates: load_linear_model.
-void print_steady_motion(io::ModelFile file, bool json, bool with_matrix);
+/// `modes` and `linearize` about a steady motion without inputs or outputs: of one body on a
+/// ball or free joint (in Euler–Poisson variables, or a precession's roots and nutation) or of a
+/// rolling body (seen from its turning frame). Prints it as JSON or as text (with the matrix A
+/// when `with_matrix`) and returns true; false for the other kinds, which print nothing here.
+bool print_motion_without_channels(const LoadedLinearModel& loaded, bool as_json, bool with_matrix);
 
 /// JSON of a steady precession's roots at its tilt and spin (shared by `modes --about steady` and
 /// `steady`): tilt, spin, I1, I3, mgl, slow, fast, minimum_spin, gyroscopic, gyroscopic_error,

@@ -10,7 +10,6 @@
 #include "linear_model_options.hpp"
 #include "momenta/analysis/modes.hpp"
 #include "momenta/frontend/model_loading.hpp"
-#include "rolling_steady_output.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -23,21 +22,15 @@ struct LinearizeOptions {
 };
 
 void run(const LinearizeOptions& o) {
-  io::ModelFile file = load_model(o.model.model);
-  if (o.model.about == "steady" && analysis::euler_poisson_applies(file.model)) {
-    return print_steady_motion(std::move(file), o.json, true);
-  }
-  if (o.model.about == "steady" && analysis::rolling_steady_applies(file.model)) {
-    return print_rolling_steady_modes(file, o.json, true);
-  }
-  const LoadedLinearModel loaded = load_linear_model(o.model, std::move(file));
-  const analysis::LinearModel& lin = loaded.linear;
+  const LoadedLinearModel loaded = load_linear_model(o.model);
+  if (print_motion_without_channels(loaded, o.json, true)) return;
+  const analysis::LinearModel& lin = loaded.result.linear;
   const analysis::StateSpace& sys = lin.system;
   const analysis::Modes m = analysis::modes(sys);
   if (o.json) {
     json j;
     j["model"] = loaded.file.name;
-    j["about"] = loaded.about;
+    j["about"] = loaded.result.about;
     j["t"] = lin.point.t;
     j["q"] = json(std::vector<double>(lin.point.q.data(), lin.point.q.data() + lin.point.q.size()));
     j["v"] = json(std::vector<double>(lin.point.v.data(), lin.point.v.data() + lin.point.v.size()));
@@ -54,11 +47,12 @@ void run(const LinearizeOptions& o) {
     j["states_shifted"] = lin.states_shifted;
     j["output_values"] = json(std::vector<double>(
         lin.output_values.data(), lin.output_values.data() + lin.output_values.size()));
-    if (loaded.steady) j["steady_motion"] = whirls_json(*loaded.steady);
+    if (loaded.result.joint_steady) j["steady_motion"] = whirls_json(*loaded.result.joint_steady);
     fmt::print("{}\n", json_text(j));
     return;
   }
-  fmt::print("{}: linearized about {} (t = {:g} s)\n", loaded.file.name, loaded.about, lin.point.t);
+  fmt::print("{}: linearized about {} (t = {:g} s)\n", loaded.file.name, loaded.result.about,
+             lin.point.t);
   fmt::print("states  ({}): {}\n", sys.state_count(), fmt::join(sys.state_names(), ", "));
   fmt::print("inputs  ({}): {}\n", sys.input_count(), fmt::join(sys.input_names(), ", "));
   fmt::print("outputs ({}): {}\n\n", sys.output_count(), fmt::join(sys.output_names(), ", "));

@@ -16,7 +16,6 @@
 #include "momenta/analysis/modes_text.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
-#include "rolling_steady_output.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -31,20 +30,14 @@ struct ModesOptions {
 double hz(double omega) { return omega / (2 * std::numbers::pi); }
 
 void run(const ModesOptions& o) {
-  io::ModelFile file = load_model(o.model.model);
-  if (o.model.about == "steady" && analysis::euler_poisson_applies(file.model)) {
-    return print_steady_motion(std::move(file), o.json, false);
-  }
-  if (o.model.about == "steady" && analysis::rolling_steady_applies(file.model)) {
-    return print_rolling_steady_modes(file, o.json, false);
-  }
-  const LoadedLinearModel loaded = load_linear_model(o.model, std::move(file));
-  const analysis::LinearModel& lin = loaded.linear;
+  const LoadedLinearModel loaded = load_linear_model(o.model);
+  if (print_motion_without_channels(loaded, o.json, false)) return;
+  const analysis::LinearModel& lin = loaded.result.linear;
   const analysis::Modes m = analysis::modes(lin.system);
   // Undamped normal modes exist where K is symmetric (a conservative model at an equilibrium).
   std::optional<analysis::NormalModes> normal;
   std::string why_not;
-  if (loaded.steady) {
+  if (loaded.result.joint_steady) {
     why_not = "a steady motion: its gyroscopic terms couple the coordinates";
   } else {
     try {
@@ -56,7 +49,7 @@ void run(const ModesOptions& o) {
   if (o.json) {
     json j;
     j["model"] = loaded.file.name;
-    j["about"] = loaded.about;
+    j["about"] = loaded.result.about;
     j["state_names"] = m.state_names;
     json modes = json::array();
     for (const analysis::Mode& mode : m.modes) {
@@ -71,7 +64,7 @@ void run(const ModesOptions& o) {
                        {"shape", std::move(shape)}});
     }
     j["modes"] = std::move(modes);
-    if (loaded.steady) j["steady_motion"] = whirls_json(*loaded.steady);
+    if (loaded.result.joint_steady) j["steady_motion"] = whirls_json(*loaded.result.joint_steady);
     if (normal) {
       j["coordinate_names"] = normal->coordinate_names;
       json nm = json::array();
@@ -89,13 +82,13 @@ void run(const ModesOptions& o) {
     fmt::print("{}\n", json_text(j));
     return;
   }
-  fmt::print("{}: modes about {} ({} states)\n", loaded.file.name, loaded.about,
+  fmt::print("{}: modes about {} ({} states)\n", loaded.file.name, loaded.result.about,
              m.state_names.size());
   // Modes of a state that is not at rest describe the motion linearized at that instant only.
   // A state that moves is no equilibrium either, even without acceleration (a sleeping top).
   const double worst = analysis::largest_acceleration(lin);
   const double fastest = analysis::largest_speed(lin);
-  if (!loaded.steady &&
+  if (!loaded.result.joint_steady &&
       (worst > analysis::kAtRestAcceleration || fastest > analysis::kAtRestSpeed)) {
     fmt::print(
         "note: this state is not an equilibrium (largest acceleration {:.4g}, largest speed "
@@ -108,8 +101,8 @@ void run(const ModesOptions& o) {
   if (normal) {
     fmt::print("\nundamped normal modes (K φ = ω² M φ):\n{}",
                analysis::normal_modes_table(*normal));
-  } else if (loaded.steady) {
-    print_whirls(*loaded.steady);
+  } else if (loaded.result.joint_steady) {
+    print_whirls(*loaded.result.joint_steady);
   } else {
     fmt::print("\nno undamped normal modes: {}\n", why_not);
   }

@@ -95,7 +95,8 @@ void run(const ResponseOptions& o) {
   model.inputs = {o.input};
   model.outputs = {o.output};
   const LoadedLinearModel loaded = load_linear_model(model);
-  const analysis::StateSpace& sys = loaded.linear.system;
+  require_channels(loaded);
+  const analysis::StateSpace& sys = loaded.result.linear.system;
   const analysis::TransferFunction tf = analysis::transfer_function(sys, 0, 0);
   if (!o.bode.empty() && tf.is_zero()) {
     // G ≡ 0 has no magnitude in dB to plot (−∞ everywhere).
@@ -171,7 +172,7 @@ void run(const ResponseOptions& o) {
     j["model"] = loaded.file.name;
     j["input"] = o.input;
     j["output"] = o.output;
-    j["about"] = loaded.about;
+    j["about"] = loaded.result.about;
     j["response"] = o.step ? "step" : o.impulse ? "impulse" : "bode";
     if (o.bode.empty()) j["amplitude"] = o.amplitude;
     j["gain"] = tf.gain;
@@ -187,7 +188,7 @@ void run(const ResponseOptions& o) {
   }
   if (emit_csv(o.csv, csv)) return;
   fmt::print("{}: {} → {}, linearized about {}\n", loaded.file.name, o.input, o.output,
-             loaded.about);
+             loaded.result.about);
   fmt::print("G(s) = K ∏(s − z)/∏(s − p): K = {}, relative degree {}\n",
              number_text(tf.gain, o.digits), tf.relative_degree());
   fmt::print("poles (1/s): {}\n", complex_list(tf.poles, o.digits));

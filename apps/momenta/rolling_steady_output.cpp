@@ -116,12 +116,11 @@ void print_rolling_motion(const analysis::RollingSteadyModes& modes, const std::
              joint.size() + 8, list(m.point.v));
 }
 
-void print_rolling_steady_modes(const io::ModelFile& file, bool as_json, bool with_matrix) {
-  const model::Model& model = file.model;
-  const analysis::RollingBodyInfo info = analysis::rolling_body_info(model);
-  const analysis::RollingSteadyMotion motion =
-      analysis::rolling_steady_motion(model, analysis::initial_operating_point(model));
-  const analysis::RollingSteadyModes modes = analysis::rolling_steady_modes(model, motion);
+void print_rolling_steady_modes(const io::ModelFile& file,
+                                const analysis::RollingSteadyModes& modes, bool as_json,
+                                bool with_matrix) {
+  const analysis::RollingBodyInfo info = analysis::rolling_body_info(file.model);
+  const analysis::RollingSteadyMotion& motion = modes.motion;
   const analysis::StateSpace& A = modes.reduced;
   if (as_json) {
     json j;

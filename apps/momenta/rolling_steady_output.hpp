@@ -24,9 +24,11 @@ nlohmann::ordered_json rolling_motion_json(const analysis::RollingSteadyModes& m
 void print_rolling_motion(const analysis::RollingSteadyModes& modes, const std::string& joint,
                           int index, int count);
 
-/// `modes` and `linearize` with --about steady on a rolling body: the motion at the model's
-/// initial state, checked, and its modes seen from the turning frame (with the matrix A when
-/// `with_matrix`).
-void print_rolling_steady_modes(const io::ModelFile& file, bool json, bool with_matrix);
+/// `modes` and `linearize` about a rolling body's steady motion (analysis::
+/// linear_analysis_about): the motion and its modes seen from the turning frame (with the
+/// matrix A when `with_matrix`).
+void print_rolling_steady_modes(const io::ModelFile& file,
+                                const analysis::RollingSteadyModes& modes, bool json,
+                                bool with_matrix);
 
 }  // namespace momenta::cli

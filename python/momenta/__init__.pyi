@@ -642,6 +642,10 @@ def joint_steady_motion(model: Model, *, inputs: List[str] = [], outputs: List[s
     """A rotor turning at constant speed on its joint while everything else rests (its initial state, or q, v), checked to be a steady motion with a cyclic angle, and linearized without that angle (Routh): as `momenta linearize/modes/response --about steady`. Raises InvalidArgument naming why a state is no"""
     ...
 
+def linear_analysis(model: Model, about: str = 'auto', *, inputs: List[str] = [], outputs: List[str] = [], independent: List[str] = [], q: object = None, v: object = None, t: float = 0.0) -> LinearAnalysis:
+    """The linear analysis about the operating point `about` names — 'auto' (the initial state at rest; where it moves, its steady motion if it is one, else the static equilibrium found from it), 'initial', 'equilibrium', 'steady', or 'given' with q= (and v=, t=) — chosen by the same rule as `momenta modes"""
+    ...
+
 def linearize(model: Model, *, inputs: List[str] = [], outputs: List[str] = [], q: object = None, v: object = None, t: float = 0.0, angle_step: float = 0.0, length_step: float = 0.0, independent: List[str] = [], derivatives: str = 'analytic') -> LinearModel:
     """Linearizes the model about (t, q, v) — its initial state unless given — as `momenta linearize` does: states [δq; v] over the free joints, inputs the named signals (all by default), outputs the named model outputs, states or coordinates (the model file's outputs, or every configuration state, by defa"""
     ...

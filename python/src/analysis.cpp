@@ -16,6 +16,7 @@
 #include "momenta/analysis/linearize.hpp"
 #include "momenta/analysis/modes.hpp"
 #include "momenta/analysis/modes_text.hpp"
+#include "momenta/analysis/operating_point.hpp"
 #include "momenta/analysis/rolling_steady_motion.hpp"
 #include "momenta/analysis/state_space.hpp"
 #include "momenta/analysis/steady_motion.hpp"
@@ -664,6 +665,96 @@ void bind_campbell(py::module_& m) {
       "takes rev/min).");
 }
 
+void bind_operating_point(py::module_& m) {
+  py::class_<LinearAnalysis>(m, "LinearAnalysis", R"doc(
+A linear analysis about an operating point chosen as the command line's --about and the report's
+linear panel choose it (docs/analysis.md, operating points): `kind` ('joint_coordinates',
+'joint_steady', 'rolling_steady', 'spinning_body', 'steady_precession'), `about` (the sentence
+saying what it was taken about, and with 'auto' why), `linear` (the LinearModel whose poles and
+modes it shows: linearize()'s, a steady motion's reduced one, Euler–Poisson's A, or the nutation
+about a precession), `shape_to_tangent` (nv × states: how a mode's shape moves the joints), the
+initial state's `largest_acceleration` and `largest_speed`, and what each kind found:
+`equilibrium`, `joint_steady`, `rolling_steady`, `spinning_modes`, `precession` (None where not
+that kind).)doc")
+      .def_property_readonly("kind",
+                             [](const LinearAnalysis& r) {
+                               switch (r.kind) {
+                                 case LinearAnalysisKind::joint_coordinates:
+                                   return "joint_coordinates";
+                                 case LinearAnalysisKind::joint_steady:
+                                   return "joint_steady";
+                                 case LinearAnalysisKind::rolling_steady:
+                                   return "rolling_steady";
+                                 case LinearAnalysisKind::spinning_body:
+                                   return "spinning_body";
+                                 case LinearAnalysisKind::steady_precession:
+                                   return "steady_precession";
+                               }
+                               return "?";
+                             })
+      .def_readonly("about", &LinearAnalysis::about)
+      .def_readonly("linear", &LinearAnalysis::linear)
+      .def_property_readonly("shape_to_tangent",
+                             [](const LinearAnalysis& r) { return to_numpy(r.shape_to_tangent); })
+      .def_readonly("largest_acceleration", &LinearAnalysis::largest_acceleration)
+      .def_readonly("largest_speed", &LinearAnalysis::largest_speed)
+      .def_readonly("equilibrium", &LinearAnalysis::equilibrium)
+      .def_readonly("joint_steady", &LinearAnalysis::joint_steady)
+      .def_readonly("rolling_steady", &LinearAnalysis::rolling_steady)
+      .def_readonly("spinning_modes", &LinearAnalysis::spinning_modes)
+      .def_readonly("precession", &LinearAnalysis::precession)
+      .def_property_readonly("has_channels", &LinearAnalysis::has_channels)
+      .def("__repr__", [](const LinearAnalysis& r) {
+        return fmt::format("<momenta.LinearAnalysis about {}: {} states>", r.about,
+                           r.linear.system.A().rows());
+      });
+  m.def(
+      "linear_analysis",
+      [](const ModelHandle& h, const std::string& about, const std::vector<std::string>& inputs,
+         const std::vector<std::string>& outputs, const std::vector<std::string>& independent,
+         const py::object& q, const py::object& v, double t) {
+        const bool state_given = !q.is_none() || !v.is_none();
+        std::optional<OperatingPointChoice> choice = operating_point_choice(about);
+        if (about == "given" || (state_given && about == "auto")) {
+          choice = OperatingPointChoice::given;
+        }
+        if (!choice) {
+          throw InvalidArgument(fmt::format(
+              "about='{}': expected 'auto', 'initial', 'equilibrium', 'steady' or 'given' (with "
+              "q= and v=)",
+              about));
+        }
+        if (state_given && *choice != OperatingPointChoice::given) {
+          throw InvalidArgument(
+              fmt::format("about='{}' starts from the model's initial state: q= and v= are for "
+                          "about='given'",
+                          about));
+        }
+        if (*choice == OperatingPointChoice::given && !state_given) {
+          throw InvalidArgument("about='given' needs the state: q= (and v=, t=)");
+        }
+        LinearizationOptions options;
+        options.inputs = inputs;
+        options.outputs = outputs;
+        options.independent = independent;
+        if (h.file) options.output_specs = h.file->outputs;
+        std::optional<OperatingPoint> given;
+        if (state_given) given = point_of(h, q, v, t);
+        return linear_analysis_about(h.model(), *choice, options, given, "the given state");
+      },
+      py::arg("model"), py::arg("about") = "auto", py::kw_only(),
+      py::arg("inputs") = std::vector<std::string>{},
+      py::arg("outputs") = std::vector<std::string>{},
+      py::arg("independent") = std::vector<std::string>{}, py::arg("q") = py::none(),
+      py::arg("v") = py::none(), py::arg("t") = 0.0,
+      R"doc(The linear analysis about the operating point `about` names — 'auto' (the initial state
+at rest; where it moves, its steady motion if it is one, else the static equilibrium found from
+it), 'initial', 'equilibrium', 'steady', or 'given' with q= (and v=, t=) — chosen by the same rule
+as `momenta modes --about` and the report's linear panel. Returns a LinearAnalysis. Raises
+InvalidArgument when the choice does not apply (naming why), NumericalError when no equilibrium
+is found.)doc");
+}
+
 void bind_analysis(py::module_& m) {
   bind_state_space(m);
   bind_linearization(m);
@@ -675,6 +766,7 @@ void bind_analysis(py::module_& m) {
   bind_find_steady_precession(m);
   bind_rolling_steady_motion(m);
   bind_campbell(m);
+  bind_operating_point(m);
 }
 
 }  // namespace momenta::python

@@ -351,6 +351,7 @@ SteadyPrecession steady_precession(const SpinningBody& b) {
                     b.body, r.tilt));
   }
   r.spin = b.w_B.dot(e);
+  r.axis_B = e;
   precession_roots(r);
   // The state's ω as φ̇ ẑ + ψ̇ e (least squares in the plane of the vertical and the axis).
   Eigen::Matrix<double, 3, 2> basis;

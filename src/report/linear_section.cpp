@@ -14,6 +14,7 @@
 #include "momenta/analysis/joint_steady_motion.hpp"
 #include "momenta/analysis/modes.hpp"
 #include "momenta/analysis/modes_text.hpp"
+#include "momenta/analysis/operating_point.hpp"
 #include "momenta/analysis/rolling_steady_motion.hpp"
 #include "momenta/analysis/time_response.hpp"
 #include "momenta/analysis/transfer_function.hpp"
@@ -51,19 +52,17 @@ double largest_motion(const model::Model& model, const VecX& q0, const VecX& q1)
 }
 
 // The configuration a mode's shape reaches at phase θ with amplitude a:
-// q = q0 ⊕ a Re(φ_q e^{iθ}), φ_q the shape's configuration entries.
-VecX displaced(const model::Model& model, const analysis::LinearModel& linear,
+// q = q0 ⊕ a Re(T φ e^{iθ}), T the analysis's map from a shape to the joints' tangent.
+VecX displaced(const model::Model& model, const analysis::LinearAnalysis& chosen,
                const analysis::Mode& mode, double amplitude, double phase) {
-  VecX tangent = VecX::Zero(model.nv());
   const std::complex<double> turn = std::polar(1.0, phase);
-  for (std::size_t i = 0; i < linear.coordinates.size(); ++i) {
-    tangent[linear.coordinates[i]] =
-        amplitude * (mode.shape[static_cast<Eigen::Index>(i)] * turn).real();
-  }
-  return model::integrate(model, linear.point.q, tangent, 1.0);
+  const VecX tangent =
+      amplitude *
+      (chosen.shape_to_tangent.cast<std::complex<double>>() * (mode.shape * turn)).real();
+  return model::integrate(model, chosen.linear.point.q, tangent, 1.0);
 }
 
-json mode_json(const model::Model& model, const analysis::LinearModel& linear,
+json mode_json(const model::Model& model, const analysis::LinearAnalysis& chosen,
                const analysis::Mode& mode) {
   // Amplitude: the largest body motion a fifth of the model's characteristic length (linear in
   // the amplitude, measured at a small one); a mode that moves no point (a spin about a symmetry
@@ -73,14 +72,14 @@ json mode_json(const model::Model& model, const analysis::LinearModel& linear,
   double moved = 0.0;
   for (int k = 0; k < 8; ++k) {
     moved = std::max(
-        moved, largest_motion(model, linear.point.q,
-                              displaced(model, linear, mode, probe, k * std::numbers::pi / 4)));
+        moved, largest_motion(model, chosen.linear.point.q,
+                              displaced(model, chosen, mode, probe, k * std::numbers::pi / 4)));
   }
   const double amplitude = moved > 1e-12 * length ? probe * 0.2 * length / moved : 0.3;
   std::vector<double> positions, quaternions;
   dynamics::Data data(model);
   for (int k = 0; k < kPhases; ++k) {
-    const VecX q = displaced(model, linear, mode, amplitude, 2 * std::numbers::pi * k / kPhases);
+    const VecX q = displaced(model, chosen, mode, amplitude, 2 * std::numbers::pi * k / kPhases);
     dynamics::forward_kinematics(model, data, q);
     append_poses(model, data, positions, quaternions);
   }
@@ -109,9 +108,10 @@ std::pair<double, double> bode_band(const analysis::Modes& modes) {
 
 json vector_json(const VecX& x) { return std::vector<double>(x.data(), x.data() + x.size()); }
 
-json analysis_json(const io::ModelFile& file, const analysis::LinearModel& linear,
+json analysis_json(const io::ModelFile& file, const analysis::LinearAnalysis& chosen,
                    const std::string& about, double& fastest_rate) {
   const model::Model& model = file.model;
+  const analysis::LinearModel& linear = chosen.linear;
   const analysis::StateSpace& sys = linear.system;
   analysis::Modes modes = analysis::modes(sys);
   // Round-off of a zero eigenvalue (a rigid-body mode, a symmetry) shows as 0, as in `modes`.
@@ -131,7 +131,7 @@ json analysis_json(const io::ModelFile& file, const analysis::LinearModel& linea
     poles.push_back(complex_json(m.eigenvalue));
     fastest_rate = std::max(fastest_rate, m.natural_frequency);
     if (m.eigenvalue.imag() >= 0.0 && static_cast<int>(mode_list.size()) < kMaxModes) {
-      mode_list.push_back(mode_json(model, linear, m));
+      mode_list.push_back(mode_json(model, chosen, m));
     }
   }
   json pairs = json::array(), steps = json::array();
@@ -184,8 +184,9 @@ json analysis_json(const io::ModelFile& file, const analysis::LinearModel& linea
 
 json linear_json(const io::ModelFile& file, const LinearSettings& settings, double& fastest_rate) {
   fastest_rate = 0.0;
-  if (settings.about != "equilibrium" && settings.about != "initial" &&
-      settings.about != "steady" && settings.about != "auto") {
+  const std::optional<analysis::OperatingPointChoice> choice =
+      analysis::operating_point_choice(settings.about);
+  if (!choice) {
     // A caller's mistake, not the model's: no page.
     throw InvalidArgument(
         fmt::format("about '{}': expected auto, initial, equilibrium or steady", settings.about));
@@ -195,70 +196,18 @@ json linear_json(const io::ModelFile& file, const LinearSettings& settings, doub
     options.inputs = settings.inputs;
     options.outputs = settings.outputs;
     options.output_specs = file.outputs;
-    analysis::OperatingPoint point;
-    std::string about;
-    if (settings.about == "steady" && analysis::rolling_steady_applies(file.model)) {
-      // A rolling body's steady motion, seen from its turning frame (no inputs or outputs).
-      const analysis::RollingSteadyMotion motion = analysis::rolling_steady_motion(
-          file.model, analysis::initial_operating_point(file.model));
-      const analysis::RollingSteadyModes modes = analysis::rolling_steady_modes(file.model, motion);
-      analysis::LinearModel linear;
-      linear.system = modes.reduced;
-      linear.point = motion.point;
-      linear.coordinates = modes.coordinates;
-      return analysis_json(
-          file, linear,
-          fmt::format("the steady rolling motion (precession {:.6g} rad/s, spin {:.6g} rad/s), "
-                      "seen from its turning frame: ±iΩ = ±{:.6g}i is the circle displaced, the "
-                      "zeros are its symmetry",
-                      motion.precession, motion.spin, std::abs(motion.precession)),
-          fastest_rate);
-    }
-    if (settings.about == "steady") {
-      const analysis::JointSteadyMotion steady = analysis::joint_steady_motion(
-          file.model, analysis::initial_operating_point(file.model), options);
-      // The reduced model, its position states those of the coordinates that do not turn.
-      analysis::LinearModel linear = steady.full;
-      linear.system = steady.reduced;
-      linear.coordinates = steady.reduced_coordinates;
-      return analysis_json(
-          file, linear,
-          fmt::format("the steady motion ({} turning at {:.6g}; its position left out)",
-                      fmt::join(steady.turning_names, ", "), steady.speed),
-          fastest_rate);
-    }
-    if (settings.about == "equilibrium") {
-      point = analysis::find_equilibrium(file.model, file.model.initial_q()).point;
-      about = "the static equilibrium";
-    } else {
-      point = analysis::initial_operating_point(file.model);
-      about = "the initial state";
-    }
-    analysis::LinearModel linear = analysis::linearize(file.model, point, options);
-    // A state in motion is no place for modes: they would describe that instant only. By
-    // default ("auto") the panel moves to the equilibrium Newton finds from it, and says so.
-    const double moving = analysis::largest_acceleration(linear);
-    if (settings.about == "auto" && moving > analysis::kAtRestAcceleration) {
-      try {
-        point = analysis::find_equilibrium(file.model, file.model.initial_q()).point;
-        linear = analysis::linearize(file.model, point, options);
-        about = fmt::format(
-            "the static equilibrium found from the initial state (the initial state is not one: "
-            "its largest acceleration is {}; modes there would describe that instant only)",
-            number_text(moving, 4));
-      } catch (const Error& e) {
-        about = fmt::format(
-            "the initial state, which is not an equilibrium (largest acceleration {}; none was "
-            "found from it: {}): the poles describe the motion linearized at that instant only",
-            number_text(moving, 4), e.what());
-      }
-    } else if (moving > analysis::kAtRestAcceleration) {
+    const analysis::LinearAnalysis chosen =
+        analysis::linear_analysis_about(file.model, *choice, options);
+    std::string about = chosen.about;
+    // The initial state asked for, not at rest: its poles describe that instant only.
+    if (*choice == analysis::OperatingPointChoice::initial &&
+        chosen.largest_acceleration > analysis::kAtRestAcceleration) {
       about += fmt::format(
           ", which is not an equilibrium (largest acceleration {}): the poles describe the "
-          "motion linearized at that instant only; --about equilibrium finds a state at rest",
-          number_text(moving, 4));
+          "motion linearized at that instant only; the static equilibrium is a state at rest",
+          number_text(chosen.largest_acceleration, 4));
     }
-    return analysis_json(file, linear, about, fastest_rate);
+    return analysis_json(file, chosen, about, fastest_rate);
   } catch (const Error& e) {
     // The report still stands; the panel says why it is empty.
     return {{"available", false}, {"reason", e.what()}};
@@ -312,8 +261,7 @@ json campbell_json(const io::ModelFile& file, const LinearSettings& settings) {
 namespace momenta::report {
 
 void check_linear_settings(const io::ModelFile& file, const LinearSettings& settings) {
-  if (settings.about != "equilibrium" && settings.about != "initial" &&
-      settings.about != "steady" && settings.about != "auto") {
+  if (!analysis::operating_point_choice(settings.about)) {
     throw InvalidArgument(
         fmt::format("about '{}': expected auto, initial, equilibrium or steady", settings.about));
   }
@@ -325,7 +273,7 @@ void check_linear_settings(const io::ModelFile& file, const LinearSettings& sett
     analysis::check_linearization_names(file.model, options);
   } catch (const InvalidArgument& e) {
     throw InvalidArgument(
-        fmt::format("the report's linear analysis (--inputs, --outputs): {}", e.what()));
+        fmt::format("the report's linear analysis (its inputs and outputs): {}", e.what()));
   }
 }
 

@@ -233,11 +233,33 @@ test('quarter car: Bode and poles equal linearize --json and response --bode', a
   await r.page.close();
 });
 
-test('heavy top: reports its spin, a rigid body drawn as its cone', async () => {
-  const r = await checkSimulationPage('heavy_top', path.join(examples, 'heavy_top.yaml'));
+test('heavy top: reports its spin, a rigid body drawn as its cone, nutating about its precession', async () => {
+  const model = path.join(examples, 'heavy_top.yaml');
+  const r = await checkSimulationPage('heavy_top', model);
   measured.heavy_top = { bytes: r.size };
   const summary = await r.page.evaluate(() => window.momentaReport.summary());
   assert.equal(summary.verdict, 'pass');
+  // The linear panel by default (auto): the steady precession the top is in, its nutation ±iω_n
+  // as `modes --about steady` gives it (the slow root's) — not the top at rest.
+  const linear = await r.page.evaluate(() => window.momentaReport.linear());
+  assert.equal(linear.available, true);
+  assert.match(linear.about, /steady precession of the symmetric top 'top'/);
+  const modes = JSON.parse(run('modes', model, '--about', 'steady', '--json'));
+  const nutation = linear.poles.map(([, im]) => im).filter((im) => im > 0);
+  assert.equal(nutation.length, 1);
+  assert.ok(Math.abs(nutation[0] - modes.slow_nutation) <= 1e-12 * modes.slow_nutation, `nutation ${nutation[0]}`);
+  assert.ok(linear.poles.every(([re]) => re === 0));
+  const shown = await r.page.evaluate(() => document.getElementById('linear').innerText);
+  assert.match(shown, /steady precession/);
+  // Its mode animates: the cone tilts about the line of nodes.
+  await r.page.evaluate(() => window.momentaReport.playMode(0));
+  const frames = [];
+  for (let k = 0; k < 3; k += 1) {
+    await new Promise((done) => setTimeout(done, 97));
+    frames.push((await canvasDigest(r.page)).hash);
+  }
+  assert.ok(new Set(frames).size > 1, 'the nutation mode did not move the cone');
+  await (await r.page.$('#motion')).screenshot({ path: path.join(artifacts, 'heavy_top-nutation.png') });
   await r.page.close();
 });
 
@@ -317,7 +339,7 @@ test('rotor on bearings: modes about the steady motion and the Campbell diagram 
   // The linear panel: the reduced model's poles, as `modes --about steady` gives them.
   const linear = await r.page.evaluate(() => window.momentaReport.linear());
   assert.equal(linear.available, true);
-  assert.match(linear.about, /steady motion \(spin\.angle turning/);
+  assert.match(linear.about, /steady motion: spin\.angle turning/);
   const modes = JSON.parse(run('modes', model, '--about', 'steady', '--json'));
   assert.equal(linear.states.length, modes.state_names.length);
   const sorted = (list) => [...list].sort((a, b) => a[0] - b[0] || a[1] - b[1]);

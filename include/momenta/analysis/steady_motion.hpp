@@ -125,6 +125,7 @@ CampbellDiagram campbell_diagram(const SpinningBody& body, double from, double t
 struct SteadyPrecession {
   double tilt = 0.0;  ///< θ, rad
   double spin = 0.0;  ///< ω₃, rad/s
+  Vec3 axis_B = Vec3::UnitZ();  ///< e: the symmetry axis in the body frame (unit)
   double I1 = 0.0, I3 = 0.0, mgl = 0.0;
   /// The two precession rates, rad/s, slow ≤ fast in magnitude; NaN when the spin is below
   /// minimum_spin (no steady precession at this tilt). At θ = 90° the one root m g l/(I₃ω₃).
