@@ -347,14 +347,12 @@ symbolic::Equations derive(const io::ModelFile& file, const EquationsOptions& o)
   try {
     return symbolic::derive_equations(file.model, options);
   } catch (const InvalidArgument& error) {
-    // A name the symbols: section gives that the equations do not have: at its line.
-    for (const auto& [name, given] : file.symbol_names) {
-      const std::string_view what = error.what();
-      if (what.find("'" + name + "' (as") == std::string_view::npos &&
-          what.find("named '" + given.name + "' with") == std::string_view::npos) {
-        continue;
+    // A name the symbols: section gives (or gives as) that the equations refuse: at its line.
+    if (error.symbol()) {
+      for (const auto& [name, given] : file.symbol_names) {
+        if (name != *error.symbol() && given.name != *error.symbol()) continue;
+        throw ParseError(file.file, given.line, given.column, error.what());
       }
-      throw ParseError(file.file, given.line, given.column, error.what());
     }
     throw;
   }

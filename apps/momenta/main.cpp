@@ -18,6 +18,7 @@
 #include "interrupt.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
+#include "option_spelling.hpp"
 #include "stable_addresses.hpp"
 
 namespace {
@@ -118,7 +119,7 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "momenta: {}\n", e.what());
     return 130;
   } catch (const momenta::Error& e) {
-    fmt::print(stderr, "momenta: error: {}\n", e.what());
+    fmt::print(stderr, "momenta: error: {}\n", e.spelled(momenta::cli::command_line_spelling));
     return 1;
   } catch (const std::filesystem::filesystem_error& e) {
     // A path the system refuses (a name too long, a folder without permission): its words, not

@@ -16,6 +16,7 @@
 #include "momenta/analysis/modes_text.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
+#include "option_spelling.hpp"
 
 namespace momenta::cli {
 namespace {
@@ -43,7 +44,7 @@ void run(const ModesOptions& o) {
     try {
       normal = analysis::undamped_modes(lin);
     } catch (const InvalidArgument& e) {
-      why_not = e.what();
+      why_not = e.spelled(command_line_spelling);
     }
   }
   if (o.json) {

@@ -78,6 +78,10 @@ py::array_t<std::complex<double>> to_numpy(const Eigen::VectorXcd& x);
 /// the failure).
 [[noreturn]] void raise_numerical_error(const NumericalError& e, const py::object& partial_result);
 
+/// How Python writes the options the library's messages name (common/error.hpp, OptionMessage):
+/// `step` is dt=, `integrator=bdf` is integrator='bdf', `force` is force=True.
+std::string python_spelling(std::string_view name, std::string_view value);
+
 // Entry points of each area, called once by module.cpp.
 void bind_errors(py::module_& m);
 void bind_inertia(py::module_& m);

@@ -15,6 +15,11 @@
 
 #include <Python.h>
 
+#include <array>
+#include <string>
+#include <string_view>
+#include <utility>
+
 #include "bindings.hpp"
 #include "momenta/common/error.hpp"
 
@@ -42,10 +47,13 @@ struct Classes {
 };
 Classes classes;
 
-void raise(PyObject* type, const std::exception& e) { PyErr_SetString(type, e.what()); }
+void raise(PyObject* type, const Error& e) {
+  PyErr_SetString(type, e.spelled(python_spelling).c_str());
+}
 
 void raise_parse_error(const ParseError& e) {
-  py::object error = py::reinterpret_borrow<py::object>(classes.parse_error)(e.what());
+  py::object error =
+      py::reinterpret_borrow<py::object>(classes.parse_error)(e.spelled(python_spelling));
   error.attr("file") = e.file();
   error.attr("line") = e.line();
   error.attr("column") = e.column();
@@ -54,8 +62,29 @@ void raise_parse_error(const ParseError& e) {
 
 }  // namespace
 
+std::string python_spelling(std::string_view name, std::string_view value) {
+  // The library's names whose keywords differ from <name>=.
+  static constexpr std::array<std::pair<std::string_view, std::string_view>, 3> kKeywords{{
+      {"step", "dt"},
+      {"relative_tolerance", "rtol"},
+      {"absolute_tolerance", "atol"},
+  }};
+  std::string keyword(name);
+  for (const auto& [option, spelled] : kKeywords) {
+    if (option == name) keyword = spelled;
+  }
+  // Switches (overwrite, resume, record reactions) are True; a name's value a string.
+  if (name == "force" || name == "resume" || name == "reactions" || name == "mjcf") {
+    return keyword + "=True";
+  }
+  if (value.empty()) return keyword + "=";
+  const bool number = value.find_first_not_of("0123456789.eE+-") == std::string_view::npos;
+  return keyword + "=" + (number ? std::string(value) : "'" + std::string(value) + "'");
+}
+
 void raise_numerical_error(const NumericalError& e, const py::object& partial_result) {
-  py::object error = py::reinterpret_borrow<py::object>(classes.numerical_error)(e.what());
+  py::object error =
+      py::reinterpret_borrow<py::object>(classes.numerical_error)(e.spelled(python_spelling));
   error.attr("result") = partial_result;
   PyErr_SetObject(classes.numerical_error, error.ptr());
   throw py::error_already_set();

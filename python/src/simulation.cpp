@@ -103,7 +103,7 @@ py::dict summary_of(const simulate::SimulationSummary& s) {
   d["wall_seconds"] = s.wall_seconds;
   d["rows"] = s.rows;
   // What the run tells about stiffness (an explicit method held, or unstable, by it), or None.
-  const std::string stiffness = simulate::stiffness_note(s);
+  const std::string stiffness = spell_options(simulate::stiffness_note(s), python_spelling);
   d["stiffness"] = stiffness.empty() ? py::object(py::none()) : py::object(py::str(stiffness));
   // What the summary says of a singular initial configuration of the constraints, or None.
   const std::string singular = simulate::singular_start_note(s.initial_state);
@@ -130,13 +130,20 @@ SimulationResult run_simulation(const ModelHandle& h, std::optional<double> dura
                                 std::optional<long> every, bool reactions,
                                 const std::vector<std::string>& events,
                                 const std::vector<std::string>& stop_when) {
-  simulate::RunRequest request{duration, dt,        rtol, atol, std::move(integrator),
-                               every,    reactions, {}};
+  simulate::RunRequest request;
+  request.settings.duration = duration;
+  request.settings.step = dt;
+  request.settings.relative_tolerance = rtol;
+  request.settings.absolute_tolerance = atol;
+  request.settings.integrator = std::move(integrator);
+  request.settings.every = every;
+  request.reactions = reactions;
   for (const std::string& condition : events) {
-    request.events.push_back(model::parse_event_condition(condition));
+    request.settings.events.push_back(model::parse_event_condition(condition));
   }
   for (const std::string& condition : stop_when) {
-    request.events.push_back(model::parse_event_condition(condition, model::EventAction::stop));
+    request.settings.events.push_back(
+        model::parse_event_condition(condition, model::EventAction::stop));
   }
   simulate::ResolvedRun resolved = simulate::resolve_run(request, h.file->simulation);
 
@@ -251,7 +258,9 @@ result.audit the conservation audit; result.summary what the run did; to_pandas(
           "or made unstable by stiffness, else None).")
       .def_property_readonly(
           "summary_text",
-          [](const SimulationResult& r) { return simulate::format_summary(r.summary); },
+          [](const SimulationResult& r) {
+            return simulate::format_summary(r.summary, python_spelling);
+          },
           "The summary as `momenta simulate` prints it.")
       .def_readonly("thinning_note", &SimulationResult::thinning_note,
                     "Set when the default row stride thinned a long fixed-step run.")

@@ -29,10 +29,10 @@ std::vector<int> turning_coordinates(const model::Model& model, const OperatingP
     if (point.v[i] == 0.0) continue;
     const model::Joint& joint = model.joint(model.joint_of_v(i));
     if (joint.is_prescribed()) {
-      throw InvalidArgument(fmt::format(
+      throw InvalidArgument(OptionMessage{fmt::format(
           "coordinate '{}' turns on prescribed joint '{}': its motion is an input, not a state; a "
-          "prescribed rotor is linearized about its initial state (--about initial)",
-          model.v_name(i), joint.name));
+          "prescribed rotor is linearized about its initial state (‹about=initial›)",
+          model.v_name(i), joint.name)});
     }
     if (joint.type == model::JointType::spherical || joint.type == model::JointType::free) {
       throw InvalidArgument(fmt::format(
@@ -44,10 +44,10 @@ std::vector<int> turning_coordinates(const model::Model& model, const OperatingP
     turning.push_back(i);
   }
   if (turning.empty()) {
-    throw InvalidArgument(
+    throw InvalidArgument(OptionMessage{
         "nothing turns at this state: a steady motion in joint coordinates has a rotor turning at "
         "constant speed (a nonzero v0 on its joint) while everything else rests; a state at rest "
-        "is an equilibrium (--about initial or equilibrium)");
+        "is an equilibrium (‹about=initial› or ‹about=equilibrium›)"});
   }
   return turning;
 }

@@ -345,11 +345,11 @@ double largest_speed(const LinearModel& linear) {
 
 NormalModes undamped_modes(const LinearModel& linear) {
   if (const double speed = largest_speed(linear); speed > kAtRestSpeed) {
-    throw InvalidArgument(fmt::format(
+    throw InvalidArgument(OptionMessage{fmt::format(
         "undamped_modes: the point moves (largest speed {:.4g}): its gyroscopic and velocity terms "
         "couple the coordinates, which K φ = ω² M φ leaves out — use the modes of A, or the "
-        "steady motion's (--about steady)",
-        speed));
+        "steady motion's (‹about=steady›)",
+        speed)});
   }
   if (linear.stiffness.size() == 0 && linear.system.A().rows() > 0) {
     throw InvalidArgument(

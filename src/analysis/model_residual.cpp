@@ -29,10 +29,10 @@ ModelResidual::ModelResidual(const model::Model& model)
   }
   // With nothing free there is no state to linearize or balance.
   if (free_.empty()) {
-    throw InvalidArgument(
+    throw InvalidArgument(OptionMessage{
         "the model has no degree of freedom to linearize or balance: every joint is fixed or "
-        "prescribed (a prescribed joint's motion is an input, not a state). Simulate it instead "
-        "(momenta simulate --reactions) to see the loads its motion needs");
+        "prescribed (a prescribed joint's motion is an input, not a state). Simulate it instead, "
+        "with ‹reactions›, to see the loads its motion needs"});
   }
 }
 
@@ -132,21 +132,7 @@ MatX ModelResidual::free_mass(double t, const VecX& q) {
 
 bool is_angle_coordinate(const model::Model& model, int i) {
   const model::Joint& j = model.joint(model.joint_of_v(i));
-  const int k = i - j.v_index;
-  switch (j.type) {
-    case model::JointType::revolute:
-    case model::JointType::universal:
-    case model::JointType::spherical:
-      return true;
-    case model::JointType::cylindrical:
-      return k == 0;
-    case model::JointType::planar:
-      return k == 2;
-    case model::JointType::free:
-      return k < 3;
-    default:
-      return false;
-  }
+  return model::is_rotation_rate(j.type, i - j.v_index);
 }
 
 void displace(const model::Model& model, const VecX& q, int i, double s, VecX& tangent,

@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "momenta/dynamics/data.hpp"
+#include "momenta/math/rotation.hpp"
 #include "momenta/math/sin_cos.hpp"
 #include "momenta/model/model.hpp"
 
@@ -15,15 +16,8 @@ namespace momenta::dynamics::detail {
 using model::JointConstants;
 using model::JointType;
 
-// Rodrigues: rotation about unit axis a by θ given c = cos θ, s = sin θ.
-inline Mat3 axis_rotation(const Vec3& a, double c, double s) {
-  const double t = 1.0 - c;
-  Mat3 R;
-  R << t * a.x() * a.x() + c, t * a.x() * a.y() - s * a.z(), t * a.x() * a.z() + s * a.y(),
-      t * a.x() * a.y() + s * a.z(), t * a.y() * a.y() + c, t * a.y() * a.z() - s * a.x(),
-      t * a.x() * a.z() - s * a.y(), t * a.y() * a.z() + s * a.x(), t * a.z() * a.z() + c;
-  return R;
-}
+// Rodrigues (math/rotation.hpp): rotation about unit axis a by θ given c = cos θ, s = sin θ.
+inline Mat3 axis_rotation(const Vec3& a, double c, double s) { return unit_axis_rotation(a, c, s); }
 
 // A · Rot(e_k, θ): only two columns of A mix.
 inline void multiply_basis_rotation(const Mat3& A, int k, double c, double s, Mat3& out) {
@@ -124,7 +118,11 @@ inline void joint_position_general(const JointConstants& c, const double* q, Tra
     case JointType::fixed:
       X_PB = c.X_PJ * c.X_JC;
       return;
-    default:
+    case JointType::cylindrical:
+    case JointType::universal:
+    case JointType::spherical:
+    case JointType::planar:
+    case JointType::free:
       break;
   }
   // Multi-dof joints: X_JJ'(q) and, where it varies, S in J'.
@@ -161,8 +159,10 @@ inline void joint_position_general(const JointConstants& c, const double* q, Tra
       s_varies = true;
       break;
     }
-    default:
-      break;
+    case JointType::fixed:
+    case JointType::revolute:
+    case JointType::prismatic:
+      break;  // done above
   }
   X_PB = c.X_PJ * X_JJ2 * c.X_JC;
   if (s_varies) {
@@ -196,8 +196,12 @@ inline bool joint_bias(const JointConstants& c, const double* q, const double* q
       cJ.tail<3>() = -w.cross(R.transpose() * Vec3(qd[3], qd[4], qd[5]));
       break;
     }
-    default:
-      return false;
+    case JointType::fixed:
+    case JointType::revolute:
+    case JointType::prismatic:
+    case JointType::cylindrical:
+    case JointType::spherical:
+      return false;  // S constant in J'
   }
   cJ_C = c.X_JC.act_motion_inverse(cJ);
   return true;

@@ -21,9 +21,14 @@ inline int joint_stage(model::JointType type, int k) {
       return k == 2 ? 1 : 0;  // x and y in the parent, then the turn
     case model::JointType::free:
       return k < 3 ? 1 : 0;  // the translation in the parent, then the rotation in the child
-    default:
-      return 0;  // revolute, prismatic, cylindrical, spherical: one stage
+    case model::JointType::fixed:
+    case model::JointType::revolute:
+    case model::JointType::prismatic:
+    case model::JointType::cylindrical:
+    case model::JointType::spherical:
+      return 0;  // one stage
   }
+  return 0;  // not reached: every type is named above
 }
 
 /// How many stages a joint of this type has.
@@ -33,9 +38,14 @@ inline int joint_stage_count(model::JointType type) {
     case model::JointType::planar:
     case model::JointType::free:
       return 2;
-    default:
+    case model::JointType::fixed:
+    case model::JointType::revolute:
+    case model::JointType::prismatic:
+    case model::JointType::cylindrical:
+    case model::JointType::spherical:
       return 1;
   }
+  return 1;  // not reached: every type is named above
 }
 
 /// The stage of velocity coordinate k (an index into v) seen from joint c, k being c's own or one

@@ -17,28 +17,24 @@ namespace momenta::integrate {
 void check_tolerances(std::string_view integrator, const Tolerances& tolerances) {
   if (!(tolerances.relative > 0.0 && std::isfinite(tolerances.relative)) ||
       !(tolerances.absolute > 0.0 && std::isfinite(tolerances.absolute))) {
-    throw InvalidArgument(
-        fmt::format("{}: tolerances must be positive and finite, got rtol = {}, atol = {}",
-                    integrator, tolerances.relative, tolerances.absolute));
+    throw InvalidArgument(OptionMessage{
+        fmt::format("{}: tolerances must be positive and finite, got ‹relative_tolerance={}›, "
+                    "‹absolute_tolerance={}›",
+                    integrator, tolerances.relative, tolerances.absolute)});
   }
   if (tolerances.relative < kSmallestRelativeTolerance ||
       tolerances.absolute < kSmallestAbsoluteTolerance) {
-    throw InvalidArgument(fmt::format(
-        "{}: rtol = {:.3g}, atol = {:.3g} ask for more than double precision holds: rtol must "
-        "be at least {:.1e} (100 ε) and atol at least {:.0e}",
+    throw InvalidArgument(OptionMessage{fmt::format(
+        "{}: ‹relative_tolerance={:.3g}›, ‹absolute_tolerance={:.3g}› ask for more than double "
+        "precision holds: the relative tolerance must be at least {:.1e} (100 ε) and the "
+        "absolute at least {:.0e}",
         integrator, tolerances.relative, tolerances.absolute, kSmallestRelativeTolerance,
-        kSmallestAbsoluteTolerance));
+        kSmallestAbsoluteTolerance)});
   }
 }
 
 void Integrator::interpolate(const SecondOrderSystem&, double, State&) const {
   throw std::logic_error(fmt::format("{} has no dense output: use StepInterpolant", name()));
-}
-
-const std::vector<std::string_view>& integrator_names() {
-  static const std::vector<std::string_view> names = {"rk4", "symplectic_euler", "dopri5", "bdf",
-                                                      "sdirk3"};
-  return names;
 }
 
 std::unique_ptr<Integrator> make_integrator(std::string_view name, const Tolerances& tolerances) {
@@ -47,9 +43,11 @@ std::unique_ptr<Integrator> make_integrator(std::string_view name, const Toleran
   if (name == "dopri5") return std::make_unique<DormandPrince5>(tolerances);
   if (name == "bdf") return std::make_unique<Bdf>(tolerances);
   if (name == "sdirk3") return std::make_unique<Sdirk3>();  // its own Newton test
-  const auto& names = integrator_names();
-  throw InvalidArgument(fmt::format("unknown integrator '{}'{}; known: {}", name,
-                                    did_you_mean(name, names), fmt::join(names, ", ")));
+  throw InvalidArgument(
+      fmt::format("integrate::make_integrator: '{}' is none of rk4, symplectic_euler, dopri5, "
+                  "bdf, sdirk3 (system::make_integrator builds every integrator of the registry, "
+                  "model/integrators.hpp)",
+                  name));
 }
 
 }  // namespace momenta::integrate

@@ -26,11 +26,11 @@ void check_options(const State& state, const RunOptions& options) {
         fmt::format("the output interval must be at least 1 step, got {}", options.every));
   }
   if (options.t_end + options.h == options.t_end || state.t + options.h == state.t) {
-    throw InvalidArgument(fmt::format(
+    throw InvalidArgument(OptionMessage{fmt::format(
         "the step {:.3g} s is below the resolution of time at t = {:.6g} s (double precision "
-        "holds about 16 digits): no step would advance it; take a larger step or a shorter "
-        "duration",
-        options.h, options.t_end));
+        "holds about 16 digits): no step would advance it; take a larger ‹step› or a shorter "
+        "‹duration›",
+        options.h, options.t_end)});
   }
 }
 
@@ -58,12 +58,12 @@ void check_step_budget(const SecondOrderSystem& system, const Integrator& integr
   const double breakpoints = count_breakpoints(system, state.t, options.t_end, 10000);
   const double steps = grid_steps + breakpoints;
   if (steps > kMaxRunSteps) {
-    throw InvalidArgument(fmt::format(
+    throw InvalidArgument(OptionMessage{fmt::format(
         "this run would take about {:.3g} steps ({:.3g} of {:.3g} s{}), more than the {:.0e} a run "
-        "may take: shorten the duration, lengthen the step{}",
+        "may take: shorten the ‹duration›, lengthen the ‹step›{}",
         steps, grid_steps, options.h,
         breakpoints > 0 ? fmt::format(", plus {:.3g} input discontinuities", breakpoints) : "",
-        kMaxRunSteps, breakpoints > grid_steps ? ", or widen the input's pulses" : ""));
+        kMaxRunSteps, breakpoints > grid_steps ? ", or widen the input's pulses" : "")});
   }
 }
 
@@ -75,12 +75,11 @@ void check_finite(const SecondOrderSystem& system, const Integrator& integrator,
   const VecX& x = in_q ? state.q : state.v;
   int i = 0;
   while (std::isfinite(x[i])) ++i;
-  throw NumericalError(fmt::format(
+  throw NumericalError(OptionMessage{fmt::format(
       "the state became non-finite at t = {:.9g} s: {} = {} after a {} step of {:.3g} s. The step "
-      "may be too large for the fastest motion (try a smaller --dt, or --integrator dopri5; bdf "
-      "for a stiff model), or "
-      "the model may be singular or stiff there",
-      state.t, system.coordinate_name(i, !in_q), x[i], integrator.name(), h));
+      "may be too large for the fastest motion (try a smaller ‹step›, or ‹integrator=dopri5›; "
+      "‹integrator=bdf› for a stiff model), or the model may be singular or stiff there",
+      state.t, system.coordinate_name(i, !in_q), x[i], integrator.name(), h)});
 }
 
 }  // namespace

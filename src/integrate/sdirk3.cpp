@@ -172,11 +172,11 @@ double Sdirk3::step(SecondOrderSystem& system, State& state, double h) {
             "{:.9g} s of {:.3g} s: the model may be singular there, or the step too large",
             non_finite_at_, state.t, h));
       }
-      throw NumericalError(fmt::format(
+      throw NumericalError(OptionMessage{fmt::format(
           "sdirk3: Newton's method did not converge in the step from t = {:.9g} s of {:.3g} s{}: "
-          "the step is too large for the model's nonlinearity there — take a smaller step, or "
-          "--integrator bdf",
-          state.t, h, was_fresh ? "" : ", even with a fresh Jacobian"));
+          "the step is too large for the model's nonlinearity there — take a smaller ‹step›, or "
+          "‹integrator=bdf›",
+          state.t, h, was_fresh ? "" : ", even with a fresh Jacobian")});
     }
   }
   // Stiffly accurate: the last stage is the solution.

@@ -41,9 +41,12 @@ std::vector<Factor> factors_of(const model::Joint& joint, const double* q) {
       return {{false, Vec3::UnitX(), q[0], "_x"},
               {false, Vec3::UnitY(), q[1], "_y"},
               {true, Vec3::UnitZ(), q[2], "_angle"}};
-    default:
-      return {};
+    case model::JointType::fixed:
+    case model::JointType::spherical:
+    case model::JointType::free:
+      return {};  // none, or written as MJCF's own ball and free joints
   }
+  return {};  // not reached: every type is named above
 }
 
 Transform factor_motion(const Factor& f, double value) {

@@ -25,10 +25,8 @@ std::string origin_text(const Transform& X) {
 
 void check_representable(const model::Model& model) {
   for (const model::Joint& joint : model.joints()) {
-    const bool kept =
-        joint.type == model::JointType::fixed || joint.type == model::JointType::revolute ||
-        joint.type == model::JointType::prismatic || joint.type == model::JointType::planar ||
-        (joint.type == model::JointType::free && joint.parent_index == 0);
+    const bool kept = !model::joint_traits(joint.type).urdf.empty() &&
+                      (joint.type != model::JointType::free || joint.parent_index == 0);
     if (!kept) {
       throw InvalidArgument(
           fmt::format("joint '{}' ({}{}): URDF has no such joint; write MJCF "
@@ -108,23 +106,8 @@ ExportedModel write_urdf(const ModelFile& file) {
   }
   // Joints: the origin places J in the parent's link; the child's link is J'.
   for (const model::Joint& joint : model.joints()) {
-    const char* type = "fixed";
-    switch (joint.type) {
-      case model::JointType::revolute:
-        type = "continuous";
-        break;
-      case model::JointType::prismatic:
-        type = "prismatic";
-        break;
-      case model::JointType::planar:
-        type = "planar";
-        break;
-      case model::JointType::free:
-        type = "floating";
-        break;
-      default:
-        break;
-    }
+    // check_representable refused the types URDF has none of.
+    const std::string_view type = model::joint_traits(joint.type).urdf;
     const std::string& parent = model.bodies()[static_cast<std::size_t>(joint.parent_index)].name;
     out += fmt::format(
         "  <joint name=\"{}\" type=\"{}\">\n    <parent link=\"{}\"/>\n    <child "

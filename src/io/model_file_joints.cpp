@@ -28,14 +28,29 @@ constexpr std::array<std::string_view, 15> kJointKeys = {
     "name", "type",   "parent", "child",  "in_parent", "in_child", "axis",      "axis2",
     "q0",   "q0_deg", "v0",     "v0_deg", "v0_rpm",    "damping",  "prescribed"};
 
-bool has_axis(JointType t) {
-  return t == JointType::revolute || t == JointType::prismatic || t == JointType::cylindrical ||
-         t == JointType::universal;
+bool has_axis(JointType t) { return model::joint_traits(t).axes >= 1; }
+
+// The joint types with at least `axes` axes, as a list for messages: "revolute, prismatic, …".
+std::string joints_with_axes(int axes) {
+  std::string list;
+  for (const model::JointTraits& t : model::kJointTraits) {
+    if (t.axes >= axes) list += fmt::format("{}{}", list.empty() ? "" : ", ", t.name);
+  }
+  return list;
 }
 
 // Joints whose coordinates are all angles: the only ones whose q0 / v0 may be in degrees.
-bool angles_only_q(JointType t) { return t == JointType::revolute || t == JointType::universal; }
-bool angles_only_v(JointType t) { return angles_only_q(t) || t == JointType::spherical; }
+bool all_in(const auto& units, int count, std::string_view unit) {
+  for (int k = 0; k < count; ++k)
+    if (units[static_cast<std::size_t>(k)] != unit) return false;
+  return count > 0;
+}
+bool angles_only_q(JointType t) {
+  return all_in(model::joint_traits(t).q_units, model::joint_nq(t), "rad");
+}
+bool angles_only_v(JointType t) {
+  return all_in(model::joint_traits(t).v_units, model::joint_nv(t), "rad/s");
+}
 
 // `in_parent` / `in_child`: {position, rotation | quaternion | euler}.
 Transform read_pose(const YamlNode& node) {
@@ -80,26 +95,7 @@ VecX read_pose_q0(const YamlNode& node, JointType type) {
   return q;
 }
 
-std::string_view coordinate_units(JointType t) {
-  switch (t) {
-    case JointType::revolute:
-      return "(angle, rad)";
-    case JointType::prismatic:
-      return "(displacement, m)";
-    case JointType::cylindrical:
-      return "[angle (rad), displacement (m)]";
-    case JointType::universal:
-      return "[angle1, angle2] (rad)";
-    case JointType::spherical:
-      return "quaternion [w, x, y, z]";
-    case JointType::planar:
-      return "[x (m), y (m), angle (rad)]";
-    case JointType::free:
-      return "[x, y, z (m), qw, qx, qy, qz]";
-    default:
-      return "";
-  }
-}
+std::string_view coordinate_units(JointType t) { return model::joint_traits(t).q_layout; }
 
 // q0 and v0: a number (one coordinate) or a list, in SI or, for angles only, in degrees; a
 // spherical or free joint's q0 may be a pose map.
@@ -189,8 +185,10 @@ model::Joint read_joint(const YamlNode& e, Context& ctx) {
   const auto refuse = [&](std::string_view key, std::string_view why) {
     if (e.has(key)) e.at(key).fail(fmt::format("a {} joint has no '{}' ({})", type, key, why));
   };
-  if (!has_axis(j.type)) refuse("axis", "only revolute, prismatic, cylindrical, universal do");
-  if (j.type != JointType::universal) refuse("axis2", "only the universal joint has two axes");
+  if (!has_axis(j.type)) refuse("axis", fmt::format("only {} do", joints_with_axes(1)));
+  if (model::joint_traits(j.type).axes < 2) {
+    refuse("axis2", fmt::format("only the {} joint has two axes", joints_with_axes(2)));
+  }
   if (j.nv() == 0) {
     for (const std::string_view key :
          {"q0", "q0_deg", "v0", "v0_deg", "v0_rpm", "damping", "prescribed"}) {

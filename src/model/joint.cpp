@@ -3,8 +3,10 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
@@ -13,38 +15,9 @@
 namespace momenta::model {
 namespace {
 
-struct NamedType {
-  std::string_view name;
-  JointType type;
-};
-
-constexpr std::array<NamedType, 13> kNames{{
-    {"fixed", JointType::fixed},
-    {"revolute", JointType::revolute},
-    {"prismatic", JointType::prismatic},
-    {"cylindrical", JointType::cylindrical},
-    {"universal", JointType::universal},
-    {"spherical", JointType::spherical},
-    {"planar", JointType::planar},
-    {"free", JointType::free},
-    {"weld", JointType::fixed},
-    {"hinge", JointType::revolute},
-    {"slider", JointType::prismatic},
-    {"ball", JointType::spherical},
-    {"floating", JointType::free},
-}};
-
-// Rotation about the unit axis a by angle θ (Rodrigues), without the checks of
-// rotation_from_axis_angle (axes are validated once by the builder).
+// Rotation about the unit axis a by angle θ (axes are validated once by the builder).
 Mat3 axis_rotation(const Vec3& a, double theta) {
-  const double c = std::cos(theta);
-  const double s = std::sin(theta);
-  const double t = 1.0 - c;
-  Mat3 R;
-  R << t * a.x() * a.x() + c, t * a.x() * a.y() - s * a.z(), t * a.x() * a.z() + s * a.y(),
-      t * a.x() * a.y() + s * a.z(), t * a.y() * a.y() + c, t * a.y() * a.z() - s * a.x(),
-      t * a.x() * a.z() - s * a.y(), t * a.y() * a.z() + s * a.x(), t * a.z() * a.z() + c;
-  return R;
+  return unit_axis_rotation(a, std::cos(theta), std::sin(theta));
 }
 
 Mat3 quaternion_rotation(const double* wxyz) {
@@ -53,23 +26,20 @@ Mat3 quaternion_rotation(const double* wxyz) {
 
 }  // namespace
 
-std::string_view joint_type_name(JointType type) {
-  for (const auto& n : kNames) {
-    if (n.type == type) return n.name;
-  }
-  return "unknown";
-}
+std::string_view joint_type_name(JointType type) { return joint_traits(type).name; }
 
 JointType joint_type_from_name(std::string_view name) {
-  for (const auto& n : kNames) {
-    if (n.name == name) return n.type;
+  std::vector<std::string_view> names, aliases;
+  for (const JointTraits& t : kJointTraits) {
+    if (t.name == name || (!t.alias.empty() && t.alias == name)) return t.type;
+    names.push_back(t.name);
+    if (!t.alias.empty()) aliases.push_back(t.alias);
   }
-  std::array<std::string_view, kNames.size()> names;
-  for (std::size_t i = 0; i < kNames.size(); ++i) names[i] = kNames[i].name;
-  throw InvalidArgument(fmt::format(
-      "unknown joint type '{}'{}; expected one of fixed, revolute, prismatic, cylindrical, "
-      "universal, spherical, planar, free (or weld, hinge, slider, ball, floating)",
-      name, did_you_mean(name, names)));
+  std::vector<std::string_view> every = names;
+  every.insert(every.end(), aliases.begin(), aliases.end());
+  throw InvalidArgument(fmt::format("unknown joint type '{}'{}; expected one of {} (or {})", name,
+                                    did_you_mean(name, every), fmt::join(names, ", "),
+                                    fmt::join(aliases, ", ")));
 }
 
 Transform joint_transform(const Joint& joint, const double* q) {

@@ -125,7 +125,11 @@ void integrate(const Model& model, const VecX& q, const VecX& v, double dt, VecX
         store_quaternion(quaternion_at(q, iq + 3) * quaternion_exp(v.segment<3>(iv) * dt), q_out,
                          iq + 3);
         break;
-      default:
+      case JointType::revolute:
+      case JointType::prismatic:
+      case JointType::cylindrical:
+      case JointType::universal:
+      case JointType::planar:
         q_out.segment(iq, joint.nq()) = q.segment(iq, joint.nq()) + v.segment(iv, joint.nv()) * dt;
         break;
     }
@@ -155,7 +159,11 @@ void difference(const Model& model, const VecX& q0, const VecX& q1, VecX& d) {
             quaternion_log(quaternion_at(q0, iq + 3).conjugate() * quaternion_at(q1, iq + 3));
         d.segment<3>(iv + 3) = q1.segment<3>(iq) - q0.segment<3>(iq);
         break;
-      default:
+      case JointType::revolute:
+      case JointType::prismatic:
+      case JointType::cylindrical:
+      case JointType::universal:
+      case JointType::planar:
         d.segment(iv, joint.nv()) = q1.segment(iq, joint.nq()) - q0.segment(iq, joint.nq());
         break;
     }

@@ -49,35 +49,12 @@ void check_axis(const Vec3& a, const std::string& what) {
 
 // Names of the configuration and velocity coordinates of one joint.
 void coordinate_names(const Joint& j, std::vector<std::string>& q, std::vector<std::string>& v) {
-  const auto add = [&](std::initializer_list<const char*> qs,
-                       std::initializer_list<const char*> vs) {
-    for (const char* s : qs) q.push_back(j.name + "." + s);
-    for (const char* s : vs) v.push_back(j.name + "." + s);
-  };
-  switch (j.type) {
-    case JointType::fixed:
-      break;
-    case JointType::revolute:
-      add({"angle"}, {"angle_rate"});
-      break;
-    case JointType::prismatic:
-      add({"position"}, {"position_rate"});
-      break;
-    case JointType::cylindrical:
-      add({"angle", "position"}, {"angle_rate", "position_rate"});
-      break;
-    case JointType::universal:
-      add({"angle1", "angle2"}, {"angle1_rate", "angle2_rate"});
-      break;
-    case JointType::spherical:
-      add({"qw", "qx", "qy", "qz"}, {"wx", "wy", "wz"});
-      break;
-    case JointType::planar:
-      add({"x", "y", "angle"}, {"x_rate", "y_rate", "angle_rate"});
-      break;
-    case JointType::free:
-      add({"x", "y", "z", "qw", "qx", "qy", "qz"}, {"wx", "wy", "wz", "vx", "vy", "vz"});
-      break;
+  const JointTraits& traits = joint_traits(j.type);
+  for (int k = 0; k < j.nq(); ++k) {
+    q.push_back(j.name + "." + std::string(traits.q_names[static_cast<std::size_t>(k)]));
+  }
+  for (int k = 0; k < j.nv(); ++k) {
+    v.push_back(j.name + "." + std::string(traits.v_names[static_cast<std::size_t>(k)]));
   }
 }
 

@@ -48,7 +48,12 @@ void prescribed_joint_motion(const Joint& joint, std::span<const SignalSample> s
         if (vdot != nullptr) vdot[3 + k] = s.acceleration;
       }
       return;
-    default:
+    case JointType::fixed:
+    case JointType::revolute:
+    case JointType::prismatic:
+    case JointType::cylindrical:
+    case JointType::universal:
+    case JointType::planar:
       for (int k = 0; k < joint.nv(); ++k) {
         const SignalSample& s = signal_samples[joint.prescribed_signal_indices[k]];
         q[k] = s.value;

@@ -48,11 +48,11 @@ RotorOnJoint find_rotor(const Model& model, const std::string& body_name) {
   if (candidates.size() == 1) return rotor_on_joint(model, candidates.front());
   std::vector<std::string> names;
   for (int b : candidates) names.push_back(model.body(b).name);
-  throw InvalidArgument(
+  throw InvalidArgument(OptionMessage{
       candidates.empty()
           ? std::string("no body of the model turns on a revolute joint: a rotor to balance does")
-          : fmt::format("{} bodies turn on revolute joints ({}): name the rotor with --body",
-                        candidates.size(), fmt::join(names, ", ")));
+          : fmt::format("{} bodies turn on revolute joints ({}): name the rotor with ‹body›",
+                        candidates.size(), fmt::join(names, ", "))});
 }
 
 }  // namespace momenta::model

@@ -16,54 +16,24 @@ const Joint* joint_of(const Model& model, int i, bool velocity) {
   return nullptr;
 }
 
-// Whether velocity coordinate k of joint j (0-based within the joint) is a rotation rate.
-bool is_angular_speed(const Joint& j, int k) {
-  switch (j.type) {
-    case JointType::prismatic:
-      return false;
-    case JointType::cylindrical:
-      return k == 0;
-    case JointType::planar:
-      return k == 2;
-    case JointType::free:
-      return k < 3;  // w (rotation first), then v
-    default:
-      return true;  // revolute, universal, spherical
-  }
-}
-
 }  // namespace
 
 std::string q_unit(const Model& model, int i) {
   const Joint* j = joint_of(model, i, false);
   if (j == nullptr) return "";
-  const int k = i - j->q_index;
-  switch (j->type) {
-    case JointType::spherical:
-      return "1";
-    case JointType::free:
-      return k < 3 ? "m" : "1";  // position, then the quaternion w, x, y, z
-    case JointType::planar:
-      return k < 2 ? "m" : "rad";
-    case JointType::cylindrical:
-      return k == 0 ? "rad" : "m";
-    case JointType::prismatic:
-      return "m";
-    default:
-      return "rad";
-  }
+  return std::string(joint_traits(j->type).q_units[static_cast<std::size_t>(i - j->q_index)]);
 }
 
 std::string v_unit(const Model& model, int i) {
   const Joint* j = joint_of(model, i, true);
   if (j == nullptr) return "";
-  return is_angular_speed(*j, i - j->v_index) ? "rad/s" : "m/s";
+  return std::string(joint_traits(j->type).v_units[static_cast<std::size_t>(i - j->v_index)]);
 }
 
 std::string effort_unit(const Model& model, int i) {
   const Joint* j = joint_of(model, i, true);
   if (j == nullptr) return "";
-  return is_angular_speed(*j, i - j->v_index) ? "N·m" : "N";
+  return is_rotation_rate(j->type, i - j->v_index) ? "N·m" : "N";
 }
 
 std::string joint_damping_unit(const Model& model, const Joint& joint) {

@@ -96,8 +96,8 @@ std::string html_page(const std::string& title, const json& data) {
 
 void write_report(const std::filesystem::path& path, const std::string& html, bool overwrite) {
   if (std::filesystem::exists(path) && !overwrite) {
-    throw FileError(
-        fmt::format("{}: the file exists; pass --force to overwrite it", path.string()));
+    throw FileError(OptionMessage{
+        fmt::format("{}: the file exists; pass ‹force› to overwrite it", path.string())});
   }
   std::filesystem::path temporary = path;
   temporary += ".partial";

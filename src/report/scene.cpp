@@ -43,9 +43,7 @@ json joint_json(const model::Joint& joint) {
             // J' in the child: where the joint is drawn, moving with the child.
             {"origin", vec_json(joint.X_CJ.p)},
             {"R", mat_json(joint.X_CJ.R)}};
-  const bool has_axis =
-      joint.type == model::JointType::revolute || joint.type == model::JointType::prismatic ||
-      joint.type == model::JointType::cylindrical || joint.type == model::JointType::universal;
+  const bool has_axis = model::joint_traits(joint.type).axes >= 1;
   // The axis is fixed in J; J' coincides with J at q = 0 and turns about the axis, so the axis
   // reads the same in J'.
   j["axis"] = has_axis ? vec_json(joint.X_CJ.R * joint.axis) : json(nullptr);

@@ -2,20 +2,20 @@
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 
 #include <fmt/format.h>
 
 #include "momenta/common/error.hpp"
+#include "momenta/integrate/integrator.hpp"
 #include "momenta/model/integrators.hpp"
-#include "momenta/system/integrators.hpp"
 
 namespace momenta::simulate {
 namespace {
 
 // Tolerances without an integrator ask for an adaptive one: from the caller they override a
 // fixed-step integrator the file names; in the file they choose one when it names none.
-std::string choose_integrator(const RunRequest& request, const model::SimulationSettings& file) {
+std::string choose_integrator(const model::SimulationSettings& request,
+                              const model::SimulationSettings& file) {
   if (request.integrator) return *request.integrator;
   const bool tolerances_given = request.relative_tolerance || request.absolute_tolerance;
   const bool file_adaptive = file.integrator && model::integrator_info(*file.integrator).adaptive;
@@ -27,28 +27,29 @@ std::string choose_integrator(const RunRequest& request, const model::Simulation
 }  // namespace
 
 ResolvedRun resolve_run(const RunRequest& request, const model::SimulationSettings& file) {
+  const model::SimulationSettings& asked = request.settings;
+  const model::SimulationSettings merged = model::over(asked, file);
   ResolvedRun resolved;
   SimulationOptions& s = resolved.options;
-  s.duration = request.duration.value_or(file.duration.value_or(s.duration));
-  s.tolerances.relative =
-      request.relative_tolerance.value_or(file.relative_tolerance.value_or(s.tolerances.relative));
-  s.tolerances.absolute =
-      request.absolute_tolerance.value_or(file.absolute_tolerance.value_or(s.tolerances.absolute));
-  s.integrator = choose_integrator(request, file);
+  s.duration = merged.duration.value_or(s.duration);
+  s.tolerances.relative = merged.relative_tolerance.value_or(s.tolerances.relative);
+  s.tolerances.absolute = merged.absolute_tolerance.value_or(s.tolerances.absolute);
+  s.integrator = choose_integrator(asked, file);
 
-  const std::unique_ptr<integrate::Integrator> probe =
-      system::make_integrator(s.integrator, s.tolerances);
-  if ((request.relative_tolerance || request.absolute_tolerance) && !probe->adaptive()) {
-    throw InvalidArgument(fmt::format(
-        "{} applies to adaptive integrators (dopri5, bdf); '{}' takes a fixed step",
-        request.relative_tolerance ? "the relative tolerance" : "the absolute tolerance",
-        s.integrator));
+  const bool adaptive = model::integrator_info(s.integrator).adaptive;
+  if ((asked.relative_tolerance || asked.absolute_tolerance) && !adaptive) {
+    throw InvalidArgument(OptionMessage{fmt::format(
+        "‹{}› applies to adaptive integrators (dopri5, bdf); ‹integrator={}› takes a fixed "
+        "step (‹step›)",
+        asked.relative_tolerance ? "relative_tolerance" : "absolute_tolerance", s.integrator)});
   }
+  // The tolerances' values, checked where they are chosen (the integrator checks them again).
+  if (adaptive) integrate::check_tolerances(s.integrator, s.tolerances);
 
-  const double default_step = probe->adaptive() ? s.duration / kAdaptiveSteps : s.step;
-  s.step = request.step.value_or(file.step.value_or(default_step));
-  s.every = request.every.value_or(file.every.value_or(s.every));
-  if (!request.every && !file.every && !probe->adaptive()) {
+  const double default_step = adaptive ? s.duration / kAdaptiveSteps : s.step;
+  s.step = merged.step.value_or(default_step);
+  s.every = merged.every.value_or(s.every);
+  if (!merged.every && !adaptive) {
     const double steps = std::ceil(s.duration / s.step);
     if (steps > kDefaultRows && steps < 1e18) {
       s.every = static_cast<long>(std::ceil(steps / kDefaultRows));
@@ -58,16 +59,7 @@ ResolvedRun resolve_run(const RunRequest& request, const model::SimulationSettin
     }
   }
   s.reactions = request.reactions;
-  s.events = file.events;
-  for (const model::EventSpec& event : request.events) {
-    const auto same = std::find_if(s.events.begin(), s.events.end(),
-                                   [&](const model::EventSpec& e) { return e.name == event.name; });
-    if (same != s.events.end()) {
-      *same = event;  // the caller's action for the file's condition
-    } else {
-      s.events.push_back(event);
-    }
-  }
+  s.events = merged.events;
   return resolved;
 }
 

@@ -303,13 +303,12 @@ class Simulation::Recorder {
     for (std::size_t c = 1; c <= n_state; ++c) {
       if (std::abs(row_[c]) > std::abs(row_[largest])) largest = c;
     }
-    throw NumericalError(fmt::format(
+    throw NumericalError(OptionMessage{fmt::format(
         "the recorded values became non-finite at t = {:.9g} s: {} = {} while the state is "
         "finite (its largest coordinate {} = {:.3g}). The step may be too large for the fastest "
-        "motion (try a smaller --dt, or --integrator dopri5; bdf for a stiff model), or a "
-        "parameter — a stiffness, a "
-        "mass, a signal's amplitude — is absurd",
-        t, sim_.columns_[bad], row_[bad], sim_.columns_[largest], row_[largest]));
+        "motion (try a smaller ‹step›, or ‹integrator=dopri5›; ‹integrator=bdf› for a stiff "
+        "model), or a parameter — a stiffness, a mass, a signal's amplitude — is absurd",
+        t, sim_.columns_[bad], row_[bad], sim_.columns_[largest], row_[largest])});
   }
 
   long rows() const { return rows_; }
@@ -405,9 +404,9 @@ SimulationSummary Simulation::run(RowSink& sink) {
     // Keep what was recorded, and say how far it goes.
     sink.flush();
     const std::string note = stiffness_note(summary);
-    throw NumericalError(fmt::format("{} ({} row{} up to the failure were written){}{}", e.what(),
-                                     recorder.rows(), recorder.rows() == 1 ? "" : "s",
-                                     note.empty() ? "" : ". ", note));
+    throw NumericalError(OptionMessage{fmt::format(
+        "{} ({} row{} up to the failure were written){}{}", e.spelled(keep_option_marks),
+        recorder.rows(), recorder.rows() == 1 ? "" : "s", note.empty() ? "" : ". ", note)});
   } catch (const Interrupted& e) {
     sink.flush();
     throw Interrupted(fmt::format("{}; {} whole row{} written", e.what(), recorder.rows(),
@@ -461,14 +460,14 @@ std::string stiffness_note(const SimulationSummary& s) {
     return fmt::format(
         "{} at h = {:.3g} s is unstable here: the linearization at t = 0 has "
         "λ = {}, and h·λ = {} lies outside {}'s stability region (stable for h ≤ {:.3g} s). "
-        "Use --integrator bdf or sdirk3 (stable at any step), or a smaller --dt",
+        "Use ‹integrator=bdf› or ‹integrator=sdirk3› (stable at any step), or a smaller ‹step›",
         s.integrator, s.step, complex_text(lambda, "1/s"), complex_text(s.step * lambda, ""),
         s.integrator, s.step_stability.largest_stable_step);
   }
   if (!std::isnan(s.statistics.stiff_from)) {
     return fmt::format(
         "{} was held by stability, not accuracy: {} of {} steps had h·|λ| ≥ 3.25 "
-        "(|λ| up to {:.4g} 1/s, from t = {:.6g} s){}. --integrator bdf takes far fewer steps "
+        "(|λ| up to {:.4g} 1/s, from t = {:.6g} s){}. ‹integrator=bdf› takes far fewer steps "
         "(docs/integrators.md)",
         s.integrator, s.statistics.stability_limited_steps, s.statistics.steps,
         s.statistics.stiff_eigenvalue, s.statistics.stiff_from,
@@ -503,7 +502,7 @@ std::string format_events(const std::vector<EventOccurrence>& events) {
 }
 }  // namespace
 
-std::string format_summary(const SimulationSummary& s) {
+std::string format_summary(const SimulationSummary& s, OptionSpelling spell) {
   std::string out;
   const std::string order =
       s.order == model::kExactOrder ? std::string("exact") : fmt::format("order {}", s.order);
@@ -531,7 +530,7 @@ std::string format_summary(const SimulationSummary& s) {
   }
   out += format_events(s.events);
   if (const std::string note = stiffness_note(s); !note.empty()) {
-    out += fmt::format("stiffness    {}\n", note);
+    out += fmt::format("stiffness    {}\n", spell_options(note, spell));
   }
   out += "conservation audit (relative drift: at the end, largest over every step)\n";
   for (const AuditEntry& e : s.audit) {

@@ -106,10 +106,10 @@ void check_header(const Lines& file, std::span<const std::string> header,
       std::find(written.begin(), written.end(), "inputs") == written.end() &&
       std::find(written.begin(), written.end(), "status") != written.end()) {
     throw ParseError(path.string(), 1, 1,
-                     "the file does not record what its results were made from (no 'inputs' "
-                     "column: an earlier momenta wrote it), so it cannot be checked that the "
-                     "sweep and model files are unchanged. Start over with --force, or write to "
-                     "another file");
+                     OptionMessage{"the file does not record what its results were made from (no "
+                                   "'inputs' column: an earlier momenta wrote it), so it cannot be "
+                                   "checked that the sweep and model files are unchanged. Start "
+                                   "over with ‹force›, or write to another file"});
   }
   if (file.lines[0] != header_line(header)) {
     throw ParseError(path.string(), 1, 1,
@@ -188,11 +188,11 @@ std::vector<long> read_finished_runs(const std::filesystem::path& path,
     runs.push_back(run_of(file.lines[i], path, i + 1, header.size()));
     const std::string made_from = fields_of(file.lines[i])[inputs_column];
     if (made_from != inputs) {
-      throw FileError(fmt::format(
+      throw FileError(OptionMessage{fmt::format(
           "{}: row {} (run {}) was made from other inputs ({}) than the sweep file and the files "
           "its model reads now ({}): one of them changed, and resuming would mix two models in "
-          "one file. Start over with --force, or write to another file",
-          path.string(), i + 1, runs.back(), made_from, inputs));
+          "one file. Start over with ‹force›, or write to another file",
+          path.string(), i + 1, runs.back(), made_from, inputs)});
     }
   }
   return runs;
@@ -205,10 +205,10 @@ ResultsWriter::ResultsWriter(const std::filesystem::path& path, std::span<const 
     file_ = std::fopen(path.string().c_str(), "ab");
   } else {
     if (!overwrite && std::filesystem::exists(path)) {
-      throw FileError(fmt::format(
-          "{}: the output file exists; it is not overwritten (--force replaces it, --resume "
+      throw FileError(OptionMessage{fmt::format(
+          "{}: the output file exists; it is not overwritten (‹force› replaces it, ‹resume› "
           "continues the sweep that wrote it)",
-          path.string()));
+          path.string())});
     }
     file_ = std::fopen(path.string().c_str(), "wb");
   }
@@ -273,10 +273,10 @@ void merge_results(std::span<const std::filesystem::path> parts,
   }
   for (long run = 0; run < run_count; ++run) {
     if (!rows.contains(run)) {
-      throw InvalidArgument(
+      throw InvalidArgument(OptionMessage{
           fmt::format("run {} is in none of the files ({} of {} runs found): a shard is missing or "
-                      "unfinished (--resume finishes it)",
-                      run, rows.size(), run_count));
+                      "unfinished (‹resume› finishes it)",
+                      run, rows.size(), run_count)});
     }
   }
   ResultsWriter writer(output, header, overwrite, false);

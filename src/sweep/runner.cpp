@@ -93,12 +93,7 @@ struct SweepRunner::Job {
   simulate::SimulationOptions simulation_options(const SweepSpec& spec,
                                                  const io::ModelFile& file) const {
     simulate::RunRequest request;
-    request.duration = spec.run.duration;
-    request.step = spec.run.step;
-    request.relative_tolerance = spec.run.relative_tolerance;
-    request.absolute_tolerance = spec.run.absolute_tolerance;
-    request.integrator = spec.run.integrator;
-    request.every = spec.run.every;
+    request.settings = spec.run;  // the sweep file's simulation: section over the model file's
     simulate::SimulationOptions options = simulate::resolve_run(request, file.simulation).options;
     options.reactions = options.reactions || reactions;
     return options;
@@ -175,12 +170,20 @@ SweepRunner::SweepRunner(SweepSpec spec)
     try {
       nominal.emplace(file.model, file.outputs, job_->simulation_options(spec_, file));
     } catch (const InvalidArgument& e) {
+      // Blamed on the sweep file's duration or step only when the refusal names them (as data).
+      const std::vector<std::string> named = e.options();
+      const auto names = [&](const char* option) {
+        return std::find(named.begin(), named.end(), option) != named.end();
+      };
       const model::SimulationSettings& run = spec_.run;
-      const auto [key, at] =
-          run.duration_position.line > 0 ? std::pair{"simulation.duration: ", run.duration_position}
-          : run.step_position.line > 0   ? std::pair{"simulation.step: ", run.step_position}
-                                         : std::pair{"", run.position};
-      if (at.line == 0) throw;  // the model file's settings: its reader names them
+      const auto [key, at] = names("duration") && run.duration_position.line > 0
+                                 ? std::pair{"simulation.duration: ", run.duration_position}
+                             : names("step") && run.step_position.line > 0
+                                 ? std::pair{"simulation.step: ", run.step_position}
+                             : names("duration") || names("step")
+                                 ? std::pair{"", run.position}
+                                 : std::pair{"", model::SimulationSettings::Position{}};
+      if (at.line == 0) throw;  // not the sweep file's settings: as it is
       throw error_at(spec_, at.line, at.column, key + one_line(e.what()));
     }
     recorded = nominal->column_names();

@@ -148,9 +148,9 @@ std::unique_ptr<TrajectoryStore> open_trajectory_store(const std::filesystem::pa
 #ifdef MOMENTA_HDF5
     if (exists && !keep && !overwrite) {
       throw FileError(
-          fmt::format("{}: the trajectories file exists; it is not overwritten "
-                      "(--force replaces it)",
-                      path.string()));
+          OptionMessage{fmt::format("{}: the trajectories file exists; it is not overwritten "
+                                    "(‹force› replaces it)",
+                                    path.string())});
     }
     return std::make_unique<Hdf5File>(path, keep);
 #else
@@ -165,9 +165,9 @@ std::unique_ptr<TrajectoryStore> open_trajectory_store(const std::filesystem::pa
   }
   if (exists && !keep && !overwrite && !std::filesystem::is_empty(path)) {
     throw FileError(
-        fmt::format("{}: the trajectories folder is not empty; it is not overwritten "
-                    "(--force writes into it)",
-                    path.string()));
+        OptionMessage{fmt::format("{}: the trajectories folder is not empty; it is not overwritten "
+                                  "(‹force› writes into it)",
+                                  path.string())});
   }
   std::error_code error;
   std::filesystem::create_directories(path, error);

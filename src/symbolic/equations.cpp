@@ -182,11 +182,13 @@ class Parameters {
     }
     for (const auto& [name, to] : given_) {
       if (known(name)) continue;
-      throw InvalidArgument(
+      InvalidArgument error(
           fmt::format("equations: symbols: names '{}' (as {}), which is no parameter or coordinate "
                       "of the model{}; its coordinates are {}, its parameters {}",
                       name, to, did_you_mean(name, views), fmt::join(coordinates_, ", "),
                       fmt::join(listed_, ", ")));
+      error.about_symbol(name);
+      throw error;
     }
   }
   std::vector<symbol> symbols_;
@@ -210,10 +212,12 @@ class Parameters {
       if (symbols_[k].get_name() != shown) continue;
       const double other = values_[k].value;
       if (std::abs(other - value) > 1e-12 * std::max(std::abs(other), std::abs(value))) {
-        throw InvalidArgument(fmt::format(
+        InvalidArgument error(fmt::format(
             "equations: two parameters are named '{}' with different values, {} and {} ({}); give "
             "them different names",
             shown, other, value, name));
+        error.about_symbol(shown);
+        throw error;
       }
       return symbols_[k];
     }

@@ -250,7 +250,12 @@ void MultibodySystem::configuration_scale(const VecX& q, VecX& scale) const {
         scale.segment<3>(j.v_index).setOnes();
         scale.segment<3>(j.v_index + 3) = q.segment<3>(j.q_index).cwiseAbs();
         break;
-      default:
+      case model::JointType::fixed:
+      case model::JointType::revolute:
+      case model::JointType::prismatic:
+      case model::JointType::cylindrical:
+      case model::JointType::universal:
+      case model::JointType::planar:
         scale.segment(j.v_index, j.nv()) = q.segment(j.q_index, j.nq()).cwiseAbs();
         break;
     }

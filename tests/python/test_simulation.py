@@ -1,12 +1,14 @@
 """momenta.simulate against `momenta simulate` on the same model: the same columns and the same
 numbers, bit for bit (both are the one C++ run loop), the audit, and the options' merge."""
 
+import subprocess
+
 import numpy as np
 import pytest
 
 import momenta
 
-from conftest import EXAMPLES, STIFF_SPRING, cli_csv
+from conftest import EXAMPLES, STIFF_SPRING, cli_csv, cli_path
 
 
 @pytest.mark.parametrize("name, args", [
@@ -96,7 +98,7 @@ def test_options_merge_as_on_the_command_line():
         momenta.simulate(model, duration=-1.0)
 
 
-def test_a_run_that_blows_up_names_the_time():
+def test_a_run_that_blows_up_names_the_time(tmp_path):
     path = STIFF_SPRING
     with pytest.raises(momenta.NumericalError, match="t = "):
         momenta.simulate(momenta.load_model(path), duration=2.0, dt=0.01)
@@ -110,6 +112,16 @@ def test_a_run_that_blows_up_names_the_time():
     assert np.isfinite(partial.data).all()
     np.testing.assert_allclose(np.diff(partial.time), 0.01, rtol=1e-12)
     failed_at = float(str(failure.value).split("t = ")[1].split()[0])
+    # What to try, in Python's words: a smaller dt=, or integrator='dopri5' (the command line
+    # says --dt and --integrator dopri5 for the same run).
+    message = str(failure.value)
+    assert "a smaller dt=" in message and "integrator='dopri5'" in message, message
+    assert "--dt" not in message and "--integrator" not in message, message
+    cli = subprocess.run([cli_path(), "simulate", str(path), "--duration", "2", "--dt", "0.01", "-q",
+                          "-o", str(tmp_path / "blown.csv")], capture_output=True, text=True)
+    assert cli.returncode == 1
+    assert "a smaller --dt, or --integrator dopri5" in cli.stderr, cli.stderr
+    assert "dt=" not in cli.stderr, cli.stderr
     assert partial.time[-1] < failed_at
     assert partial.summary["t_end"] == partial.time[-1]
 
@@ -130,7 +142,9 @@ def test_stiff_models_run_with_the_implicit_integrators():
     assert fixed.summary["integrator"] == "sdirk3" and fixed.summary["steps"] == 100
     explicit = momenta.simulate(model, duration=0.2, integrator="dopri5", rtol=1e-3)
     assert "held by stability" in explicit.summary["stiffness"]
-    assert "--integrator bdf" in explicit.summary["stiffness"]
+    # Named as Python writes it (the command line's summary says --integrator bdf).
+    assert "integrator='bdf'" in explicit.summary["stiffness"]
+    assert "--" not in explicit.summary["stiffness"]
 
 
 def test_events_are_rows_and_entries_of_the_summary():

@@ -95,11 +95,10 @@ struct Tolerances {
 /// integrator.
 void check_tolerances(std::string_view integrator, const Tolerances& tolerances);
 
-/// The names make_integrator knows, in the order docs list them.
-const std::vector<std::string_view>& integrator_names();
-
-/// A new integrator by name; throws InvalidArgument with a did-you-mean hint for an unknown name,
-/// or when a tolerance is not positive and finite.
+/// A new integrator of this folder by name (the general family of model/integrators.hpp, the one
+/// list of names: rk4, symplectic_euler, dopri5, bdf, sdirk3); throws InvalidArgument for any other
+/// name, or when a tolerance is not positive and finite. Front ends build integrators with
+/// system::make_integrator, which asks the registry (with a did-you-mean for a misspelt name).
 std::unique_ptr<Integrator> make_integrator(std::string_view name,
                                             const Tolerances& tolerances = {});
 

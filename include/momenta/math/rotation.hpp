@@ -18,6 +18,18 @@ Mat3 skew(const Vec3& a);
 /// zero or not finite (it is normalized otherwise).
 Mat3 rotation_from_axis_angle(const Vec3& axis, double angle);
 
+/// Rodrigues' formula: the rotation about the unit axis a by the angle whose cosine and sine are
+/// c and s, R = c 1 + s [a]× + (1 − c) a aᵀ. Unchecked (a must be unit), for the joints' hot
+/// paths; rotation_from_axis_angle checks its axis.
+inline Mat3 unit_axis_rotation(const Vec3& a, double c, double s) {
+  const double t = 1.0 - c;
+  Mat3 R;
+  R << t * a.x() * a.x() + c, t * a.x() * a.y() - s * a.z(), t * a.x() * a.z() + s * a.y(),
+      t * a.x() * a.y() + s * a.z(), t * a.y() * a.y() + c, t * a.y() * a.z() - s * a.x(),
+      t * a.x() * a.z() - s * a.y(), t * a.y() * a.z() + s * a.x(), t * a.z() * a.z() + c;
+  return R;
+}
+
 /// Rotation from three Euler angles (rad) applied in the named sequence, SciPy's convention:
 /// upper case ("ZYX", "ZXZ") is intrinsic — R = R_1(a0) R_2(a1) R_3(a2) about the moving axes —
 /// and lower case ("zyx", "zxz") is extrinsic — R = R_3(a2) R_2(a1) R_1(a0) about fixed axes.

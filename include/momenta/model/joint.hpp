@@ -27,6 +27,8 @@
 // (MuJoCo's convention, ordered rotation first). Quaternions are integrated with the exponential
 // map, never by adding and normalizing (see integrate() in model.hpp).
 
+#include <array>
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -47,53 +49,155 @@ enum class JointType {
   free
 };
 
+/// What a joint type is, one row per type: its names, sizes, axes, units and what it exports as.
+/// Every reader, writer and algorithm that needs more than the joint's motion reads this table;
+/// the motion itself is written in exhaustive switches (no `default:`: -Wswitch, an error in the
+/// test build, names every switch a new type must join). docs/guides.md, "Adding a joint type".
+struct JointTraits {
+  JointType type;
+  std::string_view name;   ///< lower case: "revolute"
+  std::string_view alias;  ///< the other name model files accept ("hinge"), or empty
+  int nq = 0;              ///< configuration size
+  int nv = 0;              ///< velocity size (degrees of freedom)
+  /// The axes it reads: 0, 1 (`axis`: revolute, prismatic, cylindrical) or 2 (`axis2` too).
+  int axes = 0;
+  int quaternion_at = -1;  ///< where its unit quaternion starts in its q; −1: none
+  std::array<std::string_view, 7> q_units{};  ///< per coordinate: "rad", "m" or "1" (quaternion)
+  std::array<std::string_view, 6> v_units{};  ///< per velocity: "rad/s" or "m/s"
+  std::array<std::string_view, 7> q_names{};  ///< "<joint>.<name>": "angle", "qw", "x"
+  std::array<std::string_view, 6> v_names{};  ///< "angle_rate", "wx", "vx"
+  std::string_view q_layout;  ///< how q reads, for messages: "[x (m), y (m), angle (rad)]"
+  std::string_view urdf;      ///< the URDF joint type it exports as; empty: URDF has none
+};
+
+inline constexpr std::array<JointTraits, 8> kJointTraits{{
+    {JointType::fixed, "fixed", "weld", 0, 0, 0, -1, {}, {}, {}, {}, "no coordinates", "fixed"},
+    {JointType::revolute,
+     "revolute",
+     "hinge",
+     1,
+     1,
+     1,
+     -1,
+     {"rad"},
+     {"rad/s"},
+     {"angle"},
+     {"angle_rate"},
+     "(angle, rad)",
+     "continuous"},
+    {JointType::prismatic,
+     "prismatic",
+     "slider",
+     1,
+     1,
+     1,
+     -1,
+     {"m"},
+     {"m/s"},
+     {"position"},
+     {"position_rate"},
+     "(displacement, m)",
+     "prismatic"},
+    {JointType::cylindrical,
+     "cylindrical",
+     "",
+     2,
+     2,
+     1,
+     -1,
+     {"rad", "m"},
+     {"rad/s", "m/s"},
+     {"angle", "position"},
+     {"angle_rate", "position_rate"},
+     "[angle (rad), displacement (m)]",
+     ""},
+    {JointType::universal,
+     "universal",
+     "",
+     2,
+     2,
+     2,
+     -1,
+     {"rad", "rad"},
+     {"rad/s", "rad/s"},
+     {"angle1", "angle2"},
+     {"angle1_rate", "angle2_rate"},
+     "[angle1, angle2] (rad)",
+     ""},
+    {JointType::spherical,
+     "spherical",
+     "ball",
+     4,
+     3,
+     0,
+     0,
+     {"1", "1", "1", "1"},
+     {"rad/s", "rad/s", "rad/s"},
+     {"qw", "qx", "qy", "qz"},
+     {"wx", "wy", "wz"},
+     "quaternion [w, x, y, z]",
+     ""},
+    {JointType::planar,
+     "planar",
+     "",
+     3,
+     3,
+     0,
+     -1,
+     {"m", "m", "rad"},
+     {"m/s", "m/s", "rad/s"},
+     {"x", "y", "angle"},
+     {"x_rate", "y_rate", "angle_rate"},
+     "[x (m), y (m), angle (rad)]",
+     "planar"},
+    {JointType::free,
+     "free",
+     "floating",
+     7,
+     6,
+     0,
+     3,
+     {"m", "m", "m", "1", "1", "1", "1"},
+     {"rad/s", "rad/s", "rad/s", "m/s", "m/s", "m/s"},
+     {"x", "y", "z", "qw", "qx", "qy", "qz"},
+     {"wx", "wy", "wz", "vx", "vy", "vz"},
+     "[x, y, z (m), qw, qx, qy, qz]",
+     "floating"},
+}};
+
+/// The row of kJointTraits for `type`.
+constexpr const JointTraits& joint_traits(JointType type) {
+  return kJointTraits[static_cast<std::size_t>(type)];
+}
+
+namespace detail {
+constexpr bool traits_in_enum_order() {
+  for (std::size_t i = 0; i < kJointTraits.size(); ++i) {
+    if (kJointTraits[i].type != static_cast<JointType>(i)) return false;
+  }
+  return true;
+}
+}  // namespace detail
+static_assert(detail::traits_in_enum_order(), "kJointTraits lists the joint types in enum order");
+
 /// The lower-case name of a joint type: "fixed", "revolute", ...
 std::string_view joint_type_name(JointType type);
 
-/// The joint type with that name; throws InvalidArgument with the list of names (and a "did you
-/// mean" suggestion) for an unknown one. Accepts the aliases "weld" (fixed), "hinge" (revolute),
-/// "slider" (prismatic), "ball" (spherical) and "floating" (free).
+/// The joint type with that name or alias (kJointTraits: "weld", "hinge", "slider", "ball",
+/// "floating"); throws InvalidArgument with the list of names (and a "did you mean" suggestion)
+/// for an unknown one.
 JointType joint_type_from_name(std::string_view name);
 
 /// Configuration size nq of a joint type.
-constexpr int joint_nq(JointType type) {
-  switch (type) {
-    case JointType::fixed:
-      return 0;
-    case JointType::revolute:
-    case JointType::prismatic:
-      return 1;
-    case JointType::cylindrical:
-    case JointType::universal:
-      return 2;
-    case JointType::spherical:
-      return 4;
-    case JointType::planar:
-      return 3;
-    case JointType::free:
-      return 7;
-  }
-  return 0;
-}
+constexpr int joint_nq(JointType type) { return joint_traits(type).nq; }
 
 /// Velocity size nv of a joint type (its degrees of freedom).
-constexpr int joint_nv(JointType type) {
-  switch (type) {
-    case JointType::fixed:
-      return 0;
-    case JointType::revolute:
-    case JointType::prismatic:
-      return 1;
-    case JointType::cylindrical:
-    case JointType::universal:
-      return 2;
-    case JointType::spherical:
-    case JointType::planar:
-      return 3;
-    case JointType::free:
-      return 6;
-  }
-  return 0;
+constexpr int joint_nv(JointType type) { return joint_traits(type).nv; }
+
+/// Whether velocity coordinate k (0-based within the joint) of a joint of this type is a rotation
+/// rate (rad/s) rather than a translation rate (m/s).
+constexpr bool is_rotation_rate(JointType type, int k) {
+  return joint_traits(type).v_units[static_cast<std::size_t>(k)] == "rad/s";
 }
 
 /// A joint as described by a user and stored in the Model. The fields under "set by

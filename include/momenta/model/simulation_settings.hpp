@@ -29,4 +29,9 @@ struct SimulationSettings {
   Position position, duration_position, step_position;
 };
 
+/// `top` over `below`, one value over another: each of top's fields where it is set, else below's;
+/// the events below's, then top's (one of top's named like one of below's replaces it, keeping
+/// its place). The positions are below's (a file's, for messages).
+SimulationSettings over(const SimulationSettings& top, const SimulationSettings& below);
+
 }  // namespace momenta::model

@@ -12,18 +12,13 @@
 
 namespace momenta::simulate {
 
-/// What the caller gives; unset fields fall back to the model file, then the defaults.
+/// What the caller asks for: a run's settings, as a model file's `simulation:` section says them
+/// (the fields it leaves unset fall back to the file's, then to the defaults; its events are
+/// watched besides the file's, one named like a file's replacing it — `--stop-when` on a
+/// condition the file records), and what only a request has.
 struct RunRequest {
-  std::optional<double> duration;  ///< s
-  std::optional<double> step;      ///< s: the fixed step, or an adaptive method's largest
-  std::optional<double> relative_tolerance;
-  std::optional<double> absolute_tolerance;
-  std::optional<std::string> integrator;  ///< a name of model::integrators()
-  std::optional<long> every;              ///< record every n-th step
-  bool reactions = false;
-  /// Events watched besides the file's (model/event_spec.hpp); one named like a file's event
-  /// replaces it (`--stop-when` on a condition the file records).
-  std::vector<model::EventSpec> events;
+  model::SimulationSettings settings;
+  bool reactions = false;  ///< record each joint's reaction
 };
 
 /// Adaptive methods without a step given take at most duration / kAdaptiveSteps per step, so a

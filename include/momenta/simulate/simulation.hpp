@@ -148,7 +148,8 @@ inline constexpr int kStiffnessCheckLimit = 200;
 /// What the summary says about stiffness, a sentence, or "" when there is nothing to say: a fixed
 /// step outside the explicit method's stability region for some mode (with the eigenvalue and the
 /// largest stable step), or dopri5 held by stability (Hairer's test: 15 stability-limited steps in
-/// a row), each suggesting bdf.
+/// a row), each suggesting bdf. The options it names are marked (common/error.hpp,
+/// OptionMessage): a front end spells them with spell_options.
 std::string stiffness_note(const SimulationSummary& summary);
 
 /// What the summary says about a singular initial configuration (ConsistentState::
@@ -206,8 +207,9 @@ class Simulation {
 
 /// The summary as `momenta simulate` prints it on stderr: steps (accepted, rejected),
 /// evaluations, wall time, rows, and the audit (end and maximum drift, or why a quantity is not
-/// audited). Several lines, each ending in '\n'.
-std::string format_summary(const SimulationSummary& summary);
+/// audited). Several lines, each ending in '\n'. The options a note names are written by `spell`
+/// (the command line's --integrator, Python's integrator=).
+std::string format_summary(const SimulationSummary& summary, OptionSpelling spell = plain_spelling);
 
 /// What a run that stopped early (a NumericalError from Simulation::run) did, as far as its
 /// recorded rows tell: the integrator and step of `options`, `rows` rows, up to `t_end` (the last

@@ -123,7 +123,10 @@ TEST(Run, NonFiniteStateStopsWithTheTimeAndTheCoordinate) {
     const std::string message = error.what();
     EXPECT_NE(message.find("non-finite at t = "), std::string::npos) << message;
     EXPECT_NE(message.find("slider."), std::string::npos) << message;
-    EXPECT_NE(message.find("smaller --dt"), std::string::npos) << message;
+    // What to try, as options (the front ends spell them: --dt, dt=).
+    EXPECT_NE(message.find("try a smaller step, or integrator dopri5"), std::string::npos)
+        << message;
+    EXPECT_EQ(error.options(), (std::vector<std::string>{"step", "integrator", "integrator"}));
   }
 }
 

@@ -2,7 +2,11 @@
 // configuration-space motion q ⊕ v t, for every joint type.
 #include "momenta/model/joint.hpp"
 
+#include <algorithm>
 #include <random>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -26,14 +30,60 @@ TEST(Joint, TypeNames) {
   }
 }
 
+// The traits table agrees with the motion it describes: a unit per coordinate, rates in rad/s
+// where the coordinate is an angle (the motion subspace turns the body: S's angular rows) and
+// m/s where it translates, its quaternion where integrate() keeps one, names and aliases unique
+// and read back.
+TEST(Joint, TraitsDescribeEachTypesMotion) {
+  std::vector<std::string_view> names;
+  for (const JointTraits& t : kJointTraits) {
+    SCOPED_TRACE(std::string(t.name));
+    EXPECT_EQ(joint_type_from_name(t.name), t.type);
+    names.push_back(t.name);
+    if (!t.alias.empty()) {
+      EXPECT_EQ(joint_type_from_name(t.alias), t.type);
+      names.push_back(t.alias);
+    }
+    for (int k = 0; k < 7; ++k) {
+      EXPECT_EQ(t.q_units[k].empty(), k >= t.nq) << k;
+      EXPECT_EQ(t.q_names[k].empty(), k >= t.nq) << k;
+    }
+    for (int k = 0; k < 6; ++k) {
+      EXPECT_EQ(t.v_units[k].empty(), k >= t.nv) << k;
+      EXPECT_EQ(t.v_names[k].empty(), k >= t.nv) << k;
+    }
+    Joint j;
+    j.type = t.type;
+    j.axis = Vec3(0.6, 0.0, 0.8);
+    j.axis2 = Vec3(0.0, 1.0, 0.0);
+    VecX q = VecX::Zero(t.nq);
+    if (t.quaternion_at >= 0) q[t.quaternion_at] = 1.0;
+    const Mat6 S = joint_motion_subspace(j, q.data());
+    for (int k = 0; k < t.nv; ++k) {
+      const bool turns = S.col(k).head<3>().norm() > 0.5;
+      EXPECT_EQ(is_rotation_rate(t.type, k), turns) << k;
+      EXPECT_EQ(turns ? S.col(k).tail<3>().norm() : S.col(k).head<3>().norm(), 0.0) << k;
+    }
+    // A quaternion exactly where the configuration has more entries than the velocity.
+    EXPECT_EQ(t.quaternion_at >= 0, t.nq > t.nv);
+    for (int k = 0; k < t.nq; ++k) {
+      const bool in_quaternion =
+          t.quaternion_at >= 0 && k >= t.quaternion_at && k < t.quaternion_at + 4;
+      EXPECT_EQ(t.q_units[k] == "1", in_quaternion) << k;
+    }
+  }
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(std::adjacent_find(names.begin(), names.end()), names.end());
+}
+
 // S v = the spatial velocity of J' relative to J, in J' about J'o: [(Rᵀ Ṙ)∨; Rᵀ ṗ], here by
 // central differences of X_JJ'(q ⊕ ±h v) (truncation h²/6 ≈ 2e-13, round-off eps/h ≈ 2e-10).
 TEST(Joint, MotionSubspaceIsTheDerivativeOfTheTransform) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1, 1);
-  for (JointType type :
-       {JointType::revolute, JointType::prismatic, JointType::cylindrical, JointType::universal,
-        JointType::spherical, JointType::planar, JointType::free}) {
+  for (const JointTraits& traits : kJointTraits) {  // every type that moves
+    if (traits.nv == 0) continue;
+    const JointType type = traits.type;
     ModelBuilder b;
     b.add_body("body", inertia::MassProperties(1.0, Vec3(0.1, 0.2, 0.3),
                                                Vec3(0.1, 0.2, 0.25).asDiagonal().toDenseMatrix()));

@@ -76,9 +76,9 @@ TEST(QuarterCarSweep, RowsEqualTheModelRunOnItsOwnAndDoNotDependOnTheThreadCount
       "examples/quarter_car.yaml", {{"forces.suspension.stiffness", o.parameters[0]},
                                     {"forces.suspension.damping", o.parameters[1]}});
   simulate::RunRequest request;
-  request.duration = 2.0;
-  request.step = 0.001;
-  request.integrator = "rk4";
+  request.settings.duration = 2.0;
+  request.settings.step = 0.001;
+  request.settings.integrator = "rk4";
   simulate::Simulation simulation(file.model, file.outputs,
                                   simulate::resolve_run(request, file.simulation).options);
   simulate::TableSink table;
