@@ -36,7 +36,7 @@
 namespace momenta::io {
 
 namespace detail {
-struct YamlAccess;  // the readers' own access to the parsed document (src/io/yaml_access.hpp)
+struct YamlAccess;  // the readers' own access to the parsed document (src/io/yaml/yaml_access.hpp)
 }  // namespace detail
 
 /// Largest magnitude of a number read from a file (SI units). Products of three such numbers

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "model_file_internal.hpp"
+#include "model_file/model_file_internal.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
 

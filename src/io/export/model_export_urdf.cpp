@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "model_export_common.hpp"
+#include "export/model_export_common.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/io/model_export.hpp"
 #include "momenta/math/rotation.hpp"

@@ -20,7 +20,7 @@
 #include "momenta/io/yaml_reader.hpp"
 #include "momenta/math/rotation.hpp"
 #include "one_line.hpp"
-#include "part_file_internal.hpp"
+#include "part_file/part_file_internal.hpp"
 
 namespace momenta::io {
 namespace {

@@ -9,11 +9,11 @@
 #include <fmt/format.h>
 #include <Eigen/Geometry>
 
-#include "mjcf_reader.hpp"
+#include "mjcf/mjcf_reader.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/one_line.hpp"
 #include "momenta/common/suggest.hpp"
-#include "xml_support.hpp"
+#include "xml/xml_support.hpp"
 
 namespace momenta::io {
 namespace detail {

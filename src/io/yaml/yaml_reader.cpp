@@ -18,7 +18,7 @@
 
 #include "momenta/common/suggest.hpp"
 #include "momenta/io/files_read.hpp"
-#include "yaml_access.hpp"
+#include "yaml/yaml_access.hpp"
 
 namespace momenta::io {
 

@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 #include <Eigen/Geometry>
 
-#include "mjcf_reader.hpp"
+#include "mjcf/mjcf_reader.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/one_line.hpp"
 #include "momenta/common/suggest.hpp"
@@ -15,7 +15,7 @@
 #include "momenta/inertia/primitives.hpp"
 #include "momenta/io/mesh_file.hpp"
 #include "momenta/math/rotation.hpp"
-#include "xml_support.hpp"
+#include "xml/xml_support.hpp"
 
 namespace momenta::io::detail {
 namespace {

@@ -16,7 +16,7 @@
 #include <fmt/format.h>
 #include <assimp/Importer.hpp>
 
-#include "mesh_text_formats.hpp"
+#include "mesh/mesh_text_formats.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/io/files_read.hpp"
 

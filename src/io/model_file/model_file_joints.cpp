@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "model_file_internal.hpp"
+#include "model_file/model_file_internal.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/io/part_node.hpp"
 #include "momenta/math/rotation.hpp"

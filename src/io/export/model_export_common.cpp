@@ -1,6 +1,6 @@
 // What the two model writers share (model_export_common.hpp).
 
-#include "model_export_common.hpp"
+#include "export/model_export_common.hpp"
 
 #include <variant>
 

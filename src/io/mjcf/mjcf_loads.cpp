@@ -3,9 +3,9 @@
 
 #include <fmt/format.h>
 
-#include "mjcf_reader.hpp"
+#include "mjcf/mjcf_reader.hpp"
 #include "momenta/common/error.hpp"
-#include "xml_support.hpp"
+#include "xml/xml_support.hpp"
 
 namespace momenta::io::detail {
 namespace {

@@ -14,7 +14,7 @@
 #include "momenta/inertia/mesh_mass_properties.hpp"
 #include "momenta/inertia/primitives.hpp"
 #include "momenta/io/mesh_file.hpp"
-#include "urdf_reader.hpp"
+#include "urdf/urdf_reader.hpp"
 
 namespace momenta::io::detail {
 namespace {

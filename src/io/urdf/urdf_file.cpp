@@ -20,8 +20,8 @@
 #include "momenta/common/suggest.hpp"
 #include "momenta/math/rotation.hpp"
 #include "momenta/model/model_builder.hpp"
-#include "urdf_reader.hpp"
-#include "xml_support.hpp"
+#include "urdf/urdf_reader.hpp"
+#include "xml/xml_support.hpp"
 
 namespace momenta::io::detail {
 namespace {

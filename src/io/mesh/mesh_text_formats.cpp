@@ -1,4 +1,4 @@
-#include "mesh_text_formats.hpp"
+#include "mesh/mesh_text_formats.hpp"
 
 #include <charconv>
 #include <cmath>

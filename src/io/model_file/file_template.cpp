@@ -9,12 +9,12 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
-#include "model_file_internal.hpp"
+#include "model_file/model_file_internal.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
 #include "momenta/io/files_read.hpp"
-#include "part_file_internal.hpp"
-#include "yaml_access.hpp"
+#include "part_file/part_file_internal.hpp"
+#include "yaml/yaml_access.hpp"
 
 namespace momenta::io {
 namespace {

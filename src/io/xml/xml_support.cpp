@@ -1,4 +1,4 @@
-#include "xml_support.hpp"
+#include "xml/xml_support.hpp"
 
 #include <algorithm>
 #include <cctype>
