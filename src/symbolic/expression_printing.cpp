@@ -61,7 +61,32 @@ using GiNaC::ex;
 // above its own precedence is parenthesized).
 constexpr unsigned kSumPrecedence = 40, kProductPrecedence = 50;
 
+// A rational a person reads better as a fraction than as a decimal: one whose decimal does not
+// end (its denominator has a factor other than 2 and 5) and whose denominator is small — the
+// 1/12 of a rod's m L²/12, the 3/80 of a cone's — not 0.08333333333333333.
+bool reads_as_fraction(const GiNaC::numeric& n) {
+  if (!n.is_rational() || n.is_integer()) return false;
+  GiNaC::numeric q = n.denom();
+  if (q > 1000) return false;
+  while (GiNaC::irem(q, 2).is_zero()) q /= 2;
+  while (GiNaC::irem(q, 5).is_zero()) q /= 5;
+  return q != 1;
+}
+
 void print_decimal(const GiNaC::numeric& n, const GiNaC::print_context& c, unsigned level) {
+  if (reads_as_fraction(n)) {
+    const bool latex = dynamic_cast<const GiNaC::print_latex*>(&c) != nullptr;
+    const bool parenthesize = level > 0 && (!latex || n.is_negative());
+    if (parenthesize) c.s << "(";
+    if (latex) {
+      c.s << (n.is_negative() ? "-" : "") << "\\frac{" << GiNaC::abs(n.numer()) << "}{" << n.denom()
+          << "}";
+    } else {
+      c.s << n.numer() << "/" << n.denom();
+    }
+    if (parenthesize) c.s << ")";
+    return;
+  }
   if (n.is_integer()) {
     // A negative integer inside a product or power keeps its parentheses (x^(-1), not x^-1).
     if (n.is_negative() && level > 0) {
@@ -219,12 +244,24 @@ void print_product(const GiNaC::mul& product, const GiNaC::print_context& contex
     std::string text;
   };
   std::vector<Factor> numerator, denominator;
+  // GiNaC takes a sum's common fraction out of it (m L²/12 + m d² times θ̈ is kept as
+  // 1/12 θ̈ (m L² + 12 m d²)): the fraction goes back into the sum, as the textbook writes it.
+  int sums = 0;
+  GiNaC::numeric common = 1;
   for (std::size_t i = 0; i < product.nops(); ++i) {
-    const ex f = product.op(i);
+    if (GiNaC::is_a<GiNaC::add>(product.op(i))) ++sums;
+    if (GiNaC::is_a<GiNaC::numeric>(product.op(i))) {
+      common *= GiNaC::ex_to<GiNaC::numeric>(product.op(i));
+    }
+  }
+  const bool into_sum = sums == 1 && reads_as_fraction(common);
+  for (std::size_t i = 0; i < product.nops(); ++i) {
+    ex f = product.op(i);
     if (GiNaC::is_a<GiNaC::numeric>(f)) {
-      coefficient *= GiNaC::ex_to<GiNaC::numeric>(f);
+      if (!into_sum) coefficient *= GiNaC::ex_to<GiNaC::numeric>(f);
       continue;
     }
+    if (into_sum && GiNaC::is_a<GiNaC::add>(f)) f = GiNaC::expand(common * f);
     const bool divides = GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::numeric>(f.op(1)) &&
                          GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_negative();
     ex shown = divides ? GiNaC::pow(f.op(0), -f.op(1)) : f;
@@ -272,7 +309,12 @@ void print_product(const GiNaC::mul& product, const GiNaC::print_context& contex
   };
 
   const bool negative = coefficient.is_negative();
-  const GiNaC::numeric magnitude = GiNaC::abs(coefficient);
+  GiNaC::numeric magnitude = GiNaC::abs(coefficient);
+  // A fraction's denominator below the line: m*length^2/12, \frac{m length^2}{12}.
+  if (reads_as_fraction(magnitude) && !numerator.empty()) {
+    denominator.push_back({0, 0, text_of(ex(magnitude.denom()), c, kProductPrecedence)});
+    magnitude = magnitude.numer();
+  }
   std::string top = join(numerator);
   if (magnitude != 1 || top.empty()) {
     const std::string number = text_of(ex(magnitude), c, kProductPrecedence);

@@ -357,6 +357,22 @@ TEST_F(AnalysisCli, AUniformRodsInertiaScalesWithItsMassSymbol) {
       momenta("equations " + example("compound_pendulum") + " --symbols m_rod,I_rod_yy");
   ASSERT_EQ(I.code, 0) << I.err;
   EXPECT_NE(I.out.find("I_rod_yy"), std::string::npos) << I.out;
+  // Its length a symbol too: Ī = m L²/12 as the textbook writes it, the fraction inside the sum
+  // (GiNaC keeps 1/12 θ̈ (12 m d² + m L²), printed 0.08333333333333333*… before), in LaTeX a
+  // \frac.
+  const CliRun L =
+      momenta("equations " + example("compound_pendulum") + " --symbols m_rod,g,length_rod,L_rod");
+  ASSERT_EQ(L.code, 0) << L.err;
+  EXPECT_NE(L.out.find("\npivot_ddot*(L_rod^2*m_rod + length_rod^2*m_rod/12) + "
+                       "L_rod*g*m_rod*sin(pivot) = 0\n"),
+            std::string::npos)
+      << L.out;
+  const CliRun latex = momenta("equations " + example("compound_pendulum") +
+                               " --symbols m_rod,g,length_rod,L_rod --latex");
+  ASSERT_EQ(latex.code, 0) << latex.err;
+  EXPECT_NE(latex.out.find("\\frac{\\mathrm{length\\_rod}^{2} \\, m_{\\mathrm{rod}}}{12}"),
+            std::string::npos)
+      << latex.out;
 }
 
 // The heavy top in the notes' Euler angles (--coordinates euler:ZXZ): precession φ, nutation θ,
