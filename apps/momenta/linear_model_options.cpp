@@ -74,8 +74,11 @@ LoadedLinearModel load_linear_model(const LinearModelOptions& o, io::ModelFile f
   analysis::LinearAnalysis result = analysis::linear_analysis_about(
       model, choice.value_or(analysis::OperatingPointChoice::given), options, given, o.about);
   if (result.equilibrium) {
+    // Asked for by name, the sentence gains its iterations; auto's says why it moved there.
     const analysis::Equilibrium& e = *result.equilibrium;
-    result.about += fmt::format(" ({} Newton iterations)", e.iterations);
+    if (choice == analysis::OperatingPointChoice::equilibrium) {
+      result.about += fmt::format(" ({} Newton iterations)", e.iterations);
+    }
     if (!e.stable()) {
       std::vector<std::string> growth;
       for (const auto& z : e.unstable_eigenvalues) growth.push_back(complex_text(z));
