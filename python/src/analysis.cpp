@@ -676,22 +676,8 @@ about a precession), `shape_to_tangent` (nv × states: how a mode's shape moves 
 initial state's `largest_acceleration` and `largest_speed`, and what each kind found:
 `equilibrium`, `joint_steady`, `rolling_steady`, `spinning_modes`, `precession` (None where not
 that kind).)doc")
-      .def_property_readonly("kind",
-                             [](const LinearAnalysis& r) {
-                               switch (r.kind) {
-                                 case LinearAnalysisKind::joint_coordinates:
-                                   return "joint_coordinates";
-                                 case LinearAnalysisKind::joint_steady:
-                                   return "joint_steady";
-                                 case LinearAnalysisKind::rolling_steady:
-                                   return "rolling_steady";
-                                 case LinearAnalysisKind::spinning_body:
-                                   return "spinning_body";
-                                 case LinearAnalysisKind::steady_precession:
-                                   return "steady_precession";
-                               }
-                               return "?";
-                             })
+      .def_property_readonly(
+          "kind", [](const LinearAnalysis& r) { return linear_analysis_kind_name(r.kind); })
       .def_readonly("about", &LinearAnalysis::about)
       .def_readonly("linear", &LinearAnalysis::linear)
       .def_property_readonly("shape_to_tangent",

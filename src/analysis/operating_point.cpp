@@ -212,6 +212,22 @@ bool LinearAnalysis::has_channels() const {
   return kind == LinearAnalysisKind::joint_coordinates || kind == LinearAnalysisKind::joint_steady;
 }
 
+const char* linear_analysis_kind_name(LinearAnalysisKind kind) {
+  switch (kind) {
+    case LinearAnalysisKind::joint_coordinates:
+      return "joint_coordinates";
+    case LinearAnalysisKind::joint_steady:
+      return "joint_steady";
+    case LinearAnalysisKind::rolling_steady:
+      return "rolling_steady";
+    case LinearAnalysisKind::spinning_body:
+      return "spinning_body";
+    case LinearAnalysisKind::steady_precession:
+      return "steady_precession";
+  }
+  return "?";
+}
+
 std::optional<OperatingPointChoice> operating_point_choice(std::string_view name) {
   if (name == "auto") return OperatingPointChoice::automatic;
   if (name == "initial") return OperatingPointChoice::initial;

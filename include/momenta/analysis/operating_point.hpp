@@ -51,6 +51,9 @@ enum class LinearAnalysisKind {
   steady_precession,  ///< a symmetric top's steady precession: steady_precession()
 };
 
+/// "joint_coordinates", "joint_steady", "rolling_steady", "spinning_body", "steady_precession".
+const char* linear_analysis_kind_name(LinearAnalysisKind kind);
+
 /// A linear analysis about the chosen point.
 struct LinearAnalysis {
   LinearAnalysisKind kind = LinearAnalysisKind::joint_coordinates;

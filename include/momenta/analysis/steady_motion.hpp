@@ -123,8 +123,8 @@ CampbellDiagram campbell_diagram(const SpinningBody& body, double from, double t
 /// l the centre of mass's distance along e). A steady motion of the precessing frame, not of
 /// Euler–Poisson's: the top's axis keeps its tilt while it turns about the vertical.
 struct SteadyPrecession {
-  double tilt = 0.0;  ///< θ, rad
-  double spin = 0.0;  ///< ω₃, rad/s
+  double tilt = 0.0;            ///< θ, rad
+  double spin = 0.0;            ///< ω₃, rad/s
   Vec3 axis_B = Vec3::UnitZ();  ///< e: the symmetry axis in the body frame (unit)
   double I1 = 0.0, I3 = 0.0, mgl = 0.0;
   /// The two precession rates, rad/s, slow ≤ fast in magnitude; NaN when the spin is below
