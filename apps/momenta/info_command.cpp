@@ -21,6 +21,7 @@
 #include "momenta/system/freedoms.hpp"
 #include "momenta/system/multibody_system.hpp"
 #include "momenta/system/output_set.hpp"
+#include "option_spelling.hpp"
 #include "output_format.hpp"
 
 namespace momenta::cli {
@@ -28,6 +29,14 @@ namespace {
 
 // Ordered: keys print in the order written.
 using json = nlohmann::ordered_json;
+
+// The file's notes with the options they name as the command line spells them (--link-density).
+std::vector<std::string> spelled_notes(const io::ModelFile& file) {
+  std::vector<std::string> notes;
+  for (const std::string& note : file.notes)
+    notes.push_back(spell_options(note, command_line_spelling));
+  return notes;
+}
 
 struct InfoOptions {
   ModelArgument model;
@@ -289,7 +298,7 @@ json describe(const InfoOptions& o, const io::ModelFile& file) {
   if (s.absolute_tolerance) settings["atol"] = *s.absolute_tolerance;
   if (s.every) settings["every"] = *s.every;
   j["simulation"] = std::move(settings);
-  j["not_used"] = file.notes;  // what a URDF says that momenta does not use, with its line
+  j["not_used"] = spelled_notes(file);  // what a URDF says that momenta does not use, with its line
   return j;
 }
 
@@ -363,7 +372,7 @@ void print_text(const json& j, const io::ModelFile& file) {
 
   if (!file.notes.empty()) {
     fmt::print("\nnot used by momenta ({})\n", file.notes.size());
-    for (const std::string& note : file.notes) fmt::print("  {}\n", note);
+    for (const std::string& note : spelled_notes(file)) fmt::print("  {}\n", note);
   }
 
   if (!j["simulation"].empty()) {

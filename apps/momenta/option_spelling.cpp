@@ -12,6 +12,9 @@ std::string command_line_spelling(std::string_view name, std::string_view value)
       {"relative_tolerance", "--rtol"},
       {"absolute_tolerance", "--atol"},
   }};
+  // What to use instead, where that is a command or a pair of flags.
+  if (name == "code") return "--cpp or --python";
+  if (name == "linearize") return "`momenta linearize`";
   std::string flag;
   for (const auto& [option, spelled] : kFlags) {
     if (option == name) flag = spelled;

@@ -73,8 +73,12 @@ std::string python_spelling(std::string_view name, std::string_view value) {
   for (const auto& [option, spelled] : kKeywords) {
     if (option == name) keyword = spelled;
   }
-  // Switches (overwrite, resume, record reactions) are True; a name's value a string.
-  if (name == "force" || name == "resume" || name == "reactions" || name == "mjcf") {
+  // MJCF rather than URDF is a function of its own; switches (overwrite, resume, record
+  // reactions) are True; a name's value a string.
+  if (name == "mjcf") return "to_mjcf()";
+  if (name == "code") return "the command line's `momenta equations --cpp`";
+  if (name == "linearize") return "momenta.linearize()";
+  if (name == "force" || name == "resume" || name == "reactions") {
     return keyword + "=True";
   }
   if (value.empty()) return keyword + "=";

@@ -10,7 +10,7 @@ namespace momenta::frontend {
 
 void accept_model(const io::ModelFile& file) {
   try {
-    const system::MultibodySystem accepted(file.model);
+    system::check_simulable(file.model);
   } catch (const Error& e) {
     if (auto located = file.locate(e)) throw *located;
     throw;

@@ -118,19 +118,20 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
     }
   }
 
-  // The audit columns, where the model should conserve the quantity: energy and momentum
-  // drifts are relative (1), the quaternion norm error too, the constraint residuals in the
-  // rows' own units (m or rad, m/s or rad/s: "" for the mixture).
-  const MultibodySystem system(model);
+  // The one system every run() of this simulation advances.
+  system_ = std::make_unique<MultibodySystem>(model);
   // A run integrate::run would refuse (a step below time's resolution, 1e10 steps) is refused
   // here, before a front end opens any output.
   integrate::RunOptions run_options;
   run_options.t_end = options_.duration;
   run_options.h = options_.step;
-  integrate::check_run(system, *integrator_,
+  integrate::check_run(*system_, *integrator_,
                        integrate::State{0.0, model.initial_q(), model.initial_v()}, run_options);
-  if (system.conserves_energy()) add("audit.energy_drift", "1");
-  if (system.conserves_angular_momentum()) {
+  // The audit columns, where the model should conserve the quantity: energy and momentum
+  // drifts are relative (1), the quaternion norm error too, the constraint residuals in the
+  // rows' own units (m or rad, m/s or rad/s: "" for the mixture).
+  if (system_->conserves_energy()) add("audit.energy_drift", "1");
+  if (system_->conserves_angular_momentum()) {
     add("audit.H_norm_drift", "1");
     add("audit.H_drift", "1");
   }
@@ -154,15 +155,15 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
 
 Simulation::~Simulation() = default;
 
-// Everything one run needs between steps, allocated before the first: the system, the recorded
-// copy of the state, the audit and the row. observe() is the step loop's body.
+// Everything one run needs between steps, allocated before the first: the recorded copy of the
+// state, the audit and the row, beside the simulation's system. observe() is the step loop's body.
 class Simulation::Recorder {
  public:
-  Recorder(const Simulation& simulation, RowSink& sink)
+  Recorder(const Simulation& simulation, MultibodySystem& system, RowSink& sink)
       : sim_(simulation),
         model_(simulation.model_),
         sink_(sink),
-        system_(model_),
+        system_(system),
         audit_data_(model_),
         quaternions_(quaternion_offsets(model_)),
         q_(model_.nq()),
@@ -318,7 +319,7 @@ class Simulation::Recorder {
   const Simulation& sim_;
   const model::Model& model_;
   RowSink& sink_;
-  MultibodySystem system_;
+  MultibodySystem& system_;
   dynamics::Data audit_data_;  // for the momentum, so system_'s evaluation stays as it was
   std::vector<int> quaternions_;
   VecX q_, v_, vdot_;
@@ -347,7 +348,7 @@ void Simulation::check_stiffness(system::MultibodySystem& system, const integrat
 }
 
 SimulationSummary Simulation::run(RowSink& sink) {
-  Recorder recorder(*this, sink);
+  Recorder recorder(*this, *system_, sink);
   SimulationSummary summary;
   summary.integrator = std::string(integrator_->name());
   summary.order = integrator_->order();

@@ -47,8 +47,8 @@ inline constexpr double kMaxPrintedNodes = 3e5;
 /// kMaxPrintedNodes, saying `instead` what to use (by default the generated code). Counts over
 /// the graph: fast.
 void check_printable(const GiNaC::ex& e, std::string_view instead =
-                                             "--cpp or --python write the same equations with "
-                                             "each shared part computed once");
+                                             "the same equations written as code (‹code›) compute "
+                                             "each shared part once");
 /// A name fit for code and for GiNaC's parser: letters, digits and '_' (others become '_').
 std::string identifier(const std::string& name);
 /// An expression printed in `format`: numbers as short decimals in text and LaTeX; in text and

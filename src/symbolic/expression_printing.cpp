@@ -380,10 +380,10 @@ double tree_size(const ex& e, std::map<ex, double, GiNaC::ex_is_less>& memo, dou
 void detail::check_printable(const ex& e, std::string_view instead) {
   std::map<ex, double, GiNaC::ex_is_less> memo;
   if (tree_size(e, memo, 2.0 * kMaxPrintedNodes) > kMaxPrintedNodes) {
-    throw InvalidArgument(fmt::format(
+    throw InvalidArgument(OptionMessage{fmt::format(
         "this equation prints as a tree of more than {:.0f} terms and factors (its parts repeat "
         "wherever they occur: tens of megabytes of text, and minutes to expand): {}",
-        kMaxPrintedNodes, instead));
+        kMaxPrintedNodes, instead)});
   }
 }
 

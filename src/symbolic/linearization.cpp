@@ -197,7 +197,7 @@ LinearEquations linearize_equations(const Equations& equations, const model::Mod
   // 10-link chain: more than two); refused first, pointing to the numeric linearization.
   for (unsigned r = 0; r < n; ++r) {
     constexpr std::string_view kNumeric =
-        "`momenta linearize` linearizes the same model numerically in milliseconds";
+        "the numeric linearization (‹linearize›) takes the same model in milliseconds";
     detail::check_printable(b[r], kNumeric);
     for (unsigned c = 0; c < n; ++c) detail::check_printable(e.M(r, c), kNumeric);
   }

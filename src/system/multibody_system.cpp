@@ -39,6 +39,13 @@ void write_prescribed(const model::Model& model, std::span<const model::SignalSa
 
 }  // namespace
 
+void check_simulable(const model::Model& model) {
+  // Forward dynamics needs an invertible mass matrix: say which coordinate has no inertia now,
+  // rather than return NaN accelerations later. (The constraint solver factors the same matrix's
+  // free block, which is positive definite when this passes.)
+  dynamics::check_mass_matrix(model, model.initial_q());
+}
+
 MultibodySystem::MultibodySystem(const model::Model& model)
     : model_(model),
       data_(model),
@@ -57,9 +64,7 @@ MultibodySystem::MultibodySystem(const model::Model& model)
       probe_v_(VecX::Zero(model.nv())),
       vdot_mean_(VecX::Zero(model.nv())),
       lambda_mean_(VecX::Zero(0)) {
-  // Forward dynamics needs an invertible mass matrix: say which coordinate has no inertia now,
-  // rather than return NaN accelerations later.
-  dynamics::check_mass_matrix(model, model.initial_q());
+  check_simulable(model);
   conserves_energy_ =
       !model.has_prescribed_joints() && dynamics::force_elements_conservative(model);
   // Angular momentum about the centre of mass: besides conserving energy, no body may be held

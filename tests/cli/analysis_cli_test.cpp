@@ -519,14 +519,17 @@ TEST_F(AnalysisCli, EquationsTooLargeToPrintPointToTheCode) {
   for (const char* form : {"", " --latex", " --form matrix"}) {
     const CliRun r = momenta("equations " + chain + form);
     EXPECT_EQ(r.code, 1) << form;
-    EXPECT_NE(r.err.find("--cpp or --python write the same equations"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("the same equations written as code (--cpp or --python) compute each "
+                         "shared part once"),
+              std::string::npos)
+        << r.err;
     EXPECT_EQ(r.out, "") << form;  // the error alone: no half a page before it
   }
   // Its linearization in symbols (more than two minutes before) is refused too, pointing to the
   // numeric one.
   const CliRun linear = momenta("equations " + chain + " --form linear");
   EXPECT_EQ(linear.code, 1);
-  EXPECT_NE(linear.err.find("`momenta linearize` linearizes the same model numerically"),
+  EXPECT_NE(linear.err.find("the numeric linearization (`momenta linearize`) takes the same model"),
             std::string::npos)
       << linear.err;
   const CliRun code = momenta("equations " + chain + " --cpp");

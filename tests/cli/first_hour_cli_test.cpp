@@ -396,6 +396,7 @@ TEST_F(FirstHourCli, ExportWritesMjcfAndUrdf) {
   r = momenta("export " + bar + " --urdf " + at("bar.urdf"));
   EXPECT_EQ(r.code, 1);
   EXPECT_TRUE(has(r.err, "constraint 'closure' (hinge): URDF describes trees")) << r.err;
+  EXPECT_TRUE(has(r.err, "write MJCF (--mjcf), which keeps loops")) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "bar.urdf"));
   // The double pendulum as URDF, and its modes from the file written.
   r = momenta("export " + example("double_pendulum.yaml") + " --urdf " + at("dp.urdf"));

@@ -105,6 +105,18 @@ def test_equations_in_the_textbooks_symbols():
 
 
 @needs_symbolic
+@needs_symbolic
+def test_equations_too_large_to_print_say_what_to_use_in_python_words():
+    """The ten-link chain's equations print as trees of millions of terms: refused at once, with
+    what to use instead as Python has it (the CLI says --cpp / `momenta linearize`)."""
+    chain = momenta.load_model(EXAMPLES.parent / "bench" / "models" / "chain10.yaml")
+    with pytest.raises(momenta.InvalidArgument, match=r"written as code \(the command line's"):
+        momenta.equations(chain)
+    with pytest.raises(momenta.InvalidArgument,
+                       match=r"numeric linearization \(momenta\.linearize\(\)\)"):
+        momenta.symbolic_transfer_function(chain, "u", "q")
+
+
 def test_equations_of_a_constrained_model_carry_its_forces_and_rows():
     # The geared pair: I_p θ̈_p = λ, I_w θ̈_w − T = −n λ, then the coupler's row θ_p − n θ_w = 0.
     path = EXAMPLES / "constraints" / "geared_pair.yaml"

@@ -31,7 +31,8 @@ struct OptionMessage {
 /// model::SimulationSettings (step, duration, integrator, relative_tolerance,
 /// absolute_tolerance, every), and force (overwrite an existing file), resume, about (the
 /// operating point), body, link_density, package_path, mjcf (write MJCF rather than URDF),
-/// reactions.
+/// reactions, code (equations written as generated code), linearize (the numeric
+/// linearization).
 /// How a front end writes option `name` (with `value`, empty when the message gives none).
 using OptionSpelling = std::string (*)(std::string_view name, std::string_view value);
 

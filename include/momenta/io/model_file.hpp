@@ -52,7 +52,9 @@ struct ModelFile {
   };
   std::map<std::string, SymbolName> symbol_names;
   /// What the file says that momenta does not use, one `file:line: what` each (a URDF's joint
-  /// limits, visuals, transmissions: docs/model-formats.md); empty for momenta's own files.
+  /// limits, visuals, transmissions: docs/model-formats.md); empty for momenta's own files. An
+  /// option a note names is marked ‹name› (common/error.hpp): a front end spells it with
+  /// spell_options.
   std::vector<std::string> notes;
   /// What the file says that is allowed but likely not meant, one `file:line:column: what` each
   /// (a revolute joint's q0 of 30, beyond a turn: 30 rad, or 30 degrees meant?). The front ends

@@ -179,7 +179,8 @@ class Simulation {
   /// Integrates from t = 0 and the model's initial state (quaternions normalized, prescribed
   /// coordinates set from their signals) to options().duration, handing sink.begin() the
   /// columns and sink.row() every recorded row, then flushes the sink. The step loop does not
-  /// allocate (the sink aside). May be called again; each call starts afresh.
+  /// allocate (the sink aside). May be called again; each call starts afresh from the same state
+  /// and writes the same table (the one MultibodySystem the constructor built is reused).
   /// Each event that happens adds a row at its time (simulate/event_monitor.hpp); one whose
   /// action is stop makes that row the last.
   ///
@@ -199,6 +200,8 @@ class Simulation {
   const model::Model& model_;
   SimulationOptions options_;
   system::OutputSet outputs_;
+  // Built once, here, and advanced by every run() (each starts it afresh from the initial state).
+  std::unique_ptr<system::MultibodySystem> system_;
   std::unique_ptr<integrate::Integrator> integrator_;
   std::unique_ptr<EventMonitor> events_;
   std::vector<std::string> columns_;

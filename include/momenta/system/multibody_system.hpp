@@ -36,11 +36,16 @@ struct Energy {
   double total() const { return kinetic + potential(); }
 };
 
+/// What a MultibodySystem asks of its model, checked without building one (a front end accepting
+/// a model file it may never run): throws InvalidArgument, naming the joint and coordinate, when
+/// the mass matrix of the free coordinates is singular at the initial configuration
+/// (dynamics::check_mass_matrix). The constructor checks exactly this.
+void check_simulable(const model::Model& model);
+
 class MultibodySystem final : public integrate::SecondOrderSystem {
  public:
   /// Keeps a reference to `model` (it must outlive the system) and sizes every workspace. Throws
-  /// InvalidArgument, naming the joint and coordinate, when the mass matrix of the free
-  /// coordinates is singular at the initial configuration (dynamics::check_mass_matrix).
+  /// what check_simulable throws.
   explicit MultibodySystem(const model::Model& model);
 
   const model::Model& model() const { return model_; }

@@ -28,19 +28,19 @@ void check_representable(const model::Model& model) {
     const bool kept = !model::joint_traits(joint.type).urdf.empty() &&
                       (joint.type != model::JointType::free || joint.parent_index == 0);
     if (!kept) {
-      throw InvalidArgument(
-          fmt::format("joint '{}' ({}{}): URDF has no such joint; write MJCF "
-                      "(--mjcf), which keeps it",
+      throw InvalidArgument(OptionMessage{
+          fmt::format("joint '{}' ({}{}): URDF has no such joint; write MJCF (‹mjcf›), which "
+                      "keeps it",
                       joint.name, model::joint_type_name(joint.type),
-                      joint.type == model::JointType::free ? " below the world" : ""));
+                      joint.type == model::JointType::free ? " below the world" : "")});
     }
   }
   for (const model::Constraint& c : model.constraints()) {
     if (!std::holds_alternative<model::JointCoupler>(c)) {
-      throw InvalidArgument(
-          fmt::format("constraint '{}' ({}): URDF describes trees (and mimic "
-                      "joints); write MJCF (--mjcf), which keeps loops",
-                      model::constraint_name(c), model::constraint_type_name(c)));
+      throw InvalidArgument(OptionMessage{
+          fmt::format("constraint '{}' ({}): URDF describes trees (and mimic joints); write MJCF "
+                      "(‹mjcf›), which keeps loops",
+                      model::constraint_name(c), model::constraint_type_name(c))});
     }
   }
 }

@@ -46,7 +46,7 @@ UrdfReader::UrdfReader(const tinyxml2::XMLDocument& document, std::string file,
 }
 
 void UrdfReader::fail(const XMLElement* at, const std::string& message) const {
-  throw ParseError(file_, at != nullptr ? at->GetLineNum() : 0, 0, message);
+  throw ParseError(file_, at != nullptr ? at->GetLineNum() : 0, 0, OptionMessage{message});
 }
 
 void UrdfReader::note(const XMLElement* at, const std::string& message) {
@@ -416,8 +416,8 @@ model::Model UrdfReader::build(const model::ModelBuilder& builder,
     return fmt::format(
         " (link '{}' has no <inertial>: give it one{})", fmt::join(unweighed, "', '"),
         options_.link_density ? std::string()
-                              : ", or a link density (--link-density, Python link_density=) "
-                                "to take its mass from its collision or visual geometry");
+                              : ", or a link density (‹link_density›) to take its mass from "
+                                "its collision or visual geometry");
   };
   return build_at_lines(builder, items, file_, hint);
 }

@@ -82,19 +82,19 @@ fs::path resolve_mesh_uri(std::string_view uri, const fs::path& base_dir,
           fmt::format("'{}' is not package://PACKAGE/path/to/mesh", std::string(uri)));
     }
     if (package_path.empty()) {
-      throw InvalidArgument(fmt::format(
+      throw InvalidArgument(OptionMessage{fmt::format(
           "'{}' names package '{}', and no package path is given: give the folder that holds "
-          "it with --package-path (Python: package_path=[...]) or ROS_PACKAGE_PATH",
-          std::string(uri), package));
+          "it with ‹package_path› or ROS_PACKAGE_PATH",
+          std::string(uri), package)});
     }
     const fs::path folder = find_package(package, package_path);
     if (folder.empty()) {
       std::vector<std::string> searched;
       for (const fs::path& p : package_path) searched.push_back(p.string());
-      throw InvalidArgument(fmt::format(
+      throw InvalidArgument(OptionMessage{fmt::format(
           "package '{}' of '{}' is not found in {} (neither a folder of that name nor one "
-          "holding it): give the folder that holds it with --package-path",
-          package, std::string(uri), fmt::join(searched, ", ")));
+          "holding it): give the folder that holds it with ‹package_path›",
+          package, std::string(uri), fmt::join(searched, ", "))});
     }
     return folder / fs::path(std::string(rest.substr(slash + 1)));
   }
@@ -121,7 +121,7 @@ std::shared_ptr<const inertia::TriangleMesh> UrdfReader::mesh(const XMLElement* 
   try {
     path = resolve_mesh_uri(uri, base_dir_, package_path_);
   } catch (const InvalidArgument& error) {
-    fail(at, one_line(error.what()));
+    fail(at, one_line(error.spelled(keep_option_marks)));
   }
   std::shared_ptr<const inertia::TriangleMesh> shared;
   try {
@@ -235,7 +235,7 @@ void UrdfReader::read_geometry(const XMLElement* e, Link& link, const std::strin
       link.mass_properties += weighed_parts.back().mass_properties;
     }
   } else if (!link.has_inertial && !solids.empty()) {
-    note(e, fmt::format("{} has no <inertial>: massless (a link density, --link-density, would "
+    note(e, fmt::format("{} has no <inertial>: massless (a link density, ‹link_density›, would "
                         "give it the mass of its geometry)",
                         owner));
   }

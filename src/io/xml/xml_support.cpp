@@ -87,7 +87,8 @@ model::Model build_at_lines(const model::ModelBuilder& builder,
       }
     }
     throw ParseError(file_name, line, column,
-                     one_line(error.what()) + (hint ? hint(error) : std::string()));
+                     OptionMessage{one_line(error.spelled(keep_option_marks)) +
+                                   (hint ? hint(error) : std::string())});
   }
 }
 

@@ -101,8 +101,9 @@ TEST(UrdfMeshes, WithoutADensityLinksAreMasslessAndNoted) {
   EXPECT_EQ(body_mass(f, "upper_arm").mass(), 0.0);
   std::string notes;
   for (const std::string& n : f.notes) notes += n + "\n";
+  // The option is marked for each front end to spell (--link-density, link_density=).
   EXPECT_NE(notes.find(":28: link 'upper_arm' has no <inertial>: massless (a link density, "
-                       "--link-density, would give it the mass of its geometry)"),
+                       "‹link_density›, would give it the mass of its geometry)"),
             std::string::npos)
       << notes;
   EXPECT_NE(notes.find(":33: <collision> of link 'upper_arm': not used by momenta"),
@@ -199,8 +200,7 @@ TEST(UrdfMeshes, AMasslessLinkIsRefusedNamingItAndADensityWeighsItsCollision) {
             std::string::npos)
       << refused;
   EXPECT_NE(refused.find("(link 'arm' has no <inertial>: give it one, or a link density "
-                         "(--link-density, Python link_density=) to take its mass from its "
-                         "collision or visual geometry)"),
+                         "(link_density) to take its mass from its collision or visual geometry)"),
             std::string::npos)
       << refused;
   ModelFileOptions options;
@@ -265,14 +265,14 @@ TEST(UrdfMeshes, MeshFileNamesThatLeadNowhereAreErrorsAtTheirLine) {
   ::unsetenv("ROS_PACKAGE_PATH");
   EXPECT_EQ(error("package://mesh_arm/meshes/box.stl"),
             "robot.urdf:7: 'package://mesh_arm/meshes/box.stl' names package 'mesh_arm', and no "
-            "package path is given: give the folder that holds it with --package-path (Python: "
-            "package_path=[...]) or ROS_PACKAGE_PATH");
+            "package path is given: give the folder that holds it with package_path or "
+            "ROS_PACKAGE_PATH");
   ModelFileOptions options;
   options.package_path = {"/nonexistent"};
   EXPECT_EQ(error("package://mesh_arm/meshes/box.stl", options),
             "robot.urdf:7: package 'mesh_arm' of 'package://mesh_arm/meshes/box.stl' is not found "
             "in /nonexistent (neither a folder of that name nor one holding it): give the folder "
-            "that holds it with --package-path");
+            "that holds it with package_path");
   EXPECT_EQ(error("package://mesh_arm"),
             "robot.urdf:7: 'package://mesh_arm' is not package://PACKAGE/path/to/mesh");
   EXPECT_EQ(error("https://example.org/arm.stl"),
