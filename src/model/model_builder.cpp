@@ -262,17 +262,23 @@ class ModelAssembler {
     }
   }
 
-  // Topological order from the world (breadth first); unreached bodies lie on a cycle.
+  // Topological order from the world, depth first, each body's children in the order their
+  // joints were added: a file's own order, and MuJoCo's and Pinocchio's (a branch's coordinates
+  // together, before the next branch's). Unreached bodies lie on a cycle.
   void order_tree() {
-    std::vector<std::string_view> frontier{kWorldBodyName};
     std::vector<char> placed(bodies_.size(), 0);
-    for (std::size_t f = 0; f < frontier.size(); ++f) {
-      for (std::size_t k = 0; k < joints_.size(); ++k) {
-        if (joints_[k].parent != frontier[f]) continue;
-        const int c = body_by_name_.find(joints_[k].child)->second;
-        placed[c] = 1;
-        order_.push_back(c);
-        frontier.push_back(bodies_[c].name);
+    std::vector<std::string_view> pending{kWorldBodyName};  // bodies whose children come next
+    while (!pending.empty()) {
+      const std::string_view parent = pending.back();
+      pending.pop_back();
+      if (parent != kWorldBodyName) {
+        const int b = body_by_name_.find(std::string(parent))->second;
+        placed[b] = 1;
+        order_.push_back(b);
+      }
+      // Pushed last child first, so that the first child is placed (and its subtree) first.
+      for (std::size_t k = joints_.size(); k-- > 0;) {
+        if (joints_[k].parent == parent) pending.push_back(joints_[k].child);
       }
     }
     for (std::size_t i = 0; i < bodies_.size(); ++i) {

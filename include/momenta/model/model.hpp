@@ -4,8 +4,10 @@
 // (model_builder.hpp); the algorithms in momenta/dynamics read it and write a Data.
 //
 // Indexing. Bodies are numbered 0..num_bodies()−1 with 0 the world; parents come before their
-// children (parent_index < index). Joint j carries body j + 1 (num_joints() == num_bodies() − 1),
-// so joints are in the same topological order. Joint j's coordinates are q[q_index, q_index + nq)
+// children (parent_index < index), depth first from the world with each body's children in the
+// order their joints were added (a file's order; MuJoCo's qpos and Pinocchio's q lay out a tree
+// so). Joint j carries body j + 1 (num_joints() == num_bodies() − 1), so joints are in the same
+// order. Joint j's coordinates are q[q_index, q_index + nq)
 // and v[v_index, v_index + nv), stacked in joint order (layout per joint type in joint.hpp).
 //
 // Configuration space. q is not a vector space where it holds quaternions (spherical and free

@@ -64,6 +64,31 @@ TEST(ModelBuilder, OrdersBodiesFromTheWorldAndLaysOutCoordinates) {
   EXPECT_THROW(m.body_index("amr"), InvalidArgument);
 }
 
+// Depth first, each body's children in the order their joints were added: a branch's coordinates
+// together, as MuJoCo's qpos and Pinocchio's q lay out the same tree (the side-by-side check:
+// tests/validation/io/mjcf_mujoco_test.cpp, CoordinatesAreMuJoCos). Breadth first would give
+// left_hip, right_hip, neck, left_knee, right_knee.
+TEST(ModelBuilder, OrdersABranchedTreeDepthFirstInTheOrderJointsWereAdded) {
+  ModelBuilder b;
+  for (const char* body : {"trunk", "left", "right", "head", "left_shin", "right_shin"})
+    b.add_body(body, unit_body());
+  b.add_joint(joint("root", JointType::free, "world", "trunk"));
+  b.add_joint(joint("left_hip", JointType::revolute, "trunk", "left"));
+  b.add_joint(joint("right_hip", JointType::spherical, "trunk", "right"));
+  b.add_joint(joint("neck", JointType::revolute, "trunk", "head"));
+  b.add_joint(joint("right_knee", JointType::revolute, "right", "right_shin"));
+  b.add_joint(joint("left_knee", JointType::prismatic, "left", "left_shin"));
+  const Model m = b.build();
+  std::vector<std::string> order;
+  for (const Joint& j : m.joints()) order.push_back(j.name);
+  EXPECT_EQ(order, (std::vector<std::string>{"root", "left_hip", "left_knee", "right_hip",
+                                             "right_knee", "neck"}));
+  EXPECT_EQ(m.joint(2).q_index, 8);   // root 7, left_hip 1
+  EXPECT_EQ(m.joint(3).q_index, 9);   // right_hip's quaternion
+  EXPECT_EQ(m.joint(5).q_index, 14);  // neck after right_knee
+  EXPECT_EQ(m.parent(m.body_index("right_shin")), m.body_index("right"));
+}
+
 TEST(ModelBuilder, RejectsBrokenTopology) {
   {
     ModelBuilder b;

@@ -5,15 +5,18 @@
 // and constraint solver are off (momenta models neither contacts nor soft equality constraints).
 //
 // Coordinates: each joint's are the same on both sides (a free joint's [p; quaternion w x y z],
-// a ball's quaternion), but momenta orders the joints parents first, level by level, where
-// MuJoCo follows the file depth first; and a free joint's velocity is MuJoCo's [v; ω], momenta's
-// [ω; v] (rotation first). So v_momenta = P v_mj for a permutation P matched by joint name, and
-// M_mj = Pᵀ M P, every generalized force τ_momenta = P τ_mj.
+// a ball's quaternion), and so is their order — the file's, depth first (CoordinatesAreMuJoCos
+// holds every joint to MuJoCo's qpos and dof addresses, in MJCF and URDF files) — but a free
+// joint's velocity is MuJoCo's [v; ω], momenta's [ω; v] (rotation first). So v_momenta = P v_mj
+// for a permutation P matched by joint name, and M_mj = Pᵀ M P, every generalized force
+// τ_momenta = P τ_mj.
 
 #include <mujoco/mujoco.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
@@ -27,6 +30,8 @@
 #include "momenta/dynamics/kinematics.hpp"
 #include "momenta/dynamics/rnea.hpp"
 #include "momenta/io/mjcf_file.hpp"
+#include "momenta/io/urdf_file.hpp"
+#include "momenta_test/scratch_dir.hpp"
 #include "momenta_test/tolerance.hpp"
 
 namespace momenta {
@@ -51,9 +56,8 @@ struct MuJoCoModel {
   std::string message;
 };
 
-// v_momenta = P v_mj: momenta orders its joints parents first level by level, MuJoCo in the
-// file's depth-first order (joints matched by name), and a free joint's six velocities turn from
-// MuJoCo's [v; ω] to [ω; v].
+// v_momenta = P v_mj, joints matched by name: a free joint's six velocities turn from MuJoCo's
+// [v; ω] to [ω; v].
 MatX velocity_permutation(const model::Model& model, const mjModel* m) {
   MatX P = MatX::Zero(model.nv(), model.nv());
   for (const model::Joint& joint : model.joints()) {
@@ -235,6 +239,83 @@ TEST(MjcfMuJoCo, HumanoidOnAFloatingBase) { expect_agreement(compare("humanoid",
 // the solids the same float coordinates bound by up to a few 2^-24 ≈ 6e-8 per length (a mass goes
 // as length³, an inertia as length⁵: up to 3e-7; measured M 2.7e-9, bias 7.7e-9): held to 1e-6.
 TEST(MjcfMuJoCo, MeshGeomsWeighAsInMuJoCo) { expect_agreement(compare("mesh_arm", 50), 1e-6); }
+
+// A state passed between the tools as a vector (a keyframe, a logged qpos, a controller's gains)
+// means the same posture: every joint's coordinates start at MuJoCo's qpos address, its speeds at
+// its dof address. Branched trees whose breadth-first order differs from the file's depth-first
+// one: the humanoid (a floating base, bodies of several hinges), the arm, and files written here
+// with branches declared out of level order, several hinges with `pos` offsets in one body, a
+// `childclass` default, a free root; and a URDF, which MuJoCo reads too.
+TEST(MjcfMuJoCo, CoordinatesAreMuJoCos) {
+  const std::filesystem::path dir = test::make_scratch_dir("mjcf_mujoco_order");
+  const auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return (dir / name).string();
+  };
+  const std::string branched = write("branched.xml", R"(<mujoco model="branched">
+  <default><default class="limb"><joint damping="0.1" axis="0 1 0"/></default></default>
+  <worldbody>
+    <body name="trunk" pos="0 0 1">
+      <freejoint name="root"/>
+      <geom type="box" size="0.1 0.2 0.3" mass="5"/>
+      <body name="left" pos="0 0.3 0" childclass="limb">
+        <joint name="left_x" axis="1 0 0" pos="0 0 0.05"/>
+        <joint name="left_y" pos="0 0 0.05"/>
+        <geom type="capsule" fromto="0 0 0 0 0 -0.4" size="0.05"/>
+        <body name="left_lower" pos="0 0 -0.4">
+          <joint name="left_knee"/>
+          <geom type="capsule" fromto="0 0 0 0 0 -0.4" size="0.04"/>
+        </body>
+      </body>
+      <body name="right" pos="0 -0.3 0" childclass="limb">
+        <joint name="right_ball" type="ball"/>
+        <geom type="capsule" fromto="0 0 0 0 0 -0.4" size="0.05"/>
+        <body name="right_lower" pos="0 0 -0.4">
+          <joint name="right_knee"/>
+          <joint name="right_slide" type="slide" axis="0 0 1"/>
+          <geom type="capsule" fromto="0 0 0 0 0 -0.4" size="0.04"/>
+        </body>
+      </body>
+      <body name="head" pos="0 0 0.4">
+        <joint name="neck" axis="0 0 1"/>
+        <geom type="sphere" size="0.1" mass="1"/>
+      </body>
+    </body>
+  </worldbody>
+</mujoco>)");
+  // The joints declared breadth first (both hips, then both knees); the links' tree decides.
+  const std::string urdf = write("branched.urdf", R"(<robot name="branched">
+  <link name="base"><inertial><mass value="5"/><inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <link name="left"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <link name="right"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <link name="left_lower"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <link name="right_lower"><inertial><mass value="1"/><inertia ixx="0.01" iyy="0.01" izz="0.01" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <joint name="left_hip" type="continuous"><parent link="base"/><child link="left"/><origin xyz="0 0.3 0"/><axis xyz="0 1 0"/></joint>
+  <joint name="right_hip" type="continuous"><parent link="base"/><child link="right"/><origin xyz="0 -0.3 0"/><axis xyz="0 1 0"/></joint>
+  <joint name="left_knee" type="continuous"><parent link="left"/><child link="left_lower"/><origin xyz="0 0 -0.4"/><axis xyz="0 1 0"/></joint>
+  <joint name="right_knee" type="prismatic"><parent link="right"/><child link="right_lower"/><origin xyz="0 0 -0.4"/><axis xyz="0 0 1"/><limit lower="-1" upper="1" effort="1" velocity="1"/></joint>
+</robot>)");
+  const std::string models = test::source_dir() + "/tests/data/models/mjcf/";
+  for (const std::string& path : {models + "humanoid.xml", models + "arm7.xml", branched, urdf}) {
+    SCOPED_TRACE(path);
+    const io::ModelFile file =
+        path.ends_with(".urdf") ? io::read_urdf_file(path) : io::read_mjcf_file(path);
+    const MuJoCoModel mj(path);
+    ASSERT_NE(mj.m, nullptr) << mj.message;
+    ASSERT_EQ(mj.m->nq, file.model.nq());
+    ASSERT_EQ(mj.m->nv, file.model.nv());
+    std::string order;
+    for (const model::Joint& joint : file.model.joints()) {
+      if (joint.nv() == 0) continue;
+      order += joint.name + " ";
+      const int id = mj_name2id(mj.m, mjOBJ_JOINT, joint.name.c_str());
+      ASSERT_GE(id, 0) << joint.name;
+      EXPECT_EQ(joint.q_index, mj.m->jnt_qposadr[id]) << joint.name;
+      EXPECT_EQ(joint.v_index, mj.m->jnt_dofadr[id]) << joint.name;
+    }
+    std::printf("%s: %s\n", std::filesystem::path(path).filename().c_str(), order.c_str());
+  }
+}
 
 }  // namespace
 }  // namespace momenta
