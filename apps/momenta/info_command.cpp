@@ -408,7 +408,8 @@ void add_info_command(CLI::App& app) {
       "Examples:\n"
       "  momenta info examples/double_pendulum.yaml\n"
       "  momenta info examples/double_pendulum.yaml --json\n"
-      "Coordinates are listed with their CSV column (<joint>.q<i>) and their readable name.");
+      "Coordinates are listed in the state's order (the file's, depth first, as MuJoCo's qpos) by "
+      "their CSV column names (pivot.angle, pivot.angle_rate) and units.");
   command->callback([options] { run(*options); });
 }
 

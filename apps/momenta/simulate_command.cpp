@@ -387,8 +387,9 @@ void add_simulate_command(CLI::App& app) {
       "  momenta simulate examples/double_pendulum.yaml --duration 5 --output run.csv\n"
       "  momenta simulate examples/heavy_top.yaml --integrator dopri5 --rtol 1e-10 "
       "--every 10\n"
-      "Options override the model file's `simulation:` section. Columns: time, <joint>.q<i>, "
-      "<joint>.v<i>, energy_kinetic, energy_potential, energy_total, H_x, H_y, H_z, the model's "
+      "Options override the model file's `simulation:` section. Columns: time, every coordinate "
+      "(pivot.angle ...), every speed (pivot.angle_rate ...), energy_kinetic, energy_potential, "
+      "energy_total, H_x, H_y, H_z, the model's "
       "outputs, <joint>.reaction.Fx..Mz (--reactions), audit.* (docs/cli.md).");
   command->callback([options] { run(*options); });
 }

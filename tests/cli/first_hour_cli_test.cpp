@@ -346,8 +346,9 @@ TEST_F(FirstHourCli, MjcfFilesAreModelFiles) {
 
 // A URDF whose links are meshes on package:// paths: found with --package-path, weighed with
 // --link-density (the total: the four solids' closed forms at 2700 kg/m³ plus the 0.5 kg payload,
-// to the COLLADA hand's single precision); without the path, an error at the line that names the
-// package, saying what to give.
+// to the COLLADA hand's single precision); weighed without the path, an error at the line of the
+// collision mesh that is weighed, naming the package
+// and saying what to give.
 TEST_F(FirstHourCli, UrdfMeshesOnAPackagePath) {
   const std::string arm =
       quoted(source_dir() + "/tests/data/models/urdf/packages/mesh_arm/urdf/mesh_arm.urdf");
@@ -362,16 +363,47 @@ TEST_F(FirstHourCli, UrdfMeshesOnAPackagePath) {
   r = momenta("simulate " + arm + " --package-path " + packages +
               " --link-density 2700 --duration 0.1 -o " + at("arm.csv"));
   ASSERT_EQ(r.code, 0) << r.err;
-  r = momenta("info " + arm);
+  r = momenta("info " + arm + " --link-density 2700");
   EXPECT_EQ(r.code, 1);
   EXPECT_TRUE(has(r.err,
-                  "mesh_arm.urdf:11: 'package://mesh_arm/meshes/base.stl' names package "
+                  "mesh_arm.urdf:16: 'package://mesh_arm/meshes/base.stl' names package "
                   "'mesh_arm', and no package path is given: give the folder that holds "
                   "it with --package-path"))
       << r.err;
   r = momenta("info " + arm + " --package-path " + packages + " --link-density -3");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_TRUE(has(r.err, "--link-density")) << r.err;
+}
+
+// The URDF tutorial's R2-D2 as ROS users pass it around: every link has its <inertial>, the meshes
+// come from a package (pr2_description) that is not there. It loads, says at each mesh's line
+// that it is not drawn and what to give, and simulates.
+TEST_F(FirstHourCli, AUrdfWithoutItsMeshPackagesLoadsWhereNothingNeedsTheMeshes) {
+  std::ofstream(dir_ / "r2d2.urdf") << R"(<robot name="r2d2">
+  <link name="base_link">
+    <visual><geometry><cylinder length="0.6" radius="0.2"/></geometry></visual>
+    <inertial><mass value="10"/><inertia ixx="1e-3" ixy="0" ixz="0" iyy="1e-3" iyz="0" izz="1e-3"/></inertial>
+  </link>
+  <link name="head">
+    <visual><geometry><mesh filename="package://pr2_description/meshes/gripper_v0/l_finger.dae"/></geometry></visual>
+    <collision><geometry><mesh filename="package://pr2_description/meshes/gripper_v0/l_finger.dae"/></geometry></collision>
+    <inertial><mass value="2"/><inertia ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial>
+  </link>
+  <joint name="head_swivel" type="continuous">
+    <parent link="base_link"/><child link="head"/><axis xyz="0 0 1"/><origin xyz="0 0 0.3"/>
+  </joint>
+</robot>)";
+  CliRun r = momenta("info " + at("r2d2.urdf"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(has(r.out,
+                  "r2d2.urdf:7: not drawn: 'package://pr2_description/meshes/gripper_v0/"
+                  "l_finger.dae' names package 'pr2_description', and no package path is "
+                  "given: give the folder that holds it with --package-path or "
+                  "ROS_PACKAGE_PATH"))
+      << r.out;
+  EXPECT_FALSE(has(r.out, "‹")) << r.out;
+  r = momenta("simulate " + at("r2d2.urdf") + " --duration 0.1 -o " + at("r2d2.csv"));
+  EXPECT_EQ(r.code, 0) << r.err;
 }
 
 TEST_F(FirstHourCli, ExportWritesMjcfAndUrdf) {

@@ -144,8 +144,8 @@ def test_a_urdf_with_meshes_on_a_package_path(monkeypatch):
     assert total == pytest.approx(2700 * solids + 0.5, rel=1e-7)
     assert momenta.load_model(arm, package_path=[packages]).info()["bodies"][1]["mass"] == 0.0
     # The hint in Python's words, not the command line's.
-    with pytest.raises(momenta.ParseError, match=r"mesh_arm.urdf:11: .* package_path= ") as refused:
-        momenta.load_model(arm)
+    with pytest.raises(momenta.ParseError, match=r"mesh_arm.urdf:16: .* package_path= ") as refused:
+        momenta.load_model(arm, link_density=2700.0)
     assert "--" not in str(refused.value)
     with pytest.raises(momenta.InvalidArgument, match="link density -1"):
         momenta.load_model(arm, package_path=[packages], link_density=-1.0)

@@ -114,27 +114,33 @@ fs::path resolve_mesh_uri(std::string_view uri, const fs::path& base_dir,
 
 std::shared_ptr<const inertia::TriangleMesh> UrdfReader::mesh(const XMLElement* at,
                                                               const std::string& uri,
-                                                              const Vec3& scale) {
+                                                              const Vec3& scale, bool weighed) {
   const std::string key = fmt::format("{}|{}|{}|{}", uri, scale.x(), scale.y(), scale.z());
   if (const auto cached = meshes_.find(key); cached != meshes_.end()) return cached->second;
-  fs::path path;
-  try {
-    path = resolve_mesh_uri(uri, base_dir_, package_path_);
-  } catch (const InvalidArgument& error) {
-    fail(at, one_line(error.spelled(keep_option_marks)));
-  }
+  std::string why;  // why it cannot be had, with the options that would help marked
   std::shared_ptr<const inertia::TriangleMesh> shared;
   try {
-    shared = std::make_shared<const inertia::TriangleMesh>(read_mesh_file(path, scale));
-  } catch (const Error& error) {
-    fail(at, fmt::format("mesh '{}': {}", uri, one_line(error.what())));
+    const fs::path path = resolve_mesh_uri(uri, base_dir_, package_path_);
+    try {
+      shared = std::make_shared<const inertia::TriangleMesh>(read_mesh_file(path, scale));
+    } catch (const Error& error) {
+      why = fmt::format("mesh '{}': {}", uri, one_line(error.spelled(keep_option_marks)));
+    }
+  } catch (const InvalidArgument& error) {
+    why = one_line(error.spelled(keep_option_marks));
+  }
+  if (!why.empty()) {  // not kept: each element that names it fails or is noted at its own line
+    if (weighed) fail(at, why);
+    note(at, fmt::format("not drawn: {}", why));
+    return nullptr;
   }
   meshes_.emplace(key, shared);
   return shared;
 }
 
-PartSummary UrdfReader::geometry_part(const XMLElement* e, const std::string& owner,
-                                      std::size_t index, std::optional<double> density) {
+std::optional<PartSummary> UrdfReader::geometry_part(const XMLElement* e, const std::string& owner,
+                                                     std::size_t index,
+                                                     std::optional<double> density) {
   const std::string role = e->Name();  // "visual" or "collision"
   PartSummary part;
   const char* name = e->Attribute("name");
@@ -188,7 +194,8 @@ PartSummary UrdfReader::geometry_part(const XMLElement* e, const std::string& ow
     if (!(scale.cwiseAbs().minCoeff() > 0.0)) {
       fail(shape, fmt::format("the scale of {} has a zero factor", what));
     }
-    part.mesh = mesh(shape, file, scale);
+    part.mesh = mesh(shape, file, scale, density.has_value());
+    if (part.mesh == nullptr) return std::nullopt;  // only drawn, and noted as not drawn
     if (density) {
       inertia::TriangleMesh solid = *part.mesh;
       try {
@@ -231,7 +238,7 @@ void UrdfReader::read_geometry(const XMLElement* e, Link& link, const std::strin
   std::vector<PartSummary> weighed_parts;
   if (weighed) {
     for (std::size_t i = 0; i < solids.size(); ++i) {
-      weighed_parts.push_back(geometry_part(solids[i], owner, i, options_.link_density));
+      weighed_parts.push_back(*geometry_part(solids[i], owner, i, options_.link_density));
       link.mass_properties += weighed_parts.back().mass_properties;
     }
   } else if (!link.has_inertial && !solids.empty()) {
@@ -244,7 +251,8 @@ void UrdfReader::read_geometry(const XMLElement* e, Link& link, const std::strin
     link.drawn = std::move(weighed_parts);
   } else {
     for (std::size_t i = 0; i < drawn.size(); ++i) {
-      link.drawn.push_back(geometry_part(drawn[i], owner, i, std::nullopt));
+      if (auto part = geometry_part(drawn[i], owner, i, std::nullopt))
+        link.drawn.push_back(std::move(*part));
     }
   }
   // Collision geometry neither drawn nor weighed.

@@ -71,12 +71,16 @@ class UrdfReader {
 
   // --- geometry (urdf_geometry.cpp) -----------------------------------------------------------
   /// The <geometry> of one <visual> or <collision> of link `owner`, as a part placed in the link
-  /// frame by the element's <origin>; its mass properties filled with `density` when given.
-  PartSummary geometry_part(const XMLElement* e, const std::string& owner, std::size_t index,
-                            std::optional<double> density);
+  /// frame by the element's <origin>; its mass properties filled with `density` when given. A
+  /// mesh only drawn (no `density`) that cannot be found or read is a note, and no part.
+  std::optional<PartSummary> geometry_part(const XMLElement* e, const std::string& owner,
+                                           std::size_t index, std::optional<double> density);
   /// The mesh file `uri` names (<mesh filename>), scaled per axis, read once per file and scale.
+  /// One that cannot be found or read fails at `at` when `weighed`, else is noted there as not
+  /// drawn (null): most URDFs arrive without their mesh packages, and none is needed for the
+  /// dynamics unless a link is weighed from its geometry.
   std::shared_ptr<const inertia::TriangleMesh> mesh(const XMLElement* at, const std::string& uri,
-                                                    const Vec3& scale);
+                                                    const Vec3& scale, bool weighed);
   /// Link `link`'s drawn parts and, where it has no <inertial> and a density is given, its mass
   /// properties from its collision geometry (else its visual geometry).
   void read_geometry(const XMLElement* e, Link& link, const std::string& owner);

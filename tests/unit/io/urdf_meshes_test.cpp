@@ -256,8 +256,11 @@ TEST(UrdfMeshes, MeshFileNamesAreFound) {
   ::unsetenv("ROS_PACKAGE_PATH");
 }
 
-TEST(UrdfMeshes, MeshFileNamesThatLeadNowhereAreErrorsAtTheirLine) {
-  const auto error = [&](const std::string& file_name, const ModelFileOptions& options = {}) {
+// Where a link is weighed from its mesh (no <inertial>, a density given), a mesh that cannot be
+// had is an error at the line that names it.
+TEST(UrdfMeshes, MeshFileNamesThatLeadNowhereAreErrorsAtTheirLineWhereTheMeshIsWeighed) {
+  const auto error = [&](const std::string& file_name, ModelFileOptions options = {}) {
+    options.link_density = 2700.0;
     return error_of(
         one_link("\n<visual><geometry><mesh filename=\"" + file_name + "\"/></geometry></visual>"),
         options);
@@ -286,6 +289,39 @@ TEST(UrdfMeshes, MeshFileNamesThatLeadNowhereAreErrorsAtTheirLine) {
                 .find("unsupported mesh file extension '.xml': expected .stl, "
                       ".obj or .dae"),
             std::string::npos);
+}
+
+// Most URDFs arrive without their mesh packages (the URDF tutorial's R2-D2 names
+// package://pr2_description): where every link has its <inertial>, nothing needs a mesh, so one
+// that cannot be found or read is a note at its line, and the part is not drawn.
+TEST(UrdfMeshes, AMeshOnlyDrawnThatCannotBeHadIsANoteAndTheModelLoads) {
+  ::unsetenv("ROS_PACKAGE_PATH");
+  const std::string inertial =
+      "<inertial><mass value=\"2\"/><inertia ixx=\"0.1\" iyy=\"0.2\" izz=\"0.3\"/></inertial>";
+  const std::string text = one_link(R"(
+<visual><geometry><mesh filename="package://pr2_description/meshes/base.dae"/></geometry></visual>
+<collision><geometry><mesh filename="package://pr2_description/meshes/base.dae"/></geometry></collision>
+<visual><geometry><mesh filename="../meshes/nothing.stl"/></geometry></visual>
+<visual><geometry><box size="0.1 0.2 0.3"/></geometry></visual>)",
+                                    inertial);
+  const ModelFile f = parse(text);
+  EXPECT_EQ(body_mass(f, "arm").mass(), 2.0);
+  std::string notes;
+  for (const std::string& n : f.notes) notes += n + "\n";
+  EXPECT_NE(notes.find("robot.urdf:7: not drawn: 'package://pr2_description/meshes/base.dae' "
+                       "names package 'pr2_description', and no package path is given: give the "
+                       "folder that holds it with ‹package_path› or ROS_PACKAGE_PATH\n"),
+            std::string::npos)
+      << notes;
+  EXPECT_NE(notes.find("robot.urdf:9: not drawn: mesh '../meshes/nothing.stl': "),
+            std::string::npos)
+      << notes;
+  // The box is drawn; the collision mesh (neither drawn nor weighed) is noted as unused.
+  const auto drawn = f.parts_of(f.model.body_index("arm"));
+  ASSERT_EQ(drawn.size(), 1u);
+  EXPECT_EQ(drawn[0].kind, "box");
+  EXPECT_NE(notes.find("robot.urdf:8: <collision> of link 'arm': not used"), std::string::npos)
+      << notes;
 }
 
 // A mesh that bounds no solid cannot weigh its link: refused naming the link and the mesh; drawn
