@@ -299,6 +299,14 @@ json describe(const InfoOptions& o, const io::ModelFile& file) {
   if (s.every) settings["every"] = *s.every;
   j["simulation"] = std::move(settings);
   j["not_used"] = spelled_notes(file);  // what a URDF says that momenta does not use, with its line
+  json keyframes = json::array();       // an MJCF file's named states, in momenta's q and v
+  for (const io::Keyframe& key : file.keyframes) {
+    keyframes.push_back({{"name", key.name},
+                         {"time", key.time},
+                         {"q", std::vector<double>(key.q.data(), key.q.data() + key.q.size())},
+                         {"v", std::vector<double>(key.v.data(), key.v.data() + key.v.size())}});
+  }
+  j["keyframes"] = std::move(keyframes);
   return j;
 }
 
@@ -368,6 +376,17 @@ void print_text(const json& j, const io::ModelFile& file) {
       columns += (columns.empty() ? "" : ", ") + c.get<std::string>();
     fmt::print("  {}  {} of {}: {}\n", out["name"].get<std::string>(),
                out["quantity"].get<std::string>(), out["target"].get<std::string>(), columns);
+  }
+
+  if (!file.keyframes.empty()) {
+    fmt::print("\nkeyframes ({}): the state of one is the initial state with --keyframe NAME\n",
+               file.keyframes.size());
+    for (const io::Keyframe& key : file.keyframes) {
+      const bool moving = key.v.size() > 0 && key.v.cwiseAbs().maxCoeff() > 0.0;
+      fmt::print("  {}  (line {}){}{}\n", key.name, key.line,
+                 key.time != 0.0 ? fmt::format(", t = {} s", key.time) : "",
+                 moving ? ", moving" : ", at rest");
+    }
   }
 
   if (!file.notes.empty()) {

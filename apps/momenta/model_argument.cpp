@@ -17,12 +17,16 @@ void add_model_argument(CLI::App* command, ModelArgument& model, const std::stri
                    "URDF: density, kg/m³, filling the collision (else visual) geometry of each "
                    "link without <inertial> to give it mass")
       ->check(positive_finite());
+  command->add_option("--keyframe", model.keyframe,
+                      "MJCF: start from the state of this <keyframe><key> (its qpos and qvel) "
+                      "instead of the configuration the file draws, at rest");
 }
 
 io::ModelFile load_model(const ModelArgument& model) {
   io::ModelFileOptions options;
   options.package_path.assign(model.package_path.begin(), model.package_path.end());
   options.link_density = model.link_density;
+  options.keyframe = model.keyframe;
   io::ModelFile file = frontend::load_model(model.file, options);
   // What the file says that is allowed but likely not meant: said before any result.
   for (const std::string& warning : file.warnings)

@@ -198,7 +198,7 @@ class Mode:
     def shape(self) -> numpy.ndarray: ...
 
 class Model:
-    """A multibody model: a tree of bodies joined by joints, gravity, force elements and signals, with the outputs and simulation settings its model file gives. Immutable. Coordinates are stacked in joint order: q (nq, quaternions as w, x, y, z) and v (nv); names in q_names and v_names."""
+    """A multibody model: a tree of bodies joined by joints, gravity, force elements and signals, with the outputs and simulation settings its model file gives. Immutable. Coordinates are stacked in joint order — the file's, depth first, as MuJoCo's qpos — q (nq, quaternions as w, x, y, z) and v (nv); name"""
     def __init__(*args: object, **kwargs: object) -> object: ...
     def body_index(self, name: str) -> int:
         """Index of a body; raises InvalidArgument with a did-you-mean."""
@@ -650,7 +650,7 @@ def linearize(model: Model, *, inputs: List[str] = [], outputs: List[str] = [], 
     """Linearizes the model about (t, q, v) — its initial state unless given — as `momenta linearize` does: states [δq; v] over the free joints, inputs the named signals (all by default), outputs the named model outputs, states or coordinates (the model file's outputs, or every configuration state, by defa"""
     ...
 
-def load_model(path: os.PathLike[str] | str, *, package_path: List[os.PathLike[str] | str] = [], link_density: Optional[float] = None) -> Model:
+def load_model(path: os.PathLike[str] | str, *, package_path: List[os.PathLike[str] | str] = [], link_density: Optional[float] = None, keyframe: Optional[str] = None) -> Model:
     """Reads a model file — momenta's YAML (docs/model-format.md), URDF (.urdf) or MJCF (.xml, .mjcf; docs/model-formats.md) — builds it and checks that it can be simulated, as `momenta simulate` does. For a URDF: `package_path`, folders holding the packages its package://NAME/... meshes name (ROS_PACKAGE_"""
     ...
 

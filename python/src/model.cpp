@@ -64,6 +64,16 @@ py::dict info_of(const ModelHandle& h) {
   info["joints"] = joints;
   info["force_elements"] = forces;
   info["signals"] = signals;
+  py::list keyframes;  // an MJCF file's named states, as momenta's q and v
+  for (const io::Keyframe& key : h.file->keyframes) {
+    py::dict d;
+    d["name"] = key.name;
+    d["time"] = key.time;
+    d["q"] = to_numpy(key.q);
+    d["v"] = to_numpy(key.v);
+    keyframes.append(d);
+  }
+  info["keyframes"] = keyframes;
   return info;
 }
 
@@ -71,7 +81,8 @@ void bind_model_class(py::module_& m) {
   py::class_<ModelHandle>(m, "Model", R"doc(
 A multibody model: a tree of bodies joined by joints, gravity, force elements and signals, with
 the outputs and simulation settings its model file gives. Immutable. Coordinates are stacked in
-joint order: q (nq, quaternions as w, x, y, z) and v (nv); names in q_names and v_names.)doc")
+joint order — the file's, depth first, as MuJoCo's qpos — q (nq, quaternions as w, x, y, z) and v
+(nv); names in q_names and v_names.)doc")
       .def_property_readonly("name", [](const ModelHandle& h) { return h.file->name; })
       .def_property_readonly("description",
                              [](const ModelHandle& h) { return h.file->description; })
@@ -174,24 +185,26 @@ joint order: q (nq, quaternions as w, x, y, z) and v (nv); names in q_names and 
   m.def(
       "load_model",
       [](const std::filesystem::path& path, const std::vector<std::filesystem::path>& package_path,
-         std::optional<double> link_density) {
+         std::optional<double> link_density, std::optional<std::string> keyframe) {
         io::ModelFileOptions options;
         options.package_path = package_path;
         options.link_density = link_density;
+        options.keyframe = std::move(keyframe);
         return ModelHandle{
             std::make_shared<const io::ModelFile>(frontend::load_model(path, options))};
       },
       py::arg("path"), py::kw_only(),
       py::arg("package_path") = std::vector<std::filesystem::path>{},
-      py::arg("link_density") = py::none(),
+      py::arg("link_density") = py::none(), py::arg("keyframe") = py::none(),
       R"doc(Reads a model file — momenta's YAML (docs/model-format.md), URDF (.urdf) or MJCF
 (.xml, .mjcf; docs/model-formats.md) — builds it and checks that it can be simulated, as
 `momenta simulate` does. For a URDF: `package_path`, folders holding the packages its
 package://NAME/... meshes name (ROS_PACKAGE_PATH is searched after), and `link_density` (kg/m³),
 filling the collision (else visual) geometry of each link without <inertial> to give it mass.
-Raises ParseError ('file:line:column: message', with .file, .line and .column) for anything wrong
+For an MJCF file: `keyframe`, the name of a <keyframe><key> whose qpos and qvel become the initial
+state (as `momenta --keyframe`; model.info()['keyframes'] lists them). Raises ParseError ('file:line:column: message', with .file, .line and .column) for anything wrong
 in it, FileError when it cannot be read, InvalidArgument for a link_density that is not positive
-and finite.)doc");
+and finite or a keyframe the file does not have.)doc");
 
   // What a format does not keep is said as a Python warning, one per load.
   const auto exported = [](const io::ExportedModel& written) {

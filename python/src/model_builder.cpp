@@ -312,7 +312,7 @@ chirp(amplitude, f0, f1, duration, start), table(times, values).)doc")
       .def(
           "build",
           [](const Builder& b) {
-            io::ModelFile file{b.name, "", b.builder.build(), {}, {}, "", {}, {}, {}, {}, {}};
+            io::ModelFile file{b.name, "", b.builder.build(), {}, {}, "", {}, {}, {}, {}, {}, {}};
             frontend::accept_model(file);
             return ModelHandle{std::make_shared<const io::ModelFile>(std::move(file))};
           },

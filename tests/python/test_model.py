@@ -130,6 +130,33 @@ def test_an_mjcf_file_loads_as_a_model(tmp_path):
         momenta.load_model(bad)
 
 
+KEYED_MJCF = """<mujoco>
+<worldbody>
+<body name="box" pos="0 0 1"><freejoint name="root"/><geom type="box" size="1 1 1"/>
+<body name="arm"><joint name="hinge" axis="0 1 0" ref="90"/><geom size="0.1" pos="0 0 -1"/></body>
+</body>
+</worldbody>
+<keyframe><key name="tilted" qpos="1 2 3 1 0 0 0 2" qvel="1 2 3 4 5 6 7"/></keyframe>
+</mujoco>"""
+
+
+def test_an_mjcf_keyframe_is_the_initial_state_asked_for(tmp_path):
+    """keyframe= starts the model from a key's state, in momenta's layout (the hinge's q is qpos −
+    ref, the free joint's speeds [ω; v]), as `momenta --keyframe` does; info lists the keys."""
+    path = tmp_path / "keyed.xml"
+    path.write_text(KEYED_MJCF)
+    drawn = momenta.load_model(path)
+    assert np.array_equal(drawn.initial_v, np.zeros(7))
+    (key,) = drawn.info()["keyframes"]
+    assert key["name"] == "tilted"
+    keyed = momenta.load_model(path, keyframe="tilted")
+    assert np.array_equal(keyed.initial_q, key["q"])
+    assert keyed.initial_q[7] == pytest.approx(2 - np.pi / 2, abs=1e-15)
+    assert np.array_equal(keyed.initial_v, [4, 5, 6, 1, 2, 3, 7])
+    with pytest.raises(momenta.InvalidArgument, match=r"keyframe 'tiltd': .*did you mean 'tilted'"):
+        momenta.load_model(path, keyframe="tiltd")
+
+
 def test_a_urdf_with_meshes_on_a_package_path(monkeypatch):
     """A URDF's package:// meshes are found on package_path, its links without <inertial> weighed
     at link_density (the mesh arm: four solids' closed forms at 2700 kg/m³ and a 0.5 kg payload,

@@ -24,6 +24,15 @@ struct ItemLocation {
   int column = 0;
 };
 
+/// A named state of the model — an MJCF `<keyframe><key>` — in momenta's layout: q and v as the
+/// model orders them (docs/model-formats.md says how MuJoCo's qpos and qvel map to them).
+struct Keyframe {
+  std::string name;   ///< the key's name, or `key<i>` (its index) for an unnamed one
+  double time = 0.0;  ///< s: the key's `time`
+  VecX q, v;
+  int line = 0;  ///< where the file declares it
+};
+
 /// What a model file describes.
 struct ModelFile {
   std::string name;                        ///< The file's `name:`, or the file's stem.
@@ -60,6 +69,11 @@ struct ModelFile {
   /// (a revolute joint's q0 of 30, beyond a turn: 30 rad, or 30 degrees meant?). The front ends
   /// show them when they read the file.
   std::vector<std::string> warnings;
+  /// The file's named states (MJCF keyframes), in file order; empty for other formats.
+  std::vector<Keyframe> keyframes;
+  /// The keyframe of that name. Throws InvalidArgument naming the file and the keys it has (with
+  /// a did-you-mean), or saying it has none.
+  const Keyframe& keyframe(std::string_view name) const;
   /// The names alone (symbolic::EquationOptions::names).
   std::map<std::string, std::string> given_symbol_names() const {
     std::map<std::string, std::string> names;
@@ -84,6 +98,9 @@ struct ModelFileOptions {
   /// of its collision geometry (else its visual geometry) filled with it. Without it such links
   /// are massless, as URDF says.
   std::optional<double> link_density;
+  /// A keyframe of the file (ModelFile::keyframes) whose state becomes the model's initial state
+  /// — MuJoCo's mj_resetDataKeyframe; any format may be asked, only MJCF files have them.
+  std::optional<std::string> keyframe;
 };
 
 /// Reads, checks and builds a model file. Paths inside it (part files, meshes, CSV tables) are

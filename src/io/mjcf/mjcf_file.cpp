@@ -425,6 +425,7 @@ std::vector<std::string> MjcfReader::body_joints(const XMLElement* body, const s
     const std::string type =
         free_element ? "free" : keyword(e, "type", {"hinge", "slide", "ball", "free"}, "hinge");
     const std::string owner = fmt::format("joint '{}'", joint.name);
+    double qpos_at_zero = 0.0;  // MuJoCo's qpos where momenta's q is 0: `ref`
     joint.parent = previous;
     joint.child = k + 1 == elements.size() ? name : fmt::format("{}_{}", name, joint.name);
     if (type == "free") {
@@ -455,6 +456,7 @@ std::vector<std::string> MjcfReader::body_joints(const XMLElement* body, const s
       if (joint.damping < 0.0) fail(xml, fmt::format("the damping of {} is negative", owner));
       const double unit = type == "slide" ? 1.0 : angle_scale;
       const double ref = number(e, "ref", 0.0) * unit;
+      if (type != "ball") qpos_at_zero = ref;
       const double stiffness = number(e, "stiffness", 0.0);
       if (stiffness < 0.0) fail(xml, fmt::format("the stiffness of {} is negative", owner));
       if (ref != 0.0 && type != "ball") {
@@ -489,7 +491,7 @@ std::vector<std::string> MjcfReader::body_joints(const XMLElement* body, const s
     builder.add_joint(joint);
     items.push_back(located_at(ModelItemRef::Kind::joint, joint.name, xml->GetLineNum(),
                                xml_column(text, xml)));
-    joints.emplace(joint.name, MjcfJoint{xml, joint});
+    joints.emplace(joint.name, MjcfJoint{xml, joint, qpos_at_zero});
     joint_order.push_back(joint.name);
     carried.push_back(joint.child);
     previous = joint.child;
@@ -584,7 +586,7 @@ ModelFile MjcfReader::read() {
     } else if (kind == "actuator") {
       read_actuators(c);
     } else if (kind != "compiler" && kind != "option" && kind != "default" && kind != "worldbody" &&
-               kind != "asset") {
+               kind != "asset" && kind != "keyframe") {
       int count = 0;
       for (const XMLElement* e = c->FirstChildElement(); e != nullptr; e = e->NextSiblingElement())
         ++count;
@@ -595,6 +597,16 @@ ModelFile MjcfReader::read() {
   }
 
   model::Model model = build_at_lines(builder, items, file);
+  std::vector<Keyframe> keyframes;
+  for (const XMLElement* c = root->FirstChildElement("keyframe"); c != nullptr;
+       c = c->NextSiblingElement("keyframe")) {
+    read_keyframes(c, model, keyframes);
+  }
+  // A key named `initial` (as momenta's MJCF writer keeps a model's initial velocities) is the
+  // initial state; any other is one to ask for (ModelFileOptions::keyframe, --keyframe).
+  for (const Keyframe& key : keyframes) {
+    if (key.name == "initial") model = model.with_initial_state(key.q, key.v);
+  }
   std::vector<std::vector<PartSummary>> parts(model.bodies().size());
   for (auto& [name, list] : body_parts) {
     parts[static_cast<std::size_t>(model.body_index(name))] = std::move(list);
@@ -614,7 +626,8 @@ ModelFile MjcfReader::read() {
                    std::move(parts),
                    {},
                    std::move(notes),
-                   {}};
+                   {},
+                   std::move(keyframes)};
 }
 
 }  // namespace detail

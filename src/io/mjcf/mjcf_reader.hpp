@@ -47,6 +47,7 @@ struct MjcfBody {
 struct MjcfJoint {
   const XMLElement* element;
   model::Joint joint;
+  double ref = 0.0;  ///< rad or m: MuJoCo's qpos at momenta's q = 0 (a hinge's or slide's `ref`)
 };
 
 class MjcfReader {
@@ -91,6 +92,14 @@ class MjcfReader {
   // --- equality constraints and actuators (mjcf_loads.cpp) ------------------------------------
   void read_equality(const XMLElement* section);
   void read_actuators(const XMLElement* section);
+
+  // --- keyframes (mjcf_keyframes.cpp) ---------------------------------------------------------
+  /// The <key>s of a <keyframe> section as states of the built `model`: MuJoCo's qpos and qvel
+  /// turned into momenta's q and v (a hinge's or slide's q = qpos − ref, a free joint's velocity
+  /// [ω; v] from MuJoCo's [v; ω]); what momenta has no use for (act, ctrl, mocap) noted. Appended
+  /// to `keys` (an unnamed key is `key<i>`, i its index among all of the file's keys).
+  void read_keyframes(const XMLElement* section, const model::Model& model,
+                      std::vector<Keyframe>& keys);
 
  private:
   struct DefaultClass {

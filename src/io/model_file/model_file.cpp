@@ -311,14 +311,44 @@ ModelFile detail::compose_model_file(const YamlNode& root, const std::filesystem
                  std::move(body_parts),
                  read_symbol_names(root),
                  {},
-                 std::move(ctx.warnings)};
+                 std::move(ctx.warnings),
+                 {}};
   return file;
 }
 
-ModelFile read_model_file(const std::filesystem::path& path, const ModelFileOptions& options) {
+namespace {
+
+ModelFile read_any_format(const std::filesystem::path& path, const ModelFileOptions& options) {
   if (is_urdf_path(path)) return read_urdf_file(path, options);
   if (is_mjcf_path(path)) return read_mjcf_file(path);
   return detail::compose_model_file(YamlNode::load_file(path), path.parent_path());
+}
+
+}  // namespace
+
+ModelFile read_model_file(const std::filesystem::path& path, const ModelFileOptions& options) {
+  ModelFile file = read_any_format(path, options);
+  if (options.keyframe) {
+    const Keyframe& key = file.keyframe(*options.keyframe);
+    file.model = file.model.with_initial_state(key.q, key.v);
+  }
+  return file;
+}
+
+const Keyframe& ModelFile::keyframe(std::string_view key_name) const {
+  for (const Keyframe& key : keyframes) {
+    if (key.name == key_name) return key;
+  }
+  if (keyframes.empty()) {
+    throw InvalidArgument(
+        fmt::format("keyframe '{}': {} has no keyframes (an MJCF <keyframe> "
+                    "section holds them)",
+                    key_name, file));
+  }
+  std::vector<std::string_view> names;
+  for (const Keyframe& key : keyframes) names.push_back(key.name);
+  throw InvalidArgument(fmt::format("keyframe '{}': {} has no such key{}; its keys: {}", key_name,
+                                    file, did_you_mean(key_name, names), fmt::join(names, ", ")));
 }
 
 std::optional<ParseError> ModelFile::locate(const Error& error) const {

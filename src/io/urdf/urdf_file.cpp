@@ -390,6 +390,7 @@ ModelFile UrdfReader::read() {
       std::move(body_parts),
       {},
       std::move(notes),
+      {},
       {}};
 }
 

@@ -313,6 +313,55 @@ TEST(MjcfFile, ErrorsAreAtTheirLineAndColumn) {
                   "m.xml:4:1: joint 'joint0' carries only massless bodies"));
 }
 
+// Keyframes without MuJoCo at hand (side by side with it: tests/validation/io/mjcf_mujoco_test.cpp,
+// KeyframesAreMuJoCosStates): a hinge's q is qpos − ref (in radians, whatever the compiler's
+// angle), a free joint's speeds turn from [v; ω] to [ω; v]; what momenta has no use for is a note;
+// a key of the wrong size, an unknown element or a second key of one name an error at its line.
+TEST(MjcfFile, KeyframesAreNamedStatesInMomentasLayout) {
+  const std::string body = R"(<mujoco>
+<worldbody>
+<body name="box" pos="0 0 1"><freejoint name="root"/><geom type="box" size="1 1 1"/>
+<body name="arm"><joint name="hinge" axis="0 1 0" ref="90"/><geom size="0.1" pos="0 0 -1"/></body>
+</body>
+</worldbody>
+<keyframe>
+<key name="tilted" qpos="1 2 3 1 0 0 0 2" qvel="1 2 3 4 5 6 7" act="1"/>
+</keyframe>
+)";
+  const ModelFile f = parse_mjcf(body + "</mujoco>", "m.xml");
+  ASSERT_EQ(f.keyframes.size(), 1u);
+  const Keyframe& key = f.keyframe("tilted");
+  EXPECT_EQ(key.line, 8);
+  EXPECT_EQ(key.q.head<7>(), (VecX(7) << 1, 2, 3, 1, 0, 0, 0).finished());
+  EXPECT_NEAR(key.q[7], 2.0 - std::numbers::pi / 2, 1e-15);
+  EXPECT_EQ(key.v, (VecX(7) << 4, 5, 6, 1, 2, 3, 7).finished());
+  std::string notes;
+  for (const std::string& n : f.notes) notes += n + "\n";
+  EXPECT_NE(notes.find("m.xml:8: key 'tilted': act not used by momenta"), std::string::npos)
+      << notes;
+  const auto has = [](const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos ? ::testing::AssertionSuccess()
+                                                : ::testing::AssertionFailure() << text;
+  };
+  EXPECT_TRUE(has(error_of(body + "<keyframe><key qpos='1 2'/></keyframe></mujoco>"),
+                  "m.xml:10:16: <key qpos=\"1 2\">: expected 8 numbers, found 2"));
+  EXPECT_TRUE(has(error_of(body + "<keyframe><kye/></keyframe></mujoco>"),
+                  "m.xml:10:11: <kye> in <keyframe>: its elements are <key>"));
+  EXPECT_TRUE(has(error_of(body + "<keyframe><key name='tilted'/></keyframe></mujoco>"),
+                  "a second key named 'tilted' (the first is at line 8)"));
+  // A file of another format has none to ask for.
+  EXPECT_THROW(
+      {
+        try {
+          read_model_file(test::source_dir() + "/examples/pendulum.yaml").keyframe("a");
+        } catch (const InvalidArgument& e) {
+          EXPECT_TRUE(has(e.what(), "examples/pendulum.yaml has no keyframes"));
+          throw;
+        }
+      },
+      InvalidArgument);
+}
+
 // Mesh geoms: each mesh in its file's coordinates, placed by the geom and weighed as the solid it
 // bounds — the cube scaled per axis against the box's closed form (±0.5 is exact in the binary
 // STL's floats: 1e-15), the prism against the regular hexagonal prism (its corners rounded to

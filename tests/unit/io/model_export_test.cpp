@@ -207,6 +207,24 @@ TEST(ModelExport, TreeExamplesThroughUrdfAndBack) {
   EXPECT_GE(written_count, 8);
 }
 
+// The initial velocities travel as the key `initial`, which reading takes as the initial state:
+// the spinning top (a ball joint) and the tumbling racket (a free joint, whose speeds MuJoCo
+// orders [v; ω]) come back spinning as they left.
+TEST(ModelExport, InitialVelocitiesComeBackThroughTheInitialKey) {
+  for (const char* name : {"heavy_top", "free_body_tennis_racket"}) {
+    const ModelFile file = read_model_file(test::source_dir() + "/examples/" + name + ".yaml");
+    ASSERT_GT(file.model.initial_v().norm(), 1.0) << name;
+    const ExportedModel written = write_mjcf(file, file.model.initial_q());
+    const ModelFile back = parse_mjcf(written.text, "written.xml");
+    ASSERT_EQ(back.keyframes.size(), 1u) << name;
+    EXPECT_EQ(back.keyframes[0].name, "initial");
+    // (q is not compared: a ball joint's drawn tilt becomes its body's frame in MJCF, and q the
+    // identity; the speeds, in the body's axes, are the same.)
+    EXPECT_LT((back.model.initial_v() - file.model.initial_v()).cwiseAbs().maxCoeff(), 1e-15)
+        << name;
+  }
+}
+
 TEST(ModelExport, WhatAFormatCannotKeepIsRefusedByName) {
   const ModelFile coin =
       read_model_file(test::source_dir() + "/examples/constraints/rolling_coin.yaml");

@@ -24,12 +24,14 @@
 #include <gtest/gtest.h>
 #include <Eigen/Eigenvalues>
 
+#include "momenta/common/error.hpp"
 #include "momenta/dynamics/aba.hpp"
 #include "momenta/dynamics/crba.hpp"
 #include "momenta/dynamics/force_elements.hpp"
 #include "momenta/dynamics/kinematics.hpp"
 #include "momenta/dynamics/rnea.hpp"
 #include "momenta/io/mjcf_file.hpp"
+#include "momenta/io/model_file.hpp"
 #include "momenta/io/urdf_file.hpp"
 #include "momenta_test/scratch_dir.hpp"
 #include "momenta_test/tolerance.hpp"
@@ -314,6 +316,85 @@ TEST(MjcfMuJoCo, CoordinatesAreMuJoCos) {
       EXPECT_EQ(joint.v_index, mj.m->jnt_dofadr[id]) << joint.name;
     }
     std::printf("%s: %s\n", std::filesystem::path(path).filename().c_str(), order.c_str());
+  }
+}
+
+// A keyframe is the state MuJoCo's mj_resetDataKeyframe sets: momenta's q and v from the key's
+// qpos and qvel put every body where MuJoCo puts it (xpos, xmat after mj_forward) and give the
+// same kinetic energy — through a hinge's and a slide's `ref` (momenta's q = qpos − ref), a free
+// joint's [v; ω] (momenta's [ω; v]) and a ball's quaternion. A key without qvel is at rest, one
+// without qpos is qpos0 (the drawn configuration); an unnamed key is key<i>.
+TEST(MjcfMuJoCo, KeyframesAreMuJoCosStates) {
+  const std::filesystem::path dir = test::make_scratch_dir("mjcf_mujoco_keys");
+  const std::string path = (dir / "keyed.xml").string();
+  std::ofstream(path) << R"(<mujoco model="keyed">
+  <worldbody>
+    <body name="trunk" pos="0 0 1" euler="10 0 30">
+      <freejoint name="root"/>
+      <geom type="box" size="0.1 0.2 0.3" mass="5"/>
+      <body name="left" pos="0 0.3 0">
+        <joint name="left_x" axis="1 0 0" ref="20" pos="0 0 0.05"/>
+        <joint name="left_y" axis="0 1 0" ref="-35"/>
+        <geom type="capsule" fromto="0 0 0 0 0.1 -0.4" size="0.05"/>
+        <body name="left_lower" pos="0 0 -0.4">
+          <joint name="left_slide" type="slide" axis="0 0.6 0.8" ref="0.1"/>
+          <geom type="capsule" fromto="0 0 0 0.1 0 -0.4" size="0.04"/>
+        </body>
+      </body>
+      <body name="right" pos="0 -0.3 0">
+        <joint name="right_ball" type="ball"/>
+        <geom type="capsule" fromto="0 0 0 0.1 -0.1 -0.4" size="0.05"/>
+      </body>
+    </body>
+  </worldbody>
+  <keyframe>
+    <key name="crouch" time="1.5" qpos="0.1 0.2 0.8 0.5 0.5 0.5 0.5 0.5 -0.4 0.25 0.8 0.6 0 0"
+         qvel="0.1 0.2 0.3 1 -2 3 0.5 -0.5 0.2 1 -1 0.5"/>
+    <key qvel="0 0 0 0 0 1 0 0 0 0 0 0"/>
+  </keyframe>
+</mujoco>)";
+  const io::ModelFile file = io::read_mjcf_file(path);
+  ASSERT_EQ(file.keyframes.size(), 2u);
+  EXPECT_EQ(file.keyframes[0].name, "crouch");
+  EXPECT_EQ(file.keyframes[0].time, 1.5);
+  EXPECT_EQ(file.keyframes[1].name, "key1");
+  const MuJoCoModel mj(path);
+  ASSERT_NE(mj.m, nullptr) << mj.message;
+  mj.m->opt.enableflags |= mjENBL_ENERGY;
+  dynamics::Data data(file.model);
+  for (int k = 0; k < 2; ++k) {
+    const io::Keyframe& key = file.keyframes[static_cast<std::size_t>(k)];
+    SCOPED_TRACE(key.name);
+    mj_resetDataKeyframe(mj.m, mj.d, k);
+    mj_forward(mj.m, mj.d);
+    dynamics::forward_kinematics(file.model, data, key.q);
+    for (const char* body : {"trunk", "left", "left_lower", "right"}) {
+      const int id = mj_name2id(mj.m, mjOBJ_BODY, body);
+      const Transform& X_WB = data.X_WB[static_cast<std::size_t>(file.model.body_index(body))];
+      const Vec3 p_mj(mj.d->xpos[3 * id], mj.d->xpos[3 * id + 1], mj.d->xpos[3 * id + 2]);
+      const Mat3 R_mj =
+          Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(mj.d->xmat + 9 * id);
+      EXPECT_LT((X_WB.p - p_mj).norm(), 1e-14) << body;
+      EXPECT_LT((X_WB.R - R_mj).cwiseAbs().maxCoeff(), 1e-14) << body;
+    }
+    const double kinetic = 0.5 * key.v.dot(dynamics::crba(file.model, data, key.q) * key.v);
+    EXPECT_GT(kinetic, 0.1);
+    EXPECT_NEAR(kinetic, mj.d->energy[1], 1e-13 * kinetic);
+  }
+  // Asked for by name, a key is the model's initial state; one the file lacks is named.
+  io::ModelFileOptions options;
+  options.keyframe = "crouch";
+  EXPECT_EQ(io::read_model_file(path, options).model.initial_q(), file.keyframes[0].q);
+  options.keyframe = "crotch";
+  try {
+    io::read_model_file(path, options);
+    ADD_FAILURE() << "no error";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("keyframe 'crotch': " + path +
+                                         " has no such key (did you mean 'crouch'?); its keys: "
+                                         "crouch, key1"),
+              std::string::npos)
+        << e.what();
   }
 }
 
