@@ -264,7 +264,7 @@ json describe(const InfoOptions& o, const io::ModelFile& file) {
                   {"parent", joint.parent},      {"child", joint.child},
                   {"q_index", joint.q_index},    {"v_index", joint.v_index},
                   {"coordinates", std::move(q)}, {"speeds", std::move(v)},
-                  {"damping", joint.damping}};
+                  {"damping", joint.damping},    {"armature", joint.armature}};
     entry["prescribed_by"] = joint.prescribed_signals;
     joints.push_back(std::move(entry));
   }
@@ -345,6 +345,11 @@ void print_text(const json& j, const io::ModelFile& file) {
     fmt::print("  {}  {}, {} → {}", joint.name, model::joint_type_name(joint.type), joint.parent,
                joint.child);
     if (joint.damping > 0.0) fmt::print(", damping {:.6g}", joint.damping);
+    if (joint.armature > 0.0) {
+      const std::string unit = model::joint_damping_unit(m, joint);
+      fmt::print(", armature {:.6g} {}", joint.armature,
+                 unit == "N·m·s/rad" ? "kg·m²" : (unit == "N·s/m" ? "kg" : "(kg·m² or kg)"));
+    }
     fmt::print("\n");
     for (int i = 0; i < joint.nq(); ++i) {
       fmt::print("    {}  {}", m.q_name(joint.q_index + i), model::q_unit(m, joint.q_index + i));

@@ -190,7 +190,7 @@ Every add_* method returns the builder, so calls chain.)doc")
           [](Builder& b, std::string name, const std::string& type, std::string parent,
              std::string child, const py::object& axis, const py::object& axis2,
              const py::object& in_parent, const py::object& in_child, const py::object& q0,
-             const py::object& v0, double damping,
+             const py::object& v0, double damping, double armature,
              const std::vector<std::string>& prescribed) -> Builder& {
             Joint j;
             j.name = std::move(name);
@@ -204,6 +204,7 @@ Every add_* method returns the builder, so calls chain.)doc")
             j.q0 = optional_vector(q0, "q0");
             j.v0 = optional_vector(v0, "v0");
             j.damping = damping;
+            j.armature = armature;
             j.prescribed_signals = prescribed;
             b.builder.add_joint(std::move(j));
             return b;
@@ -212,13 +213,13 @@ Every add_* method returns the builder, so calls chain.)doc")
           py::arg("axis") = py::none(), py::arg("axis2") = py::none(),
           py::arg("in_parent") = py::none(), py::arg("in_child") = py::none(),
           py::arg("q0") = py::none(), py::arg("v0") = py::none(), py::arg("damping") = 0.0,
-          py::arg("prescribed") = std::vector<std::string>{},
+          py::arg("armature") = 0.0, py::arg("prescribed") = std::vector<std::string>{},
           R"doc(A joint from `parent` (a body or 'world') to `child`. type: fixed, revolute,
 prismatic, cylindrical, universal, spherical, planar, free (or the aliases weld, hinge, slider,
 ball, floating). axis (in J, default z) and axis2 (universal, in J'); in_parent / in_child: the
 poses of J in the parent and J' in the child, {'position': [x, y, z], 'rotation': R}; q0, v0:
-initial coordinates (default neutral, zero); damping: viscous c on every coordinate;
-prescribed: one signal name per velocity coordinate (a ball joint: its rotation vector; a
+initial coordinates (default neutral, zero); damping: viscous c on every coordinate; armature:
+a motor's reflected rotor inertia on every coordinate (kg·m² or kg), as MuJoCo's; prescribed: one signal name per velocity coordinate (a ball joint: its rotation vector; a
 free joint: rotation vector, then position; model/prescribed_motion.hpp).)doc")
       .def(
           "add_spring_damper",

@@ -88,15 +88,18 @@ MatNN<N> spd_inverse(const MatNN<N>& D, int n) {
   return Dinv;
 }
 
-// Pass 2 for joint j with N degrees of freedom: U = IA S, D⁻¹ = (Sᵀ U)⁻¹, u = τ − Sᵀ pA; and,
+// Pass 2 for joint j with N degrees of freedom: U = IA S, D⁻¹ = (Sᵀ U + armature)⁻¹, u = τ − Sᵀ pA;
+// and,
 // unless it is a root joint, Ia = IA − U D⁻¹ Uᵀ into IA and pa += U D⁻¹ u.
 template <int N>
-void articulate(Data& data, int j, const double* tau, bool root, Vec6& pa, int n = N) {
+void articulate(Data& data, int j, const double* tau, bool root, Vec6& pa, double armature,
+                int n = N) {
   const int i = j + 1;
   Mat6& IA = data.IA[i];
   const auto S = left_cols<N>(data.S[j], n);
   const Eigen::Matrix<double, 6, N, 0, 6, (N == Eigen::Dynamic ? 6 : N)> U = IA * S;
-  const MatNN<N> D = S.transpose() * U;
+  MatNN<N> D = S.transpose() * U;
+  D.diagonal().array() += armature;  // the rotor's reflected inertia (Joint::armature)
   const MatNN<N> Dinv = spd_inverse<N>(D, n);
   const VecNd<N> u = Eigen::Map<const VecNd<N>>(tau, n) - S.transpose() * data.pA[i];
   left_cols<N>(data.U[j], n) = U;
@@ -168,7 +171,8 @@ void aba_articulate(const Model& model, Data& data, VecRef q, VecRef v, VecRef t
         U.noalias() = IA * data.S[j].col(0);
         u_j = tau[c.v_index] - data.S[j].col(0).dot(pA);
       }
-      const double D_inv = 1.0 / (c.S_basis >= 0 ? U[c.S_basis] : data.S[j].col(0).dot(U));
+      const double D_inv =
+          1.0 / ((c.S_basis >= 0 ? U[c.S_basis] : data.S[j].col(0).dot(U)) + c.armature);
       data.U[j].col(0) = U;
       data.Dinv[j](0, 0) = D_inv;
       data.u[j][0] = u_j;
@@ -195,16 +199,17 @@ void aba_articulate(const Model& model, Data& data, VecRef q, VecRef v, VecRef t
       // Fixed sizes for the common multi-dof joints (Eigen unrolls and vectorizes them).
       switch (c.nv) {
         case 2:
-          detail::articulate<2>(data, j, tau.data() + c.v_index, p == 0, pa);
+          detail::articulate<2>(data, j, tau.data() + c.v_index, p == 0, pa, c.armature);
           break;
         case 3:
-          detail::articulate<3>(data, j, tau.data() + c.v_index, p == 0, pa);
+          detail::articulate<3>(data, j, tau.data() + c.v_index, p == 0, pa, c.armature);
           break;
         case 6:
-          detail::articulate<6>(data, j, tau.data() + c.v_index, p == 0, pa);
+          detail::articulate<6>(data, j, tau.data() + c.v_index, p == 0, pa, c.armature);
           break;
         default:
-          detail::articulate<Eigen::Dynamic>(data, j, tau.data() + c.v_index, p == 0, pa, c.nv);
+          detail::articulate<Eigen::Dynamic>(data, j, tau.data() + c.v_index, p == 0, pa,
+                                             c.armature, c.nv);
           break;
       }
       if (p == 0) continue;

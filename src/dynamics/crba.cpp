@@ -135,6 +135,10 @@ const MatX& crba(const Model& model, Data& data, VecRef q) {
     }
   }
   mirror_upper(data.M);
+  for (const auto& c : joints) {  // the rotors' reflected inertia (armature) on the diagonal
+    for (int k = 0; k < c.nv && c.armature != 0.0; ++k)
+      data.M(c.v_index + k, c.v_index + k) += c.armature;
+  }
   return data.M;
 }
 

@@ -58,7 +58,8 @@ const VecX& hybrid_dynamics(const Model& model, Data& data, const std::vector<ch
     } else if (n > 0) {
       auto U = data.U[j].leftCols(n);
       U.noalias() = IA * S;
-      const MatN D = S.transpose() * U;
+      MatN D = S.transpose() * U;
+      D.diagonal().array() += c.armature;  // the rotor's reflected inertia
       auto Dinv = data.Dinv[j].topLeftCorner(n, n);
       Dinv = Eigen::LLT<MatN>(D).solve(MatN::Identity(n, n));
       auto u = data.u[j].head(n);
@@ -92,6 +93,7 @@ const VecX& hybrid_dynamics(const Model& model, Data& data, const std::vector<ch
       a.noalias() += S * vdot_in.segment(c.v_index, n);
       const Vec6 f = data.IA[i] * a + data.pA[i];
       data.tau.segment(c.v_index, n).noalias() = S.transpose() * f;
+      data.tau.segment(c.v_index, n) += c.armature * vdot_in.segment(c.v_index, n);
     } else {
       const VecN qdd = data.Dinv[j].topLeftCorner(n, n) *
                        (data.u[j].head(n) - data.U[j].leftCols(n).transpose() * a);

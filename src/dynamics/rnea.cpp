@@ -67,6 +67,9 @@ const VecX& rnea(const Model& model, Data& data, VecRef q, VecRef v, VecRef vdot
     } else {
       for (int k = 0; k < c.nv; ++k) data.tau[c.v_index + k] = data.S[j].col(k).dot(data.F_B[i]);
     }
+    // The rotor's reflected inertia (armature) on the joint's own coordinates.
+    for (int k = 0; k < c.nv && c.armature != 0.0; ++k)
+      data.tau[c.v_index + k] += c.armature * vdot[c.v_index + k];
     carried_to = c.parent;
     detail::to_parent(c, data.X_PB[i], F, carried);
   }

@@ -169,6 +169,9 @@ void derivative_passes(const Model& model, Data& data, VecRef q, VecRef v, VecRe
           }
         }
       }
+      // The rotor's reflected inertia (armature): on M's diagonal and in τ, not in ∂τ/∂q or ∂v.
+      data.M(vm, vm) += c.armature;
+      data.tau[vm] += c.armature * vdot[vm];
     }
     // The subtree's sums pass to the parent.
     data.dIc_W[c.parent] += Ic;

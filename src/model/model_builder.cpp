@@ -253,6 +253,9 @@ class ModelAssembler {
     MOMENTA_REQUIRE(j.q0.allFinite() && j.v0.allFinite(), "{}: q0 or v0 is not finite", who);
     MOMENTA_REQUIRE(j.damping >= 0 && std::isfinite(j.damping),
                     "{}: damping {} must be zero or positive", who, j.damping);
+    MOMENTA_REQUIRE(j.armature >= 0 && std::isfinite(j.armature),
+                    "{}: armature {} must be zero or positive (a rotor's reflected inertia)", who,
+                    j.armature);
     if (j.is_prescribed()) {
       MOMENTA_REQUIRE(j.nv() > 0, "{}: a fixed joint has no motion to prescribe", who);
       MOMENTA_REQUIRE(static_cast<int>(j.prescribed_signals.size()) == j.nv(),
@@ -387,6 +390,7 @@ class ModelAssembler {
     c.child_at_joint = j.X_CJ.R == Mat3::Identity() && j.X_CJ.p.isZero(0.0);
     c.axis = j.axis;
     c.axis2 = j.axis2;
+    c.armature = j.armature;
     if (c.nv == 1) {
       const Mat6 S_J = joint_motion_subspace(j, model_.q0_.data() + j.q_index);
       c.S_C = j.X_CJ.act_motion(S_J.col(0));

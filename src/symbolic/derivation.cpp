@@ -494,9 +494,16 @@ void Derivation::element_forces() {
     const V3 F = transpose(R_WB_[b]) * F_W;
     f[b] = f[b] + Force{cross(p, F), F};
   };
+  armature_.assign(model_.nv(), 0);
   for (const model::Joint& j : model_.joints()) {
     const ex c = params_("c_" + j.name, j.damping, model::joint_damping_unit(model_, j));
     for (int k = 0; k < j.nv(); ++k) Q_[j.v_index + k] -= c * impl_.v[j.v_index + k];
+    if (j.armature == 0.0) continue;
+    // A rotor's reflected inertia: kg·m² on an angle, kg on a length (as the damping's unit).
+    const std::string unit = model::joint_damping_unit(model_, j);
+    const ex armature = params_("Ia_" + j.name, j.armature,
+                                unit == "N·m·s/rad" ? "kg·m²" : (unit == "N·s/m" ? "kg" : ""));
+    for (int k = 0; k < j.nv(); ++k) armature_[j.v_index + k] = armature;
   }
   for (const model::ForceElement& element : model_.force_elements()) {
     const std::string name = model::force_element_name(element);
@@ -785,6 +792,10 @@ void Derivation::split() {
     for (int c = 0; c < n; ++c) {
       impl_.M(static_cast<unsigned>(r), static_cast<unsigned>(c)) =
           tidy_if_small(mass_columns_[static_cast<std::size_t>(c)][row]);
+    }
+    // The rotor's reflected inertia (a joint's armature) on the coordinate's own diagonal entry.
+    if (const ex& armature = armature_[row]; !armature.is_zero()) {
+      impl_.M(static_cast<unsigned>(r), static_cast<unsigned>(r)) += armature;
     }
     const ex g = tidy_if_small(tau_gravity_[row]);
     impl_.g.push_back(g);

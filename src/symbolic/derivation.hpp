@@ -344,6 +344,7 @@ class Derivation {
   std::vector<Inertia> inertias_;
   V3 base_acceleration_;
   std::vector<ex> tau_no_acceleration_, tau_gravity_, Q_;
+  std::vector<ex> armature_;  // each speed's rotor inertia (a joint's armature), 0 without
   std::vector<std::vector<ex>> mass_columns_;
   std::vector<V3> p_CJ_, com_;           // per body: its joint's J'o and its centre of mass, in B
   std::vector<M3> I_com_;                // per body: Ī about the centre of mass, in B

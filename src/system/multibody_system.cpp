@@ -93,7 +93,11 @@ MultibodySystem::MultibodySystem(const model::Model& model)
       if (link->a.body_index == 0 || link->b.body_index == 0) floating = false;
     }
   }
-  conserves_angular_momentum_ = conserves_energy_ && floating;
+  // A rotor's reflected inertia (armature) adds to its coordinate's inertia with no angular
+  // momentum of its own in the bodies' H: H is not what is conserved then.
+  bool armature = false;
+  for (const model::Joint& j : model.joints()) armature = armature || j.armature != 0.0;
+  conserves_angular_momentum_ = conserves_energy_ && floating && !armature;
   if (model.has_constraints()) {
     constraints_ = std::make_unique<ConstraintSolver>(model);
     lambda_mean_ = VecX::Zero(constraints_->multipliers().size());
@@ -295,7 +299,7 @@ void MultibodySystem::set_signal_offsets(std::span<const double> value,
 Energy MultibodySystem::energy(const VecX& q, const VecX& v) {
   dynamics::forward_kinematics(model_, data_, q, v);
   Energy e;
-  e.kinetic = dynamics::kinetic_energy(model_, static_cast<const dynamics::Data&>(data_));
+  e.kinetic = dynamics::kinetic_energy(model_, static_cast<const dynamics::Data&>(data_), v);
   e.potential_gravity =
       dynamics::potential_energy(model_, static_cast<const dynamics::Data&>(data_));
   e.potential_springs = dynamics::spring_potential_energy(model_, data_, q);

@@ -37,12 +37,15 @@ using test::random_vector;
 struct Case {
   int bodies;
   unsigned seed;
+  double armature = 0.0;  ///< kg·m² (kg): each joint's rotor inertia, test::random_tree's
 };
 
 class DynamicsProperties : public ::testing::TestWithParam<Case> {
  protected:
   void SetUp() override {
-    model_ = std::make_unique<Model>(random_tree(GetParam().bodies, GetParam().seed));
+    model_ = std::make_unique<Model>(random_tree(GetParam().bodies, GetParam().seed,
+                                                 test::all_joint_types(), Vec3(0, 0, -9.81),
+                                                 GetParam().armature));
     rng_.seed(GetParam().seed + 1000);
   }
   const Model& m() const { return *model_; }
@@ -264,10 +267,12 @@ TEST_P(DynamicsProperties, ReactionsBalanceTheMomentumRateOfEachSubtree) {
     }
     EXPECT_LT((applied - rate).norm(), 1e-6 * std::max(1.0, rate.norm())) << "body " << b;
   }
-  // The components along each joint's motion subspace are its τ.
+  // The components along each joint's motion subspace are its τ, less what accelerates the
+  // joint's rotor (armature · v̇): the bodies feel the rest.
   for (const auto& j : m().joints()) {
     for (int k = 0; k < j.nv(); ++k) {
-      EXPECT_NEAR(data.S[j.index].col(k).dot(data.F_B[j.child_index]), tau[j.v_index + k],
+      EXPECT_NEAR(data.S[j.index].col(k).dot(data.F_B[j.child_index]),
+                  tau[j.v_index + k] - j.armature * vdot[j.v_index + k],
                   1e-10 * std::max(1.0, tau.norm()));
     }
   }
@@ -364,14 +369,20 @@ TEST_P(DynamicsProperties, MomentumOfAFloatingTreeIsConserved) {
   EXPECT_LT((mp.angular_about(Vec3(1, 2, 3)) - mm.angular_about(Vec3(1, 2, 3))).norm() / (2 * d),
             1e-6);
   // And the kinetic energy.
-  const double Tp = kinetic_energy(floating, plus);
-  const double Tm = kinetic_energy(floating, minus);
+  const double Tp = kinetic_energy(floating, plus, v + d * vdot);
+  const double Tm = kinetic_energy(floating, minus, v - d * vdot);
   EXPECT_LT(std::abs(Tp - Tm) / (2 * d), 1e-6);
 }
 
 INSTANTIATE_TEST_SUITE_P(RandomTrees, DynamicsProperties,
                          ::testing::Values(Case{1, 1}, Case{3, 2}, Case{8, 3}, Case{9, 4},
                                            Case{16, 5}, Case{24, 6}));
+
+// The same properties with a rotor's reflected inertia (armature) on every joint, of the order of
+// the bodies' own (0.01–0.1 kg·m²): ABA, CRBA, RNEA, hybrid dynamics and the kinetic energy each
+// add it on their own, and must agree.
+INSTANTIATE_TEST_SUITE_P(RandomTreesWithArmature, DynamicsProperties,
+                         ::testing::Values(Case{3, 2, 0.02}, Case{9, 4, 0.05}, Case{16, 5, 0.03}));
 
 }  // namespace
 }  // namespace momenta::dynamics

@@ -47,6 +47,20 @@ def test_builder_makes_the_model_a_file_makes():
     np.testing.assert_allclose(ws.generalized_gravity([1e-3]), [9.81 * np.sin(1e-3)], rtol=1e-14)
 
 
+def test_builder_takes_a_joints_armature():
+    """armature= adds a rotor's reflected inertia to the joint's diagonal of M: m L² + I_a."""
+    b = momenta.ModelBuilder("motor pendulum")
+    b.add_body("bob", inertia.point_mass(2.0).transformed(np.eye(3), [0, 0, -0.5]))
+    b.add_joint("hinge", "revolute", parent="world", child="bob", axis=[0, 1, 0], armature=0.3)
+    ws = momenta.Workspace(b.build())
+    np.testing.assert_allclose(ws.crba([0.7]), [[2.0 * 0.25 + 0.3]], rtol=1e-15)
+    with pytest.raises(momenta.InvalidArgument, match="armature -1 must be zero or positive"):
+        b2 = momenta.ModelBuilder("bad")
+        b2.add_body("bob", inertia.point_mass(1.0).transformed(np.eye(3), [0, 0, -1]))
+        b2.add_joint("hinge", "revolute", parent="world", child="bob", armature=-1.0)
+        b2.build()
+
+
 def test_builder_takes_signals_and_force_elements():
     b = momenta.ModelBuilder("cart")
     b.set_gravity([0, 0, 0])

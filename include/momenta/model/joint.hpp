@@ -225,6 +225,12 @@ struct Joint {
   /// angles, N·s/m on displacements). Evaluated by the force-element code, not by the
   /// dynamics algorithms.
   double damping = 0.0;
+  /// Armature ≥ 0 on every velocity coordinate (kg·m² on a rotation, kg on a translation): the
+  /// reflected inertia of a motor's rotor, gear² × rotor inertia, as MuJoCo's joint `armature`. It
+  /// adds to the coordinate's diagonal of the mass matrix — a torque armature · v̇ and a kinetic
+  /// energy ½ armature v² — with no gyroscopic or reaction effect on the bodies (the rotor's own
+  /// spin axis is not modelled), so a model with armature does not conserve angular momentum.
+  double armature = 0.0;
 
   /// Prescribed motion: empty for a joint driven by forces; otherwise one signal name per
   /// coordinate (size nq == nv: revolute, prismatic, cylindrical, universal, planar) whose value,

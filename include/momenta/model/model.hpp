@@ -57,6 +57,8 @@ struct JointConstants {
   bool turns_about_axis = false;
   Vec3 axis = Vec3::UnitZ();
   Vec3 axis2 = Vec3::UnitY();
+  /// Joint::armature: added to D (ABA) and M's diagonal (CRBA), τ += armature · v̇ (RNEA).
+  double armature = 0.0;
 };
 
 class Model {

@@ -177,11 +177,16 @@ class MjcfWriter {
     }
     const std::string passive =
         (damping != 0.0 ? fmt::format(" damping=\"{}\"", number_text(damping)) : "") +
+        (joint.armature != 0.0 ? fmt::format(" armature=\"{}\"", number_text(joint.armature))
+                               : "") +
         (stiffness != 0.0 ? fmt::format(" stiffness=\"{}\" springref=\"{}\"",
                                         number_text(stiffness), number_text(rest))
                           : "");
     if (joint.type == model::JointType::free) {
-      out += fmt::format("{}<freejoint name=\"{}\"/>\n", inner, joint.name);
+      out += joint.armature == 0.0
+                 ? fmt::format("{}<freejoint name=\"{}\"/>\n", inner, joint.name)
+                 : fmt::format("{}<joint name=\"{}\" type=\"free\" armature=\"{}\"/>\n", inner,
+                               joint.name, number_text(joint.armature));
       // MuJoCo's free velocity: the body origin's in the world, then ω in the body.
       const Vec3 w(velocity(0), velocity(1), velocity(2)), v(velocity(3), velocity(4), velocity(5));
       append_velocity(joint.X_PJ.R * v);

@@ -52,6 +52,10 @@ ExportedModel write_urdf(const ModelFile& file) {
   check_representable(model);
   std::vector<std::string> lost = detail::loads_not_written(model, "URDF");
   for (std::string& mesh : detail::meshes_not_written(file)) lost.push_back(std::move(mesh));
+  for (const model::Joint& joint : model.joints()) {  // URDF has no rotor inertia
+    if (joint.armature != 0.0)
+      lost.push_back(fmt::format("joint '{}': armature {}", joint.name, joint.armature));
+  }
   if (model.gravity() != Vec3(0, 0, -9.81)) {
     lost.push_back(fmt::format("gravity {} m/s² (URDF has none: readers take (0, 0, −9.81))",
                                vector_text(model.gravity())));

@@ -438,6 +438,8 @@ std::vector<std::string> MjcfReader::body_joints(const XMLElement* body, const s
                               owner));
       }
       joint.type = model::JointType::free;
+      if (!free_element) joint.armature = number(e, "armature", 0.0);
+      if (joint.armature < 0.0) fail(xml, fmt::format("the armature of {} is negative", owner));
       const Quat q_WB(X_WB.R);
       joint.q0.resize(7);
       joint.q0 << X_WB.p, q_WB.w(), q_WB.x(), q_WB.y(), q_WB.z();
@@ -480,10 +482,8 @@ std::vector<std::string> MjcfReader::body_joints(const XMLElement* body, const s
           keyword(e, "limited", {"true", "false", "auto"}, "auto") != "false") {
         note(xml, fmt::format("the limits of {} are not enforced", owner));
       }
-      if (number(e, "armature", 0.0) != 0.0) {
-        note(xml, fmt::format("the armature of {} (a rotor's reflected inertia) is not modelled",
-                              owner));
-      }
+      joint.armature = number(e, "armature", 0.0);
+      if (joint.armature < 0.0) fail(xml, fmt::format("the armature of {} is negative", owner));
       if (number(e, "frictionloss", 0.0) != 0.0) {
         note(xml, fmt::format("the dry friction of {} is not modelled", owner));
       }

@@ -24,9 +24,9 @@ using model::JointType;
 // builder's 1e-9 check sees a unit vector.
 constexpr double kUnitTolerance = 1e-6;
 
-constexpr std::array<std::string_view, 15> kJointKeys = {
-    "name", "type",   "parent", "child",  "in_parent", "in_child", "axis",      "axis2",
-    "q0",   "q0_deg", "v0",     "v0_deg", "v0_rpm",    "damping",  "prescribed"};
+constexpr std::array<std::string_view, 16> kJointKeys = {
+    "name",   "type",   "parent", "child",   "in_parent",  "in_child", "axis",    "axis2",
+    "q0",     "q0_deg", "v0",     "v0_deg",  "v0_rpm",     "damping",  "armature", "prescribed"};
 
 bool has_axis(JointType t) { return model::joint_traits(t).axes >= 1; }
 
@@ -191,7 +191,7 @@ model::Joint read_joint(const YamlNode& e, Context& ctx) {
   }
   if (j.nv() == 0) {
     for (const std::string_view key :
-         {"q0", "q0_deg", "v0", "v0_deg", "v0_rpm", "damping", "prescribed"}) {
+         {"q0", "q0_deg", "v0", "v0_deg", "v0_rpm", "damping", "armature", "prescribed"}) {
       refuse(key, "it has no degrees of freedom");
     }
   }
@@ -212,6 +212,7 @@ model::Joint read_joint(const YamlNode& e, Context& ctx) {
   if (const auto axis2 = e.find("axis2")) j.axis2 = read_axis(*axis2);
   read_initial_state(e, j, ctx);
   j.damping = e.find_number("damping", Bound::kNonNegative).value_or(0.0);
+  j.armature = e.find_number("armature", Bound::kNonNegative).value_or(0.0);
   if (e.has("prescribed")) read_prescribed(e, j, ctx);
   return j;
 }

@@ -53,16 +53,19 @@ Transform random_transform(Rng& rng, double reach) {
   return {random_quaternion(rng).toRotationMatrix(), Vec3(u(rng), u(rng), u(rng))};
 }
 
+/// Every joint type, in random_tree's default order.
+inline std::vector<JointType> all_joint_types() {
+  return {JointType::revolute,    JointType::free,      JointType::prismatic, JointType::spherical,
+          JointType::cylindrical, JointType::universal, JointType::fixed,     JointType::planar};
+}
+
 /// A random tree of n bodies; joint k has type types[k % types.size()] (all eight by default),
 /// a random parent among the bodies before it (the world for the first), random X_PJ and X_CJ,
-/// random unit axes. Fixed seed → the same tree every run.
-inline Model random_tree(int n, unsigned seed,
-                         std::vector<JointType> types = {JointType::revolute, JointType::free,
-                                                         JointType::prismatic, JointType::spherical,
-                                                         JointType::cylindrical,
-                                                         JointType::universal, JointType::fixed,
-                                                         JointType::planar},
-                         const Vec3& gravity = Vec3(0, 0, -9.81)) {
+/// random unit axes; armature (Joint::armature, kg·m² or kg) `armature` · (1 + k mod 3) on joint
+/// k when given (drawing no random numbers, so the tree is otherwise the same). Fixed seed → the
+/// same tree every run.
+inline Model random_tree(int n, unsigned seed, std::vector<JointType> types = all_joint_types(),
+                         const Vec3& gravity = Vec3(0, 0, -9.81), double armature = 0.0) {
   std::mt19937 rng(seed);
   ModelBuilder builder;
   builder.set_gravity(gravity);
@@ -83,6 +86,7 @@ inline Model random_tree(int n, unsigned seed,
     j.axis = random_unit(rng);
     Vec3 a2 = random_unit(rng);
     j.axis2 = (a2 - a2.dot(j.axis) * j.axis).normalized();  // well away from parallel
+    j.armature = armature * (1 + k % 3);
     builder.add_joint(j);
   }
   return builder.build();

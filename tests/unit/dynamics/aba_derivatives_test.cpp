@@ -22,10 +22,12 @@ namespace {
 
 double scale_of(const MatX& X) { return std::max(1.0, X.cwiseAbs().maxCoeff()); }
 
+// Seeds 4–6 with a rotor's reflected inertia (armature) on every joint: M⁻¹ through the ABA's D.
 TEST(AbaDerivatives, RandomTreesWithEveryJointTypeAndBodyForces) {
   for (unsigned seed = 1; seed <= 6; ++seed) {
     SCOPED_TRACE(fmt::format("seed {}", seed));
-    const Model m = test::random_tree(12, seed);
+    const Model m = test::random_tree(12, seed, test::all_joint_types(), Vec3(0, 0, -9.81),
+                                      seed > 3 ? 0.03 : 0.0);
     std::mt19937 rng(seed + 200);
     const VecX q = test::random_configuration(m, rng);
     const VecX v = test::random_vector(m.nv(), rng, 2.0);
@@ -54,9 +56,9 @@ TEST(AbaDerivatives, RandomTreesWithEveryJointTypeAndBodyForces) {
 }
 
 // M⁻¹ by the articulated-body recursion against the inverse of crba's M, and −M⁻¹ ∂τ by the
-// running sums against a Cholesky solve of rnea_derivatives' ∂τ, on trees whose subtrees'
-// coordinates are not contiguous (the model's breadth-first order; the sums' buffers merged and
-// copied at branches) and on a chain, where the recursion writes every entry without zeroing
+// running sums against a Cholesky solve of rnea_derivatives' ∂τ, on branched trees (each
+// subtree's coordinates one range now that models are ordered depth first; the sums' buffers
+// merged at branches) and on a chain, where the recursion writes every entry without zeroing
 // first: the workspace and the results are filled with NaN before the second call, at a second
 // state, so a stale or unwritten entry shows.
 TEST(AbaDerivatives, InverseMassMatrixOverwritesItsWorkspace) {

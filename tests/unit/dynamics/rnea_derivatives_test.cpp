@@ -63,9 +63,11 @@ TEST(RneaDerivatives, EveryJointTypeAloneAndAfterARevolute) {
   }
 }
 
+// Seeds 4–6 with a rotor's reflected inertia (armature) on every joint: in M and τ.
 TEST(RneaDerivatives, RandomTreesWithEveryJointTypeAndBodyForces) {
   for (unsigned seed = 1; seed <= 6; ++seed) {
-    const Model m = test::random_tree(14, seed);
+    const Model m = test::random_tree(14, seed, test::all_joint_types(), Vec3(0, 0, -9.81),
+                                      seed > 3 ? 0.03 : 0.0);
     std::mt19937 rng(seed + 100);
     const VecX q = test::random_configuration(m, rng);
     const VecX v = test::random_vector(m.nv(), rng, 2.0);

@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <string>
 #include <vector>
@@ -134,8 +135,8 @@ struct Worst {
   double condition = 0;  // the largest κ(M) met
 };
 
-Worst compare(const std::string& name, int samples) {
-  const std::string path = test::source_dir() + "/tests/data/models/mjcf/" + name + ".xml";
+Worst compare_file(const std::string& path, int samples) {
+  const std::string name = std::filesystem::path(path).stem().string();
   const io::ModelFile file = io::read_mjcf_file(path);
   const model::Model& model = file.model;
   MuJoCoModel mj(path);
@@ -214,6 +215,10 @@ Worst compare(const std::string& name, int samples) {
   return worst;
 }
 
+Worst compare(const std::string& name, int samples) {
+  return compare_file(test::source_dir() + "/tests/data/models/mjcf/" + name + ".xml", samples);
+}
+
 // 1e-12: the bound for what both sides compute directly — M, the bias and element forces,
 // and momenta's accelerations put into MuJoCo's equations of motion (the backward error). The
 // accelerations themselves differ by up to κ(M) times that: the humanoid's 35 g thumb and 0.14 kg
@@ -233,6 +238,37 @@ void expect_agreement(const Worst& w, double agreement = kAgreement) {
 TEST(MjcfMuJoCo, SevenAxisArmWithMotorsSpringsAndDampers) { expect_agreement(compare("arm7", 50)); }
 
 TEST(MjcfMuJoCo, HumanoidOnAFloatingBase) { expect_agreement(compare("humanoid", 50)); }
+
+// Armature — a motor's reflected rotor inertia, set on almost every actuated joint of MuJoCo
+// models — on M's diagonal, in the bias (none: it is inertia alone) and in the forward dynamics:
+// the arm with armature on every joint through its default class and one joint's own, and the
+// humanoid with armature on every hinge.
+TEST(MjcfMuJoCo, ArmatureIsMuJoCos) {
+  const std::filesystem::path dir = test::make_scratch_dir("mjcf_mujoco_armature");
+  const auto with_armature = [&](const std::string& name, const std::string& from,
+                                 const std::string& to) {
+    std::ifstream in(test::source_dir() + "/tests/data/models/mjcf/" + name + ".xml");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    for (std::size_t at = text.find(from); at != std::string::npos;
+         at = text.find(from, at + to.size())) {
+      text.replace(at, from.size(), to);
+    }
+    const std::filesystem::path path = dir / (name + "_armature.xml");
+    std::ofstream(path) << text;
+    return path.string();
+  };
+  const std::string arm = with_armature("arm7", "<joint ", "<joint armature=\"0.07\" ");
+  const io::ModelFile read = io::read_mjcf_file(arm);
+  for (const model::Joint& joint : read.model.joints()) {
+    if (joint.nv() > 0) {
+      EXPECT_EQ(joint.armature, 0.07) << joint.name;
+    }
+  }
+  expect_agreement(compare_file(arm, 50));
+  const std::string humanoid =
+      with_armature("humanoid", "<joint name=", "<joint armature=\"0.02\" name=");
+  expect_agreement(compare_file(humanoid, 50));
+}
 
 // Mesh geoms (binary STL): a hexagonal prism turned by its geom, a cube scaled per axis, a wedge
 // its file draws away from the origin, by density and by mass (exactmeshinertia="true": MuJoCo's
