@@ -170,7 +170,8 @@ void Derivation::add_body_rows(const BodyBalance& b, bool planar) {
                            b.M[k], b.H_dot[k]);
     }
   }
-  // Along the free motions: the reaction's generalized force is the elements'.
+  // Along the free motions: the reaction's generalized force is the elements', less what
+  // accelerates the joint's rotor (armature · v̇), which the bodies do not feel.
   if (j.is_prescribed()) return;
   const V3 n_o = b.N + cross(p_CJ_[i], b.R);
   for (int k = 0; k < j.nv(); ++k) {
@@ -180,7 +181,9 @@ void Derivation::add_body_rows(const BodyBalance& b, bool planar) {
         fmt::format("along {}", impl_.v_names[static_cast<std::size_t>(j.v_index + k)]),
         dot(Sk.w, n_o) + dot(Sk.v, b.R),
         joint_space_[static_cast<std::size_t>(j.v_index + k)] +
-            constraint_joint_forces_[static_cast<std::size_t>(j.v_index + k)]);
+            constraint_joint_forces_[static_cast<std::size_t>(j.v_index + k)] -
+            armature_[static_cast<std::size_t>(j.v_index + k)] *
+                impl_.vdot[static_cast<std::size_t>(j.v_index + k)]);
   }
 }
 

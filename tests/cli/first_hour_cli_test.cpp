@@ -462,6 +462,16 @@ joints:
   r = momenta("equations " + at("p.yaml") + " --symbols Ia_pivot,m_bob,g");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(has(r.out, "pivot_ddot*(Ia_pivot + m_bob) + g*m_bob*sin(pivot) = 0")) << r.out;
+  // Newton–Euler: the bob feels the joint's moment less what turns the rotor.
+  r = momenta("equations " + at("p.yaml") + " --form newton-euler --symbols Ia_pivot");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(has(r.out, "along pivot_dot:  N_pivot_y = -Ia_pivot*pivot_ddot")) << r.out;
+  // Written to MJCF as MuJoCo's joint armature, and read back.
+  r = momenta("export " + at("p.yaml") + " --mjcf " + at("p.xml"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  r = momenta("info " + at("p.xml") + " --json");
+  EXPECT_EQ(nlohmann::json::parse(r.out).at("joints").at(0).at("armature").get<double>(), 0.25)
+      << r.out;
   r = momenta("simulate " + at("p.yaml") + " --duration 5 -o " + at("p.csv"));
   ASSERT_EQ(r.code, 0) << r.err;
   // RK4 at h = 1e-3 on ω ≈ 2.8 s⁻¹: (ω h)⁴ ≈ 6e-11 per unit time at most; measured 3e-16.
