@@ -40,30 +40,25 @@ void MjcfReader::read_keyframes(const XMLElement* section, const model::Model& m
     key.line = xml->GetLineNum();
     key.time = number(e, "time", 0.0);
 
-    // MuJoCo's qpos0 is the configuration the file draws: momenta's initial q (each hinge's and
-    // slide's 0 is its `ref`; a free joint starts where its body is drawn). No qvel: at rest.
+    // MuJoCo's qpos0 is the configuration the file draws: momenta's initial q, each hinge's and
+    // slide's shifted by its `ref` (a free joint starts where its body is drawn, a ball at the
+    // identity). No qvel: at rest.
+    const auto ref_of = [&](const model::Joint& joint) {
+      const auto found = joints.find(joint.name);
+      return found != joints.end() ? found->second.ref : 0.0;  // 0 but on hinges and slides
+    };
     const std::size_t nq = static_cast<std::size_t>(model.nq());
     const std::size_t nv = static_cast<std::size_t>(model.nv());
-    std::vector<double> qpos0(nq), zero(nv, 0.0);
+    std::vector<double> qpos0(model.initial_q().begin(), model.initial_q().end()), zero(nv, 0.0);
     for (const model::Joint& joint : model.joints()) {
-      const auto found = joints.find(joint.name);
-      const double ref = found != joints.end() ? found->second.ref : 0.0;
-      for (int k = 0; k < joint.nq(); ++k) {
-        const double q0 = model.initial_q()[joint.q_index + k];
-        qpos0[static_cast<std::size_t>(joint.q_index + k)] = q0 + (joint.nq() == 1 ? ref : 0.0);
-      }
+      if (joint.nq() == 1) qpos0[static_cast<std::size_t>(joint.q_index)] += ref_of(joint);
     }
     const std::vector<double> qpos = numbers(e, "qpos", nq, nq, qpos0);
     const std::vector<double> qvel = numbers(e, "qvel", nv, nv, zero);
-    key.q.resize(model.nq());
+    key.q = Eigen::Map<const VecX>(qpos.data(), model.nq());
     key.v.resize(model.nv());
     for (const model::Joint& joint : model.joints()) {
-      const auto found = joints.find(joint.name);
-      const double ref = found != joints.end() ? found->second.ref : 0.0;
-      for (int k = 0; k < joint.nq(); ++k) {
-        const double value = qpos[static_cast<std::size_t>(joint.q_index + k)];
-        key.q[joint.q_index + k] = joint.nq() == 1 ? value - ref : value;
-      }
+      if (joint.nq() == 1) key.q[joint.q_index] -= ref_of(joint);
       for (int k = 0; k < joint.nv(); ++k) {
         // A free joint's six speeds: MuJoCo's [v; ω], momenta's [ω; v] (rotation first).
         const int from = joint.type == model::JointType::free ? (k + 3) % 6 : k;
