@@ -346,9 +346,8 @@ void print_text(const json& j, const io::ModelFile& file) {
                joint.child);
     if (joint.damping > 0.0) fmt::print(", damping {:.6g}", joint.damping);
     if (joint.armature > 0.0) {
-      const std::string unit = model::joint_damping_unit(m, joint);
-      fmt::print(", armature {:.6g} {}", joint.armature,
-                 unit == "N·m·s/rad" ? "kg·m²" : (unit == "N·s/m" ? "kg" : "(kg·m² or kg)"));
+      const std::string unit = model::joint_armature_unit(m, joint);
+      fmt::print(", armature {:.6g} {}", joint.armature, unit.empty() ? "(kg·m² or kg)" : unit);
     }
     fmt::print("\n");
     for (int i = 0; i < joint.nq(); ++i) {

@@ -16,7 +16,7 @@ namespace momenta::cli {
 struct ModelArgument {
   std::string file;
   std::vector<std::string> package_path;
-  std::optional<double> link_density;  // kg/m³
+  std::optional<double> link_density;   // kg/m³
   std::optional<std::string> keyframe;  // an MJCF key's state as the initial state
 };
 

@@ -122,6 +122,7 @@ const MatX& crba(const Model& model, Data& data, VecRef q) {
         const int rows = std::min(size, col + 1 - start);
         if (rows > 0) column_entries(data.S_W, start, rows, F, &data.M(start, col));
       }
+      data.M(col, col) += c.armature;  // the rotor's reflected inertia (Joint::armature)
     }
     if (c.parent == 0) continue;
     const Transform& X = data.X_PB[i];
@@ -135,10 +136,6 @@ const MatX& crba(const Model& model, Data& data, VecRef q) {
     }
   }
   mirror_upper(data.M);
-  for (const auto& c : joints) {  // the rotors' reflected inertia (armature) on the diagonal
-    for (int k = 0; k < c.nv && c.armature != 0.0; ++k)
-      data.M(c.v_index + k, c.v_index + k) += c.armature;
-  }
   return data.M;
 }
 

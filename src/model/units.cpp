@@ -36,13 +36,28 @@ std::string effort_unit(const Model& model, int i) {
   return is_rotation_rate(j->type, i - j->v_index) ? "N·m" : "N";
 }
 
-std::string joint_damping_unit(const Model& model, const Joint& joint) {
+namespace {
+// The unit every speed of the joint has, or "" where they differ or there are none.
+std::string common_speed_unit(const Model& model, const Joint& joint) {
   if (joint.nv() == 0) return "";
   const std::string speed = v_unit(model, joint.v_index);
   for (int k = 1; k < joint.nv(); ++k) {
     if (v_unit(model, joint.v_index + k) != speed) return "";
   }
+  return speed;
+}
+}  // namespace
+
+std::string joint_damping_unit(const Model& model, const Joint& joint) {
+  const std::string speed = common_speed_unit(model, joint);
+  if (speed.empty()) return "";
   return speed == "rad/s" ? "N·m·s/rad" : "N·s/m";
+}
+
+std::string joint_armature_unit(const Model& model, const Joint& joint) {
+  const std::string speed = common_speed_unit(model, joint);
+  if (speed.empty()) return "";
+  return speed == "rad/s" ? "kg·m²" : "kg";
 }
 
 std::string signal_unit(const Model& model, int signal_index) {

@@ -499,10 +499,8 @@ void Derivation::element_forces() {
     const ex c = params_("c_" + j.name, j.damping, model::joint_damping_unit(model_, j));
     for (int k = 0; k < j.nv(); ++k) Q_[j.v_index + k] -= c * impl_.v[j.v_index + k];
     if (j.armature == 0.0) continue;
-    // A rotor's reflected inertia: kg·m² on an angle, kg on a length (as the damping's unit).
-    const std::string unit = model::joint_damping_unit(model_, j);
-    const ex armature = params_("Ia_" + j.name, j.armature,
-                                unit == "N·m·s/rad" ? "kg·m²" : (unit == "N·s/m" ? "kg" : ""));
+    // A rotor's reflected inertia.
+    const ex armature = params_("Ia_" + j.name, j.armature, model::joint_armature_unit(model_, j));
     for (int k = 0; k < j.nv(); ++k) armature_[j.v_index + k] = armature;
   }
   for (const model::ForceElement& element : model_.force_elements()) {

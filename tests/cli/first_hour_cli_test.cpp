@@ -409,22 +409,14 @@ TEST_F(FirstHourCli, AUrdfWithoutItsMeshPackagesLoadsWhereNothingNeedsTheMeshes)
 // MuJoCo users keep the states they work from as keyframes: `info` lists them, `--keyframe NAME`
 // starts any command from one (here the run's first row is the key's state in momenta's layout).
 TEST_F(FirstHourCli, AnMjcfKeyframeIsTheStateAskedFor) {
-  std::ofstream(dir_ / "keyed.xml") << R"(<mujoco>
-<worldbody>
-<body name="box" pos="0 0 1"><freejoint name="root"/><geom type="box" size="1 1 1"/>
-<body name="arm"><joint name="hinge" axis="0 1 0" ref="90"/><geom size="0.1" pos="0 0 -1"/></body>
-</body>
-</worldbody>
-<keyframe><key name="tilted" qpos="1 2 3 1 0 0 0 2" qvel="1 2 3 4 5 6 7"/></keyframe>
-</mujoco>)";
-  CliRun r = momenta("info " + at("keyed.xml"));
+  const std::string keyed = quoted(source_dir() + "/tests/data/models/mjcf/keyed_box.xml");
+  CliRun r = momenta("info " + keyed);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(has(r.out,
                   "keyframes (1): the state of one is the initial state with --keyframe "
                   "NAME\n  tilted  (line 7), moving"))
       << r.out;
-  r = momenta("simulate " + at("keyed.xml") + " --keyframe tilted --duration 0.001 -o " +
-              at("keyed.csv"));
+  r = momenta("simulate " + keyed + " --keyframe tilted --duration 0.001 -o " + at("keyed.csv"));
   ASSERT_EQ(r.code, 0) << r.err;
   std::ifstream csv(dir_ / "keyed.csv");
   std::string header, first;
@@ -436,7 +428,7 @@ TEST_F(FirstHourCli, AnMjcfKeyframeIsTheStateAskedFor) {
       << header;
   EXPECT_TRUE(has(first, "0,1,2,3,1,0,0,0,0.429203673205103")) << first;  // 2 − π/2
   EXPECT_TRUE(has(first, ",4,5,6,1,2,3,7,")) << first;
-  r = momenta("info " + at("keyed.xml") + " --keyframe tiltd");
+  r = momenta("info " + keyed + " --keyframe tiltd");
   EXPECT_EQ(r.code, 1);
   EXPECT_TRUE(has(r.err, "keyframe 'tiltd':")) << r.err;
   EXPECT_TRUE(has(r.err, "(did you mean 'tilted'?); its keys: tilted")) << r.err;

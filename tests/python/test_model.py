@@ -7,7 +7,7 @@ import pytest
 import momenta
 from momenta import inertia
 
-from conftest import EXAMPLES, cli_json
+from conftest import EXAMPLES, SOURCE_DIR, cli_json
 
 
 @pytest.mark.parametrize("name", ["double_pendulum", "heavy_top", "quarter_car", "gyroscope"])
@@ -144,21 +144,13 @@ def test_an_mjcf_file_loads_as_a_model(tmp_path):
         momenta.load_model(bad)
 
 
-KEYED_MJCF = """<mujoco>
-<worldbody>
-<body name="box" pos="0 0 1"><freejoint name="root"/><geom type="box" size="1 1 1"/>
-<body name="arm"><joint name="hinge" axis="0 1 0" ref="90"/><geom size="0.1" pos="0 0 -1"/></body>
-</body>
-</worldbody>
-<keyframe><key name="tilted" qpos="1 2 3 1 0 0 0 2" qvel="1 2 3 4 5 6 7"/></keyframe>
-</mujoco>"""
+KEYED_MJCF = SOURCE_DIR / "tests" / "data" / "models" / "mjcf" / "keyed_box.xml"
 
 
-def test_an_mjcf_keyframe_is_the_initial_state_asked_for(tmp_path):
+def test_an_mjcf_keyframe_is_the_initial_state_asked_for():
     """keyframe= starts the model from a key's state, in momenta's layout (the hinge's q is qpos −
     ref, the free joint's speeds [ω; v]), as `momenta --keyframe` does; info lists the keys."""
-    path = tmp_path / "keyed.xml"
-    path.write_text(KEYED_MJCF)
+    path = KEYED_MJCF
     drawn = momenta.load_model(path)
     assert np.array_equal(drawn.initial_v, np.zeros(7))
     (key,) = drawn.info()["keyframes"]

@@ -21,6 +21,9 @@ std::string effort_unit(const Model& model, int i);
 /// are all angular, "N·s/m" on one whose speeds are all lengths; "" where they are mixed (a
 /// planar joint) or there are none.
 std::string joint_damping_unit(const Model& model, const Joint& joint);
+/// A joint's armature (its effort per its acceleration): "kg·m²" on a joint whose speeds are all
+/// angular, "kg" on one whose speeds are all lengths; "" where they are mixed or there are none.
+std::string joint_armature_unit(const Model& model, const Joint& joint);
 /// A signal's value: the unit of the coordinate it prescribes, "N" or "N·m" when it scales an
 /// applied force or moment of unit direction; "" when its use does not fix one.
 std::string signal_unit(const Model& model, int signal_index);

@@ -428,6 +428,9 @@ std::vector<std::string> MjcfReader::body_joints(const XMLElement* body, const s
     double qpos_at_zero = 0.0;  // MuJoCo's qpos where momenta's q is 0: `ref`
     joint.parent = previous;
     joint.child = k + 1 == elements.size() ? name : fmt::format("{}_{}", name, joint.name);
+    // A rotor's reflected inertia, on any <joint> (a <freejoint> has none).
+    joint.armature = free_element ? 0.0 : number(e, "armature", 0.0);
+    if (joint.armature < 0.0) fail(xml, fmt::format("the armature of {} is negative", owner));
     if (type == "free") {
       // Free: MuJoCo's qpos is the body's position and orientation in the world, its qvel the
       // world velocity and the body's angular velocity — momenta's free joint from the world,
@@ -438,8 +441,6 @@ std::vector<std::string> MjcfReader::body_joints(const XMLElement* body, const s
                               owner));
       }
       joint.type = model::JointType::free;
-      if (!free_element) joint.armature = number(e, "armature", 0.0);
-      if (joint.armature < 0.0) fail(xml, fmt::format("the armature of {} is negative", owner));
       const Quat q_WB(X_WB.R);
       joint.q0.resize(7);
       joint.q0 << X_WB.p, q_WB.w(), q_WB.x(), q_WB.y(), q_WB.z();
@@ -482,8 +483,6 @@ std::vector<std::string> MjcfReader::body_joints(const XMLElement* body, const s
           keyword(e, "limited", {"true", "false", "auto"}, "auto") != "false") {
         note(xml, fmt::format("the limits of {} are not enforced", owner));
       }
-      joint.armature = number(e, "armature", 0.0);
-      if (joint.armature < 0.0) fail(xml, fmt::format("the armature of {} is negative", owner));
       if (number(e, "frictionloss", 0.0) != 0.0) {
         note(xml, fmt::format("the dry friction of {} is not modelled", owner));
       }
