@@ -80,6 +80,16 @@ json element_json(const model::ForceElement& element) {
           j["kind"] = "joint_friction";
           j["joint"] = e.joint;
           j["viscous"] = e.viscous;
+        } else if constexpr (std::is_same_v<T, model::FixedTendon>) {
+          j["kind"] = "fixed_tendon";
+          j["joints"] = json::array();
+          for (const model::TendonTerm& term : e.terms) {
+            j["joints"].push_back({{"joint", term.joint}, {"coefficient", term.coefficient}});
+          }
+          j["offset"] = e.offset;
+          j["stiffness"] = e.stiffness;
+          j["damping"] = e.damping;
+          j["rest_length"] = e.rest_length;
         } else if constexpr (std::is_same_v<T, model::AppliedForce>) {
           j["kind"] = "applied_force";
           j["body"] = e.at.body;
@@ -99,9 +109,9 @@ json element_json(const model::ForceElement& element) {
       element);
 }
 
-std::string element_text(const model::ForceElement& element) {
+std::string element_text(const model::Model& model, const model::ForceElement& element) {
   return std::visit(
-      [](const auto& e) -> std::string {
+      [&model](const auto& e) -> std::string {
         using T = std::decay_t<decltype(e)>;
         if constexpr (std::is_same_v<T, model::LinearSpringDamper>) {
           return fmt::format(
@@ -118,6 +128,18 @@ std::string element_text(const model::ForceElement& element) {
               e.body_b, e.stiffness, e.damping);
         } else if constexpr (std::is_same_v<T, model::JointFriction>) {
           return fmt::format("joint friction on {}: viscous {:.6g}", e.joint, e.viscous);
+        } else if constexpr (std::is_same_v<T, model::FixedTendon>) {
+          // "fixed tendon L = 0.5 hip − 0.5 knee (rad): k 3 N·m/rad, c 0 N·m·s/rad, rest 0 rad"
+          const model::TendonUnits units = model::tendon_units(model, e);
+          std::string sum = e.offset != 0.0 ? fmt::format("{:.6g}", e.offset) : "";
+          for (const model::TendonTerm& term : e.terms) {
+            const bool first = sum.empty(), minus = term.coefficient < 0;
+            const char* sign = first ? (minus ? "−" : "") : (minus ? " − " : " + ");
+            sum += fmt::format("{}{:.6g} {}", sign, std::abs(term.coefficient), term.joint);
+          }
+          return fmt::format("fixed tendon L = {} ({}): k {:.6g} {}, c {:.6g} {}, rest {:.6g} {}",
+                             sum, units.length, e.stiffness, units.stiffness, e.damping,
+                             units.damping, e.rest_length, units.length);
         } else if constexpr (std::is_same_v<T, model::AppliedForce>) {
           return fmt::format("applied force at {}: {} N in {}{}", body_point_text(e.at),
                              vec_text(e.vector), frame_name(e.frame),
@@ -367,7 +389,7 @@ void print_text(const json& j, const io::ModelFile& file) {
 
   fmt::print("\nforce elements ({})\n", m.force_elements().size());
   for (const model::ForceElement& e : m.force_elements())
-    fmt::print("  {}  {}\n", model::force_element_name(e), element_text(e));
+    fmt::print("  {}  {}\n", model::force_element_name(e), element_text(m, e));
 
   fmt::print("\nsignals ({})\n", m.signals().size());
   for (const json& s : j["signals"])

@@ -271,6 +271,9 @@ class ModelBuilder:
     def add_spring_damper(self, name: str, *, body_a: str, point_a: object, body_b: str, point_b: object, stiffness: float = 0.0, damping: float = 0.0, free_length: float = 0.0) -> ModelBuilder:
         """A spring (N/m) and damper (N·s/m) between two body points (p_BoP_B, m): tension T = k (ℓ − free_length) + c ℓ̇."""
         ...
+    def add_tendon(self, name: str, *, joints: List[Tuple[str, float]], stiffness: float = 0.0, damping: float = 0.0, rest_length: float = 0.0, offset: float = 0.0) -> ModelBuilder:
+        """A fixed tendon over 1-dof joints, joints = [(joint, coefficient), ...]: its length L = offset + Σ cᵢ qᵢ, its tension T = stiffness (L − rest_length) + damping L̇, and τᵢ = −cᵢ T on each joint (MuJoCo's fixed tendon)."""
+        ...
     def add_torque(self, name: str, *, body: str, vector: object, frame: str = 'world', signal: str = '') -> ModelBuilder:
         """A pure moment (N·m) on a body, constant or u(t) · vector."""
         ...

@@ -257,6 +257,27 @@ free joint: rotation vector, then position; model/prescribed_motion.hpp).)doc")
           "On a 1-dof joint, τ = −k (q − rest_angle) − c q̇; or between body_a and body_b, "
           "relaxed at the initial configuration.")
       .def(
+          "add_tendon",
+          [](Builder& b, std::string name,
+             const std::vector<std::pair<std::string, double>>& joints, double stiffness,
+             double damping, double rest_length, double offset) -> Builder& {
+            FixedTendon t;
+            t.name = std::move(name);
+            for (const auto& [joint, coefficient] : joints)
+              t.terms.push_back({joint, coefficient, -1});
+            t.stiffness = stiffness;
+            t.damping = damping;
+            t.rest_length = rest_length;
+            t.offset = offset;
+            b.builder.add_force_element(std::move(t));
+            return b;
+          },
+          py::arg("name"), py::kw_only(), py::arg("joints"), py::arg("stiffness") = 0.0,
+          py::arg("damping") = 0.0, py::arg("rest_length") = 0.0, py::arg("offset") = 0.0,
+          "A fixed tendon over 1-dof joints, joints = [(joint, coefficient), ...]: its length "
+          "L = offset + Σ cᵢ qᵢ, its tension T = stiffness (L − rest_length) + damping L̇, and "
+          "τᵢ = −cᵢ T on each joint (MuJoCo's fixed tendon).")
+      .def(
           "add_joint_friction",
           [](Builder& b, std::string name, std::string joint, double viscous) -> Builder& {
             b.builder.add_force_element(JointFriction{std::move(name), std::move(joint), viscous});

@@ -40,6 +40,15 @@ double model_force_scale(const model::Model& model, double t) {
       forces += s->stiffness * L;
     } else if (const auto* k = std::get_if<model::TorsionalSpringDamper>(&element)) {
       moments += k->stiffness;
+    } else if (const auto* tendon = std::get_if<model::FixedTendon>(&element)) {
+      // Its stiffness on its joints, k cᵢ², in the unit of its first joint's coordinate.
+      double stiffness = 0.0;
+      for (const model::TendonTerm& term : tendon->terms) {
+        stiffness += tendon->stiffness * term.coefficient * term.coefficient;
+      }
+      const bool sliding =
+          model.joint(tendon->terms.front().joint_index).type == model::JointType::prismatic;
+      (sliding ? forces : moments) += sliding ? stiffness * L : stiffness;
     } else if (const auto* f = std::get_if<model::AppliedForce>(&element)) {
       const double u = f->signal_index < 0
                            ? 1.0

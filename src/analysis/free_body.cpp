@@ -152,7 +152,7 @@ class DiagramBuilder {
           } else if constexpr (std::is_same_v<T, model::AppliedTorque>) {
             return e.body_index == b_;
           } else {
-            return false;  // joint friction acts through its joint
+            return false;  // joint friction and tendons act through their joints
           }
         },
         element);
@@ -188,6 +188,9 @@ class DiagramBuilder {
             return fmt::format("torsional spring {} (to {})", e.name, other);
           } else if constexpr (std::is_same_v<T, model::JointFriction>) {
             return fmt::format("friction {} on joint {}", e.name, e.joint);
+          } else if constexpr (std::is_same_v<T, model::FixedTendon>) {
+            return fmt::format("tendon {} through joint {}", e.name,
+                               model_.joint(joint_index_).name);
           } else if constexpr (std::is_same_v<T, model::AppliedForce>) {
             return fmt::format("applied force {}", e.name);
           } else {

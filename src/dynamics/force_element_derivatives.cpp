@@ -115,13 +115,14 @@ int element_loads(const Data& data, const model::ForceElement& element,
                     e.frame == LoadFrame::body ? Vec3(m.dX.head<3>().cross(n)) : Vec3::Zero()};
           return 1;
         } else {
-          return 0;  // joint friction: on its joint's coordinates
+          return 0;  // joint friction, joint springs, tendons: on their joints' coordinates
         }
       },
       element);
 }
 
-// The joint-level elements: joint damping and friction −c v, joint springs −k (q − rest) − c v.
+// The joint-level elements: joint damping and friction −c v, joint springs −k (q − rest) − c v,
+// fixed tendons −cᵢ (k (L − L_rest) + d L̇).
 void add_joint_elements(const Model& model, Data& data) {
   for (const model::Joint& j : model.joints()) {
     for (int k = 0; k < j.nv(); ++k) data.dQ_dv(j.v_index + k, j.v_index + k) -= j.damping;
@@ -135,6 +136,17 @@ void add_joint_elements(const Model& model, Data& data) {
       const int i = model.joint(s->joint_index).v_index;
       data.dQ_dq(i, i) -= s->stiffness;
       data.dQ_dv(i, i) -= s->damping;
+    } else if (const auto* t = std::get_if<model::FixedTendon>(&element)) {
+      // τᵢ = −cᵢ (k (L − L_rest) + d L̇): ∂τᵢ/∂qⱼ = −k cᵢ cⱼ, ∂τᵢ/∂vⱼ = −d cᵢ cⱼ (1-dof joints:
+      // each coordinate's q and v share its index).
+      for (const model::TendonTerm& a : t->terms) {
+        const int i = model.joint(a.joint_index).v_index;
+        for (const model::TendonTerm& b : t->terms) {
+          const int j = model.joint(b.joint_index).v_index;
+          data.dQ_dq(i, j) -= t->stiffness * a.coefficient * b.coefficient;
+          data.dQ_dv(i, j) -= t->damping * a.coefficient * b.coefficient;
+        }
+      }
     }
   }
 }

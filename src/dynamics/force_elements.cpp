@@ -20,6 +20,7 @@ using detail::relative_rotation_vector;
 using model::AppliedForce;
 using model::AppliedTorque;
 using model::BodyPoint;
+using model::FixedTendon;
 using model::JointFriction;
 using model::LinearSpringDamper;
 using model::LoadFrame;
@@ -83,6 +84,13 @@ void add_element(const Model& model, const Data& data, const model::ForceElement
         if constexpr (std::is_same_v<T, JointFriction>) {
           const model::Joint& j = model.joint(e.joint_index);
           tau.segment(j.v_index, j.nv()) -= e.viscous * v.segment(j.v_index, j.nv());
+        } else if constexpr (std::is_same_v<T, FixedTendon>) {
+          // τᵢ = −cᵢ T, T = k (L − L_rest) + c L̇.
+          const double tension = e.stiffness * (tendon_length(model, e, q) - e.rest_length) +
+                                 e.damping * tendon_rate(model, e, v);
+          for (const model::TendonTerm& term : e.terms) {
+            tau[model.joint(term.joint_index).v_index] -= term.coefficient * tension;
+          }
         } else if constexpr (std::is_same_v<T, TorsionalSpringDamper>) {
           if (e.joint_index >= 0) {
             // On a 1-dof joint: τ = −k (q − rest) − c q̇.
@@ -151,6 +159,22 @@ void force_element_forces_of(const Model& model, const Data& data, int element,
   add_element(model, data, model.force_elements()[element], signal_values, q, v, tau, f_ext);
 }
 
+double tendon_length(const Model& model, const FixedTendon& tendon, VecRef q) {
+  double length = tendon.offset;
+  for (const model::TendonTerm& term : tendon.terms) {
+    length += term.coefficient * q[model.joint(term.joint_index).q_index];
+  }
+  return length;
+}
+
+double tendon_rate(const Model& model, const FixedTendon& tendon, VecRef v) {
+  double rate = 0.0;
+  for (const model::TendonTerm& term : tendon.terms) {
+    rate += term.coefficient * v[model.joint(term.joint_index).v_index];
+  }
+  return rate;
+}
+
 double spring_potential_energy(const Model& model, const Data& data, VecRef q) {
   double V = 0.0;
   for (const model::ForceElement& element : model.force_elements()) {
@@ -158,6 +182,9 @@ double spring_potential_energy(const Model& model, const Data& data, VecRef q) {
       const double stretch =
           (point_position_W(data, s->b) - point_position_W(data, s->a)).norm() - s->free_length;
       V += 0.5 * s->stiffness * stretch * stretch;
+    } else if (const auto* tendon = std::get_if<FixedTendon>(&element)) {
+      const double stretch = tendon_length(model, *tendon, q) - tendon->rest_length;
+      V += 0.5 * tendon->stiffness * stretch * stretch;
     } else if (const auto* t = std::get_if<TorsionalSpringDamper>(&element)) {
       if (t->joint_index >= 0) {
         const double angle = q[model.joint(t->joint_index).q_index] - t->rest_angle;
@@ -187,7 +214,8 @@ bool force_elements_conservative(const Model& model) {
         [](const auto& e) {
           using T = std::decay_t<decltype(e)>;
           if constexpr (std::is_same_v<T, LinearSpringDamper> ||
-                        std::is_same_v<T, TorsionalSpringDamper>) {
+                        std::is_same_v<T, TorsionalSpringDamper> ||
+                        std::is_same_v<T, FixedTendon>) {
             return e.damping == 0.0;
           } else if constexpr (std::is_same_v<T, JointFriction>) {
             return e.viscous == 0.0;

@@ -534,6 +534,28 @@ class ModelAssembler {
     nonnegative(e.viscous, who, "viscous");
   }
 
+  void resolve(FixedTendon& e, const std::string& who) const {
+    require(!e.terms.empty(), who + ": a tendon needs at least one joint");
+    std::set<int> seen;
+    for (TendonTerm& term : e.terms) {
+      term.joint_index = joint_at(term.joint, who);
+      const Joint& j = model_.joints_[term.joint_index];
+      MOMENTA_REQUIRE(j.nv() == 1,
+                      "{}: joint '{}' is {} with {} degrees of freedom; a tendon's joints are "
+                      "1-dof",
+                      who, j.name, joint_type_name(j.type), j.nv());
+      MOMENTA_REQUIRE(seen.insert(term.joint_index).second, "{}: joint '{}' is listed twice", who,
+                      j.name);
+      MOMENTA_REQUIRE(std::isfinite(term.coefficient) && term.coefficient != 0.0,
+                      "{}: joint '{}''s coefficient {} must be finite and not zero", who, j.name,
+                      term.coefficient);
+    }
+    nonnegative(e.stiffness, who, "stiffness");
+    nonnegative(e.damping, who, "damping");
+    require(std::isfinite(e.offset), who + ": offset is not finite");
+    require(std::isfinite(e.rest_length), who + ": rest_length is not finite");
+  }
+
   void resolve(AppliedForce& e, const std::string& who) const {
     e.at.body_index = body_at(e.at.body, who);
     require(e.at.body_index != 0, who + ": a load on the world does nothing");

@@ -84,6 +84,26 @@ std::string signal_unit(const Model& model, int signal_index) {
   return "";
 }
 
+TendonUnits tendon_units(const Model& model, const FixedTendon& tendon) {
+  const Joint& first = model.joint(tendon.terms.front().joint_index);
+  if (v_unit(model, first.v_index) == "rad/s") {
+    return {"rad", "rad/s", "N·m", "N·m/rad", "N·m·s/rad"};
+  }
+  return {"m", "m/s", "N", "N/m", "N·s/m"};
+}
+
+namespace {
+// A spring-damper's or a tendon's length or tension.
+std::string spring_unit(const Model& model, OutputQuantity quantity, int element) {
+  const auto* tendon =
+      std::get_if<FixedTendon>(&model.force_elements()[static_cast<std::size_t>(element)]);
+  const bool length = quantity == OutputQuantity::spring_length;
+  if (tendon == nullptr) return length ? "m" : "N";
+  const TendonUnits units = tendon_units(model, *tendon);
+  return length ? units.length : units.tension;
+}
+}  // namespace
+
 std::string output_unit(const Model& model, OutputQuantity quantity, int target, int component) {
   using Q = OutputQuantity;
   switch (quantity) {
@@ -93,8 +113,10 @@ std::string output_unit(const Model& model, OutputQuantity quantity, int target,
       return v_unit(model, model.joint(target).v_index + component);
     case Q::joint_effort:
       return effort_unit(model, model.joint(target).v_index + component);
-    case Q::body_position:
     case Q::spring_length:
+    case Q::spring_tension:
+      return spring_unit(model, quantity, target);
+    case Q::body_position:
       return "m";
     case Q::body_velocity:
     case Q::transport_velocity:
@@ -113,7 +135,6 @@ std::string output_unit(const Model& model, OutputQuantity quantity, int target,
     case Q::body_angular_acceleration:
       return "rad/s²";
     case Q::reaction_force:
-    case Q::spring_tension:
       return "N";
     case Q::reaction_moment:
       return "N·m";

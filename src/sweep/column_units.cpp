@@ -56,6 +56,13 @@ std::string model_item_unit(const model::Model& model, const std::vector<std::st
   if (keys[0] == "forces") {
     for (const model::ForceElement& e : model.force_elements()) {
       if (model::force_element_name(e) != keys[1]) continue;
+      if (const auto* tendon = std::get_if<model::FixedTendon>(&e)) {
+        const model::TendonUnits units = model::tendon_units(model, *tendon);
+        if (leaf == "stiffness") return units.stiffness;
+        if (leaf == "damping") return units.damping;
+        if (leaf == "rest_length" || leaf == "offset") return units.length;
+        return "";
+      }
       const bool torsional = std::holds_alternative<model::TorsionalSpringDamper>(e);
       if (leaf == "stiffness") return torsional ? "N·m/rad" : "N/m";
       if (leaf == "damping") return torsional ? "N·m·s/rad" : "N·s/m";

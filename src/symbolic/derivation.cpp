@@ -526,6 +526,8 @@ void Derivation::element_forces() {
                c = params_("c_" + name, t->damping, "N·m·s/rad"),
                rest = params_("rest_" + name, t->rest_angle, "rad");
       Q_[j.v_index] -= k * (impl_.q[j.q_index] - rest) + c * impl_.v[j.v_index];
+    } else if (const auto* tendon = std::get_if<model::FixedTendon>(&element)) {
+      add_tendon(*tendon);
     } else if (const auto* fr = std::get_if<model::JointFriction>(&element)) {
       const model::Joint& j = model_.joint(fr->joint_index);
       const ex c = params_("c_" + name, fr->viscous, model::joint_damping_unit(model_, j));
@@ -543,6 +545,28 @@ void Derivation::element_forces() {
   body_loads_ = f;
   joint_space_ = Q_;
   project_down(f, Q_);
+}
+
+// A fixed tendon: L = offset + Σ nᵢ qᵢ, T = k (L − rest) + c L̇, τᵢ = −nᵢ T on its joints.
+void Derivation::add_tendon(const model::FixedTendon& tendon) {
+  const std::string& name = tendon.name;
+  const model::TendonUnits units = model::tendon_units(model_, tendon);
+  const ex k = params_("k_" + name, tendon.stiffness, units.stiffness),
+           c = params_("c_" + name, tendon.damping, units.damping),
+           rest = params_("rest_" + name, tendon.rest_length, units.length),
+           offset = params_("offset_" + name, tendon.offset, units.length);
+  std::vector<ex> n;
+  ex length = offset, rate = 0;
+  for (const model::TendonTerm& term : tendon.terms) {
+    const model::Joint& j = model_.joint(term.joint_index);
+    n.push_back(params_("n_" + name + "_" + j.name, term.coefficient));
+    length += n.back() * impl_.q[j.q_index];
+    rate += n.back() * impl_.v[j.v_index];
+  }
+  const ex tension = k * (length - rest) + c * rate;
+  for (std::size_t i = 0; i < tendon.terms.size(); ++i) {
+    Q_[model_.joint(tendon.terms[i].joint_index).v_index] -= n[i] * tension;
+  }
 }
 
 // A torsional spring between two bodies whose relative rotation turns about one axis n: every

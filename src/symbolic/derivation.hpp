@@ -230,6 +230,8 @@ class Derivation {
   // way down to b, − down to a) and it puts the moment −(k φ + c φ̇) n on b and the opposite on
   // a, n being fixed in both. Other paths (a ball joint between them, two axes) are refused.
   void add_two_body_torsion(const model::TorsionalSpringDamper& t, std::vector<Force>& f);
+  // A fixed tendon's generalized forces −nᵢ (k (L − rest) + c L̇) on its joints, into Q_.
+  void add_tendon(const model::FixedTendon& tendon);
 
   // A spring's stretch, length − l0. Along a line (line_length) the length is the joints'
   // offsets plus the coordinates; its value at q = 0 (inputs at 0 too) is the offsets' part. A

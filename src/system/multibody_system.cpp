@@ -105,6 +105,7 @@ MultibodySystem::MultibodySystem(const model::Model& model)
   for (const model::ForceElement& element : model.force_elements()) {
     const auto* t = std::get_if<model::TorsionalSpringDamper>(&element);
     const bool on_joint = std::holds_alternative<model::JointFriction>(element) ||
+                          std::holds_alternative<model::FixedTendon>(element) ||
                           (t != nullptr && t->joint_index >= 0);
     if (!on_joint) body_loads_ = true;
   }

@@ -11,6 +11,7 @@
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
 #include "momenta/dynamics/constraints.hpp"
+#include "momenta/dynamics/force_elements.hpp"
 #include "momenta/dynamics/point_kinematics.hpp"
 #include "momenta/dynamics/reactions.hpp"
 #include "momenta/dynamics/relative_kinematics.hpp"
@@ -191,9 +192,11 @@ OutputSet::OutputSet(const model::Model& model, std::vector<OutputSpec> specs)
       }
     } else if (kind == model::OutputTargetKind::force_element) {
       const model::ForceElement& element = model.force_elements()[index];
-      if (!std::holds_alternative<model::LinearSpringDamper>(element)) {
+      if (!std::holds_alternative<model::LinearSpringDamper>(element) &&
+          !std::holds_alternative<model::FixedTendon>(element)) {
         throw InvalidArgument(
-            fmt::format("output '{}': {} applies to a linear spring-damper, and '{}' is not one",
+            fmt::format("output '{}': {} applies to a linear spring-damper or a tendon, and '{}' "
+                        "is neither",
                         spec.name, quantity, spec.target));
       }
     }
@@ -294,8 +297,18 @@ void OutputSet::evaluate(MultibodySystem& system, double t, const VecX& q, const
         break;
       case OutputQuantity::spring_length:
       case OutputQuantity::spring_tension: {
-        const auto& spring =
-            std::get<model::LinearSpringDamper>(model.force_elements()[column.index]);
+        const model::ForceElement& element = model.force_elements()[column.index];
+        if (const auto* tendon = std::get_if<model::FixedTendon>(&element)) {
+          const VecX& q_now = system.evaluated_q();
+          const double length = dynamics::tendon_length(model, *tendon, q_now);
+          out = spec.quantity == OutputQuantity::spring_length
+                    ? length
+                    : tendon->stiffness * (length - tendon->rest_length) +
+                          tendon->damping *
+                              dynamics::tendon_rate(model, *tendon, system.evaluated_v());
+          break;
+        }
+        const auto& spring = std::get<model::LinearSpringDamper>(element);
         Vec3 p_a, v_a, p_b, v_b;
         point_motion(data, spring.a.body_index, spring.a.p_BoP_B, p_a, v_a);
         point_motion(data, spring.b.body_index, spring.b.p_BoP_B, p_b, v_b);

@@ -17,7 +17,7 @@ namespace momenta::dynamics {
 
 /// Writes the generalized forces of every force element at (q, v) with the given signal values:
 ///  - on the joints, into tau (size nv): joint damping −c v, joint friction −c v, torsional
-///    springs on 1-dof joints −k (q − rest) − c q̇;
+///    springs on 1-dof joints −k (q − rest) − c q̇, fixed tendons −cᵢ T on each of their joints;
 ///  - on the bodies, into f_ext (num_bodies() entries): linear spring-dampers between two points,
 ///    two-body torsional springs, applied forces and torques (scaled by their signal's value).
 /// Both outputs are overwritten (zeroed first); tau is resized to nv if it is not (allocating
@@ -41,7 +41,12 @@ void force_element_forces_of(const Model& model, const Data& data, int element,
                              std::span<const double> signal_values, VecRef q, VecRef v, VecX& tau,
                              std::span<Vec6> f_ext);
 
-/// Potential energy stored in the springs (linear and torsional) at configuration q (J).
+/// A fixed tendon's length L = offset + Σ cᵢ qᵢ and its rate L̇ = Σ cᵢ q̇ᵢ.
+double tendon_length(const Model& model, const model::FixedTendon& tendon, VecRef q);
+double tendon_rate(const Model& model, const model::FixedTendon& tendon, VecRef v);
+
+/// Potential energy stored in the springs (linear, torsional and tendons') at configuration q
+/// (J).
 /// Preconditions: forward_kinematics(model, data, q) has run.
 double spring_potential_energy(const Model& model, const Data& data, VecRef q);
 

@@ -10,14 +10,15 @@
 // mass properties (sphere, capsule, cylinder, ellipsoid, box; size or fromto; density, default
 // 1000 kg/m³, or mass), its joints (hinge → revolute, slide → prismatic, ball → spherical, free
 // and <freejoint> → free; several in one body become a chain of massless bodies, as MuJoCo
-// composes them) with stiffness and springref (a torsional spring), damping; <equality> connect
-// and weld (loop closures fixed at the configuration the file draws) and joint (a coupler);
+// composes them) with stiffness and springref (a torsional spring), damping; <tendon><fixed> (a
+// FixedTendon force element and an output of its length); <equality> connect and weld (loop
+// closures fixed at the configuration the file draws), joint and tendon (couplers);
 // <actuator> motor and plain general on a hinge or slide (a torque or force pair scaled by an
 // input signal named after the actuator, default 0). Angles follow <compiler angle> (degrees
 // unless it says radian). A joint's coordinate counts from the configuration the file draws
-// (MuJoCo's qpos − ref). What momenta does not use — contacts, limits, tendons, sensors, sites,
-// cameras, lights, assets, keyframes, other actuators — is listed in ModelFile::notes, each with
-// its line.
+// (MuJoCo's qpos − ref). What momenta does not use — contacts, limits, spatial tendons, sensors,
+// sites, cameras, lights, assets, keyframes, other actuators — is listed in ModelFile::notes, each
+// with its line.
 
 #include <filesystem>
 #include <string>

@@ -8,6 +8,7 @@
 
 #include <string>
 #include <variant>
+#include <vector>
 
 #include "momenta/math/types.hpp"
 
@@ -90,8 +91,30 @@ struct AppliedTorque {
   int signal_index = -1;  ///< Set by ModelBuilder::build(); −1 without a signal.
 };
 
+/// One joint of a fixed tendon and its coefficient.
+struct TendonTerm {
+  std::string joint;
+  double coefficient = 1.0;  ///< the tendon's length unit per unit of the joint's coordinate
+  int joint_index = -1;      ///< Set by ModelBuilder::build().
+};
+
+/// A fixed tendon (MuJoCo's `<tendon><fixed>`): a length that is a fixed linear combination of
+/// 1-dof joints' coordinates, L = offset + Σ cᵢ qᵢ, with a spring-damper along it of tension
+/// T = stiffness (L − rest_length) + damping L̇; each of its joints feels τᵢ = −cᵢ T. Potential
+/// energy ½ stiffness (L − rest_length)². With neither stiffness nor damping it only measures
+/// (the outputs `spring_length` L and `spring_tension` T). L is in its first joint's unit (rad
+/// or m); a coefficient of a joint of the other kind carries the conversion (m/rad or rad/m).
+struct FixedTendon {
+  std::string name;
+  std::vector<TendonTerm> terms;  ///< at least one, each joint once
+  double offset = 0.0;            ///< L at q = 0
+  double stiffness = 0.0;         ///< N·m/rad or N/m (the length's unit), ≥ 0.
+  double damping = 0.0;           ///< N·m·s/rad or N·s/m, ≥ 0.
+  double rest_length = 0.0;       ///< L where the spring is relaxed
+};
+
 using ForceElement = std::variant<LinearSpringDamper, TorsionalSpringDamper, JointFriction,
-                                  AppliedForce, AppliedTorque>;
+                                  AppliedForce, AppliedTorque, FixedTendon>;
 
 /// The name of any force element.
 const std::string& force_element_name(const ForceElement& element);

@@ -28,6 +28,17 @@ std::string joint_armature_unit(const Model& model, const Joint& joint);
 /// applied force or moment of unit direction; "" when its use does not fix one.
 std::string signal_unit(const Model& model, int signal_index);
 
+/// A fixed tendon's units: its length is in its first joint's coordinate unit (its coefficients
+/// convert the others' to it), its tension is the effort conjugate to that length.
+struct TendonUnits {
+  std::string length;     ///< "rad" or "m"
+  std::string rate;       ///< "rad/s" or "m/s"
+  std::string tension;    ///< "N·m" or "N"
+  std::string stiffness;  ///< "N·m/rad" or "N/m"
+  std::string damping;    ///< "N·m·s/rad" or "N·s/m"
+};
+TendonUnits tendon_units(const Model& model, const FixedTendon& tendon);
+
 /// One unit per value of `quantity` for a target resolved to index `target` (a joint, body,
 /// signal, force element or constraint) and its `component`-th value (a coordinate, an axis, a
 /// constraint force label's position).

@@ -31,6 +31,8 @@ std::vector<std::string> loads_not_written(const model::Model& model, std::strin
             if (e.joint.empty() || format == "URDF") {
               lost.push_back(fmt::format("torsional spring '{}'", name));
             }
+          } else if constexpr (std::is_same_v<T, model::FixedTendon>) {
+            if (format == "URDF") lost.push_back(fmt::format("tendon '{}'", name));
           } else if constexpr (std::is_same_v<T, model::AppliedForce>) {
             lost.push_back(fmt::format("applied force '{}'", name));
           } else if constexpr (std::is_same_v<T, model::AppliedTorque>) {

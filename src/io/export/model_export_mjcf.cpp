@@ -69,11 +69,13 @@ class MjcfWriter {
                        file_.file);
     std::vector<std::string> lost = detail::loads_not_written(model_, "MJCF");
     for (std::string& mesh : detail::meshes_not_written(file_)) lost.push_back(std::move(mesh));
+    const std::string tendon_text = tendons(lost);
     for (const std::string& l : lost) out += fmt::format("<!-- Not written: {}. -->\n", l);
     out += fmt::format("<mujoco model=\"{}\">\n", file_.name);
     out += "  <compiler angle=\"radian\" autolimits=\"true\"/>\n";
     out += fmt::format("  <option gravity=\"{}\"/>\n", vector_text(model_.gravity()));
     out += "  <worldbody>\n" + body_text + "  </worldbody>\n";
+    out += tendon_text;
     out += equality();
     if (!qvel_.isZero(0.0)) {
       std::string velocities;
@@ -260,6 +262,46 @@ class MjcfWriter {
           pad, part.name, type, size, vector_text(part.p_BoSo_B), quaternion_text(part.R_BS));
     }
     return out;
+  }
+
+  // The fixed tendons. MuJoCo's length Σ cᵢ qposᵢ has no offset (qpos is momenta's q here):
+  // its springlength is momenta's rest length less the offset — and MuJoCo 2.2 reads a negative
+  // springlength as "the length at springref", so such a rest length is not written.
+  std::string tendons(std::vector<std::string>& lost) const {
+    std::string out;
+    for (const model::ForceElement& element : model_.force_elements()) {
+      const auto* tendon = std::get_if<model::FixedTendon>(&element);
+      if (tendon == nullptr) continue;
+      std::string attributes;
+      if (tendon->stiffness != 0.0) {
+        const double springlength = tendon->rest_length - tendon->offset;
+        if (springlength >= 0.0) {
+          attributes += fmt::format(" stiffness=\"{}\" springlength=\"{}\"",
+                                    number_text(tendon->stiffness), number_text(springlength));
+        } else {
+          lost.push_back(
+              fmt::format("tendon '{}''s spring (its rest length {} less its offset "
+                          "is negative, which MJCF 2.2 reads as 'at springref')",
+                          tendon->name, number_text(tendon->rest_length)));
+        }
+      }
+      if (tendon->damping != 0.0) {
+        attributes += fmt::format(" damping=\"{}\"", number_text(tendon->damping));
+      }
+      if (tendon->offset != 0.0) {
+        lost.push_back(
+            fmt::format("tendon '{}''s offset {} (MJCF's length has none: read back, "
+                        "its length is less by that much, its forces the same)",
+                        tendon->name, number_text(tendon->offset)));
+      }
+      out += fmt::format("    <fixed name=\"{}\"{}>\n", tendon->name, attributes);
+      for (const model::TendonTerm& term : tendon->terms) {
+        out += fmt::format("      <joint joint=\"{}\" coef=\"{}\"/>\n", term.joint,
+                           number_text(term.coefficient));
+      }
+      out += "    </fixed>\n";
+    }
+    return out.empty() ? out : "  <tendon>\n" + out + "  </tendon>\n";
   }
 
   std::string equality() const {

@@ -426,6 +426,7 @@ std::vector<std::string> MjcfReader::body_joints(const XMLElement* body, const s
         free_element ? "free" : keyword(e, "type", {"hinge", "slide", "ball", "free"}, "hinge");
     const std::string owner = fmt::format("joint '{}'", joint.name);
     double qpos_at_zero = 0.0;  // MuJoCo's qpos where momenta's q is 0: `ref`
+    double qpos_spring = 0.0;   // where its springs (and its tendons') relax: `springref`
     joint.parent = previous;
     joint.child = k + 1 == elements.size() ? name : fmt::format("{}_{}", name, joint.name);
     // A rotor's reflected inertia, on any <joint> (a <freejoint> has none).
@@ -459,7 +460,10 @@ std::vector<std::string> MjcfReader::body_joints(const XMLElement* body, const s
       if (joint.damping < 0.0) fail(xml, fmt::format("the damping of {} is negative", owner));
       const double unit = type == "slide" ? 1.0 : angle_scale;
       const double ref = number(e, "ref", 0.0) * unit;
-      if (type != "ball") qpos_at_zero = ref;
+      if (type != "ball") {
+        qpos_at_zero = ref;
+        qpos_spring = number(e, "springref", 0.0) * unit;
+      }
       const double stiffness = number(e, "stiffness", 0.0);
       if (stiffness < 0.0) fail(xml, fmt::format("the stiffness of {} is negative", owner));
       if (ref != 0.0 && type != "ball") {
@@ -474,7 +478,7 @@ std::vector<std::string> MjcfReader::body_joints(const XMLElement* body, const s
         spring.name = joint.name + "_spring";
         spring.joint = joint.name;
         spring.stiffness = stiffness;
-        spring.rest_angle = number(e, "springref", 0.0) * unit - ref;
+        spring.rest_angle = qpos_spring - ref;
         builder.add_force_element(spring);
         items.push_back(located_at(ModelItemRef::Kind::force_element, spring.name,
                                    xml->GetLineNum(), xml_column(text, xml)));
@@ -490,7 +494,7 @@ std::vector<std::string> MjcfReader::body_joints(const XMLElement* body, const s
     builder.add_joint(joint);
     items.push_back(located_at(ModelItemRef::Kind::joint, joint.name, xml->GetLineNum(),
                                xml_column(text, xml)));
-    joints.emplace(joint.name, MjcfJoint{xml, joint, qpos_at_zero});
+    joints.emplace(joint.name, MjcfJoint{xml, joint, qpos_at_zero, qpos_spring});
     joint_order.push_back(joint.name);
     carried.push_back(joint.child);
     previous = joint.child;
@@ -578,6 +582,11 @@ ModelFile MjcfReader::read() {
     }
   }
   if (!any_body) fail(root, "the model has no <body> in its <worldbody>");
+  // The tendons first: an equality may name one.
+  for (const XMLElement* c = root->FirstChildElement("tendon"); c != nullptr;
+       c = c->NextSiblingElement("tendon")) {
+    read_tendons(c);
+  }
   for (const XMLElement* c = root->FirstChildElement(); c != nullptr; c = c->NextSiblingElement()) {
     const std::string_view kind = c->Name();
     if (kind == "equality") {
@@ -585,7 +594,7 @@ ModelFile MjcfReader::read() {
     } else if (kind == "actuator") {
       read_actuators(c);
     } else if (kind != "compiler" && kind != "option" && kind != "default" && kind != "worldbody" &&
-               kind != "asset" && kind != "keyframe") {
+               kind != "asset" && kind != "keyframe" && kind != "tendon") {
       int count = 0;
       for (const XMLElement* e = c->FirstChildElement(); e != nullptr; e = e->NextSiblingElement())
         ++count;
@@ -618,7 +627,7 @@ ModelFile MjcfReader::read() {
   return ModelFile{model_name != nullptr ? model_name : std::filesystem::path(file).stem().string(),
                    "",
                    std::move(model),
-                   {},
+                   std::move(outputs),
                    model::SimulationSettings{},
                    file,
                    std::move(items),

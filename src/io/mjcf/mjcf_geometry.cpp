@@ -147,6 +147,14 @@ std::shared_ptr<const inertia::TriangleMesh> MjcfReader::mesh_asset(const XMLEle
   return asset.read;
 }
 
+std::optional<std::filesystem::path> MjcfReader::missing_mesh_file(const std::string& name) const {
+  const auto found = meshes_.find(name);
+  if (found == meshes_.end() || found->second.read) return std::nullopt;
+  const std::filesystem::path& path = found->second.path;
+  if (std::filesystem::exists(path)) return std::nullopt;
+  return path;
+}
+
 std::pair<inertia::Amount, double> MjcfReader::geom_amount(const MjcfElement& e,
                                                            const std::string& label) const {
   // Its mass, or its density (MuJoCo's default 1000 kg/m³, water).
@@ -163,8 +171,9 @@ std::pair<inertia::Amount, double> MjcfReader::geom_amount(const MjcfElement& e,
 // pos and orientation — as MuJoCo composes the mesh's own offset into the geom frame, so the
 // mesh lies where its file draws it — and, where the geoms give the body's mass, the solid it
 // bounds (closed, exact: MuJoCo's exactmeshinertia; its legacy default agrees for convex meshes).
-PartSummary MjcfReader::mesh_geom(const MjcfElement& e, const std::string& label,
-                                  const std::string& body, std::size_t index, bool weighed) {
+std::optional<PartSummary> MjcfReader::mesh_geom(const MjcfElement& e, const std::string& label,
+                                                 const std::string& body, std::size_t index,
+                                                 bool weighed) {
   const XMLElement* g = e.xml;
   if (attribute(e, "fromto")) {
     fail(g,
@@ -175,12 +184,20 @@ PartSummary MjcfReader::mesh_geom(const MjcfElement& e, const std::string& label
   }
   const MjcfAttribute named = attribute(e, "mesh");
   if (!named) fail(g, fmt::format("{} is a mesh and names none (mesh=\"...\")", label));
+  const auto [material, amount] = geom_amount(e, label);
+  // A mesh that only draws may be missing (files often travel without their meshes).
+  if (!(weighed && amount > 0.0)) {
+    if (const std::optional<std::filesystem::path> missing = missing_mesh_file(named.text)) {
+      note(g, fmt::format("not drawn: {}: mesh '{}', file {} not found", label, named.text,
+                          missing->string()));
+      return std::nullopt;
+    }
+  }
   PartSummary part;
   part.kind = "mesh";
   part.mesh = mesh_asset(named.where, named.text);
   const Transform X_BG = pose(e);
   inertia::MassProperties in_G;
-  const auto [material, amount] = geom_amount(e, label);
   if (weighed && amount > 0.0) {
     if (!exact_mesh_inertia && !mesh_inertia_noted_) {
       note(g,
@@ -246,8 +263,10 @@ inertia::MassProperties MjcfReader::body_mass_properties(const XMLElement* body,
         {"sphere", "capsule", "cylinder", "ellipsoid", "box", "mesh", "plane", "hfield", "sdf"},
         "sphere");
     if (type == "mesh") {
-      parts.push_back(mesh_geom(e, label, name, parts.size(), from_geoms));
-      if (from_geoms) from_geom_sum += parts.back().mass_properties;
+      if (std::optional<PartSummary> part = mesh_geom(e, label, name, parts.size(), from_geoms)) {
+        if (from_geoms) from_geom_sum += part->mass_properties;
+        parts.push_back(std::move(*part));
+      }
       continue;
     }
     if (type == "hfield" || type == "plane" || type == "sdf") {

@@ -1,5 +1,8 @@
-// MJCF's <equality> constraints (connect, weld, joint) as momenta's loop closures and couplers,
+// MJCF's <equality> constraints (connect, weld, joint; tendon in mjcf_tendons.cpp) as momenta's
+// loop closures and couplers,
 // and its <actuator> motors as torque or force pairs driven by input signals.
+
+#include <array>
 
 #include <fmt/format.h>
 
@@ -27,7 +30,7 @@ void MjcfReader::read_equality(const XMLElement* section) {
     const char* given = xml->Attribute("name");
     const std::string name =
         given != nullptr ? given : fmt::format("{}{}", kind, xml->GetLineNum());
-    if (kind != "connect" && kind != "weld" && kind != "joint") {
+    if (kind != "connect" && kind != "weld" && kind != "joint" && kind != "tendon") {
       note(xml, fmt::format("<{}> equality '{}': not modelled", kind, name));
       continue;
     }
@@ -35,7 +38,7 @@ void MjcfReader::read_equality(const XMLElement* section) {
     if (kind == "joint") {
       check_attributes(
           xml, {"name", "class", "active", "solref", "solimp", "joint1", "joint2", "polycoef"});
-    } else {
+    } else if (kind != "tendon") {
       check_attributes(xml, {"name", "class", "active", "solref", "solimp", "body1", "body2",
                              "anchor", "relpose", "torquescale"});
     }
@@ -44,7 +47,11 @@ void MjcfReader::read_equality(const XMLElement* section) {
       continue;
     }
     model::Constraint constraint;
-    if (kind == "joint") {
+    if (kind == "tendon") {
+      const std::optional<model::JointCoupler> coupler = tendon_coupler(xml, e, name);
+      if (!coupler) continue;
+      constraint = *coupler;
+    } else if (kind == "joint") {
       // joint1 = a0 + a1 joint2 (+ higher powers), each counted from its reference, which is
       // where momenta's coordinates start: a coupler of ratio a1 and offset a0.
       const MjcfJoint& a = joint_named(xml, "joint1", xml->Attribute("joint1"));
@@ -53,15 +60,7 @@ void MjcfReader::read_equality(const XMLElement* section) {
                               a.joint.name));
       }
       const MjcfJoint& b = joint_named(xml, "joint2", xml->Attribute("joint2"));
-      const std::vector<double> c =
-          numbers(e, "polycoef", 5, 5, std::vector<double>{0, 1, 0, 0, 0});
-      if (c[2] != 0.0 || c[3] != 0.0 || c[4] != 0.0) {
-        fail(xml,
-             fmt::format("equality '{}': momenta couples joints linearly (polycoef's powers "
-                         "above 1 are {}, {}, {})",
-                         name, c[2], c[3], c[4]),
-             "polycoef");
-      }
+      const std::array<double, 2> c = linear_polycoef(e, name);
       model::JointCoupler coupler;
       coupler.name = name;
       coupler.joint_a = a.joint.name;
@@ -112,6 +111,19 @@ void MjcfReader::read_equality(const XMLElement* section) {
     items.push_back(
         located_at(ModelItemRef::Kind::constraint, name, xml->GetLineNum(), xml_column(text, xml)));
   }
+}
+
+std::array<double, 2> MjcfReader::linear_polycoef(const MjcfElement& e,
+                                                  const std::string& name) const {
+  const std::vector<double> c = numbers(e, "polycoef", 5, 5, std::vector<double>{0, 1, 0, 0, 0});
+  if (c[2] != 0.0 || c[3] != 0.0 || c[4] != 0.0) {
+    fail(e.xml,
+         fmt::format("equality '{}': momenta couples joints linearly (polycoef's powers above 1 "
+                     "are {}, {}, {})",
+                     name, c[2], c[3], c[4]),
+         "polycoef");
+  }
+  return {c[0], c[1]};
 }
 
 void MjcfReader::read_actuators(const XMLElement* section) {

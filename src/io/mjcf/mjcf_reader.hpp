@@ -1,8 +1,10 @@
 #pragma once
 // The MJCF reader's parts (mjcf_*.cpp): one MjcfReader reads one document — its compiler settings,
 // default classes and the body tree (mjcf_file.cpp), the frames and geoms' mass properties
-// (mjcf_geometry.cpp), the equality constraints and actuators (mjcf_loads.cpp).
+// (mjcf_geometry.cpp), the equality constraints and actuators (mjcf_loads.cpp), the tendons
+// (mjcf_tendons.cpp) and keyframes (mjcf_keyframes.cpp).
 
+#include <array>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -48,6 +50,13 @@ struct MjcfJoint {
   const XMLElement* element;
   model::Joint joint;
   double ref = 0.0;  ///< rad or m: MuJoCo's qpos at momenta's q = 0 (a hinge's or slide's `ref`)
+  double springref = 0.0;  ///< rad or m: MuJoCo's qpos where its spring relaxes (`springref`)
+};
+
+/// A fixed tendon as read, for the equality constraints that name it.
+struct MjcfTendon {
+  const XMLElement* element;
+  model::FixedTendon tendon;
 };
 
 class MjcfReader {
@@ -91,7 +100,19 @@ class MjcfReader {
 
   // --- equality constraints and actuators (mjcf_loads.cpp) ------------------------------------
   void read_equality(const XMLElement* section);
+  /// An equality's polycoef as (a0, a1); fails at its element where a higher power is not zero
+  /// (momenta couples joints linearly).
+  std::array<double, 2> linear_polycoef(const MjcfElement& e, const std::string& name) const;
   void read_actuators(const XMLElement* section);
+
+  // --- tendons (mjcf_tendons.cpp) -------------------------------------------------------------
+  /// The <fixed> tendons of a <tendon> section as FixedTendon force elements, each with an output
+  /// `<name>_length`; the others noted.
+  void read_tendons(const XMLElement* section);
+  /// An <equality><tendon> as a coupler where it relates two joints (a tendon of two joints held
+  /// at its length, or two tendons of one joint each, linearly); otherwise noted, and none.
+  std::optional<model::JointCoupler> tendon_coupler(const XMLElement* xml, const MjcfElement& e,
+                                                    const std::string& name);
 
   // --- keyframes (mjcf_keyframes.cpp) ---------------------------------------------------------
   /// The <key>s of a <keyframe> section as states of the built `model`: MuJoCo's qpos and qvel
@@ -124,9 +145,13 @@ class MjcfReader {
   /// A geom's mass or density (default 1000 kg/m³) as an amount, and its value.
   std::pair<inertia::Amount, double> geom_amount(const MjcfElement& e,
                                                  const std::string& label) const;
-  /// A mesh geom as a part in the body frame, weighed when `weighed`.
-  PartSummary mesh_geom(const MjcfElement& e, const std::string& label, const std::string& body,
-                        std::size_t index, bool weighed);
+  /// A mesh geom as a part in the body frame, weighed when `weighed`; none (and a note) when it
+  /// is not weighed and its file is missing.
+  std::optional<PartSummary> mesh_geom(const MjcfElement& e, const std::string& label,
+                                       const std::string& body, std::size_t index, bool weighed);
+  /// The file of mesh asset `name` where it does not exist (none for an unknown name: mesh_asset
+  /// fails there with a did-you-mean).
+  std::optional<std::filesystem::path> missing_mesh_file(const std::string& name) const;
   /// The mesh asset `name`, read (once) and scaled; fails at `at` for an unknown name.
   std::shared_ptr<const inertia::TriangleMesh> mesh_asset(const XMLElement* at,
                                                           const std::string& name);
@@ -145,11 +170,14 @@ class MjcfReader {
   bool exact_mesh_inertia = false;  // <compiler exactmeshinertia>
   model::ModelBuilder builder;
   std::vector<ItemLocation> items;
-  std::map<std::string, MjcfBody, std::less<>> bodies;   // by the file's body name
-  std::map<std::string, MjcfJoint, std::less<>> joints;  // by joint name
+  std::map<std::string, MjcfBody, std::less<>> bodies;     // by the file's body name
+  std::map<std::string, MjcfJoint, std::less<>> joints;    // by joint name
+  std::map<std::string, MjcfTendon, std::less<>> tendons;  // fixed tendons by name
+  std::vector<model::OutputSpec> outputs;                  // each fixed tendon's length
   std::vector<std::string> joint_order;
   std::map<std::string, std::vector<PartSummary>> body_parts;  // momenta body → geoms
   int body_count = 0, joint_count = 0;  // bodies and joints read so far: MuJoCo's numbers
+  int tendon_count = 0;
 
  private:
   struct MeshAsset {

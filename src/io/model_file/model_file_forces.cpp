@@ -1,4 +1,4 @@
-// Model files, `forces:`: springs, dampers, friction and applied loads.
+// Model files, `forces:`: springs, dampers, friction, tendons and applied loads.
 
 #include <algorithm>
 #include <string_view>
@@ -21,6 +21,7 @@ const std::vector<EntryType>& force_types() {
       {"torsional_spring",
        {"joint", "body_a", "body_b", "stiffness", "damping", "rest_angle", "rest_angle_deg"}},
       {"joint_friction", {"joint", "viscous"}},
+      {"tendon", {"joints", "offset", "stiffness", "damping", "rest_length"}},
       {"force", {"body", "point", "frame", "vector", "signal"}},
       {"torque", {"body", "frame", "vector", "signal"}},
   };
@@ -53,6 +54,40 @@ model::LoadFrame read_frame(const YamlNode& e) {
 std::string optional_signal(const YamlNode& e, const Context& ctx) {
   const auto ref = e.find("signal");
   return ref ? ctx.signals.resolve(*ref) : std::string();
+}
+
+// A fixed tendon: `joints`, a list of {joint, coefficient}, each joint 1-dof and named once.
+model::FixedTendon read_tendon(const YamlNode& e, const std::string& name, const Context& ctx) {
+  model::FixedTendon tendon;
+  tendon.name = name;
+  const YamlNode list = e.at("joints");
+  if (!list.is_sequence() || list.size() == 0) {
+    list.fail("a tendon's joints: a list of {joint: NAME, coefficient: c}, at least one");
+  }
+  for (const YamlNode& term : list.elements()) {
+    term.expect_map("a tendon's joint: {joint: NAME, coefficient: c}");
+    term.check_keys({"joint", "coefficient"});
+    const YamlNode ref = term.at("joint");
+    const std::string joint = ctx.joints.resolve(ref);
+    const model::JointType t = ctx.joint_types.find(joint)->second;
+    if (model::joint_nv(t) != 1) {
+      ref.fail(
+          fmt::format("joint '{}' is {} with {} degrees of freedom; a tendon's joints are "
+                      "1-dof",
+                      joint, model::joint_type_name(t), model::joint_nv(t)));
+    }
+    for (const model::TendonTerm& earlier : tendon.terms) {
+      if (earlier.joint == joint) ref.fail(fmt::format("joint '{}' is listed twice", joint));
+    }
+    const double coefficient = term.find_number("coefficient").value_or(1.0);
+    if (coefficient == 0.0) term.at("coefficient").fail("a coefficient of 0: leave the joint out");
+    tendon.terms.push_back({joint, coefficient, -1});
+  }
+  tendon.offset = e.find_number("offset").value_or(0.0);
+  tendon.stiffness = nonnegative(e, "stiffness");
+  tendon.damping = nonnegative(e, "damping");
+  tendon.rest_length = e.find_number("rest_length").value_or(0.0);
+  return tendon;
 }
 
 model::ForceElement read_element(const YamlNode& e, std::string_view type, const std::string& name,
@@ -120,6 +155,7 @@ model::ForceElement read_element(const YamlNode& e, std::string_view type, const
     f.viscous = e.number("viscous", Bound::kNonNegative);
     return f;
   }
+  if (type == "tendon") return read_tendon(e, name, ctx);
   if (type == "force") {
     model::AppliedForce f;
     f.name = name;

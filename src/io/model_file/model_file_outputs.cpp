@@ -28,8 +28,8 @@ struct Target {
   std::vector<std::pair<std::string_view, OutputQuantity>> quantities;
 };
 
-const std::array<Target, 5>& targets() {
-  static const std::array<Target, 5> table = {{
+const std::array<Target, 6>& targets() {
+  static const std::array<Target, 6> table = {{
       {"body",
        {{"position", Q::body_position},
         {"velocity", Q::body_velocity},
@@ -51,6 +51,7 @@ const std::array<Target, 5>& targets() {
         {"reaction_moment", Q::reaction_moment}}},
       {"signal", {{"signal", Q::signal}}},
       {"spring", {{"spring_length", Q::spring_length}, {"spring_tension", Q::spring_tension}}},
+      {"tendon", {{"length", Q::spring_length}, {"tension", Q::spring_tension}}},
       {"constraint", {{"force", Q::constraint_force}}},
   }};
   return table;
@@ -147,14 +148,15 @@ int read_component(const YamlNode& node, const model::OutputSpec& spec, const mo
 
 model::OutputSpec read_output(const YamlNode& e, const Context& ctx, const model::Model& model) {
   e.expect_map(
-      "an output: a map with a target ('body', 'joint', 'signal', 'spring', 'constraint')");
-  e.check_keys({"name", "quantity", "body", "joint", "signal", "spring", "constraint", "point",
-                "component", "frame", "sequence"});
-  const auto key = e.which_of({"body", "joint", "signal", "spring", "constraint"});
+      "an output: a map with a target ('body', 'joint', 'signal', 'spring', 'tendon', "
+      "'constraint')");
+  e.check_keys({"name", "quantity", "body", "joint", "signal", "spring", "tendon", "constraint",
+                "point", "component", "frame", "sequence"});
+  const auto key = e.which_of({"body", "joint", "signal", "spring", "tendon", "constraint"});
   if (!key) {
     e.fail(
-        "an output needs one target: 'body', 'joint', 'signal', 'spring' (a spring_damper) or "
-        "'constraint'");
+        "an output needs one target: 'body', 'joint', 'signal', 'spring' (a spring_damper), "
+        "'tendon' or 'constraint'");
   }
   const Target& target = *std::find_if(targets().begin(), targets().end(),
                                        [&](const Target& t) { return t.key == *key; });
@@ -177,11 +179,13 @@ model::OutputSpec read_output(const YamlNode& e, const Context& ctx, const model
     const auto element = std::find_if(elements.begin(), elements.end(), [&](const auto& f) {
       return model::force_element_name(f) == spec.target;
     });
-    if (!std::holds_alternative<model::LinearSpringDamper>(*element)) {
-      ref.fail(
-          fmt::format("force element '{}' is not a spring_damper: only those have a length "
-                      "and a tension",
-                      spec.target));
+    const bool tendon = *key == "tendon";
+    if (tendon ? !std::holds_alternative<model::FixedTendon>(*element)
+               : !std::holds_alternative<model::LinearSpringDamper>(*element)) {
+      ref.fail(fmt::format("force element '{}' is not a {}", spec.target,
+                           tendon ? "tendon"
+                                  : "spring_damper: only those (and tendons) have a "
+                                    "length and a tension"));
     }
   }
 

@@ -4,6 +4,7 @@
 // R_y(θ) (0, 0, −l) = (−l sin θ, 0, −l cos θ).
 
 #include <string>
+#include <vector>
 
 #include "momenta/model/model_builder.hpp"
 
@@ -38,6 +39,20 @@ inline model::TorsionalSpringDamper joint_spring(std::string name, std::string j
   t.stiffness = k;
   t.damping = c;
   t.rest_angle = rest;
+  return t;
+}
+
+/// A fixed tendon L = offset + Σ cᵢ qᵢ over (joint, cᵢ) terms, with a spring–damper (k, c) relaxed
+/// at `rest`.
+inline model::FixedTendon fixed_tendon(std::string name, std::vector<model::TendonTerm> terms,
+                                       double offset, double k, double c, double rest) {
+  model::FixedTendon t;
+  t.name = std::move(name);
+  t.terms = std::move(terms);
+  t.offset = offset;
+  t.stiffness = k;
+  t.damping = c;
+  t.rest_length = rest;
   return t;
 }
 

@@ -11,6 +11,7 @@
 #include "momenta/dynamics/kinematics.hpp"
 #include "momenta/dynamics/rnea.hpp"
 #include "momenta/dynamics/rnea_derivatives.hpp"
+#include "momenta_test/hand_models.hpp"
 #include "momenta_test/multibody_models.hpp"
 #include "momenta_test/tangent_differences.hpp"
 #include "momenta_test/tolerance.hpp"
@@ -22,7 +23,8 @@ using model::JointType;
 
 // Eight bodies on every joint type (random frames and inertias), joint damping everywhere, and
 // every force element: springs between bodies and to the world, a two-body torsional spring, a
-// joint spring and friction, world and follower forces and torques, one scaled by a signal.
+// joint spring and friction, a tendon, world and follower forces and torques, one scaled by a
+// signal.
 Model loaded_tree() {
   std::mt19937 rng(42);
   model::ModelBuilder builder;
@@ -82,6 +84,9 @@ Model loaded_tree() {
   friction.joint = "j3";
   friction.viscous = 0.6;
   builder.add_force_element(friction);
+  // A tendon over two hinges and a slide (j0, j7 revolute; j2 prismatic).
+  builder.add_force_element(test::fixed_tendon(
+      "cord", {{"j0", 0.8, -1}, {"j2", -1.7, -1}, {"j7", 0.4, -1}}, 0.1, 4.0, 0.3, 0.25));
   const auto force = [&](const char* name, const char* body, const Vec3& at, model::LoadFrame frame,
                          const Vec3& vector, const char* signal) {
     model::AppliedForce e;

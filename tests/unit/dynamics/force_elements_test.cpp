@@ -186,6 +186,61 @@ TEST(ForceElements, JointSpringDampingAndFriction) {
   }
 }
 
+// Two bodies hanging 1 m below their joints: `first` a hinge from the world, `second` of `type`.
+model::ModelBuilder two_bodies_on(const char* first, const char* second, model::JointType type) {
+  model::ModelBuilder b;
+  b.add_body("a", inertia::MassProperties(1.0, Vec3(0, 0, -1), 0.1 * Mat3::Identity()));
+  b.add_body("b", inertia::MassProperties(1.0, Vec3(0, 0, -1), 0.1 * Mat3::Identity()));
+  b.add_joint(test::make_joint(first, model::JointType::revolute, "world", "a"));
+  b.add_joint(test::make_joint(second, type, "a", "b"));
+  return b;
+}
+
+// A fixed tendon L = 0.1 + θa − 0.5 θb over two hinges (MuJoCo's fixed tendon), k = 3, c = 0.2,
+// rest 0.4. By hand at θ = (0.7, −0.4), θ̇ = (1.5, 2): L = 1.0, L̇ = 0.5, T = 3 · 0.6 + 0.2 · 0.5 =
+// 1.9, τ = −c T = (−1.9, 0.95); V = ½ 3 0.6² = 0.54; the power τ·θ̇ = −T L̇ = −0.95.
+TEST(ForceElements, FixedTendonPullsEachJointByItsCoefficient) {
+  model::ModelBuilder b = two_bodies_on("ja", "jb", model::JointType::revolute);
+  b.add_force_element(
+      test::fixed_tendon("cord", {{"ja", 1.0, -1}, {"jb", -0.5, -1}}, 0.1, 3.0, 0.2, 0.4));
+  const Model m = b.build();
+  Data data(m);
+  const VecX q = (VecX(2) << 0.7, -0.4).finished(), v = (VecX(2) << 1.5, 2.0).finished();
+  const auto& built = std::get<model::FixedTendon>(m.force_elements()[0]);
+  EXPECT_NEAR(tendon_length(m, built, q), 1.0, kTol);
+  EXPECT_NEAR(tendon_rate(m, built, v), 0.5, kTol);
+  const Evaluated e = evaluate(m, data, q, v);
+  EXPECT_MATRIX_NEAR(e.tau, (VecX(2) << -1.9, 0.95).finished(), kTol);
+  for (const Vec6& w : e.f_ext) EXPECT_TRUE(w.isZero(0.0));
+  EXPECT_NEAR(spring_potential_energy(m, data, q), 0.54, kTol);
+  EXPECT_NEAR(force_element_power(m, data, v, e.tau, e.f_ext), -0.95, kTol);
+  EXPECT_FALSE(force_elements_conservative(m));
+}
+
+// A tendon's joints are 1-dof, each named once, with a coefficient that is finite and not zero.
+TEST(ForceElements, ATendonRefusesWhatIsNotALinearCombinationOfCoordinates) {
+  const auto build = [](std::vector<model::TendonTerm> terms) {
+    model::ModelBuilder b = two_bodies_on("ja", "jb", model::JointType::spherical);
+    b.add_force_element(test::fixed_tendon("cord", std::move(terms), 0.0, 0.0, 0.0, 0.0));
+    return b.build();
+  };
+  const auto message = [&](std::vector<model::TendonTerm> terms) {
+    try {
+      build(std::move(terms));
+    } catch (const InvalidArgument& error) {
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message({}).find("at least one joint"), std::string::npos);
+  EXPECT_NE(message({{"jb", 1.0, -1}}).find("joint 'jb' is spherical with 3 degrees of freedom"),
+            std::string::npos);
+  EXPECT_NE(message({{"ja", 1.0, -1}, {"ja", 2.0, -1}}).find("joint 'ja' is listed twice"),
+            std::string::npos);
+  EXPECT_NE(message({{"ja", 0.0, -1}}).find("must be finite and not zero"), std::string::npos);
+  EXPECT_NE(message({{"jx", 1.0, -1}}).find("unknown joint 'jx'"), std::string::npos);
+}
+
 // Two bodies: A on a revolute joint about z, B on a ball joint on A whose initial orientation is
 // 0.4 rad about x — the spring's rest. At the ball joint's quaternion Rx(0.4) Ry(0.3) the rotation
 // from rest is θ = (0, 0.3, 0) in B, so n_B = −k θ − c ω_rel_B, and A gets −R_AB n_B.
@@ -267,6 +322,8 @@ TEST(ForceElements, SpringForcesAreTheGradientOfTheirPotential) {
   // Joints 0 and 2 are revolute and prismatic (random_tree's type cycle).
   b.add_force_element(joint_spring("tj", "j0", 2.0, 0.0, 0.3));
   b.add_force_element(joint_spring("tp", "j2", 5.0, 0.0, -0.1));
+  b.add_force_element(
+      test::fixed_tendon("cord", {{"j0", 0.6, -1}, {"j2", -2.0, -1}}, 0.1, 4.0, 0.0, 0.3));
   b.add_force_element(body_spring("tb", "b1", "b5", 3.0, 0.0));
   b.add_force_element(body_spring("tw", "world", "b3", 1.5, 0.0));
   b.add_force_element(LinearSpringDamper{.name = "lw",

@@ -313,6 +313,51 @@ TEST(MjcfFile, ErrorsAreAtTheirLineAndColumn) {
                   "m.xml:4:1: joint 'joint0' carries only massless bodies"));
 }
 
+// Fixed tendons without MuJoCo at hand (side by side: FixedTendonsAreMuJoCos,
+// TendonEqualitiesAreCouplersWhereMuJoCosHold): what momenta does not enforce or model is a note
+// — a range, dry friction, a spatial tendon, an equality over more than two joints — and a
+// missing coef, a joint that is not 1-dof or an unknown tendon in an equality an error at its line.
+TEST(MjcfFile, FixedTendonsSayWhatTheyDoNotModel) {
+  const std::string two_hinges =
+      "<mujoco><worldbody><body><joint name='a'/><geom size='0.1'/><body><joint name='b'/>"
+      "<geom size='0.1'/><body><joint name='c'/><geom size='0.1'/></body></body></body>"
+      "</worldbody>\n";
+  const ModelFile f = parse_mjcf(two_hinges + R"(<tendon>
+<fixed name="t" range="-1 1" frictionloss="0.2"><joint joint="a" coef="1"/><joint joint="b" coef="2"/></fixed>
+<fixed name="all"><joint joint="a" coef="1"/><joint joint="b" coef="1"/><joint joint="c" coef="1"/></fixed>
+<spatial name="cable"/>
+</tendon>
+<equality><tendon name="three" tendon1="all"/></equality></mujoco>)",
+                                 "m.xml", ".");
+  ASSERT_EQ(f.notes.size(), 4u) << ::testing::PrintToString(f.notes);
+  EXPECT_EQ(f.notes[0], "m.xml:3: the range of tendon 't' is not enforced");
+  EXPECT_EQ(f.notes[1], "m.xml:3: the dry friction of tendon 't' is not modelled");
+  EXPECT_EQ(f.notes[2],
+            "m.xml:5: <spatial> tendon 'cable': not modelled (momenta reads fixed "
+            "tendons)");
+  EXPECT_EQ(f.notes[3],
+            "m.xml:7: tendon equality 'three': not modelled (momenta couples two "
+            "joints: one tendon of two joints, or two tendons of one joint each)");
+  EXPECT_TRUE(f.model.constraints().empty());
+  EXPECT_EQ(f.model.force_elements().size(), 2u);
+  ASSERT_EQ(f.outputs.size(), 2u);
+  EXPECT_EQ(f.outputs[0].name, "t_length");
+
+  EXPECT_NE(error_of(two_hinges + "<tendon><fixed><joint joint='a'/></fixed></tendon></mujoco>")
+                .find("m.xml:2:16: <joint> needs the attribute 'coef'"),
+            std::string::npos);
+  EXPECT_NE(error_of("<mujoco><worldbody><body><joint type='ball'/><geom size='0.1'/></body>"
+                     "</worldbody>\n<tendon><fixed name='t'><joint joint='joint0' coef='1'/>"
+                     "</fixed></tendon></mujoco>")
+                .find("joint 'joint0' is spherical with 3 degrees of freedom; a tendon's joints "
+                      "are 1-dof"),
+            std::string::npos);
+  EXPECT_NE(error_of(two_hinges + "<tendon><fixed name='t'><joint joint='a' coef='1'/></fixed>"
+                                  "</tendon><equality><tendon tendon1='s'/></equality></mujoco>")
+                .find("unknown fixed tendon 's' (did you mean 't'?)"),
+            std::string::npos);
+}
+
 // Keyframes without MuJoCo at hand (side by side with it: tests/validation/io/mjcf_mujoco_test.cpp,
 // KeyframesAreMuJoCosStates): a hinge's q is qpos − ref (in radians, whatever the compiler's
 // angle), a free joint's speeds turn from [v; ω] to [ω; v]; what momenta has no use for is a note;
@@ -433,6 +478,25 @@ TEST(MjcfFile, MeshErrorsAreAtTheirLine) {
   EXPECT_NE(missing.find("nothing.stl: mesh file not found"), std::string::npos) << missing;
   EXPECT_EQ(error("<mesh file='box.stl' scale='1 0 1'/>", "<geom type='mesh' mesh='box'/>"),
             "m.xml:2:29: the scale of mesh 'box' has a zero factor");
+}
+
+// A mesh that only draws — its body has an <inertial> — may be missing: the file loads, the mesh
+// is a note at its geom's line and is not drawn. Where the mesh gives the body its mass it stays
+// an error (MeshErrorsAreAtTheirLine).
+TEST(MjcfFile, AMissingMeshThatOnlyDrawsIsANote) {
+  const ModelFile f = parse_mjcf(R"(<mujoco><asset><mesh file="gone.stl"/></asset><worldbody>
+<body><joint type="hinge"/><inertial pos="0 0 0" mass="2" diaginertia="1 1 1"/>
+<geom name="shell" type="mesh" mesh="gone"/><geom type="sphere" size="0.1"/></body>
+</worldbody></mujoco>)",
+                                 "m.xml", test::source_dir());
+  EXPECT_EQ(f.model.total_mass(), 2.0);
+  ASSERT_EQ(f.notes.size(), 1u);
+  EXPECT_NE(f.notes[0].find("m.xml:3: not drawn: geom 'shell': mesh 'gone', file "),
+            std::string::npos)
+      << f.notes[0];
+  EXPECT_NE(f.notes[0].find("gone.stl not found"), std::string::npos) << f.notes[0];
+  ASSERT_EQ(f.parts_of(1).size(), 1u);  // the sphere alone
+  EXPECT_EQ(f.parts_of(1)[0].kind, "sphere");
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include "momenta/common/error.hpp"
 #include "momenta/inertia/primitives.hpp"
 #include "momenta/math/rotation.hpp"
+#include "momenta/model/units.hpp"
 #include "momenta_test/tolerance.hpp"
 
 namespace momenta::io {
@@ -340,6 +341,45 @@ simulation: {duration: 2, step: 0.01, integrator: dopri5, rtol: 1e-8, atol: 1e-1
   EXPECT_EQ(*file.simulation.integrator, "dopri5");
   EXPECT_EQ(*file.simulation.every, 10);
   EXPECT_EQ(*file.simulation.absolute_tolerance, 1e-10);
+}
+
+// A tendon: its joints with their coefficients (1 unless given), its offset, spring and damper;
+// its length and tension as outputs, in its first joint's units. Errors at the key.
+TEST(ModelFileForces, TendonsListTheirJointsAndCoefficients) {
+  const ModelFile file =
+      read_model_file(test::source_dir() + "/tests/data/models/tendon_pendulum.yaml");
+  const auto& elements = file.model.force_elements();
+  ASSERT_EQ(elements.size(), 2u);
+  const auto& cord = std::get<model::FixedTendon>(elements[0]);
+  ASSERT_EQ(cord.terms.size(), 3u);
+  EXPECT_EQ(cord.terms[2].joint, "slide");
+  EXPECT_EQ(cord.terms[2].coefficient, 2.0);
+  EXPECT_EQ(cord.terms[1].coefficient, -0.5);
+  EXPECT_EQ(cord.offset, 0.05);
+  EXPECT_EQ(cord.stiffness, 4.0);
+  EXPECT_EQ(cord.damping, 0.3);
+  EXPECT_EQ(cord.rest_length, 0.1);
+  const auto& absolute = std::get<model::FixedTendon>(elements[1]);
+  EXPECT_EQ(absolute.terms[1].coefficient, 1.0);
+  ASSERT_EQ(file.outputs.size(), 3u);
+  EXPECT_EQ(file.outputs[0].quantity, model::OutputQuantity::spring_length);
+  EXPECT_EQ(file.outputs[1].quantity, model::OutputQuantity::spring_tension);
+  EXPECT_EQ(file.outputs[2].target, "absolute");
+  EXPECT_EQ(model::output_unit(file.model, model::OutputQuantity::spring_length, 0, 0), "rad");
+  EXPECT_EQ(model::output_unit(file.model, model::OutputQuantity::spring_tension, 0, 0), "N·m");
+
+  const std::string tendon = kPendulum + "forces:\n  - {name: t, type: tendon, joints: ";
+  EXPECT_ERROR_AT(error_of(tendon + "[]}\n"), "m.yaml:13:", "at least one");
+  EXPECT_ERROR_AT(error_of(tendon + "[{joint: pivot}, {joint: pivot}]}\n"),
+                  "m.yaml:13:", "joint 'pivot' is listed twice");
+  EXPECT_ERROR_AT(error_of(tendon + "[{joint: pivot, coefficient: 0}]}\n"),
+                  "m.yaml:13:", "a coefficient of 0: leave the joint out");
+  EXPECT_ERROR_AT(error_of(tendon + "[{joint: pivt}]}\n"), "m.yaml:13:", "did you mean 'pivot'");
+  EXPECT_ERROR_AT(error_of(tendon + "[{joint: pivot}], stiffness: -1}\n"),
+                  "m.yaml:13:", "stiffness");
+  EXPECT_ERROR_AT(error_of(tendon + "[{joint: pivot}]}\noutputs:\n  - {tendon: t, quantity: "
+                                    "spring_length}\n"),
+                  "m.yaml:15:", "'spring_length' is not a quantity of a tendon");
 }
 
 TEST(ModelFileOutputs, EulerAnglesTakeASequenceAndNumberedComponents) {

@@ -32,6 +32,7 @@
 #include "momenta/dynamics/kinematics.hpp"
 #include "momenta/dynamics/rnea.hpp"
 #include "momenta/io/mjcf_file.hpp"
+#include "momenta/io/model_export.hpp"
 #include "momenta/io/model_file.hpp"
 #include "momenta/io/urdf_file.hpp"
 #include "momenta_test/scratch_dir.hpp"
@@ -79,13 +80,16 @@ MatX velocity_permutation(const model::Model& model, const mjModel* m) {
   return P;
 }
 
-// qpos_mj from momenta's q: each joint's coordinates at MuJoCo's address (the same layout).
+// qpos_mj from momenta's q: each joint's coordinates at MuJoCo's address (the same layout), a
+// hinge's or slide's counted from its ref (MuJoCo's qpos0 there).
 VecX mujoco_configuration(const model::Model& model, const mjModel* m, const VecX& q) {
   VecX qpos(m->nq);
   for (const model::Joint& joint : model.joints()) {
     if (joint.nq() == 0) continue;
     const int id = mj_name2id(m, mjOBJ_JOINT, joint.name.c_str());
-    qpos.segment(m->jnt_qposadr[id], joint.nq()) = q.segment(joint.q_index, joint.nq());
+    const int at = m->jnt_qposadr[id];
+    qpos.segment(at, joint.nq()) = q.segment(joint.q_index, joint.nq());
+    if (m->jnt_type[id] == mjJNT_HINGE || m->jnt_type[id] == mjJNT_SLIDE) qpos[at] += m->qpos0[at];
   }
   return qpos;
 }
@@ -268,6 +272,120 @@ TEST(MjcfMuJoCo, ArmatureIsMuJoCos) {
   const std::string humanoid =
       with_armature("humanoid", "<joint name=", "<joint armature=\"0.02\" name=");
   expect_agreement(compare_file(humanoid, 50));
+}
+
+// Fixed tendons: each is momenta's FixedTendon, its length MuJoCo's ten_length (an offset from
+// the joints' refs), its spring relaxed where MuJoCo's is (the springref rule, or springlength)
+// and its spring and damper in the passive forces (compare_file's element forces) — on the leg
+// whose tendons mix a slide with hinges, whose joints count from refs in degrees.
+TEST(MjcfMuJoCo, FixedTendonsAreMuJoCos) {
+  const std::string path = test::source_dir() + "/tests/data/models/mjcf/tendon_leg.xml";
+  expect_agreement(compare("tendon_leg", 50));
+  const io::ModelFile file = io::read_mjcf_file(path);
+  const model::Model& model = file.model;
+  MuJoCoModel mj(path);
+  ASSERT_NE(mj.m, nullptr) << mj.message;
+  ASSERT_EQ(mj.m->ntendon, 3);
+  // Each tendon's length is an output column.
+  ASSERT_EQ(file.outputs.size(), 3u);
+  std::mt19937 random(7);
+  for (int s = 0; s < 20; ++s) {
+    const VecX q = random_configuration(model, random);
+    const VecX qpos = mujoco_configuration(model, mj.m, q);
+    for (int i = 0; i < model.nq(); ++i) mj.d->qpos[i] = qpos[i];
+    mj_forward(mj.m, mj.d);
+    for (int t = 0; t < mj.m->ntendon; ++t) {
+      const std::string name = mj_id2name(mj.m, mjOBJ_TENDON, t);
+      EXPECT_EQ(file.outputs[static_cast<std::size_t>(t)].name, name + "_length");
+      const auto element =
+          std::find_if(model.force_elements().begin(), model.force_elements().end(),
+                       [&](const auto& e) { return model::force_element_name(e) == name; });
+      ASSERT_NE(element, model.force_elements().end()) << name;
+      const auto& tendon = std::get<model::FixedTendon>(*element);
+      // A few products of O(1) numbers: round-off ~1e-16.
+      EXPECT_NEAR(dynamics::tendon_length(model, tendon, q), mj.d->ten_length[t], 1e-14) << name;
+      if (tendon.stiffness > 0.0) {
+        EXPECT_NEAR(tendon.rest_length, mj.m->tendon_lengthspring[t], 1e-15) << name;
+      }
+    }
+  }
+  // momenta's own tendons written as MJCF: MuJoCo's passive forces are momenta's (the offset
+  // MJCF cannot hold is said).
+  const io::ModelFile yaml =
+      io::read_model_file(test::source_dir() + "/tests/data/models/tendon_pendulum.yaml");
+  const io::ExportedModel written = io::write_mjcf(yaml, yaml.model.initial_q());
+  ASSERT_EQ(written.not_written.size(), 1u);
+  EXPECT_NE(written.not_written[0].find("tendon 'cord''s offset 0.05"), std::string::npos);
+  const std::filesystem::path dir = test::make_scratch_dir("mjcf_mujoco_tendons");
+  std::ofstream(dir / "tendon_pendulum.xml") << written.text;
+  expect_agreement(compare_file((dir / "tendon_pendulum.xml").string(), 50));
+}
+
+// A tendon equality that relates two joints is momenta's coupler: a tendon of two joints held at
+// its length plus a0, and one tendon of one joint a polynomial of degree one in another. Where
+// the coupler holds, MuJoCo's own equality rows (efc_pos) are zero; moved off it, they are not.
+TEST(MjcfMuJoCo, TendonEqualitiesAreCouplersWhereMuJoCosHold) {
+  const std::filesystem::path dir = test::make_scratch_dir("mjcf_mujoco_tendon_equality");
+  const std::string path = (dir / "tendon_couplers.xml").string();
+  std::ofstream(path) << R"(<mujoco>
+  <compiler angle="degree"/>
+  <worldbody>
+    <body><joint name="a" axis="0 1 0" ref="12"/><geom size="0.1" mass="1"/>
+      <body pos="0 0 -0.5"><joint name="b" axis="0 1 0" ref="-7"/><geom size="0.1" mass="1"/>
+        <body pos="0 0 -0.5"><joint name="c" type="slide" axis="1 0 0" ref="0.02"/>
+          <geom size="0.1" mass="1"/>
+          <body pos="0 0 -0.5"><joint name="d" axis="1 0 0"/><geom size="0.1" mass="1"/>
+          </body>
+        </body>
+      </body>
+    </body>
+  </worldbody>
+  <tendon>
+    <fixed name="pair"><joint joint="a" coef="0.8"/><joint joint="b" coef="-1.6"/></fixed>
+    <fixed name="slide_only"><joint joint="c" coef="3"/></fixed>
+    <fixed name="d_only"><joint joint="d" coef="-0.5"/></fixed>
+  </tendon>
+  <equality>
+    <tendon name="held" tendon1="pair" polycoef="0.05 0 0 0 0"/>
+    <tendon name="geared" tendon1="slide_only" tendon2="d_only" polycoef="0.01 2 0 0 0"/>
+  </equality>
+</mujoco>)";
+  const io::ModelFile file = io::read_mjcf_file(path);
+  const model::Model& model = file.model;
+  ASSERT_EQ(model.constraints().size(), 2u);
+  const auto& held = std::get<model::JointCoupler>(model.constraints()[0]);
+  const auto& geared = std::get<model::JointCoupler>(model.constraints()[1]);
+  MuJoCoModel mj(path);
+  ASSERT_NE(mj.m, nullptr) << mj.message;
+  mj.m->opt.disableflags &= ~mjDSBL_CONSTRAINT;
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (const double off : {0.0, 0.01}) {
+    // q_b and q_d free, q_a and q_c from the couplers (off them by `off`).
+    VecX q(model.nq());
+    const auto at = [&](const std::string& joint) -> double& {
+      return q[model.joint(model.joint_index(joint)).q_index];
+    };
+    at(held.joint_b) = unit(random);
+    at(geared.joint_b) = unit(random);
+    at(held.joint_a) = held.ratio * at(held.joint_b) + held.offset + off;
+    at(geared.joint_a) = geared.ratio * at(geared.joint_b) + geared.offset + off;
+    const VecX qpos = mujoco_configuration(model, mj.m, q);
+    for (int i = 0; i < model.nq(); ++i) mj.d->qpos[i] = qpos[i];
+    mj_forward(mj.m, mj.d);
+    int rows = 0;
+    for (int r = 0; r < mj.d->nefc; ++r) {
+      if (mj.d->efc_type[r] != mjCNSTR_EQUALITY) continue;
+      ++rows;
+      // O(1) lengths: round-off ~1e-16.
+      if (off == 0.0) {
+        EXPECT_NEAR(mj.d->efc_pos[r], 0.0, 1e-14) << "row " << r;
+      } else {
+        EXPECT_GT(std::abs(mj.d->efc_pos[r]), 1e-3) << "row " << r;
+      }
+    }
+    EXPECT_EQ(rows, 2);
+  }
 }
 
 // Mesh geoms (binary STL): a hexagonal prism turned by its geom, a cube scaled per axis, a wedge

@@ -316,6 +316,28 @@ TEST(SymbolicEquations, SymbolsEvaluateAtTheModelsValues) {
   expect_matches_numerics(file.model, e, 3, 2);
 }
 
+// Fixed tendons: −nᵢ (k (L − rest) + c L̇) on each joint, over two hinges and a slide (the
+// coefficient of the slide in rad/m), with numbers and with every parameter a symbol.
+TEST(SymbolicEquations, FixedTendonsEqualTheNumericEngine) {
+  const io::ModelFile file = io::read_model_file(std::string(MOMENTA_SOURCE_DIR) +
+                                                 "/tests/data/models/tendon_pendulum.yaml");
+  for (const bool symbols : {false, true}) {
+    SCOPED_TRACE(symbols);
+    symbolic::EquationOptions options;
+    options.all_symbols = symbols;
+    options.newton_euler = true;
+    const symbolic::Equations e = symbolic::derive_equations(file.model, options);
+    expect_matches_numerics(file.model, e, 29, 4);
+    if (!symbols) continue;
+    std::vector<std::string> names;
+    for (const auto& p : e.parameters()) names.push_back(p.name);
+    for (const char* name : {"k_cord", "c_cord", "rest_cord", "offset_cord", "n_cord_slide",
+                             "n_cord_shoulder", "n_cord_elbow"}) {
+      EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
+    }
+  }
+}
+
 // A textbook form and the printed equation are the same expression: both parsed by GiNaC and
 // subtracted, lhs − rhs of each, the difference expands to 0.
 void expect_same_equation(const std::string& printed, const std::string& expected) {
