@@ -46,6 +46,8 @@ struct QuietExit {
 
 /// `momenta kinematics MODEL --point BODY:x,y,z --frame BODY`: rotating-frame kinematics.
 void add_kinematics_command(CLI::App& app);
+/// `momenta impact MODEL --at BODY:x,y,z --impulse Px,Py,Pz`: impulse and momentum.
+void add_impact_command(CLI::App& app);
 /// `momenta diagram MODEL --body NAME [-o fbd.svg]`: free-body and kinetic diagrams.
 void add_diagram_command(CLI::App& app);
 

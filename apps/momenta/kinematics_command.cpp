@@ -10,15 +10,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "body_point_argument.hpp"
 #include "commands.hpp"
 #include "model_argument.hpp"
 #include "momenta/common/error.hpp"
-#include "momenta/common/suggest.hpp"
 #include "momenta/dynamics/momentum.hpp"
 #include "momenta/dynamics/relative_kinematics.hpp"
 #include "momenta/frontend/model_loading.hpp"
@@ -39,39 +38,6 @@ struct KinematicsOptions {
   InstantOptions instant;
   bool json = false;
 };
-
-// A body of the model by name, or a message with the names it has.
-int body_named(const model::Model& model, const std::string& name, const char* option) {
-  if (const auto b = model.find_body(name)) return *b;
-  std::vector<std::string_view> names;
-  for (const model::Body& b : model.bodies()) names.push_back(b.name);
-  throw CLI::ValidationError(
-      option, fmt::format("no body named '{}'{}; the model has {}", name, did_you_mean(name, names),
-                          fmt::join(names, ", ")));
-}
-
-// "BODY" or "BODY:x,y,z" (m, in the body's frame).
-std::pair<int, Vec3> parse_point(const model::Model& model, const std::string& text) {
-  const auto colon = text.find(':');
-  const std::string name = text.substr(0, colon);
-  const int body = body_named(model, name, "--point");
-  if (body == 0) throw CLI::ValidationError("--point", "the world is not a moving body");
-  Vec3 p = Vec3::Zero();
-  if (colon != std::string::npos) {
-    const std::string coordinates = text.substr(colon + 1);
-    double x, y, z;
-    char tail;
-    if (std::sscanf(coordinates.c_str(), "%lf,%lf,%lf%c", &x, &y, &z, &tail) != 3 ||
-        !Vec3(x, y, z).allFinite() || Vec3(x, y, z).cwiseAbs().maxCoeff() > io::kLargestNumber) {
-      throw CLI::ValidationError(
-          "--point", fmt::format("'{}': expected BODY:x,y,z with three finite numbers (m, in "
-                                 "the body's frame), e.g. {}:0,0,0.1",
-                                 text, name));
-    }
-    p = Vec3(x, y, z);
-  }
-  return {body, p};
-}
 
 struct Result {
   std::string body_name, frame_name;
@@ -168,7 +134,7 @@ json result_json(const std::string& model_name, const Result& r) {
 void run(const KinematicsOptions& o) {
   const io::ModelFile file = load_model(o.model);
   const model::Model& model = file.model;
-  const auto [body, p_BoP_B] = parse_point(model, o.point);
+  const auto [body, p_BoP_B] = parse_body_point(model, o.point, "--point");
   const int frame = body_named(model, o.frame, "--frame");
   const integrate::State state = instant_of(file, o.instant);
 

@@ -55,6 +55,7 @@ constexpr std::pair<std::string_view, std::string_view> kCommandSummaries[] = {
     {"campbell", "a rotor's whirl frequencies against spin speed; critical speeds"},
     {"steady", "steady precession of a symmetric top"},
     {"kinematics", "a point's motion seen from a rotating body's frame"},
+    {"impact", "impulse and momentum: speeds after an impulse, the joints' impulses"},
     {"diagram", "a body's free-body and kinetic diagrams (SVG)"},
     {"equations", "equations of motion in symbols, LaTeX or generated code"},
     {"export", "write a model as MJCF (MuJoCo) or URDF (ROS)"},
@@ -96,6 +97,7 @@ int main(int argc, char** argv) {
   momenta::cli::add_campbell_command(app);
   momenta::cli::add_steady_command(app);
   momenta::cli::add_kinematics_command(app);
+  momenta::cli::add_impact_command(app);
   momenta::cli::add_diagram_command(app);
   momenta::cli::add_export_command(app);
   momenta::cli::add_equations_command(app);  // without MOMENTA_WITH_SYMBOLIC: says how to get it

@@ -582,6 +582,9 @@ class Workspace:
     def generalized_gravity(self, q: ArrayLike) -> numpy.ndarray:
         """Generalized gravity g(q) = ∂V/∂q."""
         ...
+    def impulsive_motion(self, q: ArrayLike, v: ArrayLike, impulses: list) -> dict:
+        """Impulse and momentum (docs/contacts.md): the speeds just after impulses applied at body points, impulses = [(body, p_BoP_B, P_W), ...] (N·s); returns a dict with v_after, the joints' impulses (joint_impulse_forces, joint_impulse_moments: (num_joints, 3), in W about J'o), constraint_impulses (per row"""
+        ...
     def joint_reactions(self, q: ArrayLike, v: ArrayLike, vdot: ArrayLike, frame: str = 'world', f_ext: object = None) -> tuple:
         """(forces, moments), each (num_joints, 3): the wrench each joint transmits from its parent to its child for the motion (q, v, vdot), the moment about the child-side joint frame's origin, expressed in `frame` (world, joint, child or parent)."""
         ...

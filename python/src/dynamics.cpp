@@ -11,6 +11,7 @@
 #include "momenta/dynamics/crba.hpp"
 #include "momenta/dynamics/data.hpp"
 #include "momenta/dynamics/energy.hpp"
+#include "momenta/dynamics/impulse.hpp"
 #include "momenta/dynamics/kinematics.hpp"
 #include "momenta/dynamics/momentum.hpp"
 #include "momenta/dynamics/point_kinematics.hpp"
@@ -184,6 +185,47 @@ Results are new arrays. Not thread-safe: one workspace per thread.)doc")
           "(forces, moments), each (num_joints, 3): the wrench each joint transmits from its "
           "parent to its child for the motion (q, v, vdot), the moment about the child-side "
           "joint frame's origin, expressed in `frame` (world, joint, child or parent).")
+      .def(
+          "impulsive_motion",
+          [](Workspace& w, const py::handle& q, const py::handle& v, const py::list& impulses) {
+            Storage sq, sv;
+            std::vector<dynamics::PointImpulse> hits;
+            for (const py::handle& item : impulses) {
+              const py::tuple t = py::reinterpret_borrow<py::object>(item).cast<py::tuple>();
+              if (t.size() != 3) {
+                throw py::value_error(
+                    "impulses: a list of (body, point p_BoP_B, impulse in W) triples");
+              }
+              hits.push_back({body_index_arg(w.handle, t[0]), vec3_arg(t[1], "point"),
+                              vec3_arg(t[2], "impulse")});
+            }
+            const dynamics::ImpulsiveMotion r =
+                dynamics::impulsive_motion(w.model(), w.q(q, sq), w.v(v, "v", sv), hits);
+            const int nj = w.model().num_joints();
+            MatX forces(nj, 3), moments(nj, 3);
+            for (int j = 0; j < nj; ++j) {
+              forces.row(j) = r.joint_impulses[static_cast<std::size_t>(j)].force.transpose();
+              moments.row(j) = r.joint_impulses[static_cast<std::size_t>(j)].moment.transpose();
+            }
+            py::dict out;
+            out["v_after"] = to_numpy(r.v_after);
+            out["joint_impulse_forces"] = to_numpy(forces);
+            out["joint_impulse_moments"] = to_numpy(moments);
+            out["constraint_impulses"] = to_numpy(r.constraint_impulses);
+            out["redundant_rows"] = r.redundant_rows;
+            out["drive_impulses"] = to_numpy(r.drive_impulses);
+            out["kinetic_before"] = r.kinetic_before;
+            out["kinetic_after"] = r.kinetic_after;
+            out["impulse_work"] = r.impulse_work;
+            return out;
+          },
+          py::arg("q"), py::arg("v"), py::arg("impulses"),
+          "Impulse and momentum (docs/contacts.md): the speeds just after impulses applied at "
+          "body points, impulses = [(body, p_BoP_B, P_W), ...] (N·s); returns a dict with "
+          "v_after, the joints' impulses (joint_impulse_forces, joint_impulse_moments: "
+          "(num_joints, 3), in W about J'o), constraint_impulses (per row), redundant_rows, "
+          "drive_impulses, kinetic_before, kinetic_after and impulse_work (Kelvin's theorem: "
+          "equals the energy change).")
       .def(
           "forward_kinematics",
           [](Workspace& w, const py::handle& q, const py::object& v, const py::object& vdot) {

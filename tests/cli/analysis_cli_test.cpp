@@ -11,6 +11,7 @@
 #include <iterator>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <fmt/format.h>
@@ -107,6 +108,36 @@ TEST_F(AnalysisCli, KinematicsOfTheTurntableBead) {
   EXPECT_NE(bad.err.find("expected BODY:x,y,z"), std::string::npos) << bad.err;
   const CliRun unknown = momenta("kinematics " + model + " --point bead --frame turntabel");
   EXPECT_NE(unknown.err.find("did you mean 'turntable'"), std::string::npos) << unknown.err;
+}
+
+// The struck rod (examples/struck_rod.yaml: 4 kg, 1.2 m, I_O = m L²/3 = 1.92 kg·m²) struck by
+// 4 N·s at its centre of percussion d = 0.8 m: θ̇ = −P d / I_O, no impulse at the pin; at its tip
+// θ̇ = −2.5 rad/s and the pin's impulse R = P (m d L / (2 I_O) − 1) = 2 N·s along P. Kelvin's work
+// equals the energy gained. A point or vector that is not three numbers is refused, naming it.
+TEST_F(AnalysisCli, ImpactOnTheStruckRodAsTheTextbookHasIt) {
+  const std::string model = example("struck_rod");
+  for (const auto& [depth, rate, pin] :
+       {std::tuple{0.8, -4.0 * 0.8 / 1.92, 0.0}, std::tuple{1.2, -2.5, 2.0}}) {
+    const CliRun r =
+        momenta(fmt::format("impact {} --at rod:0,0,{} --impulse 4,0,0 --json", model, -depth));
+    ASSERT_EQ(r.code, 0) << r.err;
+    const json j = json::parse(r.out);
+    EXPECT_NEAR(j.at("v_after").at("pin.angle_rate").get<double>(), rate, 1e-14);
+    EXPECT_NEAR(j.at("joint_impulses").at("pin").at("force").at(0).get<double>(), pin, 1e-14);
+    const double gained = j.at("kinetic_energy").at("change").get<double>();
+    EXPECT_NEAR(gained, 0.5 * 1.92 * rate * rate, 1e-14);
+    EXPECT_NEAR(j.at("impulse_work").get<double>(), gained, 1e-14);
+  }
+  const CliRun text = momenta("impact " + model + " --at rod:0,0,-0.8 --impulse 4,0,0");
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("pin.angle_rate  0 → -1.66667 rad/s"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("pin  force [0, 0, 0] N·s"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("gained 2.66667 J"), std::string::npos) << text.out;
+  const CliRun bad = momenta("impact " + model + " --at rod --impulse 4,0");
+  EXPECT_NE(bad.code, 0);
+  EXPECT_NE(bad.err.find("--impulse: '4,0': expected x,y,z"), std::string::npos) << bad.err;
+  const CliRun world = momenta("impact " + model + " --at world --impulse 4,0,0");
+  EXPECT_NE(world.err.find("the world is not a moving body"), std::string::npos) << world.err;
 }
 
 // Round-off is not shown as a value (one rule, common/number_text.hpp): the flexible satellite's

@@ -10,7 +10,7 @@ import pytest
 
 import momenta
 
-from conftest import EXAMPLES, run_cli
+from conftest import EXAMPLES, cli_json, run_cli
 
 needs_symbolic = pytest.mark.skipif(not momenta.with_symbolic,
                                     reason="built with MOMENTA_WITH_SYMBOLIC=OFF")
@@ -52,6 +52,22 @@ def test_relative_kinematics_is_the_command_lines():
     np.testing.assert_allclose(k["v_relative"], [0.5, 0, 0], atol=1e-15)
     np.testing.assert_allclose(k["a_coriolis"], [0, 2.0, 0], atol=1e-14)
     np.testing.assert_allclose(k["a_centripetal"], [-0.4, 0, 0], atol=1e-14)
+
+
+def test_impulsive_motion_is_the_command_lines():
+    """The struck rod at its tip: the same numbers as `momenta impact --json` (ω = 2.5 rad/s, the
+    pin's impulse 2 N·s along the blow), and Kelvin's work equal to the energy gained."""
+    path = EXAMPLES / "struck_rod.yaml"
+    ws = momenta.Workspace(momenta.load_model(path))
+    r = ws.impulsive_motion([0.0], [0.0], [("rod", [0, 0, -1.2], [4.0, 0, 0])])
+    cli = cli_json("impact", path, "--at", "rod:0,0,-1.2", "--impulse", "4,0,0")
+    assert r["v_after"][0] == cli["v_after"]["pin.angle_rate"]
+    np.testing.assert_allclose(r["v_after"], [-2.5], rtol=1e-15)
+    np.testing.assert_allclose(r["joint_impulse_forces"][0], [2.0, 0, 0], atol=1e-14)
+    assert r["joint_impulse_forces"][0][0] == cli["joint_impulses"]["pin"]["force"][0]
+    assert r["impulse_work"] == pytest.approx(r["kinetic_after"] - r["kinetic_before"], rel=1e-14)
+    with pytest.raises(ValueError, match="triples"):
+        ws.impulsive_motion([0.0], [0.0], [("rod", [0, 0, 0])])
 
 
 def same_expression(a, b, names):

@@ -1,0 +1,63 @@
+#pragma once
+// What an impulse does to a mechanism in one instant (impulse and momentum: Beer & Johnston,
+// Vector Mechanics, ch. 17; Featherstone 2008, §11.3). During the impact the configuration does
+// not move and every finite force — gravity, springs, dampers, finite drives — gives no impulse;
+// the speeds jump by Δv so that the generalized momentum balances the impulses:
+//
+//   M(q) Δv = Σ J_Pᵀ P + Gᵀ Λ,     G (v⁻ + Δv) = 0,     Δv = 0 on prescribed joints,
+//
+// P an impulse (N·s) applied at a point of a body, J_P that point's Jacobian, G the constraints'
+// velocity rows (dynamics/constraints.hpp) and Λ their impulses (the rows' multipliers
+// integrated over the instant: N·s on a translation row, N·m·s on a rotation row). The joints
+// carry impulsive reactions too — a pin's impulse on its rod — found by the Newton–Euler
+// recursion with Δv in place of v̇ and no velocity or gravity terms. A prescribed joint keeps its
+// speed: its drive gives the impulse that takes.
+//
+// Kelvin's theorem checks the result: the kinetic energy changes by the work of the applied
+// impulses at the mean of the points' velocities before and after, Σ ½ P · (v_P⁻ + v_P⁺), plus
+// the drives' impulses at their joints' (unchanged) speeds; the constraints' impulses do none on
+// a state that satisfies them.
+
+#include <span>
+#include <vector>
+
+#include "momenta/dynamics/data.hpp"
+#include "momenta/dynamics/reactions.hpp"
+
+namespace momenta::dynamics {
+
+/// An impulse applied at a point P fixed in body b: p_BoP_B (m, in B), impulse (N·s, in W).
+struct PointImpulse {
+  int body = 0;
+  Vec3 p_BoP_B = Vec3::Zero();
+  Vec3 impulse_W = Vec3::Zero();
+};
+
+/// The state just after the impulses, and every impulse the mechanism carries.
+struct ImpulsiveMotion {
+  VecX v_before, v_after;  ///< v⁻, v⁺
+  /// Per constraint row (the layout of ConstraintRows): its impulse Λ (N·s or N·m·s). Where rows
+  /// are redundant (a parallelogram's) the split among them is the least-norm one; their sum on
+  /// the bodies is unique.
+  VecX constraint_impulses;
+  int redundant_rows = 0;
+  /// Per joint: the impulse it transmits to its child, force (N·s) and moment (N·m·s) about J''s
+  /// origin, in W — the part along its motion is a prescribed joint's drive impulse.
+  std::vector<JointReaction> joint_impulses;
+  /// Per velocity coordinate: the drive impulse a prescribed joint gives to keep its speed
+  /// (N·s or N·m·s; 0 on free coordinates).
+  VecX drive_impulses;
+  double kinetic_before = 0.0, kinetic_after = 0.0;  ///< J (armature included)
+  /// The impulses' work (J): Σ ½ P · (v_P⁻ + v_P⁺) over the applied impulses, plus each drive
+  /// impulse times its joint's unchanged speed. Equals kinetic_after − kinetic_before.
+  double impulse_work = 0.0;
+};
+
+/// The response of the model at (q, v) to the impulses. `q` must satisfy the constraints (v need
+/// not: the rows' G v⁻ is removed, as a constrained impact does). Throws InvalidArgument for a
+/// body index out of range, a non-finite impulse or state, or wrong sizes; NumericalError where
+/// the free coordinates' mass matrix is singular.
+ImpulsiveMotion impulsive_motion(const Model& model, VecRef q, VecRef v,
+                                 std::span<const PointImpulse> impulses);
+
+}  // namespace momenta::dynamics

@@ -1,0 +1,176 @@
+#include "momenta/dynamics/impulse.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+#include <Eigen/Cholesky>
+#include <Eigen/QR>
+
+#include "momenta/common/error.hpp"
+#include "momenta/dynamics/constraints.hpp"
+#include "momenta/dynamics/crba.hpp"
+#include "momenta/dynamics/kinematics.hpp"
+#include "momenta/dynamics/point_kinematics.hpp"
+
+namespace momenta::dynamics {
+namespace {
+
+void check_arguments(const Model& model, VecRef q, VecRef v,
+                     std::span<const PointImpulse> impulses) {
+  if (q.size() != model.nq() || v.size() != model.nv()) {
+    throw InvalidArgument(
+        fmt::format("impulsive_motion: q has {} and v {} entries; the model has "
+                    "nq = {}, nv = {}",
+                    q.size(), v.size(), model.nq(), model.nv()));
+  }
+  if (!q.allFinite() || !v.allFinite()) {
+    throw InvalidArgument("impulsive_motion: the state is not finite");
+  }
+  for (const PointImpulse& p : impulses) {
+    if (p.body <= 0 || p.body >= model.num_bodies()) {
+      throw InvalidArgument(
+          fmt::format("impulsive_motion: body {} is not a moving body of the model (1 .. {})",
+                      p.body, model.num_bodies() - 1));
+    }
+    if (!p.p_BoP_B.allFinite() || !p.impulse_W.allFinite()) {
+      throw InvalidArgument(
+          fmt::format("impulsive_motion: the impulse on body '{}' or its point is not finite",
+                      model.body(p.body).name));
+    }
+  }
+}
+
+// The velocity coordinates no prescribed joint holds.
+std::vector<int> free_coordinates(const Model& model) {
+  std::vector<int> free;
+  for (const model::Joint& j : model.joints()) {
+    if (j.is_prescribed()) continue;
+    for (int k = 0; k < j.nv(); ++k) free.push_back(j.v_index + k);
+  }
+  return free;
+}
+
+// The points' velocities in W at (q, v), after forward_kinematics(q, v).
+std::vector<Vec3> point_velocities(const Model& model, Data& data, VecRef q, VecRef v,
+                                   std::span<const PointImpulse> impulses) {
+  forward_kinematics(model, data, q, v);
+  std::vector<Vec3> out;
+  MatX J(6, model.nv());
+  for (const PointImpulse& p : impulses) {
+    J.setZero();
+    frame_jacobian(model, data, p.body, p.p_BoP_B, J);
+    out.push_back(J.bottomRows<3>() * v);
+  }
+  return out;
+}
+
+}  // namespace
+
+ImpulsiveMotion impulsive_motion(const Model& model, VecRef q, VecRef v,
+                                 std::span<const PointImpulse> impulses) {
+  check_arguments(model, q, v, impulses);
+  const int nv = model.nv();
+  Data data(model);
+  ImpulsiveMotion r;
+  r.v_before = v;
+
+  // Σ J_Pᵀ P, and the points' velocities before.
+  const std::vector<Vec3> before = point_velocities(model, data, q, v, impulses);
+  VecX applied = VecX::Zero(nv);
+  {
+    MatX J(6, nv);
+    for (const PointImpulse& p : impulses) {
+      J.setZero();
+      frame_jacobian(model, data, p.body, p.p_BoP_B, J);
+      applied += J.bottomRows<3>().transpose() * p.impulse_W;
+    }
+  }
+
+  // The free coordinates' mass matrix and constraint rows.
+  const MatX M = crba(model, data, q);
+  const std::vector<int> free = free_coordinates(model);
+  const int nf = static_cast<int>(free.size());
+  MatX M_ff(nf, nf);
+  VecX b_f(nf);
+  for (int i = 0; i < nf; ++i) {
+    b_f[i] = applied[free[i]];
+    for (int j = 0; j < nf; ++j) M_ff(i, j) = M(free[i], free[j]);
+  }
+  const Eigen::LDLT<MatX> M_solve(M_ff);
+  if (M_solve.info() != Eigen::Success || !(M_solve.vectorD().minCoeff() > 0.0)) {
+    throw NumericalError(
+        "impulsive_motion: the mass matrix of the free coordinates is singular (a massless "
+        "body that carries nothing?)");
+  }
+  ConstraintRows rows(model);
+  if (rows.count > 0) constraint_equations(model, data, q, rows, RowTerms::jacobian);
+  MatX G_f(rows.count, nf);
+  for (int i = 0; i < nf; ++i) G_f.col(i) = rows.G.col(free[i]);
+
+  // Δv_f = M_ff⁻¹ (b_f + G_fᵀ Λ), with G_f M_ff⁻¹ G_fᵀ Λ = −G v⁻ − G_f M_ff⁻¹ b_f: the rows'
+  // impulses by a rank-revealing solve (least-norm where rows are redundant).
+  VecX dv_f = M_solve.solve(b_f);
+  r.constraint_impulses = VecX::Zero(rows.count);
+  if (rows.count > 0) {
+    const MatX M_inv_Gt = M_solve.solve(G_f.transpose());
+    const MatX A = G_f * M_inv_Gt;
+    Eigen::CompleteOrthogonalDecomposition<MatX> A_solve(A);
+    A_solve.setThreshold(1e-10);
+    const VecX rhs = -(rows.G * v) - G_f * dv_f;
+    r.constraint_impulses = A_solve.solve(rhs);
+    r.redundant_rows = rows.count - static_cast<int>(A_solve.rank());
+    dv_f += M_inv_Gt * r.constraint_impulses;
+  }
+  VecX dv = VecX::Zero(nv);
+  for (int i = 0; i < nf; ++i) dv[free[i]] = dv_f[i];
+  r.v_after = v + dv;
+
+  // The drives' impulses: what the generalized momentum balance leaves at the prescribed
+  // coordinates.
+  VecX constraint_tau = VecX::Zero(nv);
+  if (rows.count > 0) constraint_tau = rows.G.transpose() * r.constraint_impulses;
+  r.drive_impulses = VecX::Zero(nv);
+  const VecX balance = M * dv - applied - constraint_tau;
+  for (const model::Joint& j : model.joints()) {
+    if (!j.is_prescribed()) continue;
+    r.drive_impulses.segment(j.v_index, j.nv()) = balance.segment(j.v_index, j.nv());
+  }
+
+  // The joints' impulses: Newton–Euler with Δv for v̇ at rest, under the applied and constraint
+  // impulses as wrenches, less the same at rest alone (gravity, which gives no impulse).
+  std::vector<Vec6> f_ext(static_cast<std::size_t>(model.num_bodies()), Vec6::Zero());
+  forward_kinematics(model, data, q);
+  for (const PointImpulse& p : impulses) {
+    const Vec3 P_B = data.X_WB[p.body].R.transpose() * p.impulse_W;
+    f_ext[p.body].head<3>() += p.p_BoP_B.cross(P_B);
+    f_ext[p.body].tail<3>() += P_B;
+  }
+  VecX coupler_tau = VecX::Zero(nv);
+  if (rows.count > 0) {
+    add_constraint_forces(model, data, rows, r.constraint_impulses, f_ext, coupler_tau);
+  }
+  const VecX zero = VecX::Zero(nv);
+  joint_reactions(model, data, q, zero, zero);
+  std::vector<JointReaction> at_rest;
+  for (int j = 0; j < model.num_joints(); ++j) {
+    at_rest.push_back(joint_reaction(model, data, j, ReactionFrame::world));
+  }
+  joint_reactions(model, data, q, zero, dv, f_ext);
+  for (int j = 0; j < model.num_joints(); ++j) {
+    const JointReaction all = joint_reaction(model, data, j, ReactionFrame::world);
+    const JointReaction& rest = at_rest[static_cast<std::size_t>(j)];
+    r.joint_impulses.push_back({all.force - rest.force, all.moment - rest.moment});
+  }
+
+  // Energies and Kelvin's work.
+  r.kinetic_before = 0.5 * v.dot(M * v);
+  r.kinetic_after = 0.5 * r.v_after.dot(M * r.v_after);
+  const std::vector<Vec3> after = point_velocities(model, data, q, r.v_after, impulses);
+  for (std::size_t k = 0; k < impulses.size(); ++k) {
+    r.impulse_work += 0.5 * impulses[k].impulse_W.dot(before[k] + after[k]);
+  }
+  r.impulse_work += r.drive_impulses.dot(v);  // a drive's speed does not change
+  return r;
+}
+
+}  // namespace momenta::dynamics

@@ -1,0 +1,221 @@
+// dynamics::impulsive_motion against the impulse–momentum principle's closed forms (Beer &
+// Johnston ch. 17): a rod struck about its pin — its rate P d / I_O, the pin's impulse, zero at
+// the centre of percussion d = 2L/3 — with a rotor's armature and on a carriage whose drive holds
+// its speed; a free body's momentum jumps by P and its angular momentum about G by r × P; on the
+// constrained classics, the speeds after equal those of an independent null-space form and keep
+// the loops closed; Kelvin's theorem (ΔT = Σ ½ P·(v⁻ + v⁺)) on random trees of every joint type.
+
+#include "momenta/dynamics/impulse.hpp"
+
+#include <random>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <Eigen/LU>
+
+#include "momenta/common/error.hpp"
+#include "momenta/dynamics/constraints.hpp"
+#include "momenta/dynamics/crba.hpp"
+#include "momenta/dynamics/kinematics.hpp"
+#include "momenta/dynamics/momentum.hpp"
+#include "momenta/dynamics/point_kinematics.hpp"
+#include "momenta/io/model_file.hpp"
+#include "momenta/system/multibody_system.hpp"
+#include "momenta_test/hand_models.hpp"
+#include "momenta_test/multibody_models.hpp"
+#include "momenta_test/tolerance.hpp"
+
+namespace momenta::dynamics::impulse_test {
+namespace {
+
+using model::Joint;
+using model::JointType;
+
+// A uniform rod of mass m and length L hanging from a pin about y at the world origin (or at a
+// carriage on a rail along x, prescribed to move at constant speed); its centre L/2 below.
+struct Rod {
+  double m = 2.0, L = 1.2, armature = 0.0;
+  bool on_carriage = false;
+  double I_O() const { return m * L * L / 3.0 + armature; }
+  Model build() const {
+    model::ModelBuilder b;
+    std::string parent = "world";
+    if (on_carriage) {
+      b.add_signal(model::Signal("rail", model::RampSignal{.slope = 0.5, .offset = 0.0}));
+      b.add_body("carriage", inertia::MassProperties(5.0, Vec3::Zero(), 0.1 * Mat3::Identity()));
+      Joint rail =
+          test::make_joint("rail", JointType::prismatic, "world", "carriage", Vec3::UnitX());
+      rail.prescribed_signals = {"rail"};
+      b.add_joint(rail);
+      parent = "carriage";
+    }
+    const Mat3 I_G = Vec3(m * L * L / 12.0, m * L * L / 12.0, 1e-6).asDiagonal();
+    b.add_body("rod", inertia::MassProperties(m, Vec3(0, 0, -L / 2), I_G));
+    Joint pin = test::make_joint("pin", JointType::revolute, parent, "rod", Vec3::UnitY());
+    pin.armature = armature;
+    b.add_joint(pin);
+    return b.build();
+  }
+};
+
+// Struck at rest at depth d by P along x: the point moves at (−θ̇ d, 0, 0), so θ̇ = −P d / I_O;
+// the rod's momentum m v̄ = P + R gives the pin's impulse R = P (m d L / (2 I_O) − 1).
+TEST(ImpulsiveMotion, ARodStruckAboutItsPinAsTheTextbookHasIt) {
+  for (const Rod rod : {Rod{}, Rod{.armature = 0.15}, Rod{.on_carriage = true}}) {
+    const Model model = rod.build();
+    const int pin = model.joint_index("pin");
+    const int rate = model.joint(pin).v_index;
+    for (const double d : {0.3 * rod.L, 2.0 * rod.L / 3.0, rod.L}) {
+      SCOPED_TRACE(testing::Message() << "armature " << rod.armature << ", carriage "
+                                      << rod.on_carriage << ", d = " << d);
+      const double P = 4.0;
+      VecX q = VecX::Zero(model.nq()), v = VecX::Zero(model.nv());
+      if (rod.on_carriage) v[0] = 0.5;  // the carriage's prescribed speed
+      const PointImpulse hit{model.body_index("rod"), Vec3(0, 0, -d), Vec3(P, 0, 0)};
+      const ImpulsiveMotion r = impulsive_motion(model, q, v, std::span(&hit, 1));
+      // A few products of O(1) numbers: round-off ~1e-15.
+      EXPECT_NEAR(r.v_after[rate], -P * d / rod.I_O(), 1e-14);
+      const double R = P * (rod.m * d * rod.L / (2.0 * rod.I_O()) - 1.0);
+      const JointReaction& J = r.joint_impulses[static_cast<std::size_t>(pin)];
+      EXPECT_NEAR(J.force.x(), R, 1e-14);
+      EXPECT_NEAR(J.force.z(), 0.0, 1e-14);
+      if (rod.armature == 0.0 && d == 2.0 * rod.L / 3.0) {
+        EXPECT_NEAR(R, 0.0, 1e-15);
+      }
+      // The pin turns freely: the only impulsive moment about its axis is the one that spins
+      // the rotor up, −I_a θ̇ on the rod (none without armature).
+      EXPECT_NEAR(J.moment.y(), -rod.armature * r.v_after[rate], 1e-14);
+      // ΔT = ½ I_O θ̇² (+ m v_c · (−θ̇ L/2), the rod's new swing against the carriage's speed
+      // v_c) = Kelvin's ½ P·(v_P⁻ + v_P⁺) (+ the drive impulse's work R v_c).
+      const double v_c = rod.on_carriage ? 0.5 : 0.0;
+      EXPECT_NEAR(r.kinetic_after - r.kinetic_before,
+                  P * P * d * d / (2.0 * rod.I_O()) + rod.m * v_c * P * d * rod.L / (2 * rod.I_O()),
+                  1e-14);
+      EXPECT_NEAR(r.impulse_work, r.kinetic_after - r.kinetic_before, 1e-14);
+      if (rod.on_carriage) {
+        // The carriage keeps its speed; its drive gives the impulse the pin passes down to it.
+        EXPECT_EQ(r.v_after[0], 0.5);
+        EXPECT_NEAR(r.drive_impulses[0], R, 1e-14);
+      }
+    }
+  }
+}
+
+// A free body (turned, its centre of mass off its origin) struck off its centre: ΔL = P and
+// ΔH_G = (p_P − p_G) × P, the impulse–momentum principle for a rigid body.
+TEST(ImpulsiveMotion, AFreeBodysMomentaJumpByTheImpulseAndItsMoment) {
+  model::ModelBuilder b;
+  b.set_gravity(Vec3(0, 0, -9.81));
+  b.add_body("box",
+             inertia::MassProperties(2.0, Vec3(0.1, -0.05, 0.2), Vec3(0.1, 0.2, 0.3).asDiagonal()));
+  b.add_joint(test::make_joint("float", JointType::free, "world", "box"));
+  const Model model = b.build();
+  std::mt19937 rng(3);
+  const VecX q = test::random_configuration(model, rng);
+  const VecX v = test::random_vector(model.nv(), rng);
+  const PointImpulse hit{1, Vec3(0.3, 0.2, -0.1), Vec3(1.5, -0.7, 2.2)};
+  const ImpulsiveMotion r = impulsive_motion(model, q, v, std::span(&hit, 1));
+  Data data(model);
+  const Momentum before = momentum(model, data, q, v);
+  const Momentum after = momentum(model, data, q, r.v_after);
+  forward_kinematics(model, data, q);
+  const Vec3 p_P = data.X_WB[1].apply(hit.p_BoP_B);
+  EXPECT_MATRIX_NEAR(after.linear - before.linear, hit.impulse_W, 1e-14);
+  EXPECT_MATRIX_NEAR(after.angular_about_com - before.angular_about_com,
+                     (p_P - before.p_WoScm_W).cross(hit.impulse_W), 1e-14);
+  EXPECT_TRUE(r.joint_impulses[0].force.isZero(1e-14));  // a free joint carries nothing
+  EXPECT_NEAR(r.impulse_work, r.kinetic_after - r.kinetic_before, 1e-13);
+}
+
+// The constrained classics at their consistent initial state, struck at a body's point: the
+// speeds after satisfy G v⁺ = 0 and equal the null-space form v⁺ = N (Nᵀ M N)⁻¹ Nᵀ (M v⁻ + J_Pᵀ P),
+// N spanning G's null space (the four-bar's driven crank held) — a second algorithm, in
+// independent coordinates. Redundant rows are counted as the constraint solver counts them;
+// Kelvin's theorem holds.
+TEST(ImpulsiveMotion, ConstrainedMechanismsAgreeWithTheNullSpaceForm) {
+  for (const char* name : {"slider_crank", "four_bar", "parallelogram_swing", "geared_pair"}) {
+    SCOPED_TRACE(name);
+    const io::ModelFile file =
+        io::read_model_file(test::source_dir() + "/examples/constraints/" + name + ".yaml");
+    const Model& model = file.model;
+    system::MultibodySystem system(model);
+    VecX q = model.initial_q(), v = model.initial_v();
+    system.make_consistent(0.0, q, v);
+    const int body = model.num_bodies() - 1;
+    const PointImpulse hit{body, Vec3(0.05, 0.02, -0.1), Vec3(0.8, 0.3, -1.1)};
+    const ImpulsiveMotion r = impulsive_motion(model, q, v, std::span(&hit, 1));
+
+    Data data(model);
+    const MatX M = crba(model, data, q);
+    ConstraintRows rows(model);
+    constraint_equations(model, data, q, rows);
+    forward_kinematics(model, data, q);
+    MatX J = MatX::Zero(6, model.nv());
+    frame_jacobian(model, data, body, hit.p_BoP_B, J);
+    // A v = b: the rows, and the prescribed coordinates held at their speeds; v = v0 + N y with
+    // A v0 = b and N spanning A's null space, y minimizing ½ (v − v⁻)ᵀ M (v − v⁻) − Pᵀ J_P v.
+    std::vector<int> held;
+    for (const model::Joint& joint : model.joints()) {
+      for (int k = 0; joint.is_prescribed() && k < joint.nv(); ++k)
+        held.push_back(joint.v_index + k);
+    }
+    MatX A = MatX::Zero(rows.count + static_cast<int>(held.size()), model.nv());
+    VecX b = VecX::Zero(A.rows());
+    A.topRows(rows.count) = rows.G;
+    for (std::size_t k = 0; k < held.size(); ++k) {
+      A(rows.count + static_cast<int>(k), held[k]) = 1.0;
+      b[rows.count + static_cast<int>(k)] = v[held[k]];
+    }
+    const VecX v0 = A.completeOrthogonalDecomposition().solve(b);
+    const MatX N = Eigen::FullPivLU<MatX>(A).kernel();
+    const VecX rhs = N.transpose() * (M * (v - v0) + J.bottomRows<3>().transpose() * hit.impulse_W);
+    const VecX v_after = v0 + N * (N.transpose() * M * N).ldlt().solve(rhs);
+    const double scale = std::max(1.0, v_after.cwiseAbs().maxCoeff());
+    EXPECT_MATRIX_NEAR(r.v_after, v_after, 1e-12 * scale);
+    EXPECT_MATRIX_NEAR(rows.G * r.v_after, VecX::Zero(rows.count), 1e-12 * scale);
+    // The planar loops' out-of-plane rows are redundant: as many as the constraint solver finds.
+    EXPECT_EQ(r.redundant_rows, static_cast<int>(system.constraints()->redundant_rows().size()));
+    EXPECT_NEAR(r.impulse_work, r.kinetic_after - r.kinetic_before,
+                1e-12 * std::max(1.0, r.kinetic_after));
+  }
+}
+
+// Kelvin's theorem on random trees of every joint type, with armature, at random states, two
+// impulses at once: ΔT = Σ ½ P·(v_P⁻ + v_P⁺), a scalar identity the solve does not impose.
+TEST(ImpulsiveMotion, KelvinsTheoremOnRandomTrees) {
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    SCOPED_TRACE(seed);
+    const Model model =
+        test::random_tree(8, seed, test::all_joint_types(), Vec3(0, 0, -9.81), 0.05);
+    std::mt19937 rng(seed);
+    const VecX q = test::random_configuration(model, rng);
+    const VecX v = test::random_vector(model.nv(), rng);
+    const PointImpulse hits[2] = {{3, Vec3(0.1, -0.2, 0.05), Vec3(2.0, -1.0, 0.5)},
+                                  {7, Vec3(-0.1, 0.0, 0.2), Vec3(0.3, 0.9, -1.4)}};
+    const ImpulsiveMotion r = impulsive_motion(model, q, v, hits);
+    EXPECT_NEAR(r.impulse_work, r.kinetic_after - r.kinetic_before,
+                1e-12 * std::max({1.0, r.kinetic_before, r.kinetic_after}));
+    EXPECT_GT(std::abs(r.kinetic_after - r.kinetic_before), 1e-3);  // the impulses do work
+  }
+}
+
+TEST(ImpulsiveMotion, RefusesWhatIsNotAnImpulseOnTheModel) {
+  const Model model = Rod{}.build();
+  const VecX q = VecX::Zero(1), v = VecX::Zero(1);
+  const auto message = [&](const PointImpulse& hit, const VecX& state) {
+    try {
+      impulsive_motion(model, state, v, std::span(&hit, 1));
+    } catch (const InvalidArgument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message({0, Vec3::Zero(), Vec3::UnitX()}, q).find("not a moving body"),
+            std::string::npos);
+  EXPECT_NE(message({1, Vec3::Zero(), Vec3(NAN, 0, 0)}, q).find("not finite"), std::string::npos);
+  EXPECT_NE(message({1, Vec3::Zero(), Vec3::UnitX()}, VecX::Zero(2)).find("q has 2"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace momenta::dynamics::impulse_test
