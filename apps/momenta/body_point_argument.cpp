@@ -36,11 +36,13 @@ int body_named(const model::Model& model, const std::string& name, const char* o
 }
 
 std::pair<int, Vec3> parse_body_point(const model::Model& model, const std::string& text,
-                                      const char* option) {
+                                      const char* option, bool world_allowed) {
   const auto colon = text.find(':');
   const std::string name = text.substr(0, colon);
   const int body = body_named(model, name, option);
-  if (body == 0) throw CLI::ValidationError(option, "the world is not a moving body");
+  if (body == 0 && !world_allowed) {
+    throw CLI::ValidationError(option, "the world is not a moving body");
+  }
   if (colon == std::string::npos) return {body, Vec3::Zero()};
   const std::optional<Vec3> p = three_numbers(text.substr(colon + 1));
   if (!p) {

@@ -13,9 +13,10 @@ namespace momenta::cli {
 /// there are (with a did-you-mean) otherwise.
 int body_named(const model::Model& model, const std::string& name, const char* option);
 
-/// "BODY" or "BODY:x,y,z" (m, in the body's frame) as the moving body's index and p_BoP_B.
+/// "BODY" or "BODY:x,y,z" (m, in the body's frame) as the body's index and p_BoP_B: a moving
+/// body, or the world too where `world_allowed`.
 std::pair<int, Vec3> parse_body_point(const model::Model& model, const std::string& text,
-                                      const char* option);
+                                      const char* option, bool world_allowed = false);
 
 /// "x,y,z": three finite numbers, in `unit` for the message.
 Vec3 parse_vector(const std::string& text, const char* option, const char* unit);

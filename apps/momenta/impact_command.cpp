@@ -1,13 +1,17 @@
-// `momenta impact MODEL --at BODY:x,y,z --impulse Px,Py,Pz [--time T | --state FILE] [--json]`:
-// impulse and momentum (Beer & Johnston ch. 17) — the speeds just after an impulse at a point of
-// a body, the impulses every joint and constraint carries (a pin's impulsive reaction), the drive
-// impulses of prescribed joints, and the kinetic energy gained or lost, checked by Kelvin's
-// theorem. Calls dynamics::impulsive_motion; documented in docs/cli.md.
+// `momenta impact MODEL (--at BODY:x,y,z --impulse Px,Py,Pz | --between A:x,y,z B:x,y,z --normal n
+// --restitution e) [--time T | --state FILE] [--json]`: impulse and momentum (Beer & Johnston
+// ch. 17) — the speeds just after an impulse at a point of a body, or after two bodies' points
+// collide with restitution e; the impulses every joint and constraint carries (a pin's impulsive
+// reaction), the drive impulses of prescribed joints, and the kinetic energy gained or lost,
+// checked by Kelvin's theorem. Calls dynamics::impulsive_motion and restitution_impact;
+// documented in docs/cli.md and docs/contacts.md.
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -30,10 +34,21 @@ using json = nlohmann::ordered_json;
 
 struct ImpactOptions {
   ModelArgument model;
-  std::string at;       // BODY or BODY:x,y,z
-  std::string impulse;  // Px,Py,Pz (N·s, world axes)
+  std::string at;                    // BODY or BODY:x,y,z
+  std::string impulse;               // Px,Py,Pz (N·s, world axes)
+  std::vector<std::string> between;  // A[:x,y,z] B[:x,y,z]
+  std::string normal;                // nx,ny,nz: B is pushed along it
+  std::optional<double> restitution;
   InstantOptions instant;
   bool json = false;
+};
+
+// What struck: an applied impulse, or a collision at a contact (then `impact` is set).
+struct Blow {
+  std::vector<dynamics::PointImpulse> impulses;  // on B, and −P n on A where A moves
+  std::optional<dynamics::PointContact> contact;
+  double restitution = 0.0;
+  std::optional<dynamics::Impact> impact;
 };
 
 // A vector as text shows it (common/number_text.hpp: round-off of `scale` as 0).
@@ -68,12 +83,25 @@ std::string impulse_unit(const model::Model& model, int i) {
   return model::effort_unit(model, i) + "·s";
 }
 
-void print_text(const io::ModelFile& file, double t, int body, const Vec3& p, const Vec3& P,
+void print_text(const io::ModelFile& file, double t, const Blow& blow,
                 const dynamics::ImpulsiveMotion& r,
                 const std::vector<std::pair<std::string, double>>& constraints) {
   const model::Model& model = file.model;
-  fmt::print("{} at t = {:.6g} s: an impulse P = {} N·s (world axes) at {} + {} m\n", file.name, t,
-             vec_text(P), model.body(body).name, vec_text(p));
+  if (const auto& c = blow.contact) {
+    fmt::print("{} at t = {:.6g} s: {} + {} m strikes {} + {} m along n = {}, e = {:.6g}\n",
+               file.name, t, model.body(c->body_a).name, vec_text(c->p_AoPa_A),
+               model.body(c->body_b).name, vec_text(c->p_BoPb_B), vec_text(c->normal_W),
+               blow.restitution);
+    fmt::print(
+        "normal speed {:.6g} m/s (approach) → {:.6g} m/s (separation); normal impulse "
+        "{:.6g} N·s\n",
+        blow.impact->approach_speed, blow.impact->separation_speed, blow.impact->normal_impulse);
+  } else {
+    const dynamics::PointImpulse& hit = blow.impulses.front();
+    fmt::print("{} at t = {:.6g} s: an impulse P = {} N·s (world axes) at {} + {} m\n", file.name,
+               t, vec_text(hit.impulse_W), model.body(hit.body).name, vec_text(hit.p_BoP_B));
+  }
+  const Vec3 P = blow.impulses.front().impulse_W;
   const double v_scale =
       std::max(r.v_before.cwiseAbs().maxCoeff(), r.v_after.cwiseAbs().maxCoeff());
   fmt::print("speeds, just before → just after\n");
@@ -118,7 +146,7 @@ void print_text(const io::ModelFile& file, double t, int body, const Vec3& p, co
              shown_value(r.impulse_work, e_scale));
 }
 
-json result_json(const io::ModelFile& file, double t, int body, const Vec3& p, const Vec3& P,
+json result_json(const io::ModelFile& file, double t, const Blow& blow,
                  const dynamics::ImpulsiveMotion& r,
                  const std::vector<std::pair<std::string, double>>& constraints) {
   const model::Model& model = file.model;
@@ -141,39 +169,92 @@ json result_json(const io::ModelFile& file, double t, int body, const Vec3& p, c
       drives[model.v_name(joint.v_index + k)] = r.drive_impulses[joint.v_index + k];
     }
   }
-  return {{"model", file.name},
-          {"t", t},
-          {"body", model.body(body).name},
-          {"point", vec_json(p)},
-          {"impulse", vec_json(P)},
-          {"v_before", before},
-          {"v_after", after},
-          {"joint_impulses", joints},
-          {"constraint_impulses", constraint_json},
-          {"redundant_rows", r.redundant_rows},
-          {"drive_impulses", drives},
-          {"kinetic_energy",
-           {{"before", r.kinetic_before},
-            {"after", r.kinetic_after},
-            {"change", r.kinetic_after - r.kinetic_before}}},
-          {"impulse_work", r.impulse_work}};
+  json blow_json;
+  if (const auto& c = blow.contact) {
+    blow_json = {{"contact",
+                  {{"body_a", model.body(c->body_a).name},
+                   {"point_a", vec_json(c->p_AoPa_A)},
+                   {"body_b", model.body(c->body_b).name},
+                   {"point_b", vec_json(c->p_BoPb_B)},
+                   {"normal", vec_json(c->normal_W)},
+                   {"restitution", blow.restitution}}},
+                 {"approach_speed", blow.impact->approach_speed},
+                 {"separation_speed", blow.impact->separation_speed},
+                 {"normal_impulse", blow.impact->normal_impulse}};
+  } else {
+    const dynamics::PointImpulse& hit = blow.impulses.front();
+    blow_json = {{"body", model.body(hit.body).name},
+                 {"point", vec_json(hit.p_BoP_B)},
+                 {"impulse", vec_json(hit.impulse_W)}};
+  }
+  json out = {{"model", file.name}, {"t", t}};
+  out.update(blow_json);
+  json rest = {{"v_before", before},
+               {"v_after", after},
+               {"joint_impulses", joints},
+               {"constraint_impulses", constraint_json},
+               {"redundant_rows", r.redundant_rows},
+               {"drive_impulses", drives},
+               {"kinetic_energy",
+                {{"before", r.kinetic_before},
+                 {"after", r.kinetic_after},
+                 {"change", r.kinetic_after - r.kinetic_before}}},
+               {"impulse_work", r.impulse_work}};
+  out.update(rest);
+  return out;
+}
+
+// The blow the options describe: --at and --impulse, or --between, --normal and --restitution.
+Blow blow_of(const model::Model& model, const ImpactOptions& o, const integrate::State& state) {
+  const bool applied = !o.at.empty() || !o.impulse.empty();
+  const bool contact = !o.between.empty() || !o.normal.empty() || o.restitution.has_value();
+  if (applied == contact) {
+    throw CLI::ValidationError(
+        "impact",
+        "give an applied impulse (--at BODY:x,y,z --impulse Px,Py,Pz) or a collision "
+        "(--between A:x,y,z B:x,y,z --normal nx,ny,nz --restitution e), one of them");
+  }
+  Blow blow;
+  if (applied) {
+    if (o.at.empty() || o.impulse.empty()) {
+      throw CLI::ValidationError("impact", "an applied impulse needs both --at and --impulse");
+    }
+    const auto [body, p] = parse_body_point(model, o.at, "--at");
+    blow.impulses.push_back(
+        {body, p, parse_vector(o.impulse, "--impulse", "N·s, in the world's axes")});
+    return blow;
+  }
+  if (o.between.size() != 2 || o.normal.empty() || !o.restitution) {
+    throw CLI::ValidationError(
+        "impact", "a collision needs --between A:x,y,z B:x,y,z, --normal and --restitution");
+  }
+  const auto [a, p_a] = parse_body_point(model, o.between[0], "--between", true);
+  const auto [b, p_b] = parse_body_point(model, o.between[1], "--between");
+  Vec3 n = parse_vector(o.normal, "--normal", "the direction B is pushed, in the world's axes");
+  if (!(n.norm() > 0.0)) throw CLI::ValidationError("--normal", "the normal is zero");
+  n.normalize();
+  blow.contact = dynamics::PointContact{a, p_a, b, p_b, n};
+  blow.restitution = *o.restitution;
+  blow.impact =
+      dynamics::restitution_impact(model, state.q, state.v, *blow.contact, blow.restitution);
+  blow.impulses.push_back({b, p_b, blow.impact->normal_impulse * n});
+  return blow;
 }
 
 void run(const ImpactOptions& o) {
   const io::ModelFile file = load_model(o.model);
   const model::Model& model = file.model;
-  const auto [body, p_BoP_B] = parse_body_point(model, o.at, "--at");
-  const Vec3 P = parse_vector(o.impulse, "--impulse", "N·s, in the world's axes");
   const integrate::State state = instant_of(file, o.instant);
-  const dynamics::PointImpulse hit{body, p_BoP_B, P};
+  const Blow blow = blow_of(model, o, state);
   const dynamics::ImpulsiveMotion r =
-      dynamics::impulsive_motion(model, state.q, state.v, std::span(&hit, 1));
+      blow.impact ? blow.impact->motion
+                  : dynamics::impulsive_motion(model, state.q, state.v, blow.impulses);
   const auto constraints = constraint_impulses(model, state.q, r.constraint_impulses);
   if (o.json) {
-    fmt::print("{}\n", json_text(result_json(file, state.t, body, p_BoP_B, P, r, constraints),
-                                 ListSpacing::spaced));
+    fmt::print("{}\n",
+               json_text(result_json(file, state.t, blow, r, constraints), ListSpacing::spaced));
   } else {
-    print_text(file, state.t, body, p_BoP_B, P, r, constraints);
+    print_text(file, state.t, blow, r, constraints);
   }
 }
 
@@ -186,20 +267,30 @@ void add_impact_command(CLI::App& app) {
       "Impulse and momentum: the speeds just after an impulse at a body's point, the impulses "
       "the joints and constraints carry, the kinetic energy gained or lost");
   add_model_argument(command, options->model);
+  command->add_option("--at", options->at,
+                      "BODY or BODY:x,y,z — where an applied impulse acts: a point fixed in a "
+                      "body (m, in the body's frame)");
+  command->add_option("--impulse", options->impulse,
+                      "Px,Py,Pz — the applied impulse (N·s, in the world's axes)");
   command
-      ->add_option("--at", options->at,
-                   "BODY or BODY:x,y,z — where the impulse acts: a point fixed in a body (m, in "
-                   "the body's frame)")
-      ->required();
-  command
-      ->add_option("--impulse", options->impulse,
-                   "Px,Py,Pz — the impulse (N·s, in the world's axes)")
-      ->required();
+      ->add_option("--between", options->between,
+                   "A[:x,y,z] B[:x,y,z] — a collision: the points of bodies A (or the world) and "
+                   "B that touch")
+      ->expected(2);
+  command->add_option("--normal", options->normal,
+                      "nx,ny,nz — the contact normal, along which B is pushed away from A (world "
+                      "axes; normalized)");
+  command->add_option("--restitution", options->restitution,
+                      "e in [0, 1]: the separation speed is e times the approach speed (0 "
+                      "plastic, 1 elastic)");
   add_instant_options(command, options->instant);
   command->add_flag("--json", options->json, "Print JSON instead of text");
   command->footer(
-      "Example (a rod struck at its centre of percussion: no impulse at the pin):\n"
+      "Examples (a rod struck at its centre of percussion: no impulse at the pin; a sphere "
+      "striking a rod):\n"
       "  momenta impact examples/struck_rod.yaml --at rod:0,0,-0.8 --impulse 4,0,0\n"
+      "  momenta impact examples/eccentric_impact.yaml --between sphere rod:0,0,-1.1 --normal "
+      "1,0,0 --restitution 0.6\n"
       "Laws and tests: docs/contacts.md.");
   command->callback([options] { run(*options); });
 }

@@ -605,6 +605,9 @@ class Workspace:
     def potential_energy(self, q: ArrayLike) -> float:
         """Gravitational potential energy −Σ m g · p_cm, J (springs excluded)."""
         ...
+    def restitution_impact(self, q: ArrayLike, v: ArrayLike, body_a: object, point_a: ArrayLike, body_b: object, point_b: ArrayLike, normal: ArrayLike, restitution: float) -> dict:
+        """A frictionless collision of body_a's and body_b's points (body_a may be 'world'; body_b is pushed along the unit normal) by Newton's restitution (docs/contacts.md): a dict of normal_impulse, approach_speed, separation_speed, v_after, joint_impulse_forces, kinetic_before, kinetic_after."""
+        ...
     def rnea(self, q: ArrayLike, v: ArrayLike, vdot: ArrayLike, f_ext: object = None) -> numpy.ndarray:
         """Inverse dynamics by recursive Newton–Euler: τ = M v̇ + C v + g − Jᵀ f_ext."""
         ...

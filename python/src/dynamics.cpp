@@ -227,6 +227,39 @@ Results are new arrays. Not thread-safe: one workspace per thread.)doc")
           "drive_impulses, kinetic_before, kinetic_after and impulse_work (Kelvin's theorem: "
           "equals the energy change).")
       .def(
+          "restitution_impact",
+          [](Workspace& w, const py::handle& q, const py::handle& v, const py::object& body_a,
+             const py::handle& point_a, const py::object& body_b, const py::handle& point_b,
+             const py::handle& normal, double restitution) {
+            Storage sq, sv;
+            const dynamics::PointContact contact{
+                body_index_arg(w.handle, body_a), vec3_arg(point_a, "point_a"),
+                body_index_arg(w.handle, body_b), vec3_arg(point_b, "point_b"),
+                vec3_arg(normal, "normal")};
+            const dynamics::Impact impact = dynamics::restitution_impact(
+                w.model(), w.q(q, sq), w.v(v, "v", sv), contact, restitution);
+            py::dict out;
+            out["normal_impulse"] = impact.normal_impulse;
+            out["approach_speed"] = impact.approach_speed;
+            out["separation_speed"] = impact.separation_speed;
+            out["v_after"] = to_numpy(impact.motion.v_after);
+            MatX forces(w.model().num_joints(), 3);
+            for (int j = 0; j < w.model().num_joints(); ++j) {
+              forces.row(j) =
+                  impact.motion.joint_impulses[static_cast<std::size_t>(j)].force.transpose();
+            }
+            out["joint_impulse_forces"] = to_numpy(forces);
+            out["kinetic_before"] = impact.motion.kinetic_before;
+            out["kinetic_after"] = impact.motion.kinetic_after;
+            return out;
+          },
+          py::arg("q"), py::arg("v"), py::arg("body_a"), py::arg("point_a"), py::arg("body_b"),
+          py::arg("point_b"), py::arg("normal"), py::arg("restitution"),
+          "A frictionless collision of body_a's and body_b's points (body_a may be 'world'; "
+          "body_b is pushed along the unit normal) by Newton's restitution (docs/contacts.md): "
+          "a dict of normal_impulse, approach_speed, separation_speed, v_after, "
+          "joint_impulse_forces, kinetic_before, kinetic_after.")
+      .def(
           "forward_kinematics",
           [](Workspace& w, const py::handle& q, const py::object& v, const py::object& vdot) {
             Storage sq, sv, sa;

@@ -1,5 +1,6 @@
 #include "momenta/dynamics/impulse.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -171,6 +172,82 @@ ImpulsiveMotion impulsive_motion(const Model& model, VecRef q, VecRef v,
   }
   r.impulse_work += r.drive_impulses.dot(v);  // a drive's speed does not change
   return r;
+}
+
+namespace {
+
+// n · (v_Pb − v_Pa) at (q, v).
+double normal_speed(const Model& model, Data& data, VecRef q, VecRef v, const PointContact& c) {
+  forward_kinematics(model, data, q, v);
+  MatX J(6, model.nv());
+  const auto point_velocity = [&](int body, const Vec3& p) -> Vec3 {
+    if (body == 0) return Vec3::Zero();
+    J.setZero();
+    frame_jacobian(model, data, body, p, J);
+    return J.bottomRows<3>() * v;
+  };
+  return c.normal_W.dot(point_velocity(c.body_b, c.p_BoPb_B) -
+                        point_velocity(c.body_a, c.p_AoPa_A));
+}
+
+// The pair ±P n: P n on B's point, −P n on A's (none on the world).
+std::vector<PointImpulse> impulse_pair(const PointContact& c, double P) {
+  std::vector<PointImpulse> pair;
+  pair.push_back({c.body_b, c.p_BoPb_B, P * c.normal_W});
+  if (c.body_a != 0) pair.push_back({c.body_a, c.p_AoPa_A, -P * c.normal_W});
+  return pair;
+}
+
+}  // namespace
+
+Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointContact& contact,
+                          double restitution) {
+  if (!(restitution >= 0.0 && restitution <= 1.0)) {
+    throw InvalidArgument(fmt::format(
+        "restitution_impact: the coefficient of restitution {} is outside [0, 1] (0: plastic, 1: "
+        "elastic)",
+        restitution));
+  }
+  if (!contact.normal_W.allFinite() || std::abs(contact.normal_W.norm() - 1.0) > 1e-12) {
+    throw InvalidArgument(
+        fmt::format("restitution_impact: the normal [{}, {}, {}] is not a unit "
+                    "vector",
+                    contact.normal_W.x(), contact.normal_W.y(), contact.normal_W.z()));
+  }
+  if (contact.body_a < 0 || contact.body_a >= model.num_bodies() || contact.body_b <= 0 ||
+      contact.body_b >= model.num_bodies()) {
+    throw InvalidArgument(fmt::format(
+        "restitution_impact: bodies {} and {}: A must be a body of the model (0 for the world), B "
+        "a moving one (1 .. {}) — name the moving body B, the normal pointing towards it",
+        contact.body_a, contact.body_b, model.num_bodies() - 1));
+  }
+  if (contact.body_a == contact.body_b) {
+    throw InvalidArgument("restitution_impact: both points are on one body: nothing collides");
+  }
+  Data data(model);
+  Impact impact;
+  impact.approach_speed = normal_speed(model, data, q, v, contact);
+  if (!(impact.approach_speed < 0.0)) {
+    throw InvalidArgument(fmt::format(
+        "restitution_impact: the points do not approach along the normal (n · (v_b − v_a) = {} "
+        "m/s ≥ 0): no impact (the normal points the way B is pushed, from A towards B)",
+        impact.approach_speed));
+  }
+  // w from a unit pair at rest: the separation speed it alone would make.
+  const VecX at_rest = VecX::Zero(model.nv());
+  const std::vector<PointImpulse> unit = impulse_pair(contact, 1.0);
+  const ImpulsiveMotion response = impulsive_motion(model, q, at_rest, unit);
+  const double w = normal_speed(model, data, q, response.v_after, contact);
+  const double scale = std::max(1.0, w);
+  if (!(w > 1e-12 * scale)) {
+    throw InvalidArgument(
+        "restitution_impact: the mechanism cannot move the two points apart along the normal "
+        "(its joints and constraints hold them): no impulse changes their approach");
+  }
+  impact.normal_impulse = -(1.0 + restitution) * impact.approach_speed / w;
+  impact.separation_speed = -restitution * impact.approach_speed;
+  impact.motion = impulsive_motion(model, q, v, impulse_pair(contact, impact.normal_impulse));
+  return impact;
 }
 
 }  // namespace momenta::dynamics

@@ -136,6 +136,27 @@ TEST_F(AnalysisCli, ImpactOnTheStruckRodAsTheTextbookHasIt) {
   const CliRun bad = momenta("impact " + model + " --at rod --impulse 4,0");
   EXPECT_NE(bad.code, 0);
   EXPECT_NE(bad.err.find("--impulse: '4,0': expected x,y,z"), std::string::npos) << bad.err;
+  // A collision (examples/eccentric_impact.yaml): a 0.5 kg sphere at 3 m/s strikes the hanging
+  // 4 kg, 1.2 m rod 1.1 m below its pin with e = 0.6 — the closed forms of the file's comment.
+  const std::string eccentric = example("eccentric_impact");
+  const CliRun hit =
+      momenta("impact " + eccentric +
+              " --between sphere rod:0,0,-1.1 --normal 1,0,0 --restitution 0.6 --json");
+  ASSERT_EQ(hit.code, 0) << hit.err;
+  const json h = json::parse(hit.out);
+  const double I_O = 1.92, ms = 0.5, v0 = 3.0, d = 1.1, e = 0.6;
+  const double omega = ms * v0 * d * (1 + e) / (I_O + ms * d * d);
+  const double v_s = v0 * (ms * d * d - e * I_O) / (I_O + ms * d * d);
+  EXPECT_NEAR(h.at("v_after").at("pin.angle_rate").get<double>(), -omega, 1e-14);
+  EXPECT_NEAR(h.at("v_after").at("slide.position_rate").get<double>(), v_s, 1e-14);
+  EXPECT_NEAR(h.at("separation_speed").get<double>(), e * v0, 1e-14);
+  EXPECT_NEAR(h.at("joint_impulses").at("pin").at("force").at(0).get<double>(),
+              4.0 * omega * 0.6 - ms * (v0 - v_s), 1e-14);
+  const CliRun apart = momenta("impact " + eccentric +
+                               " --between sphere rod:0,0,-1.1 --normal -1,0,0 --restitution 0.6");
+  EXPECT_NE(apart.err.find("do not approach along the normal"), std::string::npos) << apart.err;
+  const CliRun neither = momenta("impact " + eccentric);
+  EXPECT_NE(neither.err.find("give an applied impulse"), std::string::npos) << neither.err;
   const CliRun world = momenta("impact " + model + " --at world --impulse 4,0,0");
   EXPECT_NE(world.err.find("the world is not a moving body"), std::string::npos) << world.err;
 }

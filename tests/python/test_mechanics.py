@@ -70,6 +70,20 @@ def test_impulsive_motion_is_the_command_lines():
         ws.impulsive_motion([0.0], [0.0], [("rod", [0, 0, 0])])
 
 
+def test_restitution_impact_is_the_command_lines():
+    """The eccentric impact example: a sphere at 3 m/s strikes the hanging rod with e = 0.6."""
+    path = EXAMPLES / "eccentric_impact.yaml"
+    ws = momenta.Workspace(momenta.load_model(path))
+    r = ws.restitution_impact([0.0, 0.0], [0.0, 3.0], "sphere", [0, 0, 0], "rod", [0, 0, -1.1],
+                              [1, 0, 0], 0.6)
+    cli = cli_json("impact", path, "--between", "sphere", "rod:0,0,-1.1", "--normal", "1,0,0",
+                   "--restitution", 0.6)
+    assert r["normal_impulse"] == cli["normal_impulse"]
+    np.testing.assert_array_equal(r["v_after"], [cli["v_after"]["pin.angle_rate"],
+                                                 cli["v_after"]["slide.position_rate"]])
+    assert r["separation_speed"] == pytest.approx(1.8, rel=1e-15)
+
+
 def same_expression(a, b, names):
     """Two expressions as GiNaC prints them are equal at random values of their symbols (GiNaC's
     order of terms can differ from process to process)."""

@@ -60,4 +60,33 @@ struct ImpulsiveMotion {
 ImpulsiveMotion impulsive_motion(const Model& model, VecRef q, VecRef v,
                                  std::span<const PointImpulse> impulses);
 
+/// Two bodies meeting at a point: A's point p_AoPa_A and B's point p_BoPb_B, which touch, and the
+/// contact normal n (unit, in W) along which B is pushed away from A. A may be the world (0).
+struct PointContact {
+  int body_a = 0;
+  Vec3 p_AoPa_A = Vec3::Zero();
+  int body_b = 0;
+  Vec3 p_BoPb_B = Vec3::Zero();
+  Vec3 normal_W = Vec3::UnitZ();
+};
+
+/// A frictionless impact at a contact by Newton's law of restitution (Beer & Johnston ch. 17,
+/// eccentric impact; Stronge, Impact Mechanics, ch. 2): the normal impulse P n on B (−P n on A)
+/// that turns the approach speed v_n⁻ = n · (v_Pb − v_Pa) < 0 into the separation speed
+/// v_n⁺ = −e v_n⁻, the whole mechanism taking part (its joints' and constraints' impulses).
+struct Impact {
+  double normal_impulse = 0.0;    ///< P (N·s), ≥ 0
+  double approach_speed = 0.0;    ///< v_n⁻ (m/s), < 0
+  double separation_speed = 0.0;  ///< v_n⁺ = −e v_n⁻ (m/s)
+  ImpulsiveMotion motion;         ///< the mechanism's response to the pair ±P n
+};
+
+/// The impact at `contact` with restitution e ∈ [0, 1] at (q, v). The separation speed is linear
+/// in P: v_n(P) = v_n⁻ + P w, w = n · (J_Pb − J_Pa) M⁻¹ (J_Pb − J_Pa)ᵀ n > 0 found by a unit pair,
+/// so P = −(1 + e) v_n⁻ / w. Throws InvalidArgument where the points do not approach (v_n⁻ ≥ 0:
+/// no impact), e is outside [0, 1], the normal is not a unit vector, both points are on one body,
+/// or the mechanism cannot move them apart (w = 0: a contact the constraints hold still).
+Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointContact& contact,
+                          double restitution);
+
 }  // namespace momenta::dynamics

@@ -1,9 +1,10 @@
 // dynamics::impulsive_motion against the impulse–momentum principle's closed forms (Beer &
 // Johnston ch. 17): a rod struck about its pin — its rate P d / I_O, the pin's impulse, zero at
 // the centre of percussion d = 2L/3 — with a rotor's armature and on a carriage whose drive holds
-// its speed; a free body's momentum jumps by P and its angular momentum about G by r × P; on the
-// constrained classics, the speeds after equal those of an independent null-space form and keep
-// the loops closed; Kelvin's theorem (ΔT = Σ ½ P·(v⁻ + v⁺)) on random trees of every joint type.
+// its speed; a sphere striking the pinned rod with restitution e (eccentric impact); a free body's
+// momentum jumps by P and its angular momentum about G by r × P; on the constrained classics, the
+// speeds after equal those of an independent null-space form and keep the loops closed; Kelvin's
+// theorem (ΔT = Σ ½ P·(v⁻ + v⁺)) on random trees of every joint type.
 
 #include "momenta/dynamics/impulse.hpp"
 
@@ -196,6 +197,65 @@ TEST(ImpulsiveMotion, KelvinsTheoremOnRandomTrees) {
     EXPECT_NEAR(r.impulse_work, r.kinetic_after - r.kinetic_before,
                 1e-12 * std::max({1.0, r.kinetic_before, r.kinetic_after}));
     EXPECT_GT(std::abs(r.kinetic_after - r.kinetic_before), 1e-3);  // the impulses do work
+  }
+}
+
+// Eccentric impact (Beer & Johnston ch. 17): a sphere of mass m_s sliding at v₀ strikes a rod
+// hanging at rest from a pin (I_O = m L²/3) at depth d. Angular momentum about the pin and
+// Newton's restitution give the rod's ω = m_s v₀ d (1 + e) / (I_O + m_s d²) and the sphere's
+// v_s = v₀ (m_s d² − e I_O) / (I_O + m_s d²); the pin's impulse R = m ω L/2 − P vanishes at the
+// centre of percussion whatever e; energy is kept at e = 1.
+TEST(ImpulsiveMotion, ASphereStrikingAPinnedRodAsTheTextbookHasIt) {
+  const double m = 4.0, L = 1.2, I_O = m * L * L / 3.0, m_s = 0.5, v0 = 3.0;
+  for (const double d : {0.5, 2.0 * L / 3.0, 1.1}) {
+    model::ModelBuilder b;
+    b.add_body("rod",
+               inertia::MassProperties(m, Vec3(0, 0, -L / 2),
+                                       Vec3(m * L * L / 12, m * L * L / 12, 1e-6).asDiagonal()));
+    b.add_body("sphere", inertia::MassProperties(m_s, Vec3::Zero(), 1e-4 * Mat3::Identity()));
+    b.add_joint(test::make_joint("pin", JointType::revolute, "world", "rod", Vec3::UnitY()));
+    b.add_joint(test::make_joint("slide", JointType::prismatic, "world", "sphere", Vec3::UnitX(),
+                                 Transform::translation(Vec3(0, 0, -d))));
+    const Model model = b.build();
+    const VecX q = VecX::Zero(2), v = (VecX(2) << 0.0, v0).finished();
+    const PointContact contact{model.body_index("sphere"), Vec3::Zero(), model.body_index("rod"),
+                               Vec3(0, 0, -d), Vec3::UnitX()};
+    for (const double e : {0.0, 0.6, 1.0}) {
+      SCOPED_TRACE(testing::Message() << "d = " << d << ", e = " << e);
+      const Impact impact = restitution_impact(model, q, v, contact, e);
+      const double omega = m_s * v0 * d * (1 + e) / (I_O + m_s * d * d);
+      const double v_s = v0 * (m_s * d * d - e * I_O) / (I_O + m_s * d * d);
+      // A few products of O(1) numbers: round-off ~1e-15.
+      EXPECT_NEAR(impact.motion.v_after[0], -omega, 1e-14);  // +x at depth d is −θ̇ d
+      EXPECT_NEAR(impact.motion.v_after[1], v_s, 1e-14);
+      EXPECT_NEAR(impact.approach_speed, -v0, 1e-15);
+      EXPECT_NEAR(impact.separation_speed, e * v0, 1e-14);
+      const double P = m_s * (v0 - v_s);
+      EXPECT_NEAR(impact.normal_impulse, P, 1e-14);
+      const double R = m * omega * L / 2 - P;
+      EXPECT_NEAR(impact.motion.joint_impulses[0].force.x(), R, 1e-14);
+      if (d == 2.0 * L / 3.0) {
+        EXPECT_NEAR(R, 0.0, 1e-14);
+      }
+      const double lost = impact.motion.kinetic_before - impact.motion.kinetic_after;
+      EXPECT_NEAR(lost, 0.5 * m_s * v0 * v0 - 0.5 * m_s * v_s * v_s - 0.5 * I_O * omega * omega,
+                  1e-14);
+      if (e == 1.0) {
+        EXPECT_NEAR(lost, 0.0, 1e-14);
+      }
+    }
+    // Moving apart, or a coefficient outside [0, 1]: no impact.
+    const auto message = [&](const VecX& speeds, double e) {
+      try {
+        restitution_impact(model, q, speeds, contact, e);
+      } catch (const InvalidArgument& error) {
+        return std::string(error.what());
+      }
+      return std::string("no error");
+    };
+    EXPECT_NE(message((VecX(2) << 0.0, -1.0).finished(), 0.5).find("do not approach"),
+              std::string::npos);
+    EXPECT_NE(message(v, 1.5).find("outside [0, 1]"), std::string::npos);
   }
 }
 
