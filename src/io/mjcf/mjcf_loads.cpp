@@ -1,7 +1,8 @@
 // MJCF's <equality> constraints (connect, weld, joint; tendon in mjcf_tendons.cpp) as momenta's
-// loop closures and couplers,
-// and its <actuator> motors as torque or force pairs driven by input signals.
+// loop closures and couplers, and its <actuator> motors on hinges, slides and fixed tendons as
+// torque or force pairs driven by input signals.
 
+#include <algorithm>
 #include <array>
 
 #include <fmt/format.h>
@@ -146,14 +147,26 @@ void MjcfReader::read_actuators(const XMLElement* section) {
                             kind, name));
       continue;
     }
-    const char* joint_name = xml->Attribute("joint");
-    if (joint_name == nullptr) {
-      note(xml, fmt::format("actuator '{}' drives a tendon or site: not modelled", name));
+    // What it drives: a joint (scale 1), or each joint of a fixed tendon (scale its coefficient:
+    // MuJoCo's moment arm of a fixed tendon).
+    std::vector<std::pair<const model::Joint*, double>> targets;
+    if (const char* joint_name = xml->Attribute("joint")) {
+      targets.emplace_back(&joint_named(xml, "joint", joint_name).joint, 1.0);
+    } else if (const char* tendon_name = xml->Attribute("tendon");
+               tendon_name != nullptr && tendons.count(tendon_name) != 0) {
+      for (const model::TendonTerm& term : tendons.at(tendon_name).tendon.terms) {
+        targets.emplace_back(&joints.at(term.joint).joint, term.coefficient);
+      }
+    } else {
+      note(xml, fmt::format("actuator '{}' drives a spatial tendon or a site: not modelled", name));
       continue;
     }
-    const MjcfJoint& target = joint_named(xml, "joint", joint_name);
-    const model::Joint& joint = target.joint;
-    if (joint.type != model::JointType::revolute && joint.type != model::JointType::prismatic) {
+    const auto unmodelled = std::find_if(targets.begin(), targets.end(), [](const auto& target) {
+      return target.first->type != model::JointType::revolute &&
+             target.first->type != model::JointType::prismatic;
+    });
+    if (unmodelled != targets.end()) {
+      const model::Joint& joint = *unmodelled->first;
       note(xml, fmt::format("actuator '{}' drives {} joint '{}': not modelled (hinges and slides "
                             "only)",
                             name, model::joint_type_name(joint.type), joint.name));
@@ -170,44 +183,54 @@ void MjcfReader::read_actuators(const XMLElement* section) {
     builder.add_signal(model::Signal(name, model::ConstantSignal{0.0}));
     items.push_back(
         located_at(ModelItemRef::Kind::signal, name, xml->GetLineNum(), xml_column(text, xml)));
-    // The pair: on the joint's child along the axis (in J' = the child's axes), the reaction on
-    // its parent (along the axis in J, fixed in the parent) — equal and opposite, so no other
-    // joint feels it; a slide's forces act at the joint's two origins, on the axis.
-    const Vec3 axis_C = joint.X_CJ.R * joint.axis * (gear * gain);
-    const Vec3 axis_P = joint.X_PJ.R * joint.axis * (gear * gain);
-    const bool on_parent = joint.parent != model::kWorldBodyName;
-    const auto add_with_reaction = [&](auto drive, auto onto_parent) {
-      builder.add_force_element(drive);
-      if (!on_parent) return;
-      drive.name = name + "_reaction";
-      onto_parent(drive);
-      builder.add_force_element(drive);
-    };
-    if (joint.type == model::JointType::revolute) {
-      model::AppliedTorque drive;
-      drive.name = name;
-      drive.body = joint.child;
-      drive.frame = model::LoadFrame::body;
-      drive.vector = axis_C;
-      drive.signal = name;
-      add_with_reaction(drive, [&](model::AppliedTorque& reaction) {
-        reaction.body = joint.parent;
-        reaction.vector = -axis_P;
-      });
-    } else {
-      model::AppliedForce drive;
-      drive.name = name;
-      drive.at = model::BodyPoint{joint.child, joint.X_CJ.p, -1};
-      drive.frame = model::LoadFrame::body;
-      drive.vector = axis_C;
-      drive.signal = name;
-      add_with_reaction(drive, [&](model::AppliedForce& reaction) {
-        reaction.at = model::BodyPoint{joint.parent, joint.X_PJ.p, -1};
-        reaction.vector = -axis_P;
-      });
+    for (const auto& [joint, scale] : targets) {
+      const std::string drive = targets.size() == 1 && xml->Attribute("joint") != nullptr
+                                    ? name
+                                    : fmt::format("{}_{}", name, joint->name);
+      add_joint_drive(*joint, drive, name, gear * gain * scale);
+      items.push_back(located_at(ModelItemRef::Kind::force_element, drive, xml->GetLineNum(),
+                                 xml_column(text, xml)));
     }
-    items.push_back(located_at(ModelItemRef::Kind::force_element, name, xml->GetLineNum(),
-                               xml_column(text, xml)));
+  }
+}
+
+void MjcfReader::add_joint_drive(const model::Joint& joint, const std::string& name,
+                                 const std::string& signal, double scale) {
+  // The pair: on the joint's child along the axis (in J' = the child's axes), the reaction on
+  // its parent (along the axis in J, fixed in the parent) — equal and opposite, so no other
+  // joint feels it; a slide's forces act at the joint's two origins, on the axis.
+  const Vec3 axis_C = joint.X_CJ.R * joint.axis * scale;
+  const Vec3 axis_P = joint.X_PJ.R * joint.axis * scale;
+  const bool on_parent = joint.parent != model::kWorldBodyName;
+  const auto add_with_reaction = [&](auto drive, auto onto_parent) {
+    builder.add_force_element(drive);
+    if (!on_parent) return;
+    drive.name = name + "_reaction";
+    onto_parent(drive);
+    builder.add_force_element(drive);
+  };
+  if (joint.type == model::JointType::revolute) {
+    model::AppliedTorque drive;
+    drive.name = name;
+    drive.body = joint.child;
+    drive.frame = model::LoadFrame::body;
+    drive.vector = axis_C;
+    drive.signal = signal;
+    add_with_reaction(drive, [&](model::AppliedTorque& reaction) {
+      reaction.body = joint.parent;
+      reaction.vector = -axis_P;
+    });
+  } else {
+    model::AppliedForce drive;
+    drive.name = name;
+    drive.at = model::BodyPoint{joint.child, joint.X_CJ.p, -1};
+    drive.frame = model::LoadFrame::body;
+    drive.vector = axis_C;
+    drive.signal = signal;
+    add_with_reaction(drive, [&](model::AppliedForce& reaction) {
+      reaction.at = model::BodyPoint{joint.parent, joint.X_PJ.p, -1};
+      reaction.vector = -axis_P;
+    });
   }
 }
 

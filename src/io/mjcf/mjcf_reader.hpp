@@ -104,6 +104,10 @@ class MjcfReader {
   /// (momenta couples joints linearly).
   std::array<double, 2> linear_polycoef(const MjcfElement& e, const std::string& name) const;
   void read_actuators(const XMLElement* section);
+  /// A drive on a hinge or slide: a torque (force) pair `name` of `scale` · u along its axis, u
+  /// the signal `signal` — on the child, and its reaction `<name>_reaction` on the parent.
+  void add_joint_drive(const model::Joint& joint, const std::string& name,
+                       const std::string& signal, double scale);
 
   // --- tendons (mjcf_tendons.cpp) -------------------------------------------------------------
   /// The <fixed> tendons of a <tendon> section as FixedTendon force elements, each with an output
