@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "linear_model_options.hpp"
 #include "momenta/analysis/frequency_response.hpp"
+#include "momenta/analysis/stability_margins.hpp"
 #include "momenta/analysis/step_info.hpp"
 #include "momenta/analysis/time_response.hpp"
 #include "momenta/analysis/transfer_function.hpp"
@@ -47,6 +48,40 @@ struct ResponseOptions {
 };
 
 using json = nlohmann::ordered_json;
+
+// "gain margin 6 (15.56 dB) at 1.41421 rad/s; phase margin 53.42° at 0.4457 rad/s", each "none
+// in the range" where nothing crosses.
+std::string margins_text(const analysis::StabilityMargins& m) {
+  const std::string gain =
+      std::isfinite(m.gain_margin)
+          ? fmt::format("gain margin {:.6g} ({:.4g} dB) at {:.6g} rad/s", m.gain_margin,
+                        m.gain_margin_db, m.phase_crossover)
+          : std::string("gain margin: the phase does not cross −180° in the range");
+  const std::string phase = std::isfinite(m.phase_margin_deg)
+                                ? fmt::format("phase margin {:.6g}° at {:.6g} rad/s",
+                                              m.phase_margin_deg, m.gain_crossover)
+                                : std::string("phase margin: |G| does not cross 1 in the range");
+  return fmt::format("as the loop L = G of a negative unity-feedback loop: {}; {}\n", gain, phase);
+}
+
+// The margins, null where there is none in the range (JSON has no infinity).
+json margins_json(const analysis::StabilityMargins& m) {
+  const auto number = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
+  json crossings = json::object();
+  for (const auto& [name, list] : {std::pair{"phase_crossovers", &m.phase_crossovers},
+                                   {"gain_crossovers", &m.gain_crossovers}}) {
+    json items = json::array();
+    for (const analysis::Crossing& c : *list) items.push_back({c.frequency, c.margin});
+    crossings[name] = items;
+  }
+  return {{"gain_margin", number(m.gain_margin)},
+          {"gain_margin_db", number(m.gain_margin_db)},
+          {"phase_crossover", number(m.phase_crossover)},
+          {"phase_margin_deg", number(m.phase_margin_deg)},
+          {"gain_crossover", number(m.gain_crossover)},
+          {"phase_crossovers", crossings["phase_crossovers"]},
+          {"gain_crossovers", crossings["gain_crossovers"]}};
+}
 
 std::string complex_list(const std::vector<analysis::Complex>& zs, int digits) {
   std::vector<std::string> items;
@@ -111,6 +146,7 @@ void run(const ResponseOptions& o) {
   std::string summary;
   json samples;
   std::optional<analysis::StepInfo> info;
+  std::optional<analysis::StabilityMargins> margins;
   if (o.bode.empty()) {
     const analysis::TimeGrid grid{o.duration.value_or(0.0), o.points.value_or(0)};
     analysis::TimeResponse r =
@@ -165,6 +201,9 @@ void run(const ResponseOptions& o) {
         "Bode, {} frequencies from {:.6g} to {:.6g} rad/s: peak {:.6g} dB at "
         "{:.6g} rad/s\n",
         f.frequency.size(), o.bode[0], o.bode[1], f.magnitude_db[peak], f.frequency[peak]);
+    // The margins of the pair as the loop L = G of a negative unity-feedback loop.
+    margins = analysis::stability_margins(sys, 0, 0, o.bode[0], o.bode[1]);
+    summary += margins_text(*margins);
   }
 
   if (o.json) {
@@ -182,6 +221,7 @@ void run(const ResponseOptions& o) {
     j["cancelled"] = complex_json(tf.cancelled);
     j["dc_gain"] = figure(tf.dc_gain);
     if (info) j["step_info"] = step_info_json(*info);
+    if (margins) j["margins"] = margins_json(*margins);
     j["samples"] = std::move(samples);
     fmt::print("{}\n", json_text(j, ListSpacing::spaced));
     return;

@@ -18,6 +18,7 @@
 #include "momenta/analysis/modes_text.hpp"
 #include "momenta/analysis/operating_point.hpp"
 #include "momenta/analysis/rolling_steady_motion.hpp"
+#include "momenta/analysis/stability_margins.hpp"
 #include "momenta/analysis/state_space.hpp"
 #include "momenta/analysis/steady_motion.hpp"
 #include "momenta/analysis/step_info.hpp"
@@ -373,6 +374,41 @@ void bind_responses(py::module_& m) {
       py::arg("omega_max") = 100.0, py::arg("points") = 200,
       "Bode data of one pair at the given frequencies (rad/s) or on a log grid from omega_min to "
       "omega_max.");
+
+  py::class_<Crossing>(m, "Crossing", "One crossover: its frequency and the margin it gives.")
+      .def_readonly("frequency", &Crossing::frequency, "ω, rad/s.")
+      .def_readonly("margin", &Crossing::margin,
+                    "GM (a factor) at a phase crossover, PM (degrees) at a gain crossover.");
+  py::class_<StabilityMargins>(
+      m, "StabilityMargins",
+      "Gain and phase margins of a pair as a negative unity-feedback loop L = G "
+      "(docs/analysis.md).")
+      .def_readonly("gain_margin", &StabilityMargins::gain_margin, "factor; inf without one")
+      .def_readonly("gain_margin_db", &StabilityMargins::gain_margin_db, "dB")
+      .def_readonly("phase_crossover", &StabilityMargins::phase_crossover, "ω_pc, rad/s (nan)")
+      .def_readonly("phase_margin_deg", &StabilityMargins::phase_margin_deg,
+                    "degrees; inf without one")
+      .def_readonly("gain_crossover", &StabilityMargins::gain_crossover, "ω_gc, rad/s (nan)")
+      .def_readonly("phase_crossovers", &StabilityMargins::phase_crossovers)
+      .def_readonly("gain_crossovers", &StabilityMargins::gain_crossovers)
+      .def("__repr__", [](const StabilityMargins& s) {
+        return fmt::format(
+            "<momenta.StabilityMargins GM {:.6g} ({:.4g} dB) at {:.6g} rad/s, PM {:.6g}° at "
+            "{:.6g} rad/s>",
+            s.gain_margin, s.gain_margin_db, s.phase_crossover, s.phase_margin_deg,
+            s.gain_crossover);
+      });
+  m.def(
+      "margins",
+      [](const StateSpace& s, const py::object& input, const py::object& output, double omega_min,
+         double omega_max, std::size_t points) {
+        return stability_margins(s, input_arg(s, input), output_arg(s, output), omega_min,
+                                 omega_max, points);
+      },
+      py::arg("system"), py::arg("input"), py::arg("output"), py::kw_only(),
+      py::arg("omega_min") = 0.01, py::arg("omega_max") = 100.0, py::arg("points") = 2000,
+      "Gain and phase margins of one pair taken as the loop L = G of a negative unity-feedback "
+      "loop, with their crossover frequencies, over omega_min .. omega_max rad/s.");
 
   py::class_<TimeResponse>(m, "TimeResponse", "Response of every output and state to one input.")
       .def_readonly("input_name", &TimeResponse::input_name)

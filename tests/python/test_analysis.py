@@ -80,6 +80,25 @@ def test_bode_and_step_are_the_command_lines():
     np.testing.assert_array_equal(step.outputs[:, system.output_names.index(out)], table[:, 1])
 
 
+def test_margins_as_franklin_has_them_and_as_the_command_line_prints_them():
+    """L = 1/(s (s + 1)(s + 2)): the phase crosses −180° at √2 where |L| = 1/6 (GM = 6); the
+    quarter car's margins are the command line's `response --bode --json` to the bit."""
+    A = [[0, 1, 0], [0, 0, 1], [0, -2, -3]]
+    loop = momenta.StateSpace(A, [[0], [0], [1]], [[1, 0, 0]], None, [], ["u"], ["y"])
+    m = momenta.margins(loop, "u", "y")
+    assert m.phase_crossover == pytest.approx(np.sqrt(2.0), rel=1e-11)
+    assert m.gain_margin == pytest.approx(6.0, rel=1e-10)
+    assert len(m.gain_crossovers) == 1 and 0 < m.phase_margin_deg < 90
+    path = EXAMPLES / "quarter_car.yaml"
+    system = momenta.linearize(momenta.load_model(path)).system
+    inp, out = system.input_names[0], system.output_names[0]
+    ours = momenta.margins(system, inp, out, omega_min=0.1, omega_max=1000.0)
+    cli = cli_json("response", path, "--input", inp, "--output", out, "--bode", 0.1, 1000)
+    assert ours.gain_margin == cli["margins"]["gain_margin"]
+    assert ours.phase_margin_deg == cli["margins"]["phase_margin_deg"]
+    assert ours.gain_crossover == cli["margins"]["gain_crossover"]
+
+
 def test_state_space_from_matrices_mass_spring_damper_step():
     # m x'' + c x' + k x = u; x(∞) = 1/k; ωn, ζ as the textbook.
     m, c, k = 2.0, 0.8, 50.0
