@@ -400,8 +400,17 @@ void print_text(const json& j, const io::ModelFile& file) {
     std::string columns;
     for (const json& c : out["columns"])
       columns += (columns.empty() ? "" : ", ") + c.get<std::string>();
-    fmt::print("  {}  {} of {}: {}\n", out["name"].get<std::string>(),
-               out["quantity"].get<std::string>(), out["target"].get<std::string>(), columns);
+    // A tendon's length and tension, in the words its file gives them.
+    const std::string target = out["target"].get<std::string>();
+    std::string quantity = out["quantity"].get<std::string>() + " of";
+    const auto& elements = file.model.force_elements();
+    if (std::any_of(elements.begin(), elements.end(), [&](const model::ForceElement& e) {
+          return std::holds_alternative<model::FixedTendon>(e) &&
+                 model::force_element_name(e) == target;
+        })) {
+      quantity = out["quantity"] == "spring_length" ? "length of tendon" : "tension of tendon";
+    }
+    fmt::print("  {}  {} {}: {}\n", out["name"].get<std::string>(), quantity, target, columns);
   }
 
   if (!file.keyframes.empty()) {
