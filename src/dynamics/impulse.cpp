@@ -51,16 +51,16 @@ std::vector<int> free_coordinates(const Model& model) {
   return free;
 }
 
-// The points' velocities in W at (q, v), after forward_kinematics(q, v).
-std::vector<Vec3> point_velocities(const Model& model, Data& data, VecRef q, VecRef v,
-                                   std::span<const PointImpulse> impulses) {
-  forward_kinematics(model, data, q, v);
-  std::vector<Vec3> out;
+// Each impulse's point Jacobian (3 × nv, world-aligned) at q.
+std::vector<MatX> point_jacobians(const Model& model, Data& data, VecRef q,
+                                  std::span<const PointImpulse> impulses) {
+  forward_kinematics(model, data, q);
+  std::vector<MatX> out;
   MatX J(6, model.nv());
   for (const PointImpulse& p : impulses) {
     J.setZero();
     frame_jacobian(model, data, p.body, p.p_BoP_B, J);
-    out.push_back(J.bottomRows<3>() * v);
+    out.push_back(J.bottomRows<3>());
   }
   return out;
 }
@@ -75,16 +75,11 @@ ImpulsiveMotion impulsive_motion(const Model& model, VecRef q, VecRef v,
   ImpulsiveMotion r;
   r.v_before = v;
 
-  // Σ J_Pᵀ P, and the points' velocities before.
-  const std::vector<Vec3> before = point_velocities(model, data, q, v, impulses);
+  // Σ J_Pᵀ P.
+  const std::vector<MatX> J_P = point_jacobians(model, data, q, impulses);
   VecX applied = VecX::Zero(nv);
-  {
-    MatX J(6, nv);
-    for (const PointImpulse& p : impulses) {
-      J.setZero();
-      frame_jacobian(model, data, p.body, p.p_BoP_B, J);
-      applied += J.bottomRows<3>().transpose() * p.impulse_W;
-    }
+  for (std::size_t k = 0; k < impulses.size(); ++k) {
+    applied += J_P[k].transpose() * impulses[k].impulse_W;
   }
 
   // The free coordinates' mass matrix and constraint rows.
@@ -166,9 +161,8 @@ ImpulsiveMotion impulsive_motion(const Model& model, VecRef q, VecRef v,
   // Energies and Kelvin's work.
   r.kinetic_before = 0.5 * v.dot(M * v);
   r.kinetic_after = 0.5 * r.v_after.dot(M * r.v_after);
-  const std::vector<Vec3> after = point_velocities(model, data, q, r.v_after, impulses);
   for (std::size_t k = 0; k < impulses.size(); ++k) {
-    r.impulse_work += 0.5 * impulses[k].impulse_W.dot(before[k] + after[k]);
+    r.impulse_work += 0.5 * impulses[k].impulse_W.dot(J_P[k] * (v + r.v_after));
   }
   r.impulse_work += r.drive_impulses.dot(v);  // a drive's speed does not change
   return r;

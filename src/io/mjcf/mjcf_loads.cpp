@@ -154,7 +154,7 @@ void MjcfReader::read_actuators(const XMLElement* section) {
       targets.emplace_back(&joint_named(xml, "joint", joint_name).joint, 1.0);
     } else if (const char* tendon_name = xml->Attribute("tendon");
                tendon_name != nullptr && tendons.count(tendon_name) != 0) {
-      for (const model::TendonTerm& term : tendons.at(tendon_name).tendon.terms) {
+      for (const model::TendonTerm& term : tendons.at(tendon_name).terms) {
         targets.emplace_back(&joints.at(term.joint).joint, term.coefficient);
       }
     } else {

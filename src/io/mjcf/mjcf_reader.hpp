@@ -53,12 +53,6 @@ struct MjcfJoint {
   double springref = 0.0;  ///< rad or m: MuJoCo's qpos where its spring relaxes (`springref`)
 };
 
-/// A fixed tendon as read, for the equality constraints that name it.
-struct MjcfTendon {
-  const XMLElement* element;
-  model::FixedTendon tendon;
-};
-
 class MjcfReader {
  public:
   MjcfReader(const tinyxml2::XMLDocument& document, std::string_view text, std::string file,
@@ -174,10 +168,11 @@ class MjcfReader {
   bool exact_mesh_inertia = false;  // <compiler exactmeshinertia>
   model::ModelBuilder builder;
   std::vector<ItemLocation> items;
-  std::map<std::string, MjcfBody, std::less<>> bodies;     // by the file's body name
-  std::map<std::string, MjcfJoint, std::less<>> joints;    // by joint name
-  std::map<std::string, MjcfTendon, std::less<>> tendons;  // fixed tendons by name
-  std::vector<model::OutputSpec> outputs;                  // each fixed tendon's length
+  std::map<std::string, MjcfBody, std::less<>> bodies;   // by the file's body name
+  std::map<std::string, MjcfJoint, std::less<>> joints;  // by joint name
+  // Fixed tendons by name, for the equalities and actuators that name them.
+  std::map<std::string, model::FixedTendon, std::less<>> tendons;
+  std::vector<model::OutputSpec> outputs;  // each fixed tendon's length
   std::vector<std::string> joint_order;
   std::map<std::string, std::vector<PartSummary>> body_parts;  // momenta body → geoms
   int body_count = 0, joint_count = 0;  // bodies and joints read so far: MuJoCo's numbers

@@ -69,7 +69,7 @@ void MjcfReader::read_tendons(const XMLElement* section) {
     length.quantity = model::OutputQuantity::spring_length;
     length.target = name;
     outputs.push_back(length);
-    tendons.emplace(name, MjcfTendon{xml, tendon});
+    tendons.emplace(name, tendon);
   }
 }
 
@@ -88,7 +88,7 @@ std::optional<model::JointCoupler> MjcfReader::tendon_coupler(const XMLElement* 
       fail(xml, fmt::format("unknown fixed tendon '{}'{}", tendon, did_you_mean(tendon, names)),
            attribute);
     }
-    return it->second.tendon;
+    return it->second;
   };
   // L1 − L1(qpos0) = a0 + a1 (L2 − L2(qpos0)), qpos0 being momenta's q = 0: Σ₁ cq = a0 + a1 Σ₂ cq.
   const model::FixedTendon& one = tendon_named("tendon1");

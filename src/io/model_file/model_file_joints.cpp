@@ -25,8 +25,8 @@ using model::JointType;
 constexpr double kUnitTolerance = 1e-6;
 
 constexpr std::array<std::string_view, 16> kJointKeys = {
-    "name",   "type",   "parent", "child",   "in_parent",  "in_child", "axis",    "axis2",
-    "q0",     "q0_deg", "v0",     "v0_deg",  "v0_rpm",     "damping",  "armature", "prescribed"};
+    "name", "type",   "parent", "child",  "in_parent", "in_child", "axis",     "axis2",
+    "q0",   "q0_deg", "v0",     "v0_deg", "v0_rpm",    "damping",  "armature", "prescribed"};
 
 bool has_axis(JointType t) { return model::joint_traits(t).axes >= 1; }
 
