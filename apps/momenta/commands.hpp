@@ -60,4 +60,7 @@ void add_equations_command(CLI::App& app);
 /// `momenta response MODEL`: step, impulse or Bode response of one input–output pair.
 void add_response_command(CLI::App& app);
 
+/// `momenta lqr MODEL --Q … --R …`: the linear–quadratic regulator of a linearized model.
+void add_lqr_command(CLI::App& app);
+
 }  // namespace momenta::cli

@@ -315,6 +315,16 @@ bool print_motion_without_channels(const LoadedLinearModel& loaded, bool as_json
 
 json complex_json(std::complex<double> z) { return json::array({z.real() + 0.0, z.imag() + 0.0}); }
 
+std::string reachability_text(const analysis::Reachability& r, const char* who, const char* verb) {
+  if (r.complete()) {
+    return fmt::format("the {} {} every state (rank {} of {})", who, verb, r.rank, r.states);
+  }
+  std::vector<std::string> hidden;
+  for (const std::complex<double>& p : r.hidden_poles) hidden.push_back(complex_text(p));
+  return fmt::format("rank {} of {}: the {} do not {} the mode{} at {}", r.rank, r.states, who,
+                     verb, hidden.size() == 1 ? "" : "s", fmt::join(hidden, ", "));
+}
+
 void print_matrix(const char* name, const MatX& M, const std::vector<std::string>& rows,
                   const std::vector<std::string>& columns) {
   fmt::print("{} ({}×{}):\n", name, M.rows(), M.cols());

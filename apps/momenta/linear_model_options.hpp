@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "model_argument.hpp"
+#include "momenta/analysis/controllability.hpp"
 #include "momenta/analysis/equilibrium.hpp"
 #include "momenta/analysis/joint_steady_motion.hpp"
 #include "momenta/analysis/linearize.hpp"
@@ -65,6 +66,10 @@ nlohmann::ordered_json precession_roots_json(const analysis::SteadyPrecession& p
 /// The whirl of each oscillation of a steady motion in joint coordinates, as text lines and JSON.
 void print_whirls(const analysis::JointSteadyMotion& steady);
 nlohmann::ordered_json whirls_json(const analysis::JointSteadyMotion& steady);
+
+/// "the inputs move every state (rank 4 of 4)", or "rank 3 of 4: the inputs do not move the
+/// mode at -3" (`who`: "inputs" or "outputs"; `verb`: "move" or "show").
+std::string reachability_text(const analysis::Reachability& r, const char* who, const char* verb);
 
 /// JSON of a complex number as [re, im].
 nlohmann::ordered_json complex_json(std::complex<double> z);

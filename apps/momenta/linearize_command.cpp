@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "linear_model_options.hpp"
+#include "momenta/analysis/controllability.hpp"
 #include "momenta/analysis/modes.hpp"
 #include "momenta/frontend/model_loading.hpp"
 
@@ -27,6 +28,8 @@ void run(const LinearizeOptions& o) {
   const analysis::LinearModel& lin = loaded.result.linear;
   const analysis::StateSpace& sys = lin.system;
   const analysis::Modes m = analysis::modes(sys);
+  const analysis::Reachability reach = analysis::controllability(sys);
+  const analysis::Reachability seen = analysis::observability(sys);
   if (o.json) {
     json j;
     j["model"] = loaded.file.name;
@@ -44,6 +47,8 @@ void run(const LinearizeOptions& o) {
     json eig = json::array();
     for (const analysis::Mode& mode : m.modes) eig.push_back(complex_json(mode.eigenvalue));
     j["eigenvalues"] = std::move(eig);
+    j["controllable_rank"] = reach.rank;
+    j["observable_rank"] = seen.rank;
     j["states_shifted"] = lin.states_shifted;
     j["output_values"] = json(std::vector<double>(
         lin.output_values.data(), lin.output_values.data() + lin.output_values.size()));
@@ -63,6 +68,12 @@ void run(const LinearizeOptions& o) {
   std::vector<std::string> eig;
   for (const analysis::Mode& mode : m.modes) eig.push_back(complex_text(mode.eigenvalue));
   fmt::print("eigenvalues (1/s): {}\n", fmt::join(eig, ", "));
+  if (sys.input_count() > 0) {
+    fmt::print("controllability: {}\n", reachability_text(reach, "inputs", "move"));
+  }
+  if (sys.output_count() > 0) {
+    fmt::print("observability: {}\n", reachability_text(seen, "outputs", "show"));
+  }
   if (lin.states_shifted) {
     fmt::print(
         "note: a prescribed input's rate or acceleration enters; the states are shifted by "

@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "linear_model_options.hpp"
 #include "momenta/analysis/frequency_response.hpp"
+#include "momenta/analysis/root_locus.hpp"
 #include "momenta/analysis/stability_margins.hpp"
 #include "momenta/analysis/step_info.hpp"
 #include "momenta/analysis/time_response.hpp"
@@ -34,7 +35,8 @@ struct ResponseOptions {
   bool impulse = false;
   // The step's height (or the impulse's area), in the input's unit: 500 for a 500 N force step.
   double amplitude = 1.0;
-  std::vector<double> bode;  // FMIN FMAX, rad/s
+  std::vector<double> bode;        // FMIN FMAX, rad/s
+  std::vector<double> root_locus;  // KMIN KMAX
   std::optional<std::string> csv;
   bool force = false;
   std::optional<double> duration;
@@ -113,6 +115,25 @@ void check_samples(const char* what, const VecX& at, const char* unit, const Mat
   }
 }
 
+std::string locus_points_text(const std::vector<analysis::LocusPoint>& points, int digits) {
+  std::vector<std::string> items;
+  for (const analysis::LocusPoint& p : points) {
+    const std::string where = p.s.real() == 0.0 && p.s.imag() != 0.0
+                                  ? fmt::format("±{}j", number_text(std::abs(p.s.imag()), digits))
+                                  : complex_text(p.s, digits);
+    items.push_back(fmt::format("{} at k = {}", where, number_text(p.gain, digits)));
+  }
+  return items.empty() ? std::string("none") : fmt::format("{}", fmt::join(items, "; "));
+}
+
+json locus_points_json(const std::vector<analysis::LocusPoint>& points) {
+  json items = json::array();
+  for (const analysis::LocusPoint& p : points) {
+    items.push_back({{"s", {p.s.real(), p.s.imag()}}, {"gain", p.gain}});
+  }
+  return items;
+}
+
 json step_info_json(const analysis::StepInfo& info) {
   return {{"final_value", figure(info.final_value)},
           {"rise_time", figure(info.rise_time)},
@@ -147,7 +168,44 @@ void run(const ResponseOptions& o) {
   json samples;
   std::optional<analysis::StepInfo> info;
   std::optional<analysis::StabilityMargins> margins;
-  if (o.bode.empty()) {
+  std::optional<analysis::RootLocus> locus;
+  if (!o.root_locus.empty()) {
+    locus = analysis::root_locus(
+        sys, 0, 0,
+        analysis::log_gain_grid(o.root_locus[0], o.root_locus[1], o.points.value_or(200)));
+    const Eigen::Index n = locus->poles.cols();
+    csv = "gain";
+    for (Eigen::Index j = 0; j < n; ++j) csv += fmt::format(",pole{}_re,pole{}_im", j + 1, j + 1);
+    csv += "\n";
+    json rows = json::array();
+    for (Eigen::Index k = 0; k < locus->gains.size(); ++k) {
+      csv += fmt::format("{:.17g}", locus->gains[k]);
+      json row = json::array();
+      for (Eigen::Index j = 0; j < n; ++j) {
+        csv +=
+            fmt::format(",{:.17g},{:.17g}", locus->poles(k, j).real(), locus->poles(k, j).imag());
+        row.push_back({locus->poles(k, j).real(), locus->poles(k, j).imag()});
+      }
+      csv += "\n";
+      rows.push_back(std::move(row));
+    }
+    samples = {{"gain", vector_json(locus->gains)}, {"poles", std::move(rows)}};
+    std::vector<std::string> angles;
+    for (const double a : locus->asymptote_angles_deg) angles.push_back(fmt::format("{:g}°", a));
+    summary += fmt::format(
+        "root locus of 1 + k G(s) = 0 (the feedback u = r − k y), {} gains from 0 and {} to "
+        "{}:\n",
+        locus->gains.size(), number_text(o.root_locus[0], o.digits),
+        number_text(o.root_locus[1], o.digits));
+    summary += angles.empty() ? std::string("  asymptotes: none (as many zeros as poles)\n")
+                              : fmt::format("  asymptotes: {} at {} from {} (1/s)\n", angles.size(),
+                                            fmt::join(angles, ", "),
+                                            number_text(locus->asymptote_centroid, o.digits));
+    summary += fmt::format("  break-away and break-in points (1/s): {}\n",
+                           locus_points_text(locus->breakaway, o.digits));
+    summary += fmt::format("  imaginary-axis crossings (1/s): {}\n",
+                           locus_points_text(locus->crossings, o.digits));
+  } else if (o.bode.empty()) {
     const analysis::TimeGrid grid{o.duration.value_or(0.0), o.points.value_or(0)};
     analysis::TimeResponse r =
         o.step ? analysis::step_response(sys, 0, grid) : analysis::impulse_response(sys, 0, grid);
@@ -212,8 +270,8 @@ void run(const ResponseOptions& o) {
     j["input"] = o.input;
     j["output"] = o.output;
     j["about"] = loaded.result.about;
-    j["response"] = o.step ? "step" : o.impulse ? "impulse" : "bode";
-    if (o.bode.empty()) j["amplitude"] = o.amplitude;
+    j["response"] = o.step ? "step" : o.impulse ? "impulse" : locus ? "root_locus" : "bode";
+    if (o.step || o.impulse) j["amplitude"] = o.amplitude;
     j["gain"] = tf.gain;
     j["relative_degree"] = tf.relative_degree();
     j["poles"] = complex_json(tf.poles);
@@ -222,6 +280,12 @@ void run(const ResponseOptions& o) {
     j["dc_gain"] = figure(tf.dc_gain);
     if (info) j["step_info"] = step_info_json(*info);
     if (margins) j["margins"] = margins_json(*margins);
+    if (locus) {
+      j["breakaway"] = locus_points_json(locus->breakaway);
+      j["crossings"] = locus_points_json(locus->crossings);
+      j["asymptotes"] = {{"centroid", locus->asymptote_centroid},
+                         {"angles_deg", locus->asymptote_angles_deg}};
+    }
     j["samples"] = std::move(samples);
     fmt::print("{}\n", json_text(j, ListSpacing::spaced));
     return;
@@ -248,7 +312,7 @@ void add_response_command(CLI::App& app) {
   auto options = std::make_shared<ResponseOptions>();
   CLI::App* command = app.add_subcommand(
       "response",
-      "Step, impulse or frequency (Bode) response of one input–output pair of a model "
+      "Step, impulse, frequency (Bode) response or root locus of one input–output pair of a model "
       "file linearized about an operating point");
   add_linear_model_options(command, options->model, false);
   command->add_option("--input", options->input, "The input (a signal or prescribed coordinate)")
@@ -262,6 +326,12 @@ void add_response_command(CLI::App& app) {
   kind->add_flag("--impulse", options->impulse, "Unit impulse response");
   kind->add_option("--bode", options->bode,
                    "Frequency response from FMIN to FMAX, angular frequencies in rad/s")
+      ->expected(2)
+      ->check(positive_finite());
+  kind->add_option("--root-locus", options->root_locus,
+                   "Root locus of the feedback u = r − k y for gains k from 0 and KMIN to KMAX "
+                   "(log-spaced; --points, default 200): break-away points, imaginary-axis "
+                   "crossings and asymptotes, and the branches with --csv or --json")
       ->expected(2)
       ->check(positive_finite());
   kind->require_option(1);
@@ -299,11 +369,16 @@ void add_response_command(CLI::App& app) {
       "  momenta response examples/quarter_car.yaml --input road --output body_y --step\n"
       "  momenta response examples/flexible_satellite.yaml --input tc --output theta2 "
       "--bode 0.1 10 --csv bode.csv\n"
+      "  momenta response examples/satellite_attitude.yaml --input thrust --output theta "
+      "--root-locus 0.1 1000\n"
       "Frequencies are angular, rad/s (the CSV also gives Hz); phase in degrees, unwrapped.");
   command->callback([options] {
     if (options->bode.size() == 2 &&
         !(options->bode[0] > 0 && options->bode[1] > options->bode[0])) {
       throw CLI::ValidationError("--bode", "needs 0 < FMIN < FMAX (rad/s)");
+    }
+    if (options->root_locus.size() == 2 && !(options->root_locus[1] > options->root_locus[0])) {
+      throw CLI::ValidationError("--root-locus", "needs 0 < KMIN < KMAX");
     }
     run(*options);
   });

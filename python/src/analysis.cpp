@@ -1,12 +1,14 @@
 // Linear analysis from Python: linearize a model about an operating point, find an equilibrium,
 // and the modes, transfer functions, Bode data and step / impulse responses of a StateSpace.
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 #include <pybind11/complex.h>
 #include <pybind11/stl.h>
+#include <Eigen/Eigenvalues>
 
 #include "bindings.hpp"
 #include "model_handle.hpp"
@@ -37,6 +39,32 @@ py::array_t<std::complex<double>> complex_array(const std::vector<Complex>& z) {
   return out;
 }
 
+}  // namespace
+
+std::string matrix_table(const char* name, const MatX& M, const std::vector<std::string>& rows,
+                         const std::vector<std::string>& columns) {
+  std::string text = fmt::format("{} =\n", name);
+  if (M.rows() == 0 || M.cols() == 0) return text + "  (empty)\n";
+  std::size_t width = 0;
+  for (const std::string& r : rows) width = std::max(width, r.size());
+  std::vector<std::size_t> widths;  // each column as wide as its name, at least 12
+  for (const std::string& c : columns) widths.push_back(std::max<std::size_t>(12, c.size()));
+  text += fmt::format("  {:<{}}", "", width);
+  for (std::size_t j = 0; j < columns.size(); ++j)
+    text += fmt::format(" {:>{}}", columns[j], widths[j]);
+  text += "\n";
+  for (Eigen::Index i = 0; i < M.rows(); ++i) {
+    text += fmt::format("  {:<{}}", rows[static_cast<std::size_t>(i)], width);
+    for (Eigen::Index j = 0; j < M.cols(); ++j) {
+      text += fmt::format(" {:>{}}", number_text(M(i, j), 6), widths[static_cast<std::size_t>(j)]);
+    }
+    text += "\n";
+  }
+  return text;
+}
+
+namespace {
+
 // An input or output given by name (str) or index (int).
 std::size_t input_arg(const StateSpace& s, const py::handle& input) {
   if (py::isinstance<py::str>(input)) return s.input_index(input.cast<std::string>());
@@ -46,6 +74,39 @@ std::size_t output_arg(const StateSpace& s, const py::handle& output) {
   if (py::isinstance<py::str>(output)) return s.output_index(output.cast<std::string>());
   return output.cast<std::size_t>();
 }
+
+}  // namespace
+
+StateSpace state_space_arg(const py::handle& object) {
+  if (py::isinstance<StateSpace>(object)) return object.cast<StateSpace>();
+  if (py::isinstance<LinearModel>(object)) return object.cast<const LinearModel&>().system;
+  // scipy.signal's TransferFunction and ZerosPolesGain (lti or dlti) through their to_ss().
+  py::object system = py::reinterpret_borrow<py::object>(object);
+  if (!py::hasattr(system, "A") && py::hasattr(system, "to_ss")) system = system.attr("to_ss")();
+  if (!py::hasattr(system, "A") || !py::hasattr(system, "B") || !py::hasattr(system, "C") ||
+      !py::hasattr(system, "D")) {
+    throw py::type_error(fmt::format(
+        "system: expected a momenta.StateSpace, a LinearModel, or a state space with A, B, C, D "
+        "(scipy.signal.StateSpace, python-control's StateSpace); got {}",
+        py::str(py::type::of(object).attr("__name__")).cast<std::string>()));
+  }
+  const MatX a = matrix_arg(system.attr("A"), "A", -1, -1);
+  const MatX b = matrix_arg(system.attr("B"), "B", a.rows(), -1);
+  const MatX c = matrix_arg(system.attr("C"), "C", -1, a.rows());
+  const MatX d = matrix_arg(system.attr("D"), "D", c.rows(), b.cols());
+  // scipy: dt None for continuous; python-control: 0 continuous, True "discrete, unspecified".
+  double dt = 0.0;
+  if (py::hasattr(system, "dt")) {
+    const py::object t = system.attr("dt");
+    if (py::isinstance<py::bool_>(t) && t.cast<bool>()) {
+      throw py::value_error("system: a discrete system with an unspecified sample time (dt=True)");
+    }
+    if (!t.is_none() && !py::isinstance<py::bool_>(t)) dt = t.cast<double>();
+  }
+  return StateSpace(a, b, c, d, {}, {}, {}, dt);
+}
+
+namespace {
 
 TimeGrid grid_of(std::optional<double> final_time, std::optional<std::size_t> samples) {
   TimeGrid grid;
@@ -66,22 +127,25 @@ OperatingPoint point_of(const ModelHandle& h, const py::object& q, const py::obj
 
 void bind_state_space(py::module_& m) {
   py::class_<StateSpace>(m, "StateSpace", R"doc(
-ẋ = A x + B u, y = C x + D u with named states, inputs and outputs. Build one from matrices
-(D may be None for zero; names default to x1.., u1.., y1..) or get one from linearize().)doc")
+ẋ = A x + B u, y = C x + D u with named states, inputs and outputs; with dt > 0 the sampled
+x[k+1] = A x[k] + B u[k]. Build one from matrices (D may be None for zero; names default to x1..,
+u1.., y1..), get one from linearize() or c2d(). Unpacks as A, B, C, D = system, like scipy's and
+python-control's; to_scipy() hands it over.)doc")
       .def(py::init([](const py::object& A, const py::object& B, const py::object& C,
                        const py::object& D, std::vector<std::string> states,
-                       std::vector<std::string> inputs, std::vector<std::string> outputs) {
+                       std::vector<std::string> inputs, std::vector<std::string> outputs,
+                       double dt) {
              const MatX a = matrix_arg(A, "A", -1, -1);
              const MatX b = matrix_arg(B, "B", a.rows(), -1);
              const MatX c = matrix_arg(C, "C", -1, a.rows());
              const MatX d = D.is_none() ? MatX() : matrix_arg(D, "D", c.rows(), b.cols());
-             return StateSpace(a, b, c, d, std::move(states), std::move(inputs),
-                               std::move(outputs));
+             return StateSpace(a, b, c, d, std::move(states), std::move(inputs), std::move(outputs),
+                               dt);
            }),
            py::arg("A"), py::arg("B"), py::arg("C"), py::arg("D") = py::none(),
            py::arg("state_names") = std::vector<std::string>{},
            py::arg("input_names") = std::vector<std::string>{},
-           py::arg("output_names") = std::vector<std::string>{})
+           py::arg("output_names") = std::vector<std::string>{}, py::arg("dt") = 0.0)
       .def_property_readonly("A", [](const StateSpace& s) { return to_numpy(s.A()); })
       .def_property_readonly("B", [](const StateSpace& s) { return to_numpy(s.B()); })
       .def_property_readonly("C", [](const StateSpace& s) { return to_numpy(s.C()); })
@@ -89,6 +153,55 @@ void bind_state_space(py::module_& m) {
       .def_property_readonly("state_names", &StateSpace::state_names)
       .def_property_readonly("input_names", &StateSpace::input_names)
       .def_property_readonly("output_names", &StateSpace::output_names)
+      .def_property_readonly("dt", &StateSpace::sample_time,
+                             "Sample time, s; 0 for a continuous system (python-control's rule).")
+      .def_property_readonly("nstates", &StateSpace::state_count)
+      .def_property_readonly("ninputs", &StateSpace::input_count)
+      .def_property_readonly("noutputs", &StateSpace::output_count)
+      .def("__iter__",
+           [](const StateSpace& s) {
+             return py::iter(py::make_tuple(to_numpy(s.A()), to_numpy(s.B()), to_numpy(s.C()),
+                                            to_numpy(s.D())));
+           })
+      .def(
+          "poles",
+          [](const StateSpace& s) {
+            if (s.state_count() == 0) return complex_array({});
+            const Eigen::EigenSolver<MatX> eigen(s.A(), false);
+            if (eigen.info() != Eigen::Success) {
+              throw NumericalError("poles: the eigenvalue iteration on A did not converge");
+            }
+            std::vector<Complex> p(eigen.eigenvalues().begin(), eigen.eigenvalues().end());
+            std::sort(p.begin(), p.end(), [](Complex a, Complex b) {
+              return std::abs(a) != std::abs(b) ? std::abs(a) < std::abs(b) : a.imag() > b.imag();
+            });
+            return complex_array(p);
+          },
+          "Eigenvalues of A: in 1/s, or in the z-plane when dt > 0; by magnitude.")
+      .def(
+          "zeros",
+          [](const StateSpace& s) {
+            if (!s.is_siso()) {
+              throw py::value_error(fmt::format(
+                  "zeros: of a single-input single-output system; this one has {} inputs and {} "
+                  "outputs: take system.siso(input, output)",
+                  s.input_count(), s.output_count()));
+            }
+            return complex_array(transfer_function(s, 0, 0, 0.0).zeros);
+          },
+          "Invariant zeros of a one-input one-output system, 1/s (none cancelled).")
+      .def(
+          "to_scipy",
+          [](const StateSpace& s) {
+            const py::module_ signal = py::module_::import("scipy.signal");
+            if (s.is_discrete()) {
+              return signal.attr("StateSpace")(to_numpy(s.A()), to_numpy(s.B()), to_numpy(s.C()),
+                                               to_numpy(s.D()), py::arg("dt") = s.sample_time());
+            }
+            return signal.attr("StateSpace")(to_numpy(s.A()), to_numpy(s.B()), to_numpy(s.C()),
+                                             to_numpy(s.D()));
+          },
+          "scipy.signal.StateSpace with the same matrices (and dt); names stay here.")
       .def(
           "siso",
           [](const StateSpace& s, const py::object& input, const py::object& output) {
@@ -96,9 +209,19 @@ void bind_state_space(py::module_& m) {
           },
           py::arg("input"), py::arg("output"), "The one-input, one-output subsystem.")
       .def("__repr__", [](const StateSpace& s) {
-        return fmt::format("<momenta.StateSpace: {} states, {} inputs ({}), {} outputs ({})>",
-                           s.state_count(), s.input_count(), fmt::join(s.input_names(), ", "),
-                           s.output_count(), fmt::join(s.output_names(), ", "));
+        std::string text = fmt::format(
+            "<momenta.StateSpace: {} states, {} inputs ({}), {} outputs ({}){}>", s.state_count(),
+            s.input_count(), fmt::join(s.input_names(), ", "), s.output_count(),
+            fmt::join(s.output_names(), ", "),
+            s.is_discrete() ? fmt::format(", sampled every {} s", number_text(s.sample_time(), 6))
+                            : std::string());
+        if (s.state_count() <= 12) {
+          text += "\n" + matrix_table("A", s.A(), s.state_names(), s.state_names());
+          text += matrix_table("B", s.B(), s.state_names(), s.input_names());
+          text += matrix_table("C", s.C(), s.output_names(), s.state_names());
+          text += matrix_table("D", s.D(), s.output_names(), s.input_names());
+        }
+        return text;
       });
 }
 
@@ -331,8 +454,9 @@ void bind_responses(py::module_& m) {
       });
   m.def(
       "transfer_function",
-      [](const StateSpace& s, const py::object& input, const py::object& output,
+      [](const py::object& system, const py::object& input, const py::object& output,
          double cancellation_tolerance) {
+        const StateSpace s = state_space_arg(system);
         return transfer_function(s, input_arg(s, input), output_arg(s, output),
                                  cancellation_tolerance);
       },
@@ -359,8 +483,9 @@ void bind_responses(py::module_& m) {
           "Unwrapped phase, degrees.");
   m.def(
       "bode",
-      [](const StateSpace& s, const py::object& input, const py::object& output,
+      [](const py::object& system, const py::object& input, const py::object& output,
          const py::object& frequencies, double omega_min, double omega_max, std::size_t points) {
+        const StateSpace s = state_space_arg(system);
         if (!frequencies.is_none()) {
           ArgStorage storage;
           return frequency_response(s, input_arg(s, input), output_arg(s, output),
@@ -400,8 +525,9 @@ void bind_responses(py::module_& m) {
       });
   m.def(
       "margins",
-      [](const StateSpace& s, const py::object& input, const py::object& output, double omega_min,
-         double omega_max, std::size_t points) {
+      [](const py::object& system, const py::object& input, const py::object& output,
+         double omega_min, double omega_max, std::size_t points) {
+        const StateSpace s = state_space_arg(system);
         return stability_margins(s, input_arg(s, input), output_arg(s, output), omega_min,
                                  omega_max, points);
       },
@@ -429,8 +555,9 @@ void bind_responses(py::module_& m) {
       });
   m.def(
       "step_response",
-      [](const StateSpace& s, const py::object& input, std::optional<double> final_time,
+      [](const py::object& system, const py::object& input, std::optional<double> final_time,
          std::optional<std::size_t> samples, double amplitude) {
+        const StateSpace s = state_space_arg(system);
         return step_response(s, input_arg(s, input), grid_of(final_time, samples), amplitude);
       },
       py::arg("system"), py::arg("input") = 0, py::kw_only(), py::arg("final_time") = py::none(),
@@ -439,8 +566,9 @@ void bind_responses(py::module_& m) {
       "and sampling unless given.");
   m.def(
       "impulse_response",
-      [](const StateSpace& s, const py::object& input, std::optional<double> final_time,
+      [](const py::object& system, const py::object& input, std::optional<double> final_time,
          std::optional<std::size_t> samples) {
+        const StateSpace s = state_space_arg(system);
         return impulse_response(s, input_arg(s, input), grid_of(final_time, samples));
       },
       py::arg("system"), py::arg("input") = 0, py::kw_only(), py::arg("final_time") = py::none(),
@@ -465,8 +593,9 @@ void bind_responses(py::module_& m) {
       });
   m.def(
       "step_info",
-      [](const StateSpace& s, const py::object& input, const py::object& output,
+      [](const py::object& system, const py::object& input, const py::object& output,
          double settling_band) {
+        const StateSpace s = state_space_arg(system);
         return step_info(s, input_arg(s, input), output_arg(s, output), TimeGrid{}, settling_band);
       },
       py::arg("system"), py::arg("input") = 0, py::arg("output") = 0,

@@ -18,6 +18,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "momenta/common/error.hpp"
 #include "momenta/math/types.hpp"
@@ -74,6 +75,20 @@ py::array_t<double> to_numpy(const Eigen::MatrixBase<Derived>& x) {
 }
 py::array_t<std::complex<double>> to_numpy(const Eigen::VectorXcd& x);
 
+/// "NAME =" and the matrix with its row and column names, 6 significant digits (the reprs).
+std::string matrix_table(const char* name, const MatX& M, const std::vector<std::string>& rows,
+                         const std::vector<std::string>& columns);
+
+/// A system argument: a momenta.StateSpace, a LinearModel (its system), or any object with A, B,
+/// C, D (and dt) — scipy.signal's StateSpace (and its lti / dlti through to_ss()),
+/// python-control's StateSpace — copied into a momenta StateSpace. Raises TypeError otherwise.
+}  // namespace momenta::python
+namespace momenta::analysis {
+class StateSpace;
+}
+namespace momenta::python {
+analysis::StateSpace state_space_arg(const py::handle& object);
+
 /// Raises momenta.NumericalError with e's message and the attribute `result` (a run's rows up to
 /// the failure).
 [[noreturn]] void raise_numerical_error(const NumericalError& e, const py::object& partial_result);
@@ -90,6 +105,7 @@ void bind_model(py::module_& m);
 void bind_dynamics(py::module_& m);
 void bind_simulation(py::module_& m);
 void bind_analysis(py::module_& m);
+void bind_control(py::module_& m);
 void bind_sweep(py::module_& m);
 void bind_mechanics(py::module_& m);
 

@@ -18,6 +18,7 @@ PYBIND11_MODULE(_core, m) {
   bind_dynamics(m);
   bind_simulation(m);
   bind_analysis(m);
+  bind_control(m);
   bind_sweep(m);
   bind_mechanics(m);
 }

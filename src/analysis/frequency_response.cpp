@@ -62,6 +62,7 @@ VecX log_frequency_grid(double omega_min, double omega_max, std::size_t points) 
 
 FrequencyResponse frequency_response(const StateSpace& system, std::size_t input,
                                      std::size_t output, const VecX& frequencies) {
+  require_continuous(system, "frequency_response");
   if (input >= system.input_count() || output >= system.output_count()) {
     throw InvalidArgument(fmt::format(
         "frequency_response: pair (input {}, output {}) out of range: the system has {} inputs "

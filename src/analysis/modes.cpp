@@ -54,6 +54,7 @@ Modes modes(const MatX& A, std::vector<std::string> state_names) {
 }
 
 Modes modes(const StateSpace& system) {
+  require_continuous(system, "modes (frequencies and damping ratios of s-plane poles)");
   Modes result;
   result.state_names = system.state_names();
   const Eigen::Index n = system.A().rows();

@@ -71,8 +71,18 @@ std::size_t index_of(const std::vector<std::string>& names, std::string_view nam
 }  // namespace
 
 StateSpace::StateSpace(MatX A, MatX B, MatX C, MatX D, std::vector<std::string> state_names,
-                       std::vector<std::string> input_names, std::vector<std::string> output_names)
-    : A_(std::move(A)), B_(std::move(B)), C_(std::move(C)), D_(std::move(D)) {
+                       std::vector<std::string> input_names, std::vector<std::string> output_names,
+                       double sample_time)
+    : A_(std::move(A)),
+      B_(std::move(B)),
+      C_(std::move(C)),
+      D_(std::move(D)),
+      sample_time_(sample_time) {
+  if (!std::isfinite(sample_time) || sample_time < 0.0) {
+    throw InvalidArgument(
+        fmt::format("StateSpace: sample time {} s: it must be 0 (continuous) or a positive period",
+                    sample_time));
+  }
   // A fixes n; B's columns fix m and C's rows fix p, the rest must agree.
   const Eigen::Index n = A_.rows();
   check_size(A_, "A", n, n, "A must be square");
@@ -111,11 +121,19 @@ StateSpace StateSpace::siso(std::size_t input, std::size_t output) const {
   const auto i = static_cast<Eigen::Index>(input);
   const auto o = static_cast<Eigen::Index>(output);
   return StateSpace(A_, B_.col(i), C_.row(o), D_.block(o, i, 1, 1), state_names_,
-                    {input_names_[input]}, {output_names_[output]});
+                    {input_names_[input]}, {output_names_[output]}, sample_time_);
 }
 
 StateSpace StateSpace::siso(std::string_view input, std::string_view output) const {
   return siso(input_index(input), output_index(output));
+}
+
+void require_continuous(const StateSpace& system, const char* what) {
+  if (system.is_discrete()) {
+    throw InvalidArgument(
+        fmt::format("{} is for continuous-time systems; this one is sampled every {} s", what,
+                    system.sample_time()));
+  }
 }
 
 StateSpace second_order_state_space(const MatX& M, const MatX& C_damping, const MatX& K,

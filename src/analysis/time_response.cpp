@@ -115,6 +115,7 @@ Discretization zero_order_hold(const MatX& A, const MatX& B, double h) {
 }
 
 double automatic_final_time(const StateSpace& system) {
+  require_continuous(system, "automatic_final_time");
   double fastest_growth = 0.0;
   double slowest_decay = std::numeric_limits<double>::infinity();
   double slowest_undamped = std::numeric_limits<double>::infinity();  // rad/s
@@ -140,6 +141,7 @@ double automatic_final_time(const StateSpace& system) {
 
 TimeResponse step_response(const StateSpace& system, std::size_t input, const TimeGrid& grid,
                            double amplitude) {
+  require_continuous(system, "step_response");
   check_input(system, input);
   if (!std::isfinite(amplitude)) {
     throw InvalidArgument(fmt::format("step_response: amplitude {} is not finite", amplitude));
@@ -166,6 +168,7 @@ TimeResponse step_response(const StateSpace& system, std::size_t input, const Ti
 }
 
 TimeResponse impulse_response(const StateSpace& system, std::size_t input, const TimeGrid& grid) {
+  require_continuous(system, "impulse_response");
   check_input(system, input);
   const Resolved r = resolve(system, grid);
   TimeResponse response = empty_response(system, input, r);

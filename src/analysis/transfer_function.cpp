@@ -160,6 +160,7 @@ Complex TransferFunction::operator()(Complex s) const {
 
 TransferFunction transfer_function(const StateSpace& system, std::size_t input, std::size_t output,
                                    double cancellation_tolerance) {
+  require_continuous(system, "transfer_function");
   check_pair(system, input, output, "transfer_function");
   if (!(cancellation_tolerance >= 0.0)) {
     throw InvalidArgument(fmt::format("transfer_function: cancellation tolerance {} must be >= 0",

@@ -1,11 +1,12 @@
 #pragma once
-// A continuous-time linear time-invariant system in state-space form,
+// A linear time-invariant system in state-space form, continuous or sampled,
 //
-//     ẋ = A x + B u,     y = C x + D u,
+//     ẋ = A x + B u,              y = C x + D u          (continuous, sample time 0), or
+//     x[k+1] = A x[k] + B u[k],   y[k] = C x[k] + D u[k] (discrete, sample time T > 0, t = k T),
 //
-// with n states, m inputs and p outputs, each named. It is what the linearization of a model
-// produces and what every function of momenta/analysis reads. Units are whatever the states,
-// inputs and outputs carry (SI); time is in seconds.
+// with n states, m inputs and p outputs, each named. The continuous form is what the
+// linearization of a model produces; the discrete one is what c2d (discretize.hpp) makes of it.
+// Units are whatever the states, inputs and outputs carry (SI); time is in seconds.
 
 #include <cstddef>
 #include <string>
@@ -16,17 +17,21 @@
 
 namespace momenta::analysis {
 
-/// ẋ = A x + B u, y = C x + D u. Immutable once built; the constructor checks every dimension.
+/// ẋ = A x + B u, y = C x + D u, or its sampled form. Immutable once built; the constructor
+/// checks every dimension.
 class StateSpace {
  public:
   /// Builds the system and checks it.
   ///   A: n×n, B: n×m, C: p×n, D: p×m. An empty D (0×0) stands for the zero p×m matrix.
   ///   state_names (n), input_names (m), output_names (p): an empty list is filled with
   ///   "x1".."xn", "u1".."um", "y1".."yp". Names must be non-empty and unique within their list.
+  ///   sample_time: 0 for a continuous system, else the discrete system's sample period T (s).
   /// Throws InvalidArgument naming the matrix and both sizes when dimensions disagree, the entry
-  /// when one is not finite, and the name when a list has the wrong length or a duplicate.
+  /// when one is not finite, the name when a list has the wrong length or a duplicate, and a
+  /// sample time that is negative or not finite.
   StateSpace(MatX A, MatX B, MatX C, MatX D, std::vector<std::string> state_names = {},
-             std::vector<std::string> input_names = {}, std::vector<std::string> output_names = {});
+             std::vector<std::string> input_names = {}, std::vector<std::string> output_names = {},
+             double sample_time = 0.0);
 
   const MatX& A() const { return A_; }
   const MatX& B() const { return B_; }
@@ -36,6 +41,10 @@ class StateSpace {
   std::size_t state_count() const { return static_cast<std::size_t>(A_.rows()); }
   std::size_t input_count() const { return static_cast<std::size_t>(B_.cols()); }
   std::size_t output_count() const { return static_cast<std::size_t>(C_.rows()); }
+
+  /// 0 for a continuous system, else the sample period T in seconds.
+  double sample_time() const { return sample_time_; }
+  bool is_discrete() const { return sample_time_ > 0.0; }
 
   const std::vector<std::string>& state_names() const { return state_names_; }
   const std::vector<std::string>& input_names() const { return input_names_; }
@@ -62,7 +71,12 @@ class StateSpace {
  private:
   MatX A_, B_, C_, D_;
   std::vector<std::string> state_names_, input_names_, output_names_;
+  double sample_time_ = 0.0;
 };
+
+/// Throws InvalidArgument unless `system` is continuous: "`what` is for continuous-time systems;
+/// this one is sampled every T s". For the analyses that have no discrete form yet.
+void require_continuous(const StateSpace& system, const char* what);
 
 /// The state-space form of the second-order system M q̈ + C_damping q̇ + K q = F u with outputs
 /// y = Cq q + Cv q̇ (nq coordinates, m inputs): state x = [q; q̇], A = [0 I; −M⁻¹K −M⁻¹C],

@@ -1,0 +1,210 @@
+// `momenta lqr MODEL --Q … --R …`: the linear–quadratic regulator of a model file linearized
+// about an operating point — the gain K of u = u₀ − K (x − x₀), the closed-loop poles beside the
+// open-loop ones, and whether the inputs reach every state — continuous, or discrete on the
+// zero-order-hold system with --sample-time. Calls momenta::analysis::lqr; docs/control.md.
+
+#include <cmath>
+#include <complex>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include "commands.hpp"
+#include "linear_model_options.hpp"
+#include "momenta/analysis/controllability.hpp"
+#include "momenta/analysis/discretize.hpp"
+#include "momenta/analysis/lqr.hpp"
+#include "momenta/analysis/modes.hpp"
+#include "momenta/common/error.hpp"
+#include "momenta/common/suggest.hpp"
+#include "option_checks.hpp"
+
+namespace momenta::cli {
+namespace {
+
+using json = nlohmann::ordered_json;
+using analysis::Complex;
+
+struct LqrOptions {
+  LinearModelOptions model;
+  std::string Q;  // "w" (w·I), "w1,…,wn" (the diagonal) or "name=w,…" (others 0)
+  std::string R;
+  std::optional<double> sample_time;
+  bool json = false;
+};
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::string part;
+  for (const char c : text) {
+    if (c == separator) {
+      parts.push_back(part);
+      part.clear();
+    } else if (c != ' ') {
+      part += c;
+    }
+  }
+  parts.push_back(part);
+  return parts;
+}
+
+double weight_value(const std::string& text, const char* option) {
+  std::size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || text.empty() || !std::isfinite(value)) {
+    throw CLI::ValidationError(option, fmt::format("'{}' is not a finite number", text));
+  }
+  if (value < 0.0) {
+    throw CLI::ValidationError(option,
+                               fmt::format("weight {} is negative: a cost cannot reward", value));
+  }
+  return value;
+}
+
+// A diagonal weight over `names` from the option's text (see LqrOptions).
+MatX weight_matrix(const std::string& spec, const std::vector<std::string>& names,
+                   const char* option, const char* what) {
+  const auto n = static_cast<Eigen::Index>(names.size());
+  const std::vector<std::string> parts = split(spec, ',');
+  VecX diagonal = VecX::Zero(n);
+  if (spec.find('=') != std::string::npos) {
+    for (const std::string& part : parts) {
+      const std::size_t equals = part.find('=');
+      if (equals == std::string::npos) {
+        throw CLI::ValidationError(option, fmt::format("'{}': write NAME=WEIGHT", part));
+      }
+      const std::string name = part.substr(0, equals);
+      const auto found = std::find(names.begin(), names.end(), name);
+      if (found == names.end()) {
+        const std::vector<std::string_view> candidates(names.begin(), names.end());
+        throw CLI::ValidationError(
+            option, fmt::format("no {} named '{}'{}; the {}s are: {}", what, name,
+                                did_you_mean(name, candidates), what, fmt::join(names, ", ")));
+      }
+      diagonal[found - names.begin()] = weight_value(part.substr(equals + 1), option);
+    }
+  } else if (parts.size() == 1) {
+    diagonal.setConstant(weight_value(parts[0], option));
+  } else if (static_cast<Eigen::Index>(parts.size()) == n) {
+    for (Eigen::Index i = 0; i < n; ++i) diagonal[i] = weight_value(parts[i], option);
+  } else {
+    throw CLI::ValidationError(
+        option, fmt::format("{} weights for {} {}s ({}): give one number (times the identity), "
+                            "one per {}, or NAME=WEIGHT pairs",
+                            parts.size(), n, what, fmt::join(names, ", "), what));
+  }
+  return diagonal.asDiagonal();
+}
+
+std::vector<Complex> poles_of(const MatX& A) {
+  std::vector<Complex> poles;
+  for (const analysis::Mode& mode : analysis::modes(A).modes) poles.push_back(mode.eigenvalue);
+  return poles;
+}
+
+std::string poles_text(const std::vector<Complex>& poles) {
+  std::vector<std::string> items;
+  for (const Complex& p : poles) items.push_back(complex_text(p));
+  return fmt::format("{}", fmt::join(items, ", "));
+}
+
+json poles_json(const std::vector<Complex>& poles) {
+  json items = json::array();
+  for (const Complex& p : poles) items.push_back(cli::complex_json(p));
+  return items;
+}
+
+void run(const LqrOptions& o) {
+  const LoadedLinearModel loaded = load_linear_model(o.model);
+  require_channels(loaded);
+  const analysis::StateSpace& continuous = loaded.result.linear.system;
+  const analysis::StateSpace plant =
+      o.sample_time ? analysis::c2d(continuous, *o.sample_time) : continuous;
+  const MatX Q = weight_matrix(o.Q, plant.state_names(), "--Q", "state");
+  const MatX R = weight_matrix(o.R, plant.input_names(), "--R", "input");
+  const analysis::Reachability reach = analysis::controllability(plant);
+  const analysis::LqrDesign design = analysis::lqr(plant, Q, R);
+  const std::vector<Complex> open = poles_of(plant.A());
+  std::vector<Complex> closed(design.closed_loop_poles.begin(), design.closed_loop_poles.end());
+
+  if (o.json) {
+    json j;
+    j["model"] = loaded.file.name;
+    j["about"] = loaded.result.about;
+    j["sample_time"] = plant.sample_time();
+    j["state_names"] = plant.state_names();
+    j["input_names"] = plant.input_names();
+    j["Q"] = matrix_json(Q);
+    j["R"] = matrix_json(R);
+    j["K"] = matrix_json(design.K);
+    j["S"] = matrix_json(design.S);
+    j["open_loop_poles"] = poles_json(open);
+    j["closed_loop_poles"] = poles_json(closed);
+    j["controllable_rank"] = reach.rank;
+    if (plant.is_discrete()) {
+      j["A"] = matrix_json(plant.A());
+      j["B"] = matrix_json(plant.B());
+    }
+    fmt::print("{}\n", json_text(j));
+    return;
+  }
+  const char* unit = plant.is_discrete() ? "z-plane" : "1/s";
+  fmt::print(
+      "{}: linear–quadratic regulator about {} ({})\n", loaded.file.name, loaded.result.about,
+      plant.is_discrete() ? fmt::format("discrete: zero-order hold, T = {:g} s; J = Σ xᵀQx + uᵀRu",
+                                        plant.sample_time())
+                          : std::string("continuous: J = ∫ xᵀQx + uᵀRu dt"));
+  fmt::print("controllability: {}\n\n", reachability_text(reach, "inputs", "move"));
+  print_matrix("Q", Q, plant.state_names(), plant.state_names());
+  print_matrix("R", R, plant.input_names(), plant.input_names());
+  fmt::print("\n");
+  print_matrix("K (u = u₀ − K (x − x₀))", design.K, plant.input_names(), plant.state_names());
+  fmt::print("\nopen-loop poles ({}):   {}\n", unit, poles_text(open));
+  fmt::print("closed-loop poles ({}): {}\n", unit, poles_text(closed));
+  if (plant.is_discrete()) {
+    std::vector<Complex> s;
+    for (const Complex& z : closed) s.push_back(std::log(z) / plant.sample_time());
+    fmt::print("  as s = ln z / T (1/s): {}\n", poles_text(s));
+  }
+}
+
+}  // namespace
+
+void add_lqr_command(CLI::App& app) {
+  auto options = std::make_shared<LqrOptions>();
+  CLI::App* command = app.add_subcommand(
+      "lqr", "Linear–quadratic regulator: the state feedback u = −K x of a linearized model");
+  add_linear_model_options(command, options->model, true);
+  command
+      ->add_option("--Q", options->Q,
+                   "State weights: one number (times the identity), one per state in `momenta "
+                   "linearize`'s order, or NAME=WEIGHT pairs (other states 0)")
+      ->required();
+  command
+      ->add_option("--R", options->R,
+                   "Input weights, as --Q: one number, one per input, or NAME=WEIGHT pairs")
+      ->required();
+  command
+      ->add_option("--sample-time", options->sample_time,
+                   "Design a discrete regulator for the plant sampled every T seconds through a "
+                   "zero-order hold (dlqr)")
+      ->check(positive_finite());
+  command->add_flag("--json", options->json, "Print JSON (full precision) instead of text");
+  command->footer(
+      "Examples:\n"
+      "  momenta lqr examples/cart_pendulum.yaml --Q x.position=1,tilt.angle=1 --R 1\n"
+      "  momenta lqr examples/cart_pendulum.yaml --Q 1,1,0,0 --R 1 --sample-time 0.01\n"
+      "The state is the deviation from the operating point; docs/control.md.");
+  command->callback([options] { run(*options); });
+}
+
+}  // namespace momenta::cli

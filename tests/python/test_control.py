@@ -1,0 +1,186 @@
+"""Control design from Python against SciPy's independent solvers and closed forms: the
+inverted pendulum on a cart's open-loop poles (the characteristic polynomial's roots), its LQR
+gain (scipy.linalg.solve_continuous_are / solve_discrete_are), c2d (scipy.signal.cont2discrete),
+Lyapunov (scipy.linalg), `momenta lqr --json` equal to momenta.lqr, and state spaces handed to
+and from scipy without conversion of names or layout."""
+
+import subprocess
+
+import numpy as np
+import pytest
+import scipy.linalg as la
+import scipy.signal as sig
+
+import momenta
+
+from conftest import EXAMPLES, cli_json, cli_path
+
+CART = EXAMPLES / "cart_pendulum.yaml"
+
+
+@pytest.fixture(scope="module")
+def cart():
+    return momenta.linearize(momenta.load_model(CART)).system
+
+
+def test_the_cart_pendulums_poles_are_its_characteristic_roots(cart):
+    M, m, b, l, I, g = 0.5, 0.2, 0.1, 0.3, 0.006, 9.81
+    q = I * (M + m) + M * m * l**2
+    roots = np.roots([q, b * (I + m * l**2), -(M + m) * m * g * l, -b * m * g * l])
+    expected = np.sort_complex(np.append(roots, 0.0))
+    np.testing.assert_allclose(np.sort_complex(cart.poles()), expected, atol=1e-12)
+
+
+def test_lqr_is_scipys_riccati_solution(cart):
+    A, B, C, D = cart
+    Q, R = np.diag([1.0, 1.0, 0.0, 0.0]), np.array([[1.0]])
+    K, S, poles = momenta.lqr(cart, Q, R)
+    X = la.solve_continuous_are(A, B, Q, R)
+    np.testing.assert_allclose(S, X, rtol=1e-11, atol=1e-12 * abs(X).max())
+    np.testing.assert_allclose(K, np.linalg.solve(R, B.T @ X), rtol=1e-11)
+    np.testing.assert_allclose(np.sort_complex(poles), np.sort_complex(np.linalg.eigvals(A - B @ K)),
+                               rtol=1e-10)
+    assert all(p.real < 0 for p in poles)
+    # Vectors and numbers as weights: the diagonal, the identity.
+    np.testing.assert_array_equal(momenta.lqr(cart, [1, 1, 0, 0], 1).K, K)
+
+
+def test_lqr_with_a_cross_weight_is_scipys(cart):
+    A, B, _, _ = cart
+    Q, R = np.diag([2.0, 5.0, 0.1, 0.1]), np.array([[0.5]])
+    N = np.array([[0.1], [0.2], [0.0], [0.05]])
+    X = la.solve_continuous_are(A, B, Q, R, s=N)
+    d = momenta.lqr(cart, Q, R, N)
+    np.testing.assert_allclose(d.S, X, rtol=1e-11, atol=1e-12 * abs(X).max())
+
+
+def test_discrete_lqr_on_the_held_plant_is_scipys(cart):
+    T = 0.01
+    sampled = momenta.c2d(cart, T)
+    assert sampled.dt == T and sampled.state_names == cart.state_names
+    Ad, Bd, Cd, Dd, _ = sig.cont2discrete(tuple(cart), T, method="zoh")
+    np.testing.assert_allclose(sampled.A, Ad, rtol=1e-13, atol=1e-15)
+    np.testing.assert_allclose(sampled.B, Bd, rtol=1e-13, atol=1e-17)
+    Q, R = np.diag([1.0, 1.0, 0.0, 0.0]), np.array([[1.0]])
+    X = la.solve_discrete_are(sampled.A, sampled.B, Q, R)
+    d = momenta.lqr(sampled, Q, R)
+    np.testing.assert_allclose(d.S, X, rtol=1e-9)
+    K = np.linalg.solve(R + sampled.B.T @ X @ sampled.B, sampled.B.T @ X @ sampled.A)
+    np.testing.assert_allclose(d.K, K, rtol=1e-9)
+    assert all(abs(z) < 1 for z in d.closed_loop_poles)
+
+
+def test_tustin_is_scipys_bilinear(cart):
+    Ad, Bd, Cd, Dd, _ = sig.cont2discrete(tuple(cart), 0.05, method="bilinear")
+    d = momenta.c2d(cart, 0.05, method="tustin")
+    for mine, theirs in zip(d, (Ad, Bd, Cd, Dd)):
+        np.testing.assert_allclose(mine, theirs, rtol=1e-13, atol=1e-15)
+
+
+def test_the_command_line_designs_the_same_regulator(cart):
+    cli = cli_json("lqr", CART, "--Q", "x.position=1,tilt.angle=1", "--R", "1")
+    d = momenta.lqr(cart, [1, 1, 0, 0], 1)
+    np.testing.assert_array_equal(np.array(cli["K"]).reshape(1, 4), d.K)
+    assert cli["state_names"] == cart.state_names and cli["input_names"] == ["force"]
+    assert cli["controllable_rank"] == 4
+    sampled = cli_json("lqr", CART, "--Q", "1,1,0,0", "--R", "1", "--sample-time", "0.01")
+    np.testing.assert_allclose(np.array(sampled["K"]).reshape(1, 4),
+                               momenta.lqr(momenta.c2d(cart, 0.01), [1, 1, 0, 0], 1).K, rtol=1e-14)
+
+
+def test_the_command_line_names_a_bad_weight():
+    result = subprocess.run([cli_path(), "lqr", str(CART), "--Q", "tilt=1", "--R", "1"],
+                            capture_output=True, text=True)
+    assert result.returncode == 2
+    assert "no state named 'tilt'" in result.stderr and "tilt.angle" in result.stderr
+    result = subprocess.run([cli_path(), "lqr", str(CART), "--Q", "1,2,3", "--R", "1"],
+                            capture_output=True, text=True)
+    assert result.returncode == 2 and "3 weights for 4 states" in result.stderr
+
+
+def test_controllability_and_observability(cart):
+    c = momenta.controllability(cart)
+    assert c.rank == 4 and c.complete and c.gramian is None  # upright is unstable
+    tilt_only = cart.siso("force", "tilt_angle")
+    o = momenta.observability(tilt_only)
+    assert o.rank == 3 and not o.complete
+    np.testing.assert_allclose(o.hidden_poles, [0.0], atol=1e-12)  # the cart's position
+
+
+def test_lyapunov_solvers_are_scipys():
+    rng = np.random.default_rng(7)
+    A = rng.normal(size=(6, 6)) - 3 * np.eye(6)
+    F = rng.normal(size=(6, 2))
+    Q = F @ F.T
+    # SciPy solves A X + X Aᴴ = Q; momenta A X + X Aᵀ + Q = 0.
+    np.testing.assert_allclose(momenta.lyap(A, Q), la.solve_continuous_lyapunov(A, -Q),
+                               rtol=1e-11, atol=1e-13)
+    Ad = A / (1.1 * max(abs(np.linalg.eigvals(A))))
+    np.testing.assert_allclose(momenta.dlyap(Ad, Q), la.solve_discrete_lyapunov(Ad, Q),
+                               rtol=1e-11, atol=1e-13)
+    B = rng.normal(size=(6, 2))
+    np.testing.assert_allclose(momenta.care(A, B, Q + np.eye(6), np.eye(2)),
+                               la.solve_continuous_are(A, B, Q + np.eye(6), np.eye(2)), rtol=1e-11)
+
+
+def test_a_state_space_behaves_like_scipys(cart):
+    A, B, C, D = cart
+    assert (cart.nstates, cart.ninputs, cart.noutputs, cart.dt) == (4, 1, 2, 0.0)
+    scipy_system = cart.to_scipy()
+    assert isinstance(scipy_system, sig.StateSpace)
+    np.testing.assert_array_equal(scipy_system.A, A)
+    # scipy's systems go where momenta's do, with the same answers.
+    mine = momenta.bode(cart, 0, 1, frequencies=[0.5, 2.0, 8.0])
+    theirs = momenta.bode(scipy_system, 0, 1, frequencies=[0.5, 2.0, 8.0])
+    np.testing.assert_array_equal(mine.response, theirs.response)
+    first_order = momenta.step_response(sig.lti([2.0], [1.0, 4.0]), final_time=1.0, samples=11)
+    np.testing.assert_allclose(first_order.outputs[:, 0], 0.5 * (1 - np.exp(-4 * first_order.time)),
+                               atol=1e-15)
+    discrete = momenta.c2d(cart, 0.1).to_scipy()
+    assert discrete.dt == 0.1
+    assert momenta.c2d(cart, 0.1).dt == pytest.approx(0.1)
+    with pytest.raises(TypeError, match="expected a momenta.StateSpace"):
+        momenta.bode("not a system", 0, 0)
+    # Tilt over force has a zero at the origin: pushing the cart steadily does not tilt it.
+    np.testing.assert_allclose(cart.siso("force", "tilt_angle").zeros(), [0.0], atol=1e-12)
+    with pytest.raises(ValueError, match="single-input single-output"):
+        cart.zeros()
+
+
+def test_what_only_continuous_systems_have_is_refused_for_sampled_ones(cart):
+    with pytest.raises(momenta.InvalidArgument, match="sampled every 0.1 s"):
+        momenta.step_response(momenta.c2d(cart, 0.1))
+
+
+def test_root_locus_branches_are_the_characteristic_roots():
+    # 1/(s (s + 1)(s + 5)) from scipy: 1 + k G = 0 ⇔ s³ + 6 s² + 5 s + k = 0.
+    locus = momenta.root_locus(sig.lti([1.0], [1.0, 6.0, 5.0, 0.0]), k_min=0.1, k_max=100, points=50)
+    for k, poles in zip(locus.gains, locus.poles):
+        np.testing.assert_allclose(np.sort_complex(poles), np.sort_complex(np.roots([1, 6, 5, k])),
+                                   atol=1e-9 * max(1.0, k))
+    (crossing,) = locus.crossings
+    assert crossing.gain == pytest.approx(30.0, rel=1e-13)
+    assert crossing.s == pytest.approx(np.sqrt(5.0) * 1j, rel=1e-13)
+    (breakaway,) = locus.breakaway
+    assert breakaway.s.real == pytest.approx((-12 + np.sqrt(84)) / 6, rel=1e-13)
+    # Each column is one branch: no pole jumps between neighbouring gains.
+    steps = np.abs(np.diff(locus.poles, axis=0)).max(axis=0)
+    assert steps.max() < 2.0
+
+
+def test_response_root_locus_on_the_command_line_is_pythons():
+    quarter = EXAMPLES / "quarter_car.yaml"
+    cli = cli_json("response", quarter, "--input", "road", "--output", "body_y",
+                   "--root-locus", 0.01, 100, "--points", 20)
+    system = momenta.linearize(momenta.load_model(quarter), inputs=["road"], outputs=["body_y"])
+    locus = momenta.root_locus(system, "road", "body_y", k_min=0.01, k_max=100, points=20)
+    np.testing.assert_array_equal(cli["samples"]["gain"], locus.gains)
+    poles = np.array(cli["samples"]["poles"])
+    np.testing.assert_array_equal(poles[..., 0] + 1j * poles[..., 1], locus.poles)
+    assert [c["gain"] for c in cli["crossings"]] == [c.gain for c in locus.crossings]
+    assert len(locus.crossings) == 1 and locus.crossings[0].gain > 0
+    # At the crossing gain the closed loop has a pair on the axis: the stability limit.
+    k = locus.crossings[0].gain
+    A, B, C, D = system.system
+    closed = np.linalg.eigvals(A - k * B @ C / (1 + k * D[0, 0]))
+    assert min(abs(closed - locus.crossings[0].s)) < 1e-8 * abs(locus.crossings[0].s)
