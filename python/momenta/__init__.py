@@ -147,6 +147,35 @@ for _name in ["campbell_diagram", "find_equilibrium", "find_rolling_steady_motio
 del _name
 
 
+from ._keywords import with_keyword_hints as _with_keyword_hints  # noqa: E402
+
+
+def _says_when_not_at_rest(function):
+    """linearize, warning as `momenta modes` notes when the point is not an equilibrium."""
+
+    @_functools.wraps(function)
+    def linearized(*args, **kwargs):
+        linear = function(*args, **kwargs)
+        if linear.largest_acceleration > 1e-9 or linear.largest_speed > 1e-9:
+            import warnings
+            warnings.warn(
+                f"linearize: this state is not an equilibrium (largest acceleration "
+                f"{linear.largest_acceleration:.4g}, largest speed {linear.largest_speed:.4g}): "
+                "A describes the motion linearized at this instant; find_equilibrium(model) "
+                "finds a state at rest, linear_analysis(model, about='steady') a steady motion",
+                stacklevel=2)
+        return linear
+
+    return linearized
+
+
+linearize = _says_when_not_at_rest(linearize)
+
+for _name in [n for n in dir(ModelBuilder) if n.startswith("add_") or n == "set_gravity"]:
+    setattr(ModelBuilder, _name, _with_keyword_hints(getattr(ModelBuilder, _name), _name))
+del _name
+
+
 def _to_pandas(self):
     """The table as a pandas DataFrame indexed by time (needs pandas)."""
     try:

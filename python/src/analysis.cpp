@@ -251,6 +251,10 @@ the free coordinates (mass, damping, stiffness), the point, its acceleration and
       .def_property_readonly("t", [](const LinearModel& l) { return l.point.t; })
       .def_property_readonly("acceleration",
                              [](const LinearModel& l) { return to_numpy(l.acceleration); })
+      .def_property_readonly("largest_acceleration", &largest_acceleration,
+                             "max |v̇| over the free coordinates at the point (0 at an equilibrium)")
+      .def_property_readonly("largest_speed", &largest_speed,
+                             "max |v| over the free coordinates at the point")
       .def_property_readonly("output_values",
                              [](const LinearModel& l) { return to_numpy(l.output_values); })
       .def_readonly("states_shifted", &LinearModel::states_shifted)
@@ -480,7 +484,23 @@ void bind_responses(py::module_& m) {
                              [](const FrequencyResponse& f) { return to_numpy(f.magnitude_db); })
       .def_property_readonly(
           "phase_deg", [](const FrequencyResponse& f) { return to_numpy(f.phase_deg); },
-          "Unwrapped phase, degrees.");
+          "Unwrapped phase, degrees.")
+      .def("__repr__", [](const FrequencyResponse& f) {
+        const Eigen::Index n = f.frequency.size();
+        if (n == 0) {
+          return fmt::format("<momenta.FrequencyResponse {} → {}: no frequencies>", f.input_name,
+                             f.output_name);
+        }
+        Eigen::Index peak = 0;
+        f.magnitude.maxCoeff(&peak);
+        return fmt::format(
+            "<momenta.FrequencyResponse {} → {}: {} frequencies from {} to {} rad/s; peak {} dB at "
+            "{} rad/s, phase {}° to {}°>",
+            f.input_name, f.output_name, n, number_text(f.frequency[0], 4),
+            number_text(f.frequency[n - 1], 4), number_text(f.magnitude_db[peak], 4),
+            number_text(f.frequency[peak], 4), number_text(f.phase_deg[0], 4),
+            number_text(f.phase_deg[n - 1], 4));
+      });
   m.def(
       "bode",
       [](const py::object& system, const py::object& input, const py::object& output,

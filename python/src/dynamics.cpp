@@ -89,6 +89,14 @@ origin (row 0, the world, is ignored). Wrong sizes raise ValueError naming the a
 Results are new arrays. Not thread-safe: one workspace per thread.)doc")
       .def(py::init<ModelHandle>(), py::arg("model"))
       .def_property_readonly("model", [](const Workspace& w) { return w.handle; })
+      .def("__repr__",
+           [](const Workspace& w) {
+             return fmt::format(
+                 "<momenta.Workspace of '{}': nq {}, nv {}, {} bodies; aba, rnea, crba, "
+                 "forward_kinematics, …>",
+                 w.handle.file->name, w.model().nq(), w.model().nv(),
+                 w.model().bodies().size() - 1);
+           })
       .def(
           "aba",
           [](Workspace& w, const py::handle& q, const py::handle& v, const py::handle& tau,

@@ -4,7 +4,9 @@
 #include <fmt/format.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <map>
+#include <numbers>
 
 #include "bindings.hpp"
 #include "model_handle.hpp"
@@ -51,10 +53,34 @@ Transform pose_arg(const py::object& pose, std::string_view name) {
   return X;
 }
 
+// A vector argument, or a number for a one-coordinate joint; None: empty.
 VecX optional_vector(const py::object& x, std::string_view name) {
   if (x.is_none()) return {};
+  if (py::isinstance<py::float_>(x) || py::isinstance<py::int_>(x)) {
+    return VecX::Constant(1, x.cast<double>());
+  }
   ArgStorage storage;
   return vector_arg(x, name, -1, "", storage);
+}
+
+// q0 or q0_deg (v0 or v0_deg): at most one, degrees only where every coordinate is an angle
+// (`units`: the joint's q or v units; "rad" or "rad/s" for an angle).
+VecX initial_coordinates(const py::object& si, const py::object& degrees, JointType type,
+                         const char* key, const std::vector<std::string_view>& units,
+                         std::string_view angle_unit) {
+  const std::string deg_key = fmt::format("{}_deg", key);
+  if (degrees.is_none()) return optional_vector(si, key);
+  if (!si.is_none()) {
+    throw py::value_error(fmt::format("give {} or {}, not both", key, deg_key));
+  }
+  const bool angles = !units.empty() && std::all_of(units.begin(), units.end(),
+                                                    [&](auto u) { return u == angle_unit; });
+  if (!angles) {
+    throw py::value_error(
+        fmt::format("{}: a {} joint's coordinates are not all angles; give {} in SI", deg_key,
+                    joint_type_name(type), key));
+  }
+  return optional_vector(degrees, deg_key) * (std::numbers::pi / 180.0);
 }
 
 LoadFrame load_frame(const std::string& frame) {
@@ -190,7 +216,8 @@ Every add_* method returns the builder, so calls chain.)doc")
           [](Builder& b, std::string name, const std::string& type, std::string parent,
              std::string child, const py::object& axis, const py::object& axis2,
              const py::object& in_parent, const py::object& in_child, const py::object& q0,
-             const py::object& v0, double damping, double armature,
+             const py::object& v0, const py::object& q0_deg, const py::object& v0_deg,
+             double damping, double armature,
              const std::vector<std::string>& prescribed) -> Builder& {
             Joint j;
             j.name = std::move(name);
@@ -201,8 +228,13 @@ Every add_* method returns the builder, so calls chain.)doc")
             if (!axis2.is_none()) j.axis2 = vec3_arg(axis2, "axis2");
             j.X_PJ = pose_arg(in_parent, "in_parent");
             j.X_CJ = pose_arg(in_child, "in_child");
-            j.q0 = optional_vector(q0, "q0");
-            j.v0 = optional_vector(v0, "v0");
+            const JointTraits& traits = joint_traits(j.type);
+            const std::vector<std::string_view> q_units(traits.q_units.begin(),
+                                                        traits.q_units.begin() + joint_nq(j.type));
+            const std::vector<std::string_view> v_units(traits.v_units.begin(),
+                                                        traits.v_units.begin() + joint_nv(j.type));
+            j.q0 = initial_coordinates(q0, q0_deg, j.type, "q0", q_units, "rad");
+            j.v0 = initial_coordinates(v0, v0_deg, j.type, "v0", v_units, "rad/s");
             j.damping = damping;
             j.armature = armature;
             j.prescribed_signals = prescribed;
@@ -212,13 +244,15 @@ Every add_* method returns the builder, so calls chain.)doc")
           py::arg("name"), py::arg("type"), py::kw_only(), py::arg("parent"), py::arg("child"),
           py::arg("axis") = py::none(), py::arg("axis2") = py::none(),
           py::arg("in_parent") = py::none(), py::arg("in_child") = py::none(),
-          py::arg("q0") = py::none(), py::arg("v0") = py::none(), py::arg("damping") = 0.0,
-          py::arg("armature") = 0.0, py::arg("prescribed") = std::vector<std::string>{},
+          py::arg("q0") = py::none(), py::arg("v0") = py::none(), py::arg("q0_deg") = py::none(),
+          py::arg("v0_deg") = py::none(), py::arg("damping") = 0.0, py::arg("armature") = 0.0,
+          py::arg("prescribed") = std::vector<std::string>{},
           R"doc(A joint from `parent` (a body or 'world') to `child`. type: fixed, revolute,
 prismatic, cylindrical, universal, spherical, planar, free (or the aliases weld, hinge, slider,
 ball, floating). axis (in J, default z) and axis2 (universal, in J'); in_parent / in_child: the
 poses of J in the parent and J' in the child, {'position': [x, y, z], 'rotation': R}; q0, v0:
-initial coordinates (default neutral, zero); damping: viscous c on every coordinate; armature:
+initial coordinates (default neutral, zero; a number for a one-coordinate joint), or q0_deg,
+v0_deg in degrees where every coordinate is an angle; damping: viscous c on every coordinate; armature:
 a motor's reflected rotor inertia on every coordinate (kg·m² or kg), as MuJoCo's; prescribed: one signal name per velocity coordinate (a ball joint: its rotation vector; a
 free joint: rotation vector, then position; model/prescribed_motion.hpp).)doc")
       .def(

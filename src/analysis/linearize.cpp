@@ -373,7 +373,21 @@ NormalModes undamped_modes(const LinearModel& linear) {
   }
   const MatX K_sym = 0.5 * (K + K.transpose());
   const MatX M_sym = 0.5 * (linear.mass + linear.mass.transpose());
-  return normal_modes(M_sym, K_sym, names);
+  // K's entries are differences of the generalized forces M q̈ at the point (gravity's, the
+  // springs'): an ω² at the round-off of those over the mass is zero (the double pendulum laid
+  // flat has K = 0 to 1e-15, which would otherwise print ω² = 3.5e-16).
+  double frequency_scale = 0.0;
+  if (static_cast<Eigen::Index>(linear.coordinates.size()) == nf) {
+    VecX free_acceleration(nf);
+    for (Eigen::Index k = 0; k < nf; ++k) {
+      free_acceleration[k] = linear.acceleration[linear.coordinates[static_cast<std::size_t>(k)]];
+    }
+    const VecX forces = M_sym * free_acceleration;
+    for (Eigen::Index k = 0; k < nf; ++k) {
+      frequency_scale = std::max(frequency_scale, std::abs(forces[k]) / M_sym(k, k));
+    }
+  }
+  return normal_modes(M_sym, K_sym, names, frequency_scale);
 }
 
 }  // namespace momenta::analysis

@@ -241,11 +241,13 @@ MatX solve_continuous_riccati(const MatX& A, const MatX& B, const MatX& Q, const
   for (Eigen::Index k = 0; k < 2 * n; ++k) {
     if (std::abs(s.T(k, k).real()) <= 1e-10 * scale) {
       throw NumericalError(fmt::format(
-          "{}: no stabilizing solution: the Hamiltonian has an eigenvalue on the imaginary axis "
-          "({} 1/s): a mode of A on the axis that Q does not weigh, or that B cannot move",
+          "{}: no stabilizing solution: the Hamiltonian has an eigenvalue on the imaginary "
+          "axis at s = {} 1/s: a mode of A on the axis (an integrator at 0, an undamped "
+          "oscillation) that Q does not weigh — give its states a weight — or that B cannot move",
           kFunction,
-          s.T(k, k).imag() >= 0 ? fmt::format("{}j", s.T(k, k).imag())
-                                : fmt::format("−{}j", -s.T(k, k).imag())));
+          std::abs(s.T(k, k).imag()) <= 1e-10 * scale
+              ? std::string("0")
+              : fmt::format("±{:.6g}j", std::abs(s.T(k, k).imag()))));
     }
   }
   const Eigen::Index stable = select_to_front(s, [](Complex z) { return z.real() < 0.0; });

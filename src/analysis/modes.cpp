@@ -92,7 +92,8 @@ Modes modes(const StateSpace& system) {
   return result;
 }
 
-NormalModes normal_modes(const MatX& M, const MatX& K, std::vector<std::string> coordinate_names) {
+NormalModes normal_modes(const MatX& M, const MatX& K, std::vector<std::string> coordinate_names,
+                         double squared_frequency_scale) {
   // Check M, K and the names.
   const Eigen::Index nq = M.rows();
   check_symmetric(M, "the mass matrix M", nq);
@@ -117,9 +118,10 @@ NormalModes normal_modes(const MatX& M, const MatX& K, std::vector<std::string> 
     throw NumericalError("normal_modes: the symmetric eigenvalue iteration did not converge");
   }
   const VecX& squared = solver.eigenvalues();
-  // Eigenvalues below the round-off of the decomposition (relative to the largest) are zero:
-  // rigid-body modes must not come out as NaN frequencies from −1e-17.
-  const double round_off = 1e-12 * squared.cwiseAbs().maxCoeff();
+  // Eigenvalues below the round-off of the decomposition (relative to the largest, or to the
+  // scale K's entries are round-off of) are zero: rigid-body modes must not come out as NaN
+  // frequencies from −1e-17.
+  const double round_off = 1e-12 * std::max(squared.cwiseAbs().maxCoeff(), squared_frequency_scale);
   for (Eigen::Index i = 0; i < nq; ++i) {
     NormalMode mode;
     mode.squared_frequency = std::abs(squared[i]) <= round_off ? 0.0 : squared[i];

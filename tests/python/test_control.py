@@ -184,3 +184,59 @@ def test_response_root_locus_on_the_command_line_is_pythons():
     A, B, C, D = system.system
     closed = np.linalg.eigvals(A - k * B @ C / (1 + k * D[0, 0]))
     assert min(abs(closed - locus.crossings[0].s)) < 1e-8 * abs(locus.crossings[0].s)
+
+
+def test_a_misspelled_keyword_is_named_with_its_nearest():
+    b = momenta.ModelBuilder("typo")
+    with pytest.raises(TypeError, match=r"add_joint\(\): no keyword 'q00'; did you mean 'q0'\? "
+                                        r"It takes name, type, parent, child"):
+        b.add_joint("hinge", "revolute", parent="world", child="bob", q00=0.3)
+    with pytest.raises(TypeError, match=r"no keyword 'pont_a'; did you mean 'point_a'"):
+        b.add_spring_damper("s", body_a="a", pont_a=[0, 0, 0], body_b="b", point_b=[0, 0, 0])
+    # A wrong type is still pybind11's own message.
+    with pytest.raises(TypeError, match="incompatible function arguments"):
+        b.add_joint("hinge", "revolute", parent="world", child=3)
+
+
+def test_a_one_coordinate_joint_takes_a_number_and_degrees():
+    def pendulum(**initial):
+        b = momenta.ModelBuilder("pendulum")
+        b.add_body("bob", momenta.inertia.point_mass(1.0).transformed(np.eye(3), [0, 0, -1]))
+        b.add_joint("hinge", "revolute", parent="world", child="bob", axis=[0, 1, 0], **initial)
+        return b.build()
+
+    np.testing.assert_array_equal(pendulum(q0=0.5).initial_q, [0.5])
+    np.testing.assert_allclose(pendulum(q0_deg=30).initial_q, [np.pi / 6], rtol=1e-15)
+    np.testing.assert_allclose(pendulum(v0_deg=90).initial_v, [np.pi / 2], rtol=1e-15)
+    with pytest.raises(ValueError, match="give q0 or q0_deg, not both"):
+        pendulum(q0=0.1, q0_deg=5)
+    b = momenta.ModelBuilder("slider")
+    b.add_body("block", momenta.inertia.point_mass(1.0))
+    with pytest.raises(ValueError, match="q0_deg: a prismatic joint's coordinates are not all angles"):
+        b.add_joint("slide", "prismatic", parent="world", child="block", q0_deg=3)
+
+
+def test_results_say_what_they_are(cart):
+    bode = momenta.bode(cart, "force", "tilt_angle", omega_min=0.1, omega_max=100)
+    assert repr(bode).startswith("<momenta.FrequencyResponse force → tilt_angle: 200 frequencies "
+                                 "from 0.1 to 100 rad/s; peak")
+    workspace = momenta.Workspace(momenta.load_model(CART))
+    assert repr(workspace).startswith("<momenta.Workspace of 'cart pendulum': nq 2, nv 2, 2 bodies")
+    text = repr(cart)
+    assert "A =" in text and "tilt.angle_rate" in text and "force" in text
+    assert "sampled every 0.01 s" in repr(momenta.c2d(cart, 0.01))
+    assert "closed-loop poles" in repr(momenta.lqr(cart, [1, 1, 0, 0], 1))
+
+
+def test_linearize_away_from_an_equilibrium_warns_and_round_off_is_zero():
+    flat = momenta.load_model(EXAMPLES / "double_pendulum.yaml")  # the upper rod horizontal
+    with pytest.warns(UserWarning, match="not an equilibrium .largest acceleration 9.81"):
+        linear = momenta.linearize(flat)
+    # Laid flat, gravity's stiffness is cos 90° = 0: K is round-off, and so are its ω².
+    assert [mode.squared_frequency for mode in momenta.undamped_modes(linear)] == [0.0, 0.0]
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        at_rest = momenta.find_equilibrium(flat).linear
+    frequencies = [mode.squared_frequency for mode in momenta.undamped_modes(at_rest)]
+    assert all(w > 1.0 for w in frequencies)  # the hanging double pendulum's two modes

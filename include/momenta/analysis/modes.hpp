@@ -71,10 +71,15 @@ struct NormalModes {
 /// K φ = ω² M φ, solved by Cholesky of M and a symmetric eigen-decomposition (Eigen's
 /// GeneralizedSelfAdjointEigenSolver), so ω² are real and the shapes M-orthonormal
 /// (Φᵀ M Φ = I, Φᵀ K Φ = diag ω²). Frequencies ascending.
+/// An ω² with |ω²| ≤ 1e-12 · max(largest |ω²|, squared_frequency_scale) is reported as 0 (a
+/// rigid-body mode, not −1e-17 and a NaN frequency): the scale, 1/s², is what the caller knows
+/// K's entries to be round-off of (undamped_modes passes the generalized forces at the point
+/// over the mass); 0: the largest |ω²| alone.
 /// Throws InvalidArgument if M or K is not square and nq×nq, not symmetric (to 1e-12 of its
 /// largest entry), or M is not positive definite.
 NormalModes normal_modes(const MatX& M, const MatX& K,
-                         std::vector<std::string> coordinate_names = {});
+                         std::vector<std::string> coordinate_names = {},
+                         double squared_frequency_scale = 0.0);
 
 /// Modes of M q̈ + C q̇ + K q = 0 through the companion form x = [q; q̇],
 /// A = [0 I; −M⁻¹K −M⁻¹C] (second_order_state_space). 2·nq modes; the shapes run over
