@@ -106,7 +106,31 @@ __version__ = _core.__version__
 with_symbolic = _core.with_symbolic
 
 if with_symbolic:
-    from ._core import equations, symbolic_transfer_function
+    from ._core import symbolic_transfer_function
+
+    def equations(model, *, format="text", symbols=(), all_symbols=False, names=None,
+                  coordinates="quaternion", **options):
+        """equations(model: Model, *, format: str = 'text', symbols: List[str] = [], all_symbols: bool = False, names: Dict[str, str] = {}, coordinates: str = 'quaternion', **options: object) -> Any
+
+        The model's equations of motion in symbols, as `momenta equations` prints them: a list of
+        strings (format 'text' or 'latex'; options form='lagrange' | 'newton-euler',
+        principal_axes, greek), or with format='sympy' a SympyEquations: sympy.Eq objects with
+        the coordinates as sympy.physics.vector dynamicsymbols of t, the matrix form M, h, B as
+        sympy matrices, the parameters' values and units, and a LaTeX repr for a notebook
+        (docs/python.md; needs python3-sympy). `symbols` names the parameters kept as symbols
+        (all_symbols: every one), `names` renames them, coordinates='euler:ZXZ' writes ball
+        and free joints as Euler angles (docs/equations.md)."""
+        if format == "sympy":
+            if options:
+                raise TypeError(f"equations(format='sympy') takes symbols, all_symbols, names and "
+                                f"coordinates; not {', '.join(options)}")
+            from ._sympy import SympyEquations
+            return SympyEquations(_core._equation_parts(
+                model, symbols=list(symbols), all_symbols=all_symbols, names=names or {},
+                coordinates=coordinates))
+        return _core.equations(model, format=format, symbols=list(symbols),
+                               all_symbols=all_symbols, names=names or {},
+                               coordinates=coordinates, **options)
 else:
     def _without_symbolic(name):
         def refuse(*args, **kwargs):

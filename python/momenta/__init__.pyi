@@ -752,8 +752,8 @@ def dlyap(A: object, Q: object) -> numpy.ndarray:
     """X with A X Aᵀ − X + Q = 0."""
     ...
 
-def equations(model: Model, *, symbols: List[str] = [], all_symbols: bool = False, form: str = 'lagrange', format: str = 'text', principal_axes: bool = False, greek: bool = False, names: Dict[str, str] = {}, coordinates: str = 'quaternion') -> List[str]:
-    """The model's equations of motion in symbols, one string per equation, as `momenta equations` prints them: 'lagrange' (one per free speed, each with its constraint forces G^T lambda, then each constraint row as '<row>: phi = 0' or '<row>: G v = 0') or 'newton-euler' (each body's ΣF = m a_G and ΣM_G = """
+def equations(model: Model, *, format: str = 'text', symbols: List[str] = [], all_symbols: bool = False, names: Dict[str, str] = {}, coordinates: str = 'quaternion', **options: object) -> Any:
+    """The model's equations of motion in symbols, as `momenta equations` prints them: a list of strings (format 'text' or 'latex'; options form='lagrange' | 'newton-euler', principal_axes, greek), or with format='sympy' a SympyEquations: sympy.Eq objects with the coordinates as sympy.physics.vector dynami"""
     ...
 
 def find_equilibrium(model: Model, *, q_guess: object = None, t: float = 0.0, tolerance: float = 1e-10, max_iterations: int = 100) -> Equilibrium:

@@ -214,6 +214,53 @@ coordinates='euler:ZXZ' writes ball and free joints as three Euler angles phi, t
 `momenta equations --coordinates`), the default 'quaternion' as the engine integrates them.)doc");
 
   m.def(
+      "_equation_parts",
+      [](const ModelHandle& h, std::vector<std::string> symbols, bool all_symbols,
+         const std::map<std::string, std::string>& names, const std::string& coordinates) {
+        const symbolic::EquationOptions options =
+            equation_options(h, std::move(symbols), all_symbols, false, false, names);
+        const symbolic::Equations e = symbolic::derive_equations(
+            coordinates == "quaternion"
+                ? h.model()
+                : model::with_euler_coordinates(h.model(), coordinates.substr(6)),
+            options);
+        constexpr symbolic::Format text = symbolic::Format::text;
+        const int free = static_cast<int>(e.free_speeds().size());
+        std::vector<std::vector<std::string>> M(static_cast<std::size_t>(free));
+        std::vector<std::string> velocity_product, gravity, force, equations;
+        for (int r = 0; r < free; ++r) {
+          for (int c = 0; c < free; ++c)
+            M[static_cast<std::size_t>(r)].push_back(e.mass_matrix_entry(r, c, text));
+          velocity_product.push_back(e.velocity_product(r, text));
+          gravity.push_back(e.gravity(r, text));
+          force.push_back(e.generalized_force(r, text));
+          equations.push_back(e.equation(r, text));
+        }
+        py::list parameters;
+        for (const symbolic::Parameter& p : e.parameters()) {
+          parameters.append(py::make_tuple(p.name, p.value, p.unit));
+        }
+        py::dict out;
+        out["configuration_names"] = e.configuration_names();
+        out["speed_names"] = e.speed_names();
+        out["acceleration_names"] = e.acceleration_names();
+        out["free_speeds"] = e.free_speeds();
+        out["input_names"] = e.input_names();
+        out["parameters"] = parameters;
+        out["M"] = M;
+        out["velocity_product"] = velocity_product;
+        out["gravity"] = gravity;
+        out["generalized_force"] = force;
+        out["equations"] = equations;
+        out["constraint_rows"] = e.constraint_rows();
+        return out;
+      },
+      py::arg("model"), py::kw_only(), py::arg("symbols") = std::vector<std::string>{},
+      py::arg("all_symbols") = false, py::arg("names") = std::map<std::string, std::string>{},
+      py::arg("coordinates") = "quaternion",
+      "The matrix form's entries and the equations as text, for equations(format='sympy').");
+
+  m.def(
       "symbolic_transfer_function",
       [](const ModelHandle& h, const std::string& input, const std::string& coordinate, bool rate,
          std::vector<std::string> symbols, bool all_symbols, const py::object& q,

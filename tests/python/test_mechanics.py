@@ -193,3 +193,52 @@ def test_a_top_in_euler_angles_as_the_command_line_writes_it():
     assert any("theta_ddot" in line for line in mine) and not any("_qw" in line for line in mine)
     with pytest.raises(momenta.InvalidArgument, match="euler:SEQUENCE"):
         momenta.equations(model, coordinates="angles")
+
+
+@needs_symbolic
+def test_equations_as_sympy_are_lagranges_by_hand():
+    sympy = pytest.importorskip("sympy")
+    from sympy.physics.vector import dynamicsymbols
+    model = momenta.load_model(EXAMPLES / "double_pendulum.yaml")
+    eqs = momenta.equations(model, format="sympy", all_symbols=True)
+    assert len(eqs) == 2 and all(isinstance(e, sympy.Eq) and e.rhs == 0 for e in eqs)
+    # The double pendulum's Lagrangian by hand (point masses m1 on L1, m2 on L2 hung from the
+    # first): the relative angle θ2 is measured from the upper rod.
+    t = dynamicsymbols._t
+    th1, th2 = dynamicsymbols("upper lower")
+    m1, m2, L1, L2, g = sympy.symbols("m_mass1 m_mass2 L_mass1 L_mass2 g", real=True)
+    # The model's symbols for the lower joint's offset and the masses' distances.
+    Lj = sympy.Symbol("L_lower", real=True)
+    x1, z1 = L1 * sympy.sin(th1), -L1 * sympy.cos(th1)
+    x2 = Lj * sympy.sin(th1) + L2 * sympy.sin(th1 + th2)
+    z2 = -Lj * sympy.cos(th1) - L2 * sympy.cos(th1 + th2)
+    T = (m1 * (x1.diff(t)**2 + z1.diff(t)**2) + m2 * (x2.diff(t)**2 + z2.diff(t)**2)) / 2
+    V = g * (m1 * z1 + m2 * z2)
+    Lagrangian = T - V
+    for q, equation in zip([th1, th2], eqs):
+        by_hand = Lagrangian.diff(q.diff(t)).diff(t) - Lagrangian.diff(q)
+        assert sympy.simplify(sympy.expand_trig(equation.lhs - by_hand)) == 0
+    # The matrix form: M v̇ + h = the equations; M's values at the file's numbers.
+    residual = eqs.M * eqs.accelerations + eqs.h - sympy.Matrix([e.lhs for e in eqs])
+    assert sympy.simplify(residual) == sympy.zeros(2, 1)
+    values = eqs.values()
+    at = {th1: 0.3, th2: -0.7}
+    numeric = np.array(eqs.M.subs(values).subs(at).evalf(), dtype=float)
+    np.testing.assert_allclose(numeric, momenta.Workspace(model).crba([0.3, -0.7]), rtol=1e-14)
+    assert eqs.units[sympy.Symbol("g", real=True)] == "m/s²"
+    assert eqs._repr_latex_().startswith(r"$\begin{aligned}") and r"\ddot{upper}" in eqs._repr_latex_()
+    assert "= 0" in repr(eqs)
+
+
+@needs_symbolic
+def test_sympy_equations_carry_the_inputs_and_a_spinning_bodys_own_speeds():
+    sympy = pytest.importorskip("sympy")
+    cruise = momenta.equations(momenta.load_model(EXAMPLES / "cruise_control.yaml"), format="sympy",
+                               all_symbols=True)
+    (u,) = cruise.inputs
+    assert cruise.B.shape == (1, 1) and cruise.B[0, 0] == 1  # the engine's force along the road
+    top = momenta.equations(momenta.load_model(EXAMPLES / "heavy_top.yaml"), format="sympy")
+    assert len(top) == 3 and len(top.coordinates) == 7  # a quaternion and the body's ω
+    with pytest.raises(TypeError, match="format='sympy'"):
+        momenta.equations(momenta.load_model(EXAMPLES / "pendulum.yaml"), format="sympy",
+                          greek=True)
