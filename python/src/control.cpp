@@ -14,6 +14,7 @@
 #include "momenta/analysis/discretize.hpp"
 #include "momenta/analysis/lqr.hpp"
 #include "momenta/analysis/matrix_equations.hpp"
+#include "momenta/analysis/pole_placement.hpp"
 #include "momenta/analysis/root_locus.hpp"
 #include "momenta/analysis/state_space.hpp"
 #include "momenta/common/number_text.hpp"
@@ -81,6 +82,34 @@ cost from x₀ is x₀ᵀ S x₀), the closed-loop poles, and the names of K's r
       "Linear-quadratic regulator of a continuous system (lqr) or, when system.dt > 0, of a "
       "discrete one (dlqr). Q and R: matrices, vectors (the diagonal) or numbers (times I). "
       "Returns an LqrDesign, which unpacks as K, S, poles = lqr(...), as python-control's does.");
+}
+
+void bind_pole_placement(py::module_& m) {
+  py::class_<PolePlacement>(m, "PolePlacement", R"doc(
+A state feedback u = −K x placing the poles of A − B K (Kautsky, Nichols & Van Dooren's method 0,
+as scipy.signal.place_poles(method="KNV0")): K, the closed-loop poles as computed, and the
+eigenvector matrix's condition number (how sensitive the placement is).)doc")
+      .def_property_readonly("K", [](const PolePlacement& p) { return to_numpy(p.K); })
+      .def_property_readonly("closed_loop_poles",
+                             [](const PolePlacement& p) { return to_numpy(p.closed_loop_poles); })
+      .def_readonly("eigenvector_condition", &PolePlacement::eigenvector_condition)
+      .def_readonly("state_names", &PolePlacement::state_names)
+      .def_readonly("input_names", &PolePlacement::input_names)
+      .def("__repr__", [](const PolePlacement& p) {
+        return fmt::format(
+            "<momenta.PolePlacement: u = −K x\n{}  closed-loop poles: {}\n  "
+            "eigenvector condition {}>",
+            matrix_table("K", p.K, p.input_names, p.state_names), poles_text(p.closed_loop_poles),
+            number_text(p.eigenvector_condition, 4));
+      });
+  m.def(
+      "place_poles",
+      [](const py::object& system, const std::vector<Complex>& poles) {
+        return place_poles(state_space_arg(system), poles);
+      },
+      py::arg("system"), py::arg("poles"),
+      "The state feedback u = −K x that puts the eigenvalues of A − B K at `poles` (complex ones "
+      "in conjugate pairs).");
 }
 
 void bind_discretization(py::module_& m) {
@@ -256,6 +285,7 @@ void bind_matrix_equations(py::module_& m) {
 
 void bind_control(py::module_& m) {
   bind_lqr(m);
+  bind_pole_placement(m);
   bind_discretization(m);
   bind_reachability(m);
   bind_root_locus(m);

@@ -240,3 +240,28 @@ def test_linearize_away_from_an_equilibrium_warns_and_round_off_is_zero():
         at_rest = momenta.find_equilibrium(flat).linear
     frequencies = [mode.squared_frequency for mode in momenta.undamped_modes(at_rest)]
     assert all(w > 1.0 for w in frequencies)  # the hanging double pendulum's two modes
+
+
+def test_pole_placement_is_scipys(cart):
+    A, B, _, _ = cart
+    poles = [-1, -2, -3 + 1j, -3 - 1j]
+    placed = momenta.place_poles(cart, poles)
+    # One input: the gain is unique, and SciPy's.
+    theirs = sig.place_poles(A, B, poles).gain_matrix
+    np.testing.assert_allclose(placed.K, theirs, rtol=1e-12)
+    np.testing.assert_allclose(np.sort_complex(placed.closed_loop_poles), np.sort_complex(poles),
+                               atol=1e-12)
+    # Two inputs: the freedom spent on robustness as well as SciPy's (Tits–Yang with complex
+    # poles, KNV0 with real ones), the poles where asked.
+    rng = np.random.default_rng(3)
+    A, B = rng.normal(size=(6, 6)), rng.normal(size=(6, 2))
+    system = momenta.StateSpace(A, B, np.zeros((0, 6)))
+    for wanted, method in [([-1, -2 + 1j, -2 - 1j, -3, -0.5 + 4j, -0.5 - 4j], "YT"),
+                           ([-1, -2, -3, -4, -5, -6], "KNV0")]:
+        mine = momenta.place_poles(system, wanted)
+        np.testing.assert_allclose(np.sort_complex(np.linalg.eigvals(A - B @ mine.K)),
+                                   np.sort_complex(wanted), atol=1e-12)
+        reference = sig.place_poles(A, B, wanted, method=method)
+        assert mine.eigenvector_condition < 1.01 * np.linalg.cond(reference.X)
+    with pytest.raises(momenta.InvalidArgument, match="has no conjugate"):
+        momenta.place_poles(cart, [-1, -2, -3 + 1j, -4])

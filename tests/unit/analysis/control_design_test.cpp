@@ -9,6 +9,9 @@
 //     H(z) = G((2/T)(z − 1)/(z + 1)) at points of the z-plane;
 //   - controllability and observability: ranks and hidden modes of a system built with them,
 //     unchanged by an orthogonal change of state;
+//   - pole placement: the double integrator's K = [p₁p₂, −(p₁ + p₂)] (the characteristic
+//     polynomial's coefficients), and on random single- and two-input systems the eigenvalues of
+//     A − B K equal to those asked for;
 //   - root locus: K/(s (s + 1)(s + 5)) breaks away where 3s² + 12s + 5 = 0 and crosses the
 //     imaginary axis at ω = √5, k = 30 (Routh); (s + 2)/(s (s + 1)) leaves the axis at −2 + √2
 //     and returns at −2 − √2 with k = 3 ∓ 2√2 (its circle about the zero).
@@ -26,6 +29,7 @@
 #include "momenta/analysis/discretize.hpp"
 #include "momenta/analysis/lqr.hpp"
 #include "momenta/analysis/matrix_equations.hpp"
+#include "momenta/analysis/pole_placement.hpp"
 #include "momenta/analysis/root_locus.hpp"
 #include "momenta/analysis/transfer_function.hpp"
 #include "momenta/common/error.hpp"
@@ -328,6 +332,71 @@ TEST(Controllability, TheDiscreteGramianSolvesSteinsEquation) {
   const MatX residual =
       d.A() * c.gramian * d.A().transpose() - c.gramian + d.B() * d.B().transpose();
   EXPECT_LT(max_abs(residual), 1e-13 * max_abs(c.gramian));
+}
+
+// ---- pole placement ----
+
+// Every requested pole matched by one of A − B K's, each used once.
+void expect_placed(const std::vector<Complex>& wanted, const VecXc& got, double tolerance) {
+  ASSERT_EQ(static_cast<Eigen::Index>(wanted.size()), got.size());
+  std::vector<bool> used(wanted.size(), false);
+  for (const Complex& g : got) {
+    std::size_t best = wanted.size();
+    for (std::size_t i = 0; i < wanted.size(); ++i) {
+      if (!used[i] &&
+          (best == wanted.size() || std::abs(wanted[i] - g) < std::abs(wanted[best] - g))) {
+        best = i;
+      }
+    }
+    ASSERT_LT(best, wanted.size());
+    used[best] = true;
+    EXPECT_NEAR(std::abs(wanted[best] - g), 0.0, tolerance * std::max(1.0, std::abs(g))) << g;
+  }
+}
+
+TEST(PolePlacement, TheDoubleIntegratorsGainIsItsCharacteristicPolynomial) {
+  // s² + k₂ s + k₁ = (s + 1)(s + 2): K = [2, 3].
+  const PolePlacement p = place_poles(double_integrator(), {Complex(-1.0), Complex(-2.0)});
+  EXPECT_NEAR(p.K(0, 0), 2.0, 1e-14);
+  EXPECT_NEAR(p.K(0, 1), 3.0, 1e-14);
+  // (s + 1)² + 4 = s² + 2 s + 5: K = [5, 2].
+  const PolePlacement c =
+      place_poles(double_integrator(), {Complex(-1.0, 2.0), Complex(-1.0, -2.0)});
+  EXPECT_NEAR(c.K(0, 0), 5.0, 1e-13);
+  EXPECT_NEAR(c.K(0, 1), 2.0, 1e-13);
+}
+
+TEST(PolePlacement, RandomSystemsGetThePolesAskedFor) {
+  const std::vector<Complex> wanted{Complex(-1.0), Complex(-2.0, 1.0), Complex(-2.0, -1.0),
+                                    Complex(-3.0), Complex(-0.5, 4.0), Complex(-0.5, -4.0)};
+  const StateSpace single(random_matrix(6, 6, 51), random_matrix(6, 1, 52), MatX::Zero(0, 6),
+                          MatX());
+  // One input leaves no freedom: the eigenvectors are as conditioned as the system makes them
+  // (κ(X) of a random 6-state system is 1e2–1e4), and the poles land to about κ ε ‖A‖.
+  const PolePlacement one = place_poles(single, wanted);
+  expect_placed(wanted, one.closed_loop_poles, 1e-8);
+  const StateSpace two(random_matrix(6, 6, 53), random_matrix(6, 2, 54), MatX::Zero(0, 6), MatX());
+  const PolePlacement p = place_poles(two, wanted);
+  expect_placed(wanted, p.closed_loop_poles, 1e-10);
+  EXPECT_LT(p.eigenvector_condition, one.eigenvector_condition);  // the freedom used
+  // A pole twice with two inputs.
+  const std::vector<Complex> twice{Complex(-1.0), Complex(-1.0), Complex(-2.0),
+                                   Complex(-3.0), Complex(-4.0), Complex(-5.0)};
+  expect_placed(twice, place_poles(two, twice).closed_loop_poles, 1e-7);
+}
+
+TEST(PolePlacement, WhatCannotBePlacedIsSaid) {
+  EXPECT_THROW(place_poles(double_integrator(), {Complex(-1.0)}), InvalidArgument);
+  EXPECT_THROW(place_poles(double_integrator(), {Complex(-1.0, 1.0), Complex(-2.0)}),
+               InvalidArgument);  // no conjugate
+  EXPECT_THROW(place_poles(double_integrator(), {Complex(-1.0), Complex(-1.0)}),
+               InvalidArgument);  // twice with one input
+  MatX A(2, 2), B(2, 1);
+  A << -1, 0, 0, -2;
+  B << 1, 0;
+  EXPECT_THROW(
+      place_poles(StateSpace(A, B, MatX::Zero(0, 2), MatX()), {Complex(-3.0), Complex(-4.0)}),
+      NumericalError);
 }
 
 // ---- root locus ----
