@@ -244,17 +244,20 @@ void run(const ResponseOptions& o) {
     MatX bode(f.frequency.size(), 3);
     bode << f.magnitude, f.magnitude_db, f.phase_deg;
     check_samples("frequency response", f.frequency, "rad/s", bode);
-    csv = "frequency_rad_s,frequency_hz,magnitude,magnitude_db,phase_deg\n";
+    // Bode's columns, then G(jω)'s real and imaginary parts: the Nyquist plot (Nichols's is
+    // magnitude_db against phase_deg).
+    csv = "frequency_rad_s,frequency_hz,magnitude,magnitude_db,phase_deg,real,imag\n";
     Eigen::Index peak = 0;
     f.magnitude.maxCoeff(&peak);
     for (Eigen::Index k = 0; k < f.frequency.size(); ++k)
-      csv += fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", f.frequency[k],
-                         f.frequency[k] / (2 * std::numbers::pi), f.magnitude[k], f.magnitude_db[k],
-                         f.phase_deg[k]);
-    samples = {{"frequency_rad_s", vector_json(f.frequency)},
-               {"magnitude", vector_json(f.magnitude)},
-               {"magnitude_db", vector_json(f.magnitude_db)},
-               {"phase_deg", vector_json(f.phase_deg)}};
+      csv +=
+          fmt::format("{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", f.frequency[k],
+                      f.frequency[k] / (2 * std::numbers::pi), f.magnitude[k], f.magnitude_db[k],
+                      f.phase_deg[k], f.response[k].real(), f.response[k].imag());
+    samples = {
+        {"frequency_rad_s", vector_json(f.frequency)}, {"magnitude", vector_json(f.magnitude)},
+        {"magnitude_db", vector_json(f.magnitude_db)}, {"phase_deg", vector_json(f.phase_deg)},
+        {"real", vector_json(f.response.real())},      {"imag", vector_json(f.response.imag())}};
     summary += fmt::format(
         "Bode, {} frequencies from {:.6g} to {:.6g} rad/s: peak {:.6g} dB at "
         "{:.6g} rad/s\n",

@@ -68,10 +68,14 @@ def test_bode_and_step_are_the_command_lines():
     bode = momenta.bode(system, inp, out, omega_min=1.0, omega_max=100.0, points=50)
     header, table = cli_csv("response", path, "--input", inp, "--output", out, "--bode", 1, 100,
                             "--points", 50, "--csv", "-")
-    assert header == ["frequency_rad_s", "frequency_hz", "magnitude", "magnitude_db", "phase_deg"]
+    assert header == ["frequency_rad_s", "frequency_hz", "magnitude", "magnitude_db", "phase_deg",
+                      "real", "imag"]
     np.testing.assert_array_equal(bode.frequency, table[:, 0])
     np.testing.assert_array_equal(bode.magnitude, table[:, 2])
     np.testing.assert_array_equal(bode.magnitude_db, table[:, 3])
+    # The Nyquist plot's coordinates: G(jω) itself.
+    np.testing.assert_array_equal(bode.response.real, table[:, 5])
+    np.testing.assert_array_equal(bode.response.imag, table[:, 6])
     np.testing.assert_array_equal(bode.phase_deg, table[:, 4])
     step = momenta.step_response(system, inp)
     header, table = cli_csv("response", path, "--input", inp, "--output", out, "--step",
