@@ -62,5 +62,7 @@ void add_response_command(CLI::App& app);
 
 /// `momenta lqr MODEL --Q … --R …`: the linear–quadratic regulator of a linearized model.
 void add_lqr_command(CLI::App& app);
+/// `momenta place MODEL --poles …`: pole placement on a linearized model.
+void add_place_command(CLI::App& app);
 
 }  // namespace momenta::cli

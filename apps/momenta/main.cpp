@@ -53,6 +53,7 @@ constexpr std::pair<std::string_view, std::string_view> kCommandSummaries[] = {
     {"modes", "eigenvalues, natural frequencies, damping ratios, mode shapes"},
     {"response", "step, impulse or Bode response of one input-output pair"},
     {"lqr", "linear-quadratic regulator: state-feedback gain K and closed-loop poles"},
+    {"place", "pole placement: the state-feedback gain K for the closed-loop poles asked"},
     {"campbell", "a rotor's whirl frequencies against spin speed; critical speeds"},
     {"steady", "steady precession of a symmetric top"},
     {"kinematics", "a point's motion seen from a rotating body's frame"},
@@ -96,6 +97,7 @@ int main(int argc, char** argv) {
   momenta::cli::add_modes_command(app);
   momenta::cli::add_response_command(app);
   momenta::cli::add_lqr_command(app);
+  momenta::cli::add_place_command(app);
   momenta::cli::add_campbell_command(app);
   momenta::cli::add_steady_command(app);
   momenta::cli::add_kinematics_command(app);

@@ -265,3 +265,16 @@ def test_pole_placement_is_scipys(cart):
         assert mine.eigenvector_condition < 1.01 * np.linalg.cond(reference.X)
     with pytest.raises(momenta.InvalidArgument, match="has no conjugate"):
         momenta.place_poles(cart, [-1, -2, -3 + 1j, -4])
+
+
+def test_place_on_the_command_line_is_pythons(cart):
+    cli = cli_json("place", CART, "--poles=-1,-2,-3+1j,-3-1j")
+    np.testing.assert_array_equal(np.array(cli["K"]).reshape(1, 4),
+                                  momenta.place_poles(cart, [-1, -2, -3 + 1j, -3 - 1j]).K)
+    assert cli["requested_poles"] == [[-1, 0], [-2, 0], [-3, 1], [-3, -1]]
+    result = subprocess.run([cli_path(), "place", str(CART), "--poles=-1,-2,-3+1j,-4"],
+                            capture_output=True, text=True)
+    assert result.returncode == 1 and "has no conjugate" in result.stderr
+    result = subprocess.run([cli_path(), "place", str(CART), "--poles=-1,x,2,3"],
+                            capture_output=True, text=True)
+    assert result.returncode == 2 and "'x' is not a number or a complex a+bj" in result.stderr

@@ -1,8 +1,12 @@
-// `momenta lqr MODEL --Q … --R …`: the linear–quadratic regulator of a model file linearized
-// about an operating point — the gain K of u = u₀ − K (x − x₀), the closed-loop poles beside the
-// open-loop ones, and whether the inputs reach every state — continuous, or discrete on the
-// zero-order-hold system with --sample-time. Calls momenta::analysis::lqr; docs/control.md.
+// The state-feedback designs of a model file linearized about an operating point, each the gain K
+// of u = u₀ − K (x − x₀) with the closed-loop poles beside the open-loop ones and whether the
+// inputs reach every state, continuous or discrete on the zero-order-hold system with
+// --sample-time:
+//   `momenta lqr MODEL --Q … --R …`: the linear–quadratic regulator (analysis::lqr);
+//   `momenta place MODEL --poles …`: pole placement (analysis::place_poles).
+// docs/control.md.
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <memory>
@@ -19,6 +23,7 @@
 #include "momenta/analysis/discretize.hpp"
 #include "momenta/analysis/lqr.hpp"
 #include "momenta/analysis/modes.hpp"
+#include "momenta/analysis/pole_placement.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
 #include "option_checks.hpp"
@@ -123,6 +128,49 @@ json poles_json(const std::vector<Complex>& poles) {
   return items;
 }
 
+// "-1, -2, -3+1j, -3-1j": real numbers and a ± b j (also written with i).
+std::vector<Complex> parse_poles(const std::string& text) {
+  std::vector<Complex> poles;
+  for (std::string item : split(text, ',')) {
+    if (item.empty()) throw CLI::ValidationError("--poles", "an empty entry");
+    std::replace(item.begin(), item.end(), 'i', 'j');
+    double re = 0.0, im = 0.0;
+    std::size_t used = 0;
+    try {
+      if (item.back() == 'j') {
+        // The imaginary part starts at the last sign that is not an exponent's or the first.
+        std::size_t split_at = 0;
+        for (std::size_t k = 1; k + 1 < item.size(); ++k) {
+          if ((item[k] == '+' || item[k] == '-') && item[k - 1] != 'e' && item[k - 1] != 'E') {
+            split_at = k;
+          }
+        }
+        const std::string imaginary = item.substr(split_at, item.size() - 1 - split_at);
+        if (split_at > 0) re = std::stod(item.substr(0, split_at), &used);
+        if (split_at > 0 && used != split_at) throw std::invalid_argument(item);
+        im = imaginary == "+" || imaginary.empty() ? 1.0
+             : imaginary == "-"                    ? -1.0
+                                                   : std::stod(imaginary, &used);
+        if (imaginary != "+" && imaginary != "-" && !imaginary.empty() &&
+            used != imaginary.size()) {
+          throw std::invalid_argument(item);
+        }
+      } else {
+        re = std::stod(item, &used);
+        if (used != item.size()) throw std::invalid_argument(item);
+      }
+    } catch (const std::exception&) {
+      throw CLI::ValidationError("--poles",
+                                 fmt::format("'{}' is not a number or a complex a+bj", item));
+    }
+    if (!std::isfinite(re) || !std::isfinite(im)) {
+      throw CLI::ValidationError("--poles", fmt::format("'{}' is not finite", item));
+    }
+    poles.emplace_back(re, im);
+  }
+  return poles;
+}
+
 void run(const LqrOptions& o) {
   const LoadedLinearModel loaded = load_linear_model(o.model);
   require_channels(loaded);
@@ -177,7 +225,79 @@ void run(const LqrOptions& o) {
   }
 }
 
+struct PlaceOptions {
+  LinearModelOptions model;
+  std::string poles;
+  std::optional<double> sample_time;
+  bool json = false;
+};
+
+void run_place(const PlaceOptions& o) {
+  const LoadedLinearModel loaded = load_linear_model(o.model);
+  require_channels(loaded);
+  const analysis::StateSpace& continuous = loaded.result.linear.system;
+  const analysis::StateSpace plant =
+      o.sample_time ? analysis::c2d(continuous, *o.sample_time) : continuous;
+  const std::vector<Complex> wanted = parse_poles(o.poles);
+  const analysis::Reachability reach = analysis::controllability(plant);
+  const analysis::PolePlacement placed = analysis::place_poles(plant, wanted);
+  const std::vector<Complex> open = poles_of(plant.A());
+  const std::vector<Complex> closed(placed.closed_loop_poles.begin(),
+                                    placed.closed_loop_poles.end());
+  if (o.json) {
+    json j;
+    j["model"] = loaded.file.name;
+    j["about"] = loaded.result.about;
+    j["sample_time"] = plant.sample_time();
+    j["state_names"] = plant.state_names();
+    j["input_names"] = plant.input_names();
+    j["K"] = matrix_json(placed.K);
+    j["requested_poles"] = poles_json(wanted);
+    j["open_loop_poles"] = poles_json(open);
+    j["closed_loop_poles"] = poles_json(closed);
+    j["eigenvector_condition"] = placed.eigenvector_condition;
+    j["controllable_rank"] = reach.rank;
+    fmt::print("{}\n", json_text(j));
+    return;
+  }
+  const char* unit = plant.is_discrete() ? "z-plane" : "1/s";
+  fmt::print("{}: pole placement about {}{}\n", loaded.file.name, loaded.result.about,
+             plant.is_discrete()
+                 ? fmt::format(" (discrete: zero-order hold, T = {:g} s)", plant.sample_time())
+                 : std::string());
+  fmt::print("controllability: {}\n\n", reachability_text(reach, "inputs", "move"));
+  print_matrix("K (u = u₀ − K (x − x₀))", placed.K, plant.input_names(), plant.state_names());
+  fmt::print("\nopen-loop poles ({}):   {}\n", unit, poles_text(open));
+  fmt::print("closed-loop poles ({}): {}\n", unit, poles_text(closed));
+  fmt::print("eigenvector condition κ(X) = {:.4g} (how much the poles move per error in A, B, K)\n",
+             placed.eigenvector_condition);
+}
+
 }  // namespace
+
+void add_place_command(CLI::App& app) {
+  auto options = std::make_shared<PlaceOptions>();
+  CLI::App* command = app.add_subcommand(
+      "place",
+      "Pole placement: the state feedback u = −K x that puts the closed-loop poles where "
+      "asked");
+  add_linear_model_options(command, options->model, true);
+  command
+      ->add_option("--poles", options->poles,
+                   "The closed-loop poles, one per state, comma-separated; complex ones as a+bj "
+                   "in conjugate pairs (z-plane poles with --sample-time)")
+      ->required();
+  command
+      ->add_option("--sample-time", options->sample_time,
+                   "Place the poles of the plant sampled every T seconds through a zero-order hold")
+      ->check(positive_finite());
+  command->add_flag("--json", options->json, "Print JSON (full precision) instead of text");
+  command->footer(
+      "Examples:\n"
+      "  momenta place examples/cart_pendulum.yaml --poles=-1,-2,-3+1j,-3-1j\n"
+      "A value starting with '-' is written after '=' (--poles=-1,...); docs/control.md.");
+  command->callback([options] { run_place(*options); });
+}
 
 void add_lqr_command(CLI::App& app) {
   auto options = std::make_shared<LqrOptions>();
