@@ -62,7 +62,7 @@ VecX log_frequency_grid(double omega_min, double omega_max, std::size_t points) 
 
 FrequencyResponse frequency_response(const StateSpace& system, std::size_t input,
                                      std::size_t output, const VecX& frequencies) {
-  require_continuous(system, "frequency_response");
+  const double period = system.sample_time();
   if (input >= system.input_count() || output >= system.output_count()) {
     throw InvalidArgument(fmt::format(
         "frequency_response: pair (input {}, output {}) out of range: the system has {} inputs "
@@ -75,6 +75,12 @@ FrequencyResponse frequency_response(const StateSpace& system, std::size_t input
           fmt::format("frequency_response: frequency {} = {} rad/s must be finite and >= 0", k,
                       frequencies[k]));
     }
+    if (period > 0.0 && frequencies[k] > M_PI / period * (1.0 + 1e-12)) {
+      throw InvalidArgument(fmt::format(
+          "frequency_response: {} rad/s is above the Nyquist frequency π/T = {} rad/s of a "
+          "system sampled every {} s (above it the response repeats)",
+          frequencies[k], M_PI / period, period));
+    }
   }
   FrequencyResponse result;
   result.input_name = system.input_names()[input];
@@ -82,6 +88,11 @@ FrequencyResponse frequency_response(const StateSpace& system, std::size_t input
   result.frequency = frequencies;
   const Eigen::Index count = frequencies.size();
   result.response.resize(count);
+
+  // Where G is evaluated: s = jω, or z = e^{jωT} when sampled.
+  const auto point = [period](double omega) {
+    return period > 0.0 ? std::exp(Complex(0.0, omega * period)) : Complex(0.0, omega);
+  };
 
   // Hessenberg form once: A = Q H Qᵀ, so G(s) = c Q (sI − H)⁻¹ Qᵀ b + d.
   const auto i = static_cast<Eigen::Index>(input);
@@ -103,7 +114,7 @@ FrequencyResponse frequency_response(const StateSpace& system, std::size_t input
   Eigen::MatrixXcd T(n, n);
   Eigen::VectorXcd y(n);
   for (Eigen::Index k = 0; k < count; ++k) {
-    const Complex s(0.0, frequencies[k]);
+    const Complex s = point(frequencies[k]);
     y = b_h.cast<Complex>();
     if (n == 0) {
       result.response[k] = d;
@@ -131,7 +142,7 @@ FrequencyResponse frequency_response(const StateSpace& system, std::size_t input
   if (count > 0 && std::isfinite(result.phase_deg[0])) {
     const TransferFunction tf = transfer_function(system, input, output);
     if (!tf.is_zero()) {
-      const Complex s(0.0, frequencies[0]);
+      const Complex s = point(frequencies[0]);
       double reference = tf.gain > 0.0 ? 0.0 : -180.0;
       for (const Complex& z : tf.zeros) reference += arg_deg(s - z);
       for (const Complex& p : tf.poles) reference -= arg_deg(s - p);

@@ -33,7 +33,39 @@ struct Resolved {
   std::size_t samples;
 };
 
+// A sampled system's samples are its own, t_k = k T: `samples` fixes the final time, or the
+// final time (rounded to whole samples) the count.
+Resolved resolve_sampled(const StateSpace& system, const TimeGrid& grid) {
+  const double T = system.sample_time();
+  if (grid.samples == 1) {
+    throw InvalidArgument("time response: 1 sample requested; at least 2 are needed");
+  }
+  if (grid.samples > 0) {
+    const double final_time = static_cast<double>(grid.samples - 1) * T;
+    if (grid.final_time != 0.0 && std::abs(grid.final_time - final_time) > 1e-9 * final_time) {
+      throw InvalidArgument(fmt::format(
+          "time response: a system sampled every {} s answers at t = k T: {} samples end at {} "
+          "s, not {} s; give the final time or the samples",
+          T, grid.samples, final_time, grid.final_time));
+    }
+    return {final_time, grid.samples};
+  }
+  const double wanted = grid.final_time != 0.0 ? grid.final_time : automatic_final_time(system);
+  if (!(wanted > 0.0) || !std::isfinite(wanted)) {
+    throw InvalidArgument(
+        fmt::format("time response: final time {} s must be positive and finite", wanted));
+  }
+  const double steps = std::max(1.0, std::floor(wanted / T * (1.0 + 1e-12)));
+  if (steps > 1e7) {
+    throw InvalidArgument(
+        fmt::format("time response: {} s is {:.3g} samples of {} s; choose a shorter final time",
+                    wanted, steps, T));
+  }
+  return {steps * T, static_cast<std::size_t>(steps) + 1};
+}
+
 Resolved resolve(const StateSpace& system, const TimeGrid& grid) {
+  if (system.is_discrete()) return resolve_sampled(system, grid);
   Resolved r{grid.final_time, grid.samples};
   if (r.final_time == 0.0) r.final_time = automatic_final_time(system);
   if (!(r.final_time > 0.0) || !std::isfinite(r.final_time)) {
@@ -115,7 +147,25 @@ Discretization zero_order_hold(const MatX& A, const MatX& B, double h) {
 }
 
 double automatic_final_time(const StateSpace& system) {
-  require_continuous(system, "automatic_final_time");
+  if (system.is_discrete()) {
+    // The continuous rule on s = ln z / T (a pole at z = 0 dies in one sample), in whole samples.
+    const double T = system.sample_time();
+    std::vector<std::complex<double>> s;
+    for (const std::complex<double>& z : eigenvalues(system.A())) {
+      if (std::abs(z) > 0.0) s.push_back(std::log(z) / T);
+    }
+    MatX diagonal = MatX::Zero(2 * static_cast<Eigen::Index>(s.size()),
+                               2 * static_cast<Eigen::Index>(s.size()));
+    for (std::size_t k = 0; k < s.size(); ++k) {  // a real 2×2 block per pole, same spectrum
+      const auto i = 2 * static_cast<Eigen::Index>(k);
+      diagonal(i, i) = diagonal(i + 1, i + 1) = s[k].real();
+      diagonal(i, i + 1) = s[k].imag();
+      diagonal(i + 1, i) = -s[k].imag();
+    }
+    const StateSpace continuous(diagonal, MatX::Zero(diagonal.rows(), 0),
+                                MatX::Zero(0, diagonal.rows()), MatX());
+    return std::max(1.0, std::ceil(automatic_final_time(continuous) / T)) * T;
+  }
   double fastest_growth = 0.0;
   double slowest_decay = std::numeric_limits<double>::infinity();
   double slowest_undamped = std::numeric_limits<double>::infinity();  // rad/s
@@ -141,7 +191,6 @@ double automatic_final_time(const StateSpace& system) {
 
 TimeResponse step_response(const StateSpace& system, std::size_t input, const TimeGrid& grid,
                            double amplitude) {
-  require_continuous(system, "step_response");
   check_input(system, input);
   if (!std::isfinite(amplitude)) {
     throw InvalidArgument(fmt::format("step_response: amplitude {} is not finite", amplitude));
@@ -151,8 +200,11 @@ TimeResponse step_response(const StateSpace& system, std::size_t input, const Ti
   const double h = r.final_time / static_cast<double>(r.samples - 1);
 
   // x_{k+1} = Φ x_k + Γ u, exact for the constant input u = amplitude.
+  // A sampled system is its own recursion.
   const Discretization zoh =
-      zero_order_hold(system.A(), system.B().col(static_cast<Eigen::Index>(input)), h);
+      system.is_discrete()
+          ? Discretization{system.A(), system.B().col(static_cast<Eigen::Index>(input))}
+          : zero_order_hold(system.A(), system.B().col(static_cast<Eigen::Index>(input)), h);
   const VecX forced = zoh.input.col(0) * amplitude;
   const VecX feedthrough = system.D().col(static_cast<Eigen::Index>(input)) * amplitude;
   VecX x = VecX::Zero(system.A().rows());
@@ -168,12 +220,28 @@ TimeResponse step_response(const StateSpace& system, std::size_t input, const Ti
 }
 
 TimeResponse impulse_response(const StateSpace& system, std::size_t input, const TimeGrid& grid) {
-  require_continuous(system, "impulse_response");
   check_input(system, input);
   const Resolved r = resolve(system, grid);
   TimeResponse response = empty_response(system, input, r);
   const double h = r.final_time / static_cast<double>(r.samples - 1);
 
+  if (system.is_discrete()) {
+    // The unit pulse u[0] = 1: y[0] = D e_input, x[1] = B e_input, then x[k+1] = A x[k].
+    const auto i = static_cast<Eigen::Index>(input);
+    VecX x = VecX::Zero(system.A().rows());
+    for (Eigen::Index k = 0; k < response.time.size(); ++k) {
+      response.states.row(k) = x.transpose();
+      response.outputs.row(k) = (system.C() * x).transpose();
+      if (k == 0) {
+        response.outputs.row(0) += system.D().col(i).transpose();
+        x = system.B().col(i);
+      } else {
+        x = system.A() * x;
+      }
+    }
+    check_finite(response);
+    return response;
+  }
   // x(0⁺) = B e_input, then free motion x_{k+1} = Φ x_k.
   const Discretization zoh =
       zero_order_hold(system.A(), system.B().col(static_cast<Eigen::Index>(input)), h);

@@ -160,7 +160,6 @@ Complex TransferFunction::operator()(Complex s) const {
 
 TransferFunction transfer_function(const StateSpace& system, std::size_t input, std::size_t output,
                                    double cancellation_tolerance) {
-  require_continuous(system, "transfer_function");
   check_pair(system, input, output, "transfer_function");
   if (!(cancellation_tolerance >= 0.0)) {
     throw InvalidArgument(fmt::format("transfer_function: cancellation tolerance {} must be >= 0",
@@ -223,32 +222,35 @@ TransferFunction transfer_function(const StateSpace& system, std::size_t input, 
     if (!pole_used[k]) tf.poles.push_back(poles[k]);
   }
 
-  // DC gain: a remaining pole at the origin makes it infinite, signed as G(s) for small s > 0.
+  // DC gain, at s₀ = 0 (or z₀ = 1 when sampled): a remaining pole there makes it infinite,
+  // signed as G on the real axis just above s₀.
   if (tf.is_zero()) {
     tf.dc_gain = 0.0;
     return tf;
   }
-  const double origin = kOriginTolerance * spectral_radius;
-  const auto at_origin = [origin](const Complex& r) { return std::abs(r) <= origin; };
-  if (std::any_of(tf.poles.begin(), tf.poles.end(), at_origin)) {
+  const double dc = system.is_discrete() ? 1.0 : 0.0;
+  const double near = kOriginTolerance * std::max(spectral_radius, dc);
+  const auto at_dc = [near, dc](const Complex& r) { return std::abs(r - dc) <= near; };
+  if (std::any_of(tf.poles.begin(), tf.poles.end(), at_dc)) {
     double sign = tf.gain > 0.0 ? 1.0 : -1.0;
     for (const Complex& z : tf.zeros) {
-      if (!at_origin(z) && z.imag() == 0.0 && z.real() > 0.0) sign = -sign;
+      if (!at_dc(z) && z.imag() == 0.0 && z.real() > dc) sign = -sign;
     }
     for (const Complex& p : tf.poles) {
-      if (!at_origin(p) && p.imag() == 0.0 && p.real() > 0.0) sign = -sign;
+      if (!at_dc(p) && p.imag() == 0.0 && p.real() > dc) sign = -sign;
     }
     tf.dc_gain = sign * std::numeric_limits<double>::infinity();
     return tf;
   }
-  const Eigen::FullPivLU<MatX> lu(A);
+  const MatX shifted = A - dc * MatX::Identity(A.rows(), A.cols());
+  const Eigen::FullPivLU<MatX> lu(shifted);
   if (A.rows() == 0) {
     tf.dc_gain = d;
   } else if (lu.isInvertible()) {
     tf.dc_gain = d - c.dot(lu.solve(b));
   } else {
-    // A singular only through a cancelled pole at the origin: use the minimal factors.
-    tf.dc_gain = tf(Complex(0.0, 0.0)).real();
+    // Singular only through a cancelled pole at s₀: use the minimal factors.
+    tf.dc_gain = tf(Complex(dc, 0.0)).real();
   }
   return tf;
 }

@@ -149,9 +149,24 @@ def test_a_state_space_behaves_like_scipys(cart):
         cart.zeros()
 
 
-def test_what_only_continuous_systems_have_is_refused_for_sampled_ones(cart):
-    with pytest.raises(momenta.InvalidArgument, match="sampled every 0.1 s"):
-        momenta.step_response(momenta.c2d(cart, 0.1))
+def test_a_sampled_system_answers_at_its_samples(cart):
+    held = momenta.c2d(cart, 0.01)
+    # Held steps are exact: the sampled step equals the continuous one at t = k T.
+    mine = momenta.step_response(held, final_time=0.5)
+    continuous = momenta.step_response(cart, final_time=0.5, samples=51)
+    np.testing.assert_allclose(mine.time, continuous.time, rtol=1e-13)
+    np.testing.assert_allclose(mine.outputs, continuous.outputs, rtol=1e-10, atol=1e-14)
+    # Bode of H(e^{jωT}) up to the Nyquist frequency against C (zI − A)⁻¹ B by a dense solve
+    # (scipy's dfreqresp goes through polynomial coefficients, which these poles crowding z = 1
+    # leave good to 1e-7 only: it warns so itself).
+    w = np.array([0.1, 1.0, 10.0, 100.0, np.pi / 0.01])
+    A, B, C, _ = held
+    H = [(C[0] @ np.linalg.solve(np.exp(1j * x * 0.01) * np.eye(4) - A, B[:, 0])) for x in w]
+    np.testing.assert_allclose(momenta.bode(held, 0, 0, frequencies=w).response, H, rtol=1e-11)
+    with pytest.raises(momenta.InvalidArgument, match="above the Nyquist frequency"):
+        momenta.bode(held, 0, 0, frequencies=[400.0])
+    with pytest.raises(momenta.InvalidArgument, match="sampled every 0.01 s"):
+        momenta.modes(held)
 
 
 def test_root_locus_branches_are_the_characteristic_roots():

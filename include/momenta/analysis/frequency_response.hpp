@@ -1,7 +1,8 @@
 #pragma once
 // Frequency response (Bode data) of one input–output pair: G(jω) over angular frequencies ω in
-// rad/s (divide by 2π for Hz), its magnitude in absolute units and in dB, and its phase in
-// degrees, unwrapped.
+// rad/s (divide by 2π for Hz) — H(e^{jωT}) for a system sampled every T s, up to the Nyquist
+// frequency π/T (beyond it refused: it repeats) — its magnitude in absolute units and in dB, and
+// its phase in degrees, unwrapped.
 //
 // G(jω) = C (jωI − A)⁻¹ B + D is evaluated from the state space, never from polynomial
 // coefficients: A is reduced once to Hessenberg form A = Q H Qᵀ (orthogonal, backward stable),

@@ -10,6 +10,11 @@
 // which is exact for a constant input; the matrix exponential is Eigen's scaling-and-squaring
 // Padé (unsupported/Eigen/MatrixFunctions, Higham 2005). A step input is constant, and after an
 // impulse the input is zero, so no discretization error enters at any sample.
+//
+// A sampled system (sample time T > 0) answers at its own samples t_k = k T by its recursion
+// x[k+1] = A x[k] + B u[k]: the grid's `samples` fix the final time, else the final time
+// (automatic: the continuous rule on s = ln z / T) is rounded down to whole samples; its impulse
+// is the unit pulse u[0] = 1, so y[0] = D and x[1] = B.
 
 #include <cstddef>
 #include <string>

@@ -47,8 +47,8 @@ struct TransferFunction {
   /// The poles removed with an equal zero (uncontrollable or unobservable modes of this pair, in
   /// exact arithmetic); each stands for one pole and one zero.
   std::vector<Complex> cancelled;
-  /// G(0): finite when no pole at the origin remains; ±infinity (the sign of G on the positive
-  /// real axis near 0) when one does.
+  /// G(0) — G(1) for a sampled system, its steady gain: finite when no pole at the origin (at
+  /// z = 1) remains; ±infinity (the sign of G on the real axis just above it) when one does.
   double dc_gain = 0.0;
 
   /// Relative degree r = number of poles − number of zeros.
@@ -68,7 +68,8 @@ struct TransferFunction {
 /// `cancelled`, so that what is reported is the minimal (controllable and observable) transfer
 /// function. The test is relative, so it does not depend on the time unit. Pass 0 to keep
 /// every pole and zero.
-/// A nonzero D is taken as given (exactly): any D ≠ 0 makes G biproper.
+/// A nonzero D is taken as given (exactly): any D ≠ 0 makes G biproper. For a sampled system
+/// the same algebra gives H(z): its poles and zeros in the z-plane.
 /// Throws InvalidArgument on an index out of range or a negative tolerance, NumericalError if
 /// an eigenvalue iteration fails.
 TransferFunction transfer_function(const StateSpace& system, std::size_t input, std::size_t output,
@@ -85,9 +86,9 @@ Eigen::MatrixXcd evaluate(const StateSpace& system, Complex s);
 /// G(s) of one pair, as above. Throws InvalidArgument on an index out of range.
 Complex evaluate(const StateSpace& system, std::size_t input, std::size_t output, Complex s);
 
-/// Static gain G(0) = D − C A⁻¹ B of one pair (the steady output per unit constant input of a
-/// stable system); ±infinity when the pair has an uncancelled pole at the origin. Same as
-/// transfer_function(...).dc_gain.
+/// Static gain G(0) = D − C A⁻¹ B of one pair (G(1) = D + C (I − A)⁻¹ B when sampled) (the steady
+/// output per unit constant input of a stable system); ±infinity when the pair has an uncancelled
+/// pole at the origin. Same as transfer_function(...).dc_gain.
 double dc_gain(const StateSpace& system, std::size_t input, std::size_t output);
 
 }  // namespace momenta::analysis

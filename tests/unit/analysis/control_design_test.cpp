@@ -27,10 +27,12 @@
 
 #include "momenta/analysis/controllability.hpp"
 #include "momenta/analysis/discretize.hpp"
+#include "momenta/analysis/frequency_response.hpp"
 #include "momenta/analysis/lqr.hpp"
 #include "momenta/analysis/matrix_equations.hpp"
 #include "momenta/analysis/pole_placement.hpp"
 #include "momenta/analysis/root_locus.hpp"
+#include "momenta/analysis/time_response.hpp"
 #include "momenta/analysis/transfer_function.hpp"
 #include "momenta/common/error.hpp"
 
@@ -268,11 +270,46 @@ TEST(C2d, TustinIsTheBilinearMap) {
 
 TEST(C2d, ADiscreteSystemIsRefusedWhereOnlyContinuousIsMeant) {
   const StateSpace d = c2d(double_integrator(), 0.1);
-  EXPECT_THROW(transfer_function(d, 0, 0), InvalidArgument);
   EXPECT_THROW(modes(d), InvalidArgument);
+  EXPECT_THROW(frequency_response(d, 0, 0, (VecX(1) << 40.0).finished()), InvalidArgument);
   EXPECT_THROW(
       StateSpace(MatX::Zero(1, 1), MatX::Zero(1, 0), MatX::Zero(0, 1), MatX(), {}, {}, {}, -0.1),
       InvalidArgument);
+}
+
+// A first-order lag held: H(z) = (1 − a)/(z − a) with a = e^(−T/τ) (Franklin, Powell &
+// Workman ch. 4); its step at the samples is the continuous one, 1 − e^(−kT/τ).
+TEST(C2d, ASampledLagsTransferFunctionStepAndFrequencyResponse) {
+  const double tau = 0.5, T = 0.1, a = std::exp(-T / tau);
+  const StateSpace lag(MatX::Constant(1, 1, -1.0 / tau), MatX::Constant(1, 1, 1.0 / tau),
+                       MatX::Constant(1, 1, 1.0), MatX(), {"x"}, {"u"}, {"y"});
+  const StateSpace held = c2d(lag, T);
+  const TransferFunction h = transfer_function(held, 0, 0);
+  ASSERT_EQ(h.poles.size(), 1u);
+  EXPECT_NEAR(h.poles[0].real(), a, 1e-15);
+  EXPECT_TRUE(h.zeros.empty());
+  EXPECT_NEAR(h.gain, 1.0 - a, 1e-15);
+  EXPECT_NEAR(h.dc_gain, 1.0, 1e-14);  // H(1)
+  const TimeResponse step = step_response(held, 0, TimeGrid{2.0, 0});
+  ASSERT_EQ(step.time.size(), 21);
+  for (Eigen::Index k = 0; k < step.time.size(); ++k) {
+    EXPECT_NEAR(step.time[k], static_cast<double>(k) * T, 1e-15);
+    EXPECT_NEAR(step.outputs(k, 0), 1.0 - std::exp(-step.time[k] / tau), 1e-14);
+  }
+  const TimeResponse pulse = impulse_response(held, 0, TimeGrid{0.0, 4});
+  EXPECT_EQ(pulse.outputs(0, 0), 0.0);
+  EXPECT_NEAR(pulse.outputs(1, 0), 1.0 - a, 1e-15);
+  EXPECT_NEAR(pulse.outputs(3, 0), (1.0 - a) * a * a, 1e-15);
+  // H(e^{jωT}) and its phase −ωT/2·… from the factor: arg(1 − a) − arg(e^{jωT} − a).
+  const VecX w = (VecX(3) << 0.1, 5.0, M_PI / T).finished();
+  const FrequencyResponse f = frequency_response(held, 0, 0, w);
+  for (Eigen::Index k = 0; k < w.size(); ++k) {
+    const Complex z = std::exp(Complex(0.0, w[k] * T));
+    const Complex expected = (1.0 - a) / (z - a);
+    EXPECT_NEAR(std::abs(f.response[k] - expected), 0.0, 1e-14);
+    EXPECT_NEAR(f.phase_deg[k], -std::arg(z - a) * 180.0 / M_PI, 1e-11);
+  }
+  EXPECT_THROW(step_response(held, 0, TimeGrid{1.0, 5}), InvalidArgument);  // 5 samples end at 0.4
 }
 
 // ---- controllability and observability ----
