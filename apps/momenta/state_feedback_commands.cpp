@@ -128,6 +128,25 @@ json poles_json(const std::vector<Complex>& poles) {
   return items;
 }
 
+// The linearized plant a design is for: continuous, or held through a zero-order hold and
+// sampled every `sample_time` seconds.
+analysis::StateSpace plant_of(const LoadedLinearModel& loaded, std::optional<double> sample_time) {
+  require_channels(loaded);
+  const analysis::StateSpace& continuous = loaded.result.linear.system;
+  return sample_time ? analysis::c2d(continuous, *sample_time) : continuous;
+}
+
+// What every design's JSON starts with: the model, the point, the sample time and the names.
+json design_json(const LoadedLinearModel& loaded, const analysis::StateSpace& plant) {
+  json j;
+  j["model"] = loaded.file.name;
+  j["about"] = loaded.result.about;
+  j["sample_time"] = plant.sample_time();
+  j["state_names"] = plant.state_names();
+  j["input_names"] = plant.input_names();
+  return j;
+}
+
 // "-1, -2, -3+1j, -3-1j": real numbers and a ± b j (also written with i).
 std::vector<Complex> parse_poles(const std::string& text) {
   std::vector<Complex> poles;
@@ -173,10 +192,7 @@ std::vector<Complex> parse_poles(const std::string& text) {
 
 void run(const LqrOptions& o) {
   const LoadedLinearModel loaded = load_linear_model(o.model);
-  require_channels(loaded);
-  const analysis::StateSpace& continuous = loaded.result.linear.system;
-  const analysis::StateSpace plant =
-      o.sample_time ? analysis::c2d(continuous, *o.sample_time) : continuous;
+  const analysis::StateSpace plant = plant_of(loaded, o.sample_time);
   const MatX Q = weight_matrix(o.Q, plant.state_names(), "--Q", "state");
   const MatX R = weight_matrix(o.R, plant.input_names(), "--R", "input");
   const analysis::Reachability reach = analysis::controllability(plant);
@@ -185,12 +201,7 @@ void run(const LqrOptions& o) {
   std::vector<Complex> closed(design.closed_loop_poles.begin(), design.closed_loop_poles.end());
 
   if (o.json) {
-    json j;
-    j["model"] = loaded.file.name;
-    j["about"] = loaded.result.about;
-    j["sample_time"] = plant.sample_time();
-    j["state_names"] = plant.state_names();
-    j["input_names"] = plant.input_names();
+    json j = design_json(loaded, plant);
     j["Q"] = matrix_json(Q);
     j["R"] = matrix_json(R);
     j["K"] = matrix_json(design.K);
@@ -234,10 +245,7 @@ struct PlaceOptions {
 
 void run_place(const PlaceOptions& o) {
   const LoadedLinearModel loaded = load_linear_model(o.model);
-  require_channels(loaded);
-  const analysis::StateSpace& continuous = loaded.result.linear.system;
-  const analysis::StateSpace plant =
-      o.sample_time ? analysis::c2d(continuous, *o.sample_time) : continuous;
+  const analysis::StateSpace plant = plant_of(loaded, o.sample_time);
   const std::vector<Complex> wanted = parse_poles(o.poles);
   const analysis::Reachability reach = analysis::controllability(plant);
   const analysis::PolePlacement placed = analysis::place_poles(plant, wanted);
@@ -245,12 +253,7 @@ void run_place(const PlaceOptions& o) {
   const std::vector<Complex> closed(placed.closed_loop_poles.begin(),
                                     placed.closed_loop_poles.end());
   if (o.json) {
-    json j;
-    j["model"] = loaded.file.name;
-    j["about"] = loaded.result.about;
-    j["sample_time"] = plant.sample_time();
-    j["state_names"] = plant.state_names();
-    j["input_names"] = plant.input_names();
+    json j = design_json(loaded, plant);
     j["K"] = matrix_json(placed.K);
     j["requested_poles"] = poles_json(wanted);
     j["open_loop_poles"] = poles_json(open);
