@@ -300,6 +300,17 @@ json describe(const InfoOptions& o, const io::ModelFile& file) {
   for (const model::Signal& s : m.signals()) signals.push_back(signal_json(s));
   j["signals"] = std::move(signals);
 
+  // Controllers: kind, what each measures and drives, its sample time (0: continuous).
+  json controllers = json::array();
+  for (const model::ResolvedController& c : m.controllers()) {
+    controllers.push_back({{"name", c.spec.name},
+                           {"type", model::controller_kind_name(c.spec.kind)},
+                           {"measures", c.spec.measured},
+                           {"drives", c.spec.drives},
+                           {"sample_time", c.spec.sample_time}});
+  }
+  j["controllers"] = std::move(controllers);
+
   // Outputs with the columns each gives, resolved as `simulate` resolves them.
   json out = json::array();
   for (const model::OutputSpec& spec : file.outputs) {
@@ -392,8 +403,22 @@ void print_text(const json& j, const io::ModelFile& file) {
     fmt::print("  {}  {}\n", model::force_element_name(e), element_text(m, e));
 
   fmt::print("\nsignals ({})\n", m.signals().size());
-  for (const json& s : j["signals"])
-    fmt::print("  {}  {}\n", s["name"].get<std::string>(), signal_text(s));
+  for (std::size_t i = 0; i < m.signals().size(); ++i) {
+    const json& s = j["signals"][i];
+    fmt::print(
+        "  {}  {}\n", s["name"].get<std::string>(),
+        m.is_driven(static_cast<int>(i)) ? std::string("driven by a controller") : signal_text(s));
+  }
+  if (m.has_controllers()) {
+    fmt::print("\ncontrollers ({})\n", m.controllers().size());
+    for (const model::ResolvedController& c : m.controllers()) {
+      fmt::print("  {}  {} measuring {}, driving {}, {}\n", c.spec.name,
+                 model::controller_kind_name(c.spec.kind), fmt::join(c.spec.measured, ", "),
+                 fmt::join(c.spec.drives, ", "),
+                 c.spec.discrete() ? fmt::format("sampled every {} s", c.spec.sample_time)
+                                   : std::string("continuous"));
+    }
+  }
 
   fmt::print("\noutputs ({})\n", j["outputs"].size());
   for (const json& out : j["outputs"]) {

@@ -18,8 +18,15 @@ namespace {
 using json = nlohmann::ordered_json;
 }  // namespace
 
-void add_linear_model_options(CLI::App* command, LinearModelOptions& o, bool with_channels) {
+void add_linear_model_options(CLI::App* command, LinearModelOptions& o, bool with_channels,
+                              bool loop_choice) {
   add_model_argument(command, o.model);
+  if (loop_choice) {
+    command->add_flag("--open-loop", o.open_loop,
+                      "Models with controllers: linearize the plant alone, each input a "
+                      "controller drives an input (default: the closed loop, the controllers' "
+                      "states in A)");
+  }
   command
       ->add_option("--about", o.about,
                    "Operating point: 'initial' (the file's initial state), 'equilibrium' (the "
@@ -59,6 +66,7 @@ LoadedLinearModel load_linear_model(const LinearModelOptions& o, io::ModelFile f
   options.inputs = o.inputs;
   options.outputs = o.outputs;
   options.independent = o.independent;
+  options.close_loops = !o.open_loop;
   options.output_specs = file.outputs;
   const std::optional<analysis::OperatingPointChoice> choice =
       analysis::operating_point_choice(o.about);

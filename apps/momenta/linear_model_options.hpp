@@ -31,11 +31,13 @@ struct LinearModelOptions {
   std::vector<std::string> inputs;
   std::vector<std::string> outputs;
   std::vector<std::string> independent;  // constrained models: coordinates to keep as states
+  bool open_loop = false;  // models with controllers: the plant alone (LinearizationOptions)
 };
 
-/// Adds MODEL, --about and --independent (and --inputs/--outputs when `with_channels`) to a
-/// command.
-void add_linear_model_options(CLI::App* command, LinearModelOptions& options, bool with_channels);
+/// Adds MODEL, --about and --independent (and --inputs/--outputs when `with_channels`, and
+/// --open-loop when `loop_choice`) to a command.
+void add_linear_model_options(CLI::App* command, LinearModelOptions& options, bool with_channels,
+                              bool loop_choice = true);
 
 /// The model file and its linear analysis about the point --about names
 /// (analysis::linear_analysis_about: the rule the report and Python share). An equilibrium's

@@ -18,6 +18,7 @@
 #include <fmt/ranges.h>
 
 #include "commands.hpp"
+#include "controller_file_copy.hpp"
 #include "linear_model_options.hpp"
 #include "momenta/analysis/controllability.hpp"
 #include "momenta/analysis/discretize.hpp"
@@ -40,7 +41,45 @@ struct LqrOptions {
   std::string R;
   std::optional<double> sample_time;
   bool json = false;
+  std::optional<std::string> write;  // a copy of the model file with the controller in it
+  bool force = false;
 };
+
+// --write COPY and --force, for a command that designs a state feedback.
+template <class Options>
+void add_write_options(CLI::App* command, Options& o) {
+  command
+      ->add_option("--write", o.write,
+                   "Also write a copy of the model file with this state feedback as a controller "
+                   "(the inputs it drives taken out of inputs:); `momenta simulate COPY` runs the "
+                   "nonlinear loop")
+      ->check(not_a_folder());
+  command->add_flag("--force", o.force, "Overwrite the --write file if it exists");
+}
+
+// --write: the copy of the model file with the design K as its controller; `command` is how the
+// design was asked for ("lqr --Q 1 --R 1").
+template <class Options>
+void write_design(const Options& o, const LoadedLinearModel& loaded,
+                  const analysis::StateSpace& plant, const MatX& K, const std::string& command) {
+  if (!o.write) return;
+  const std::string sampled =
+      o.sample_time ? fmt::format(" --sample-time {}", *o.sample_time) : std::string();
+  write_controller_copy(loaded, plant, K, "state_feedback",
+                        fmt::format("The state feedback `momenta {}{}` designed about {}.", command,
+                                    sampled, loaded.result.about),
+                        *o.write, o.force);
+}
+
+// The sentence after the design that says where the copy went.
+void report_copy(const std::optional<std::string>& write, bool as_json) {
+  if (write && !as_json) {
+    fmt::print(
+        "\nwrote {}: the model with this state feedback as controller 'state_feedback' "
+        "(momenta simulate {} runs the loop)\n",
+        *write, *write);
+  }
+}
 
 std::vector<std::string> split(const std::string& text, char separator) {
   std::vector<std::string> parts;
@@ -197,6 +236,7 @@ void run(const LqrOptions& o) {
   const MatX R = weight_matrix(o.R, plant.input_names(), "--R", "input");
   const analysis::Reachability reach = analysis::controllability(plant);
   const analysis::LqrDesign design = analysis::lqr(plant, Q, R);
+  write_design(o, loaded, plant, design.K, fmt::format("lqr --Q {} --R {}", o.Q, o.R));
   const std::vector<Complex> open = poles_of(plant.A());
   std::vector<Complex> closed(design.closed_loop_poles.begin(), design.closed_loop_poles.end());
 
@@ -213,6 +253,7 @@ void run(const LqrOptions& o) {
       j["A"] = matrix_json(plant.A());
       j["B"] = matrix_json(plant.B());
     }
+    if (o.write) j["written"] = *o.write;
     fmt::print("{}\n", json_text(j));
     return;
   }
@@ -234,6 +275,7 @@ void run(const LqrOptions& o) {
     for (const Complex& z : closed) s.push_back(std::log(z) / plant.sample_time());
     fmt::print("  as s = ln z / T (1/s): {}\n", poles_text(s));
   }
+  report_copy(o.write, o.json);
 }
 
 struct PlaceOptions {
@@ -241,6 +283,8 @@ struct PlaceOptions {
   std::string poles;
   std::optional<double> sample_time;
   bool json = false;
+  std::optional<std::string> write;
+  bool force = false;
 };
 
 void run_place(const PlaceOptions& o) {
@@ -249,6 +293,7 @@ void run_place(const PlaceOptions& o) {
   const std::vector<Complex> wanted = parse_poles(o.poles);
   const analysis::Reachability reach = analysis::controllability(plant);
   const analysis::PolePlacement placed = analysis::place_poles(plant, wanted);
+  write_design(o, loaded, plant, placed.K, fmt::format("place --poles={}", o.poles));
   const std::vector<Complex> open = poles_of(plant.A());
   const std::vector<Complex> closed(placed.closed_loop_poles.begin(),
                                     placed.closed_loop_poles.end());
@@ -259,6 +304,7 @@ void run_place(const PlaceOptions& o) {
     j["open_loop_poles"] = poles_json(open);
     j["closed_loop_poles"] = poles_json(closed);
     j["eigenvector_condition"] = placed.eigenvector_condition;
+    if (o.write) j["written"] = *o.write;
     j["controllable_rank"] = reach.rank;
     fmt::print("{}\n", json_text(j));
     return;
@@ -274,6 +320,7 @@ void run_place(const PlaceOptions& o) {
   fmt::print("closed-loop poles ({}): {}\n", unit, poles_text(closed));
   fmt::print("eigenvector condition κ(X) = {:.4g} (how much the poles move per error in A, B, K)\n",
              placed.eigenvector_condition);
+  report_copy(o.write, o.json);
 }
 
 }  // namespace
@@ -284,7 +331,9 @@ void add_place_command(CLI::App& app) {
       "place",
       "Pole placement: the state feedback u = −K x that puts the closed-loop poles where "
       "asked");
-  add_linear_model_options(command, options->model, true);
+  // A design is made on the plant: a model's own controllers stay open.
+  add_linear_model_options(command, options->model, true, false);
+  options->model.open_loop = true;
   command
       ->add_option("--poles", options->poles,
                    "The closed-loop poles, one per state, comma-separated; complex ones as a+bj "
@@ -295,6 +344,7 @@ void add_place_command(CLI::App& app) {
                    "Place the poles of the plant sampled every T seconds through a zero-order hold")
       ->check(positive_finite());
   command->add_flag("--json", options->json, "Print JSON (full precision) instead of text");
+  add_write_options(command, *options);
   command->footer(
       "Examples:\n"
       "  momenta place examples/cart_pendulum.yaml --poles=-1,-2,-3+1j,-3-1j\n"
@@ -306,7 +356,9 @@ void add_lqr_command(CLI::App& app) {
   auto options = std::make_shared<LqrOptions>();
   CLI::App* command = app.add_subcommand(
       "lqr", "Linear–quadratic regulator: the state feedback u = −K x of a linearized model");
-  add_linear_model_options(command, options->model, true);
+  // A design is made on the plant: a model's own controllers stay open.
+  add_linear_model_options(command, options->model, true, false);
+  options->model.open_loop = true;
   command
       ->add_option("--Q", options->Q,
                    "State weights: one number (times the identity), one per state in `momenta "
@@ -322,6 +374,7 @@ void add_lqr_command(CLI::App& app) {
                    "zero-order hold (dlqr)")
       ->check(positive_finite());
   command->add_flag("--json", options->json, "Print JSON (full precision) instead of text");
+  add_write_options(command, *options);
   command->footer(
       "Examples:\n"
       "  momenta lqr examples/cart_pendulum.yaml --Q x.position=1,tilt.angle=1 --R 1\n"

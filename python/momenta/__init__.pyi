@@ -292,6 +292,9 @@ class ModelBuilder:
     def add_body(self, name: str, mass_properties: MassProperties) -> ModelBuilder:
         """A body with its mass properties in its own frame (momenta.inertia)."""
         ...
+    def add_controller(self, name: str, type: str, *, measure: object, drives: object, reference: object = None, kp: float = 0.0, ki: float = 0.0, kd: float = 0.0, derivative_filter: float = 0.0, gain: object = None, state_reference: object = None, feedforward: object = None, numerator: object = None, denominator: object = None, A: object = None, B: object = None, C: object = None, D: object = None, sample_time: float = 0.0, quantization: float = 0.0, noise: float = 0.0, delay: int = 0, seed: int = 1, u_min: float = -inf, u_max: float = inf, rate_limit: float = inf) -> ModelBuilder:
+        """A feedback controller, as the model file's `controllers:` (docs/control.md): type 'pid' (kp, ki, kd, derivative_filter), 'state_feedback' (gain K, state_reference, feedforward), 'transfer_function' (numerator, denominator) or 'state_space' (A, B, C, D). `measure` names coordinates ("x.position", "ti"""
+        ...
     def add_force(self, name: str, *, body: str, point: object = (0, 0, 0), vector: object, frame: str = 'world', signal: str = '') -> ModelBuilder:
         """A force (N) at a body point: `vector`, or u(t) · vector with a signal; frame 'world' or 'body' (a follower load)."""
         ...
@@ -798,7 +801,7 @@ def linear_analysis(model: Model, about: str = 'auto', *, inputs: List[str] = []
     """The linear analysis about the operating point `about` names — 'auto' (the initial state at rest; where it moves, its steady motion if it is one, else the static equilibrium found from it), 'initial', 'equilibrium', 'steady', or 'given' with q= (and v=, t=) — chosen by the same rule as `momenta modes"""
     ...
 
-def linearize(model: Model, *, inputs: List[str] = [], outputs: List[str] = [], q: object = None, v: object = None, t: float = 0.0, angle_step: float = 0.0, length_step: float = 0.0, independent: List[str] = [], derivatives: str = 'analytic') -> LinearModel:
+def linearize(model: Model, *, inputs: List[str] = [], outputs: List[str] = [], q: object = None, v: object = None, t: float = 0.0, angle_step: float = 0.0, length_step: float = 0.0, independent: List[str] = [], derivatives: str = 'analytic', open_loop: bool = False) -> LinearModel:
     """Linearizes the model about (t, q, v) — its initial state unless given — as `momenta linearize` does: states [δq; v] over the free joints, inputs the named signals (all by default), outputs the named model outputs, states or coordinates (the model file's outputs, or every configuration state, by defa"""
     ...
 

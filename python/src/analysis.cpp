@@ -274,8 +274,9 @@ the free coordinates (mass, damping, stiffness), the point, its acceleration and
       "linearize",
       [](const ModelHandle& h, std::vector<std::string> inputs, std::vector<std::string> outputs,
          const py::object& q, const py::object& v, double t, double angle_step, double length_step,
-         std::vector<std::string> independent, const std::string& derivatives) {
+         std::vector<std::string> independent, const std::string& derivatives, bool open_loop) {
         LinearizationOptions options;
+        options.close_loops = !open_loop;
         if (derivatives == "differences") {
           options.derivatives = LinearizationOptions::Derivatives::differences;
         } else if (derivatives != "analytic") {
@@ -295,11 +296,13 @@ the free coordinates (mass, damping, stiffness), the point, its acceleration and
       py::arg("outputs") = std::vector<std::string>{}, py::arg("q") = py::none(),
       py::arg("v") = py::none(), py::arg("t") = 0.0, py::arg("angle_step") = 0.0,
       py::arg("length_step") = 0.0, py::arg("independent") = std::vector<std::string>{},
-      py::arg("derivatives") = "analytic",
+      py::arg("derivatives") = "analytic", py::arg("open_loop") = false,
       R"doc(Linearizes the model about (t, q, v) — its initial state unless given — as
 `momenta linearize` does: states [δq; v] over the free joints, inputs the named signals (all by
 default), outputs the named model outputs, states or coordinates (the model file's outputs, or
-every configuration state, by default). With constraints the states are independent coordinates
+every configuration state, by default). A model with controllers is linearized with its loops
+closed (their states appended, the references and undriven signals the inputs); open_loop=True
+gives the plant alone, each driven input an input (docs/control.md). With constraints the states are independent coordinates
 (docs/constraints.md); `independent` names coordinates to keep as states. `derivatives`:
 'analytic' (exact to round-off) or 'differences' (Richardson differences of the equations, the
 check; ~1e-12 relative). Raises InvalidArgument on an unknown name (with a did-you-mean).)doc");

@@ -5,6 +5,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <numbers>
 
@@ -29,7 +30,98 @@ std::string suggestion(std::string_view word, const std::vector<std::string>& kn
 struct Builder {
   ModelBuilder builder;
   std::string name;
+  std::vector<std::string> signals;  // the signals added so far (add_signal, add_controller)
 };
+
+// One name or a list of names.
+std::vector<std::string> names_arg(const py::handle& object, std::string_view what) {
+  if (py::isinstance<py::str>(object)) return {object.cast<std::string>()};
+  try {
+    return object.cast<std::vector<std::string>>();
+  } catch (const py::cast_error&) {
+    throw py::type_error(fmt::format("{}: expected a name or a list of names", what));
+  }
+}
+
+// A matrix from a number, a list (one row, or a column where `column`) or a 2-D array.
+MatX block_matrix_arg(const py::handle& object, std::string_view name, bool column = false) {
+  const auto a = as_float_array(object, name);
+  if (a.ndim() == 0) return MatX::Constant(1, 1, *a.data());
+  if (a.ndim() == 1) {
+    const Eigen::Map<const VecX> v(a.data(), a.shape(0));
+    return column ? MatX(v) : MatX(v.transpose());
+  }
+  return matrix_arg(object, name, -1, -1);
+}
+
+// The controller add_controller describes (keywords as the model file's `controllers:`).
+Controller controller_arg(const std::string& name, const std::string& type,
+                          const py::handle& measure, const py::handle& drives,
+                          const py::dict& given) {
+  Controller c;
+  c.name = name;
+  c.measured = names_arg(measure, "measure");
+  c.drives = names_arg(drives, "drives");
+  const auto has = [&](const char* key) { return given.contains(key) && !given[key].is_none(); };
+  const auto number = [&](const char* key, double fallback) {
+    return has(key) ? given[key].cast<double>() : fallback;
+  };
+  if (has("reference")) {
+    const py::handle r = given["reference"];
+    if (py::isinstance<py::str>(r)) {
+      c.reference = r.cast<std::string>();
+    } else {
+      c.setpoint = r.cast<double>();
+    }
+  }
+  c.sample_time = number("sample_time", 0.0);
+  c.sensor.quantization = number("quantization", 0.0);
+  c.sensor.noise = number("noise", 0.0);
+  c.sensor.delay = has("delay") ? given["delay"].cast<int>() : 0;
+  c.sensor.seed = has("seed") ? given["seed"].cast<unsigned>() : 1u;
+  c.actuator.min = number("u_min", -std::numeric_limits<double>::infinity());
+  c.actuator.max = number("u_max", std::numeric_limits<double>::infinity());
+  c.actuator.rate_limit = number("rate_limit", std::numeric_limits<double>::infinity());
+  if (type == "pid") {
+    c.kind = ControllerKind::pid;
+    c.pid = {number("kp", 0.0), number("ki", 0.0), number("kd", 0.0),
+             number("derivative_filter", 0.0)};
+  } else if (type == "state_feedback") {
+    c.kind = ControllerKind::state_feedback;
+    if (!has("gain")) throw py::value_error("add_controller(): a state_feedback needs gain=K");
+    c.gain = block_matrix_arg(given["gain"], "gain");
+    ArgStorage keep;
+    if (has("state_reference"))
+      c.state_reference = vector_arg(given["state_reference"], "state_reference", -1, "", keep);
+    if (has("feedforward"))
+      c.feedforward = block_matrix_arg(given["feedforward"], "feedforward", true).col(0);
+  } else if (type == "transfer_function") {
+    c.kind = ControllerKind::linear;
+    if (!has("numerator") || !has("denominator"))
+      throw py::value_error(
+          "add_controller(): a transfer_function needs numerator= and denominator=");
+    const auto coefficients = [&](const char* key) {
+      const MatX m = block_matrix_arg(given[key], key);
+      return std::vector<double>(m.data(), m.data() + m.size());
+    };
+    c.block = transfer_function_block(coefficients("numerator"), coefficients("denominator"),
+                                      fmt::format("controller '{}': the transfer function", name));
+  } else if (type == "state_space") {
+    c.kind = ControllerKind::linear;
+    c.block.A = has("A") ? block_matrix_arg(given["A"], "A") : MatX(0, 0);
+    c.block.B =
+        has("B") ? block_matrix_arg(given["B"], "B", true) : MatX::Zero(c.block.A.rows(), 1);
+    c.block.C = has("C") ? block_matrix_arg(given["C"], "C") : MatX::Zero(1, c.block.A.rows());
+    c.block.D =
+        has("D") ? block_matrix_arg(given["D"], "D", true) : MatX::Zero(c.block.C.rows(), 1);
+  } else {
+    const std::vector<std::string> types = {"pid", "state_feedback", "transfer_function",
+                                            "state_space"};
+    throw py::value_error(fmt::format("add_controller(): unknown type '{}'{}; types: {}", type,
+                                      suggestion(type, types), fmt::join(types, ", ")));
+  }
+  return c;
+}
 
 // A pose {"position": [x, y, z], "rotation": 3 × 3} (either key optional); None: the identity.
 Transform pose_arg(const py::object& pose, std::string_view name) {
@@ -192,7 +284,7 @@ joints, force elements and signals in any order, then build(), which checks ever
 raises InvalidArgument (InvalidInertia for mass properties) naming the item at fault.
 Every add_* method returns the builder, so calls chain.)doc")
       .def(py::init([](std::string name) {
-             return Builder{{}, std::move(name)};
+             return Builder{{}, std::move(name), {}};
            }),
            py::arg("name") = "model")
       .def(
@@ -358,6 +450,7 @@ free joint: rotation vector, then position; model/prescribed_motion.hpp).)doc")
           [](Builder& b, const std::string& name, const std::string& type,
              const py::kwargs& parameters) -> Builder& {
             b.builder.add_signal(Signal(name, signal_shape(name, type, parameters)));
+            b.signals.push_back(name);
             return b;
           },
           py::arg("name"), py::arg("type"),
@@ -365,6 +458,72 @@ free joint: rotation vector, then position; model/prescribed_motion.hpp).)doc")
 step(final, start, initial, rise_time), ramp(slope, start, offset, stop), pulse(amplitude,
 width, start, offset, period), sine(amplitude, frequency [Hz], phase [rad], offset, start),
 chirp(amplitude, f0, f1, duration, start), table(times, values).)doc")
+      .def(
+          "add_controller",
+          [](Builder& b, const std::string& name, const std::string& type,
+             const py::object& measure, const py::object& drives, const py::object& reference,
+             double kp, double ki, double kd, double derivative_filter, const py::object& gain,
+             const py::object& state_reference, const py::object& feedforward,
+             const py::object& numerator, const py::object& denominator, const py::object& A,
+             const py::object& B, const py::object& C, const py::object& D, double sample_time,
+             double quantization, double noise, int delay, unsigned seed, double u_min,
+             double u_max, double rate_limit) -> Builder& {
+            py::dict given;
+            given["reference"] = reference;
+            given["kp"] = kp;
+            given["ki"] = ki;
+            given["kd"] = kd;
+            given["derivative_filter"] = derivative_filter;
+            given["gain"] = gain;
+            given["state_reference"] = state_reference;
+            given["feedforward"] = feedforward;
+            given["numerator"] = numerator;
+            given["denominator"] = denominator;
+            given["A"] = A;
+            given["B"] = B;
+            given["C"] = C;
+            given["D"] = D;
+            given["sample_time"] = sample_time;
+            given["quantization"] = quantization;
+            given["noise"] = noise;
+            given["delay"] = delay;
+            given["seed"] = seed;
+            given["u_min"] = u_min;
+            given["u_max"] = u_max;
+            given["rate_limit"] = rate_limit;
+            Controller c = controller_arg(name, type, measure, drives, given);
+            // The inputs it drives are its own: added here as signals the forces can name.
+            for (const std::string& input : c.drives) {
+              if (std::find(b.signals.begin(), b.signals.end(), input) != b.signals.end()) {
+                throw py::value_error(fmt::format(
+                    "add_controller(): '{}' is already a signal; the controller's output takes "
+                    "its place (give a disturbance its own force and signal)",
+                    input));
+              }
+              b.builder.add_signal(Signal(input, ConstantSignal{0.0}));
+              b.signals.push_back(input);
+            }
+            b.builder.add_controller(std::move(c));
+            return b;
+          },
+          py::arg("name"), py::arg("type"), py::kw_only(), py::arg("measure"), py::arg("drives"),
+          py::arg("reference") = py::none(), py::arg("kp") = 0.0, py::arg("ki") = 0.0,
+          py::arg("kd") = 0.0, py::arg("derivative_filter") = 0.0, py::arg("gain") = py::none(),
+          py::arg("state_reference") = py::none(), py::arg("feedforward") = py::none(),
+          py::arg("numerator") = py::none(), py::arg("denominator") = py::none(),
+          py::arg("A") = py::none(), py::arg("B") = py::none(), py::arg("C") = py::none(),
+          py::arg("D") = py::none(), py::arg("sample_time") = 0.0, py::arg("quantization") = 0.0,
+          py::arg("noise") = 0.0, py::arg("delay") = 0, py::arg("seed") = 1u,
+          py::arg("u_min") = -std::numeric_limits<double>::infinity(),
+          py::arg("u_max") = std::numeric_limits<double>::infinity(),
+          py::arg("rate_limit") = std::numeric_limits<double>::infinity(),
+          R"doc(A feedback controller, as the model file's `controllers:` (docs/control.md): type
+'pid' (kp, ki, kd, derivative_filter), 'state_feedback' (gain K, state_reference, feedforward),
+'transfer_function' (numerator, denominator) or 'state_space' (A, B, C, D). `measure` names
+coordinates ("x.position", "tilt.angle_rate"), `drives` the inputs it sets (forces name them as
+signals; they are added here), `reference` a number or a signal's name. sample_time > 0 makes it
+discrete (zero-order hold); the sensor's quantization, noise (σ), delay (samples) and seed, the
+actuator's u_min, u_max and rate_limit (per second) as in the file.)doc")
       .def(
           "build",
           [](const Builder& b) {

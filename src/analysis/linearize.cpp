@@ -265,8 +265,11 @@ std::vector<std::string> linear_state_names(const model::Model& model) {
 LinearModel linearize(const model::Model& model, const OperatingPoint& point,
                       const LinearizationOptions& options) {
   check_arguments(point, options);
+  if (model.has_controllers() && options.close_loops)
+    return detail::linearize_closed_loop(model, point, options);
   if (model.has_constraints()) return detail::linearize_constrained(model, point, options);
   ModelResidual residual(model);
+  detail::set_driven_values(model, options, residual.system());
   system::MultibodySystem& system = residual.system();
   const double t = point.t;
   const int nf = residual.nf();

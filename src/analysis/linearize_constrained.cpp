@@ -80,6 +80,7 @@ void reduced_second_order_form(LinearModel& result, ModelResidual& residual, Con
 LinearModel linearize_constrained(const model::Model& model, const OperatingPoint& point,
                                   const LinearizationOptions& options) {
   ModelResidual residual(model);
+  detail::set_driven_values(model, options, residual.system());
   system::MultibodySystem& system = residual.system();
   const double t = point.t;
 

@@ -40,6 +40,28 @@ std::vector<SignalUse> signal_uses(const model::Model& model) {
   return use;
 }
 
+}  // namespace
+
+bool signal_has_effect(const model::Model& model, int s) {
+  const SignalUse use = signal_uses(model)[static_cast<std::size_t>(s)];
+  return use.load || use.prescribed;
+}
+
+void set_driven_values(const model::Model& model, const LinearizationOptions& options,
+                       system::MultibodySystem& system) {
+  if (options.driven_values.empty()) return;
+  if (options.driven_values.size() != model.signals().size()) {
+    throw InvalidArgument(fmt::format("linearize: {} driven values for {} signals",
+                                      options.driven_values.size(), model.signals().size()));
+  }
+  for (int s = 0; s < static_cast<int>(model.signals().size()); ++s) {
+    if (model.is_driven(s))
+      system.set_driven_value(s, options.driven_values[static_cast<std::size_t>(s)]);
+  }
+}
+
+namespace {
+
 // The name that stands for a prescribed joint's k-th signal as an input: its coordinate, or for a
 // ball or free joint (whose signals are a rotation vector, and a position) its velocity
 // coordinate.

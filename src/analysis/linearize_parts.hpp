@@ -9,6 +9,7 @@
 #include "momenta/analysis/linearize.hpp"
 #include "momenta/math/types.hpp"
 #include "momenta/model/model.hpp"
+#include "momenta/system/multibody_system.hpp"
 
 namespace momenta::analysis::detail {
 
@@ -93,6 +94,17 @@ void fold_input_rates(LinearModel& result, const MatX& A, const MatX& C,
 /// differences of a step on which J_r(δ)⁻¹ ω is linear but for an even part.
 MatX rotation_rate_jacobian(const model::Model& model, const std::vector<int>& free,
                             const VecX& v0);
+
+/// Sets the plant's driven inputs to options.driven_values (nothing when it is empty).
+void set_driven_values(const model::Model& model, const LinearizationOptions& options,
+                       system::MultibodySystem& system);
+/// Whether signal s scales an applied load or drives a prescribed joint.
+bool signal_has_effect(const model::Model& model, int s);
+
+/// linearize() for a model with controllers and options.close_loops: the plant's linearization
+/// closed by the controllers' linear laws (linearize_closed_loop.cpp).
+LinearModel linearize_closed_loop(const model::Model& model, const OperatingPoint& point,
+                                  const LinearizationOptions& options);
 
 /// linearize() for a model with constraints (linearize_constrained.cpp).
 LinearModel linearize_constrained(const model::Model& model, const OperatingPoint& point,

@@ -79,6 +79,15 @@ std::optional<int> Model::find_body(std::string_view name) const {
 std::optional<int> Model::find_joint(std::string_view name) const {
   return find_by_name(joints_, name, [](const Joint& j) -> std::string_view { return j.name; });
 }
+bool Model::is_driven(int s) const {
+  for (const ResolvedController& c : controllers_) {
+    for (int d : c.drives) {
+      if (d == s) return true;
+    }
+  }
+  return false;
+}
+
 std::optional<int> Model::find_signal(std::string_view name) const {
   return find_by_name(signals_, name, [](const Signal& s) -> std::string_view { return s.name(); });
 }

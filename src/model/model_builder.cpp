@@ -93,6 +93,11 @@ ModelBuilder& ModelBuilder::add_signal(Signal signal) {
   return *this;
 }
 
+ModelBuilder& ModelBuilder::add_controller(Controller controller) {
+  controllers_.push_back(std::move(controller));
+  return *this;
+}
+
 ModelBuilder& ModelBuilder::add_constraint(Constraint constraint) {
   constraints_.push_back(std::move(constraint));
   return *this;
@@ -123,12 +128,14 @@ class ModelAssembler {
  public:
   ModelAssembler(const Vec3& gravity, const std::vector<Body>& bodies,
                  const std::vector<Joint>& joints, const std::vector<ForceElement>& elements,
-                 const std::vector<Signal>& signals, const std::vector<Constraint>& constraints)
+                 const std::vector<Signal>& signals, const std::vector<Constraint>& constraints,
+                 const std::vector<Controller>& controllers)
       : bodies_(bodies),
         joints_(joints),
         elements_(elements),
         signals_(signals),
-        constraints_(constraints) {
+        constraints_(constraints),
+        controllers_(controllers) {
     model_.gravity_ = gravity;
   }
 
@@ -143,10 +150,30 @@ class ModelAssembler {
     resolve_force_elements();
     resolve_constraints();
     model_.signals_ = signals_;
+    resolve_controllers();
     return std::move(model_);
   }
 
  private:
+  // Controllers: their names resolved against the model; no signal driven twice, no name twice.
+  void resolve_controllers() {
+    std::map<int, std::string> driver;
+    for (const Controller& c : controllers_) {
+      for_item(Kind::controller, c.name, [&] {
+        for (const ResolvedController& other : model_.controllers_) {
+          MOMENTA_REQUIRE(other.spec.name != c.name, "a second controller named '{}'", c.name);
+        }
+        ResolvedController r = resolve_controller(c, model_);
+        for (int s : r.drives) {
+          const auto [at, added] = driver.emplace(s, c.name);
+          MOMENTA_REQUIRE(added, "controller '{}' drives '{}', which controller '{}' drives too",
+                          c.name, model_.signals_[static_cast<std::size_t>(s)].name(), at->second);
+        }
+        model_.controllers_.push_back(std::move(r));
+      });
+    }
+  }
+
   // Bodies: unique names, physical mass properties.
   void check_bodies() {
     body_names_.push_back(kWorldBodyName);
@@ -652,6 +679,7 @@ class ModelAssembler {
   const std::vector<ForceElement>& elements_;
   const std::vector<Signal>& signals_;
   const std::vector<Constraint>& constraints_;
+  const std::vector<Controller>& controllers_;
   Model model_;
   std::map<std::string, int, std::less<>> body_by_name_;  // index into bodies_ (input order)
   std::vector<std::string_view> body_names_;
@@ -666,7 +694,8 @@ class ModelAssembler {
 }  // namespace detail
 
 Model ModelBuilder::build() const {
-  return detail::ModelAssembler(gravity_, bodies_, joints_, force_elements_, signals_, constraints_)
+  return detail::ModelAssembler(gravity_, bodies_, joints_, force_elements_, signals_, constraints_,
+                                controllers_)
       .build();
 }
 

@@ -101,26 +101,29 @@ EventMonitor::Watched EventMonitor::resolve(const model::Model& model,
 }
 
 EventMonitor::EventMonitor(const model::Model& model, const std::vector<model::OutputSpec>& outputs,
-                           std::vector<model::EventSpec> events)
+                           std::vector<model::EventSpec> events, int controller_states)
     : model_(model), events_(std::move(events)) {
   for (const model::EventSpec& event : events_) watched_.push_back(resolve(model, outputs, event));
   side_.assign(events_.size(), 0);
   found_.reserve(events_.size());
-  interpolant_.resize(model.nq(), model.nv());
-  trial_ = integrate::State{0.0, VecX::Zero(model.nq()), VecX::Zero(model.nv())};
-  prescribed_ = trial_;
+  interpolant_.resize(model.nq() + controller_states, model.nv() + controller_states);
+  trial_ = integrate::State{0.0, VecX::Zero(model.nq() + controller_states),
+                            VecX::Zero(model.nv() + controller_states)};
+  prescribed_ = integrate::State{0.0, VecX::Zero(model.nq()), VecX::Zero(model.nv())};
 }
 
 double EventMonitor::offset(MultibodySystem& system, int e, const integrate::State& state) {
-  // The state as the table records it: the prescribed joints on their signals.
+  // The model's part of the state as the table records it: the prescribed joints on their
+  // signals.
   const bool prescribed = model_.has_prescribed_joints();
-  if (prescribed) {
-    prescribed_.q = state.q;
-    prescribed_.v = state.v;
-    system.apply_prescribed_motion(state.t, prescribed_.q, prescribed_.v);
+  const bool copy = prescribed || state.q.size() != model_.nq();
+  if (copy) {
+    prescribed_.q = state.q.head(model_.nq());
+    prescribed_.v = state.v.head(model_.nv());
   }
-  const VecX& q = prescribed ? prescribed_.q : state.q;
-  const VecX& v = prescribed ? prescribed_.v : state.v;
+  if (prescribed) system.apply_prescribed_motion(state.t, prescribed_.q, prescribed_.v);
+  const VecX& q = copy ? prescribed_.q : state.q;
+  const VecX& v = copy ? prescribed_.v : state.v;
   Watched& w = watched_[static_cast<std::size_t>(e)];
   double quantity = 0.0;
   switch (w.kind) {
@@ -152,6 +155,7 @@ void EventMonitor::start(MultibodySystem& system, const integrate::State& state)
 }
 
 std::span<const EventOccurrence> EventMonitor::check(MultibodySystem& system,
+                                                     integrate::SecondOrderSystem& advanced,
                                                      const integrate::Integrator& integrator,
                                                      const integrate::State& start,
                                                      const integrate::State& end) {
@@ -166,15 +170,15 @@ std::span<const EventOccurrence> EventMonitor::check(MultibodySystem& system,
     const int way = crossing(events_[e].direction, before, after);
     if (way == 0) continue;
     if (!interpolant_set) {
-      interpolant_.set(system, integrator, start, end);
+      interpolant_.set(advanced, integrator, start, end);
       interpolant_set = true;
     }
     // f = offset signed so that the condition holds where f < 0: f(start) ≥ 0 > f(end).
     const double sign = way < 0 ? 1.0 : -1.0;
     const double at_start = offset(system, static_cast<int>(e), start);
-    const double t =
-        locate(system, static_cast<int>(e), sign, start.t, end.t, sign * at_start, sign * at_end);
-    state_at(system, t, trial_);
+    const double t = locate(system, advanced, static_cast<int>(e), sign, start.t, end.t,
+                            sign * at_start, sign * at_end);
+    state_at(advanced, t, trial_);
     EventOccurrence o;
     o.name = events_[e].name;
     o.condition = model::event_condition_text(events_[e]);
@@ -196,11 +200,11 @@ std::span<const EventOccurrence> EventMonitor::check(MultibodySystem& system,
   return found_;
 }
 
-double EventMonitor::locate(MultibodySystem& system, int e, double sign, double a, double b,
-                            double fa, double fb) {
+double EventMonitor::locate(MultibodySystem& system, integrate::SecondOrderSystem& advanced, int e,
+                            double sign, double a, double b, double fa, double fb) {
   if (fa == 0.0) return a;  // on the value at the step's start, past it after
   const auto f = [&](double t) {
-    state_at(system, t, trial_);
+    state_at(advanced, t, trial_);
     return sign * offset(system, e, trial_);
   };
   const auto close_enough = [](double x, double y) {
@@ -213,9 +217,10 @@ double EventMonitor::locate(MultibodySystem& system, int e, double sign, double 
   return f(hi) <= 0.0 ? hi : lo;
 }
 
-void EventMonitor::state_at(MultibodySystem& system, double t, integrate::State& out) {
-  interpolant_.evaluate(system, t, out);
-  system.project(t, out.q, out.v);  // the ends are on the constraints already: no change there
+void EventMonitor::state_at(integrate::SecondOrderSystem& advanced, double t,
+                            integrate::State& out) {
+  interpolant_.evaluate(advanced, t, out);
+  advanced.project(t, out.q, out.v);  // the ends are on the constraints already: no change there
 }
 
 }  // namespace momenta::simulate

@@ -16,6 +16,7 @@
 #include "momenta/integrate/run.hpp"
 #include "momenta/model/integrators.hpp"
 #include "momenta/model/units.hpp"
+#include "momenta/system/closed_loop_system.hpp"
 #include "momenta/system/integrators.hpp"
 #include "momenta/system/multibody_system.hpp"
 #include "momenta/system/rigid_body_integrator.hpp"
@@ -87,7 +88,12 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
                     "symplectic_euler",
                     options_.integrator));
   }
-  events_ = std::make_unique<EventMonitor>(model, outputs_.specs(), options_.events);
+  // The one system every run() of this simulation advances, closed by the controllers.
+  system_ = std::make_unique<MultibodySystem>(model);
+  if (model.has_controllers()) closed_loop_ = std::make_unique<system::ClosedLoopSystem>(*system_);
+  events_ =
+      std::make_unique<EventMonitor>(model, outputs_.specs(), options_.events,
+                                     closed_loop_ ? closed_loop_->num_controller_states() : 0);
 
   // The columns that do not depend on what the model conserves, each with its unit.
   const auto add = [this](std::string name, std::string unit) {
@@ -101,6 +107,10 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
   for (const char* name : {"H_x", "H_y", "H_z"}) add(name, "kg·m²/s");
   for (std::size_t c = 0; c < outputs_.size(); ++c) {
     add(outputs_.column_names()[c], outputs_.column_units()[c]);
+  }
+  if (closed_loop_) {
+    for (std::size_t c = 0; c < closed_loop_->column_names().size(); ++c)
+      add(closed_loop_->column_names()[c], closed_loop_->column_units()[c]);
   }
   if (options_.reactions) {
     for (const model::Joint& j : model.joints()) {
@@ -118,14 +128,12 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
     }
   }
 
-  // The one system every run() of this simulation advances.
-  system_ = std::make_unique<MultibodySystem>(model);
   // A run integrate::run would refuse (a step below time's resolution, 1e10 steps) is refused
   // here, before a front end opens any output.
   integrate::RunOptions run_options;
   run_options.t_end = options_.duration;
   run_options.h = options_.step;
-  integrate::check_run(*system_, *integrator_,
+  integrate::check_run(advanced(), *integrator_,
                        integrate::State{0.0, model.initial_q(), model.initial_v()}, run_options);
   // The audit columns, where the model should conserve the quantity: energy and momentum
   // drifts are relative (1), the quaternion norm error too, the constraint residuals in the
@@ -155,15 +163,22 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
 
 Simulation::~Simulation() = default;
 
+integrate::SecondOrderSystem& Simulation::advanced() {
+  if (closed_loop_) return *closed_loop_;
+  return *system_;
+}
+
 // Everything one run needs between steps, allocated before the first: the recorded copy of the
 // state, the audit and the row, beside the simulation's system. observe() is the step loop's body.
 class Simulation::Recorder {
  public:
-  Recorder(const Simulation& simulation, MultibodySystem& system, RowSink& sink)
+  Recorder(const Simulation& simulation, MultibodySystem& system,
+           system::ClosedLoopSystem* closed_loop, RowSink& sink)
       : sim_(simulation),
         model_(simulation.model_),
         sink_(sink),
         system_(system),
+        closed_loop_(closed_loop),
         audit_data_(model_),
         quaternions_(quaternion_offsets(model_)),
         q_(model_.nq()),
@@ -175,8 +190,8 @@ class Simulation::Recorder {
 
   // Sets up the audit from the initial state (prescribed motion already applied).
   void start(const integrate::State& state, SimulationSummary& summary) {
-    q_ = state.q;
-    v_ = state.v;
+    q_ = state.q.head(model_.nq());
+    v_ = state.v.head(model_.nv());
     const Energy e = system_.energy(q_, v_);
     const dynamics::Momentum h = dynamics::momentum(model_, audit_data_, q_, v_);
     summary.energy_audited = system_.conserves_energy();
@@ -215,9 +230,10 @@ class Simulation::Recorder {
     const bool stopping = sim_.options_.stop != nullptr && sim_.options_.stop->load();
     record = record || stopping;
     if (sim_.options_.progress && (++observed_ & 1023) == 0) sim_.options_.progress(state.t);
-    // The recorded copy, with the prescribed joints exactly on their signals.
-    q_ = state.q;
-    v_ = state.v;
+    // The recorded copy of the mechanism's state, with the prescribed joints exactly on their
+    // signals.
+    q_ = state.q.head(model_.nq());
+    v_ = state.v.head(model_.nv());
     if (model_.has_prescribed_joints()) system_.apply_prescribed_motion(state.t, q_, v_);
 
     // Energy and momentum where audited or recorded (each runs the kinematics once).
@@ -251,10 +267,17 @@ class Simulation::Recorder {
     row_[c++] = e.potential();
     row_[c++] = e.total();
     for (int k = 0; k < 3; ++k) row_[c++] = h.angular_about_com[k];
-    // The outputs evaluate the system at (t, q, v), which also serves the reactions below.
+    // The controllers first: they set the inputs they drive, which the outputs and reactions
+    // then see; their columns follow the outputs'.
     const std::size_t n_outputs = sim_.outputs_.size();
+    const std::size_t n_controls = closed_loop_ ? closed_loop_->column_names().size() : 0;
+    if (closed_loop_) {
+      closed_loop_->record(state.t, state.q, state.v,
+                           std::span<double>(row_).subspan(c + n_outputs, n_controls));
+    }
+    // The outputs evaluate the system at (t, q, v), which also serves the reactions below.
     sim_.outputs_.evaluate(system_, state.t, q_, v_, std::span<double>(row_).subspan(c, n_outputs));
-    c += n_outputs;
+    c += n_outputs + n_controls;
     if (sim_.options_.reactions) {
       vdot_ = system_.data().vdot;
       dynamics::joint_reactions(model_, system_.data(), q_, v_, vdot_, system_.external_wrenches());
@@ -320,6 +343,7 @@ class Simulation::Recorder {
   const model::Model& model_;
   RowSink& sink_;
   MultibodySystem& system_;
+  system::ClosedLoopSystem* closed_loop_;  // null without controllers
   dynamics::Data audit_data_;  // for the momentum, so system_'s evaluation stays as it was
   std::vector<int> quaternions_;
   VecX q_, v_, vdot_;
@@ -332,8 +356,8 @@ class Simulation::Recorder {
   long observed_ = 0;
 };
 
-void Simulation::check_stiffness(system::MultibodySystem& system, const integrate::State& state,
-                                 SimulationSummary& summary) const {
+void Simulation::check_stiffness(integrate::SecondOrderSystem& system,
+                                 const integrate::State& state, SimulationSummary& summary) const {
   const std::string_view name = integrator_->name();
   if (std::isnan(integrate::amplification(name, {0.0, 0.0}))) return;
   if (model_.nv() == 0 || model_.nv() > kStiffnessCheckLimit) return;
@@ -348,7 +372,7 @@ void Simulation::check_stiffness(system::MultibodySystem& system, const integrat
 }
 
 SimulationSummary Simulation::run(RowSink& sink) {
-  Recorder recorder(*this, *system_, sink);
+  Recorder recorder(*this, *system_, closed_loop_.get(), sink);
   SimulationSummary summary;
   summary.integrator = std::string(integrator_->name());
   summary.order = integrator_->order();
@@ -363,8 +387,10 @@ SimulationSummary Simulation::run(RowSink& sink) {
   summary.initial_state = recorder.system().make_consistent(0.0, state.q, state.v);
   if (const system::ConstraintSolver* solver = recorder.system().constraints())
     summary.redundant_constraint_rows = solver->redundant_rows();
+  // With controllers: their states joined to the mechanism's, their first samples taken.
+  if (closed_loop_) state = closed_loop_->start(0.0, state.q, state.v);
   recorder.start(state, summary);
-  check_stiffness(recorder.system(), state, summary);
+  check_stiffness(advanced(), state, summary);
 
   // integrate::run reports every step (so the audit sees each); rows are kept every n-th, and
   // the last.
@@ -383,8 +409,8 @@ SimulationSummary Simulation::run(RowSink& sink) {
       if (step == 0) events_->start(recorder.system(), s);
       for (const EventOccurrence& o :
            step == 0 ? std::span<const EventOccurrence>()
-                     : events_->check(recorder.system(), *integrator_, previous, s)) {
-        events_->state_at(recorder.system(), o.time, at_event);
+                     : events_->check(recorder.system(), advanced(), *integrator_, previous, s)) {
+        events_->state_at(advanced(), o.time, at_event);
         recorder.observe(at_event, true);
         summary.events.push_back(o);
         finished = o.action == model::EventAction::stop;
@@ -398,7 +424,7 @@ SimulationSummary Simulation::run(RowSink& sink) {
   };
   try {
     const integrate::RunSummary run_summary =
-        integrate::run(recorder.system(), *integrator_, state, run_options, observe);
+        integrate::run(advanced(), *integrator_, state, run_options, observe);
     summary.statistics = run_summary.statistics;
     summary.wall_seconds = run_summary.wall_seconds;
   } catch (const NumericalError& e) {

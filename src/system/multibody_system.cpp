@@ -57,6 +57,8 @@ MultibodySystem::MultibodySystem(const model::Model& model)
       samples_(model.signals().size(), model::SignalSample{0.0, 0.0, 0.0}),
       signal_values_(model.signals().size(), 0.0),
       offsets_(model.signals().size(), model::SignalSample{0.0, 0.0, 0.0}),
+      driven_(model.signals().size(), 0),
+      driven_values_(model.signals().size(), 0.0),
       applied_samples_(model.signals().size(), model::SignalSample{0.0, 0.0, 0.0}),
       singular_q_(VecX::Zero(model.nq())),
       singular_v_(VecX::Zero(model.nv())),
@@ -65,6 +67,8 @@ MultibodySystem::MultibodySystem(const model::Model& model)
       vdot_mean_(VecX::Zero(model.nv())),
       lambda_mean_(VecX::Zero(0)) {
   check_simulable(model);
+  for (std::size_t s = 0; s < driven_.size(); ++s)
+    driven_[s] = model.is_driven(static_cast<int>(s));
   conserves_energy_ =
       !model.has_prescribed_joints() && dynamics::force_elements_conservative(model);
   // Angular momentum about the centre of mass: besides conserving energy, no body may be held
@@ -132,7 +136,8 @@ void MultibodySystem::free_dynamics(double t, const VecX& q, const VecX& v, mode
   // Every signal once at t (offsets added), from the side `limit` says at a breakpoint.
   const auto& signals = model_.signals();
   for (std::size_t i = 0; i < signals.size(); ++i) {
-    samples_[i] = offset_sample(signals[i], offsets_[i], t, limit);
+    samples_[i] = driven_[i] ? model::SignalSample{driven_values_[i] + offsets_[i].value, 0.0, 0.0}
+                             : offset_sample(signals[i], offsets_[i], t, limit);
     signal_values_[i] = samples_[i].value;
   }
 
@@ -223,8 +228,8 @@ void MultibodySystem::acceleration(double t, const VecX& q, const VecX& v, VecX&
 
 double MultibodySystem::next_discontinuity(double t) const {
   double next = std::numeric_limits<double>::infinity();
-  for (const model::Signal& signal : model_.signals()) {
-    next = std::min(next, signal.next_breakpoint(t));
+  for (std::size_t s = 0; s < driven_.size(); ++s) {
+    if (!driven_[s]) next = std::min(next, model_.signals()[s].next_breakpoint(t));
   }
   return next;
 }

@@ -16,6 +16,7 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
 #include <nlohmann/json.hpp>
 
 #include "cli_runner.hpp"
@@ -952,6 +953,59 @@ TEST_F(AnalysisCli, ResponseJsonIsExactAndTheTextReadsBack) {
   EXPECT_EQ(std::stod(figure_after(exact.out, "DC gain: ")), j.at("dc_gain").get<double>());
   // --json and --csv are two ways to the samples: one at a time.
   EXPECT_EQ(momenta(args + " --json --csv -").code, 2);
+}
+
+// The whole path on the command line: design on the plant, write the controller into a copy,
+// simulate the nonlinear loop, linearize the closed loop; and the closed loop's own commands.
+TEST_F(AnalysisCli, LqrWritesTheControllerAndTheCopyRunsTheLoop) {
+  const std::string copy = (dir_ / "held.yaml").string();
+  CliRun r = momenta("lqr " + example("cart_pendulum") +
+                     " --Q x.position=1,tilt.angle=1 --R 1 --json --write " + test::quoted(copy));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json design = json::parse(r.out);
+  EXPECT_EQ(design.at("written").get<std::string>(), copy);
+  // The copy: the pulse input gone (the controller drives `force`), K at full precision.
+  const io::ModelFile held = io::read_model_file(copy);
+  ASSERT_EQ(held.model.controllers().size(), 1u);
+  const MatX K = matrix(design.at("K"), 4);
+  EXPECT_EQ(held.model.controllers()[0].spec.gain, K);
+  EXPECT_TRUE(held.model.is_driven(*held.model.find_signal("force")));
+  // Its closed loop has the designed poles.
+  r = momenta("linearize " + test::quoted(copy) + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const MatX A = matrix(json::parse(r.out).at("A"), 4);
+  std::vector<double> real;
+  for (const auto& p : A.eigenvalues()) real.push_back(p.real());
+  std::sort(real.begin(), real.end());
+  EXPECT_NEAR(real.back(), design.at("closed_loop_poles").at(0).at(0).get<double>(), 1e-9);
+  // --open-loop: the plant again, the force an input.
+  r = momenta("linearize " + test::quoted(copy) + " --open-loop --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(json::parse(r.out).at("input_names"), json({"force"}));
+  // The copy simulates, and info names the controller.
+  r = momenta("simulate " + test::quoted(copy) + " --duration 0.5 -o " +
+              test::quoted((dir_ / "run.csv").string()));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(slurp(dir_ / "run.csv").find("state_feedback.force"), std::string::npos);
+  r = momenta("info " + test::quoted(copy));
+  EXPECT_NE(r.out.find("state_feedback  state_feedback measuring x.position, tilt.angle, "
+                       "x.position_rate, tilt.angle_rate, driving force, continuous"),
+            std::string::npos)
+      << r.out;
+  // Never over a file without --force, never over the model itself.
+  r = momenta("lqr " + example("cart_pendulum") + " --Q 1 --R 1 --write " + test::quoted(copy));
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("the file exists; pass --force"), std::string::npos) << r.err;
+  r = momenta("lqr " + test::quoted(copy) + " --Q 1 --R 1 --write " + test::quoted(copy));
+  EXPECT_EQ(r.code, 1);
+  // The closed loop's modes and step response to the reference: the cruise PI's poles.
+  r = momenta("modes " + example("cruise_control_pi") + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("cruise.integral"), std::string::npos);
+  r = momenta("response " + example("cruise_control_pi") +
+              " --input target_speed --output speed --step --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NEAR(json::parse(r.out).at("dc_gain").get<double>(), 1.0, 1e-12);
 }
 
 TEST_F(AnalysisCli, ErrorsAndUsage) {

@@ -295,3 +295,43 @@ def test_place_on_the_command_line_is_pythons(cart):
     result = subprocess.run([cli_path(), "place", str(CART), "--poles=-1,x,2,3"],
                             capture_output=True, text=True)
     assert result.returncode == 2 and "'x' is not a number or a complex a+bj" in result.stderr
+
+
+def _cart_with_lqr(K):
+    """The cart pendulum of examples/cart_pendulum.yaml built in code, held by u = −K x."""
+    b = momenta.ModelBuilder("cart pendulum lqr")
+    b.add_body("cart", momenta.inertia.point_mass(0.5))
+    b.add_body("pendulum", momenta.inertia.MassProperties(
+        0.2, [0, 0, 0.3], np.diag([0.006, 0.006, 0.0001])))
+    b.add_joint("x", "prismatic", parent="world", child="cart", axis=[1, 0, 0], damping=0.1)
+    b.add_joint("tilt", "revolute", parent="cart", child="pendulum", axis=[0, 1, 0], q0_deg=10)
+    b.add_controller("balance", "state_feedback",
+                     measure=["x.position", "tilt.angle", "x.position_rate", "tilt.angle_rate"],
+                     gain=K, drives="force")
+    b.add_force("push", body="cart", vector=[1, 0, 0], signal="force")
+    return b.build()
+
+
+def test_a_python_designed_lqr_closes_the_loop_in_the_model(cart):
+    """momenta.lqr's K put into a ModelBuilder controller: the run is examples/
+    cart_pendulum_lqr.yaml's (the same K, the same model) to round-off, and its closed-loop
+    linearization has the designed poles."""
+    K, S, poles = momenta.lqr(cart, np.diag([1.0, 1.0, 0.0, 0.0]), np.array([[1.0]]))
+    model = _cart_with_lqr(K)
+    ours = momenta.simulate(model, duration=3.0, dt=0.001)
+    theirs = momenta.simulate(momenta.load_model(EXAMPLES / "cart_pendulum_lqr.yaml"),
+                              duration=3.0, dt=0.001)
+    np.testing.assert_allclose(ours["tilt.angle"], theirs["tilt.angle"], atol=1e-12)
+    np.testing.assert_allclose(ours["balance.force"], theirs["balance.force"], atol=1e-10)
+    assert abs(ours["tilt.angle"][-1]) < 0.01
+    closed = momenta.linearize(model, q=[0.0, 0.0], v=[0.0, 0.0]).system
+    np.testing.assert_allclose(np.sort_complex(closed.poles()), np.sort_complex(poles), rtol=1e-9)
+
+
+def test_add_controller_names_what_is_wrong():
+    with pytest.raises(TypeError, match=r"no keyword 'measured'; did you mean 'measure'"):
+        momenta.ModelBuilder("m").add_controller("c", "pid", measured="x.position", drives="u")
+    with pytest.raises(ValueError, match=r"unknown type 'pdi' \(did you mean 'pid'\?\)"):
+        momenta.ModelBuilder("m").add_controller("c", "pdi", measure="x.position", drives="u")
+    with pytest.raises(Exception, match=r"K is 1×2; it must be 1×4"):
+        _cart_with_lqr([[1.0, 2.0]])

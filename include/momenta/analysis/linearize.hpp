@@ -118,6 +118,18 @@ struct LinearizationOptions {
   /// Models with constraints: coordinates (model::Model::q_name, or a rotation tangent's
   /// "<joint>.rx") to keep as states where the constraints allow; empty: automatic.
   std::vector<std::string> independent;
+  /// Models with controllers (model/controller.hpp): true linearizes the closed loop — the
+  /// controllers' states appended to x ("cruise.integral"), the inputs the references and the
+  /// inputs no controller drives (default: every one of those); false the plant alone, each
+  /// driven input an input (what a controller is designed on: `momenta lqr`). Continuous
+  /// controllers only; the laws linear (saturation and quantization left out), the plant taken
+  /// with its driven inputs at the controllers' outputs at the point (their states as a run
+  /// from the point starts them: integrals zero, filters at the error).
+  bool close_loops = true;
+  /// The value of each input a controller drives, at the point (indexed like model.signals();
+  /// the entries of other signals ignored); empty: zero. The closed loop's linearization sets it
+  /// to the controllers' outputs at the point, and the plant is linearized there.
+  std::vector<double> driven_values;
 };
 
 /// The linear model about one operating point.

@@ -13,7 +13,7 @@ namespace momenta {
 /// Which item of a model an error is about, as data (not only as text), so that a file reader
 /// can point at the line that declares it.
 struct ModelItemRef {
-  enum class Kind { body, joint, force_element, signal, constraint };
+  enum class Kind { body, joint, force_element, signal, constraint, controller };
   Kind kind;
   std::string name;
 };

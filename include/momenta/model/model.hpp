@@ -22,6 +22,7 @@
 #include "momenta/math/spatial.hpp"
 #include "momenta/model/body.hpp"
 #include "momenta/model/constraint.hpp"
+#include "momenta/model/controller.hpp"
 #include "momenta/model/force_element.hpp"
 #include "momenta/model/joint.hpp"
 #include "momenta/model/signal.hpp"
@@ -85,6 +86,11 @@ class Model {
   const std::vector<Constraint>& constraints() const { return constraints_; }
   bool has_constraints() const { return !constraints_.empty(); }
   int num_constraint_rows() const { return constraint_rows_; }
+  /// Feedback controllers driving some of the signals (model/controller.hpp), resolved.
+  const std::vector<ResolvedController>& controllers() const { return controllers_; }
+  bool has_controllers() const { return !controllers_.empty(); }
+  /// True when a controller drives signal s (its signal of time is then not used).
+  bool is_driven(int s) const;
 
   /// Parent body index of body b (−1 for the world).
   int parent(int b) const { return bodies_[b].parent_index; }
@@ -139,6 +145,7 @@ class Model {
   std::vector<ForceElement> force_elements_;
   std::vector<Signal> signals_;
   std::vector<Constraint> constraints_;
+  std::vector<ResolvedController> controllers_;
   int constraint_rows_ = 0;
   std::vector<int> joint_of_q_;
   std::vector<int> joint_of_v_;

@@ -24,6 +24,8 @@ class ModelBuilder {
   ModelBuilder& add_signal(Signal signal);
   /// Adds a constraint closing a loop, a link, a rolling contact, a knife edge or a coupler.
   ModelBuilder& add_constraint(Constraint constraint);
+  /// Adds a feedback controller (model/controller.hpp) driving some of the signals.
+  ModelBuilder& add_controller(Controller controller);
 
   /// Validates and builds the Model. Throws InvalidArgument (InvalidInertia for mass properties)
   /// naming the offending body, joint, element or signal, with the values, when:
@@ -42,7 +44,8 @@ class ModelBuilder {
   ///   finite;
   /// - a constraint names an unknown body or joint, joins a body to itself, has a non-positive
   ///   length or radius, a non-unit plane normal, a coupler's joint that is not 1-dof, or a
-  ///   ratio that is zero or not finite.
+  ///   ratio that is zero or not finite;
+  /// - a controller fails resolve_controller (model/controller.hpp), or two drive one signal.
   Model build() const;
 
  private:
@@ -52,6 +55,7 @@ class ModelBuilder {
   std::vector<ForceElement> force_elements_;
   std::vector<Signal> signals_;
   std::vector<Constraint> constraints_;
+  std::vector<Controller> controllers_;
 };
 
 }  // namespace momenta::model

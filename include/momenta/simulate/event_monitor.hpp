@@ -54,9 +54,10 @@ void check_event(const model::Model& model, const std::vector<model::OutputSpec>
 class EventMonitor {
  public:
   /// Resolves every event's quantity (check_event's error for one the run lacks). `model` must
-  /// outlive this.
+  /// outlive this. The states it is handed may carry `controller_states` more coordinates in q
+  /// and in v after the model's (system/closed_loop_system.hpp); the events watch the model's.
   EventMonitor(const model::Model& model, const std::vector<model::OutputSpec>& outputs,
-               std::vector<model::EventSpec> events);
+               std::vector<model::EventSpec> events, int controller_states = 0);
 
   bool empty() const { return events_.empty(); }
   const std::vector<model::EventSpec>& events() const { return events_; }
@@ -68,14 +69,16 @@ class EventMonitor {
   /// states the run holds, `end` after projection): at most one per event (its first crossing
   /// in the step), in time order, ending with the first whose action is stop. Allocates only
   /// for the occurrences it returns.
+  /// `advanced` is the system the integrator advances: `system` itself, or its closed loop.
   std::span<const EventOccurrence> check(system::MultibodySystem& system,
+                                         integrate::SecondOrderSystem& advanced,
                                          const integrate::Integrator& integrator,
                                          const integrate::State& start,
                                          const integrate::State& end);
 
   /// The state at time t of the step last checked (t an occurrence's time): interpolated,
   /// projected and with the prescribed joints on their signals.
-  void state_at(system::MultibodySystem& system, double t, integrate::State& out);
+  void state_at(integrate::SecondOrderSystem& advanced, double t, integrate::State& out);
 
  private:
   struct Watched {
@@ -92,8 +95,8 @@ class EventMonitor {
   double offset(system::MultibodySystem& system, int e, const integrate::State& state);
   // The first time in [a, b] where event e's condition holds, found on the step's interpolant:
   // f = sign · (quantity − value) has f(a) = fa ≥ 0 > fb = f(b).
-  double locate(system::MultibodySystem& system, int e, double sign, double a, double b, double fa,
-                double fb);
+  double locate(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced, int e,
+                double sign, double a, double b, double fa, double fb);
 
   const model::Model& model_;
   std::vector<model::EventSpec> events_;

@@ -12,6 +12,9 @@
 //   energy_kinetic, energy_potential, energy_total     J (potential: gravity and springs)
 //   H_x, H_y, H_z  angular momentum about the system centre of mass, in W (kg·m²/s)
 //   the model's outputs (OutputSet::column_names())
+//   with controllers (model/controller.hpp), each one's outputs, reference, error and states
+//                  (system::ClosedLoopSystem::column_names(): cruise.throttle, cruise.reference,
+//                  cruise.error, cruise.integral, ...)
 //   with options.reactions: <joint>.reaction.Fx .Fy .Fz .Mx .My .Mz for every joint: the
 //                  wrench it transmits to its child, in W, the moment about the child-side joint
 //                  frame's origin J'o (dynamics/reactions.hpp)
@@ -61,7 +64,8 @@
 
 namespace momenta::system {
 class MultibodySystem;
-}
+class ClosedLoopSystem;
+}  // namespace momenta::system
 
 namespace momenta::simulate {
 
@@ -194,14 +198,18 @@ class Simulation {
  private:
   class Recorder;
   // Fills the summary's stiffness fields for an explicit Runge–Kutta method.
-  void check_stiffness(system::MultibodySystem& system, const integrate::State& state,
+  void check_stiffness(integrate::SecondOrderSystem& system, const integrate::State& state,
                        SimulationSummary& summary) const;
+  // What the integrator advances: the closed loop where the model has controllers, else the
+  // mechanism.
+  integrate::SecondOrderSystem& advanced();
 
   const model::Model& model_;
   SimulationOptions options_;
   system::OutputSet outputs_;
   // Built once, here, and advanced by every run() (each starts it afresh from the initial state).
   std::unique_ptr<system::MultibodySystem> system_;
+  std::unique_ptr<system::ClosedLoopSystem> closed_loop_;  // null without controllers
   std::unique_ptr<integrate::Integrator> integrator_;
   std::unique_ptr<EventMonitor> events_;
   std::vector<std::string> columns_;

@@ -14,6 +14,7 @@
 // error. apply_prescribed_motion() does the same to a state between steps so that what is
 // recorded is exact too.
 
+#include <cassert>
 #include <limits>
 #include <memory>
 #include <span>
@@ -109,6 +110,16 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   /// these; a simulation leaves them at zero. Throws InvalidArgument on a size mismatch.
   void set_signal_offsets(std::span<const double> value, std::span<const double> rate,
                           std::span<const double> acceleration);
+  /// Sets the value of signal s, one a controller drives (Model::is_driven): evaluations use it
+  /// (plus the offset) in place of the signal of time, with zero rate and acceleration, until
+  /// it is set again. Zero at first. system/closed_loop_system.hpp sets them before each
+  /// evaluation. No allocation; s must be driven (checked in debug builds).
+  void set_driven_value(int s, double value) {
+    assert(driven_[static_cast<std::size_t>(s)]);
+    driven_values_[static_cast<std::size_t>(s)] = value;
+  }
+  /// The value set_driven_value last gave signal s.
+  double driven_value(int s) const { return driven_values_[static_cast<std::size_t>(s)]; }
   /// After evaluate(): the state it evaluated, q and v with the prescribed coordinates applied.
   const VecX& evaluated_q() const { return q_; }
   const VecX& evaluated_v() const { return v_; }
@@ -151,6 +162,8 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   std::vector<model::SignalSample> samples_;  // every signal at the current instant
   std::vector<double> signal_values_;         // samples_[i].value, for force_element_forces
   std::vector<model::SignalSample> offsets_;  // see set_signal_offsets
+  std::vector<char> driven_;                  // whether a controller drives signal i
+  std::vector<double> driven_values_;         // see set_driven_value
   mutable std::vector<model::SignalSample> applied_samples_;   // apply_prescribed_motion's
   double step_end_ = std::numeric_limits<double>::infinity();  // see begin_step
   std::unique_ptr<ConstraintSolver> constraints_;              // null without constraints

@@ -116,9 +116,9 @@ namespace {
 
 using detail::Context;
 
-constexpr std::array<std::string_view, 11> kModelFileKeys = {
-    "name",        "description", "gravity", "bodies",     "joints", "forces",
-    "constraints", "inputs",      "outputs", "simulation", "symbols"};
+constexpr std::array<std::string_view, 12> kModelFileKeys = {
+    "name",        "description", "gravity",     "bodies",  "joints",     "forces",
+    "constraints", "inputs",      "controllers", "outputs", "simulation", "symbols"};
 
 // The `symbols:` section: each key (momenta's name) to an identifier (checked by the equations,
 // which know the names) — letters, digits and '_', starting with a letter.
@@ -157,6 +157,8 @@ const detail::Declared& declared_of(ModelItemRef::Kind kind, const Context& ctx)
       return ctx.forces;
     case ModelItemRef::Kind::constraint:
       return ctx.constraints;
+    case ModelItemRef::Kind::controller:
+      return ctx.controllers;
     case ModelItemRef::Kind::signal:
       break;
   }
@@ -174,7 +176,8 @@ std::vector<ItemLocation> item_locations(const Context& ctx) {
   std::vector<ItemLocation> locations;
   for (const ModelItemRef::Kind kind :
        {ModelItemRef::Kind::body, ModelItemRef::Kind::joint, ModelItemRef::Kind::force_element,
-        ModelItemRef::Kind::signal, ModelItemRef::Kind::constraint}) {
+        ModelItemRef::Kind::signal, ModelItemRef::Kind::constraint,
+        ModelItemRef::Kind::controller}) {
     const detail::Declared& declared = declared_of(kind, ctx);
     for (const std::string& name : declared.names()) {
       const YamlNode node = *declared.find(name);
@@ -276,8 +279,10 @@ ModelFile detail::compose_model_file(const YamlNode& root, const std::filesystem
   model::ModelBuilder builder;
   builder.set_gravity(root.find_vec3("gravity").value_or(Vec3(0, 0, -9.81)));
 
-  // Signals first (joints and forces name them), then the tree, then what acts on it.
+  // Signals first (joints and forces name them) with the controllers' (they drive inputs), then
+  // the tree, then what acts on it.
   detail::read_signals(root, ctx, builder);
+  detail::read_controllers(root, ctx, builder);
   detail::read_bodies(root, ctx, builder);
   detail::read_joints(root, ctx, builder);
   detail::read_forces(root, ctx, builder);

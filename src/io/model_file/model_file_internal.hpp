@@ -58,6 +58,7 @@ struct Context {
   Declared forces{"force element"};
   Declared signals{"signal"};
   Declared constraints{"constraint"};
+  Declared controllers{"controller"};
   /// Joint types by joint name (for checks that need them before the model is built).
   std::map<std::string, model::JointType, std::less<>> joint_types;
   /// What each body is made of, by body name, placed in its frame (ModelFile::body_parts).
@@ -91,6 +92,9 @@ const EntryType& entry_type(const YamlNode& entry, const std::vector<EntryType>&
 
 /// `inputs:` — every signal, added to the builder and to ctx.signals.
 void read_signals(const YamlNode& root, Context& ctx, model::ModelBuilder& builder);
+/// `controllers:` — every controller, and the inputs they drive (added to the builder as
+/// signals, so that forces can name them); after read_signals, before read_forces.
+void read_controllers(const YamlNode& root, Context& ctx, model::ModelBuilder& builder);
 /// `bodies:` and `joints:` — added to the builder and ctx; the joints are checked to form a tree
 /// rooted at the world, with every body carried by exactly one joint.
 void read_bodies(const YamlNode& root, Context& ctx, model::ModelBuilder& builder);

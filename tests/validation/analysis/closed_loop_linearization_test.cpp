@@ -1,0 +1,162 @@
+// The closed loop linearized (analysis::linearize of a model with controllers,
+// LinearizationOptions:: close_loops): against the cruise control's closed-loop transfer function,
+// the LQR design's closed-loop poles, and central differences of the closed loop the simulation
+// integrates (system::ClosedLoopSystem) — a second, independent way to the same A.
+
+#include <algorithm>
+#include <complex>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <Eigen/Eigenvalues>
+
+#include "momenta/analysis/linearize.hpp"
+#include "momenta/analysis/transfer_function.hpp"
+#include "momenta/common/error.hpp"
+#include "momenta/io/model_file.hpp"
+#include "momenta/system/closed_loop_system.hpp"
+#include "momenta_test/tolerance.hpp"
+
+namespace momenta::analysis {
+namespace {
+
+io::ModelFile loop_example(const std::string& name) {
+  return io::read_model_file(std::filesystem::path("examples") / (name + ".yaml"));
+}
+
+OperatingPoint rest(const model::Model& model) {
+  return {0.0, VecX::Zero(model.nq()), VecX::Zero(model.nv())};
+}
+
+// V/R = (kp s + ki)/(m s² + (b + kp) s + ki) = (0.8 s + 0.04)/(s² + 0.85 s + 0.04).
+TEST(ClosedLoopLinearization, CruiseControlIsFranklinsSecondOrderLoop) {
+  const io::ModelFile file = loop_example("cruise_control_pi");
+  LinearizationOptions options;
+  options.outputs = {"speed"};
+  options.output_specs = file.outputs;
+  const LinearModel closed = linearize(file.model, rest(file.model), options);
+  const StateSpace& s = closed.system;
+  EXPECT_EQ(s.state_names(),
+            (std::vector<std::string>{"x.position", "x.position_rate", "cruise.integral"}));
+  EXPECT_EQ(s.input_names(), (std::vector<std::string>{"target_speed"}));
+  // Poles: the position's 0, and −0.8, −0.05.
+  std::vector<double> poles;
+  for (const std::complex<double> p : s.A().eigenvalues()) poles.push_back(p.real());
+  std::sort(poles.begin(), poles.end());
+  ASSERT_EQ(poles.size(), 3u);
+  EXPECT_NEAR(poles[0], -0.8, 1e-12);
+  EXPECT_NEAR(poles[1], -0.05, 1e-12);
+  EXPECT_NEAR(poles[2], 0.0, 1e-12);
+  // C (sI − A)⁻¹ B + D against the closed form along the imaginary axis (near ω = 0: 1, the
+  // integral leaves no steady error; the position's pole at 0 is not seen by the speed).
+  for (const double w : {1e-4, 0.05, 0.3, 1.0, 7.0}) {
+    const std::complex<double> j_w(0.0, w);
+    const Eigen::MatrixXcd resolvent =
+        (j_w * Eigen::MatrixXcd::Identity(3, 3) - s.A().cast<std::complex<double>>()).inverse();
+    const std::complex<double> h = (s.C().cast<std::complex<double>>() * resolvent *
+                                    s.B().cast<std::complex<double>>())(0, 0) +
+                                   s.D()(0, 0);
+    const std::complex<double> exact = (0.8 * j_w + 0.04) / (j_w * j_w + 0.85 * j_w + 0.04);
+    EXPECT_LT(std::abs(h - exact), 1e-12 * std::abs(exact)) << "ω = " << w;
+  }
+  // The plant alone: the engine's force its input (the reference acts on nothing there), 1/(m s +
+  // b).
+  options.close_loops = false;
+  const LinearModel plant = linearize(file.model, rest(file.model), options);
+  EXPECT_EQ(plant.system.input_names(), (std::vector<std::string>{"engine"}));
+  EXPECT_REL_NEAR(transfer_function(plant.system, "engine", "speed").dc_gain, 1.0 / 50.0, 1e-12);
+}
+
+// The LQR loop's poles: those `momenta lqr` designed, eig(A − B K).
+TEST(ClosedLoopLinearization, LqrLoopHasTheDesignedPoles) {
+  const io::ModelFile file = loop_example("cart_pendulum_lqr");
+  const LinearModel closed = linearize(file.model, rest(file.model));
+  EXPECT_EQ(closed.system.A().rows(), 4);
+  EXPECT_EQ(closed.system.B().cols(), 0);  // no input left: the force is the controller's
+  LinearizationOptions open;
+  open.close_loops = false;
+  const LinearModel plant = linearize(file.model, rest(file.model), open);
+  const MatX expected = plant.system.A() - plant.system.B() * file.model.controllers()[0].spec.gain;
+  EXPECT_LT((closed.system.A() - expected).norm(), 1e-13 * expected.norm());
+  const Eigen::VectorXcd poles = closed.system.A().eigenvalues();
+  for (const std::complex<double> p : poles) EXPECT_LT(p.real(), -0.84);
+}
+
+// A filtered PID holding the pendulum up (a nonlinear plant, a controller with two states):
+// linearize's A against central differences of the closed loop's own right-hand side
+// [v; v̇; ż](q, v, z) — the system the run integrates.
+TEST(ClosedLoopLinearization, MatchesCentralDifferencesOfTheClosedLoop) {
+  std::ifstream in("examples/cart_pendulum_lqr.yaml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto from = text.find("controllers:"), to = text.find("bodies:");
+  text.replace(from, to - from, R"(controllers:
+  - name: tilt_pid
+    type: pid
+    measure: tilt.angle
+    kp: -40
+    ki: -20
+    kd: -4
+    derivative_filter: 0.02
+    drives: force
+
+)");
+  const io::ModelFile file = io::parse_model_file(text, "pid_pendulum.yaml", "examples");
+  OperatingPoint point = rest(file.model);
+  point.q[1] = 0.05;  // off upright, where the pendulum's nonlinearity shows
+  const LinearModel closed = linearize(file.model, point);
+  const MatX& A = closed.system.A();
+  ASSERT_EQ(A.rows(), 6);  // x, tilt, their rates, the integral and the filter
+
+  system::MultibodySystem plant(file.model);
+  system::ClosedLoopSystem loop(plant);
+  // f(x) = [v; v̇; ż] at x = (q, v, z); the integral's configuration twin is not a state.
+  const auto f = [&](const VecX& x) {
+    VecX q = VecX::Zero(loop.nq()), v = VecX::Zero(loop.nv()), vdot = VecX::Zero(loop.nv());
+    q.head(2) = x.head(2);
+    v.head(2) = x.segment(2, 2);
+    v.tail(2) = x.tail(2);
+    loop.begin_step(0.0, 1.0);
+    loop.acceleration(0.0, q, v, vdot);
+    VecX out(6);
+    out << x.segment(2, 2), vdot;
+    return out;
+  };
+  // The point as linearize takes it: the integral zero, the filter at the error −0.05.
+  VecX x0 = VecX::Zero(6);
+  x0[1] = 0.05;
+  x0[5] = -0.05;
+  MatX differences(6, 6);
+  const double h = 1e-6;
+  for (int j = 0; j < 6; ++j) {
+    VecX plus = x0, minus = x0;
+    plus[j] += h;
+    minus[j] -= h;
+    differences.col(j) = (f(plus) - f(minus)) / (2 * h);
+  }
+  // Central differences at h = 1e-6: truncation ~h² |f'''| and round-off ~ε |f| / h ≈ 1e-9 of
+  // the entries (up to ~2000: kd/Tf over the masses).
+  EXPECT_LT((A - differences).cwiseAbs().maxCoeff(), 1e-6 * A.cwiseAbs().maxCoeff())
+      << "A\n"
+      << A << "\ndifferences\n"
+      << differences;
+}
+
+TEST(ClosedLoopLinearization, RefusesWhatItCannotLinearize) {
+  const io::ModelFile sampled = loop_example("satellite_attitude_pd");
+  try {
+    linearize(sampled.model, rest(sampled.model));
+    FAIL() << "a sampled controller was linearized";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("'attitude_pd' is sampled every 0.1 s"), std::string::npos)
+        << e.what();
+  }
+  const io::ModelFile cruise = loop_example("cruise_control_pi");
+  LinearizationOptions options;
+  options.inputs = {"engine"};
+  EXPECT_THROW(linearize(cruise.model, rest(cruise.model), options), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace momenta::analysis
