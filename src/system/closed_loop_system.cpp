@@ -80,6 +80,9 @@ ClosedLoopSystem::ClosedLoopSystem(MultibodySystem& plant) : plant_(plant) {
     nz_ += loop.nz;
     loops_.push_back(std::move(loop));
   }
+  // Without ball or free joints (nq = nv) every coordinate is a vector space's (model.hpp):
+  // steps add, rates are velocities, and the plant's part need not be split off.
+  vector_space_ = m.nq() == m.nv();
   q_ = VecX::Zero(m.nq());
   v_ = VecX::Zero(m.nv());
   z_ = VecX::Zero(nz_);
@@ -321,6 +324,10 @@ void ClosedLoopSystem::drive_plant(double t, const VecX& q, const VecX& v) {
 
 void ClosedLoopSystem::integrate(const VecX& q, const VecX& dq, VecX& q_out) const {
   if (nz_ == 0) return plant_.integrate(q, dq, q_out);
+  if (vector_space_) {
+    q_out = q + dq;
+    return;
+  }
   const auto nq = q_.size(), nv = v_.size();
   q_ = q.head(nq);
   dq_ = dq.head(nv);
@@ -331,6 +338,10 @@ void ClosedLoopSystem::integrate(const VecX& q, const VecX& dq, VecX& q_out) con
 
 void ClosedLoopSystem::difference(const VecX& q0, const VecX& q1, VecX& dq) const {
   if (nz_ == 0) return plant_.difference(q0, q1, dq);
+  if (vector_space_) {
+    dq = q1 - q0;
+    return;
+  }
   const auto nq = q_.size();
   q_ = q0.head(nq);
   out_q_ = q1.head(nq);
@@ -342,6 +353,10 @@ void ClosedLoopSystem::difference(const VecX& q0, const VecX& q1, VecX& dq) cons
 void ClosedLoopSystem::local_coordinate_rate(const VecX& delta, const VecX& v,
                                              VecX& delta_rate) const {
   if (nz_ == 0) return plant_.local_coordinate_rate(delta, v, delta_rate);
+  if (vector_space_) {
+    delta_rate = v;
+    return;
+  }
   const auto nv = v_.size();
   dq_ = delta.head(nv);
   v_ = v.head(nv);
@@ -353,6 +368,10 @@ void ClosedLoopSystem::local_coordinate_rate(const VecX& delta, const VecX& v,
 
 void ClosedLoopSystem::configuration_scale(const VecX& q, VecX& scale) const {
   if (nz_ == 0) return plant_.configuration_scale(q, scale);
+  if (vector_space_) {
+    scale = q.cwiseAbs();
+    return;
+  }
   const auto nq = q_.size(), nv = v_.size();
   q_ = q.head(nq);
   VecX& plant_scale = dq_;

@@ -116,6 +116,7 @@ class ClosedLoopSystem final : public integrate::SecondOrderSystem {
   MultibodySystem& plant_;
   std::vector<Loop> loops_;
   int nz_ = 0;
+  bool vector_space_ = false;  // the plant has no quaternions: q ⊕ dq = q + dq throughout
   double step_end_ = 0.0;
   std::vector<std::string> columns_, units_, state_names_;
   // Scratch (mutable: the const overrides split their arguments too).
