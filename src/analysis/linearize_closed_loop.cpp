@@ -15,6 +15,7 @@
 //   state_feedback  u = −K x_m (x_ref and u_ff are the point, not perturbations);
 //   linear          ż = A z + B e, u = C z + D e.
 
+#include <algorithm>
 #include <optional>
 
 #include <fmt/format.h>
@@ -34,33 +35,21 @@ struct Law {
   std::vector<std::string> states;
 };
 
-// The row of x holding model coordinate `index` (into [q; v]), from the plant's state layout.
+// The row of x holding model coordinate `index` (into [q; v]): the state of that name (states are
+// named as the coordinates are, Model::q_name / v_name).
 int state_row(const model::Model& model, const LinearModel& plant, int index,
               const std::string& controller) {
-  const int nc = static_cast<int>(plant.coordinates.size());
-  const auto find = [](const std::vector<int>& list, int v) {
-    for (std::size_t i = 0; i < list.size(); ++i) {
-      if (list[i] == v) return static_cast<int>(i);
-    }
-    return -1;
-  };
-  int row = -1;
-  if (index < model.nq()) {
-    const model::Joint& j = model.joint(model.joint_of_q(index));
-    if (j.nq() == j.nv()) row = find(plant.coordinates, j.v_index + (index - j.q_index));
-  } else {
-    const int k = find(plant.velocity_coordinates, index - model.nq());
-    if (k >= 0) row = nc + k;
-  }
-  if (row < 0) {
-    const std::string name =
-        index < model.nq() ? model.q_name(index) : model.v_name(index - model.nq());
+  const std::string& name =
+      index < model.nq() ? model.q_name(index) : model.v_name(index - model.nq());
+  const std::vector<std::string>& states = plant.system.state_names();
+  const auto at = std::find(states.begin(), states.end(), name);
+  if (at == states.end()) {
     throw InvalidArgument(fmt::format(
         "linearize: controller '{}' measures '{}', which is not a state of the linear model "
         "(a prescribed or constrained coordinate, or a quaternion's component)",
         controller, name));
   }
-  return row;
+  return static_cast<int>(at - states.begin());
 }
 
 Law law_of(const model::Model& model, const model::ResolvedController& c, const LinearModel& plant,

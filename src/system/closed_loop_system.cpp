@@ -308,18 +308,21 @@ void ClosedLoopSystem::acceleration(double t, const VecX& q, const VecX& v, VecX
 
 void ClosedLoopSystem::drive_plant(double t, const VecX& q, const VecX& v) {
   const model::Limit limit = t >= step_end_ ? model::Limit::left : model::Limit::right;
-  for (Loop& loop : loops_) {
-    const std::size_t m = loop.c->drives.size();
-    const std::span<double> u(u_.data(), m);
-    if (loop.c->spec.discrete()) {
-      const Discrete& d = discrete_at(loop, t);
-      std::copy(d.held.begin(), d.held.end(), u.begin());
-    } else {
-      continuous_law(loop, t, limit, q, v, z_, u,
-                     std::span<double>(zdot_.data() + loop.z, static_cast<std::size_t>(loop.nz)));
-    }
-    for (std::size_t i = 0; i < m; ++i) plant_.set_driven_value(loop.c->drives[i], u[i]);
+  for (Loop& loop : loops_) drive(loop, t, limit, q, v);
+}
+
+void ClosedLoopSystem::drive(Loop& loop, double t, model::Limit limit, const VecX& q,
+                             const VecX& v) {
+  const std::size_t m = loop.c->drives.size();
+  const std::span<double> u(u_.data(), m);
+  if (loop.c->spec.discrete()) {
+    const Discrete& d = discrete_at(loop, t);
+    std::copy(d.held.begin(), d.held.end(), u.begin());
+  } else {
+    continuous_law(loop, t, limit, q, v, z_, u,
+                   std::span<double>(zdot_.data() + loop.z, static_cast<std::size_t>(loop.nz)));
   }
+  for (std::size_t i = 0; i < m; ++i) plant_.set_driven_value(loop.c->drives[i], u[i]);
 }
 
 void ClosedLoopSystem::integrate(const VecX& q, const VecX& dq, VecX& q_out) const {
@@ -438,20 +441,9 @@ void ClosedLoopSystem::record(double t, const VecX& q, const VecX& v, std::span<
   std::size_t c = 0;
   for (Loop& loop : loops_) {
     const model::Controller& s = loop.c->spec;
-    const std::size_t m = loop.c->drives.size();
-    const std::span<double> u(u_.data(), m);
+    drive(loop, t, model::Limit::right, q_, v_);
+    for (std::size_t i = 0; i < loop.c->drives.size(); ++i) out[c++] = u_[i];
     const model::SignalSample r = reference(loop, t, model::Limit::right);
-    if (s.discrete()) {
-      const Discrete& d = discrete_at(loop, t);
-      std::copy(d.held.begin(), d.held.end(), u.begin());
-    } else {
-      continuous_law(loop, t, model::Limit::right, q_, v_, z_, u,
-                     std::span<double>(zdot_.data() + loop.z, static_cast<std::size_t>(loop.nz)));
-    }
-    for (std::size_t i = 0; i < m; ++i) {
-      plant_.set_driven_value(loop.c->drives[i], u[i]);
-      out[c++] = u[i];
-    }
     if (s.kind != ControllerKind::state_feedback) {
       const double y = measure(loop, 0, q_, v_);
       out[c++] = r.value;

@@ -104,6 +104,9 @@ class ClosedLoopSystem final : public integrate::SecondOrderSystem {
   // Sets the plant's driven inputs at (t, q, v) and z_ (the plant's parts of the state), and the
   // continuous controllers' state rates into zdot_.
   void drive_plant(double t, const VecX& q, const VecX& v);
+  // One controller's outputs at (t, q, v, z_) into u_ (a continuous one's state rates into
+  // zdot_), set on the plant's driven inputs.
+  void drive(Loop& loop, double t, model::Limit limit, const VecX& q, const VecX& v);
   // A discrete controller's sample at t_k: readings, law, actuator, held output.
   void take_sample(Loop& loop, double t_k, const VecX& q, const VecX& v);
   // Saturation.
