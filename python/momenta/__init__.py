@@ -115,8 +115,9 @@ if with_symbolic:
         """equations(model: Model, *, format: str = 'text', symbols: List[str] = [], all_symbols: bool = False, names: Dict[str, str] = {}, coordinates: str = 'quaternion', **options: object) -> Any
 
         The model's equations of motion in symbols, as `momenta equations` prints them: a list of
-        strings (format 'text' or 'latex'; options form='lagrange' | 'newton-euler',
-        principal_axes, greek), or with format='sympy' a SympyEquations: sympy.Eq objects with
+        strings (format 'text' or 'latex'; options form='lagrange' | 'matrix' | 'newton-euler',
+        principal_axes, greek), with format='cpp' or 'python' the code computing M and b as
+        `--cpp` / `--python` write it (one string), or with format='sympy' a SympyEquations: sympy.Eq objects with
         the coordinates as sympy.physics.vector dynamicsymbols of t, the matrix form M, h, B as
         sympy matrices, the parameters' values and units, and a LaTeX repr for a notebook
         (docs/python.md; needs python3-sympy). `symbols` names the parameters kept as symbols
@@ -182,11 +183,19 @@ def _says_when_not_at_rest(function):
     @_functools.wraps(function)
     def linearized(*args, **kwargs):
         linear = function(*args, **kwargs)
-        if linear.largest_acceleration > 1e-9 or linear.largest_speed > 1e-9:
+        models = linear if isinstance(linear, list) else [linear]
+        moving = [i for i, one in enumerate(models)
+                  if one.largest_acceleration > 1e-9 or one.largest_speed > 1e-9]
+        if moving:
             import warnings
+            worst = max(moving, key=lambda i: models[i].largest_acceleration)
+            which = ("this state is" if not isinstance(linear, list) else
+                     f"operating point{'s' if len(moving) > 1 else ''} "
+                     f"{', '.join(map(str, moving))} of {len(models)} {'are' if len(moving) > 1 else 'is'}")
             warnings.warn(
-                f"linearize: this state is not an equilibrium (largest acceleration "
-                f"{linear.largest_acceleration:.4g}, largest speed {linear.largest_speed:.4g}): "
+                f"linearize: {which} not an equilibrium (largest acceleration "
+                f"{models[worst].largest_acceleration:.4g}, largest speed "
+                f"{models[worst].largest_speed:.4g}): "
                 "A describes the motion linearized at this instant; find_equilibrium(model) "
                 "finds a state at rest, linear_analysis(model, about='steady') a steady motion",
                 stacklevel=2)

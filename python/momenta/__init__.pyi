@@ -248,6 +248,9 @@ class Model:
     def degrees_of_freedom(self) -> int: ...
     @property
     def description(self) -> str: ...
+    def dynamics(self, t: float, x: ArrayLike, u: object = None) -> numpy.ndarray:
+        """The state derivative ẋ = f(t, x, u), for scipy.integrate.solve_ivp: x = [q; v] (nq + nv numbers, model.q_names then model.v_names), ẋ = [q̇; v̇] — q̇ the configuration's rate (½ q ⊗ [0; ω] on a ball or free joint's quaternion, v elsewhere), v̇ the accelerations `simulate` integrates (gravity, force """
+        ...
     @property
     def file(self) -> str: ...
     @property
@@ -261,6 +264,8 @@ class Model:
     def initial_q(self) -> numpy.ndarray: ...
     @property
     def initial_v(self) -> numpy.ndarray: ...
+    @property
+    def input_names(self) -> List[str]: ...
     def joint_index(self, name: str) -> int:
         ...
     @property
@@ -547,6 +552,8 @@ class StateSpace:
     def to_scipy(self) -> object:
         """scipy.signal.StateSpace with the same matrices (and dt); names stay here."""
         ...
+    @property
+    def units(self) -> dict: ...
     def zeros(self) -> numpy.ndarray:
         """Invariant zeros of a one-input one-output system, 1/s (none cancelled)."""
         ...
@@ -650,6 +657,8 @@ class TimeResponse:
     def states(self) -> numpy.ndarray: ...
     @property
     def time(self) -> numpy.ndarray: ...
+    @property
+    def units(self) -> dict: ...
 
 class TransferFunction:
     """G(s) = gain · ∏(s − zeros) / ∏(s − poles) of one pair."""
@@ -679,7 +688,7 @@ class Workspace:
     def __init__(self, model: Model) -> None:
         ...
     def aba(self, q: ArrayLike, v: ArrayLike, tau: ArrayLike, f_ext: object = None) -> numpy.ndarray:
-        """Forward dynamics by the articulated-body algorithm: v̇ = M⁻¹ (τ − C v − g + Jᵀ f_ext). Every joint is driven by its τ (prescription and force elements are the simulator's)."""
+        """Forward dynamics by the articulated-body algorithm: v̇ = M⁻¹ (τ − C v − g + Jᵀ f_ext). Every joint is driven by its τ (prescription and force elements are the simulator's). Batched: q, v, tau may be (N, n) arrays of N states (a vector is used for every row); the result is then (N, nv), one call's v̇"""
         ...
     def aba_derivatives(self, q: ArrayLike, v: ArrayLike, tau: ArrayLike, f_ext: object = None) -> tuple:
         """(∂v̇/∂q, ∂v̇/∂v, M⁻¹), each (nv, nv), of v̇ = aba(q, v, tau), analytically (Carpentier & Mansard 2018). ∂/∂q is along the configuration's tangent, one column per velocity coordinate (a ball joint's rotation vector in its child frame); f_ext is held in its bodies."""
@@ -697,7 +706,7 @@ class Workspace:
         """The system's centre of mass in W, m."""
         ...
     def crba(self, q: ArrayLike) -> numpy.ndarray:
-        """The joint-space mass matrix M(q) (nv × nv) by the composite-rigid-body algorithm; kinetic energy ½ vᵀ M v."""
+        """The joint-space mass matrix M(q) (nv × nv) by the composite-rigid-body algorithm; kinetic energy ½ vᵀ M v. Batched: q an (N, nq) array gives (N, nv, nv)."""
         ...
     def forward_kinematics(self, q: ArrayLike, v: object = None, vdot: object = None) -> None:
         """Poses (and velocities, accelerations) of every body; read them with body_pose, body_velocity, body_acceleration."""
@@ -735,7 +744,7 @@ class Workspace:
         """A frictionless collision of body_a's and body_b's points (body_a may be 'world'; body_b is pushed along the unit normal) by Newton's restitution (docs/contacts.md): a dict of normal_impulse, approach_speed, separation_speed, v_after, joint_impulse_forces, kinetic_before, kinetic_after."""
         ...
     def rnea(self, q: ArrayLike, v: ArrayLike, vdot: ArrayLike, f_ext: object = None) -> numpy.ndarray:
-        """Inverse dynamics by recursive Newton–Euler: τ = M v̇ + C v + g − Jᵀ f_ext."""
+        """Inverse dynamics by recursive Newton–Euler: τ = M v̇ + C v + g − Jᵀ f_ext. Batched as aba: (N, n) arrays give (N, nv)."""
         ...
     def rnea_derivatives(self, q: ArrayLike, v: ArrayLike, vdot: ArrayLike, f_ext: object = None) -> tuple:
         """(∂τ/∂q, ∂τ/∂v, M), each (nv, nv), of τ = rnea(q, v, vdot), analytically (Carpentier & Mansard 2018); ∂/∂q along the configuration's tangent, f_ext held in its bodies."""
@@ -770,7 +779,7 @@ def dlyap(A: object, Q: object) -> numpy.ndarray:
     ...
 
 def equations(model: Model, *, format: str = 'text', symbols: List[str] = [], all_symbols: bool = False, names: Dict[str, str] = {}, coordinates: str = 'quaternion', **options: object) -> Any:
-    """The model's equations of motion in symbols, as `momenta equations` prints them: a list of strings (format 'text' or 'latex'; options form='lagrange' | 'newton-euler', principal_axes, greek), or with format='sympy' a SympyEquations: sympy.Eq objects with the coordinates as sympy.physics.vector dynami"""
+    """The model's equations of motion in symbols, as `momenta equations` prints them: a list of strings (format 'text' or 'latex'; options form='lagrange' | 'matrix' | 'newton-euler', principal_axes, greek), with format='cpp' or 'python' the code computing M and b as `--cpp` / `--python` write it (one str"""
     ...
 
 def find_equilibrium(model: Model, *, q_guess: object = None, t: float = 0.0, tolerance: float = 1e-10, max_iterations: int = 100) -> Equilibrium:
@@ -801,8 +810,8 @@ def linear_analysis(model: Model, about: str = 'auto', *, inputs: List[str] = []
     """The linear analysis about the operating point `about` names — 'auto' (the initial state at rest; where it moves, its steady motion if it is one, else the static equilibrium found from it), 'initial', 'equilibrium', 'steady', or 'given' with q= (and v=, t=) — chosen by the same rule as `momenta modes"""
     ...
 
-def linearize(model: Model, *, inputs: List[str] = [], outputs: List[str] = [], q: object = None, v: object = None, t: float = 0.0, angle_step: float = 0.0, length_step: float = 0.0, independent: List[str] = [], derivatives: str = 'analytic', open_loop: bool = False) -> LinearModel:
-    """Linearizes the model about (t, q, v) — its initial state unless given — as `momenta linearize` does: states [δq; v] over the free joints, inputs the named signals (all by default), outputs the named model outputs, states or coordinates (the model file's outputs, or every configuration state, by defa"""
+def linearize(model: Model, *, inputs: List[str] = [], outputs: List[str] = [], q: object = None, v: object = None, t: float = 0.0, angle_step: float = 0.0, length_step: float = 0.0, independent: List[str] = [], derivatives: str = 'analytic', open_loop: bool = False) -> object:
+    """Linearizes the model about (t, q, v) — its initial state unless given — as `momenta linearize` does (a list of them, one per row, when q is an (N, nq) array or v an (N, nv) one: operating points for gain scheduling; a vector is used for every row): states [δq; v] over the free joints, inputs the nam"""
     ...
 
 def load_model(path: os.PathLike[str] | str, *, package_path: List[os.PathLike[str] | str] = [], link_density: Optional[float] = None, keyframe: Optional[str] = None) -> Model:
@@ -849,7 +858,7 @@ def root_locus(system: object, input: object = 0, output: object = 0, *, gains: 
     """Root locus of the feedback u = r − k y on one pair, at the given gains or 0 and a log grid from k_min to k_max; with its break-away points, imaginary-axis crossings and asymptotes, exact."""
     ...
 
-def simulate(model: Model, *, duration: Optional[float] = None, dt: Optional[float] = None, integrator: Optional[str] = None, rtol: Optional[float] = None, atol: Optional[float] = None, every: Optional[int] = None, reactions: bool = False, events: List[str] = [], stop_when: List[str] = []) -> SimulationResult:
+def simulate(model: Model, *, duration: Optional[float] = None, dt: Optional[float] = None, integrator: Optional[str] = None, rtol: Optional[float] = None, atol: Optional[float] = None, every: Optional[int] = None, reactions: bool = False, events: List[str] = [], stop_when: List[str] = [], controller: object = None, drives: Optional[List[str]] = None, sample_time: float = 0.0, u_min: Optional[float] = None, u_max: Optional[float] = None) -> SimulationResult:
     """Integrates the model from its initial state, as `momenta simulate` does: keyword arguments override the model file's `simulation:` section, which overrides the defaults (duration 10 s, rk4 at dt 1 ms; rtol/atol alone choose dopri5; a fixed-step run longer than 10 000 steps records every n-th so 10 0"""
     ...
 

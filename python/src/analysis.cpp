@@ -125,6 +125,51 @@ OperatingPoint point_of(const ModelHandle& h, const py::object& q, const py::obj
   return p;
 }
 
+// The operating points of a batched linearize: one per row of q, an (N, nq) array, and/or of v,
+// an (N, nv) one (a vector, or None for the initial state's, is used for every row); empty when
+// neither has rows.
+std::vector<OperatingPoint> points_of_rows(const ModelHandle& h, const py::object& q,
+                                           const py::object& v, double t) {
+  const auto rows_of = [](const py::object& x, const char* name) -> py::ssize_t {
+    if (x.is_none()) return -1;
+    const auto a = as_float_array(x, name);
+    return a.ndim() == 2 ? a.shape(0) : -1;
+  };
+  const py::ssize_t nq_rows = rows_of(q, "q"), nv_rows = rows_of(v, "v");
+  if (nq_rows < 0 && nv_rows < 0) return {};
+  if (nq_rows >= 0 && nv_rows >= 0 && nq_rows != nv_rows) {
+    throw py::value_error(
+        fmt::format("linearize: q has {} rows and v {}; one operating point per row of each",
+                    nq_rows, nv_rows));
+  }
+  const py::ssize_t n = std::max(nq_rows, nv_rows);
+  const model::Model& model = h.model();
+  const MatX Q = nq_rows >= 0 ? matrix_arg(q, "q", -1, model.nq()) : MatX();
+  const MatX V = nv_rows >= 0 ? matrix_arg(v, "v", -1, model.nv()) : MatX();
+  std::vector<OperatingPoint> points;
+  for (py::ssize_t i = 0; i < n; ++i) {
+    OperatingPoint p = point_of(h, nq_rows >= 0 ? py::object(py::none()) : q,
+                                nv_rows >= 0 ? py::object(py::none()) : v, t);
+    if (nq_rows >= 0) p.q = Q.row(static_cast<Eigen::Index>(i)).transpose();
+    if (nv_rows >= 0) p.v = V.row(static_cast<Eigen::Index>(i)).transpose();
+    points.push_back(std::move(p));
+  }
+  return points;
+}
+
+// {name: unit} over an input and lists of outputs and states (units empty: none known).
+py::dict units_dict(const std::string& input, const std::string& input_unit,
+                    const std::vector<std::string>& outputs,
+                    const std::vector<std::string>& output_units,
+                    const std::vector<std::string>& states,
+                    const std::vector<std::string>& state_units) {
+  py::dict d;
+  if (!input_unit.empty()) d[py::str(input)] = input_unit;
+  for (std::size_t i = 0; i < output_units.size(); ++i) d[py::str(outputs[i])] = output_units[i];
+  for (std::size_t i = 0; i < state_units.size(); ++i) d[py::str(states[i])] = state_units[i];
+  return d;
+}
+
 void bind_state_space(py::module_& m) {
   py::class_<StateSpace>(m, "StateSpace", R"doc(
 ẋ = A x + B u, y = C x + D u with named states, inputs and outputs; with dt > 0 the sampled
@@ -153,6 +198,23 @@ python-control's; to_scipy() hands it over.)doc")
       .def_property_readonly("state_names", &StateSpace::state_names)
       .def_property_readonly("input_names", &StateSpace::input_names)
       .def_property_readonly("output_names", &StateSpace::output_names)
+      .def_property_readonly(
+          "units",
+          [](const StateSpace& s) {
+            const StateSpace::Units& u = s.units();
+            py::dict d;
+            const auto add = [&](const std::vector<std::string>& names,
+                                 const std::vector<std::string>& units) {
+              for (std::size_t i = 0; i < units.size(); ++i) d[py::str(names[i])] = units[i];
+            };
+            add(s.state_names(), u.states);
+            add(s.input_names(), u.inputs);
+            add(s.output_names(), u.outputs);
+            return d;
+          },
+          "Each state's, input's and output's SI unit by name ({'x.position': 'm', 'force': "
+          "'N', ...}) as linearize() knows them; empty for a system built from matrices (c2d "
+          "keeps them).")
       .def_property_readonly("dt", &StateSpace::sample_time,
                              "Sample time, s; 0 for a continuous system (python-control's rule).")
       .def_property_readonly("nstates", &StateSpace::state_count)
@@ -209,10 +271,20 @@ python-control's; to_scipy() hands it over.)doc")
           },
           py::arg("input"), py::arg("output"), "The one-input, one-output subsystem.")
       .def("__repr__", [](const StateSpace& s) {
+        // Names with their units where known: "force [N]".
+        const auto named = [](const std::vector<std::string>& names,
+                              const std::vector<std::string>& units) {
+          std::vector<std::string> out;
+          for (std::size_t i = 0; i < names.size(); ++i) {
+            const bool unit = i < units.size() && !units[i].empty();
+            out.push_back(unit ? fmt::format("{} [{}]", names[i], units[i]) : names[i]);
+          }
+          return fmt::format("{}", fmt::join(out, ", "));
+        };
         std::string text = fmt::format(
             "<momenta.StateSpace: {} states, {} inputs ({}), {} outputs ({}){}>", s.state_count(),
-            s.input_count(), fmt::join(s.input_names(), ", "), s.output_count(),
-            fmt::join(s.output_names(), ", "),
+            s.input_count(), named(s.input_names(), s.units().inputs), s.output_count(),
+            named(s.output_names(), s.units().outputs),
             s.is_discrete() ? fmt::format(", sampled every {} s", number_text(s.sample_time(), 6))
                             : std::string());
         if (s.state_count() <= 12) {
@@ -290,7 +362,12 @@ the free coordinates (mass, damping, stiffness), the point, its acceleration and
         options.output_specs = h.file->outputs;
         options.angle_step = angle_step;
         options.length_step = length_step;
-        return linearize(h.model(), point_of(h, q, v, t), options);
+        const std::vector<OperatingPoint> points = points_of_rows(h, q, v, t);
+        if (points.empty()) return py::cast(linearize(h.model(), point_of(h, q, v, t), options));
+        // Gain scheduling: one linear model per operating point.
+        py::list models;
+        for (const OperatingPoint& p : points) models.append(linearize(h.model(), p, options));
+        return py::object(std::move(models));
       },
       py::arg("model"), py::kw_only(), py::arg("inputs") = std::vector<std::string>{},
       py::arg("outputs") = std::vector<std::string>{}, py::arg("q") = py::none(),
@@ -298,7 +375,9 @@ the free coordinates (mass, damping, stiffness), the point, its acceleration and
       py::arg("length_step") = 0.0, py::arg("independent") = std::vector<std::string>{},
       py::arg("derivatives") = "analytic", py::arg("open_loop") = false,
       R"doc(Linearizes the model about (t, q, v) — its initial state unless given — as
-`momenta linearize` does: states [δq; v] over the free joints, inputs the named signals (all by
+`momenta linearize` does (a list of them, one per row, when q is an (N, nq) array or v an
+(N, nv) one: operating points for gain scheduling; a vector is used for every row): states
+[δq; v] over the free joints, inputs the named signals (all by
 default), outputs the named model outputs, states or coordinates (the model file's outputs, or
 every configuration state, by default). A model with controllers is linearized with its loops
 closed (their states appended, the references and undriven signals the inputs); open_loop=True
@@ -563,6 +642,14 @@ void bind_responses(py::module_& m) {
       .def_readonly("input_name", &TimeResponse::input_name)
       .def_readonly("output_names", &TimeResponse::output_names)
       .def_readonly("state_names", &TimeResponse::state_names)
+      .def_property_readonly(
+          "units",
+          [](const TimeResponse& r) {
+            return units_dict(r.input_name, r.input_unit, r.output_names, r.output_units,
+                              r.state_names, r.state_units);
+          },
+          "Each name's SI unit: the input's, every output's and state's ('m', 'rad/s', 'N'); "
+          "empty for a system built from matrices.")
       .def_property_readonly("time", [](const TimeResponse& r) { return to_numpy(r.time); })
       .def_property_readonly(
           "outputs", [](const TimeResponse& r) { return to_numpy(r.outputs); },

@@ -102,6 +102,8 @@ void bind_errors(py::module_& m);
 void bind_inertia(py::module_& m);
 void bind_balancing(py::module_& m);
 void bind_model(py::module_& m);
+/// Model.dynamics and Model.input_names (after bind_model).
+void bind_state_derivative(py::module_& m);
 void bind_dynamics(py::module_& m);
 void bind_simulation(py::module_& m);
 void bind_analysis(py::module_& m);

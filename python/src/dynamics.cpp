@@ -2,6 +2,7 @@
 // the preallocated dynamics::Data, so a loop of calls allocates only the arrays it returns.
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
@@ -55,6 +56,84 @@ struct Workspace {
   }
 };
 
+// The state arguments of a call over a batch: each one vector of its size, or an (N, size) array
+// of N rows (every 2-D argument the same N); a vector is used for every row.
+class BatchArguments {
+ public:
+  // Adds an argument; returns its index for row().
+  int add(const py::handle& object, const char* name, Eigen::Index size, const char* what) {
+    auto array = as_float_array(object, name);
+    const bool matrix = array.ndim() == 2;
+    const py::ssize_t width = matrix ? array.shape(1) : array.ndim() == 1 ? array.shape(0) : -1;
+    if (width != size || array.ndim() > 2) {
+      std::vector<py::ssize_t> shape(array.shape(), array.shape() + array.ndim());
+      throw py::value_error(fmt::format(
+          "{}: expected a vector of {} numbers ({}) or an (N, {}) array of N of them, got shape "
+          "({}{})",
+          name, size, what, size, fmt::join(shape, ", "), shape.size() == 1 ? "," : ""));
+    }
+    if (matrix) {
+      if (rows_ >= 0 && array.shape(0) != rows_) {
+        throw py::value_error(
+            fmt::format("{}: {} rows, where {} has {}: a batch's arguments "
+                        "have one row per state",
+                        name, array.shape(0), first_batched_, rows_));
+      }
+      if (rows_ < 0) first_batched_ = name;
+      rows_ = array.shape(0);
+    }
+    arrays_.push_back(std::move(array));
+    return static_cast<int>(arrays_.size()) - 1;
+  }
+  /// True when some argument has rows.
+  bool batched() const { return rows_ >= 0; }
+  py::ssize_t rows() const { return rows_; }
+  /// Argument k at row i (the vector itself when it has no rows).
+  Eigen::Map<const VecX> row(int k, py::ssize_t i) const {
+    const auto& a = arrays_[static_cast<std::size_t>(k)];
+    const py::ssize_t n = a.shape(a.ndim() - 1);
+    return {a.data() + (a.ndim() == 2 ? i * n : 0), static_cast<Eigen::Index>(n)};
+  }
+
+ private:
+  std::vector<py::array_t<double, py::array::c_style>> arrays_;
+  py::ssize_t rows_ = -1;
+  const char* first_batched_ = "";
+};
+
+// `each(i, out)` over the N rows of a batch into an (N, width) array (an (N, width, width) one
+// when `square`): one row of results per row of arguments.
+template <class Each>
+py::array_t<double> over_rows(const BatchArguments& args, Eigen::Index width, bool square,
+                              Each each) {
+  const py::ssize_t n = args.rows();
+  const auto w = static_cast<py::ssize_t>(width);
+  py::array_t<double> out = square ? py::array_t<double>({n, w, w}) : new_float_array(n, w);
+  const py::ssize_t stride = square ? w * w : w;
+  for (py::ssize_t i = 0; i < n; ++i) each(i, out.mutable_data() + i * stride);
+  return out;
+}
+
+// aba or rnea, `algorithm(q, v, third, f_ext)` (third: tau or vdot), on one state or on each row
+// of a batch: a vector of nv, or an (N, nv) array.
+template <class Algorithm>
+py::array_t<double> per_state(Workspace& w, const py::handle& q, const py::handle& v,
+                              const py::handle& third, const char* third_name,
+                              const py::object& f_ext, Algorithm algorithm) {
+  const model::Model& model = w.model();
+  BatchArguments args;
+  const int kq = args.add(q, "q", model.nq(), "the model's nq");
+  const int kv = args.add(v, "v", model.nv(), "the model's nv");
+  const int kt = args.add(third, third_name, model.nv(), "the model's nv");
+  const auto f = w.external(f_ext);
+  if (!args.batched())
+    return to_numpy(algorithm(args.row(kq, 0), args.row(kv, 0), args.row(kt, 0), f));
+  return over_rows(args, model.nv(), false, [&](py::ssize_t i, double* out) {
+    Eigen::Map<VecX>(out, model.nv()) =
+        algorithm(args.row(kq, i), args.row(kv, i), args.row(kt, i), f);
+  });
+}
+
 py::dict point_kinematics_dict(const dynamics::PointKinematics& k) {
   py::dict d;
   d["position"] = to_numpy(k.p_WoP_W);
@@ -101,23 +180,26 @@ Results are new arrays. Not thread-safe: one workspace per thread.)doc")
           "aba",
           [](Workspace& w, const py::handle& q, const py::handle& v, const py::handle& tau,
              const py::object& f_ext) {
-            Storage sq, sv, st;
-            return to_numpy(dynamics::aba(w.model(), w.data, w.q(q, sq), w.v(v, "v", sv),
-                                          w.v(tau, "tau", st), w.external(f_ext)));
+            return per_state(w, q, v, tau, "tau", f_ext, [&w](auto&&... args) -> const VecX& {
+              return dynamics::aba(w.model(), w.data, args...);
+            });
           },
           py::arg("q"), py::arg("v"), py::arg("tau"), py::arg("f_ext") = py::none(),
           "Forward dynamics by the articulated-body algorithm: v̇ = M⁻¹ (τ − C v − g + Jᵀ f_ext). "
-          "Every joint is driven by its τ (prescription and force elements are the simulator's).")
+          "Every joint is driven by its τ (prescription and force elements are the simulator's). "
+          "Batched: q, v, tau may be (N, n) arrays of N states (a vector is used for every row); "
+          "the result is then (N, nv), one call's v̇ per row.")
       .def(
           "rnea",
           [](Workspace& w, const py::handle& q, const py::handle& v, const py::handle& vdot,
              const py::object& f_ext) {
-            Storage sq, sv, sa;
-            return to_numpy(dynamics::rnea(w.model(), w.data, w.q(q, sq), w.v(v, "v", sv),
-                                           w.v(vdot, "vdot", sa), w.external(f_ext)));
+            return per_state(w, q, v, vdot, "vdot", f_ext, [&w](auto&&... args) -> const VecX& {
+              return dynamics::rnea(w.model(), w.data, args...);
+            });
           },
           py::arg("q"), py::arg("v"), py::arg("vdot"), py::arg("f_ext") = py::none(),
-          "Inverse dynamics by recursive Newton–Euler: τ = M v̇ + C v + g − Jᵀ f_ext.")
+          "Inverse dynamics by recursive Newton–Euler: τ = M v̇ + C v + g − Jᵀ f_ext. Batched as "
+          "aba: (N, n) arrays give (N, nv).")
       .def(
           "aba_derivatives",
           [](Workspace& w, const py::handle& q, const py::handle& v, const py::handle& tau,
@@ -148,13 +230,20 @@ Results are new arrays. Not thread-safe: one workspace per thread.)doc")
           "Mansard 2018); ∂/∂q along the configuration's tangent, f_ext held in its bodies.")
       .def(
           "crba",
-          [](Workspace& w, const py::handle& q) {
-            Storage sq;
-            return to_numpy(dynamics::crba(w.model(), w.data, w.q(q, sq)));
+          [](Workspace& w, const py::handle& q) -> py::array_t<double> {
+            const model::Model& model = w.model();
+            BatchArguments args;
+            const int kq = args.add(q, "q", model.nq(), "the model's nq");
+            if (!args.batched()) return to_numpy(dynamics::crba(model, w.data, args.row(kq, 0)));
+            using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+            return over_rows(args, model.nv(), true, [&](py::ssize_t i, double* out) {
+              Eigen::Map<RowMajor>(out, model.nv(), model.nv()) =
+                  dynamics::crba(model, w.data, args.row(kq, i));
+            });
           },
           py::arg("q"),
           "The joint-space mass matrix M(q) (nv × nv) by the composite-rigid-body "
-          "algorithm; kinetic energy ½ vᵀ M v.")
+          "algorithm; kinetic energy ½ vᵀ M v. Batched: q an (N, nq) array gives (N, nv, nv).")
       .def(
           "nonlinear_effects",
           [](Workspace& w, const py::handle& q, const py::handle& v) {

@@ -165,16 +165,18 @@ and Coriolis terms, every vector in the frame's axes, as `momenta kinematics` gi
       "equations",
       [](const ModelHandle& h, std::vector<std::string> symbols, bool all_symbols,
          const std::string& form, const std::string& format, bool principal_axes, bool greek,
-         const std::map<std::string, std::string>& names, const std::string& coordinates) {
-        const symbolic::Format f = format_arg(format);
+         const std::map<std::string, std::string>& names,
+         const std::string& coordinates) -> py::object {
+        const bool code = format == "cpp" || format == "python";
+        const symbolic::Format f = code ? symbolic::Format::text : format_arg(format);
         if (coordinates != "quaternion" && !coordinates.starts_with("euler:")) {
           throw InvalidArgument(
               fmt::format("coordinates '{}': expected 'quaternion' or 'euler:SEQUENCE' (euler:ZXZ)",
                           coordinates));
         }
-        if (form != "lagrange" && form != "newton-euler") {
-          throw InvalidArgument(
-              fmt::format("form '{}': expected 'lagrange' or 'newton-euler'", form));
+        if (form != "lagrange" && form != "newton-euler" && form != "matrix") {
+          throw InvalidArgument(fmt::format(
+              "form '{}': expected 'lagrange', 'matrix' or 'newton-euler'", form));
         }
         symbolic::EquationOptions options = equation_options(
             h, std::move(symbols), all_symbols, form == "newton-euler", principal_axes, names);
@@ -185,17 +187,36 @@ and Coriolis terms, every vector in the frame's axes, as `momenta kinematics` gi
                 ? h.model()
                 : model::with_euler_coordinates(h.model(), coordinates.substr(6)),
             options);
+        // The code forms: a C++ header or a Python module computing M and b, as --cpp/--python.
+        if (code) {
+          return py::str(e.generate_code(
+              format == "cpp" ? symbolic::Format::cpp : symbolic::Format::python, h.file->name));
+        }
         std::vector<std::string> lines;
-        if (form == "lagrange") {
-          for (int r = 0; r < static_cast<int>(e.free_speeds().size()); ++r)
-            lines.push_back(e.equation(r, f));
-          for (int r = 0; r < e.constraint_rows(); ++r)
-            lines.push_back(e.constraint_row_name(r) + ": " + e.constraint_equation(r, f));
+        const int free = static_cast<int>(e.free_speeds().size());
+        if (form == "matrix") {
+          // M(q) v̇ + C(q, v) v + g(q) = Q(q, v, u), entry by entry as --form matrix prints it.
+          for (int r = 0; r < free; ++r) {
+            for (int c = 0; c < free; ++c)
+              lines.push_back(fmt::format("M[{},{}] = {}", r, c, e.mass_matrix_entry(r, c, f)));
+          }
+          for (int r = 0; r < free; ++r)
+            lines.push_back(fmt::format("(C v)[{}] = {}", r, e.velocity_product(r, f)));
+          for (int r = 0; r < free; ++r)
+            lines.push_back(fmt::format("g[{}] = {}", r, e.gravity(r, f)));
+          for (int r = 0; r < free; ++r)
+            lines.push_back(fmt::format("Q[{}] = {}", r, e.generalized_force(r, f)));
+        } else if (form == "lagrange") {
+          for (int r = 0; r < free; ++r) lines.push_back(e.equation(r, f));
         } else {
           for (int r = 0; r < e.newton_euler_rows(); ++r)
             lines.push_back(e.newton_euler_group(r) + ": " + e.newton_euler_equation(r, f));
         }
-        return lines;
+        if (form != "newton-euler") {
+          for (int r = 0; r < e.constraint_rows(); ++r)
+            lines.push_back(e.constraint_row_name(r) + ": " + e.constraint_equation(r, f));
+        }
+        return py::cast(lines);
       },
       py::arg("model"), py::kw_only(), py::arg("symbols") = std::vector<std::string>{},
       py::arg("all_symbols") = false, py::arg("form") = "lagrange", py::arg("format") = "text",
@@ -204,10 +225,13 @@ and Coriolis terms, every vector in the frame's axes, as `momenta kinematics` gi
       py::arg("coordinates") = "quaternion",
       R"doc(The model's equations of motion in symbols, one string per equation, as
 `momenta equations` prints them: 'lagrange' (one per free speed, each with its constraint forces
-G^T lambda, then each constraint row as '<row>: phi = 0' or '<row>: G v = 0') or 'newton-euler'
+G^T lambda, then each constraint row as '<row>: phi = 0' or '<row>: G v = 0'), 'matrix' (the
+entries of M(q) v̇ + C(q, v) v + g(q) = Q(q, v, u): 'M[0,0] = …', '(C v)[0] = …', 'g[0] = …',
+'Q[0] = …', then the constraint rows, as --form matrix) or 'newton-euler'
 (each body's ΣF = m a_G and ΣM_G = Ī α + ω × Ī ω with the joint reactions and constraint
 multipliers, prefixed with the body; `principal_axes` writes a body with products of inertia in
-its principal axes); 'text' or 'latex'. `symbols` names the parameters to keep as symbols
+its principal axes); 'text' or 'latex' — or 'cpp' / 'python': one string, a C++ header or a
+Python module computing M and b from q, v and u (as --cpp / --python). `symbols` names the parameters to keep as symbols
 (docs/equations.md); `names` renames parameters and coordinates ({'m_bob': 'm', 'L_bob': 'L'}),
 over the model file's `symbols:` section; `greek` writes the revolute joints' angles θ (θ₁, θ₂, …);
 coordinates='euler:ZXZ' writes ball and free joints as three Euler angles phi, theta, psi (as

@@ -9,8 +9,12 @@
 
 namespace momenta::python {
 
+struct StateDerivative;  // state_derivative.cpp
+
 struct ModelHandle {
   std::shared_ptr<const io::ModelFile> file;
+  /// Model.dynamics' systems, made at its first call and shared by copies of this handle.
+  mutable std::shared_ptr<StateDerivative> state_derivative = nullptr;
   const model::Model& model() const { return file->model; }
 };
 

@@ -15,6 +15,7 @@ PYBIND11_MODULE(_core, m) {
   bind_inertia(inertia);
   bind_balancing(inertia);
   bind_model(m);
+  bind_state_derivative(m);
   bind_dynamics(m);
   bind_simulation(m);
   bind_analysis(m);

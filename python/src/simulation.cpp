@@ -4,6 +4,7 @@
 
 #include <Python.h>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
@@ -124,12 +125,82 @@ py::dict summary_of(const simulate::SimulationSummary& s) {
   return d;
 }
 
-SimulationResult run_simulation(const ModelHandle& h, std::optional<double> duration,
-                                std::optional<double> dt, std::optional<std::string> integrator,
-                                std::optional<double> rtol, std::optional<double> atol,
-                                std::optional<long> every, bool reactions,
-                                const std::vector<std::string>& events,
-                                const std::vector<std::string>& stop_when) {
+// The inputs a Python controller drives: those named, else every input no controller of the
+// model drives and no joint follows (Model.input_names less the driven ones).
+std::vector<std::string> controller_drives(const model::Model& model,
+                                           const std::optional<std::vector<std::string>>& named) {
+  if (named) return *named;
+  std::vector<std::string> drives;
+  for (int s = 0; s < static_cast<int>(model.signals().size()); ++s) {
+    bool prescribes = false;
+    for (const model::Joint& j : model.joints()) {
+      for (int p : j.prescribed_signal_indices) prescribes = prescribes || p == s;
+    }
+    if (!prescribes && !model.is_driven(s))
+      drives.push_back(model.signals()[static_cast<std::size_t>(s)].name());
+  }
+  if (drives.empty()) {
+    throw InvalidArgument(
+        "simulate(controller=...): the model has no input for it to drive (declare one under "
+        "`inputs:`, a force's `signal:` naming it)");
+  }
+  return drives;
+}
+
+// The model with `fn` as the external controller `controller` (model/controller.hpp): u =
+// fn(t, q, v), one number per drive (a float for one), held `sample_time` s when positive.
+model::Model with_python_controller(const model::Model& model, const py::object& fn,
+                                    const std::optional<std::vector<std::string>>& drives,
+                                    double sample_time, std::optional<double> u_min,
+                                    std::optional<double> u_max) {
+  if (!PyCallable_Check(fn.ptr())) {
+    throw py::type_error(
+        fmt::format("simulate: controller must be a function fn(t, q, v) -> u, "
+                    "got {}",
+                    std::string(py::str(py::type::of(fn)))));
+  }
+  model::Controller c;
+  c.name = "controller";
+  c.kind = model::ControllerKind::external;
+  c.drives = controller_drives(model, drives);
+  c.sample_time = sample_time;
+  if (u_min) c.actuator.min = *u_min;
+  if (u_max) c.actuator.max = *u_max;
+  const std::size_t m = c.drives.size();
+  c.law = std::make_shared<const model::ControlLaw>(
+      [fn, m, names = c.drives](double t, const VecX& q, const VecX& v, std::span<double> u) {
+        const py::object out = fn(t, to_numpy(q), to_numpy(v));
+        const auto values = as_float_array(out, "the controller's u");
+        if (values.size() != static_cast<py::ssize_t>(m)) {
+          throw InvalidArgument(fmt::format(
+              "the controller returned {} number{} at t = {} s; it drives {} ({}): return {}",
+              values.size(), values.size() == 1 ? "" : "s", t, m, fmt::join(names, ", "),
+              m == 1 ? "one number" : fmt::format("{} numbers in that order", m)));
+        }
+        std::copy(values.data(), values.data() + m, u.begin());
+      });
+  return model.with_controller(c);
+}
+
+SimulationResult run_simulation(
+    const ModelHandle& h, std::optional<double> duration, std::optional<double> dt,
+    std::optional<std::string> integrator, std::optional<double> rtol, std::optional<double> atol,
+    std::optional<long> every, bool reactions, const std::vector<std::string>& events,
+    const std::vector<std::string>& stop_when, const py::object& controller,
+    const std::optional<std::vector<std::string>>& drives, double sample_time,
+    std::optional<double> u_min, std::optional<double> u_max) {
+  if (controller.is_none() && (drives || sample_time != 0.0 || u_min || u_max)) {
+    throw InvalidArgument(
+        "simulate: drives, sample_time, u_min and u_max describe a controller; pass "
+        "controller=fn too");
+  }
+  // A Python controller: the run is of a copy of the model with it (the model is left as it was).
+  std::shared_ptr<const io::ModelFile> file = h.file;
+  if (!controller.is_none()) {
+    auto with = std::make_shared<io::ModelFile>(*h.file);
+    with->model = with_python_controller(h.model(), controller, drives, sample_time, u_min, u_max);
+    file = std::move(with);
+  }
   simulate::RunRequest request;
   request.settings.duration = duration;
   request.settings.step = dt;
@@ -153,12 +224,12 @@ SimulationResult run_simulation(const ModelHandle& h, std::optional<double> dura
   resolved.options.progress = [&stop](double) {
     if (PyErr_CheckSignals() != 0) stop = true;
   };
-  simulate::Simulation simulation(h.model(), h.file->outputs, resolved.options);
+  simulate::Simulation simulation(file->model, file->outputs, resolved.options);
 
   const double steps = std::ceil(resolved.options.duration / resolved.options.step);
   BufferSink sink(static_cast<std::size_t>(std::min(steps / resolved.options.every + 2, 1e6)));
   SimulationResult result;
-  result.file = h.file;
+  result.file = file;
   result.options = resolved.options;
   result.thinning_note = resolved.thinning_note;
   result.units = simulation.column_units();
@@ -304,7 +375,9 @@ first non-finite entry.)doc");
         py::arg("integrator") = py::none(), py::arg("rtol") = py::none(),
         py::arg("atol") = py::none(), py::arg("every") = py::none(), py::arg("reactions") = false,
         py::arg("events") = std::vector<std::string>(),
-        py::arg("stop_when") = std::vector<std::string>(),
+        py::arg("stop_when") = std::vector<std::string>(), py::arg("controller") = py::none(),
+        py::arg("drives") = py::none(), py::arg("sample_time") = 0.0, py::arg("u_min") = py::none(),
+        py::arg("u_max") = py::none(),
         R"doc(Integrates the model from its initial state, as `momenta simulate` does: keyword
 arguments override the model file's `simulation:` section, which overrides the defaults
 (duration 10 s, rk4 at dt 1 ms; rtol/atol alone choose dopri5; a fixed-step run longer than
@@ -314,7 +387,14 @@ splitting4, lie_group, exact).
 reactions=True adds every joint's reaction wrench. events: conditions to watch, each
 'QUANTITY < VALUE', '> VALUE' or '= VALUE' on a column ('tension < 0', 'pivot.angle = 0'): each
 time one turns true the table gets a row at that time and summary['events'] an entry;
-stop_when: the same, and the run ends at the first. Raises InvalidArgument for a bad option,
+stop_when: the same, and the run ends at the first.
+controller: a Python function fn(t, q, v) -> u closing a loop around the mechanism (q of size
+nq, v of size nv, as model.q_names and v_names; u one number per input in `drives`, default every
+input of the model no controller of its own drives): called at every evaluation of the dynamics
+(continuous), or at t = k·sample_time exactly with u held between (zero-order hold, as a model
+file's sampled controller), clamped to [u_min, u_max]. The table gains controller.<input>
+columns. Exceptions raised in fn end the run and reach the caller as they are.
+Raises InvalidArgument for a bad option,
 NumericalError when the state stops being finite (naming the time and coordinate),
 KeyboardInterrupt on Ctrl-C.)doc");
 }

@@ -14,7 +14,8 @@ namespace {
 StateSpace zero_order_hold_system(const StateSpace& s, double T) {
   const Discretization zoh = zero_order_hold(s.A(), s.B(), T);
   return StateSpace(zoh.transition, zoh.input, s.C(), s.D(), s.state_names(), s.input_names(),
-                    s.output_names(), T);
+                    s.output_names(), T)
+      .with_units(s.units());
 }
 
 StateSpace tustin_system(const StateSpace& s, double T) {
@@ -29,14 +30,16 @@ StateSpace tustin_system(const StateSpace& s, double T) {
         T, 2.0 / T));
   }
   if (n == 0) {
-    return StateSpace(MatX(0, 0), s.B(), s.C(), s.D(), {}, s.input_names(), s.output_names(), T);
+    return StateSpace(MatX(0, 0), s.B(), s.C(), s.D(), {}, s.input_names(), s.output_names(), T)
+        .with_units(s.units());
   }
   const MatX Ad = P.solve(I + 0.5 * T * s.A());
   const MatX Bd = P.solve(T * s.B());
   // C P from Pᵀ: (I − A T/2)ᵀ (C P)ᵀ = Cᵀ.
   const MatX Cd = Eigen::FullPivLU<MatX>(left.transpose()).solve(s.C().transpose()).transpose();
   const MatX Dd = s.D() + 0.5 * s.C() * Bd;
-  return StateSpace(Ad, Bd, Cd, Dd, s.state_names(), s.input_names(), s.output_names(), T);
+  return StateSpace(Ad, Bd, Cd, Dd, s.state_names(), s.input_names(), s.output_names(), T)
+      .with_units(s.units());
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
 #include <set>
 #include <span>
@@ -18,6 +19,9 @@
 #include "model_residual.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
+#include "momenta/model/units.hpp"
+#include "momenta/system/closed_loop_system.hpp"
+#include "momenta/system/output_set.hpp"
 
 namespace momenta::analysis {
 namespace {
@@ -262,8 +266,61 @@ std::vector<std::string> linear_state_names(const model::Model& model) {
   return position;
 }
 
+namespace {
+
+// What a state, input or output of a linearization is, by its name: each of the model's
+// coordinate (and tangent) names, signals, outputs and controller columns with its unit.
+StateSpace::Units units_by_name(const model::Model& model,
+                                const std::vector<model::OutputSpec>& outputs,
+                                const StateSpace& system) {
+  std::map<std::string, std::string, std::less<>> unit;
+  for (int i = 0; i < model.nq(); ++i) unit.emplace(model.q_name(i), model::q_unit(model, i));
+  for (int i = 0; i < model.nv(); ++i) {
+    const std::string rate = model::v_unit(model, i);
+    unit.emplace(model.v_name(i), rate);
+    // A tangent coordinate (a rotation vector's component, a length) is its rate's integral.
+    unit.emplace(detail::tangent_name(model, i),
+                 rate.ends_with("/s") ? rate.substr(0, rate.size() - 2) : std::string());
+  }
+  for (int s = 0; s < static_cast<int>(model.signals().size()); ++s)
+    unit.emplace(model.signals()[static_cast<std::size_t>(s)].name(), model::signal_unit(model, s));
+  const system::OutputSet output_set(model, outputs);
+  for (std::size_t k = 0; k < output_set.column_names().size(); ++k)
+    unit.emplace(output_set.column_names()[k], output_set.column_units()[k]);
+  if (model.has_controllers()) {
+    system::MultibodySystem plant(model);
+    const system::ClosedLoopSystem loop(plant);
+    for (std::size_t k = 0; k < loop.column_names().size(); ++k)
+      unit.emplace(loop.column_names()[k], loop.column_units()[k]);
+  }
+  const auto of = [&](const std::vector<std::string>& names) {
+    std::vector<std::string> units;
+    for (const std::string& name : names) {
+      const auto found = unit.find(name);
+      units.push_back(found != unit.end() ? found->second : std::string());
+    }
+    return units;
+  };
+  return {of(system.state_names()), of(system.input_names()), of(system.output_names())};
+}
+
+LinearModel linearize_any(const model::Model& model, const OperatingPoint& point,
+                          const LinearizationOptions& options);
+
+}  // namespace
+
 LinearModel linearize(const model::Model& model, const OperatingPoint& point,
                       const LinearizationOptions& options) {
+  LinearModel result = linearize_any(model, point, options);
+  result.system =
+      result.system.with_units(units_by_name(model, options.output_specs, result.system));
+  return result;
+}
+
+namespace {
+
+LinearModel linearize_any(const model::Model& model, const OperatingPoint& point,
+                          const LinearizationOptions& options) {
   check_arguments(point, options);
   if (model.has_controllers() && options.close_loops)
     return detail::linearize_closed_loop(model, point, options);
@@ -333,6 +390,8 @@ LinearModel linearize(const model::Model& model, const OperatingPoint& point,
                              std::move(input_names), std::move(output_names));
   return result;
 }
+
+}  // namespace
 
 double largest_acceleration(const LinearModel& linear) {
   double worst = 0.0;

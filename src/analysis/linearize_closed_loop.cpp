@@ -116,6 +116,8 @@ Law law_of(const model::Model& model, const model::ResolvedController& c, const 
       for (Eigen::Index i = 0; i < s.block.A.rows(); ++i)
         law.states.push_back(fmt::format("{}.z{}", s.name, i + 1));
       return law;
+    case ControllerKind::external:
+      break;  // refused by linearize_closed_loop
   }
   return law;
 }
@@ -133,6 +135,12 @@ LinearModel linearize_closed_loop(const model::Model& model, const OperatingPoin
     }
   }
   for (const model::ResolvedController& c : model.controllers()) {
+    if (c.spec.kind == ControllerKind::external) {
+      throw InvalidArgument(fmt::format(
+          "linearize: controller '{}' is a function; its law has no linear model here — "
+          "linearize the plant alone (the controllers open) and close the loop on the result",
+          c.spec.name));
+    }
     if (c.spec.discrete()) {
       throw InvalidArgument(fmt::format(
           "linearize: controller '{}' is sampled every {} s; a continuous linear model has no "

@@ -109,6 +109,21 @@ std::size_t StateSpace::state_index(std::string_view name) const {
   return index_of(state_names_, name, "state");
 }
 
+StateSpace StateSpace::with_units(Units units) const {
+  const auto check = [](const std::vector<std::string>& list, std::size_t count, const char* what) {
+    if (!list.empty() && list.size() != count) {
+      throw InvalidArgument(
+          fmt::format("StateSpace: {} {} units for {} {}s", list.size(), what, count, what));
+    }
+  };
+  check(units.states, state_count(), "state");
+  check(units.inputs, input_count(), "input");
+  check(units.outputs, output_count(), "output");
+  StateSpace out = *this;
+  out.units_ = std::move(units);
+  return out;
+}
+
 StateSpace StateSpace::siso(std::size_t input, std::size_t output) const {
   if (input >= input_count()) {
     throw InvalidArgument(fmt::format(
@@ -120,8 +135,12 @@ StateSpace StateSpace::siso(std::size_t input, std::size_t output) const {
   }
   const auto i = static_cast<Eigen::Index>(input);
   const auto o = static_cast<Eigen::Index>(output);
+  const auto pick = [](const std::vector<std::string>& units, std::size_t k) {
+    return units.empty() ? std::vector<std::string>{} : std::vector<std::string>{units[k]};
+  };
   return StateSpace(A_, B_.col(i), C_.row(o), D_.block(o, i, 1, 1), state_names_,
-                    {input_names_[input]}, {output_names_[output]}, sample_time_);
+                    {input_names_[input]}, {output_names_[output]}, sample_time_)
+      .with_units({units_.states, pick(units_.inputs, input), pick(units_.outputs, output)});
 }
 
 StateSpace StateSpace::siso(std::string_view input, std::string_view output) const {

@@ -99,6 +99,10 @@ TimeResponse empty_response(const StateSpace& system, std::size_t input, const R
   response.input_name = system.input_names()[input];
   response.output_names = system.output_names();
   response.state_names = system.state_names();
+  const StateSpace::Units& units = system.units();
+  if (!units.inputs.empty()) response.input_unit = units.inputs[input];
+  response.output_units = units.outputs;
+  response.state_units = units.states;
   response.time = VecX::LinSpaced(static_cast<Eigen::Index>(r.samples), 0.0, r.final_time);
   response.outputs.resize(static_cast<Eigen::Index>(r.samples),
                           static_cast<Eigen::Index>(system.output_count()));

@@ -1,5 +1,6 @@
 #include "momenta/model/controller.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string_view>
 
@@ -18,9 +19,11 @@ const char* controller_kind_name(ControllerKind kind) {
     case ControllerKind::state_feedback:
       return "state_feedback";
     case ControllerKind::linear:
+      return "linear";
+    case ControllerKind::external:
       break;
   }
-  return "linear";
+  return "external";
 }
 
 LinearBlock transfer_function_block(const std::vector<double>& num, const std::vector<double>& den,
@@ -120,6 +123,15 @@ void check_sizes(const Controller& c) {
     case ControllerKind::state_feedback:
       if (n == 0) fail(c, "measures nothing: name the state's coordinates");
       if (m == 0) fail(c, "drives nothing: name the inputs K's rows act on");
+      break;
+    case ControllerKind::external:
+      if (n != 0)
+        fail(c, "an external law reads the whole state (q, v): it measures nothing by name");
+      if (m == 0) fail(c, "drives nothing: name the inputs its law sets");
+      if (!c.law || !*c.law) fail(c, "an external controller needs its law (a function)");
+      if (c.sensor.quantization != 0.0 || c.sensor.noise != 0.0 || c.sensor.delay != 0)
+        fail(c,
+             "an external law reads the state as it is: quantize, add noise or delay in the law");
       break;
   }
   if (c.kind == ControllerKind::state_feedback) {
@@ -226,6 +238,20 @@ ResolvedController resolve_controller(const Controller& controller, const Model&
     r.measured_rate = model.joint(j).v_index + (i - model.joint(j).q_index);
   }
   return r;
+}
+
+void check_controller_fits(const ResolvedController& controller, const Model& model) {
+  for (const ResolvedController& other : model.controllers()) {
+    if (other.spec.name == controller.spec.name)
+      throw InvalidArgument(fmt::format("a second controller named '{}'", controller.spec.name));
+    for (int s : controller.drives) {
+      if (std::find(other.drives.begin(), other.drives.end(), s) != other.drives.end()) {
+        throw InvalidArgument(fmt::format(
+            "controller '{}' drives '{}', which controller '{}' drives too", controller.spec.name,
+            model.signals()[static_cast<std::size_t>(s)].name(), other.spec.name));
+      }
+    }
+  }
 }
 
 }  // namespace momenta::model

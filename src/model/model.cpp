@@ -73,6 +73,14 @@ Model Model::with_initial_state(const VecX& q, const VecX& v) const {
   return model;
 }
 
+Model Model::with_controller(const Controller& controller) const {
+  ResolvedController r = resolve_controller(controller, *this);
+  check_controller_fits(r, *this);
+  Model model = *this;
+  model.controllers_.push_back(std::move(r));
+  return model;
+}
+
 std::optional<int> Model::find_body(std::string_view name) const {
   return find_by_name(bodies_, name, [](const Body& b) -> std::string_view { return b.name; });
 }

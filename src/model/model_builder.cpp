@@ -157,18 +157,10 @@ class ModelAssembler {
  private:
   // Controllers: their names resolved against the model; no signal driven twice, no name twice.
   void resolve_controllers() {
-    std::map<int, std::string> driver;
     for (const Controller& c : controllers_) {
       for_item(Kind::controller, c.name, [&] {
-        for (const ResolvedController& other : model_.controllers_) {
-          MOMENTA_REQUIRE(other.spec.name != c.name, "a second controller named '{}'", c.name);
-        }
         ResolvedController r = resolve_controller(c, model_);
-        for (int s : r.drives) {
-          const auto [at, added] = driver.emplace(s, c.name);
-          MOMENTA_REQUIRE(added, "controller '{}' drives '{}', which controller '{}' drives too",
-                          c.name, model_.signals_[static_cast<std::size_t>(s)].name(), at->second);
-        }
+        check_controller_fits(r, model_);
         model_.controllers_.push_back(std::move(r));
       });
     }

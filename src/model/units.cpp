@@ -81,6 +81,12 @@ std::string signal_unit(const Model& model, int signal_index) {
       return "N·m";
     }
   }
+  // A controller's reference: what it measures.
+  for (const ResolvedController& c : model.controllers()) {
+    if (c.reference != signal_index || c.measured.empty()) continue;
+    const int i = c.measured.front();
+    return i < model.nq() ? q_unit(model, i) : v_unit(model, i - model.nq());
+  }
   return "";
 }
 

@@ -25,6 +25,14 @@ bool starts_with(const std::string& text, const std::string& prefix) {
   return text.starts_with(prefix);
 }
 
+// The controller whose column `name` is (`<controller>.<what>`), or null.
+const model::ResolvedController* controller_of(const model::Model& model, const std::string& name) {
+  for (const model::ResolvedController& c : model.controllers()) {
+    if (name.starts_with(c.spec.name + ".")) return &c;
+  }
+  return nullptr;
+}
+
 // Which group a column belongs to: coordinates and speeds by unit, energies, momentum, each
 // output, reactions, the audit. Each group's unit is its columns' (Simulation::column_units).
 std::vector<Group> group_columns(const io::ModelFile& file, const std::vector<std::string>& columns,
@@ -63,6 +71,25 @@ std::vector<Group> group_columns(const io::ModelFile& file, const std::vector<st
       add("Joint reaction forces, in W", false, c);
     } else if (name.find(".reaction.M") != std::string::npos) {
       add("Joint reaction moments about J'o, in W", false, c);
+    } else if (const model::ResolvedController* loop = controller_of(model, name)) {
+      // A loop's columns: its reference beside the measured coordinate and the error, its
+      // effort (the inputs it drives), its states.
+      const std::string& stem = loop->spec.name;
+      const std::string what = name.substr(stem.size() + 1);
+      if (what == "reference" || what == "error") {
+        const std::string title = "Loop " + stem + ": reference, measured and error";
+        add(title, false, c);
+        const auto measured =
+            std::find(columns.begin(), columns.end(), loop->spec.measured.front());
+        if (what == "reference" && measured != columns.end())
+          add(title, false, static_cast<int>(measured - columns.begin()));
+      } else if (std::any_of(loop->drives.begin(), loop->drives.end(), [&](int d) {
+                   return model.signals()[static_cast<std::size_t>(d)].name() == what;
+                 })) {
+        add("Loop " + stem + ": control effort", false, c);
+      } else {
+        add("Loop " + stem + ": controller states", false, c);
+      }
     } else {
       const auto spec = std::find_if(file.outputs.begin(), file.outputs.end(), [&](const auto& s) {
         return name == s.name || starts_with(name, s.name + ".");

@@ -47,6 +47,10 @@ json linear_json(const io::ModelFile& file, const LinearSettings& settings, doub
 /// (too many free speeds, too large to print, or a build without the symbolic layer).
 json equations_json(const io::ModelFile& file);
 
+/// The model's feedback loops, one per controller: {name, kind, sample_time, svg}, the svg its
+/// block diagram (reference, junction, law, hold, actuator, mechanism, sensor); [] without.
+json loops_json(const io::ModelFile& file);
+
 /// The Campbell diagram over the speeds `settings.campbell` names, or {available: false, reason}.
 json campbell_json(const io::ModelFile& file, const LinearSettings& settings);
 /// Body poses after forward kinematics in `data`: per body (world excluded) its position, then

@@ -159,7 +159,8 @@ std::string simulation_report_html(const SimulationRun& run, const LinearSetting
                        {"linear", std::move(linear_section)},
                        {"equations", detail::equations_json(*run.file)},
                        {"campbell", detail::campbell_json(*run.file, linear)},
-                       {"diagrams", detail::diagrams_json(run)}};
+                       {"diagrams", detail::diagrams_json(run)},
+                       {"loops", detail::loops_json(*run.file)}};
   return detail::html_page(fmt::format("{} — momenta report", run.file->name), data);
 }
 

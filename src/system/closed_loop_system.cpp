@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "momenta/common/error.hpp"
 #include "momenta/model/units.hpp"
 
 namespace momenta::system {
@@ -36,10 +37,13 @@ ClosedLoopSystem::ClosedLoopSystem(MultibodySystem& plant) : plant_(plant) {
       columns_.push_back(name(m.signals()[static_cast<std::size_t>(c.drives[i])].name()));
       units_.push_back(model::signal_unit(m, c.drives[i]));
     }
-    const std::string error_unit = c.measured[0] < m.nq()
+    const bool follows_reference =
+        s.kind == ControllerKind::pid || s.kind == ControllerKind::linear;
+    const std::string error_unit = !follows_reference ? ""
+                                   : c.measured[0] < m.nq()
                                        ? model::q_unit(m, c.measured[0])
                                        : model::v_unit(m, c.measured[0] - m.nq());
-    if (s.kind != ControllerKind::state_feedback) {
+    if (follows_reference) {
       columns_.push_back(name("reference"));
       columns_.push_back(name("error"));
       units_.push_back(error_unit);
@@ -169,6 +173,24 @@ void ClosedLoopSystem::continuous_law(Loop& loop, double t, model::Limit limit, 
       }
       return;
     }
+    case ControllerKind::external:
+      external_law(loop, t, q, v, u);
+      return;
+  }
+}
+
+void ClosedLoopSystem::external_law(const Loop& loop, double t, const VecX& q, const VecX& v,
+                                    std::span<double> u) const {
+  (*loop.c->spec.law)(t, q, v, u);
+  for (std::size_t i = 0; i < u.size(); ++i) {
+    if (!std::isfinite(u[i])) {
+      const int s = loop.c->drives[i];
+      throw NumericalError(
+          fmt::format("controller '{}' gave {} = {} at t = {} s (a law's output must be finite)",
+                      loop.c->spec.name,
+                      plant_.model().signals()[static_cast<std::size_t>(s)].name(), u[i], t));
+    }
+    u[i] = saturate(loop, u[i]);
   }
 }
 
@@ -239,6 +261,9 @@ void ClosedLoopSystem::take_sample(Loop& loop, double t_k, const VecX& q, const 
       }
       break;
     }
+    case ControllerKind::external:
+      external_law(loop, t_k, q, v, d.held);
+      break;
   }
   // The rate limit, against the output held until now.
   if (!first && s.actuator.rate_limit < std::numeric_limits<double>::infinity()) {
@@ -443,8 +468,8 @@ void ClosedLoopSystem::record(double t, const VecX& q, const VecX& v, std::span<
     const model::Controller& s = loop.c->spec;
     drive(loop, t, model::Limit::right, q_, v_);
     for (std::size_t i = 0; i < loop.c->drives.size(); ++i) out[c++] = u_[i];
-    const model::SignalSample r = reference(loop, t, model::Limit::right);
-    if (s.kind != ControllerKind::state_feedback) {
+    if (s.kind == ControllerKind::pid || s.kind == ControllerKind::linear) {
+      const model::SignalSample r = reference(loop, t, model::Limit::right);
       const double y = measure(loop, 0, q_, v_);
       out[c++] = r.value;
       out[c++] = r.value - y;

@@ -289,6 +289,22 @@ void MultibodySystem::apply_prescribed_motion(double t, VecX& q, VecX& v) const 
   write_prescribed(model_, applied_samples_, q, v, nullptr);
 }
 
+void MultibodySystem::drive_signal(int s) {
+  if (s < 0 || s >= static_cast<int>(driven_.size()))
+    throw InvalidArgument(fmt::format("no signal #{}; the model has {}", s, driven_.size()));
+  for (const model::Joint& j : model_.joints()) {
+    for (int p : j.prescribed_signal_indices) {
+      if (p == s) {
+        throw InvalidArgument(fmt::format(
+            "input '{}' prescribes joint '{}': its motion is the signal's, with rates; it cannot "
+            "be set as a value",
+            model_.signals()[static_cast<std::size_t>(s)].name(), j.name));
+      }
+    }
+  }
+  driven_[static_cast<std::size_t>(s)] = 1;
+}
+
 void MultibodySystem::set_signal_offsets(std::span<const double> value,
                                          std::span<const double> rate,
                                          std::span<const double> acceleration) {

@@ -382,6 +382,43 @@ test('rolling coin: the steady circle\'s modes seen from its turning frame', asy
   await r.page.close();
 });
 
+test('feedback loops: each controller drawn as its block diagram, reference, error and effort plotted', async () => {
+  const expected = {
+    cruise_control_pi: { words: ['PI cruise', 'kp = 800, ki = 40', 'engine (N)', 'Σ', 'x.position_rate', 'target_speed'],
+      blocks: 2, junctions: 1, plots: { 'Loop cruise: reference, measured and error': [['cruise.reference', 'x.position_rate', 'cruise.error'], 'm/s'],
+        'Loop cruise: control effort': [['cruise.engine'], 'N'], 'Loop cruise: controller states': [['cruise.integral'], 'N'] } },
+    satellite_attitude_pd: { words: ['PD attitude_pd', 'hold (ZOH)', 'T = 0.1 s', 'thrust (N·m)', 'sensor', 'r = 0.1'],
+      blocks: 4, junctions: 1, plots: { 'Loop attitude_pd: control effort': [['attitude_pd.thrust'], 'N·m'],
+        'Loop attitude_pd: reference, measured and error': [['attitude_pd.reference', 'attitude.angle', 'attitude_pd.error'], 'rad'] } },
+    cart_pendulum_lqr: { words: ['state feedback balance', 'u = K e, K 1×4', 'force (N)', 'x_ref'],
+      blocks: 2, junctions: 1, plots: { 'Loop balance: control effort': [['balance.force'], 'N'] } },
+  };
+  for (const [name, want] of Object.entries(expected)) {
+    const file = path.join(work, `${name}.html`);
+    run('report', path.join(examples, `${name}.yaml`), '-o', file, '-q');
+    const { page, problems } = await open(file);
+    await page.evaluate(() => window.momentaReport.drawAllCharts());
+    const [loop] = await page.evaluate(() => window.momentaReport.loops());
+    const text = loop.texts.join(' | ');
+    for (const word of want.words) assert.ok(loop.texts.some((t) => t.includes(word)), `${name}: '${word}' in ${text}`);
+    assert.equal(loop.blocks, want.blocks, `${name}: ${text}`);
+    assert.equal(loop.junctions, want.junctions);
+    // The diagram is drawn at a readable size and fits the page's width.
+    assert.ok(loop.width > 500 && loop.width <= 1280 && loop.height > 150, JSON.stringify(loop));
+    const groups = await page.evaluate(() => window.momentaReport.plotGroups());
+    for (const [title, [series, unit]] of Object.entries(want.plots)) {
+      const group = groups.find((g) => g.title === title);
+      assert.ok(group, `${name}: a plot '${title}' among ${groups.map((g) => g.title).join('; ')}`);
+      assert.deepEqual(group.series, series);
+      assert.equal(group.unit, unit, `${name}: ${title}'s axis`);
+    }
+    await (await page.$('#loops')).screenshot({ path: path.join(artifacts, `loop-${name}.png`) });
+    await page.screenshot({ path: path.join(artifacts, `loop-${name}-page.png`), fullPage: true });
+    assert.deepEqual(problems, []);
+    await page.close();
+  }
+});
+
 test('a run that blows up still gives a report, with the reason at the top', async () => {
   const model = path.join(sourceDir, 'tests', 'data', 'models', 'stiff_spring.yaml');
   const file = path.join(work, 'blowup.html');

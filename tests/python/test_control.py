@@ -335,3 +335,168 @@ def test_add_controller_names_what_is_wrong():
         momenta.ModelBuilder("m").add_controller("c", "pdi", measure="x.position", drives="u")
     with pytest.raises(Exception, match=r"K is 1×2; it must be 1×4"):
         _cart_with_lqr([[1.0, 2.0]])
+
+
+# --- a controller written in Python: simulate(model, controller=fn) --------------------------
+
+LQR_K = np.array([-1.0, -18.70145874371149, -1.656513311485028, -3.460604945318623])
+
+
+def test_a_python_state_feedback_is_the_model_files(cart):
+    # The cart pendulum from 10° under u = −K x written in Python, against the same K as the
+    # model file's state_feedback controller (examples/cart_pendulum_lqr.yaml): one law, one
+    # arithmetic up to the order of the sum, so the runs agree to round-off growth.
+    plant = momenta.load_model(CART)
+    q0 = np.array([0.0, np.radians(10.0)])
+    start = momenta.with_initial_state(plant, q0, np.zeros(2))
+    calls = []
+
+    def law(t, q, v):
+        calls.append(t)
+        return -LQR_K @ np.concatenate([q, v])
+
+    mine = momenta.simulate(start, duration=8.0, dt=1e-3, controller=law)
+    filed = momenta.simulate(momenta.load_model(EXAMPLES / "cart_pendulum_lqr.yaml"))
+    for column in ["x.position", "tilt.angle", "tilt.angle_rate"]:
+        np.testing.assert_allclose(mine[column], filed[column], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(mine["controller.force"], filed["balance.force"], rtol=0,
+                               atol=1e-10)
+    assert mine.units["controller.force"] == "N"
+    # Continuous: four evaluations per RK4 step, and the rows' own.
+    assert len(calls) >= 4 * 8000
+    # Back upright, as the linear loop predicts.
+    assert abs(mine["tilt.angle"][-1]) < 1e-3
+
+
+def test_a_python_pd_sampled_at_10_hz_is_the_model_files():
+    # The satellite's discrete PD (examples/satellite_attitude_pd.yaml) written as a Python
+    # closure: the derivative by backward difference, u held between samples. fn is called
+    # once per sample, at t = kT exactly, and the runs agree to round-off.
+    plant = momenta.load_model(EXAMPLES / "satellite_attitude.yaml")
+    T, kp, kd, r = 0.1, 1250.0, 3500.0, 0.1
+    seen = {"times": [], "last": None}
+
+    def pd(t, q, v):
+        e = r - q[0]
+        last = e if seen["last"] is None else seen["last"]
+        seen["last"] = e
+        seen["times"].append(t)
+        return [kp * e + kd * (e - last) / T]
+
+    mine = momenta.simulate(plant, duration=20.0, dt=0.01, integrator="rk4", controller=pd,
+                            drives=["thrust"], sample_time=T)
+    filed = momenta.simulate(momenta.load_model(EXAMPLES / "satellite_attitude_pd.yaml"))
+    np.testing.assert_allclose(mine["attitude.angle"], filed["attitude.angle"], rtol=0,
+                               atol=1e-12)
+    np.testing.assert_allclose(mine["controller.thrust"], filed["attitude_pd.thrust"], rtol=0,
+                               atol=1e-9)
+    np.testing.assert_allclose(seen["times"], T * np.arange(201), rtol=0, atol=1e-12)
+
+
+def test_a_python_controller_saturates_and_leaves_the_model_as_it_was():
+    plant = momenta.load_model(EXAMPLES / "satellite_attitude.yaml")
+    run = momenta.simulate(plant, duration=1.0, controller=lambda t, q, v: 500.0, u_max=200.0)
+    np.testing.assert_array_equal(run["controller.thrust"], 200.0)
+    # θ = ½ (u/I) t² under the clamped torque.
+    np.testing.assert_allclose(run["attitude.angle"][-1], 0.5 * 200.0 / 5000.0, rtol=1e-12)
+    assert "controller.thrust" not in momenta.simulate(plant, duration=0.1)
+
+
+def test_a_python_controller_names_what_is_wrong():
+    plant = momenta.load_model(EXAMPLES / "satellite_attitude.yaml")
+    with pytest.raises(momenta.InvalidArgument, match=r"returned 2 numbers .* drives 1 \(thrust\)"):
+        momenta.simulate(plant, duration=0.1, controller=lambda t, q, v: [1.0, 2.0])
+    with pytest.raises(ZeroDivisionError):
+        momenta.simulate(plant, duration=0.1, controller=lambda t, q, v: 1 / 0)
+    with pytest.raises(momenta.NumericalError, match=r"controller 'controller' gave thrust = nan"):
+        momenta.simulate(plant, duration=0.1, controller=lambda t, q, v: float("nan"))
+    with pytest.raises(TypeError, match="must be a function"):
+        momenta.simulate(plant, duration=0.1, controller=3.0)
+    with pytest.raises(momenta.InvalidArgument, match="pass controller=fn too"):
+        momenta.simulate(plant, duration=0.1, sample_time=0.1)
+    with pytest.raises(momenta.InvalidArgument, match=r"no input of the model.*did you mean"):
+        momenta.simulate(plant, duration=0.1, controller=lambda t, q, v: 0.0, drives=["thrus"])
+    with pytest.raises(momenta.InvalidArgument, match="sample_time -1 s must be positive"):
+        momenta.simulate(plant, duration=0.1, controller=lambda t, q, v: 0.0, sample_time=-1)
+    looped = momenta.load_model(EXAMPLES / "satellite_attitude_pd.yaml")
+    with pytest.raises(momenta.InvalidArgument, match="no input for it to drive"):
+        momenta.simulate(looped, duration=0.1, controller=lambda t, q, v: 0.0)
+    with pytest.raises(momenta.InvalidArgument, match="which controller 'attitude_pd' drives too"):
+        momenta.simulate(looped, duration=0.1, controller=lambda t, q, v: 0.0, drives=["thrust"])
+
+
+# --- the state derivative for scipy: model.dynamics(t, x, u) ----------------------------------
+
+def test_solve_ivp_on_model_dynamics_is_simulate():
+    # The cart pendulum's LQR loop closed around model.dynamics by scipy's own integrator
+    # (DOP853, tight tolerances) against momenta's dopri5 run of the model file's controller.
+    from scipy.integrate import solve_ivp
+    plant = momenta.load_model(CART)
+    assert plant.input_names == ["force"]
+    x0 = np.array([0.0, np.radians(10.0), 0.0, 0.0])
+    loop = solve_ivp(lambda t, x: plant.dynamics(t, x, [-LQR_K @ x]), (0.0, 4.0), x0,
+                     method="DOP853", rtol=1e-12, atol=1e-12, dense_output=True)
+    filed = momenta.simulate(momenta.load_model(EXAMPLES / "cart_pendulum_lqr.yaml"),
+                             duration=4.0, rtol=1e-12, atol=1e-12, integrator="dopri5")
+    x = loop.sol(filed.time)
+    np.testing.assert_allclose(x[1], filed["tilt.angle"], rtol=0, atol=1e-9)
+    np.testing.assert_allclose(x[0], filed["x.position"], rtol=0, atol=1e-9)
+
+
+def test_model_dynamics_is_the_closed_form_and_checks_its_arguments():
+    # The cart pendulum's equations (Franklin's, b the cart's damping), solved for the two
+    # accelerations by hand at a state away from rest.
+    plant = momenta.load_model(CART)
+    M, m, b, l, I, g = 0.5, 0.2, 0.1, 0.3, 0.006, 9.81
+    x, phi, xd, phid, u = 0.3, 0.4, -0.2, 0.7, 1.5
+    # (M + m) ẍ + b ẋ + m l (φ̈ cos φ − φ̇² sin φ) = u ;  (I + m l²) φ̈ + m l ẍ cos φ = m g l sin φ
+    A = np.array([[M + m, m * l * np.cos(phi)], [m * l * np.cos(phi), I + m * l**2]])
+    rhs = np.array([u - b * xd + m * l * phid**2 * np.sin(phi), m * g * l * np.sin(phi)])
+    acc = np.linalg.solve(A, rhs)
+    xdot = plant.dynamics(0.0, [x, phi, xd, phid], [u])
+    np.testing.assert_allclose(xdot, [xd, phid, *acc], rtol=1e-13, atol=1e-14)
+    with pytest.raises(ValueError, match=r"x: expected a vector of 4 numbers"):
+        plant.dynamics(0.0, [0.0, 0.0])
+    np.testing.assert_array_equal(plant.dynamics(0.0, [x, phi, xd, phid], [[u]]), xdot)  # any shape
+    with pytest.raises(ValueError, match=r"u: expected 1 number \(one per input: force\), got 2"):
+        plant.dynamics(0.0, np.zeros(4), [1.0, 2.0])
+    with pytest.raises(momenta.InvalidArgument, match=r"u\[0\] \(force\) is nan"):
+        plant.dynamics(0.0, np.zeros(4), [float("nan")])
+
+
+def test_linearize_over_a_list_of_operating_points():
+    # Gain scheduling: the pendulum (L = 1 m point mass) linearized at θ = 0, 0.5, π at once,
+    # each A's ∂θ̈/∂θ = −(g/L) cos θ; θ = 0.5 is no equilibrium and the warning says which.
+    model = momenta.load_model(EXAMPLES / "pendulum.yaml")
+    angles = np.array([0.0, 0.5, np.pi])
+    with pytest.warns(UserWarning, match=r"operating point 1 of 3 is not an equilibrium"):
+        models = momenta.linearize(model, q=angles[:, None], v=[0.0])
+    assert len(models) == 3
+    for theta, linear in zip(angles, models):
+        np.testing.assert_allclose(linear.system.A, [[0, 1], [-9.81 * np.cos(theta), 0]],
+                                   rtol=0, atol=1e-12)
+        one = momenta.linearize(model, q=[theta]) if theta != 0.5 else None
+        if one is not None:
+            np.testing.assert_array_equal(linear.system.A, one.system.A)
+    with pytest.raises(ValueError, match="q has 3 rows and v 2"):
+        momenta.linearize(model, q=angles[:, None], v=np.zeros((2, 1)))
+
+
+def test_units_travel_with_the_linear_model():
+    # Each state, input and output carries its SI unit from the model: coordinates and their
+    # rates, the force's N, a controller's reference in the unit of what it measures, a PI's
+    # integral in its drive's unit; c2d keeps them and a response reports them.
+    cart_model = momenta.linearize(momenta.load_model(CART)).system
+    assert cart_model.units == {"x.position": "m", "tilt.angle": "rad", "x.position_rate": "m/s",
+                                "tilt.angle_rate": "rad/s", "force": "N", "cart_position": "m",
+                                "tilt_angle": "rad"}
+    assert "force [N]" in repr(cart_model)
+    cruise = momenta.linearize(momenta.load_model(EXAMPLES / "cruise_control_pi.yaml")).system
+    assert cruise.units["target_speed"] == "m/s" and cruise.units["cruise.integral"] == "N"
+    assert momenta.c2d(cruise, 0.1).units == cruise.units
+    step = momenta.step_response(cruise)
+    assert step.units == {"target_speed": "m/s", "speed": "m/s", "x.position": "m",
+                          "x.position_rate": "m/s", "cruise.integral": "N"}
+    top = momenta.linearize(momenta.load_model(EXAMPLES / "heavy_top.yaml")).system
+    assert top.units["tip.rx"] == "rad" and top.units["tip.wz"] == "rad/s"
+    assert momenta.StateSpace([[0.0]], [[1.0]], [[1.0]], None).units == {}

@@ -206,7 +206,8 @@ def test_results_are_not_views_of_the_workspace():
 
 
 @pytest.mark.parametrize("q, message", [
-    ([1.0, 2.0, 3.0], r"q: expected a vector of 2 numbers \(the model's nq\), got shape \(3,\)"),
+    ([1.0, 2.0, 3.0], r"q: expected a vector of 2 numbers \(the model's nq\) or an \(N, 2\) array "
+                      r"of N of them, got shape \(3,\)"),
     (np.zeros((2, 1)), r"q: expected a vector of 2 numbers .* got shape \(2, 1\)"),
     (np.zeros(2, dtype=complex), "q: expected an array of real numbers"),
     ("ab", "q: expected an array of real numbers"),
@@ -254,3 +255,52 @@ def test_no_leaks_over_many_calls():
     # 3·10⁵ calls: a leak of even one 16-byte array per call would be 4.8 MB.
     assert after_traced - before_traced < 64 * 1024
     assert after_rss - before_rss < 2 * 1024  # kB
+
+
+# --- batched calls: (N, n) arrays of states ----------------------------------------------------
+
+def test_batched_calls_are_the_single_calls_row_by_row(case):
+    model, ws, q, v, rng = case
+    n = 7
+    Q = np.tile(q, (n, 1))
+    if model.nq == model.nv:
+        Q = Q + 0.3 * rng.standard_normal(Q.shape)
+    V = rng.standard_normal((n, model.nv))
+    tau = rng.standard_normal(model.nv)  # one vector, used for every row
+    A = ws.aba(Q, V, tau)
+    taus = ws.rnea(Q, V, A)
+    M = ws.crba(Q)
+    assert A.shape == (n, model.nv) and taus.shape == (n, model.nv)
+    assert M.shape == (n, model.nv, model.nv)
+    for i in range(n):
+        np.testing.assert_array_equal(A[i], ws.aba(Q[i], V[i], tau))
+        np.testing.assert_array_equal(M[i], ws.crba(Q[i]))
+        # RNEA inverts ABA row by row.
+        np.testing.assert_allclose(taus[i], tau, rtol=0, atol=1e-10 * max(1.0, abs(tau).max()))
+
+
+def test_batched_arguments_must_agree():
+    ws = momenta.Workspace(momenta.load_model(EXAMPLES / "double_pendulum.yaml"))
+    with pytest.raises(ValueError, match=r"v: 2 rows, where q has 3"):
+        ws.aba(np.zeros((3, 2)), np.zeros((2, 2)), [0, 0])
+    with pytest.raises(ValueError, match=r"q: expected a vector of 2 numbers .* or an \(N, 2\) array"):
+        ws.crba(np.zeros((3, 3)))
+
+
+def test_model_dynamics_on_quaternions_is_half_q_times_omega():
+    # The heavy top: q̇ of its ball joint's quaternion is ½ q ⊗ [0; ω] with ω in the body frame,
+    # and v̇ is aba's with the simulator's forces (none but gravity here: tau = 0).
+    model = momenta.load_model(EXAMPLES / "heavy_top.yaml")
+    ws = momenta.Workspace(model)
+    q, v = model.initial_q, np.array([0.3, -0.2, 40.0])
+    xdot = model.dynamics(0.0, np.concatenate([q, v]))
+    w, x, y, z = q
+    omega = np.concatenate([[0.0], v])
+    product = np.array([
+        w * omega[0] - x * omega[1] - y * omega[2] - z * omega[3],
+        w * omega[1] + x * omega[0] + y * omega[3] - z * omega[2],
+        w * omega[2] - x * omega[3] + y * omega[0] + z * omega[1],
+        w * omega[3] + x * omega[2] - y * omega[1] + z * omega[0],
+    ])
+    np.testing.assert_allclose(xdot[:4], 0.5 * product, rtol=0, atol=1e-14)
+    np.testing.assert_allclose(xdot[4:], ws.aba(q, v, np.zeros(3)), rtol=1e-13, atol=1e-13)

@@ -242,3 +242,29 @@ def test_sympy_equations_carry_the_inputs_and_a_spinning_bodys_own_speeds():
     with pytest.raises(TypeError, match="format='sympy'"):
         momenta.equations(momenta.load_model(EXAMPLES / "pendulum.yaml"), format="sympy",
                           greek=True)
+
+
+@needs_symbolic
+def test_matrix_form_and_generated_code_as_the_command_line_writes_them():
+    # form='matrix' is --form matrix's lines, format='python' its --python module, and that
+    # module's M(q) and b(q, v, 0, u) are CRBA's and RNEA's at a random state.
+    path = EXAMPLES / "double_pendulum.yaml"
+    model = momenta.load_model(path)
+    lines = momenta.equations(model, form="matrix")
+    printed = run_cli("equations", path, "--form", "matrix").splitlines()
+    assert lines == printed[2:], (lines, printed)
+    assert lines[0].startswith("M[0,0] = ") and any(l.startswith("(C v)[1] = ") for l in lines)
+    code = momenta.equations(model, format="python")
+    assert code == run_cli("equations", path, "--python")
+    module = {}
+    exec(compile(code, "double_pendulum_equations.py", "exec"), module)
+    ws = momenta.Workspace(model)
+    rng = np.random.default_rng(3)
+    q, v = rng.standard_normal(2), rng.standard_normal(2)
+    np.testing.assert_allclose(module["mass_matrix"](q), ws.crba(q), rtol=1e-14, atol=1e-14)
+    # b = C v + g − Q with Q = 0 here: RNEA's τ at v̇ = 0.
+    np.testing.assert_allclose(module["bias"](q, v, [0, 0], []), ws.rnea(q, v, np.zeros(2)),
+                               rtol=1e-13, atol=1e-13)
+    assert "mass_matrix" in momenta.equations(model, format="cpp")
+    with pytest.raises(momenta.InvalidArgument, match="expected 'lagrange', 'matrix' or"):
+        momenta.equations(model, form="matrices")

@@ -9,6 +9,7 @@ import { diagramsSection } from './diagrams.js';
 import { equationsSection } from './equations.js';
 import { inertiaPage } from './inertia.js';
 import { linearSection } from './linear.js';
+import { loopsSection } from './loops.js';
 import { Motion } from './motion.js';
 import { plotsSection } from './plots.js';
 import { summarySection } from './summary.js';
@@ -23,6 +24,7 @@ function simulationPage(app, data) {
   app.append(element('section', { id: 'motion' }, element('h2', {}, 'Motion'), view, timeline.controls()));
   const motion = new Motion(view, data, timeline);
   app.querySelector('#motion').append(motion.controls());
+  if (data.loops?.length) app.append(loopsSection(data.loops));
   const plots = plotsSection(data, timeline);
   app.append(plots.section);
   app.append(equationsSection(data.equations).section);
@@ -78,6 +80,17 @@ function simulationPage(app, data) {
     summary: () => data.summary,
     diagrams: () => data.diagrams && { times: data.diagrams.times, bodies: data.diagrams.bodies.map((b) => b.name) },
     showDiagram: (body, k) => diagrams.select(body, k),
+    // The feedback loops drawn: per controller, the words its diagram shows and its size on screen.
+    loops: () => Array.from(document.querySelectorAll('#loops .loop')).map((d) => {
+      const svg = d.querySelector('svg');
+      const box = svg.getBoundingClientRect();
+      return { name: d.dataset.controller, texts: Array.from(svg.querySelectorAll('text')).map((t) => t.textContent),
+        blocks: svg.querySelectorAll('rect.block').length, junctions: svg.querySelectorAll('circle.junction').length,
+        width: box.width, height: box.height };
+    }),
+    // Each plot's title as drawn (after drawAllCharts), with its data's series and unit.
+    plotGroups: () => data.plots.groups.map((g, i) => ({ title: document.querySelectorAll('#plots .plot')[i]?.querySelector('.u-title')?.textContent,
+      unit: g.unit, series: g.series.map((s) => s.name) })),
   };
 }
 

@@ -21,6 +21,12 @@ namespace momenta::analysis {
 /// checks every dimension.
 class StateSpace {
  public:
+  /// The SI unit of each state, input and output ("m", "rad/s", "N"; "" where none is known), or
+  /// an empty list where none of them is known (a system built from matrices).
+  struct Units {
+    std::vector<std::string> states, inputs, outputs;
+  };
+
   /// Builds the system and checks it.
   ///   A: n×n, B: n×m, C: p×n, D: p×m. An empty D (0×0) stands for the zero p×m matrix.
   ///   state_names (n), input_names (m), output_names (p): an empty list is filled with
@@ -50,6 +56,11 @@ class StateSpace {
   const std::vector<std::string>& input_names() const { return input_names_; }
   const std::vector<std::string>& output_names() const { return output_names_; }
 
+  const Units& units() const { return units_; }
+  /// The same system with these units; each list empty or one per state, input, output (else
+  /// InvalidArgument naming the list).
+  StateSpace with_units(Units units) const;
+
   /// Index of the input called `name`. Throws InvalidArgument listing the inputs, with a
   /// "did you mean" suggestion, when there is none.
   std::size_t input_index(std::string_view name) const;
@@ -72,6 +83,7 @@ class StateSpace {
   MatX A_, B_, C_, D_;
   std::vector<std::string> state_names_, input_names_, output_names_;
   double sample_time_ = 0.0;
+  Units units_;
 };
 
 /// Throws InvalidArgument unless `system` is continuous: "`what` is for continuous-time systems;

@@ -38,6 +38,10 @@ struct TimeResponse {
   std::string input_name;
   std::vector<std::string> output_names;
   std::vector<std::string> state_names;
+  /// The system's units (StateSpace::units): the input's, each output's and state's; empty where
+  /// the system has none.
+  std::string input_unit;
+  std::vector<std::string> output_units, state_units;
   VecX time;     ///< Sample times t_k = k h, s (samples).
   MatX outputs;  ///< outputs(k, j): output j at t_k (samples × outputs).
   MatX states;   ///< states(k, i): state i at t_k (samples × states).

@@ -14,6 +14,10 @@
 //                   linearization orders: positions, then rates), K of size drives × measured.
 //   linear          a state-space block ż = A z + B e, u = C z + D e from the error (or a
 //                   transfer function num/den, realized in controllable canonical form).
+//   external        u = law(t, q, v), a function the program running the model supplies
+//                   (Python's simulate(model, controller=fn)): it reads the mechanism's whole
+//                   state, has no states of its own in the run and measures nothing by name. Not
+//                   in model files; not linearized.
 //
 // Sample time. 0: continuous — the controller's states are integrated with the mechanism's by the
 // run's integrator. T > 0: discrete — the law runs at t = kT exactly (the integrator ends a step
@@ -31,7 +35,10 @@
 // `delay` samples ago. Noise and delay need a sample time. Actuator: u clamped to [min, max];
 // with a sample time, |u_k − u_{k−1}| ≤ rate_limit · T.
 
+#include <functional>
 #include <limits>
+#include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -41,9 +48,9 @@ namespace momenta::model {
 
 class Model;
 
-enum class ControllerKind { pid, state_feedback, linear };
+enum class ControllerKind { pid, state_feedback, linear, external };
 
-/// The kind's name in files and messages ("pid", "state_feedback", "linear").
+/// The kind's name in files and messages ("pid", "state_feedback", "linear", "external").
 const char* controller_kind_name(ControllerKind kind);
 
 /// How the controller reads what it measures.
@@ -78,6 +85,10 @@ struct LinearBlock {
   MatX A, B, C, D;
 };
 
+/// An external controller's law: the outputs u (one per driven input, before the actuator) at t
+/// from the mechanism's state q (size nq), v (size nv). May throw; the run then stops with it.
+using ControlLaw = std::function<void(double t, const VecX& q, const VecX& v, std::span<double> u)>;
+
 struct Controller {
   std::string name;
   ControllerKind kind = ControllerKind::pid;
@@ -98,6 +109,8 @@ struct Controller {
   VecX state_reference;
   VecX feedforward;
   LinearBlock block;
+  /// external: the law (shared: copies of a model share it).
+  std::shared_ptr<const ControlLaw> law;
   Sensor sensor;
   Actuator actuator;
 
@@ -126,7 +139,12 @@ struct ResolvedController {
 /// controller and the fault: a coordinate or signal the model lacks (did you mean), a drive of a
 /// prescribed joint's signal, a sample time not positive and finite, gains or blocks of the
 /// wrong size or not finite, a derivative without filter on a rate, noise, delay or a rate limit
-/// without a sample time, min > max.
+/// without a sample time, min > max; an external one without a law, or with measured names or a
+/// sensor (it reads the whole state as it is).
 ResolvedController resolve_controller(const Controller& controller, const Model& model);
+
+/// Throws InvalidArgument when `model` already has a controller of `controller`'s name, or one
+/// driving a signal it drives.
+void check_controller_fits(const ResolvedController& controller, const Model& model);
 
 }  // namespace momenta::model

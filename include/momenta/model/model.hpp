@@ -129,6 +129,9 @@ class Model {
   /// simulate --state`). Throws InvalidArgument naming the size expected, or the first
   /// non-finite entry with its coordinate's name.
   Model with_initial_state(const VecX& q, const VecX& v) const;
+  /// This model with one more controller (an external law's: Python's simulate(controller=fn)).
+  /// Throws what resolve_controller and check_controller_fits throw.
+  Model with_controller(const Controller& controller) const;
 
   /// Per-joint constants for the algorithms (see JointConstants).
   const std::vector<JointConstants>& joint_constants() const { return constants_; }

@@ -62,8 +62,9 @@ class ClosedLoopSystem final : public integrate::SecondOrderSystem {
   std::string coordinate_name(int i, bool velocity) const override;
 
   /// What record() writes, per controller in model order: its outputs `<controller>.<input>`
-  /// (after the actuator); for pid and linear `<controller>.reference` and `<controller>.error`
-  /// (as the sensor reads it); its states, `<controller>.integral`, `.filter` (continuous pid),
+  /// (after the actuator; all an external one writes); for pid and linear `<controller>.reference`
+  /// and `<controller>.error` (as the sensor reads it); its states, `<controller>.integral`,
+  /// `.filter` (continuous pid),
   /// `.derivative`, `.last_error` (discrete pid), `.z1` … (block).
   const std::vector<std::string>& column_names() const { return columns_; }
   /// Each column's unit: the driven input's where known, else "".
@@ -107,6 +108,10 @@ class ClosedLoopSystem final : public integrate::SecondOrderSystem {
   // One controller's outputs at (t, q, v, z_) into u_ (a continuous one's state rates into
   // zdot_), set on the plant's driven inputs.
   void drive(Loop& loop, double t, model::Limit limit, const VecX& q, const VecX& v);
+  // An external controller's law at (t, q, v) into u, saturated; NumericalError for an output
+  // that is not finite.
+  void external_law(const Loop& loop, double t, const VecX& q, const VecX& v,
+                    std::span<double> u) const;
   // A discrete controller's sample at t_k: readings, law, actuator, held output.
   void take_sample(Loop& loop, double t_k, const VecX& q, const VecX& v);
   // Saturation.

@@ -118,6 +118,10 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
     assert(driven_[static_cast<std::size_t>(s)]);
     driven_values_[static_cast<std::size_t>(s)] = value;
   }
+  /// Makes signal s driven from now on, as a controller's (its value set by set_driven_value,
+  /// zero until then): Python's Model.dynamics(t, x, u) sets every input so. Throws
+  /// InvalidArgument for a signal that prescribes a joint (its motion needs rates).
+  void drive_signal(int s);
   /// The value set_driven_value last gave signal s.
   double driven_value(int s) const { return driven_values_[static_cast<std::size_t>(s)]; }
   /// After evaluate(): the state it evaluated, q and v with the prescribed coordinates applied.

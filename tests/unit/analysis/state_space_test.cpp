@@ -57,6 +57,22 @@ TEST(StateSpace, SisoPicksThePair) {
   EXPECT_EQ(s.state_names()[0], "position");
 }
 
+TEST(StateSpace, UnitsTravelWithTheNamesTheyBelongTo) {
+  const StateSpace plain = two_state_system();
+  EXPECT_TRUE(plain.units().states.empty());  // built from matrices: none known
+  const StateSpace s = plain.with_units({{"m", "m/s"}, {"N", "N·m"}, {"m"}});
+  EXPECT_EQ(s.units().inputs[1], "N·m");
+  const StateSpace pair = s.siso("torque", "height");
+  EXPECT_EQ(pair.units().inputs, std::vector<std::string>{"N·m"});
+  EXPECT_EQ(pair.units().outputs, std::vector<std::string>{"m"});
+  EXPECT_EQ(pair.units().states, (std::vector<std::string>{"m", "m/s"}));
+  EXPECT_EQ(plain.siso("force", "height").units().inputs.size(), 0u);
+  EXPECT_EQ(message_of([&] {
+              (void)plain.with_units({{"m"}, {}, {}});
+            }),
+            "StateSpace: 1 state units for 2 states");
+}
+
 TEST(StateSpace, DimensionErrorsNameTheMatrixAndSizes) {
   const MatX A = MatX::Identity(2, 2);
   EXPECT_NE(message_of([&] {

@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <span>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -22,7 +25,7 @@ std::string block_model(const std::string& controllers, const std::string& input
   return R"(name: block
 gravity: [0, 0, 0]
 )" + (inputs.empty() ? std::string() : "inputs:\n" + inputs) +
-         "controllers:\n" + controllers + R"(
+         (controllers.empty() ? std::string() : "controllers:\n" + controllers) + R"(
 bodies:
   - {name: block, mass: 2.0}
 joints:
@@ -109,6 +112,77 @@ TEST(ClosedLoopSystem, ContinuousPdIsTheSpringDamperItStandsFor) {
     const double exact = std::exp(-row[t]) * (std::cos(w * row[t]) + std::sin(w * row[t]) / w);
     EXPECT_NEAR(row[x], exact, 1e-12);
   }
+}
+
+// An external law (the program's function: Python's controller=fn) u = −8 x − 4 ẋ added to the
+// open block with Model::with_controller is the same spring–damper: the closed form to 1e-12,
+// sampled at 0.1 s it is called once per sample at t = kT exactly, and a non-finite output
+// stops the run naming the controller, input and time.
+TEST(ClosedLoopSystem, AnExternalLawClosesTheLoopAsItsCode) {
+  const io::ModelFile open =
+      parse_block(block_model("", "  - {name: push, type: constant, value: 0}\n"));
+  std::vector<double> calls;
+  model::Controller c;
+  c.name = "law";
+  c.kind = model::ControllerKind::external;
+  c.drives = {"push"};
+  c.law = std::make_shared<const model::ControlLaw>(
+      [&calls](double t, const VecX& q, const VecX& v, std::span<double> u) {
+        calls.push_back(t);
+        u[0] = -8.0 * q[0] - 4.0 * v[0];
+      });
+  io::ModelFile closed = open;
+  closed.model = open.model.with_controller(c);
+  ASSERT_TRUE(closed.model.is_driven(0));
+  EXPECT_FALSE(open.model.has_controllers());  // the model it came from is as it was
+  const simulate::TableSink table = run_block(closed, 5.0, 0.001);
+  const int t = table.column("time"), x = table.column("x.position"), u = table.column("law.push");
+  const double w = std::sqrt(3.0);
+  for (const auto& row : table.rows) {
+    EXPECT_NEAR(row[x], std::exp(-row[t]) * (std::cos(w * row[t]) + std::sin(w * row[t]) / w),
+                1e-12);
+  }
+  EXPECT_DOUBLE_EQ(table.rows.front()[u], -8.0);
+
+  // Sampled: one call per sample, at 0, 0.1, ..., 1.
+  calls.clear();
+  c.sample_time = 0.1;
+  closed.model = open.model.with_controller(c);
+  run_block(closed, 1.0, 0.01);
+  ASSERT_EQ(calls.size(), 11u);
+  for (std::size_t k = 0; k < calls.size(); ++k) EXPECT_NEAR(calls[k], 0.1 * k, 1e-15);
+
+  // Bad laws and bad fits.
+  c.sample_time = 0.0;
+  c.law = std::make_shared<const model::ControlLaw>(
+      [](double time, const VecX&, const VecX&, std::span<double> out) {
+        out[0] = time > 0.5 ? std::nan("") : 0.0;
+      });
+  closed.model = open.model.with_controller(c);
+  try {
+    run_block(closed, 1.0, 0.01);
+    ADD_FAILURE() << "a NaN output ran on";
+  } catch (const NumericalError& e) {
+    EXPECT_NE(std::string(e.what()).find("controller 'law' gave push = nan at t = 0.5"),
+              std::string::npos)
+        << e.what();
+  }
+  model::Controller twice = c;
+  EXPECT_THROW(closed.model.with_controller(twice), InvalidArgument);  // same name
+  twice.name = "other";
+  try {
+    closed.model.with_controller(twice);
+    ADD_FAILURE() << "a signal driven twice";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("drives 'push', which controller 'law' drives too"),
+              std::string::npos);
+  }
+  model::Controller lawless = c;
+  lawless.law = nullptr;
+  EXPECT_THROW(open.model.with_controller(lawless), InvalidArgument);
+  model::Controller measuring = c;
+  measuring.measured = {"x.position"};
+  EXPECT_THROW(open.model.with_controller(measuring), InvalidArgument);
 }
 
 // A discrete state feedback with quantization, a delay of two samples and a rate limit: the
