@@ -309,6 +309,9 @@ class ModelBuilder:
     def add_joint_friction(self, name: str, *, joint: str, viscous: float) -> ModelBuilder:
         """Viscous friction τ = −viscous · v on every coordinate of a joint."""
         ...
+    def add_output(self, name: str, **kwargs: object) -> ModelBuilder:
+        """A named quantity to record, with the keys of the model file's `outputs:` entries (docs/model-format.md): one target — body=, joint=, signal=, spring=, tendon= or constraint= — and quantity=, point=, component=, frame=, sequence=. add_output('nose', body='cart', quantity='position', point=[0.5, 0, 0]"""
+        ...
     def add_signal(self, name: str, type: str, **kwargs: object) -> ModelBuilder:
         """An input signal u(t) with the model file's parameters: constant(value), step(final, start, initial, rise_time), ramp(slope, start, offset, stop), pulse(amplitude, width, start, offset, period), sine(amplitude, frequency [Hz], phase [rad], offset, start), chirp(amplitude, f0, f1, duration, start), ta"""
         ...

@@ -2,6 +2,7 @@
 // names as docs/model-format.md gives them), built and checked by model::ModelBuilder.
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <pybind11/stl.h>
 
 #include <algorithm>
@@ -31,6 +32,9 @@ struct Builder {
   ModelBuilder builder;
   std::string name;
   std::vector<std::string> signals;  // the signals added so far (add_signal, add_controller)
+  // Added to the built model after the outputs, which a controller may measure.
+  std::vector<Controller> controllers;
+  std::vector<std::string> outputs;  // each add_output's entry as JSON, the file's `outputs:`
 };
 
 // One name or a list of names.
@@ -284,7 +288,7 @@ joints, force elements and signals in any order, then build(), which checks ever
 raises InvalidArgument (InvalidInertia for mass properties) naming the item at fault.
 Every add_* method returns the builder, so calls chain.)doc")
       .def(py::init([](std::string name) {
-             return Builder{{}, std::move(name), {}};
+             return Builder{{}, std::move(name), {}, {}, {}};
            }),
            py::arg("name") = "model")
       .def(
@@ -503,7 +507,7 @@ chirp(amplitude, f0, f1, duration, start), table(times, values).)doc")
               b.builder.add_signal(Signal(input, ConstantSignal{0.0}));
               b.signals.push_back(input);
             }
-            b.builder.add_controller(std::move(c));
+            b.controllers.push_back(std::move(c));
             return b;
           },
           py::arg("name"), py::arg("type"), py::kw_only(), py::arg("measure"), py::arg("drives"),
@@ -525,9 +529,38 @@ signals; they are added here), `reference` a number or a signal's name. sample_t
 discrete (zero-order hold); the sensor's quantization, noise (σ), delay (samples) and seed, the
 actuator's u_min, u_max and rate_limit (per second) as in the file.)doc")
       .def(
+          "add_output",
+          [](Builder& b, const std::string& name, const py::kwargs& keys) -> Builder& {
+            // The entry as the file writes it, in JSON (a YAML flow map): arrays as lists.
+            py::dict entry;
+            entry["name"] = name;
+            for (const auto& [key, value] : keys) {
+              entry[key] = py::hasattr(value, "tolist") ? value.attr("tolist")() : value;
+            }
+            b.outputs.push_back(
+                py::module_::import("json").attr("dumps")(entry).cast<std::string>());
+            return b;
+          },
+          py::arg("name"),
+          R"doc(A named quantity to record, with the keys of the model file's `outputs:` entries
+(docs/model-format.md): one target — body=, joint=, signal=, spring=, tendon= or constraint= —
+and quantity=, point=, component=, frame=, sequence=. add_output('nose', body='cart',
+quantity='position', point=[0.5, 0, 0], component='x'). Simulations record it as a column,
+linearize takes it as an output, and a controller may measure it (a quantity of the state alone,
+one value). Checked when build() runs.)doc")
+      .def(
           "build",
           [](const Builder& b) {
-            io::ModelFile file{b.name, "", b.builder.build(), {}, {}, "", {}, {}, {}, {}, {}, {}};
+            model::Model model = b.builder.build();
+            std::vector<OutputSpec> outputs;
+            if (!b.outputs.empty()) {
+              outputs = io::parse_outputs(fmt::format("[{}]", fmt::join(b.outputs, ", ")),
+                                          "ModelBuilder.add_output", model);
+            }
+            for (const Controller& c : b.controllers)
+              model = model.with_controller(with_measured_outputs(c, outputs));
+            io::ModelFile file{
+                b.name, "", std::move(model), std::move(outputs), {}, "", {}, {}, {}, {}, {}, {}};
             frontend::accept_model(file);
             return ModelHandle{std::make_shared<const io::ModelFile>(std::move(file))};
           },

@@ -3,8 +3,9 @@
 //
 //   plant        ẋ = A x + B_d u + B_w w,       y = C x + D_d u + D_w w
 //   controllers  ż = A_c z + B_x x + B_r w,      u = C_c z + D_x x + D_r w
-// with w the closed loop's inputs (the references and the inputs no controller drives) and the
-// measured coordinates read from x. Then
+// with w the closed loop's inputs (the references and the inputs no controller drives), the
+// measured coordinates read from x and a measured output y_m from its row C_m of the plant
+// linearized with it as an output (a quantity of the state alone: no D). Then
 //   [ẋ; ż] = [A + B_d D_x,  B_d C_c; B_x,  A_c] [x; z] + [B_w + B_d D_r; B_r] w,
 //   y      = [C + D_d D_x,  D_d C_c] [x; z] + (D_w + D_d D_r) w.
 // Each controller's (A_c, B_x, B_r, C_c, D_x, D_r), in e = r − y_m:
@@ -52,14 +53,37 @@ int state_row(const model::Model& model, const LinearModel& plant, int index,
   return static_cast<int>(at - states.begin());
 }
 
+// The rows of the measured outputs over x (C of the plant with them as its outputs), every
+// controller's in order; empty without any.
+MatX measured_output_rows(const model::Model& model, const OperatingPoint& point,
+                          const LinearizationOptions& open) {
+  LinearizationOptions measuring = open;
+  measuring.outputs.clear();
+  measuring.output_specs.clear();
+  for (const model::ResolvedController& c : model.controllers()) {
+    for (const model::OutputSpec& spec : c.spec.measured_outputs) {
+      measuring.outputs.push_back(spec.name);
+      measuring.output_specs.push_back(spec);
+    }
+  }
+  if (measuring.outputs.empty()) return MatX();
+  return linearize(model, point, measuring).system.C();
+}
+
 Law law_of(const model::Model& model, const model::ResolvedController& c, const LinearModel& plant,
-           int reference_column, int n, int nw) {
+           const MatX& output_rows, int first_output, int reference_column, int n, int nw) {
   const model::Controller& s = c.spec;
   const auto m = static_cast<Eigen::Index>(c.drives.size());
-  // S x: the measured coordinates.
+  // S x: the measured coordinates, and the measured outputs' rows.
   MatX S = MatX::Zero(static_cast<Eigen::Index>(c.measured.size()), n);
-  for (std::size_t i = 0; i < c.measured.size(); ++i)
-    S(static_cast<Eigen::Index>(i), state_row(model, plant, c.measured[i], s.name)) = 1.0;
+  const int coordinates = model.nq() + model.nv();
+  for (std::size_t i = 0; i < c.measured.size(); ++i) {
+    const auto row = static_cast<Eigen::Index>(i);
+    if (c.measured[i] < coordinates)
+      S(row, state_row(model, plant, c.measured[i], s.name)) = 1.0;
+    else
+      S.row(row) = output_rows.row(first_output + c.measured[i] - coordinates);
+  }
   // R w: the reference's column (none for a constant setpoint, or a reference not asked for).
   MatX R = MatX::Zero(1, nw);
   if (reference_column >= 0) R(0, reference_column) = 1.0;
@@ -215,6 +239,8 @@ LinearModel linearize_closed_loop(const model::Model& model, const OperatingPoin
   }
 
   // Every controller's law, stacked: z in controller order, u in driven-column order.
+  const MatX output_rows = measured_output_rows(model, point, open);
+  int first_output = 0;
   std::vector<Law> laws;
   Eigen::Index nz = 0;
   for (const model::ResolvedController& c : model.controllers()) {
@@ -225,8 +251,9 @@ LinearModel linearize_closed_loop(const model::Model& model, const OperatingPoin
         if (inputs[i] == r) reference_column = static_cast<int>(i);
       }
     }
-    laws.push_back(
-        law_of(model, c, plant, reference_column, static_cast<int>(n), static_cast<int>(nw)));
+    laws.push_back(law_of(model, c, plant, output_rows, first_output, reference_column,
+                          static_cast<int>(n), static_cast<int>(nw)));
+    first_output += static_cast<int>(c.spec.measured_outputs.size());
     nz += laws.back().A_c.rows();
   }
   MatX A_c = MatX::Zero(nz, nz), B_x = MatX::Zero(nz, n), B_r = MatX::Zero(nz, nw);

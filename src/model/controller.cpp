@@ -83,8 +83,39 @@ void require_finite(const Controller& c, const MatX& m, std::string_view what) {
   if (!m.allFinite()) fail(c, fmt::format("{} has an entry that is not finite", what));
 }
 
-// Index into [q; v] of a coordinate's name.
-int coordinate_index(const Controller& c, const Model& model, const std::string& name) {
+// Why a controller cannot measure `spec` (a quantity that is not of the state alone, or more
+// than one value), or "" when it can.
+std::string unmeasurable(const OutputSpec& spec, const Model& model) {
+  using Q = OutputQuantity;
+  switch (spec.quantity) {
+    case Q::joint_position:
+    case Q::joint_velocity: {
+      const auto j = model.find_joint(spec.target);
+      const int n = !j                                   ? 0
+                    : spec.quantity == Q::joint_position ? model.joint(*j).nq()
+                                                         : model.joint(*j).nv();
+      return spec.component >= 0 || n == 1
+                 ? ""
+                 : "has one value per coordinate: choose one with 'component'";
+    }
+    case Q::body_position:
+    case Q::body_velocity:
+    case Q::body_angular_velocity:
+    case Q::body_euler_angles:
+    case Q::body_euler_rates:
+    case Q::transport_velocity:
+      return spec.component >= 0 ? "" : "has three values: choose one with 'component'";
+    case Q::spring_length:
+    case Q::spring_tension:
+      return "";
+    default:
+      return "depends on the accelerations or the inputs the loop sets (an algebraic loop): "
+             "measure a position- or velocity-level quantity";
+  }
+}
+
+// Index into [q; v; outputs] of a measured name: a coordinate, else one of the measured outputs.
+int measured_index(const Controller& c, const Model& model, const std::string& name) {
   std::vector<std::string_view> names;
   for (int i = 0; i < model.nq(); ++i) {
     if (model.q_name(i) == name) return i;
@@ -94,7 +125,18 @@ int coordinate_index(const Controller& c, const Model& model, const std::string&
     if (model.v_name(i) == name) return model.nq() + i;
     names.push_back(model.v_name(i));
   }
-  fail(c, fmt::format("measures '{}', which is no coordinate of the model{}; its coordinates: {}",
+  for (std::size_t k = 0; k < c.measured_outputs.size(); ++k) {
+    const OutputSpec& spec = c.measured_outputs[k];
+    if (spec.name != name) {
+      names.push_back(spec.name);
+      continue;
+    }
+    if (const std::string why = unmeasurable(spec, model); !why.empty())
+      fail(c, fmt::format("measures output '{}', which {}", name, why));
+    return model.nq() + model.nv() + static_cast<int>(k);
+  }
+  fail(c, fmt::format("measures '{}', which is no coordinate or output of the model{}; it can "
+                      "measure: {}",
                       name, did_you_mean(name, names), fmt::join(names, ", ")));
 }
 
@@ -208,7 +250,7 @@ ResolvedController resolve_controller(const Controller& controller, const Model&
   check_laws(c);
   ResolvedController r;
   r.spec = c;
-  for (const std::string& name : c.measured) r.measured.push_back(coordinate_index(c, model, name));
+  for (const std::string& name : c.measured) r.measured.push_back(measured_index(c, model, name));
   for (const std::string& name : c.drives) {
     const int s = signal_of(c, model, name, "drives");
     for (const Joint& j : model.joints()) {
@@ -238,6 +280,15 @@ ResolvedController resolve_controller(const Controller& controller, const Model&
     r.measured_rate = model.joint(j).v_index + (i - model.joint(j).q_index);
   }
   return r;
+}
+
+Controller with_measured_outputs(Controller controller, const std::vector<OutputSpec>& outputs) {
+  for (const std::string& name : controller.measured) {
+    for (const OutputSpec& spec : outputs) {
+      if (spec.name == name) controller.measured_outputs.push_back(spec);
+    }
+  }
+  return controller;
 }
 
 void check_controller_fits(const ResolvedController& controller, const Model& model) {

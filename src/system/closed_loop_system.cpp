@@ -25,10 +25,23 @@ bool same_instant(double a, double b) {
 
 ClosedLoopSystem::ClosedLoopSystem(MultibodySystem& plant) : plant_(plant) {
   const model::Model& m = plant.model();
+  // The measured outputs, every controller's in order, each one column (resolve_controller).
+  std::vector<model::OutputSpec> measured;
+  for (const model::ResolvedController& c : m.controllers()) {
+    measured.insert(measured.end(), c.spec.measured_outputs.begin(), c.spec.measured_outputs.end());
+  }
+  if (!measured.empty()) {
+    outputs_ = std::make_unique<OutputSet>(m, measured);
+    measuring_ = std::make_unique<MultibodySystem>(m);
+    output_values_.assign(outputs_->size(), 0.0);
+  }
+  int output_offset = 0;
   for (const model::ResolvedController& c : m.controllers()) {
     Loop loop;
     loop.c = &c;
     loop.z = nz_;
+    loop.outputs = output_offset;
+    output_offset += static_cast<int>(c.spec.measured_outputs.size());
     const model::Controller& s = c.spec;
     const std::size_t drives = c.drives.size();
     const auto name = [&](std::string_view what) { return fmt::format("{}.{}", s.name, what); };
@@ -39,10 +52,14 @@ ClosedLoopSystem::ClosedLoopSystem(MultibodySystem& plant) : plant_(plant) {
     }
     const bool follows_reference =
         s.kind == ControllerKind::pid || s.kind == ControllerKind::linear;
-    const std::string error_unit = !follows_reference ? ""
-                                   : c.measured[0] < m.nq()
-                                       ? model::q_unit(m, c.measured[0])
-                                       : model::v_unit(m, c.measured[0] - m.nq());
+    const int y = follows_reference ? c.measured[0] : 0;
+    const std::string error_unit =
+        !follows_reference ? ""
+        : y < m.nq()       ? model::q_unit(m, y)
+        : y < m.nq() + m.nv()
+            ? model::v_unit(m, y - m.nq())
+            : outputs_
+                  ->column_units()[static_cast<std::size_t>(loop.outputs + y - m.nq() - m.nv())];
     if (follows_reference) {
       columns_.push_back(name("reference"));
       columns_.push_back(name("error"));
@@ -101,10 +118,17 @@ ClosedLoopSystem::ClosedLoopSystem(MultibodySystem& plant) : plant_(plant) {
 
 // --- The laws ------------------------------------------------------------------------------------
 
+void ClosedLoopSystem::measure_outputs(double t, const VecX& q, const VecX& v) {
+  if (outputs_) outputs_->evaluate(*measuring_, t, q, v, output_values_);
+}
+
 double ClosedLoopSystem::measure(const Loop& loop, int i, const VecX& q, const VecX& v) const {
   const int index = loop.c->measured[static_cast<std::size_t>(i)];
-  const int nq = plant_.model().nq();
-  const double y = index < nq ? q[index] : v[index - nq];
+  const int nq = plant_.model().nq(), nv = plant_.model().nv();
+  const double y = index < nq ? q[index]
+                   : index < nq + nv
+                       ? v[index - nq]
+                       : output_values_[static_cast<std::size_t>(loop.outputs + index - nq - nv)];
   const double step = loop.c->spec.sensor.quantization;
   return step > 0.0 ? step * std::round(y / step) : y;
 }
@@ -293,6 +317,7 @@ integrate::State ClosedLoopSystem::start(double t0, const VecX& q, const VecX& v
   integrate::State state{t0, VecX::Zero(m.nq() + nz_), VecX::Zero(m.nv() + nz_)};
   state.q.head(m.nq()) = q;
   state.v.head(m.nv()) = v;
+  measure_outputs(t0, q, v);
   for (Loop& loop : loops_) {
     const model::Controller& s = loop.c->spec;
     if (s.discrete()) {
@@ -333,6 +358,7 @@ void ClosedLoopSystem::acceleration(double t, const VecX& q, const VecX& v, VecX
 
 void ClosedLoopSystem::drive_plant(double t, const VecX& q, const VecX& v) {
   const model::Limit limit = t >= step_end_ ? model::Limit::left : model::Limit::right;
+  measure_outputs(t, q, v);
   for (Loop& loop : loops_) drive(loop, t, limit, q, v);
 }
 
@@ -443,11 +469,14 @@ bool ClosedLoopSystem::project(double t, VecX& q, VecX& v) {
   // Every sample due at t.
   const VecX& q_plant = nz_ == 0 ? q : q_;
   const VecX& v_plant = nz_ == 0 ? v : v_;
+  bool measured = false;
   for (Loop& loop : loops_) {
     const double T = loop.c->spec.sample_time;
     if (T <= 0.0) continue;
     const double t_k = static_cast<double>(loop.next_sample) * T;
     if (t < t_k && !same_instant(t, t_k)) continue;
+    if (!measured) measure_outputs(t, q_plant, v_plant);
+    measured = true;
     take_sample(loop, t_k, q_plant, v_plant);
     changed = true;
   }
@@ -463,6 +492,7 @@ std::string ClosedLoopSystem::coordinate_name(int i, bool velocity) const {
 
 void ClosedLoopSystem::record(double t, const VecX& q, const VecX& v, std::span<double> out) {
   split(q, v);
+  measure_outputs(t, q_, v_);
   std::size_t c = 0;
   for (Loop& loop : loops_) {
     const model::Controller& s = loop.c->spec;

@@ -297,14 +297,20 @@ def test_place_on_the_command_line_is_pythons(cart):
     assert result.returncode == 2 and "'x' is not a number or a complex a+bj" in result.stderr
 
 
-def _cart_with_lqr(K):
-    """The cart pendulum of examples/cart_pendulum.yaml built in code, held by u = −K x."""
-    b = momenta.ModelBuilder("cart pendulum lqr")
+def _cart_builder(name):
+    """The cart pendulum of examples/cart_pendulum.yaml in code, from 10°: bodies and joints."""
+    b = momenta.ModelBuilder(name)
     b.add_body("cart", momenta.inertia.point_mass(0.5))
     b.add_body("pendulum", momenta.inertia.MassProperties(
         0.2, [0, 0, 0.3], np.diag([0.006, 0.006, 0.0001])))
     b.add_joint("x", "prismatic", parent="world", child="cart", axis=[1, 0, 0], damping=0.1)
     b.add_joint("tilt", "revolute", parent="cart", child="pendulum", axis=[0, 1, 0], q0_deg=10)
+    return b
+
+
+def _cart_with_lqr(K):
+    """The cart pendulum built in code, held by u = −K x."""
+    b = _cart_builder("cart pendulum lqr")
     b.add_controller("balance", "state_feedback",
                      measure=["x.position", "tilt.angle", "x.position_rate", "tilt.angle_rate"],
                      gain=K, drives="force")
@@ -500,3 +506,47 @@ def test_units_travel_with_the_linear_model():
     top = momenta.linearize(momenta.load_model(EXAMPLES / "heavy_top.yaml")).system
     assert top.units["tip.rx"] == "rad" and top.units["tip.wz"] == "rad/s"
     assert momenta.StateSpace([[0.0]], [[1.0]], [[1.0]], None).units == {}
+
+
+def test_a_built_model_has_outputs_and_a_controller_may_measure_one():
+    # ModelBuilder.add_output: the pendulum's tip x, 0.3 m up the rod from the pivot on the cart,
+    # is x + 0.3 sin φ; the LQR built on the coordinates runs as the model file's, and the
+    # output column equals its closed form. A PD on a cart's own position measured as a body
+    # output runs as the PD on the coordinate.
+    K = LQR_K.reshape(1, 4)
+    b = _cart_builder("cart")
+    b.add_output("tip_x", body="pendulum", quantity="position", point=np.array([0, 0, 0.3]),
+                 component="x")
+    b.add_output("cart_x", joint="x", quantity="position")
+    b.add_controller("balance", "state_feedback",
+                     measure=["cart_x", "tilt.angle", "x.position_rate", "tilt.angle_rate"],
+                     gain=K, drives="force")
+    b.add_force("push", body="cart", vector=[1, 0, 0], signal="force")
+    model = b.build()
+    assert model.output_names == ["tip_x", "cart_x"]
+    run = momenta.simulate(model, duration=3.0, dt=0.001)
+    filed = momenta.simulate(momenta.load_model(EXAMPLES / "cart_pendulum_lqr.yaml"),
+                             duration=3.0, dt=0.001)
+    np.testing.assert_allclose(run["tilt.angle"], filed["tilt.angle"], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(run["tip_x"], run["x.position"] + 0.3 * np.sin(run["tilt.angle"]),
+                               rtol=0, atol=1e-14)
+    assert run.units["tip_x"] == "m"
+    closed = momenta.linearize(model, q=[0.0, 0.0], v=[0.0, 0.0]).system
+    open_loop = momenta.linearize(model, q=[0.0, 0.0], v=[0.0, 0.0], open_loop=True).system
+    A, B = open_loop.A, open_loop.B[:, [0]]
+    np.testing.assert_allclose(closed.A, A - B @ K, rtol=0, atol=1e-11)
+    bad = momenta.ModelBuilder("cart")
+    bad.add_body("cart", momenta.inertia.point_mass(0.5))
+    bad.add_joint("x", "prismatic", parent="world", child="cart", axis=[1, 0, 0])
+    bad.add_output("a", body="cart", quantity="acceleration", component="x")
+    bad.add_controller("c", "pid", measure="a", drives="force", kp=1.0)
+    bad.add_force("push", body="cart", vector=[1, 0, 0], signal="force")
+    with pytest.raises(momenta.InvalidArgument, match="measures output 'a', which depends on the "
+                                                      "accelerations"):
+        bad.build()
+    typo = momenta.ModelBuilder("cart")
+    typo.add_body("cart", momenta.inertia.point_mass(0.5))
+    typo.add_joint("x", "prismatic", parent="world", child="cart", axis=[1, 0, 0])
+    typo.add_output("a", body="crt", quantity="position")
+    with pytest.raises(momenta.ParseError, match="did you mean 'cart'"):
+        typo.build()

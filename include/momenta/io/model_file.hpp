@@ -124,4 +124,11 @@ ModelFile read_model_file(const std::filesystem::path& path, const ModelFileOpti
 ModelFile parse_model_file(const std::string& text, const std::string& file_name,
                            const std::filesystem::path& base_dir);
 
+/// Outputs written as a model file's `outputs:` list (YAML or JSON text: "[{name: tip, body:
+/// arm, quantity: position}]"), checked against a built `model` as a file's are (its bodies,
+/// joints, signals, force elements and constraints by name). `label` names the text in
+/// messages. For models built in code (Python's ModelBuilder.add_output).
+std::vector<model::OutputSpec> parse_outputs(const std::string& text, const std::string& label,
+                                             const model::Model& model);
+
 }  // namespace momenta::io

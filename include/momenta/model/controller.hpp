@@ -43,6 +43,7 @@
 #include <vector>
 
 #include "momenta/math/types.hpp"
+#include "momenta/model/output_spec.hpp"
 
 namespace momenta::model {
 
@@ -95,8 +96,16 @@ struct Controller {
   /// s: 0 continuous, > 0 discrete with a zero-order hold.
   double sample_time = 0.0;
   /// What it measures: names of the model's coordinates (Model::q_name, v_name: "cart.position",
-  /// "tilt.angle_rate"). pid and linear: one; state_feedback: the state x.
+  /// "tilt.angle_rate") or of the outputs in measured_outputs. pid and linear: one;
+  /// state_feedback: the state x.
   std::vector<std::string> measured;
+  /// The model outputs (a model file's `outputs:` entries) a measured name may be, by their
+  /// names: each one value (a component chosen where the quantity has several) of a quantity
+  /// of the state alone — a joint's position or velocity, a body point's position or velocity,
+  /// an angular velocity, Euler angles or rates, a spring's length or tension. Accelerations,
+  /// efforts, reactions, constraint forces and signals depend on the inputs the loop sets (an
+  /// algebraic loop) and are refused.
+  std::vector<OutputSpec> measured_outputs;
   /// The signals it drives (the model's inputs). pid and linear: one; state_feedback: K's rows.
   std::vector<std::string> drives;
   /// pid and linear: the reference r, a signal's name, or empty for the constant `setpoint`.
@@ -127,7 +136,8 @@ LinearBlock transfer_function_block(const std::vector<double>& num, const std::v
 /// A controller with its names resolved against a built model (ModelBuilder::build makes these).
 struct ResolvedController {
   Controller spec;
-  /// Each measured coordinate: index into [q; v] — i < nq is q[i], else v[i − nq].
+  /// Each measured quantity: an index into [q; v; outputs] — i < nq is q[i], i < nq + nv is
+  /// v[i − nq], else spec.measured_outputs[i − nq − nv].
   std::vector<int> measured;
   /// pid without a filter on a position coordinate: the v index of its rate, else −1.
   int measured_rate = -1;
@@ -142,6 +152,10 @@ struct ResolvedController {
 /// without a sample time, min > max; an external one without a law, or with measured names or a
 /// sensor (it reads the whole state as it is).
 ResolvedController resolve_controller(const Controller& controller, const Model& model);
+
+/// `controller` with each measured name that is one of `outputs` (a model file's `outputs:`)
+/// given that output's spec in measured_outputs.
+Controller with_measured_outputs(Controller controller, const std::vector<OutputSpec>& outputs);
 
 /// Throws InvalidArgument when `model` already has a controller of `controller`'s name, or one
 /// driving a signal it drives.

@@ -12,6 +12,10 @@
 // input's unit) where ki ≠ 0 and its derivative `filter` where kd ≠ 0 and Tf > 0; a linear block's
 // z1 … zn.
 //
+// Measured outputs (Controller::measured_outputs: a body point's position, a spring's length)
+// are evaluated on a second MultibodySystem of the model (its inputs zero: they are quantities of
+// the state alone) once per evaluation, before the laws read them.
+//
 // Discrete controllers (sample time T) run at t = kT exactly: next_discontinuity() makes the
 // integrator end a step on each sample, and project() — called after every step — takes the
 // sample: reads the sensors, advances the law, holds the output until the next sample. Their
@@ -19,6 +23,7 @@
 // delay line) are kept here, with the values before the latest sample, so that a state
 // interpolated inside the last step (an event's) sees the output that acted there.
 
+#include <memory>
 #include <random>
 #include <span>
 #include <string>
@@ -27,6 +32,7 @@
 #include "momenta/integrate/integrator.hpp"
 #include "momenta/model/controller.hpp"
 #include "momenta/system/multibody_system.hpp"
+#include "momenta/system/output_set.hpp"
 
 namespace momenta::system {
 
@@ -92,7 +98,8 @@ class ClosedLoopSystem final : public integrate::SecondOrderSystem {
     Discrete now, before;
     std::vector<double> delay_line;  // the last `delay` readings of each measured quantity
     std::mt19937_64 noise_source;
-    VecX readings;  // scratch: one reading per measured quantity
+    VecX readings;    // scratch: one reading per measured quantity
+    int outputs = 0;  // offset of its measured outputs in outputs_'s columns
   };
 
   // The measured quantity i of `loop` at the plant state (q, v): exact, then quantized.
@@ -118,11 +125,19 @@ class ClosedLoopSystem final : public integrate::SecondOrderSystem {
   double saturate(const Loop& loop, double u) const;
   // The discrete states in force at t (before the latest sample when t precedes it).
   const Discrete& discrete_at(const Loop& loop, double t) const;
+  // Evaluates the measured outputs at the plant state (t, q, v) into output_values_ (nothing
+  // without measured outputs).
+  void measure_outputs(double t, const VecX& q, const VecX& v);
   // Copies the plant's parts of an augmented (q, v) into q_, v_ and the controllers' into z_.
   void split(const VecX& q, const VecX& v) const;
 
   MultibodySystem& plant_;
   std::vector<Loop> loops_;
+  // Measured outputs: every controller's, in controller order, and the system they are read on
+  // (both null without any).
+  std::unique_ptr<MultibodySystem> measuring_;
+  std::unique_ptr<OutputSet> outputs_;
+  std::vector<double> output_values_;
   int nz_ = 0;
   bool vector_space_ = false;  // the plant has no quaternions: q ⊕ dq = q + dq throughout
   double step_end_ = 0.0;

@@ -301,6 +301,8 @@ ModelFile detail::compose_model_file(const YamlNode& root, const std::filesystem
   }();
 
   std::vector<model::OutputSpec> outputs = detail::read_outputs(root, ctx, model);
+  // The controllers last: one may measure an output.
+  model = detail::add_controllers(std::move(model), ctx, outputs);
   model::SimulationSettings simulation = detail::read_simulation(root);
   std::vector<std::vector<PartSummary>> body_parts(model.bodies().size());
   for (std::size_t b = 1; b < body_parts.size(); ++b) {
@@ -319,6 +321,24 @@ ModelFile detail::compose_model_file(const YamlNode& root, const std::filesystem
                  std::move(ctx.warnings),
                  {}};
   return file;
+}
+
+std::vector<model::OutputSpec> parse_outputs(const std::string& text, const std::string& label,
+                                             const model::Model& model) {
+  const YamlNode root = YamlNode::load_string("outputs: " + text, label);
+  // The model's own names are what the outputs may name.
+  detail::Context ctx;
+  const auto declare = [&](detail::Declared& declared, const std::string& name) {
+    if (!declared.contains(name)) declared.add(name, root, root);
+  };
+  for (int b = 1; b < model.num_bodies(); ++b) declare(ctx.bodies, model.body(b).name);
+  for (const model::Joint& j : model.joints()) declare(ctx.joints, j.name);
+  for (const model::Signal& s : model.signals()) declare(ctx.signals, s.name());
+  for (const model::ForceElement& f : model.force_elements())
+    declare(ctx.forces, model::force_element_name(f));
+  for (const model::Constraint& c : model.constraints())
+    declare(ctx.constraints, model::constraint_name(c));
+  return detail::read_outputs(root, ctx, model);
 }
 
 namespace {

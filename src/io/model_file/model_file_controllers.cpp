@@ -189,8 +189,20 @@ void read_controllers(const YamlNode& root, Context& ctx, model::ModelBuilder& b
       ctx.signals.add(input, e, drives);
       builder.add_signal(model::Signal(input, model::ConstantSignal{0.0}));
     }
-    builder.add_controller(std::move(c));
+    ctx.controllers_read.push_back(std::move(c));
   }
+}
+
+model::Model add_controllers(model::Model model, const Context& ctx,
+                             const std::vector<model::OutputSpec>& outputs) {
+  for (const Controller& c : ctx.controllers_read) {
+    try {
+      model = model.with_controller(model::with_measured_outputs(c, outputs));
+    } catch (const InvalidArgument& e) {
+      throw ctx.controllers.find(c.name)->error(one_line(e.what()));
+    }
+  }
+  return model;
 }
 
 }  // namespace momenta::io::detail

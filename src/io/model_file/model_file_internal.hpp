@@ -12,6 +12,7 @@
 #include "momenta/io/model_file.hpp"
 #include "momenta/io/part_file.hpp"
 #include "momenta/io/yaml_reader.hpp"
+#include "momenta/model/controller.hpp"
 #include "momenta/model/model_builder.hpp"
 #include "one_line.hpp"
 
@@ -65,6 +66,9 @@ struct Context {
   std::map<std::string, std::vector<PartSummary>, std::less<>> body_parts;
   /// ModelFile::warnings, as the reader meets them.
   std::vector<std::string> warnings;
+  /// The controllers read, in file order: added to the model once its outputs are read
+  /// (add_controllers), since a controller may measure one.
+  std::vector<model::Controller> controllers_read;
 };
 
 /// The body `ref` names, which must be declared and may not be the world: a load, a wheel or a
@@ -92,9 +96,14 @@ const EntryType& entry_type(const YamlNode& entry, const std::vector<EntryType>&
 
 /// `inputs:` — every signal, added to the builder and to ctx.signals.
 void read_signals(const YamlNode& root, Context& ctx, model::ModelBuilder& builder);
-/// `controllers:` — every controller, and the inputs they drive (added to the builder as
-/// signals, so that forces can name them); after read_signals, before read_forces.
+/// `controllers:` — every controller (into ctx.controllers_read), and the inputs they drive
+/// (added to the builder as signals, so that forces can name them); after read_signals, before
+/// read_forces.
 void read_controllers(const YamlNode& root, Context& ctx, model::ModelBuilder& builder);
+/// The controllers read, added to the built `model`, each measured name that is one of `outputs`
+/// given its spec; an error is reported at the controller's line.
+model::Model add_controllers(model::Model model, const Context& ctx,
+                             const std::vector<model::OutputSpec>& outputs);
 /// `bodies:` and `joints:` — added to the builder and ctx; the joints are checked to form a tree
 /// rooted at the world, with every body carried by exactly one joint.
 void read_bodies(const YamlNode& root, Context& ctx, model::ModelBuilder& builder);

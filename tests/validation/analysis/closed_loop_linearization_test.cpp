@@ -143,6 +143,25 @@ TEST(ClosedLoopLinearization, MatchesCentralDifferencesOfTheClosedLoop) {
       << differences;
 }
 
+// A measured output enters the closed loop by its row of C: the cruise PI measuring the car's
+// velocity as a body output (its x component) has the closed-loop A of the PI on the joint's rate.
+TEST(ClosedLoopLinearization, AMeasuredOutputEntersByItsRow) {
+  std::ifstream in("examples/cruise_control_pi.yaml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const io::ModelFile coordinate = io::parse_model_file(text, "cruise.yaml", "examples");
+  const std::string from = "measure: x.position_rate";
+  ASSERT_NE(text.find(from), std::string::npos);
+  text.replace(text.find(from), from.size(), "measure: car_velocity");
+  text.replace(text.find("outputs:\n"), 9,
+               "outputs:\n  - {name: car_velocity, body: car, quantity: velocity, component: x}\n");
+  const io::ModelFile output = io::parse_model_file(text, "cruise.yaml", "examples");
+  const LinearModel a = linearize(coordinate.model, rest(coordinate.model));
+  const LinearModel b = linearize(output.model, rest(output.model));
+  ASSERT_EQ(a.system.A().rows(), b.system.A().rows());
+  EXPECT_LT((a.system.A() - b.system.A()).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LT((a.system.B() - b.system.B()).cwiseAbs().maxCoeff(), 1e-12);
+}
+
 TEST(ClosedLoopLinearization, RefusesWhatItCannotLinearize) {
   const io::ModelFile sampled = loop_example("satellite_attitude_pd");
   try {
