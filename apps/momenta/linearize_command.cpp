@@ -44,9 +44,15 @@ void run(const LinearizeOptions& o) {
     j["B"] = matrix_json(sys.B());
     j["C"] = matrix_json(sys.C());
     j["D"] = matrix_json(sys.D());
-    json eig = json::array();
-    for (const analysis::Mode& mode : m.modes) eig.push_back(complex_json(mode.eigenvalue));
+    // A's eigenvalues: s, or z of a sampled loop (with their s = ln z / T beside).
+    json eig = json::array(), equivalent = json::array();
+    for (const analysis::Mode& mode : m.modes) {
+      eig.push_back(complex_json(mode.z));
+      equivalent.push_back(complex_json(mode.eigenvalue));
+    }
+    j["sample_time"] = sys.sample_time();
     j["eigenvalues"] = std::move(eig);
+    if (sys.is_discrete()) j["s_equivalent"] = std::move(equivalent);
     j["controllable_rank"] = reach.rank;
     j["observable_rank"] = seen.rank;
     j["states_shifted"] = lin.states_shifted;
@@ -60,14 +66,29 @@ void run(const LinearizeOptions& o) {
              lin.point.t);
   fmt::print("states  ({}): {}\n", sys.state_count(), fmt::join(sys.state_names(), ", "));
   fmt::print("inputs  ({}): {}\n", sys.input_count(), fmt::join(sys.input_names(), ", "));
-  fmt::print("outputs ({}): {}\n\n", sys.output_count(), fmt::join(sys.output_names(), ", "));
+  fmt::print("outputs ({}): {}\n", sys.output_count(), fmt::join(sys.output_names(), ", "));
+  if (sys.is_discrete()) {
+    fmt::print(
+        "sampled every {:g} s (the controllers' sample time; the plant held between): "
+        "x[k+1] = A x[k] + B u[k]\n",
+        sys.sample_time());
+  }
+  fmt::print("\n");
   print_matrix("A", sys.A(), sys.state_names(), sys.state_names());
   print_matrix("B", sys.B(), sys.state_names(), sys.input_names());
   print_matrix("C", sys.C(), sys.output_names(), sys.state_names());
   print_matrix("D", sys.D(), sys.output_names(), sys.input_names());
-  std::vector<std::string> eig;
-  for (const analysis::Mode& mode : m.modes) eig.push_back(complex_text(mode.eigenvalue));
-  fmt::print("eigenvalues (1/s): {}\n", fmt::join(eig, ", "));
+  std::vector<std::string> eig, equivalent;
+  for (const analysis::Mode& mode : m.modes) {
+    eig.push_back(complex_text(mode.z));
+    equivalent.push_back(complex_text(mode.eigenvalue));
+  }
+  if (sys.is_discrete()) {
+    fmt::print("eigenvalues z: {}\n", fmt::join(eig, ", "));
+    fmt::print("  as s = ln(z)/T (1/s): {}\n", fmt::join(equivalent, ", "));
+  } else {
+    fmt::print("eigenvalues (1/s): {}\n", fmt::join(eig, ", "));
+  }
   if (sys.input_count() > 0) {
     fmt::print("controllability: {}\n", reachability_text(reach, "inputs", "move"));
   }

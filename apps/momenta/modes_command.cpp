@@ -58,6 +58,7 @@ void run(const ModesOptions& o) {
       for (Eigen::Index i = 0; i < mode.shape.size(); ++i)
         shape.push_back(complex_json(mode.shape[i]));
       modes.push_back({{"eigenvalue", complex_json(mode.eigenvalue)},
+                       {"z", lin.system.is_discrete() ? complex_json(mode.z) : json(nullptr)},
                        {"natural_frequency_rad_s", finite_or_null(mode.natural_frequency)},
                        {"natural_frequency_hz", finite_or_null(hz(mode.natural_frequency))},
                        {"damping_ratio", finite_or_null(mode.damping_ratio)},
@@ -96,6 +97,12 @@ void run(const ModesOptions& o) {
         "{:.4g}): the modes describe the motion linearized at this instant; --about equilibrium "
         "finds a state at rest, and --about steady analyses a spinning body's steady motion\n",
         worst, fastest);
+  }
+  if (lin.system.is_discrete()) {
+    fmt::print(
+        "sampled every {:g} s (the controllers'): each eigenvalue z of A is shown as the s it "
+        "samples, s = ln(z)/T\n",
+        lin.system.sample_time());
   }
   fmt::print("\n");
   fmt::print("{}", analysis::modes_table(m));

@@ -437,7 +437,9 @@ check; ~1e-12 relative). Raises InvalidArgument on an unknown name (with a did-y
 
 void bind_modes(py::module_& m) {
   py::class_<Mode>(m, "Mode", "One eigenvalue of A with its shape.")
-      .def_readonly("eigenvalue", &Mode::eigenvalue, "λ, 1/s.")
+      .def_readonly("eigenvalue", &Mode::eigenvalue,
+                    "λ, 1/s; of a sampled system the s = ln(z)/T its eigenvalue z samples.")
+      .def_readonly("z", &Mode::z, "A's eigenvalue itself: z of a sampled system, else λ.")
       .def_readonly("natural_frequency", &Mode::natural_frequency, "ωn = |λ|, rad/s.")
       .def_readonly("damping_ratio", &Mode::damping_ratio, "ζ = −Re λ/|λ| (NaN when λ = 0).")
       .def_readonly("damped_frequency", &Mode::damped_frequency, "|Im λ|, rad/s.")

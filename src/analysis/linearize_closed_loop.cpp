@@ -15,6 +15,9 @@
 //                   input's own rate ṙ is not an input of the linear model: left out);
 //   state_feedback  u = −K x_m (x_ref and u_ff are the point, not perturbations);
 //   linear          ż = A z + B e, u = C z + D e.
+// Sampled controllers (all at one T): the same interconnection from sample to sample, with the
+// plant held and sampled (Φ, Γ = c2d(A, B, T), zero-order hold) in place of (A, B), a block's
+// matrices in z, and a pid's discrete form (sampled_pid_law); the result has sample time T.
 
 #include <algorithm>
 #include <optional>
@@ -22,6 +25,7 @@
 #include <fmt/format.h>
 
 #include "linearize_parts.hpp"
+#include "momenta/analysis/discretize.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/system/closed_loop_system.hpp"
 
@@ -53,6 +57,34 @@ int state_row(const model::Model& model, const LinearModel& plant, int index,
   return static_cast<int>(at - states.begin());
 }
 
+// The loop's sample time: 0 when every controller is continuous, else the one T all share.
+double loop_sample_time(const model::Model& model) {
+  double T = 0.0;
+  const model::ResolvedController* continuous = nullptr;
+  const model::ResolvedController* sampled = nullptr;
+  for (const model::ResolvedController& c : model.controllers()) {
+    if (!c.spec.discrete()) {
+      continuous = &c;
+      continue;
+    }
+    if (sampled != nullptr && c.spec.sample_time != T) {
+      throw InvalidArgument(fmt::format(
+          "linearize: controllers '{}' and '{}' are sampled every {} s and {} s; a sampled linear "
+          "model has one sample time",
+          sampled->spec.name, c.spec.name, T, c.spec.sample_time));
+    }
+    sampled = &c;
+    T = c.spec.sample_time;
+  }
+  if (sampled != nullptr && continuous != nullptr) {
+    throw InvalidArgument(fmt::format(
+        "linearize: controller '{}' is sampled every {} s and '{}' is continuous; linearize the "
+        "plant alone (the controllers open) and close the loops on it",
+        sampled->spec.name, T, continuous->spec.name));
+  }
+  return T;
+}
+
 // The rows of the measured outputs over x (C of the plant with them as its outputs), every
 // controller's in order; empty without any.
 MatX measured_output_rows(const model::Model& model, const OperatingPoint& point,
@@ -68,6 +100,48 @@ MatX measured_output_rows(const model::Model& model, const OperatingPoint& point
   }
   if (measuring.outputs.empty()) return MatX();
   return linearize(model, point, measuring).system.C();
+}
+
+// A sampled pid's law from sample to sample (ClosedLoopSystem::take_sample, Åström & Murray):
+// with a = Tf/(Tf + T), b = kd/(Tf + T), states ξ = [I, D_(k−1), e_(k−1)] where used,
+//   u_k = kp e_k + I_k + D_k,  D_k = a D_(k−1) + b (e_k − e_(k−1)),  I_(k+1) = I_k + ki T e_k,
+// so ξ_(k+1) = A_ξ ξ_k + B_e e_k, u_k = C_ξ ξ_k + D_e e_k, with e = R w − S x.
+Law sampled_pid_law(const model::Controller& s, const MatX& S, const MatX& R) {
+  const model::PidGains& g = s.pid;
+  const double T = s.sample_time, Tf = g.derivative_filter;
+  const double a = Tf / (Tf + T), b = g.kd / (Tf + T);
+  const int integral = g.ki != 0.0 ? 0 : -1;
+  const int derivative = g.kd != 0.0 && Tf > 0.0 ? integral + 1 : -1;
+  const int last_error = g.kd != 0.0 ? std::max(integral, derivative) + 1 : -1;
+  const Eigen::Index nz = std::max({integral, derivative, last_error}) + 1;
+  MatX A = MatX::Zero(nz, nz), B = MatX::Zero(nz, 1), C = MatX::Zero(1, nz);
+  Law law;
+  if (integral >= 0) {
+    A(integral, integral) = 1.0;
+    B(integral, 0) = g.ki * T;
+    C(0, integral) = 1.0;
+    law.states.push_back(s.name + ".integral");
+  }
+  if (derivative >= 0) {
+    A(derivative, derivative) = a;
+    A(derivative, last_error) = -b;
+    B(derivative, 0) = b;
+    C(0, derivative) = a;
+    law.states.push_back(s.name + ".derivative");
+  }
+  if (last_error >= 0) {
+    B(last_error, 0) = 1.0;
+    C(0, last_error) = -b;
+    law.states.push_back(s.name + ".last_error");
+  }
+  const double D = g.kp + b;
+  law.A_c = A;
+  law.B_x = -B * S;
+  law.B_r = B * R;
+  law.C_c = C;
+  law.D_x = -D * S;
+  law.D_r = D * R;
+  return law;
 }
 
 Law law_of(const model::Model& model, const model::ResolvedController& c, const LinearModel& plant,
@@ -91,6 +165,7 @@ Law law_of(const model::Model& model, const model::ResolvedController& c, const 
   Law law;
   switch (s.kind) {
     case ControllerKind::pid: {
+      if (s.discrete()) return sampled_pid_law(s, S, R);
       const model::PidGains& g = s.pid;
       const double Tf = g.derivative_filter;
       const bool integral = g.ki != 0.0, filter = g.kd != 0.0 && Tf > 0.0;
@@ -165,12 +240,11 @@ LinearModel linearize_closed_loop(const model::Model& model, const OperatingPoin
           "linearize the plant alone (the controllers open) and close the loop on the result",
           c.spec.name));
     }
-    if (c.spec.discrete()) {
+    if (c.spec.sensor.delay > 0) {
       throw InvalidArgument(fmt::format(
-          "linearize: controller '{}' is sampled every {} s; a continuous linear model has no "
-          "place for its held output — linearize the plant alone (the controllers open) and "
-          "sample it (c2d) to study the sampled loop",
-          c.spec.name, c.spec.sample_time));
+          "linearize: controller '{}' reads through a delay of {} samples, which the linear model "
+          "leaves out; linearize without it (a delay adds a state per sample and quantity)",
+          c.spec.name, c.spec.sensor.delay));
     }
     for (int s : c.drives) {
       const std::string& name = model.signals()[static_cast<std::size_t>(s)].name();
@@ -184,6 +258,10 @@ LinearModel linearize_closed_loop(const model::Model& model, const OperatingPoin
       }
     }
   }
+
+  // Sampled controllers make the loop a sampled system: every one at one sample time T, none
+  // continuous beside them; the plant is then held (zero-order hold) and sampled at T.
+  const double T = loop_sample_time(model);
 
   // The controllers' outputs at the point (their states as a run from it starts them): the
   // plant is linearized with its driven inputs there.
@@ -228,7 +306,8 @@ LinearModel linearize_closed_loop(const model::Model& model, const OperatingPoin
     }
   }
   const LinearModel plant = linearize(model, point, open);
-  const StateSpace& P = plant.system;
+  // Sampled: x_(k+1) = Φ x_k + Γ u_k, the inputs held over each sample.
+  const StateSpace P = T > 0.0 ? c2d(plant.system, T) : plant.system;
   const auto n = P.A().rows();
   const auto nw = static_cast<Eigen::Index>(inputs.size());
   const MatX B_d = P.B().leftCols(nd), D_d = P.D().leftCols(nd);
@@ -280,7 +359,7 @@ LinearModel linearize_closed_loop(const model::Model& model, const OperatingPoin
   C << P.C() + D_d * D_x, D_d * C_c;
   const MatX D = D_w + D_d * D_r;
   LinearModel result = plant;
-  result.system = StateSpace(A, B, C, D, states, inputs, P.output_names());
+  result.system = StateSpace(A, B, C, D, states, inputs, P.output_names(), T);
   result.input_value = B;
   result.input_rate = MatX::Zero(n + nz, nw);
   result.input_acceleration = MatX::Zero(n + nz, nw);

@@ -54,7 +54,6 @@ Modes modes(const MatX& A, std::vector<std::string> state_names) {
 }
 
 Modes modes(const StateSpace& system) {
-  require_continuous(system, "modes (frequencies and damping ratios of s-plane poles)");
   Modes result;
   result.state_names = system.state_names();
   const Eigen::Index n = system.A().rows();
@@ -75,11 +74,17 @@ Modes modes(const StateSpace& system) {
   result.modes.reserve(static_cast<std::size_t>(n));
   for (Eigen::Index i = 0; i < n; ++i) {
     Mode mode;
-    mode.eigenvalue = lambda[i];
-    mode.natural_frequency = std::abs(lambda[i]);
-    mode.damping_ratio = mode.natural_frequency > 0.0 ? -lambda[i].real() / mode.natural_frequency
+    mode.z = lambda[i];
+    // A sampled system's z as the s it samples: z = e^(sT).
+    const double T = system.sample_time();
+    mode.eigenvalue =
+        T > 0.0 ? std::log(std::abs(lambda[i]) > 1e-300 ? lambda[i] : Complex(1e-300, 0.0)) / T
+                : lambda[i];
+    const Complex s = mode.eigenvalue;
+    mode.natural_frequency = std::abs(s);
+    mode.damping_ratio = mode.natural_frequency > 0.0 ? -s.real() / mode.natural_frequency
                                                       : std::numeric_limits<double>::quiet_NaN();
-    mode.damped_frequency = std::abs(lambda[i].imag());
+    mode.damped_frequency = std::abs(s.imag());
     mode.shape = normalized_shape(vectors.col(i));
     result.modes.push_back(std::move(mode));
   }

@@ -165,8 +165,12 @@ def test_a_sampled_system_answers_at_its_samples(cart):
     np.testing.assert_allclose(momenta.bode(held, 0, 0, frequencies=w).response, H, rtol=1e-11)
     with pytest.raises(momenta.InvalidArgument, match="above the Nyquist frequency"):
         momenta.bode(held, 0, 0, frequencies=[400.0])
-    with pytest.raises(momenta.InvalidArgument, match="sampled every 0.01 s"):
-        momenta.modes(held)
+    # Its modes: each z = e^(λT) of A shown as the λ it samples, the continuous plant's poles.
+    sampled = [mode.eigenvalue for mode in momenta.modes(held).modes]
+    np.testing.assert_allclose(np.sort_complex(sampled), np.sort_complex(cart.poles()),
+                               rtol=0, atol=1e-10)
+    for mode in momenta.modes(held).modes:
+        assert abs(np.exp(mode.eigenvalue * 0.01) - mode.z) < 1e-14
 
 
 def test_root_locus_branches_are_the_characteristic_roots():

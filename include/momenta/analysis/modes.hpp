@@ -23,7 +23,12 @@ using VecXc = Eigen::VectorXcd;
 
 /// One eigenvalue of A with its mode shape.
 struct Mode {
-  Complex eigenvalue;        ///< λ, 1/s.
+  /// λ, 1/s. Of a sampled system (sample time T): the equivalent s = ln(z)/T of A's eigenvalue z
+  /// (principal logarithm; a deadbeat z = 0 as ln(10⁻³⁰⁰)/T), so that ωn and ζ mean what they
+  /// mean for a continuous one.
+  Complex eigenvalue;
+  /// A sampled system's eigenvalue z of A itself; equal to `eigenvalue` for a continuous one.
+  Complex z;
   double natural_frequency;  ///< ωn = |λ|, rad/s.
   double damping_ratio;      ///< ζ = −Re λ/|λ|; NaN when λ = 0.
   double damped_frequency;   ///< |Im λ|, rad/s: the frequency at which the mode oscillates.

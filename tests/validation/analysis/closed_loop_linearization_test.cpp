@@ -4,6 +4,7 @@
 // integrates (system::ClosedLoopSystem) — a second, independent way to the same A.
 
 #include <algorithm>
+#include <cmath>
 #include <complex>
 #include <fstream>
 #include <iterator>
@@ -13,9 +14,11 @@
 #include <Eigen/Eigenvalues>
 
 #include "momenta/analysis/linearize.hpp"
+#include "momenta/analysis/modes.hpp"
 #include "momenta/analysis/transfer_function.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/io/model_file.hpp"
+#include "momenta/simulate/simulation.hpp"
 #include "momenta/system/closed_loop_system.hpp"
 #include "momenta_test/tolerance.hpp"
 
@@ -162,15 +165,89 @@ TEST(ClosedLoopLinearization, AMeasuredOutputEntersByItsRow) {
   EXPECT_LT((a.system.B() - b.system.B()).cwiseAbs().maxCoeff(), 1e-12);
 }
 
-TEST(ClosedLoopLinearization, RefusesWhatItCannotLinearize) {
-  const io::ModelFile sampled = loop_example("satellite_attitude_pd");
-  try {
-    linearize(sampled.model, rest(sampled.model));
-    FAIL() << "a sampled controller was linearized";
-  } catch (const InvalidArgument& e) {
-    EXPECT_NE(std::string(e.what()).find("'attitude_pd' is sampled every 0.1 s"), std::string::npos)
-        << e.what();
+// The satellite's 10 Hz PD (kp = 1250, kd = 3500, Tf = 0: u_k = kp e_k + kd (e_k − e_(k−1))/T)
+// linearized as the sampled loop it is: x = [θ, ω, e_(k−1)], A equal to the matrix assembled by
+// hand from Φ = [1 T; 0 1], Γ = [T²/2I; T/I], and the sampled run equal to its recursion
+// X_(k+1) = A X_k + c (c the constant the setpoint adds) at every sample after the first.
+TEST(ClosedLoopLinearization, ASampledLoopIsTheRecursionItsRunFollows) {
+  const io::ModelFile file = loop_example("satellite_attitude_pd");
+  const LinearModel linear = linearize(file.model, rest(file.model));
+  const StateSpace& S = linear.system;
+  const double T = 0.1, I = 5000.0, kp = 1250.0, kd = 3500.0, r = 0.1;
+  ASSERT_EQ(S.sample_time(), T);
+  ASSERT_EQ(S.state_names(), (std::vector<std::string>{"attitude.angle", "attitude.angle_rate",
+                                                       "attitude_pd.last_error"}));
+  const double b = kd / T, De = kp + b;
+  const Eigen::Vector2d gamma(T * T / (2 * I), T / I);
+  MatX expected(3, 3);
+  expected << 1 - gamma[0] * De, T, -gamma[0] * b,  //
+      -gamma[1] * De, 1, -gamma[1] * b,             //
+      -1, 0, 0;
+  EXPECT_LT((S.A() - expected).cwiseAbs().maxCoeff(), 1e-14) << S.A();
+  // Its modes: each z of A as the s it samples, z = e^(sT); the pair is the PD's, ζ ≈ 0.71.
+  const Modes m = modes(S);
+  const Eigen::VectorXcd z = Eigen::EigenSolver<MatX>(S.A()).eigenvalues();
+  ASSERT_EQ(m.modes.size(), 3u);
+  for (const Mode& mode : m.modes) {
+    EXPECT_LT(std::abs(std::exp(mode.eigenvalue * T) - mode.z), 1e-14);
+    EXPECT_LT((z.array() - mode.z).abs().minCoeff(), 1e-14);
   }
+  EXPECT_NEAR(m.modes[0].damping_ratio, 0.7127, 1e-4);
+
+  // The run's samples: θ, ω and the controller's last error.
+  simulate::SimulationOptions options;
+  options.duration = 5.0;
+  options.step = 0.01;
+  options.integrator = "rk4";
+  simulate::Simulation simulation(file.model, file.outputs, options);
+  simulate::TableSink table;
+  simulation.run(table);
+  const int t = table.column("time"), theta = table.column("attitude.angle"),
+            omega = table.column("attitude.angle_rate"),
+            last = table.column("attitude_pd.last_error");
+  std::vector<Eigen::Vector3d> samples;
+  for (const auto& row : table.rows) {
+    const double k = row[t] / T;
+    if (std::abs(k - std::round(k)) < 1e-9) samples.emplace_back(row[theta], row[omega], row[last]);
+  }
+  ASSERT_EQ(samples.size(), 51u);
+  // A row at t_k holds the sample's own error as last_error: the state e_(k−1) is the row before's.
+  const auto state = [&](std::size_t k) {
+    return Eigen::Vector3d(samples[k][0], samples[k][1], samples[k - 1][2]);
+  };
+  const Eigen::Vector3d c(gamma[0] * De * r, gamma[1] * De * r, r);
+  for (std::size_t k = 1; k + 1 < samples.size(); ++k) {
+    const Eigen::Vector3d residual = state(k + 1) - S.A() * state(k) - c;
+    EXPECT_LT(residual.cwiseAbs().maxCoeff(), 1e-12) << "sample " << k << ": " << residual;
+  }
+}
+
+TEST(ClosedLoopLinearization, RefusesWhatItCannotLinearize) {
+  // Sampled and continuous together, or at two sample times: no one linear model.
+  const auto both = [](const std::string& second) {
+    std::ifstream in("examples/satellite_attitude_pd.yaml");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    text.replace(text.find("controllers:\n"), 13,
+                 "controllers:\n  - {name: second, type: pid, measure: attitude.angle, kp: 1, "
+                 "drives: extra" +
+                     second + "}\n");
+    text.replace(text.find("forces:\n"), 8,
+                 "forces:\n  - {name: push, type: torque, body: satellite, vector: [0, 0, 1], "
+                 "signal: extra}\n");
+    const io::ModelFile file = io::parse_model_file(text, "two.yaml", "examples");
+    try {
+      linearize(file.model, rest(file.model));
+    } catch (const InvalidArgument& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_NE(both("").find("is continuous"), std::string::npos) << both("");
+  EXPECT_NE(both(", sample_time: 0.05")
+                .find("'second' and 'attitude_pd' are sampled every 0.05 s and 0.1 s"),
+            std::string::npos)
+      << both(", sample_time: 0.05");
+  EXPECT_EQ(both(", sample_time: 0.1"), "(no error)");
   const io::ModelFile cruise = loop_example("cruise_control_pi");
   LinearizationOptions options;
   options.inputs = {"engine"};
