@@ -251,6 +251,18 @@ ResolvedController resolve_controller(const Controller& controller, const Model&
   ResolvedController r;
   r.spec = c;
   for (const std::string& name : c.measured) r.measured.push_back(measured_index(c, model, name));
+  // Of the outputs offered, the ones measured stay (each once, in the order first measured).
+  const int coordinates = model.nq() + model.nv();
+  std::vector<OutputSpec> kept;
+  for (int& i : r.measured) {
+    if (i < coordinates) continue;
+    const OutputSpec& spec = c.measured_outputs[static_cast<std::size_t>(i - coordinates)];
+    const auto at = std::find_if(kept.begin(), kept.end(),
+                                 [&](const OutputSpec& k) { return k.name == spec.name; });
+    i = coordinates + static_cast<int>(at - kept.begin());
+    if (at == kept.end()) kept.push_back(spec);
+  }
+  r.spec.measured_outputs = std::move(kept);
   for (const std::string& name : c.drives) {
     const int s = signal_of(c, model, name, "drives");
     for (const Joint& j : model.joints()) {
@@ -283,11 +295,7 @@ ResolvedController resolve_controller(const Controller& controller, const Model&
 }
 
 Controller with_measured_outputs(Controller controller, const std::vector<OutputSpec>& outputs) {
-  for (const std::string& name : controller.measured) {
-    for (const OutputSpec& spec : outputs) {
-      if (spec.name == name) controller.measured_outputs.push_back(spec);
-    }
-  }
+  controller.measured_outputs = outputs;
   return controller;
 }
 

@@ -100,11 +100,11 @@ struct Controller {
   /// state_feedback: the state x.
   std::vector<std::string> measured;
   /// The model outputs (a model file's `outputs:` entries) a measured name may be, by their
-  /// names: each one value (a component chosen where the quantity has several) of a quantity
-  /// of the state alone — a joint's position or velocity, a body point's position or velocity,
-  /// an angular velocity, Euler angles or rates, a spring's length or tension. Accelerations,
-  /// efforts, reactions, constraint forces and signals depend on the inputs the loop sets (an
-  /// algebraic loop) and are refused.
+  /// names (resolved, only those measured remain, each once): each one value (a component chosen
+  /// where the quantity has several) of a quantity of the state alone — a joint's position or
+  /// velocity, a body point's position or velocity, an angular velocity, Euler angles or rates, a
+  /// spring's length or tension. Accelerations, efforts, reactions, constraint forces and signals
+  /// depend on the inputs the loop sets (an algebraic loop) and are refused.
   std::vector<OutputSpec> measured_outputs;
   /// The signals it drives (the model's inputs). pid and linear: one; state_feedback: K's rows.
   std::vector<std::string> drives;
@@ -153,8 +153,8 @@ struct ResolvedController {
 /// sensor (it reads the whole state as it is).
 ResolvedController resolve_controller(const Controller& controller, const Model& model);
 
-/// `controller` with each measured name that is one of `outputs` (a model file's `outputs:`)
-/// given that output's spec in measured_outputs.
+/// `controller` offered `outputs` (a model file's `outputs:`) to measure by name: resolving it
+/// keeps those it measures (ResolvedController::spec) and names the others in a did-you-mean.
 Controller with_measured_outputs(Controller controller, const std::vector<OutputSpec>& outputs);
 
 /// Throws InvalidArgument when `model` already has a controller of `controller`'s name, or one

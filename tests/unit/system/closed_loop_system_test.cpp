@@ -214,7 +214,14 @@ TEST(ClosedLoopSystem, AControllerMeasuresAModelOutput) {
     // Settled: the nose at 2 m.
     EXPECT_NEAR(a.rows.back()[a.column("nose")], 2.0, 1e-3);
   }
-  // What cannot be measured, said at the controller's line.
+  // A misspelled output is suggested; what cannot be measured is said at the controller's line.
+  const std::string misspelled = error_of(with_output(
+      "  - {name: c, type: pid, kp: 8, ki: 3, kd: 4, derivative_filter: 0.01, drives: push, "
+      "measure: nse}\n"));
+  EXPECT_NE(misspelled.find("measures 'nse', which is no coordinate or output of the model (did "
+                            "you mean 'nose'?)"),
+            std::string::npos)
+      << misspelled;
   const auto refused = [&](const std::string& output, const std::string& words) {
     const std::string text =
         block_model("  - {name: c, type: pid, kp: 8, drives: push, measure: o}\n") +
