@@ -175,8 +175,8 @@ and Coriolis terms, every vector in the frame's axes, as `momenta kinematics` gi
                           coordinates));
         }
         if (form != "lagrange" && form != "newton-euler" && form != "matrix") {
-          throw InvalidArgument(fmt::format(
-              "form '{}': expected 'lagrange', 'matrix' or 'newton-euler'", form));
+          throw InvalidArgument(
+              fmt::format("form '{}': expected 'lagrange', 'matrix' or 'newton-euler'", form));
         }
         symbolic::EquationOptions options = equation_options(
             h, std::move(symbols), all_symbols, form == "newton-euler", principal_axes, names);
