@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "linear_model_options.hpp"
 #include "momenta/analysis/frequency_response.hpp"
+#include "momenta/analysis/nyquist.hpp"
 #include "momenta/analysis/root_locus.hpp"
 #include "momenta/analysis/stability_margins.hpp"
 #include "momenta/analysis/step_info.hpp"
@@ -64,6 +65,37 @@ std::string margins_text(const analysis::StabilityMargins& m) {
                                               m.phase_margin_deg, m.gain_crossover)
                                 : std::string("phase margin: |G| does not cross 1 in the range");
   return fmt::format("as the loop L = G of a negative unity-feedback loop: {}; {}\n", gain, phase);
+}
+
+// Nyquist's count Z = N + P as a sentence.
+std::string nyquist_text(const analysis::NyquistCount& c) {
+  const bool sampled = c.sample_time > 0.0;
+  const char* region = sampled ? "outside the unit circle" : "in the right half-plane";
+  if (c.through_critical_point) {
+    return fmt::format(
+        "Nyquist: L passes through −1: a closed-loop pole on the {} (marginally stable)\n",
+        sampled ? "unit circle" : "imaginary axis");
+  }
+  const std::string boundary = c.boundary_poles == 0
+                                   ? std::string()
+                                   : fmt::format(" ({} on the {}, gone round)", c.boundary_poles,
+                                                 sampled ? "unit circle" : "imaginary axis");
+  return fmt::format(
+      "Nyquist: N = {} clockwise encirclement{} of −1, P = {} open-loop pole{} {}{} → Z = N + P = "
+      "{} closed-loop pole{} {}: {}\n",
+      c.encirclements, std::abs(c.encirclements) == 1 ? "" : "s", c.open_loop_unstable,
+      c.open_loop_unstable == 1 ? "" : "s", region, boundary, c.closed_loop_unstable,
+      c.closed_loop_unstable == 1 ? "" : "s", region,
+      c.closed_loop_unstable == 0 ? "stable" : "unstable");
+}
+
+json nyquist_json(const analysis::NyquistCount& c) {
+  if (c.through_critical_point) return {{"through_critical_point", true}};
+  return {{"encirclements", c.encirclements},
+          {"open_loop_unstable", c.open_loop_unstable},
+          {"boundary_poles", c.boundary_poles},
+          {"closed_loop_unstable", c.closed_loop_unstable},
+          {"through_critical_point", false}};
 }
 
 // The margins, null where there is none in the range (JSON has no infinity).
@@ -168,6 +200,7 @@ void run(const ResponseOptions& o) {
   json samples;
   std::optional<analysis::StepInfo> info;
   std::optional<analysis::StabilityMargins> margins;
+  std::optional<analysis::NyquistCount> nyquist;
   std::optional<analysis::RootLocus> locus;
   if (!o.root_locus.empty()) {
     locus = analysis::root_locus(
@@ -192,19 +225,26 @@ void run(const ResponseOptions& o) {
     samples = {{"gain", vector_json(locus->gains)}, {"poles", std::move(rows)}};
     std::vector<std::string> angles;
     for (const double a : locus->asymptote_angles_deg) angles.push_back(fmt::format("{:g}°", a));
+    // A sampled system's locus is in the z-plane, where the unit circle is the stability boundary.
+    const bool sampled = locus->sample_time > 0.0;
+    const char* plane = sampled ? "z" : "1/s";
     summary += fmt::format(
-        "root locus of 1 + k G(s) = 0 (the feedback u = r − k y), {} gains from 0 and {} to "
-        "{}:\n",
-        locus->gains.size(), number_text(o.root_locus[0], o.digits),
-        number_text(o.root_locus[1], o.digits));
-    summary += angles.empty() ? std::string("  asymptotes: none (as many zeros as poles)\n")
-                              : fmt::format("  asymptotes: {} at {} from {} (1/s)\n", angles.size(),
-                                            fmt::join(angles, ", "),
-                                            number_text(locus->asymptote_centroid, o.digits));
-    summary += fmt::format("  break-away and break-in points (1/s): {}\n",
+        "root locus of 1 + k G({}) = 0 (the feedback u = r − k y), {} gains from 0 and {} to "
+        "{}{}:\n",
+        sampled ? "z" : "s", locus->gains.size(), number_text(o.root_locus[0], o.digits),
+        number_text(o.root_locus[1], o.digits),
+        sampled ? fmt::format(", in the z-plane (sampled every {} s)",
+                              number_text(locus->sample_time, o.digits))
+                : std::string());
+    summary += angles.empty()
+                   ? std::string("  asymptotes: none (as many zeros as poles)\n")
+                   : fmt::format("  asymptotes: {} at {} from {} ({})\n", angles.size(),
+                                 fmt::join(angles, ", "),
+                                 number_text(locus->asymptote_centroid, o.digits), plane);
+    summary += fmt::format("  break-away and break-in points ({}): {}\n", plane,
                            locus_points_text(locus->breakaway, o.digits));
-    summary += fmt::format("  imaginary-axis crossings (1/s): {}\n",
-                           locus_points_text(locus->crossings, o.digits));
+    summary += fmt::format("  {} crossings ({}): {}\n", sampled ? "unit-circle" : "imaginary-axis",
+                           plane, locus_points_text(locus->crossings, o.digits));
   } else if (o.bode.empty()) {
     const analysis::TimeGrid grid{o.duration.value_or(0.0), o.points.value_or(0)};
     analysis::TimeResponse r =
@@ -265,6 +305,8 @@ void run(const ResponseOptions& o) {
     // The margins of the pair as the loop L = G of a negative unity-feedback loop.
     margins = analysis::stability_margins(sys, 0, 0, o.bode[0], o.bode[1]);
     summary += margins_text(*margins);
+    nyquist = analysis::nyquist_count(sys, 0, 0);
+    summary += nyquist_text(*nyquist);
   }
 
   if (o.json) {
@@ -275,6 +317,7 @@ void run(const ResponseOptions& o) {
     j["about"] = loaded.result.about;
     j["response"] = o.step ? "step" : o.impulse ? "impulse" : locus ? "root_locus" : "bode";
     if (o.step || o.impulse) j["amplitude"] = o.amplitude;
+    j["sample_time"] = sys.sample_time();  // 0: continuous (poles in s), else in z
     j["gain"] = tf.gain;
     j["relative_degree"] = tf.relative_degree();
     j["poles"] = complex_json(tf.poles);
@@ -283,6 +326,7 @@ void run(const ResponseOptions& o) {
     j["dc_gain"] = figure(tf.dc_gain);
     if (info) j["step_info"] = step_info_json(*info);
     if (margins) j["margins"] = margins_json(*margins);
+    if (nyquist) j["nyquist"] = nyquist_json(*nyquist);
     if (locus) {
       j["breakaway"] = locus_points_json(locus->breakaway);
       j["crossings"] = locus_points_json(locus->crossings);

@@ -18,6 +18,7 @@
 #include "momenta/analysis/linearize.hpp"
 #include "momenta/analysis/modes.hpp"
 #include "momenta/analysis/modes_text.hpp"
+#include "momenta/analysis/nyquist.hpp"
 #include "momenta/analysis/operating_point.hpp"
 #include "momenta/analysis/rolling_steady_motion.hpp"
 #include "momenta/analysis/stability_margins.hpp"
@@ -639,6 +640,35 @@ void bind_responses(py::module_& m) {
       py::arg("omega_min") = 0.01, py::arg("omega_max") = 100.0, py::arg("points") = 2000,
       "Gain and phase margins of one pair taken as the loop L = G of a negative unity-feedback "
       "loop, with their crossover frequencies, over omega_min .. omega_max rad/s.");
+
+  py::class_<NyquistCount>(m, "NyquistCount", R"doc(
+Nyquist's criterion Z = N + P for a pair as a negative unity-feedback loop L = G
+(docs/analysis.md): `encirclements` N (clockwise, of −1, counted along the contour),
+`open_loop_unstable` P and `closed_loop_unstable` Z (poles in the right half-plane, or outside the
+unit circle when sampled), `boundary_poles` (gone round), `through_critical_point`.)doc")
+      .def_readonly("encirclements", &NyquistCount::encirclements)
+      .def_readonly("open_loop_unstable", &NyquistCount::open_loop_unstable)
+      .def_readonly("boundary_poles", &NyquistCount::boundary_poles)
+      .def_readonly("closed_loop_unstable", &NyquistCount::closed_loop_unstable)
+      .def_readonly("through_critical_point", &NyquistCount::through_critical_point)
+      .def_readonly("sample_time", &NyquistCount::sample_time)
+      .def("__repr__", [](const NyquistCount& c) {
+        if (c.through_critical_point)
+          return std::string("<momenta.NyquistCount L passes through −1: marginally stable>");
+        return fmt::format("<momenta.NyquistCount N = {}, P = {} → Z = {}: {}>", c.encirclements,
+                           c.open_loop_unstable, c.closed_loop_unstable,
+                           c.closed_loop_unstable == 0 ? "stable" : "unstable");
+      });
+  m.def(
+      "nyquist",
+      [](const py::object& system, const py::object& input, const py::object& output) {
+        const StateSpace s = state_space_arg(system);
+        return nyquist_count(s, input_arg(s, input), output_arg(s, output));
+      },
+      py::arg("system"), py::arg("input") = 0, py::arg("output") = 0,
+      "Nyquist's count Z = N + P of one pair taken as the loop L = G of a negative unity-feedback "
+      "loop: N the clockwise encirclements of −1 along the Nyquist contour, P the open-loop and Z "
+      "the closed-loop unstable poles. Its curve is bode(...).response.");
 
   py::class_<TimeResponse>(m, "TimeResponse", "Response of every output and state to one input.")
       .def_readonly("input_name", &TimeResponse::input_name)

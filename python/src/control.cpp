@@ -206,7 +206,11 @@ n, each column one branch), `breakaway` and `crossings` (LocusPoint: s and k, ex
             return out;
           })
       .def_readonly("breakaway", &RootLocus::breakaway)
-      .def_readonly("crossings", &RootLocus::crossings)
+      .def_readonly("crossings", &RootLocus::crossings,
+                    "where the locus crosses the stability boundary: the imaginary axis, or the "
+                    "unit circle when sampled")
+      .def_readonly("sample_time", &RootLocus::sample_time,
+                    "s; 0 for an s-plane locus, T for a system sampled every T s (z-plane)")
       .def_readonly("asymptote_centroid", &RootLocus::asymptote_centroid)
       .def_readonly("asymptote_angles_deg", &RootLocus::asymptote_angles_deg)
       .def("__repr__", [](const RootLocus& r) {
@@ -217,9 +221,9 @@ n, each column one branch), `breakaway` and `crossings` (LocusPoint: s and k, ex
           }
           return items.empty() ? std::string("none") : fmt::format("{}", fmt::join(items, ", "));
         };
-        return fmt::format(
-            "<momenta.RootLocus {} → {}: {} gains; break-away {}; axis crossings {}>", r.input_name,
-            r.output_name, r.gains.size(), points(r.breakaway), points(r.crossings));
+        return fmt::format("<momenta.RootLocus {} → {}: {} gains; break-away {}; {} crossings {}>",
+                           r.input_name, r.output_name, r.gains.size(), points(r.breakaway),
+                           r.sample_time > 0.0 ? "unit-circle" : "axis", points(r.crossings));
       });
   m.def(
       "root_locus",
@@ -238,8 +242,8 @@ n, each column one branch), `breakaway` and `crossings` (LocusPoint: s and k, ex
       py::arg("gains") = py::none(), py::arg("k_min") = 0.01, py::arg("k_max") = 100.0,
       py::arg("points") = 200,
       "Root locus of the feedback u = r − k y on one pair, at the given gains or 0 and a log "
-      "grid from k_min to k_max; with its break-away points, imaginary-axis crossings and "
-      "asymptotes, exact.");
+      "grid from k_min to k_max; with its break-away points, imaginary-axis crossings (unit-circle "
+      "crossings in the z-plane of a sampled system) and asymptotes, exact.");
 }
 
 void bind_matrix_equations(py::module_& m) {

@@ -132,11 +132,7 @@ std::vector<std::string> controller_drives(const model::Model& model,
   if (named) return *named;
   std::vector<std::string> drives;
   for (int s = 0; s < static_cast<int>(model.signals().size()); ++s) {
-    bool prescribes = false;
-    for (const model::Joint& j : model.joints()) {
-      for (int p : j.prescribed_signal_indices) prescribes = prescribes || p == s;
-    }
-    if (!prescribes && !model.is_driven(s))
+    if (!model.joint_prescribed_by(s) && !model.is_driven(s))
       drives.push_back(model.signals()[static_cast<std::size_t>(s)].name());
   }
   if (drives.empty()) {

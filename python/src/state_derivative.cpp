@@ -30,19 +30,10 @@ struct StateDerivative {
         vdot(VecX::Zero(file->model.nv())),
         qdot(VecX::Zero(file->model.nq())) {
     for (int s = 0; s < static_cast<int>(file->model.signals().size()); ++s) {
-      if (prescribes_a_joint(file->model, s)) continue;
+      if (file->model.joint_prescribed_by(s)) continue;
       inputs.push_back(s);
       driven.drive_signal(s);
     }
-  }
-
-  static bool prescribes_a_joint(const model::Model& model, int s) {
-    for (const model::Joint& j : model.joints()) {
-      for (int p : j.prescribed_signal_indices) {
-        if (p == s) return true;
-      }
-    }
-    return false;
   }
 
   std::shared_ptr<const io::ModelFile> file;  // first: the systems refer to its model
@@ -57,7 +48,7 @@ namespace {
 std::vector<std::string> input_names(const model::Model& model) {
   std::vector<std::string> names;
   for (int s = 0; s < static_cast<int>(model.signals().size()); ++s) {
-    if (!StateDerivative::prescribes_a_joint(model, s))
+    if (!model.joint_prescribed_by(s))
       names.push_back(model.signals()[static_cast<std::size_t>(s)].name());
   }
   return names;

@@ -42,6 +42,11 @@ double arg_deg(Complex z) { return std::arg(z) * kDegreesPerRadian; }
 
 }  // namespace
 
+std::complex<double> frequency_point(const StateSpace& system, double omega) {
+  const double period = system.sample_time();
+  return period > 0.0 ? std::exp(Complex(0.0, omega * period)) : Complex(0.0, omega);
+}
+
 VecX log_frequency_grid(double omega_min, double omega_max, std::size_t points) {
   if (!(omega_min > 0.0) || !(omega_max > omega_min) || !std::isfinite(omega_max)) {
     throw InvalidArgument(
@@ -89,10 +94,7 @@ FrequencyResponse frequency_response(const StateSpace& system, std::size_t input
   const Eigen::Index count = frequencies.size();
   result.response.resize(count);
 
-  // Where G is evaluated: s = jω, or z = e^{jωT} when sampled.
-  const auto point = [period](double omega) {
-    return period > 0.0 ? std::exp(Complex(0.0, omega * period)) : Complex(0.0, omega);
-  };
+  const auto point = [&system](double omega) { return frequency_point(system, omega); };
 
   // Hessenberg form once: A = Q H Qᵀ, so G(s) = c Q (sI − H)⁻¹ Qᵀ b + d.
   const auto i = static_cast<Eigen::Index>(input);

@@ -388,6 +388,7 @@ LinearModel linearize_any(const model::Model& model, const OperatingPoint& point
   detail::fold_input_rates(result, A, C, inputs, output_names, B, D);
   result.system = StateSpace(std::move(A), std::move(B), std::move(C), std::move(D), state_names,
                              std::move(input_names), std::move(output_names));
+  detail::add_commanded_states(model, inputs, result);
   return result;
 }
 

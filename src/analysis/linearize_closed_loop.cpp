@@ -18,6 +18,8 @@
 // Sampled controllers (all at one T): the same interconnection from sample to sample, with the
 // plant held and sampled (Φ, Γ = c2d(A, B, T), zero-order hold) in place of (A, B), a block's
 // matrices in z, and a pid's discrete form (sampled_pid_law); the result has sample time T.
+// A drive that commands a coordinate's acceleration is, in the plant, that acceleration, with the
+// coordinate and its rate among the plant's states (linearize.hpp).
 
 #include <algorithm>
 #include <optional>

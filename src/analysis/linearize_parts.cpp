@@ -79,7 +79,8 @@ std::vector<Input> resolve_inputs(const model::Model& model,
   if (names.empty()) {
     for (std::size_t s = 0; s < use.size(); ++s) {
       if (!use[s].load && !use[s].prescribed) continue;
-      inputs.push_back({model.signals()[s].name(), static_cast<int>(s), use[s].prescribed});
+      inputs.push_back({model.signals()[s].name(), static_cast<int>(s), use[s].prescribed,
+                        use[s].prescribed && model.is_driven(static_cast<int>(s))});
     }
     return inputs;
   }
@@ -119,7 +120,7 @@ std::vector<Input> resolve_inputs(const model::Model& model,
           "joint, so it has no effect",
           name, model.signals()[static_cast<std::size_t>(*signal)].name()));
     }
-    inputs.push_back({name, *signal, u.prescribed});
+    inputs.push_back({name, *signal, u.prescribed, u.prescribed && model.is_driven(*signal)});
   }
   return inputs;
 }
@@ -271,6 +272,7 @@ void fold_input_rates(LinearModel& result, const MatX& A, const MatX& C,
   D = result.feedthrough_value;
   const auto p = C.rows();
   for (Eigen::Index j = 0; j < B.cols(); ++j) {
+    if (inputs[static_cast<std::size_t>(j)].commanded) continue;  // the closed loop's states
     const VecX E2 = result.input_acceleration.col(j);
     const VecX E1 = A * E2 + result.input_rate.col(j);
     if (E1.isZero(0.0) && E2.isZero(0.0) && result.feedthrough_rate.col(j).isZero(0.0) &&
@@ -303,6 +305,49 @@ void fold_input_rates(LinearModel& result, const MatX& A, const MatX& C,
       }
     }
   }
+}
+
+void add_commanded_states(const model::Model& model, const std::vector<Input>& inputs,
+                          LinearModel& result) {
+  std::vector<Eigen::Index> columns;  // the commanded inputs'
+  for (std::size_t j = 0; j < inputs.size(); ++j) {
+    if (inputs[j].commanded) columns.push_back(static_cast<Eigen::Index>(j));
+  }
+  if (columns.empty()) return;
+  if (result.states_shifted) {
+    throw InvalidArgument(fmt::format(
+        "linearize: input '{}' commands an acceleration, which cannot be linearized beside a "
+        "prescribed motion whose rates enter (its states shifted); linearize with that motion "
+        "held",
+        inputs[static_cast<std::size_t>(columns.front())].name));
+  }
+  const StateSpace& S = result.system;
+  const Eigen::Index n = S.A().rows(), m = S.B().cols(), p = S.C().rows();
+  const auto c = static_cast<Eigen::Index>(columns.size());
+  MatX A = MatX::Zero(n + 2 * c, n + 2 * c), B = MatX::Zero(n + 2 * c, m);
+  MatX C(p, n + 2 * c), D = S.D();
+  A.topLeftCorner(n, n) = S.A();
+  B.topRows(n) = S.B();
+  C.leftCols(n) = S.C();
+  std::vector<std::string> states = S.state_names();
+  std::vector<std::string> rates;
+  for (Eigen::Index k = 0; k < c; ++k) {
+    const Eigen::Index j = columns[static_cast<std::size_t>(k)];
+    A.col(n + k).head(n) = result.input_value.col(j);
+    A.col(n + c + k).head(n) = result.input_rate.col(j);
+    A(n + k, n + c + k) = 1.0;
+    B.col(j).head(n) = result.input_acceleration.col(j);
+    B(n + c + k, j) = 1.0;
+    C.col(n + k) = result.feedthrough_value.col(j);
+    C.col(n + c + k) = result.feedthrough_rate.col(j);
+    D.col(j) = result.feedthrough_acceleration.col(j);
+    const auto coordinate = model.prescribed_coordinate(inputs[static_cast<std::size_t>(j)].signal);
+    states.push_back(model.q_name(coordinate->q));
+    rates.push_back(model.v_name(coordinate->v));
+  }
+  states.insert(states.end(), rates.begin(), rates.end());
+  result.system =
+      StateSpace(A, B, C, D, states, S.input_names(), S.output_names(), S.sample_time());
 }
 
 // Tangent step for ∂δ̇/∂δ: exact for any |h| < π (J_r(δ)⁻¹ beyond its linear term is even in δ).

@@ -25,6 +25,9 @@ struct Input {
   std::string name;
   int signal = -1;
   bool prescribed = false;  // drives a prescribed joint (value by Richardson; rate, acceleration)
+  // A controller drives it: it commands the coordinate's acceleration. Left unfolded: the closed
+  // loop makes the coordinate and its rate states (linearize_closed_loop.cpp).
+  bool commanded = false;
 };
 
 /// The inputs named (signals, or prescribed coordinates standing for their signals); every
@@ -82,12 +85,20 @@ void check_jacobians_finite(const Jacobians& J);
 MatX output_matrix(LinearModel& result, const std::vector<OutputRow>& rows, const Jacobians& J,
                    const VecX& g0, int rows_before_outputs, const VecX& state_values);
 
-/// Folds each prescribed input's rate and acceleration into its position (linearize.hpp):
+/// Folds each prescribed input's rate and acceleration into its position (linearize.hpp), but a
+/// commanded one's (left to the closed loop):
 /// w = x − E₁ u − E₂ u̇, E₂ = B₂, E₁ = A E₂ + B₁; B = B₀ + A E₁, D = D₀ + C E₁. Throws when an
 /// output feels a rate or acceleration that no state shift absorbs (an improper transfer).
 void fold_input_rates(LinearModel& result, const MatX& A, const MatX& C,
                       const std::vector<Input>& inputs,
                       const std::vector<std::string>& output_names, MatX& B, MatX& D);
+
+/// Each commanded input's coordinate p and its rate ṗ appended to the states of result.system,
+/// its acceleration a the input (linearize.hpp): from the unfolded columns, ẋ = A x + B₀ p + B₁ ṗ
+/// + B₂ a, d/dt [p; ṗ] = [ṗ; a], y = C x + D₀ p + D₁ ṗ + D₂ a. Nothing without commanded inputs.
+/// Throws InvalidArgument where a prescribed-motion input's rates also enter (folded states).
+void add_commanded_states(const model::Model& model, const std::vector<Input>& inputs,
+                          LinearModel& result);
 
 /// T = ∂δ̇/∂δ (free × free coordinates) from δ̇ = J_r(δ)⁻¹ ω at δ = 0 and velocities v0: −½[ω]×
 /// on a ball or free joint's rotation tangent, zero elsewhere (and at rest). Exact: central

@@ -137,6 +137,46 @@ std::vector<LocusPoint> axis_crossings(const TransferFunction& g, double scale) 
   return points;
 }
 
+// Crossings of the unit circle: the roots z = e^{jθ} of Im[D(z) conj N(z)] on it. There conj z
+// = 1/z, so z^n · 2j Im[…] = z^{n−m} D(z) N̄ʳ(z) − D̄ʳ(z) N(z), N̄ʳ(z) = z^m conj N(1/conj z)
+// (conjugated coefficients, reversed), a polynomial of degree ≤ 2n. z = ±1 are always tried: a
+// real polynomial's Im part vanishes there, the polynomial's roots then come in close pairs.
+std::vector<LocusPoint> circle_crossings(const TransferFunction& g, double scale) {
+  const ComplexPolynomial N = from_roots(g.zeros);
+  const ComplexPolynomial D = from_roots(g.poles);
+  const auto reversed_conjugate = [](const ComplexPolynomial& p) {
+    ComplexPolynomial r(p.rbegin(), p.rend());
+    for (Complex& c : r) c = std::conj(c);
+    return r;
+  };
+  const std::size_t shift = D.size() - N.size();  // n − m ≥ 0 for a proper G
+  ComplexPolynomial first = product(D, reversed_conjugate(N));
+  first.insert(first.begin(), shift, 0.0);
+  const ComplexPolynomial second = product(reversed_conjugate(D), N);
+  first.resize(std::max(first.size(), second.size()), 0.0);
+  for (std::size_t k = 0; k < second.size(); ++k) first[k] -= second[k];
+  std::vector<Complex> candidates{Complex(1.0, 0.0), Complex(-1.0, 0.0)};
+  for (const Complex& z : roots_of(first)) {
+    if (std::abs(std::abs(z) - 1.0) <= 1e-6 && z.imag() > 1e-7)
+      candidates.push_back(z / std::abs(z));
+  }
+  // A zero or pole on the circle is where a branch ends or starts (k = ∞ or 0), not a crossing.
+  const auto at_a_root = [&](Complex z) {
+    for (const auto* list : {&g.zeros, &g.poles}) {
+      for (const Complex& r : *list) {
+        if (std::abs(z - r) <= 1e-7 * scale) return true;
+      }
+    }
+    return false;
+  };
+  std::vector<LocusPoint> points;
+  for (const Complex& z : candidates) {
+    if (at_a_root(z)) continue;
+    if (const auto point = locus_point(g, z, scale)) points.push_back(*point);
+  }
+  return points;
+}
+
 void by_gain(std::vector<LocusPoint>& points) {
   std::sort(points.begin(), points.end(), [](const LocusPoint& a, const LocusPoint& b) {
     return a.gain != b.gain ? a.gain < b.gain : a.s.imag() > b.s.imag();
@@ -198,8 +238,8 @@ VecX log_gain_grid(double k_min, double k_max, std::size_t points) {
 
 RootLocus root_locus(const StateSpace& system, std::size_t input, std::size_t output,
                      const VecX& gains) {
-  require_continuous(system, "root_locus");
   RootLocus locus;
+  locus.sample_time = system.sample_time();
   locus.open_loop = transfer_function(system, input, output);
   locus.input_name = locus.open_loop.input_name;
   locus.output_name = locus.open_loop.output_name;
@@ -251,7 +291,8 @@ RootLocus root_locus(const StateSpace& system, std::size_t input, std::size_t ou
   }
   locus.breakaway = breakaway_points(snapped, scale);
   by_gain(locus.breakaway);
-  locus.crossings = axis_crossings(snapped, scale);
+  locus.crossings =
+      locus.sample_time > 0.0 ? circle_crossings(snapped, scale) : axis_crossings(snapped, scale);
   by_gain(locus.crossings);
   const int excess = g.relative_degree();
   if (excess > 0) {

@@ -40,7 +40,9 @@ StabilityMargins stability_margins(const StateSpace& system, std::size_t input, 
                                    double omega_min, double omega_max, std::size_t points) {
   const FrequencyResponse f =
       frequency_response(system, input, output, omega_min, omega_max, points);
-  const auto G = [&](double omega) { return evaluate(system, input, output, Complex(0.0, omega)); };
+  const auto G = [&](double omega) {
+    return evaluate(system, input, output, frequency_point(system, omega));
+  };
   StabilityMargins m;
   for (Eigen::Index k = 0; k + 1 < f.frequency.size(); ++k) {
     const double a = f.frequency[k], b = f.frequency[k + 1];

@@ -147,14 +147,6 @@ StateSpace StateSpace::siso(std::string_view input, std::string_view output) con
   return siso(input_index(input), output_index(output));
 }
 
-void require_continuous(const StateSpace& system, const char* what) {
-  if (system.is_discrete()) {
-    throw InvalidArgument(
-        fmt::format("{} is for continuous-time systems; this one is sampled every {} s", what,
-                    system.sample_time()));
-  }
-}
-
 StateSpace second_order_state_space(const MatX& M, const MatX& C_damping, const MatX& K,
                                     const MatX& F, const MatX& Cq, const MatX& Cv,
                                     std::vector<std::string> coordinate_names,

@@ -265,14 +265,14 @@ ResolvedController resolve_controller(const Controller& controller, const Model&
   r.spec.measured_outputs = std::move(kept);
   for (const std::string& name : c.drives) {
     const int s = signal_of(c, model, name, "drives");
-    for (const Joint& j : model.joints()) {
-      for (const std::string& p : j.prescribed_signals) {
-        if (p == name) {
-          fail(c, fmt::format("drives '{}', which prescribes joint '{}': a controller's output "
-                              "has no second derivative; drive a force or torque instead",
-                              name, j.name));
-        }
-      }
+    // Driving a prescribed joint's signal commands its coordinate's acceleration: one coordinate
+    // per signal, which a ball or free joint's rotation vector is not.
+    if (const auto j = model.joint_prescribed_by(s); j && !model.prescribed_coordinate(s)) {
+      const Joint& joint = model.joint(*j);
+      fail(c, fmt::format("drives '{}', which prescribes the {} joint '{}': a controller commands "
+                          "the acceleration of one coordinate (a revolute, prismatic, cylindrical, "
+                          "universal or planar joint's), not of a rotation vector",
+                          name, joint_type_name(joint.type), joint.name));
     }
     r.drives.push_back(s);
   }

@@ -1,5 +1,6 @@
 #include "momenta/model/model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -94,6 +95,23 @@ bool Model::is_driven(int s) const {
     }
   }
   return false;
+}
+std::optional<int> Model::joint_prescribed_by(int s) const {
+  for (int j = 0; j < static_cast<int>(joints_.size()); ++j) {
+    for (int p : joints_[static_cast<std::size_t>(j)].prescribed_signal_indices) {
+      if (p == s) return j;
+    }
+  }
+  return std::nullopt;
+}
+std::optional<Model::Coordinate> Model::prescribed_coordinate(int s) const {
+  const std::optional<int> j = joint_prescribed_by(s);
+  if (!j) return std::nullopt;
+  const Joint& joint = joints_[static_cast<std::size_t>(*j)];
+  if (joint.type == JointType::spherical || joint.type == JointType::free) return std::nullopt;
+  const auto& signals = joint.prescribed_signal_indices;
+  const auto k = static_cast<int>(std::find(signals.begin(), signals.end(), s) - signals.begin());
+  return Coordinate{joint.q_index + k, joint.v_index + k};
 }
 
 std::optional<int> Model::find_signal(std::string_view name) const {

@@ -68,7 +68,9 @@ std::string signal_unit(const Model& model, int signal_index) {
       if (j.type == JointType::spherical || j.type == JointType::free) {
         return k < 3 ? "rad" : "m";
       }
-      return q_unit(model, j.q_index + static_cast<int>(k));
+      // Driven by a controller, it commands the coordinate's acceleration (model/controller.hpp).
+      const std::string unit = q_unit(model, j.q_index + static_cast<int>(k));
+      return model.is_driven(signal_index) && !unit.empty() ? unit + "/s²" : unit;
     }
   }
   for (const ForceElement& element : model.force_elements()) {

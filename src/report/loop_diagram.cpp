@@ -135,8 +135,11 @@ class LoopPicture {
       block(left, path[i]);
       cursor = left + path[i].width();
     }
-    const double plant_left = cursor + kGap + 40.0;
-    arrow(cursor, kPathY, plant_left, kPathY, fmt::format("{}", fmt::join(driven, ", ")));
+    // The drives' arrow as long as its label ("cart_drive (m/s²)"), at least the usual gap.
+    const std::string drives = fmt::format("{}", fmt::join(driven, ", "));
+    const double plant_left =
+        cursor + std::max(kGap + 40.0, kCharWidth * characters(drives) + 24.0);
+    arrow(cursor, kPathY, plant_left, kPathY, drives);
     block(plant_left, plant);
     const double plant_right = plant_left + plant.width();
     const double tap = plant_right + 40.0;

@@ -128,7 +128,12 @@ void Derivation::make_coordinate_symbols() {
           const std::string& full = model_.q_name(qi);
           name = base + "_" + identifier(full.substr(full.find('.') + 1));
         }
-        if (j.is_prescribed()) {
+        // A prescribed coordinate is its signal, a function of time; a commanded one (its signal
+        // a controller's: model/controller.hpp) stays the joint's coordinate, its acceleration
+        // the controller's output.
+        const bool commanded =
+            j.is_prescribed() && model_.is_driven(j.prescribed_signal_indices[k]);
+        if (j.is_prescribed() && !commanded) {
           const model::Signal& s = model_.signals()[j.prescribed_signal_indices[k]];
           name = identifier(s.name());
         }
@@ -687,6 +692,7 @@ double Derivation::initial_value(const ex& e) const {
   }
   for (const model::Joint& j : model_.joints()) {
     for (int k = 0; k < static_cast<int>(j.prescribed_signal_indices.size()); ++k) {
+      if (model_.is_driven(j.prescribed_signal_indices[static_cast<std::size_t>(k)])) continue;
       const double u = model_
                            .signals()[static_cast<std::size_t>(
                                j.prescribed_signal_indices[static_cast<std::size_t>(k)])]

@@ -131,6 +131,13 @@ Inputs inputs_of(const Equations::Impl& e, const model::Model& model,
           model::joint_type_name(j.type), j.name));
     }
     for (int k = 0; k < static_cast<int>(j.prescribed_signal_indices.size()); ++k) {
+      if (model.is_driven(j.prescribed_signal_indices[static_cast<std::size_t>(k)])) {
+        throw InvalidArgument(fmt::format(
+            "joint {}'s acceleration is commanded by a controller: its linearization in symbols "
+            "is not written; `momenta linearize` gives the numbers (the coordinate and its rate "
+            "states, the acceleration an input)",
+            j.name));
+      }
       const model::SignalSample& sample = signals[static_cast<std::size_t>(
           j.prescribed_signal_indices[static_cast<std::size_t>(k)])];
       const ex& value = e.q[static_cast<std::size_t>(j.q_index + k)];

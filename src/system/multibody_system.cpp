@@ -59,6 +59,8 @@ MultibodySystem::MultibodySystem(const model::Model& model)
       offsets_(model.signals().size(), model::SignalSample{0.0, 0.0, 0.0}),
       driven_(model.signals().size(), 0),
       driven_values_(model.signals().size(), 0.0),
+      commanded_q_(model.signals().size(), -1),
+      commanded_v_(model.signals().size(), -1),
       applied_samples_(model.signals().size(), model::SignalSample{0.0, 0.0, 0.0}),
       singular_q_(VecX::Zero(model.nq())),
       singular_v_(VecX::Zero(model.nv())),
@@ -67,8 +69,13 @@ MultibodySystem::MultibodySystem(const model::Model& model)
       vdot_mean_(VecX::Zero(model.nv())),
       lambda_mean_(VecX::Zero(0)) {
   check_simulable(model);
-  for (std::size_t s = 0; s < driven_.size(); ++s)
+  for (std::size_t s = 0; s < driven_.size(); ++s) {
     driven_[s] = model.is_driven(static_cast<int>(s));
+    const auto coordinate = model.prescribed_coordinate(static_cast<int>(s));
+    if (!driven_[s] || !coordinate) continue;
+    commanded_q_[s] = coordinate->q;
+    commanded_v_[s] = coordinate->v;
+  }
   conserves_energy_ =
       !model.has_prescribed_joints() && dynamics::force_elements_conservative(model);
   // Angular momentum about the centre of mass: besides conserving energy, no body may be held
@@ -136,8 +143,14 @@ void MultibodySystem::free_dynamics(double t, const VecX& q, const VecX& v, mode
   // Every signal once at t (offsets added), from the side `limit` says at a breakpoint.
   const auto& signals = model_.signals();
   for (std::size_t i = 0; i < signals.size(); ++i) {
-    samples_[i] = driven_[i] ? model::SignalSample{driven_values_[i] + offsets_[i].value, 0.0, 0.0}
-                             : offset_sample(signals[i], offsets_[i], t, limit);
+    if (commanded_q_[i] >= 0) {
+      samples_[i] = {q[commanded_q_[i]] + offsets_[i].value, v[commanded_v_[i]] + offsets_[i].rate,
+                     driven_values_[i] + offsets_[i].acceleration};
+    } else if (driven_[i]) {
+      samples_[i] = {driven_values_[i] + offsets_[i].value, 0.0, 0.0};
+    } else {
+      samples_[i] = offset_sample(signals[i], offsets_[i], t, limit);
+    }
     signal_values_[i] = samples_[i].value;
   }
 
@@ -284,23 +297,23 @@ std::string MultibodySystem::coordinate_name(int i, bool velocity) const {
 void MultibodySystem::apply_prescribed_motion(double t, VecX& q, VecX& v) const {
   if (!model_.has_prescribed_joints()) return;
   const auto& signals = model_.signals();
-  for (std::size_t i = 0; i < signals.size(); ++i)
-    applied_samples_[i] = offset_sample(signals[i], offsets_[i], t);
+  for (std::size_t i = 0; i < signals.size(); ++i) {
+    applied_samples_[i] = commanded_q_[i] >= 0
+                              ? model::SignalSample{q[commanded_q_[i]], v[commanded_v_[i]], 0.0}
+                              : offset_sample(signals[i], offsets_[i], t);
+  }
   write_prescribed(model_, applied_samples_, q, v, nullptr);
 }
 
 void MultibodySystem::drive_signal(int s) {
   if (s < 0 || s >= static_cast<int>(driven_.size()))
     throw InvalidArgument(fmt::format("no signal #{}; the model has {}", s, driven_.size()));
-  for (const model::Joint& j : model_.joints()) {
-    for (int p : j.prescribed_signal_indices) {
-      if (p == s) {
-        throw InvalidArgument(fmt::format(
-            "input '{}' prescribes joint '{}': its motion is the signal's, with rates; it cannot "
-            "be set as a value",
-            model_.signals()[static_cast<std::size_t>(s)].name(), j.name));
-      }
-    }
+  if (const auto j = model_.joint_prescribed_by(s)) {
+    throw InvalidArgument(fmt::format(
+        "input '{}' prescribes joint '{}': its motion is the signal's, with rates; it cannot be "
+        "set as a value",
+        model_.signals()[static_cast<std::size_t>(s)].name(),
+        model_.joints()[static_cast<std::size_t>(*j)].name));
   }
   driven_[static_cast<std::size_t>(s)] = 1;
 }

@@ -392,6 +392,9 @@ test('feedback loops: each controller drawn as its block diagram, reference, err
         'Loop attitude_pd: reference, measured and error': [['attitude_pd.reference', 'attitude.angle', 'attitude_pd.error'], 'rad'] } },
     cart_pendulum_lqr: { words: ['state feedback balance', 'u = K e, K 1×4', 'force (N)', 'x_ref'],
       blocks: 2, junctions: 1, plots: { 'Loop balance: control effort': [['balance.force'], 'N'] } },
+    // A commanded joint: the controller's output is the cart's acceleration.
+    cart_pendulum_servo: { words: ['state feedback balance', 'cart_drive (m/s²)'],
+      blocks: 2, junctions: 1, plots: { 'Loop balance: control effort': [['balance.cart_drive'], 'm/s²'] } },
   };
   for (const [name, want] of Object.entries(expected)) {
     const file = path.join(work, `${name}.html`);

@@ -103,6 +103,26 @@ def test_margins_as_franklin_has_them_and_as_the_command_line_prints_them():
     assert ours.gain_crossover == cli["margins"]["gain_crossover"]
 
 
+def test_nyquist_count_against_the_closed_loop_and_the_command_line():
+    """K/(s (s + 1)(s + 5)) (scipy's lti): stable below Routh's K = 30, two poles in the right
+    half-plane above — Z = N + P against the closed loop's eigenvalues; the quarter car's count
+    is `response --bode --json`'s."""
+    import scipy.signal as sig
+    for K, Z in ((10.0, 0), (50.0, 2)):
+        n = momenta.nyquist(sig.lti([K], [1.0, 6.0, 5.0, 0.0]))
+        closed = np.roots([1.0, 6.0, 5.0, K])
+        assert (n.encirclements, n.open_loop_unstable, n.closed_loop_unstable) == (Z, 0, Z)
+        assert n.closed_loop_unstable == int(np.sum(closed.real > 0))
+        assert ("unstable" in repr(n)) == (Z > 0)
+    path = EXAMPLES / "quarter_car.yaml"
+    system = momenta.linearize(momenta.load_model(path)).system
+    inp, out = system.input_names[0], system.output_names[0]
+    ours = momenta.nyquist(system, inp, out)
+    cli = cli_json("response", path, "--input", inp, "--output", out, "--bode", 0.1, 1000)
+    assert cli["nyquist"]["closed_loop_unstable"] == ours.closed_loop_unstable
+    assert cli["nyquist"]["encirclements"] == ours.encirclements
+
+
 def test_state_space_from_matrices_mass_spring_damper_step():
     # m x'' + c x' + k x = u; x(∞) = 1/k; ωn, ζ as the textbook.
     m, c, k = 2.0, 0.8, 50.0

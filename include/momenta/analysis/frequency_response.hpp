@@ -10,6 +10,7 @@
 // pivoting (Laub, "Efficient multivariable frequency response computations", IEEE TAC 26(2),
 // 1981).
 
+#include <complex>
 #include <cstddef>
 #include <string>
 
@@ -34,6 +35,10 @@ struct FrequencyResponse {
   /// be off by 360° beyond it.
   VecX phase_deg;
 };
+
+/// Where a system's response at ω rad/s is evaluated: s = jω, or z = e^{jωT} when it is sampled
+/// every T s.
+std::complex<double> frequency_point(const StateSpace& system, double omega);
 
 /// `points` angular frequencies from omega_min to omega_max (rad/s), equally spaced in log ω,
 /// both ends included. Throws InvalidArgument unless 0 < omega_min < omega_max (finite) and

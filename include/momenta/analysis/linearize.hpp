@@ -45,6 +45,12 @@
 // directly (C E₂ + D₁ ≠ 0 or D₂ ≠ 0: a velocity carried by the prescribed joint) makes the
 // transfer function improper and is refused.
 //
+// A commanded coordinate (a prescribed joint's signal a controller drives: model/controller.hpp)
+// is no motion of time but the integral of its commanded acceleration a: it and its rate join the
+// states, after the others, and a is the input — ẋ = A x + B₀ p + B₁ ṗ + B₂ a,
+// d/dt [p; ṗ] = [ṗ; a], y = C x + D₀ p + D₁ ṗ + D₂ a, from the same unfolded columns. So does the
+// plant a controller is designed on (close_loops = false) and the closed loop.
+//
 // Models with constraints (model/constraint.hpp): the states are independent coordinates, by
 // coordinate partitioning (Wehage & Haug 1982). At the operating point (made consistent first,
 // as a simulation's initial state is) the independent rows of the constraint Jacobian G split

@@ -14,6 +14,11 @@
 //     roots of Im[D(jω) · conj N(jω)] (a polynomial in ω, Routh's criterion's crossings): the
 //     gains at which the loop turns unstable or stable;
 //   - the asymptotes: centroid (Σp − Σz)/(n − m) and angles (2l + 1)·180°/(n − m).
+// A sampled system's locus lies in the z-plane (poles z, the characteristic equation 1 + k G(z) =
+// 0), where the stability boundary is the unit circle: its landmarks are the same but for the
+// crossings, which are those of the unit circle, z = e^{jθ}, from the roots on it of
+// z^n Im-part polynomial z^{n−m} D(z) N̄ʳ(z) − D̄ʳ(z) N(z) (ʳ: coefficients reversed, so that on
+// the circle N̄ʳ(z) = z^m conj N(z)), with z = ±1 always tried.
 // For the landmarks a pole's or zero's real or imaginary part within 1e-7 of the largest |p|, |z|
 // of zero is taken as zero: a multiple pole comes out of the eigenvalue iteration about √ε apart
 // (a double integrator's as ±1e-9j), which would draw crossings at gains near 0.
@@ -27,7 +32,7 @@ namespace momenta::analysis {
 
 /// A point of the locus with the gain that puts a closed-loop pole there.
 struct LocusPoint {
-  Complex s;    ///< 1/s.
+  Complex s;    ///< 1/s; z (dimensionless) on a sampled system's locus.
   double gain;  ///< k > 0.
 };
 
@@ -40,8 +45,11 @@ struct RootLocus {
   /// neighbour, so a column traces one pole (gains × n).
   Eigen::MatrixXcd poles;
   std::vector<LocusPoint> breakaway;  ///< Break-away and break-in points, by gain.
-  /// Crossings of the imaginary axis at s = jω, ω ≥ 0 (one of each conjugate pair), by gain.
+  /// Crossings of the stability boundary, by gain: of the imaginary axis at s = jω, ω ≥ 0, or
+  /// for a sampled system of the unit circle at z = e^{jθ}, 0 ≤ θ ≤ π (one of each conjugate
+  /// pair).
   std::vector<LocusPoint> crossings;
+  double sample_time = 0.0;  ///< s; 0: the s-plane, T > 0: the z-plane of a system sampled at T.
   double asymptote_centroid = 0.0;           ///< 1/s; 0 when n = m.
   std::vector<double> asymptote_angles_deg;  ///< n − m of them, in [0°, 360°).
 };
@@ -49,7 +57,7 @@ struct RootLocus {
 /// The root locus of the pair (input, output) over `gains` (each finite and ≥ 0). The
 /// closed-loop poles at each gain are the eigenvalues of A − k B (1 + k D)⁻¹ C (the state space
 /// itself, not the polynomial; with the pair's cancelled modes, which do not move).
-/// Throws InvalidArgument on a discrete system, an index out of range, a bad gain, or a gain at
+/// Throws InvalidArgument on an index out of range, a bad gain, or a gain at
 /// which 1 + k D = 0 (the loop is not well posed); NumericalError if an eigenvalue iteration
 /// fails.
 RootLocus root_locus(const StateSpace& system, std::size_t input, std::size_t output,

@@ -86,10 +86,6 @@ class StateSpace {
   Units units_;
 };
 
-/// Throws InvalidArgument unless `system` is continuous: "`what` is for continuous-time systems;
-/// this one is sampled every T s". For the analyses that have no discrete form yet.
-void require_continuous(const StateSpace& system, const char* what);
-
 /// The state-space form of the second-order system M q̈ + C_damping q̇ + K q = F u with outputs
 /// y = Cq q + Cv q̇ (nq coordinates, m inputs): state x = [q; q̇], A = [0 I; −M⁻¹K −M⁻¹C],
 /// B = [0; M⁻¹F], C = [Cq Cv], D = 0. State names are the coordinate names (default q1..qnq)

@@ -107,6 +107,11 @@ struct Controller {
   /// depend on the inputs the loop sets (an algebraic loop) and are refused.
   std::vector<OutputSpec> measured_outputs;
   /// The signals it drives (the model's inputs). pid and linear: one; state_feedback: K's rows.
+  /// A signal that prescribes a joint's coordinate (a revolute, prismatic, cylindrical, universal
+  /// or planar joint's) is commanded: the output is that coordinate's acceleration (rad/s² or
+  /// m/s²), the coordinate starting at the joint's q0 and v0 and integrated from there — a servo
+  /// that moves its joint as told whatever the load, the drive's effort what `effort` outputs
+  /// and --reactions report.
   std::vector<std::string> drives;
   /// pid and linear: the reference r, a signal's name, or empty for the constant `setpoint`.
   std::string reference;

@@ -91,6 +91,17 @@ class Model {
   bool has_controllers() const { return !controllers_.empty(); }
   /// True when a controller drives signal s (its signal of time is then not used).
   bool is_driven(int s) const;
+  /// The joint whose motion signal s prescribes (one of its prescribed_signal_indices); nullopt
+  /// when s is an input (a force's, a torque's, a controller's), not a motion.
+  std::optional<int> joint_prescribed_by(int s) const;
+  /// The coordinate signal s prescribes where that is one coordinate (a revolute, prismatic,
+  /// cylindrical, universal or planar joint's: q index and v index); nullopt for a signal that
+  /// prescribes nothing or part of a ball or free joint's rotation vector or position.
+  struct Coordinate {
+    int q = -1;
+    int v = -1;
+  };
+  std::optional<Coordinate> prescribed_coordinate(int s) const;
 
   /// Parent body index of body b (−1 for the world).
   int parent(int b) const { return bodies_[b].parent_index; }

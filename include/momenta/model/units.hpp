@@ -24,7 +24,8 @@ std::string joint_damping_unit(const Model& model, const Joint& joint);
 /// A joint's armature (its effort per its acceleration): "kg·m²" on a joint whose speeds are all
 /// angular, "kg" on one whose speeds are all lengths; "" where they are mixed or there are none.
 std::string joint_armature_unit(const Model& model, const Joint& joint);
-/// A signal's value: the unit of the coordinate it prescribes, "N" or "N·m" when it scales an
+/// A signal's value: the unit of the coordinate it prescribes (per s² when a controller drives
+/// it: it commands the acceleration), "N" or "N·m" when it scales an
 /// applied force or moment of unit direction, the measured coordinate's when a controller
 /// follows it as its reference; "" when its use does not fix one.
 std::string signal_unit(const Model& model, int signal_index);

@@ -13,6 +13,12 @@
 // is the signals' second derivative: the prescribed motion is exact whatever the integrator's
 // error. apply_prescribed_motion() does the same to a state between steps so that what is
 // recorded is exact too.
+//
+// Commanded joints. A controller that drives a signal prescribing a joint's coordinate commands
+// that coordinate's acceleration (model/controller.hpp): the coordinate is then the state's own,
+// starting at the joint's q0 and v0 (Model::initial_q), its acceleration the driven value
+// (plus the signal's acceleration offset; its value and rate offsets move the coordinate and its
+// rate).
 
 #include <cassert>
 #include <limits>
@@ -85,7 +91,7 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   ConsistentState make_consistent(double t, VecX& q, VecX& v);
 
   /// Sets the prescribed joints' coordinates of q and v to their signals' value and rate at t
-  /// (offsets included). No allocation.
+  /// (offsets included); commanded coordinates are left as they are. No allocation.
   void apply_prescribed_motion(double t, VecX& q, VecX& v) const;
 
   /// Evaluates everything at (t, q, v) and leaves it in data(): kinematics (poses, velocities,
@@ -168,6 +174,8 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   std::vector<model::SignalSample> offsets_;  // see set_signal_offsets
   std::vector<char> driven_;                  // whether a controller drives signal i
   std::vector<double> driven_values_;         // see set_driven_value
+  // Per signal, the coordinate (q and v index) whose acceleration it commands; −1 for none.
+  std::vector<int> commanded_q_, commanded_v_;
   mutable std::vector<model::SignalSample> applied_samples_;   // apply_prescribed_motion's
   double step_end_ = std::numeric_limits<double>::infinity();  // see begin_step
   std::unique_ptr<ConstraintSolver> constraints_;              // null without constraints

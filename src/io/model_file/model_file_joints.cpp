@@ -149,12 +149,22 @@ void read_prescribed(const YamlNode& e, model::Joint& j, const Context& ctx) {
   const YamlNode node = e.at("prescribed");
   const std::string type(model::joint_type_name(j.type));
   if (j.nv() == 0) node.fail("a fixed joint has no motion to prescribe");
+  const std::vector<YamlNode> refs = node.is_sequence() ? node.elements() : std::vector{node};
+  // Its signals driven by controllers, the joint is commanded (its acceleration the controllers'
+  // outputs) and starts at its own q0 and v0; else its signals give its whole motion.
+  const bool commanded = std::all_of(refs.begin(), refs.end(), [&](const YamlNode& ref) {
+    return std::any_of(
+        ctx.controllers_read.begin(), ctx.controllers_read.end(), [&](const model::Controller& c) {
+          return std::find(c.drives.begin(), c.drives.end(), ref.as_string()) != c.drives.end();
+        });
+  });
   for (const std::string_view key : {"q0", "q0_deg", "v0", "v0_deg", "v0_rpm"}) {
-    if (e.has(key)) {
-      e.at(key).fail("a prescribed joint takes its initial state from its signals: remove it");
+    if (e.has(key) && !commanded) {
+      e.at(key).fail(
+          "a prescribed joint takes its initial state from its signals: remove it (a joint whose "
+          "signals controllers drive takes one: they command its acceleration)");
     }
   }
-  const std::vector<YamlNode> refs = node.is_sequence() ? node.elements() : std::vector{node};
   if (static_cast<int>(refs.size()) != j.nv()) {
     const char* hint = j.type == model::JointType::spherical ? " (its rotation vector φx, φy, φz)"
                        : j.type == model::JointType::free

@@ -25,6 +25,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 
+#include "analysis_test_systems.hpp"
 #include "momenta/analysis/controllability.hpp"
 #include "momenta/analysis/discretize.hpp"
 #include "momenta/analysis/frequency_response.hpp"
@@ -444,17 +445,11 @@ TEST(PolePlacement, WhatCannotBePlacedIsSaid) {
 
 // ---- root locus ----
 
-// b0 (s − z) / (s³ + a2 s² + a1 s + a0) or b0 / (…) in controllable canonical form.
+// (b_{n−1} s^{n−1} + … + b₀)/(sⁿ + a_{n−1} s^{n−1} + … + a₀), both lists highest power first,
+// in controllable canonical form (analysis_test_systems.hpp), input "u", output "y".
 StateSpace canonical(const std::vector<double>& numerator, const std::vector<double>& denominator) {
-  // denominator: a_{n−1} … a_0 (monic, leading 1 left out); numerator: b_{n−1} … b_0.
-  const auto n = static_cast<Eigen::Index>(denominator.size());
-  MatX A = MatX::Zero(n, n), B = MatX::Zero(n, 1), C = MatX::Zero(1, n);
-  for (Eigen::Index k = 0; k + 1 < n; ++k) A(k, k + 1) = 1.0;
-  for (Eigen::Index k = 0; k < n; ++k)
-    A(n - 1, k) = -denominator[static_cast<std::size_t>(n - 1 - k)];
-  B(n - 1, 0) = 1.0;
-  for (Eigen::Index k = 0; k < n; ++k) C(0, k) = numerator[static_cast<std::size_t>(n - 1 - k)];
-  return StateSpace(A, B, C, MatX(), {}, {"u"}, {"y"});
+  const StateSpace c = test::canonical_form(denominator, {numerator.rbegin(), numerator.rend()});
+  return StateSpace(c.A(), c.B(), c.C(), c.D(), {}, {"u"}, {"y"});
 }
 
 TEST(RootLocus, ATypeOneLoopBreaksAwayAndCrossesWhereRouthSays) {
@@ -509,11 +504,56 @@ TEST(RootLocus, AZeroDrawsACircleBetweenBreakAwayAndBreakIn) {
   EXPECT_NEAR(locus.asymptote_angles_deg[0], 180.0, 1e-12);
 }
 
-TEST(RootLocus, BadGainsAndSampledSystemsAreRefused) {
+// A sampled loop's locus in the z-plane: 1/((z − 1)(z − a)), a = 1/2. The characteristic
+// equation z² − (1 + a) z + a + k = 0 has a double root where dk/dz = 0, z = (1 + a)/2 = 3/4 at
+// k = (1 − a)²/4 = 1/16; beyond it a conjugate pair with |z|² = a + k, which meets the unit
+// circle at k = 1 − a = 1/2, where 2 cos θ = 1 + a.
+TEST(RootLocus, ASampledLoopLeavesTheUnitCircleWhereItsCharacteristicEquationSays) {
+  const double a = 0.5, T = 0.1;
+  const StateSpace c = canonical({0, 1}, {-(1.0 + a), a});
+  const StateSpace g(c.A(), c.B(), c.C(), c.D(), {}, {"u"}, {"y"}, T);
+  const RootLocus locus = root_locus(g, 0, 0, log_gain_grid(0.01, 10.0, 200));
+  EXPECT_EQ(locus.sample_time, T);
+  ASSERT_EQ(locus.breakaway.size(), 1u);
+  EXPECT_NEAR(locus.breakaway[0].s.real(), 0.75, 1e-13);
+  EXPECT_EQ(locus.breakaway[0].s.imag(), 0.0);
+  EXPECT_NEAR(locus.breakaway[0].gain, 1.0 / 16.0, 1e-13);
+  ASSERT_EQ(locus.crossings.size(), 1u);
+  EXPECT_NEAR(locus.crossings[0].s.real(), 0.75, 1e-13);
+  EXPECT_NEAR(locus.crossings[0].s.imag(), std::sqrt(1.0 - 0.75 * 0.75), 1e-13);
+  EXPECT_NEAR(locus.crossings[0].gain, 0.5, 1e-13);
+  // The branches at that gain are on the circle.
+  const RootLocus there = root_locus(g, 0, 0, (VecX(1) << 0.5).finished());
+  for (Eigen::Index j = 0; j < 2; ++j) EXPECT_NEAR(std::abs(there.poles(0, j)), 1.0, 1e-14);
+}
+
+// The sampled integrator T/(z − 1): its one pole z = 1 − kT leaves the circle through z = −1 at
+// k = 2/T, a crossing the circle's polynomial has as a double root (z = ±1 are tried as such).
+TEST(RootLocus, ASampledIntegratorLeavesThroughMinusOne) {
+  const double T = 0.1;
+  const StateSpace g = c2d(canonical({1}, {0}), T);
+  const RootLocus locus = root_locus(g, 0, 0, log_gain_grid(0.1, 100.0, 50));
+  ASSERT_EQ(locus.crossings.size(), 1u);
+  EXPECT_EQ(locus.crossings[0].s, Complex(-1.0, 0.0));
+  EXPECT_NEAR(locus.crossings[0].gain, 2.0 / T, 1e-12);
+  EXPECT_TRUE(locus.breakaway.empty());
+}
+
+// A zero on the circle ends a branch at k = ∞ there; it is no crossing. (z − 1)/((z − ½)(z − ⅕)):
+// z² + (k − 0.7) z + 0.1 − k = 0 has z = −1 at k = 0.9, and its pair |z|² = 0.1 − k inside.
+TEST(RootLocus, ASampledZeroOnTheCircleIsNoCrossing) {
+  const StateSpace c = canonical({1, -1}, {-0.7, 0.1});
+  const StateSpace g(c.A(), c.B(), c.C(), c.D(), {}, {"u"}, {"y"}, 0.1);
+  const RootLocus locus = root_locus(g, 0, 0, log_gain_grid(0.01, 100.0, 50));
+  ASSERT_EQ(locus.crossings.size(), 1u);
+  EXPECT_EQ(locus.crossings[0].s, Complex(-1.0, 0.0));
+  EXPECT_NEAR(locus.crossings[0].gain, 0.9, 1e-13);
+}
+
+TEST(RootLocus, BadGainsAreRefused) {
   const StateSpace g = canonical({0, 1}, {1, 0});
   EXPECT_THROW(root_locus(g, 0, 0, (VecX(1) << -1.0).finished()), InvalidArgument);
   EXPECT_THROW(log_gain_grid(0.0, 1.0, 10), InvalidArgument);
-  EXPECT_THROW(root_locus(c2d(g, 0.1), 0, 0, log_gain_grid(0.1, 1.0, 10)), InvalidArgument);
 }
 
 }  // namespace

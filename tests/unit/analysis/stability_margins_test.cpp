@@ -72,5 +72,26 @@ TEST(StabilityMargins, NoCrossingMeansInfiniteMargins) {
   EXPECT_THROW(stability_margins(StateSpace(A, B, C, D), 0, 0, 10.0, 1.0), InvalidArgument);
 }
 
+// A sampled loop, read on the unit circle z = e^{jωT}: an integrator with one sample of delay,
+// L(z) = K T / (z (z − 1)). On the circle L = K T e^{−j3ωT/2} / (2j sin(ωT/2)): its phase
+// −90° − 1.5 ωT reaches −180° at ωT = π/3, where |L| = K T (GM = 1/(K T)); |L| = 1 where
+// sin(ωT/2) = K T/2, PM = 90° − 3 asin(K T/2). Refined on G(jω) instead (the old mistake, with
+// the grid's brackets right) a crossing lands anywhere in its grid step, 0.4 % wide.
+TEST(StabilityMargins, ASampledLoopOnTheUnitCircle) {
+  const double K = 1.0, T = 0.1;
+  MatX A(2, 2), B(2, 1), C(1, 2), D(1, 1);
+  A << 0, 1, 0, 1;
+  B << 0, 1;
+  C << K * T, 0;
+  D << 0;
+  const StateSpace loop(A, B, C, D, {}, {"u"}, {"y"}, T);
+  const StabilityMargins m = stability_margins(loop, 0, 0, 0.01, std::numbers::pi / T);
+  EXPECT_NEAR(m.phase_crossover, std::numbers::pi / (3.0 * T), 1e-11);
+  EXPECT_NEAR(m.gain_margin, 1.0 / (K * T), 1e-10);
+  const double w = 2.0 / T * std::asin(K * T / 2.0);
+  EXPECT_NEAR(m.gain_crossover, w, 1e-11);
+  EXPECT_NEAR(m.phase_margin_deg, 90.0 - 3.0 * std::asin(K * T / 2.0) * kDeg, 1e-9);
+}
+
 }  // namespace
 }  // namespace momenta::analysis::stability_margins_test

@@ -14,6 +14,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "momenta/analysis/linearize.hpp"
+#include "momenta/analysis/lqr.hpp"
 #include "momenta/analysis/modes.hpp"
 #include "momenta/analysis/transfer_function.hpp"
 #include "momenta/common/error.hpp"
@@ -219,6 +220,46 @@ TEST(ClosedLoopLinearization, ASampledLoopIsTheRecursionItsRunFollows) {
   for (std::size_t k = 1; k + 1 < samples.size(); ++k) {
     const Eigen::Vector3d residual = state(k + 1) - S.A() * state(k) - c;
     EXPECT_LT(residual.cwiseAbs().maxCoeff(), 1e-12) << "sample " << k << ": " << residual;
+  }
+}
+
+// A commanded coordinate joins the states with its acceleration as the input: the servo cart of
+// examples/cart_pendulum_servo.yaml about upright is, by hand (J = I + m l² = 0.024 kg·m²),
+//   φ̈ = (m g l / J) φ − (m l / J) a = 24.525 φ − 2.5 a,   ẍ = a,
+// over the states [tilt.angle, tilt.angle_rate, x.position, x.position_rate]. The file's gain is
+// SciPy's LQR for Q = diag(1, 1) on x and φ, R = 1; momenta's on its own plant equals it, and the
+// closed loop is A − B K.
+TEST(ClosedLoopLinearization, ACommandedCoordinateIsADoubleIntegratorOfItsInput) {
+  const io::ModelFile file = loop_example("cart_pendulum_servo");
+  LinearizationOptions open;
+  open.close_loops = false;
+  const LinearModel plant = linearize(file.model, rest(file.model), open);
+  const StateSpace& P = plant.system;
+  ASSERT_EQ(P.state_names(), (std::vector<std::string>{"tilt.angle", "tilt.angle_rate",
+                                                       "x.position", "x.position_rate"}));
+  EXPECT_EQ(P.input_names(), (std::vector<std::string>{"cart_drive"}));
+  EXPECT_EQ(P.units().inputs, (std::vector<std::string>{"m/s²"}));
+  MatX A(4, 4), B(4, 1);
+  A << 0, 1, 0, 0, 0.2 * 9.81 * 0.3 / 0.024, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0;
+  B << 0, -0.2 * 0.3 / 0.024, 0, 1;
+  EXPECT_LT((P.A() - A).cwiseAbs().maxCoeff(), 1e-11 * A.norm());
+  EXPECT_LT((P.B() - B).cwiseAbs().maxCoeff(), 1e-12 * B.norm());
+
+  // LQR on it, Q on x and φ: the file's gain, its columns [x, φ, ẋ, φ̇] in the plant's order.
+  MatX Q = MatX::Zero(4, 4);
+  Q(0, 0) = Q(2, 2) = 1.0;
+  const LqrDesign design = lqr(P, Q, MatX::Identity(1, 1));
+  const MatX& K_file = file.model.controllers()[0].spec.gain;
+  MatX K(1, 4);
+  K << K_file(0, 1), K_file(0, 3), K_file(0, 0), K_file(0, 2);
+  EXPECT_LT((design.K - K).cwiseAbs().maxCoeff(), 1e-8 * K.norm());
+
+  const LinearModel closed = linearize(file.model, rest(file.model));
+  EXPECT_EQ(closed.system.state_names(), P.state_names());
+  const MatX expected = P.A() - P.B() * K;
+  EXPECT_LT((closed.system.A() - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.norm());
+  for (const std::complex<double> p : closed.system.A().eigenvalues()) {
+    EXPECT_LT(p.real(), -0.70) << p;  // −4.9586 ± 0.2519j, −0.7054 ± 0.7051j
   }
 }
 
