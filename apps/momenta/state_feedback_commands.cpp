@@ -293,6 +293,20 @@ void run_place(const PlaceOptions& o) {
   const std::vector<Complex> wanted = parse_poles(o.poles);
   const analysis::Reachability reach = analysis::controllability(plant);
   const analysis::PolePlacement placed = analysis::place_poles(plant, wanted);
+  // An unstable design is the user's to ask for, and said.
+  std::vector<std::string> unstable;
+  for (const Complex& p : wanted) {
+    if (plant.is_discrete() ? std::abs(p) >= 1.0 : p.real() >= 0.0)
+      unstable.push_back(complex_text(p));
+  }
+  if (!unstable.empty()) {
+    fmt::print(
+        stderr,
+        "momenta: warning: the design is not stable: {} {} (the loop's perturbations do not "
+        "die out)\n",
+        fmt::join(unstable, ", "),
+        plant.is_discrete() ? "on or outside the unit circle" : "in the closed right half-plane");
+  }
   write_design(o, loaded, plant, placed.K, fmt::format("place --poles={}", o.poles));
   const std::vector<Complex> open = poles_of(plant.A());
   const std::vector<Complex> closed(placed.closed_loop_poles.begin(),

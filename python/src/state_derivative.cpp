@@ -29,11 +29,22 @@ struct StateDerivative {
         v(VecX::Zero(file->model.nv())),
         vdot(VecX::Zero(file->model.nv())),
         qdot(VecX::Zero(file->model.nq())) {
-    for (int s = 0; s < static_cast<int>(file->model.signals().size()); ++s) {
-      if (file->model.joint_prescribed_by(s)) continue;
+    const model::Model& model = file->model;
+    for (int s = 0; s < static_cast<int>(model.signals().size()); ++s) {
+      if (!is_input(model, s)) continue;
       inputs.push_back(s);
-      driven.drive_signal(s);
+      if (!commanded(model, s)) driven.drive_signal(s);  // a commanded one is driven already
     }
+  }
+
+  // A commanded signal: one a controller drives that prescribes a joint's coordinate, whose
+  // value is then that coordinate's acceleration (model/controller.hpp).
+  static bool commanded(const model::Model& model, int s) {
+    return model.is_driven(s) && model.prescribed_coordinate(s).has_value();
+  }
+  // What u holds: every signal but those that are a joint's motion of time.
+  static bool is_input(const model::Model& model, int s) {
+    return !model.joint_prescribed_by(s) || commanded(model, s);
   }
 
   std::shared_ptr<const io::ModelFile> file;  // first: the systems refer to its model
@@ -48,7 +59,7 @@ namespace {
 std::vector<std::string> input_names(const model::Model& model) {
   std::vector<std::string> names;
   for (int s = 0; s < static_cast<int>(model.signals().size()); ++s) {
-    if (!model.joint_prescribed_by(s))
+    if (StateDerivative::is_input(model, s))
       names.push_back(model.signals()[static_cast<std::size_t>(s)].name());
   }
   return names;
@@ -104,7 +115,8 @@ void bind_state_derivative(py::module_& m) {
   model.def_property_readonly(
       "input_names", [](const ModelHandle& h) { return input_names(h.model()); },
       "The inputs u holds in dynamics(t, x, u), in order: the model's signals that no joint "
-      "follows (a prescribed joint's signal is a motion, not an input).");
+      "follows (a prescribed joint's signal is a motion, not an input) — but a joint a controller "
+      "commands takes its acceleration from u.");
   model.def("dynamics", &state_derivative, py::arg("t"), py::arg("x"), py::arg("u") = py::none(),
             R"doc(The state derivative ẋ = f(t, x, u), for scipy.integrate.solve_ivp:
 x = [q; v] (nq + nv numbers, model.q_names then model.v_names), ẋ = [q̇; v̇] — q̇ the

@@ -299,6 +299,11 @@ def test_place_on_the_command_line_is_pythons(cart):
     result = subprocess.run([cli_path(), "place", str(CART), "--poles=-1,x,2,3"],
                             capture_output=True, text=True)
     assert result.returncode == 2 and "'x' is not a number or a complex a+bj" in result.stderr
+    # An unstable design is placed as asked, and said.
+    result = subprocess.run([cli_path(), "place", str(CART), "--poles=1,-2,-3+1j,-3-1j"],
+                            capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr
+    assert "warning: the design is not stable: 1 in the closed right half-plane" in result.stderr
 
 
 def _cart_builder(name):
@@ -472,6 +477,18 @@ def test_model_dynamics_is_the_closed_form_and_checks_its_arguments():
         plant.dynamics(0.0, np.zeros(4), [1.0, 2.0])
     with pytest.raises(momenta.InvalidArgument, match=r"u\[0\] \(force\) is nan"):
         plant.dynamics(0.0, np.zeros(4), [float("nan")])
+
+
+def test_a_commanded_joint_takes_its_acceleration_from_u():
+    """examples/cart_pendulum_servo.yaml: its controller commands the cart's acceleration a, so
+    dynamics() takes a in u, and ẍ = a, J φ̈ = m g l sin φ − m l a cos φ (J = I + m l²)."""
+    servo = momenta.load_model(EXAMPLES / "cart_pendulum_servo.yaml")
+    assert servo.input_names == ["cart_drive"]
+    m, l, I, g = 0.2, 0.3, 0.006, 9.81
+    x, phi, xd, phid, a = 0.3, 0.4, -0.2, 0.7, 1.5
+    xdot = servo.dynamics(0.0, [x, phi, xd, phid], [a])
+    phidd = (m * g * l * np.sin(phi) - m * l * a * np.cos(phi)) / (I + m * l**2)
+    np.testing.assert_allclose(xdot, [xd, phid, a, phidd], rtol=1e-13, atol=1e-14)
 
 
 def test_linearize_over_a_list_of_operating_points():
