@@ -198,15 +198,13 @@ NyquistCount nyquist_count(const StateSpace& system, std::size_t input, std::siz
     }
   }
 
-  const VecX b = system.B().col(i);
-  const Eigen::RowVectorXd c = system.C().row(o);
   ArgumentTracker tracker([&](Complex s) { return 1.0 + evaluate(system, input, output, s); });
   std::vector<Piece> contour;
   if (sampled) {
     contour = z_plane_contour(boundary, epsilon);
   } else {
     // R beyond every open- and closed-loop pole: the Frobenius norm bounds the spectral radius.
-    const MatX closed = system.A() - b * c / (1.0 + d);
+    const MatX closed = system.A() - system.B().col(i) * system.C().row(o) / (1.0 + d);
     const double R = 10.0 * std::max({scale, n > 0 ? closed.norm() : 0.0,
                                       boundary.empty() ? 0.0 : std::abs(boundary.back())});
     double w0 = scale;  // the smallest nonzero pole magnitude, for the axis's spacing
