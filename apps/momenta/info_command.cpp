@@ -288,6 +288,13 @@ json describe(const InfoOptions& o, const io::ModelFile& file) {
                   {"coordinates", std::move(q)}, {"speeds", std::move(v)},
                   {"damping", joint.damping},    {"armature", joint.armature}};
     entry["prescribed_by"] = joint.prescribed_signals;
+    if (joint.limits) {
+      // JSON has no infinity: an absent stop is null.
+      const auto bound = [](double x) { return std::isfinite(x) ? json(x) : json(nullptr); };
+      entry["limits"] = {{"lower", bound(joint.limits->lower)},
+                         {"upper", bound(joint.limits->upper)},
+                         {"restitution", joint.limits->restitution}};
+    }
     joints.push_back(std::move(entry));
   }
   j["joints"] = std::move(joints);
@@ -381,6 +388,14 @@ void print_text(const json& j, const io::ModelFile& file) {
     if (joint.armature > 0.0) {
       const std::string unit = model::joint_armature_unit(m, joint);
       fmt::print(", armature {:.6g} {}", joint.armature, unit.empty() ? "(kg·m² or kg)" : unit);
+    }
+    if (joint.limits) {
+      const std::string unit = model::q_unit(m, joint.q_index);
+      const auto bound = [&](double x) {
+        return std::isfinite(x) ? fmt::format("{:.6g} {}", x, unit) : std::string("none");
+      };
+      fmt::print(", stops: lower {}, upper {}, restitution {:.6g}", bound(joint.limits->lower),
+                 bound(joint.limits->upper), joint.limits->restitution);
     }
     fmt::print("\n");
     for (int i = 0; i < joint.nq(); ++i) {

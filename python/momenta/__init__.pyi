@@ -305,7 +305,7 @@ class ModelBuilder:
     def add_force(self, name: str, *, body: str, point: object = (0, 0, 0), vector: object, frame: str = 'world', signal: str = '') -> ModelBuilder:
         """A force (N) at a body point: `vector`, or u(t) · vector with a signal; frame 'world' or 'body' (a follower load)."""
         ...
-    def add_joint(self, name: str, type: str, *, parent: str, child: str, axis: object = None, axis2: object = None, in_parent: object = None, in_child: object = None, q0: object = None, v0: object = None, q0_deg: object = None, v0_deg: object = None, damping: float = 0.0, armature: float = 0.0, prescribed: List[str] = []) -> ModelBuilder:
+    def add_joint(self, name: str, type: str, *, parent: str, child: str, axis: object = None, axis2: object = None, in_parent: object = None, in_child: object = None, q0: object = None, v0: object = None, q0_deg: object = None, v0_deg: object = None, damping: float = 0.0, armature: float = 0.0, prescribed: List[str] = [], limits: object = None) -> ModelBuilder:
         """A joint from `parent` (a body or 'world') to `child`. type: fixed, revolute, prismatic, cylindrical, universal, spherical, planar, free (or the aliases weld, hinge, slider, ball, floating). axis (in J, default z) and axis2 (universal, in J'); in_parent / in_child: the poses of J in the parent and J'"""
         ...
     def add_joint_friction(self, name: str, *, joint: str, viscous: float) -> ModelBuilder:

@@ -20,6 +20,30 @@
 namespace momenta::python {
 namespace {
 
+// limits={'lower': x, 'upper': y, 'restitution': e}: a joint's stops (either bound may be absent).
+model::JointLimits joint_limits_arg(const py::object& limits) {
+  if (!py::isinstance<py::dict>(limits)) {
+    throw InvalidArgument("limits: a dict {'lower': ..., 'upper': ..., 'restitution': ...}");
+  }
+  const py::dict d = limits.cast<py::dict>();
+  model::JointLimits l;
+  for (const auto& [key, value] : d) {
+    const std::string k = key.cast<std::string>();
+    const double x = value.cast<double>();
+    if (k == "lower") {
+      l.lower = x;
+    } else if (k == "upper") {
+      l.upper = x;
+    } else if (k == "restitution") {
+      l.restitution = x;
+    } else {
+      throw InvalidArgument(fmt::format(
+          "limits: unknown key '{}'; the keys are 'lower', 'upper' and 'restitution'", k));
+    }
+  }
+  return l;
+}
+
 using namespace model;
 
 std::string suggestion(std::string_view word, const std::vector<std::string>& known) {
@@ -313,8 +337,8 @@ Every add_* method returns the builder, so calls chain.)doc")
              std::string child, const py::object& axis, const py::object& axis2,
              const py::object& in_parent, const py::object& in_child, const py::object& q0,
              const py::object& v0, const py::object& q0_deg, const py::object& v0_deg,
-             double damping, double armature,
-             const std::vector<std::string>& prescribed) -> Builder& {
+             double damping, double armature, const std::vector<std::string>& prescribed,
+             const py::object& limits) -> Builder& {
             Joint j;
             j.name = std::move(name);
             j.type = joint_type_from_name(type);
@@ -334,6 +358,7 @@ Every add_* method returns the builder, so calls chain.)doc")
             j.damping = damping;
             j.armature = armature;
             j.prescribed_signals = prescribed;
+            if (!limits.is_none()) j.limits = joint_limits_arg(limits);
             b.builder.add_joint(std::move(j));
             return b;
           },
@@ -342,7 +367,7 @@ Every add_* method returns the builder, so calls chain.)doc")
           py::arg("in_parent") = py::none(), py::arg("in_child") = py::none(),
           py::arg("q0") = py::none(), py::arg("v0") = py::none(), py::arg("q0_deg") = py::none(),
           py::arg("v0_deg") = py::none(), py::arg("damping") = 0.0, py::arg("armature") = 0.0,
-          py::arg("prescribed") = std::vector<std::string>{},
+          py::arg("prescribed") = std::vector<std::string>{}, py::arg("limits") = py::none(),
           R"doc(A joint from `parent` (a body or 'world') to `child`. type: fixed, revolute,
 prismatic, cylindrical, universal, spherical, planar, free (or the aliases weld, hinge, slider,
 ball, floating). axis (in J, default z) and axis2 (universal, in J'); in_parent / in_child: the
@@ -350,7 +375,9 @@ poses of J in the parent and J' in the child, {'position': [x, y, z], 'rotation'
 initial coordinates (default neutral, zero; a number for a one-coordinate joint), or q0_deg,
 v0_deg in degrees where every coordinate is an angle; damping: viscous c on every coordinate; armature:
 a motor's reflected rotor inertia on every coordinate (kg·m² or kg), as MuJoCo's; prescribed: one signal name per velocity coordinate (a ball joint: its rotation vector; a
-free joint: rotation vector, then position; model/prescribed_motion.hpp).)doc")
+free joint: rotation vector, then position; model/prescribed_motion.hpp); limits: stops on a revolute
+or prismatic joint, {'lower': rad or m, 'upper': ..., 'restitution': e in [0, 1]} (either bound may be
+left out; docs/contacts.md).)doc")
       .def(
           "add_spring_damper",
           [](Builder& b, std::string name, const std::string& body_a, const py::object& point_a,

@@ -122,6 +122,22 @@ py::dict summary_of(const simulate::SimulationSummary& s) {
     events.append(event);
   }
   d["events"] = events;
+  // The joints' stops: every impact, rest and release, in time order (simulate/joint_stops.hpp).
+  py::list stops;
+  for (const simulate::StopEvent& e : s.stop_events) {
+    py::dict stop;
+    stop["kind"] = std::string(simulate::stop_event_kind_name(e.kind));
+    stop["joint"] = e.joint;
+    stop["stop"] = e.upper ? "upper" : "lower";
+    stop["time"] = e.time;
+    stop["rate_before"] = e.rate_before;
+    stop["rate_after"] = e.rate_after;
+    stop["impulse"] = e.impulse;
+    stop["energy_lost"] = e.energy_lost;
+    stop["rest_time"] = e.rest_time;
+    stops.append(stop);
+  }
+  d["stops"] = stops;
   return d;
 }
 

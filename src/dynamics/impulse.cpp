@@ -67,17 +67,21 @@ std::vector<MatX> point_jacobians(const Model& model, Data& data, VecRef q,
 
 }  // namespace
 
-ImpulsiveMotion impulsive_motion(const Model& model, VecRef q, VecRef v,
-                                 std::span<const PointImpulse> impulses) {
+namespace {
+
+// impulsive_motion with a generalized impulse on the coordinates besides the points' (a stop's;
+// zero size for none).
+ImpulsiveMotion respond(const Model& model, VecRef q, VecRef v,
+                        std::span<const PointImpulse> impulses, const VecX& generalized) {
   check_arguments(model, q, v, impulses);
   const int nv = model.nv();
   Data data(model);
   ImpulsiveMotion r;
   r.v_before = v;
 
-  // Σ J_Pᵀ P.
+  // Σ J_Pᵀ P, plus the generalized impulse.
   const std::vector<MatX> J_P = point_jacobians(model, data, q, impulses);
-  VecX applied = VecX::Zero(nv);
+  VecX applied = generalized.size() == nv ? generalized : VecX::Zero(nv);
   for (std::size_t k = 0; k < impulses.size(); ++k) {
     applied += J_P[k].transpose() * impulses[k].impulse_W;
   }
@@ -165,7 +169,15 @@ ImpulsiveMotion impulsive_motion(const Model& model, VecRef q, VecRef v,
     r.impulse_work += 0.5 * impulses[k].impulse_W.dot(J_P[k] * (v + r.v_after));
   }
   r.impulse_work += r.drive_impulses.dot(v);  // a drive's speed does not change
+  if (generalized.size() == nv) r.impulse_work += 0.5 * generalized.dot(v + r.v_after);
   return r;
+}
+
+}  // namespace
+
+ImpulsiveMotion impulsive_motion(const Model& model, VecRef q, VecRef v,
+                                 std::span<const PointImpulse> impulses) {
+  return respond(model, q, v, impulses, VecX());
 }
 
 namespace {
@@ -241,6 +253,43 @@ Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointCon
   impact.normal_impulse = -(1.0 + restitution) * impact.approach_speed / w;
   impact.separation_speed = -restitution * impact.approach_speed;
   impact.motion = impulsive_motion(model, q, v, impulse_pair(contact, impact.normal_impulse));
+  return impact;
+}
+
+StopImpact stop_impact(const Model& model, VecRef q, VecRef v, int coordinate, double restitution) {
+  if (coordinate < 0 || coordinate >= model.nv()) {
+    throw InvalidArgument(fmt::format("stop_impact: no velocity coordinate {}; the model has {}",
+                                      coordinate, model.nv()));
+  }
+  if (!(restitution >= 0.0 && restitution <= 1.0)) {
+    throw InvalidArgument(fmt::format(
+        "stop_impact: the coefficient of restitution {} is outside [0, 1] (0: plastic, 1: elastic)",
+        restitution));
+  }
+  if (model.joints()[static_cast<std::size_t>(model.joint_of_v(coordinate))].is_prescribed()) {
+    throw InvalidArgument(
+        fmt::format("stop_impact: {} is prescribed: its motion is its signal's, no stop strikes it",
+                    model.v_name(coordinate)));
+  }
+  // The rate a unit impulse on the coordinate gives it, from rest: (M⁻¹)_ii over the free
+  // coordinates (the constraints taking their part).
+  const VecX at_rest = VecX::Zero(model.nv());
+  VecX unit = VecX::Zero(model.nv());
+  unit[coordinate] = 1.0;
+  const double w = respond(model, q, at_rest, {}, unit).v_after[coordinate];
+  if (!(w > 0.0)) {
+    throw InvalidArgument(fmt::format(
+        "stop_impact: the mechanism cannot move {} (its constraints hold it): no stop strikes it",
+        model.v_name(coordinate)));
+  }
+  StopImpact impact;
+  impact.rate_before = v[coordinate];
+  impact.rate_after = -restitution * impact.rate_before;
+  impact.impulse = (impact.rate_after - impact.rate_before) / w;
+  VecX generalized = VecX::Zero(model.nv());
+  generalized[coordinate] = impact.impulse;
+  impact.motion = respond(model, q, v, {}, generalized);
+  impact.motion.v_after[coordinate] = impact.rate_after;  // exact, not to round-off
   return impact;
 }
 

@@ -152,6 +152,13 @@ RunSummary run(SecondOrderSystem& system, Integrator& integrator, State& state,
     reported = k % options.every == 0 || state.t == options.t_end;
     if (reported) observer(state);
     if (done()) return finish();
+    if (options.restarted != nullptr && *options.restarted) {
+      // The observer took the state back inside this step: the step to this grid time again.
+      *options.restarted = false;
+      integrator.state_changed();
+      --k;
+      reported = true;
+    }
   }
   if (!reported) observer(state);
   return finish();

@@ -275,6 +275,7 @@ class ModelAssembler {
     MOMENTA_REQUIRE(j.armature >= 0 && std::isfinite(j.armature),
                     "{}: armature {} must be zero or positive (a rotor's reflected inertia)", who,
                     j.armature);
+    if (j.limits) check_limits(j, who);
     if (j.is_prescribed()) {
       MOMENTA_REQUIRE(j.nv() > 0, "{}: a fixed joint has no motion to prescribe", who);
       MOMENTA_REQUIRE(static_cast<int>(j.prescribed_signals.size()) == j.nv(),
@@ -282,6 +283,30 @@ class ModelAssembler {
                       "coordinate; model/prescribed_motion.hpp)",
                       who, j.prescribed_signals.size(), joint_type_name(t), j.nv());
     }
+  }
+
+  // Stops: on a revolute or prismatic joint that moves by forces, lower < upper (not NaN, one
+  // of them finite), e ∈ [0, 1], and the initial coordinate between them.
+  static void check_limits(const Joint& j, const std::string& who) {
+    const JointLimits& l = *j.limits;
+    MOMENTA_REQUIRE(j.type == JointType::revolute || j.type == JointType::prismatic,
+                    "{}: limits are stops on one coordinate: a revolute or prismatic joint's, not "
+                    "a {} joint's",
+                    who, joint_type_name(j.type));
+    MOMENTA_REQUIRE(!j.is_prescribed(),
+                    "{}: a prescribed joint moves as its signal says; a stop cannot hold it", who);
+    MOMENTA_REQUIRE(!std::isnan(l.lower) && !std::isnan(l.upper) && l.lower < l.upper &&
+                        (std::isfinite(l.lower) || std::isfinite(l.upper)),
+                    "{}: limits lower {} and upper {} must satisfy lower < upper, one of them "
+                    "finite",
+                    who, l.lower, l.upper);
+    MOMENTA_REQUIRE(l.restitution >= 0.0 && l.restitution <= 1.0,
+                    "{}: the stops' restitution {} is outside [0, 1] (0: plastic, 1: elastic)", who,
+                    l.restitution);
+    const double q0 = j.q0.size() > 0 ? j.q0[0] : 0.0;
+    MOMENTA_REQUIRE(q0 >= l.lower && q0 <= l.upper,
+                    "{}: the initial coordinate {} is outside its limits [{}, {}]", who, q0,
+                    l.lower, l.upper);
   }
 
   // Topological order from the world, depth first, each body's children in the order their

@@ -81,6 +81,18 @@ json summary_json(const SimulationRun& run, double fastest_rate) {
                       {"value", e.value},
                       {"action", model::event_action_name(e.action)}});
   }
+  json stops = json::array();
+  for (const simulate::StopEvent& e : s.stop_events) {
+    stops.push_back({{"kind", simulate::stop_event_kind_name(e.kind)},
+                     {"joint", e.joint},
+                     {"stop", e.upper ? "upper" : "lower"},
+                     {"time", e.time},
+                     {"rate_before", e.rate_before},
+                     {"rate_after", e.rate_after},
+                     {"impulse", e.impulse},
+                     {"energy_lost", e.energy_lost},
+                     {"rest_time", e.rest_time}});
+  }
   return {{"model", file.name},
           {"description", file.description},
           {"file", file.file},
@@ -101,6 +113,7 @@ json summary_json(const SimulationRun& run, double fastest_rate) {
           {"stop_reason", run.stop_reason},
           {"audit", audit},
           {"events", events},
+          {"stops", stops},
           {"verdict", s.audit.empty() ? "none" : (pass ? "pass" : "warn")},
           {"verdict_reason", s.audit.empty() ? std::string() : allowance.unvouched}};
 }

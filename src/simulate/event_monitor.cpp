@@ -5,8 +5,8 @@
 #include <cstdint>
 
 #include <fmt/format.h>
-#include <boost/math/tools/toms748_solve.hpp>
 
+#include "crossing_time.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
 #include "momenta/system/multibody_system.hpp"
@@ -202,19 +202,12 @@ std::span<const EventOccurrence> EventMonitor::check(MultibodySystem& system,
 
 double EventMonitor::locate(MultibodySystem& system, integrate::SecondOrderSystem& advanced, int e,
                             double sign, double a, double b, double fa, double fb) {
-  if (fa == 0.0) return a;  // on the value at the step's start, past it after
+  // On the value at the step's start (past it after): a itself.
   const auto f = [&](double t) {
     state_at(advanced, t, trial_);
     return sign * offset(system, e, trial_);
   };
-  const auto close_enough = [](double x, double y) {
-    return std::abs(y - x) <= 1e-14 * std::max(std::abs(x), std::abs(y));
-  };
-  std::uintmax_t iterations = 200;
-  const auto [lo, hi] =
-      boost::math::tools::toms748_solve(f, a, b, fa, fb, close_enough, iterations);
-  // The bracket's end where the condition holds (f < 0), or a point exactly on the value.
-  return f(hi) <= 0.0 ? hi : lo;
+  return detail::crossing_time(f, a, b, fa, fb);
 }
 
 void EventMonitor::state_at(integrate::SecondOrderSystem& advanced, double t,

@@ -88,9 +88,22 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
                     "symplectic_euler",
                     options_.integrator));
   }
+  if (model.has_joint_limits() && model.has_constraints()) {
+    throw InvalidArgument(
+        "the model has joint limits and constraints: stops on a model with constraints are not "
+        "supported yet (docs/contacts.md); remove the limits or the constraints");
+  }
+  if (model.has_joint_limits() &&
+      model::integrator_info(options_.integrator).family == model::IntegratorFamily::rigid_body) {
+    throw InvalidArgument(fmt::format(
+        "integrator '{}' advances one free body's own flow and cannot stop a joint at its limits: "
+        "use rk4, dopri5, bdf or symplectic_euler",
+        options_.integrator));
+  }
   // The one system every run() of this simulation advances, closed by the controllers.
   system_ = std::make_unique<MultibodySystem>(model);
   if (model.has_controllers()) closed_loop_ = std::make_unique<system::ClosedLoopSystem>(*system_);
+  if (model.has_joint_limits()) stops_ = std::make_unique<JointStops>(model, options_.step);
   events_ =
       std::make_unique<EventMonitor>(model, outputs_.specs(), options_.events,
                                      closed_loop_ ? closed_loop_->num_controller_states() : 0);
@@ -117,6 +130,11 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
       for (int k = 0; k < 6; ++k) {
         add(fmt::format("{}.reaction.{}", j.name, kReactionSuffixes[k]), k < 3 ? "N" : "N·m");
       }
+    }
+    for (const model::Joint& j : model.joints()) {
+      if (j.limits)
+        add(fmt::format("{}.stop_force", j.name),
+            model::v_unit(model, j.v_index) == "m/s" ? "N" : "N·m");
     }
     for (std::size_t c = 0; c < model.constraints().size(); ++c) {
       const auto labels = model::constraint_force_labels(model.constraints()[c]);
@@ -287,6 +305,9 @@ class Simulation::Recorder {
         for (int k = 0; k < 3; ++k) row_[c++] = r.force[k];
         for (int k = 0; k < 3; ++k) row_[c++] = r.moment[k];
       }
+      for (const model::Joint& j : model_.joints()) {
+        if (j.limits) row_[c++] = system_.held(j.index) ? system_.stop_force(j.index) : 0.0;
+      }
       if (const system::ConstraintSolver* solver = system_.constraints()) {
         for (int k = 0; k < static_cast<int>(model_.constraints().size()); ++k) {
           const int n =
@@ -389,6 +410,11 @@ SimulationSummary Simulation::run(RowSink& sink) {
     summary.redundant_constraint_rows = solver->redundant_rows();
   // With controllers: their states joined to the mechanism's, their first samples taken.
   if (closed_loop_) state = closed_loop_->start(0.0, state.q, state.v);
+  if (stops_) {
+    for (StopEvent& e : stops_->start(recorder.system(), advanced(), state)) {
+      summary.stop_events.push_back(std::move(e));
+    }
+  }
   recorder.start(state, summary);
   check_stiffness(advanced(), state, summary);
 
@@ -400,27 +426,47 @@ SimulationSummary Simulation::run(RowSink& sink) {
   run_options.every = 1;
   long step = -1;
   // Events: the state at the last step's end (the next step's start), and at an event.
-  integrate::State previous = state, at_event = state;
-  bool finished = false;
+  // Stops: the state just before a stop acts (the step is taken back to it, `state` becoming
+  // the state just after).
+  integrate::State previous = state, at_event = state, before_stop = state;
+  bool finished = false, restarted = false;
   run_options.finished = &finished;
+  if (stops_) run_options.restarted = &restarted;
+  StopEvent stop_event;
   const auto observe = [&](const integrate::State& s) {
     ++step;
+    // A stop that acts inside the step ends it there: the events up to then, a row just before
+    // and one just after, and the integrator restarts from the latter.
+    const bool stopped =
+        stops_ && step > 0 &&
+        stops_->check(recorder.system(), advanced(), *integrator_, previous, s, before_stop);
+    const integrate::State& end = stopped ? before_stop : s;
     if (!events_->empty()) {
       if (step == 0) events_->start(recorder.system(), s);
       for (const EventOccurrence& o :
            step == 0 ? std::span<const EventOccurrence>()
-                     : events_->check(recorder.system(), advanced(), *integrator_, previous, s)) {
+                     : events_->check(recorder.system(), advanced(), *integrator_, previous, end)) {
         events_->state_at(advanced(), o.time, at_event);
         recorder.observe(at_event, true);
         summary.events.push_back(o);
         finished = o.action == model::EventAction::stop;
       }
       if (finished) return;
+    }
+    if (stopped) {
+      recorder.observe(before_stop, true);
+      state = before_stop;  // the run's own state, which `s` refers to
+      stops_->act(recorder.system(), advanced(), state, stop_event);
+      summary.stop_events.push_back(stop_event);
+      restarted = true;
+      --step;
+    }
+    if (!events_->empty() || stops_) {
       previous.t = s.t;
       previous.q = s.q;
       previous.v = s.v;
     }
-    recorder.observe(s, step % options_.every == 0 || s.t >= options_.duration);
+    recorder.observe(s, stopped || step % options_.every == 0 || s.t >= options_.duration);
   };
   try {
     const integrate::RunSummary run_summary =
@@ -527,6 +573,49 @@ std::string format_events(const std::vector<EventOccurrence>& events) {
   }
   return out;
 }
+// The stops' impacts, rests and releases: the first few and the last, with their count.
+std::string format_stop_events(const std::vector<StopEvent>& events) {
+  if (events.empty()) return "";
+  constexpr std::size_t kListed = 6;
+  const auto line = [](const StopEvent& e) {
+    const std::string stop = fmt::format("{} {} stop", e.joint, e.upper ? "upper" : "lower");
+    switch (e.kind) {
+      case StopEventKind::impact:
+        return fmt::format(
+            "{} impact at t = {:.12g} s: rate {:.6g} -> {:.6g}, impulse {:.6g}, "
+            "{:.6g} J lost",
+            stop, e.time, e.rate_before, e.rate_after, e.impulse, e.energy_lost);
+      case StopEventKind::rest:
+        return fmt::format(
+            "{} holds the joint from t = {:.12g} s{} (rate {:.6g} -> 0, {:.6g} J lost)", stop,
+            e.time,
+            e.rest_time > e.time ? fmt::format(" (its bounces end at t = {:.12g} s)", e.rest_time)
+                                 : "",
+            e.rate_before, e.energy_lost);
+      case StopEventKind::release:
+        return fmt::format("{} lets the joint go at t = {:.12g} s (it would pull)", stop, e.time);
+    }
+    return std::string();
+  };
+  std::string out;
+  const std::size_t listed = events.size() <= kListed ? events.size() : kListed - 2;
+  for (std::size_t i = 0; i < listed; ++i) {
+    out += fmt::format("{:<13}{}\n", i == 0 ? "stops" : "", line(events[i]));
+  }
+  if (listed < events.size()) {
+    long impacts = 0;
+    double lost = 0.0;
+    for (const StopEvent& e : events) {
+      impacts +=
+          e.kind == StopEventKind::impact || (e.kind == StopEventKind::rest && e.impulse != 0.0);
+      lost += e.energy_lost;
+    }
+    out += fmt::format("{:<13}... {} in all ({} impacts, {:.6g} J lost), the last: {}\n", "",
+                       events.size(), impacts, lost, line(events.back()));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::string format_summary(const SimulationSummary& s, OptionSpelling spell) {
@@ -556,6 +645,7 @@ std::string format_summary(const SimulationSummary& s, OptionSpelling spell) {
         fmt::join(s.redundant_constraint_rows, ", "));
   }
   out += format_events(s.events);
+  out += format_stop_events(s.stop_events);
   if (const std::string note = stiffness_note(s); !note.empty()) {
     out += fmt::format("stiffness    {}\n", spell_options(note, spell));
   }
@@ -565,7 +655,8 @@ std::string format_summary(const SimulationSummary& s, OptionSpelling spell) {
   }
   if (!s.energy_audited)
     out +=
-        "  energy           not audited: damping, friction, applied loads or prescribed motion\n";
+        "  energy           not audited: damping, friction, applied loads, prescribed motion or "
+        "inelastic stops\n";
   if (!s.momentum_audited)
     out +=
         "  H                not audited: external torques act (a joint or spring to the world, "

@@ -67,7 +67,10 @@ MultibodySystem::MultibodySystem(const model::Model& model)
       probe_q_(VecX::Zero(model.nq())),
       probe_v_(VecX::Zero(model.nv())),
       vdot_mean_(VecX::Zero(model.nv())),
-      lambda_mean_(VecX::Zero(0)) {
+      lambda_mean_(VecX::Zero(0)),
+      held_(model.num_joints(), 0),
+      held_value_(model.num_joints(), 0.0),
+      hybrid_mask_(dynamics::prescribed_joint_mask(model)) {
   check_simulable(model);
   for (std::size_t s = 0; s < driven_.size(); ++s) {
     driven_[s] = model.is_driven(static_cast<int>(s));
@@ -76,8 +79,13 @@ MultibodySystem::MultibodySystem(const model::Model& model)
     commanded_q_[s] = coordinate->q;
     commanded_v_[s] = coordinate->v;
   }
-  conserves_energy_ =
-      !model.has_prescribed_joints() && dynamics::force_elements_conservative(model);
+  // A stop with e < 1 takes energy at each impact (one that holds its joint does no work).
+  bool inelastic_stops = false;
+  for (const model::Joint& j : model.joints()) {
+    if (j.limits && j.limits->restitution < 1.0) inelastic_stops = true;
+  }
+  conserves_energy_ = !model.has_prescribed_joints() && !inelastic_stops &&
+                      dynamics::force_elements_conservative(model);
   // Angular momentum about the centre of mass: besides conserving energy, no body may be held
   // by the world — every joint on the world free, no spring attached to the world. Uniform
   // gravity acts at the centre of mass and exerts no moment about it.
@@ -157,9 +165,17 @@ void MultibodySystem::free_dynamics(double t, const VecX& q, const VecX& v, mode
   // The state with the prescribed coordinates taken from their signals; their accelerations too.
   q_ = q;
   v_ = v;
-  const bool prescribed = model_.has_prescribed_joints();
-  if (prescribed) {
+  const bool prescribed = model_.has_prescribed_joints() || holding_ > 0;
+  if (model_.has_prescribed_joints()) {
     write_prescribed(model_, samples_, q_, v_, &vdot_prescribed_);
+  }
+  if (holding_ > 0) {
+    for (const model::Joint& j : model_.joints()) {
+      if (!held_[j.index]) continue;
+      q_[j.q_index] = held_value_[j.index];
+      v_[j.v_index] = 0.0;
+      vdot_prescribed_[j.v_index] = 0.0;
+    }
   }
 
   // The force elements. Those on bodies read the poses and velocities of forward kinematics;
@@ -173,7 +189,8 @@ void MultibodySystem::free_dynamics(double t, const VecX& q, const VecX& v, mode
   // Forward dynamics; hybrid where joints are prescribed (it also fills data_.tau with the
   // generalized forces the prescription needs).
   if (prescribed) {
-    dynamics::hybrid_dynamics(model_, data_, q_, v_, vdot_prescribed_, tau_elements_, f_ext);
+    dynamics::hybrid_dynamics(model_, data_, hybrid_mask_, q_, v_, vdot_prescribed_, tau_elements_,
+                              f_ext);
   } else {
     dynamics::aba_articulate(model_, data_, q_, v_, tau_elements_, f_ext);
     if (!factors_only) dynamics::aba_accelerate(model_, data_);
@@ -303,6 +320,27 @@ void MultibodySystem::apply_prescribed_motion(double t, VecX& q, VecX& v) const 
                               : offset_sample(signals[i], offsets_[i], t);
   }
   write_prescribed(model_, applied_samples_, q, v, nullptr);
+}
+
+void MultibodySystem::hold(int j, double value) {
+  const model::Joint& joint = model_.joints()[static_cast<std::size_t>(j)];
+  assert(joint.nv() == 1 && !joint.is_prescribed());
+  if (!held_[j]) ++holding_;
+  held_[j] = 1;
+  held_value_[j] = value;
+  hybrid_mask_[j] = 1;
+  (void)joint;
+}
+
+void MultibodySystem::release(int j) {
+  if (held_[j]) --holding_;
+  held_[j] = 0;
+  hybrid_mask_[j] = model_.joints()[static_cast<std::size_t>(j)].is_prescribed() ? 1 : 0;
+}
+
+double MultibodySystem::stop_force(int j) const {
+  const int v = model_.joints()[static_cast<std::size_t>(j)].v_index;
+  return data_.tau[v] - tau_elements_[v];
 }
 
 void MultibodySystem::drive_signal(int s) {

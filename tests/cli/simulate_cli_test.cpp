@@ -318,6 +318,43 @@ TEST_F(SimulateCli, InfoShowsPrescribedJointsAndSignals) {
   EXPECT_EQ(j.at("conserves_energy"), false);
 }
 
+// A joint's stops: `info` lists them (text and JSON, the absent bound null), `simulate` says each
+// impact on stderr with its rates, impulse and energy, the rest with its Zeno limit, and with
+// --reactions the stop's force is a column (docs/contacts.md).
+TEST_F(SimulateCli, JointStopsAreListedAndTheirImpactsSaid) {
+  const std::string ball = quoted(example("bouncing_ball.yaml"));
+  const CliRun info = momenta("info " + ball);
+  ASSERT_EQ(info.code, 0) << info.err;
+  EXPECT_NE(info.out.find("stops: lower 0 m, upper none, restitution 0.8"), std::string::npos)
+      << info.out;
+  const json j = json::parse(momenta("info " + ball + " --json").out);
+  EXPECT_EQ(j.at("joints")[0].at("limits"),
+            json({{"lower", 0.0}, {"upper", nullptr}, {"restitution", 0.8}}));
+
+  const CliRun run = momenta("simulate " + ball + " --reactions");
+  ASSERT_EQ(run.code, 0) << run.err;
+  // t₁ = √(2/9.81) = 0.451523640986 s, arriving at √(2 g) = 4.42945 m/s.
+  EXPECT_NE(run.err.find("stops        drop lower stop impact at t = 0.451523640986 s: rate "
+                         "-4.42945 -> 3.54356, impulse 0.7973, 0.35316 J lost"),
+            std::string::npos)
+      << run.err;
+  // At rest from t₁ (1 + e)/(1 − e) = 4.06371276887 s.
+  EXPECT_NE(run.err.find("(its bounces end at t = 4.06371276887 s)"), std::string::npos) << run.err;
+  const Csv csv = parse_csv(run.out);
+  ASSERT_EQ(csv.header.back(), "drop.stop_force");
+  EXPECT_NEAR(csv.rows.back().back(), 0.1 * 9.81, 1e-13);
+
+  const fs::path model = dir_ / "stops.yaml";
+  std::ofstream(model) << "bodies: [{name: b, shape: sphere, mass: 1, radius: 0.1}]\n"
+                          "joints:\n"
+                          "  - {name: j, type: prismatic, parent: world, child: b,\n"
+                          "     limits: {lower: 0, restitution: 2}}\n";
+  const CliRun bad = momenta("info " + quoted(model.string()));
+  EXPECT_EQ(bad.code, 1) << bad.err;
+  EXPECT_NE(bad.err.find("stops.yaml:4:"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("restitution 2 is above 1"), std::string::npos) << bad.err;
+}
+
 // Freedoms are counted after prescribed motion and constraints take theirs: the crank-driven
 // four-bar has three joint speeds, one prescribed, two independent loop rows (of the hinge's five:
 // the out-of-plane ones are implied) and none left; the sleigh's rolling rows leave its

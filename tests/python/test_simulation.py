@@ -198,3 +198,33 @@ def test_a_file_name_where_a_model_belongs_says_what_to_pass():
         momenta.linearize(3)
     assert momenta.simulate.__doc__.startswith("simulate(model: momenta._core.Model")
 
+
+
+def test_joint_stops_are_entries_of_the_summary():
+    # A 1 kg ball dropped from 1 m on a slide whose lower stop is the floor, e = 0.5, built in
+    # Python: the same run as the command line's examples/bouncing_ball.yaml form, its bounces at
+    # t₁ (1 + 2e + … ) and rest at t₁ (1 + e)/(1 − e), t₁ = √(2h/g) (docs/contacts.md).
+    b = momenta.ModelBuilder("ball")
+    b.set_gravity([0, 0, -9.81])
+    b.add_body("ball", momenta.inertia.point_mass(1.0))
+    b.add_joint("drop", "prismatic", parent="world", child="ball", axis=[0, 0, 1], q0=1.0,
+                limits={"lower": 0.0, "restitution": 0.5})
+    run = momenta.simulate(b.build(), duration=4.0, dt=1e-3)
+    stops = run.summary["stops"]
+    t1 = np.sqrt(2 / 9.81)
+    first = stops[0]
+    assert first["kind"] == "impact" and first["joint"] == "drop" and first["stop"] == "lower"
+    assert abs(first["time"] - t1) < 1e-12
+    assert abs(first["rate_after"] + 0.5 * first["rate_before"]) < 1e-14
+    assert abs(first["impulse"] - (first["rate_after"] - first["rate_before"])) < 1e-14
+    assert stops[-1]["kind"] == "rest"
+    assert abs(stops[-1]["rest_time"] - t1 * 1.5 / 0.5) < 1e-10
+    assert run["drop.position"].min() >= 0.0 and run["drop.position"][-1] == 0.0
+    with pytest.raises(ValueError, match="unknown key 'lowr'"):
+        b.add_joint("other", "prismatic", parent="world", child="ball", limits={"lowr": 0})
+    with pytest.raises(ValueError, match="outside \\[0, 1\\]"):
+        bad = momenta.ModelBuilder("bad")
+        bad.add_body("b", momenta.inertia.point_mass(1.0))
+        bad.add_joint("j", "prismatic", parent="world", child="b", limits={"lower": 0,
+                                                                          "restitution": 2})
+        bad.build()

@@ -89,4 +89,22 @@ struct Impact {
 Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointContact& contact,
                           double restitution);
 
+/// A stop striking a joint's coordinate (a revolute or prismatic joint at its limit,
+/// model::JointLimits): the generalized impulse P on coordinate i alone, M Δv = e_i P (+ the
+/// constraints' impulses), that turns its rate v_i⁻ into v_i⁺ = −e v_i⁻ (Newton's restitution on
+/// the coordinate). The rate is linear in P, v_i(P) = v_i⁻ + P (M⁻¹)_ii, so P = −(1 + e) v_i⁻ /
+/// (M⁻¹)_ii. The joint's entry of motion.joint_impulses includes the stop's impulse (its part
+/// along the joint's axis is P).
+struct StopImpact {
+  double impulse = 0.0;      ///< P (N·s or N·m·s), along the coordinate
+  double rate_before = 0.0;  ///< v_i⁻ (m/s or rad/s)
+  double rate_after = 0.0;   ///< v_i⁺ = −e v_i⁻
+  ImpulsiveMotion motion;    ///< the mechanism's response (impulse_work: ½ P (v_i⁻ + v_i⁺))
+};
+
+/// The stop's impact on velocity coordinate `coordinate` with restitution e ∈ [0, 1] at (q, v).
+/// Whatever the sign of v_i⁻ (the caller knows which stop it meets). Throws InvalidArgument for a
+/// coordinate out of range or prescribed, e outside [0, 1], or one the constraints hold still.
+StopImpact stop_impact(const Model& model, VecRef q, VecRef v, int coordinate, double restitution);
+
 }  // namespace momenta::dynamics

@@ -20,6 +20,11 @@ struct RunOptions {
   /// When set, the run ends as soon as the observer has made it true (an event that stops the
   /// run): run() returns after that call, with `state` at the step the observer was handed.
   const bool* finished = nullptr;
+  /// When set, the observer may replace the state it is handed (the caller's `state`, which it
+  /// holds by reference) by an earlier one inside the step just taken — a stop's impact located
+  /// there — and make this true: run() then clears it, tells the integrator
+  /// (Integrator::state_changed) and steps again to the same grid time.
+  bool* restarted = nullptr;
 };
 
 struct RunSummary {

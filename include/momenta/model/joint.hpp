@@ -29,6 +29,8 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -200,6 +202,16 @@ constexpr bool is_rotation_rate(JointType type, int k) {
   return joint_traits(type).v_units[static_cast<std::size_t>(k)] == "rad/s";
 }
 
+/// Stops on a revolute or prismatic joint's coordinate (rad or m): the joint moves freely between
+/// `lower` and `upper`; a stop it reaches strikes it with Newton's restitution (its rate after is
+/// −restitution × its rate before) and holds it while the stop pushes (docs/contacts.md,
+/// simulate/joint_stops.hpp). A bound may be infinite (a stop on one side only).
+struct JointLimits {
+  double lower = -std::numeric_limits<double>::infinity();
+  double upper = std::numeric_limits<double>::infinity();
+  double restitution = 0.0;  ///< e ∈ [0, 1]: 0 a plastic stop, 1 an elastic one
+};
+
 /// A joint as described by a user and stored in the Model. The fields under "set by
 /// ModelBuilder::build()" are ignored on input and filled in by the builder.
 struct Joint {
@@ -236,6 +248,10 @@ struct Joint {
   /// coordinate (size nq == nv: revolute, prismatic, cylindrical, universal, planar) whose value,
   /// rate and acceleration are q, v and v̇ of that coordinate. The signals live in the Model.
   std::vector<std::string> prescribed_signals;
+
+  /// Stops on the coordinate of a revolute or prismatic joint that no signal prescribes; none
+  /// when empty.
+  std::optional<JointLimits> limits;
 
   // --- set by ModelBuilder::build() ----------------------------------------------------------
   int index = -1;                              ///< Index of this joint in Model::joints().

@@ -132,6 +132,13 @@ class Model {
 
   /// True when any joint is prescribed by signals.
   bool has_prescribed_joints() const { return has_prescribed_; }
+  /// True when any joint has stops (Joint::limits).
+  bool has_joint_limits() const {
+    for (const Joint& j : joints_) {
+      if (j.limits) return true;
+    }
+    return false;
+  }
 
   /// The initial state: each joint's q0 and v0 (neutral and zero where not given), stacked.
   const VecX& initial_q() const { return q0_; }

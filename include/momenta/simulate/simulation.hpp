@@ -41,6 +41,12 @@
 // the projection onto them. The rigid-body integrators (splitting, exact, lie_group) advance a
 // free body's own flow and cannot honour constraints: they are refused.
 //
+// Joint stops (model::JointLimits): the run is taken back to each instant a joint reaches a stop,
+// which strikes it (Newton's restitution through the whole mechanism) or holds it, and lets it go
+// where holding it would pull (simulate/joint_stops.hpp). Each is a row just before and one just
+// after, and an entry of the summary's stop_events. With options.reactions each limited joint has
+// a column <joint>.stop_force (N·m or N: the force its stop exerts on the coordinate, 0 when open).
+//
 // Prescribed joints. After every step the recorded copy of the state gets the prescribed
 // coordinates' exact values (MultibodySystem::apply_prescribed_motion); the integrator's own
 // state is left as it returned it.
@@ -59,6 +65,7 @@
 #include "momenta/model/model.hpp"
 #include "momenta/simulate/conservation_audit.hpp"
 #include "momenta/simulate/event_monitor.hpp"
+#include "momenta/simulate/joint_stops.hpp"
 #include "momenta/system/constraint_solver.hpp"
 #include "momenta/system/output_set.hpp"
 
@@ -143,6 +150,9 @@ struct SimulationSummary {
   /// Every event that happened, in time order (each also a row of the table); the last one's
   /// action is stop when an event ended the run (t_end is then its time).
   std::vector<EventOccurrence> events;
+  /// Every impact, rest and release of a joint's stops (simulate/joint_stops.hpp), in time
+  /// order; each impact is two rows of the table at its time, just before and just after.
+  std::vector<StopEvent> stop_events;
 };
 
 /// The most velocity coordinates for which a run examines the linearization's eigenvalues (a
@@ -212,6 +222,7 @@ class Simulation {
   std::unique_ptr<system::ClosedLoopSystem> closed_loop_;  // null without controllers
   std::unique_ptr<integrate::Integrator> integrator_;
   std::unique_ptr<EventMonitor> events_;
+  std::unique_ptr<JointStops> stops_;  // null without joint limits
   std::vector<std::string> columns_;
   std::vector<std::string> units_;
 };

@@ -136,6 +136,18 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   /// The signals' samples (with offsets) at the last evaluated instant.
   std::span<const model::SignalSample> signal_samples() const { return samples_; }
 
+  /// Holds joint j's coordinate (a revolute or prismatic joint's) at `value` with zero rate and
+  /// acceleration, as a stop holds it (simulate/joint_stops.hpp): evaluations then treat it as
+  /// prescribed (hybrid dynamics), and stop_force(j) is the force the hold needs. The caller sets
+  /// the state's coordinate and rate to match. No allocation.
+  void hold(int j, double value);
+  /// Lets joint j move by forces again.
+  void release(int j);
+  bool held(int j) const { return held_[static_cast<std::size_t>(j)] != 0; }
+  /// After an evaluation (acceleration() or evaluate()): the generalized force the hold of joint j
+  /// exerts on its coordinate (N·m or N): what the joint's motion needs less the force elements'.
+  double stop_force(int j) const;
+
   /// Energy at (q, v) (prescribed coordinates as given). Overwrites data()'s poses and
   /// velocities with those of (q, v). No allocation.
   Energy energy(const VecX& q, const VecX& v);
@@ -182,6 +194,12 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   // accelerations_at_singular_configuration's workspace, and whether it is running.
   VecX singular_q_, singular_v_, probe_q_, probe_v_, vdot_mean_, lambda_mean_;
   bool probing_ = false;
+  // Joints a stop holds (see hold()): per joint, whether held and at what value; the hybrid
+  // dynamics' mask (prescribed or held joints); and how many are held.
+  std::vector<char> held_;
+  std::vector<double> held_value_;
+  std::vector<char> hybrid_mask_;
+  int holding_ = 0;
   bool body_loads_ = false;  // some element acts on bodies (needs poses; f_ext is not zero)
   bool conserves_energy_ = false;
   bool conserves_angular_momentum_ = false;

@@ -24,9 +24,9 @@ using model::JointType;
 // builder's 1e-9 check sees a unit vector.
 constexpr double kUnitTolerance = 1e-6;
 
-constexpr std::array<std::string_view, 16> kJointKeys = {
-    "name", "type",   "parent", "child",  "in_parent", "in_child", "axis",     "axis2",
-    "q0",   "q0_deg", "v0",     "v0_deg", "v0_rpm",    "damping",  "armature", "prescribed"};
+constexpr std::array<std::string_view, 17> kJointKeys = {
+    "name",   "type", "parent", "child",  "in_parent", "in_child", "axis",       "axis2", "q0",
+    "q0_deg", "v0",   "v0_deg", "v0_rpm", "damping",   "armature", "prescribed", "limits"};
 
 bool has_axis(JointType t) { return model::joint_traits(t).axes >= 1; }
 
@@ -176,6 +176,59 @@ void read_prescribed(const YamlNode& e, model::Joint& j, const Context& ctx) {
   for (const YamlNode& ref : refs) j.prescribed_signals.push_back(ctx.signals.resolve(ref));
 }
 
+// limits: {lower, upper (or lower_deg, upper_deg on a revolute joint), restitution}: stops on a
+// revolute or prismatic joint's coordinate, one bound at least, the initial coordinate between.
+void read_limits(const YamlNode& e, model::Joint& j) {
+  const YamlNode node = e.at("limits");
+  node.expect_map("stops: a map with 'lower' and/or 'upper' and 'restitution'");
+  if (j.type != JointType::revolute && j.type != JointType::prismatic) {
+    node.fail(fmt::format(
+        "limits are stops on one coordinate: a revolute or prismatic joint's, not a {} joint's",
+        model::joint_type_name(j.type)));
+  }
+  if (j.is_prescribed()) {
+    node.fail(
+        "a prescribed joint moves as its signal says: a stop cannot hold it (remove "
+        "'prescribed' or 'limits')");
+  }
+  const bool angle = j.type == JointType::revolute;
+  node.check_keys(angle ? std::vector<std::string_view>{"lower", "upper", "lower_deg", "upper_deg",
+                                                        "restitution"}
+                        : std::vector<std::string_view>{"lower", "upper", "restitution"});
+  model::JointLimits limits;
+  const auto bound = [&](std::string_view si, std::string_view deg, double& out) {
+    if (node.has(si) && node.has(deg)) {
+      node.at(deg).fail(fmt::format("give '{}' or '{}', not both", si, deg));
+    }
+    if (const auto x = node.find_number(si)) out = *x;
+    if (const auto x = node.find_number(deg)) out = *x * std::numbers::pi / 180.0;
+  };
+  bound("lower", "lower_deg", limits.lower);
+  bound("upper", "upper_deg", limits.upper);
+  if (!std::isfinite(limits.lower) && !std::isfinite(limits.upper)) {
+    node.fail(angle ? "give 'lower' and/or 'upper' (rad), or 'lower_deg' and/or 'upper_deg'"
+                    : "give 'lower' and/or 'upper' (m)");
+  }
+  if (!(limits.lower < limits.upper)) {
+    node.fail(fmt::format("lower {} is not below upper {}", limits.lower, limits.upper));
+  }
+  if (const auto e_node = node.find("restitution")) {
+    const double r = node.find_number("restitution", Bound::kNonNegative).value();
+    if (r > 1.0) {
+      e_node->fail(fmt::format(
+          "the coefficient of restitution {} is above 1 (0: a plastic stop, 1: an elastic one)",
+          r));
+    }
+    limits.restitution = r;
+  }
+  const double q0 = j.q0.size() > 0 ? j.q0[0] : 0.0;
+  if (q0 < limits.lower || q0 > limits.upper) {
+    node.fail(fmt::format("the initial coordinate {} {} is outside the limits [{}, {}]", q0,
+                          angle ? "rad" : "m", limits.lower, limits.upper));
+  }
+  j.limits = limits;
+}
+
 model::Joint read_joint(const YamlNode& e, Context& ctx) {
   e.expect_map("a joint: a map with 'name', 'type', 'parent' and 'child'");
   e.check_keys(kJointKeys);
@@ -200,8 +253,8 @@ model::Joint read_joint(const YamlNode& e, Context& ctx) {
     refuse("axis2", fmt::format("only the {} joint has two axes", joints_with_axes(2)));
   }
   if (j.nv() == 0) {
-    for (const std::string_view key :
-         {"q0", "q0_deg", "v0", "v0_deg", "v0_rpm", "damping", "armature", "prescribed"}) {
+    for (const std::string_view key : {"q0", "q0_deg", "v0", "v0_deg", "v0_rpm", "damping",
+                                       "armature", "prescribed", "limits"}) {
       refuse(key, "it has no degrees of freedom");
     }
   }
@@ -224,6 +277,7 @@ model::Joint read_joint(const YamlNode& e, Context& ctx) {
   j.damping = e.find_number("damping", Bound::kNonNegative).value_or(0.0);
   j.armature = e.find_number("armature", Bound::kNonNegative).value_or(0.0);
   if (e.has("prescribed")) read_prescribed(e, j, ctx);
+  if (e.has("limits")) read_limits(e, j);
   return j;
 }
 

@@ -200,6 +200,51 @@ TEST(ImpulsiveMotion, KelvinsTheoremOnRandomTrees) {
   }
 }
 
+// A stop striking one coordinate of a random tree (every joint type present): the rate after is
+// −e times the rate before exactly; the impulse is the closed form −(1 + e) v_i⁻ / (M⁻¹)_ii with
+// M⁻¹ from CRBA's dense matrix by LU (not the LDLᵀ of the free block the solve uses); the speeds
+// balance M Δv = e_i P; the energy lost is ½ (1 − e²) v_i⁻² / (M⁻¹)_ii; Kelvin's work matches.
+TEST(ImpulsiveMotion, AStopStrikesOneCoordinateThroughTheWholeTree) {
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    SCOPED_TRACE(seed);
+    const Model model =
+        test::random_tree(8, seed, test::all_joint_types(), Vec3(0, 0, -9.81), 0.05);
+    std::mt19937 rng(seed);
+    const VecX q = test::random_configuration(model, rng);
+    const VecX v = test::random_vector(model.nv(), rng);
+    Data data(model);
+    const MatX M = crba(model, data, q);
+    const MatX M_inv = M.fullPivLu().inverse();
+    int struck = 0;
+    for (const model::Joint& j : model.joints()) {
+      if (j.nv() != 1) continue;
+      const int i = j.v_index;
+      for (const double e : {0.0, 0.6, 1.0}) {
+        const StopImpact s = stop_impact(model, q, v, i, e);
+        EXPECT_EQ(s.rate_before, v[i]);
+        EXPECT_EQ(s.motion.v_after[i], -e * v[i]);
+        const double P = -(1.0 + e) * v[i] / M_inv(i, i);
+        EXPECT_NEAR(s.impulse, P, 1e-12 * std::max(1.0, std::abs(P)));
+        VecX generalized = VecX::Zero(model.nv());
+        generalized[i] = s.impulse;
+        EXPECT_LT((M * (s.motion.v_after - v) - generalized).norm(),
+                  1e-11 * std::max(1.0, std::abs(P)));
+        const double lost = 0.5 * (1.0 - e * e) * v[i] * v[i] / M_inv(i, i);
+        const double T = std::max(1.0, s.motion.kinetic_before);
+        EXPECT_NEAR(s.motion.kinetic_before - s.motion.kinetic_after, lost, 1e-12 * T);
+        EXPECT_NEAR(s.motion.impulse_work, s.motion.kinetic_after - s.motion.kinetic_before,
+                    1e-12 * T);
+      }
+      ++struck;
+    }
+    EXPECT_GT(struck, 0);
+  }
+  const Model model = test::random_tree(3, 1, test::all_joint_types(), Vec3(0, 0, -9.81), 0.05);
+  const VecX q = model.initial_q(), v = VecX::Zero(model.nv());
+  EXPECT_THROW(stop_impact(model, q, v, model.nv(), 0.5), InvalidArgument);
+  EXPECT_THROW(stop_impact(model, q, v, 0, 1.5), InvalidArgument);
+}
+
 // Eccentric impact (Beer & Johnston ch. 17): a sphere of mass m_s sliding at v₀ strikes a rod
 // hanging at rest from a pin (I_O = m L²/3) at depth d. Angular momentum about the pin and
 // Newton's restitution give the rod's ω = m_s v₀ d (1 + e) / (I_O + m_s d²) and the sphere's

@@ -1,0 +1,225 @@
+// Joint stops in a run (simulate/joint_stops.hpp) against closed forms:
+// - a ball dropped from h on a floor (examples/bouncing_ball.yaml) with restitution e (a prismatic
+// joint's lower stop): the
+//   bounce times t₁ (1 + 2e + … + 2e^{k−1}), t₁ = √(2h/g), each rebound's speed e^k √(2gh) and so
+//   its height h e^{2k}, the measured e, and rest at t₁ (1 + e)/(1 − e) — the Zeno limit — after
+//   which the ball lies still with the floor's force m g;
+// - a pendulum swinging into a stop: its rate there from energy, the rebound −e times it, the
+//   angle never past the stop;
+// - elastic stops (e = 1): the energy audit holds across every impact;
+// - a pendulum held on a stop by gravity and pulled off by a torque ramp: released when the torque
+//   equals the weight's moment, the stop's force until then m g (l/2) sin θ − c t;
+// - the model file's errors for stops where there are none to give.
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "momenta/common/error.hpp"
+#include "momenta/io/model_file.hpp"
+#include "momenta/simulate/simulation.hpp"
+
+namespace momenta::simulate {
+namespace {
+
+constexpr double kG = 9.81;
+
+model::Model load(const std::string& text) {
+  return io::parse_model_file(text, "stops.yaml", ".").model;
+}
+
+struct StopRun {
+  SimulationSummary summary;
+  TableSink table;
+};
+
+StopRun run_stops(const model::Model& model, const std::string& integrator, double step,
+                  double duration, bool reactions = false) {
+  SimulationOptions options;
+  options.duration = duration;
+  options.step = step;
+  options.integrator = integrator;
+  options.tolerances = {1e-12, 1e-14};
+  options.reactions = reactions;
+  Simulation simulation(model, {}, options);
+  StopRun run;
+  run.summary = simulation.run(run.table);
+  return run;
+}
+
+// A uniform rod, m = 1 kg, l = 1 m, hanging from a pin about y (I_O = m l²/3).
+std::string rod(const std::string& joint_extra, const std::string& more = "") {
+  return "gravity: [0, 0, -9.81]\n"
+         "bodies: [{name: rod, shape: slender_rod, mass: 1.0, length: 1.0, position: [0, 0, "
+         "-0.5]}]\n"
+         "joints:\n"
+         "  - {name: pin, type: revolute, parent: world, child: rod, axis: [0, 1, 0], " +
+         joint_extra + "}\n" + more;
+}
+
+TEST(JointStops, BouncingBallMatchesTheClosedForm) {
+  const double h = 1.0, e = 0.8;
+  const double t1 = std::sqrt(2.0 * h / kG);
+  const double v1 = std::sqrt(2.0 * kG * h);
+  for (const std::string integrator : {"rk4", "dopri5"}) {
+    SCOPED_TRACE(integrator);
+    // examples/bouncing_ball.yaml: h = 1 m, e = 0.8 (tests run from the source tree).
+    const StopRun run = run_stops(io::read_model_file("examples/bouncing_ball.yaml").model,
+                                  integrator, 1e-3, 5.0, /*reactions=*/true);
+    const std::vector<StopEvent>& events = run.summary.stop_events;
+    ASSERT_GT(events.size(), 50u);
+    double t_expected = t1;
+    for (std::size_t k = 0; k < events.size(); ++k) {
+      const StopEvent& s = events[k];
+      EXPECT_EQ(s.joint, "drop");
+      EXPECT_FALSE(s.upper);
+      if (k + 1 < events.size()) {
+        ASSERT_EQ(s.kind, StopEventKind::impact) << k;
+      }
+      // Its time, the speed it arrives with, e^k √(2gh), and the measured e. rk4 integrates the
+      // parabola exactly and the Hermite interpolant reproduces it; dopri5's error is its
+      // tolerance's. The errors of the event location (1e-14 relative in time) add up over k.
+      const double v_in = v1 * std::pow(e, static_cast<double>(k));
+      if (k < 20) {
+        EXPECT_NEAR(s.time, t_expected, 1e-12 * t_expected) << k;
+        EXPECT_NEAR(s.rate_before, -v_in, 1e-11 * v1) << k;
+      }
+      if (s.kind == StopEventKind::impact) {
+        EXPECT_NEAR(-s.rate_after / s.rate_before, e, 1e-12) << k;
+        // The impulse turns m v⁻ into m v⁺, and takes ½ m (v⁻² − v⁺²).
+        EXPECT_NEAR(s.impulse, 0.1 * (s.rate_after - s.rate_before), 1e-14) << k;
+        EXPECT_NEAR(s.energy_lost, 0.05 * s.rate_before * s.rate_before * (1 - e * e), 1e-13) << k;
+      }
+      t_expected += 2.0 * v_in * e / kG;
+    }
+    // The last event holds the ball: its bounces end at t₁ (1 + e)/(1 − e).
+    const StopEvent& rest = events.back();
+    ASSERT_EQ(rest.kind, StopEventKind::rest);
+    EXPECT_NEAR(rest.rest_time, t1 * (1 + e) / (1 - e), 1e-10);
+    EXPECT_LT(rest.rest_time - rest.time, 1e-8);
+
+    // The heights between bounces: never above h e^{2k}; never below the floor; at rest on it
+    // with the floor's force m g.
+    const int z = run.table.column("drop.position");
+    const int w = run.table.column("drop.position_rate");
+    const int force = run.table.column("drop.stop_force");
+    std::size_t k = 0;
+    for (const std::vector<double>& row : run.table.rows) {
+      while (k + 1 < events.size() && row[0] > events[k].time) ++k;
+      EXPECT_GE(row[z], 0.0) << row[0];
+      EXPECT_LE(row[z], h * std::pow(e, 2.0 * k) * (1 + 1e-12) + 1e-15) << row[0];
+      if (row[0] > rest.time) {
+        EXPECT_EQ(row[z], 0.0);
+        EXPECT_EQ(row[w], 0.0);
+        EXPECT_NEAR(row[force], 0.1 * kG, 1e-13);
+      } else if (row[0] < events.front().time) {
+        EXPECT_EQ(row[force], 0.0);
+      }
+    }
+  }
+}
+
+TEST(JointStops, PendulumReboundsOffAStopAndNeverPassesIt) {
+  const double e = 0.5, lower = -0.2, theta0 = 1.0;
+  const StopRun run =
+      run_stops(load(rod("q0: 1.0, limits: {lower: -0.2, upper: 2.0, restitution: 0.5}")), "dopri5",
+                1e-2, 3.0);
+  const std::vector<StopEvent>& events = run.summary.stop_events;
+  ASSERT_GE(events.size(), 2u);
+  // Energy from θ0 to the stop: ½ I_O θ̇² = m g (l/2)(cos θ_s − cos θ0), I_O = 1/3.
+  const double rate = -std::sqrt(3.0 * kG * (std::cos(lower) - std::cos(theta0)));
+  EXPECT_NEAR(events[0].rate_before, rate, 1e-9);
+  for (const StopEvent& s : events) {
+    if (s.kind != StopEventKind::impact) continue;
+    EXPECT_FALSE(s.upper);
+    EXPECT_NEAR(s.rate_after, -e * s.rate_before, 1e-15);
+  }
+  const int angle = run.table.column("pin.angle");
+  for (const std::vector<double>& row : run.table.rows) EXPECT_GE(row[angle], lower);
+}
+
+TEST(JointStops, ElasticStopsKeepTheEnergy) {
+  const StopRun run =
+      run_stops(load(rod("v0: 3.0, limits: {lower: -0.3, upper: 0.3, restitution: 1}")), "dopri5",
+                1e-2, 10.0);
+  const std::vector<StopEvent>& events = run.summary.stop_events;
+  ASSERT_GT(events.size(), 20u);
+  bool upper = false, lower = false;
+  for (const StopEvent& s : events) {
+    ASSERT_EQ(s.kind, StopEventKind::impact);
+    EXPECT_EQ(s.rate_after, -s.rate_before);
+    EXPECT_NEAR(s.energy_lost, 0.0, 1e-13);
+    (s.upper ? upper : lower) = true;
+  }
+  EXPECT_TRUE(upper && lower);
+  ASSERT_TRUE(run.summary.energy_audited);
+  ASSERT_FALSE(run.summary.audit.empty());
+  EXPECT_EQ(run.summary.audit[0].name, "energy");
+  EXPECT_LT(run.summary.audit[0].max_drift, 1e-10);
+}
+
+TEST(JointStops, HeldOnAStopUntilATorqueRampPullsItOff) {
+  // θ_s = 0.3 rad: gravity's moment −m g (l/2) sin θ_s pushes the rod into its lower stop; the
+  // torque c t about +y, c = 1 N·m/s, equals it at t_r = m g (l/2) sin θ_s / c.
+  const std::string forces =
+      "inputs: [{name: pull, type: ramp, slope: 1.0}]\n"
+      "forces: [{name: hand, type: torque, body: rod, vector: [0, 1, 0], signal: pull}]\n";
+  const model::Model model = load(rod("q0: 0.3, limits: {lower: 0.3}", forces));
+  const double weight_moment = kG * 0.5 * std::sin(0.3);
+  for (const std::string integrator : {"rk4", "dopri5", "bdf"}) {
+    SCOPED_TRACE(integrator);
+    const StopRun run = run_stops(model, integrator, 1e-2, 2.0, /*reactions=*/true);
+    const std::vector<StopEvent>& events = run.summary.stop_events;
+    ASSERT_EQ(events.size(), 2u);
+    EXPECT_EQ(events[0].kind, StopEventKind::rest);
+    EXPECT_EQ(events[0].time, 0.0);
+    EXPECT_EQ(events[1].kind, StopEventKind::release);
+    EXPECT_NEAR(events[1].time, weight_moment, 1e-13);
+    const int angle = run.table.column("pin.angle");
+    const int force = run.table.column("pin.stop_force");
+    for (const std::vector<double>& row : run.table.rows) {
+      if (row[0] < events[1].time) {
+        EXPECT_EQ(row[angle], 0.3) << row[0];
+        EXPECT_NEAR(row[force], weight_moment - row[0], 1e-12) << row[0];
+      } else if (row[0] > events[1].time) {
+        EXPECT_GT(row[angle], 0.3) << row[0];
+        EXPECT_EQ(row[force], 0.0);
+      }
+    }
+  }
+}
+
+TEST(JointStops, ModelFileRefusesStopsWhereThereAreNone) {
+  const auto message = [](const std::string& text) {
+    try {
+      load(text);
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string head =
+      "bodies: [{name: b, shape: sphere, mass: 1, radius: 0.1}]\njoints:\n  - {name: j, parent: "
+      "world, child: b, ";
+  EXPECT_NE(message(head + "type: spherical, limits: {lower: 0}}\n").find("revolute or prismatic"),
+            std::string::npos);
+  EXPECT_NE(
+      message(head + "type: prismatic, limits: {lower: 0, restitution: 1.5}}\n").find("above 1"),
+      std::string::npos);
+  EXPECT_NE(message(head + "type: prismatic, q0: -1, limits: {lower: 0}}\n").find("outside"),
+            std::string::npos);
+  EXPECT_NE(message(head + "type: prismatic, limits: {lower: 1, upper: 0}}\n").find("not below"),
+            std::string::npos);
+  EXPECT_NE(message(head + "type: prismatic, limits: {restitution: 0.5}}\n").find("give 'lower'"),
+            std::string::npos);
+  EXPECT_NE(message(head + "type: prismatic, limits: {lower_deg: 0}}\n").find("lower_deg"),
+            std::string::npos);
+  EXPECT_NE(message(head + "type: revolute, limits: {lower_deg: 10, upper: 1}}\n").find("outside"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace momenta::simulate
