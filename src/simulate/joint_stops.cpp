@@ -51,10 +51,8 @@ double JointStops::push(system::MultibodySystem& system, integrate::SecondOrderS
   return s.outward * system.stop_force(s.joint);
 }
 
-double JointStops::outward_acceleration(system::MultibodySystem& system,
-                                        integrate::SecondOrderSystem& advanced, const Stop& s,
+double JointStops::outward_acceleration(integrate::SecondOrderSystem& advanced, const Stop& s,
                                         const integrate::State& state) {
-  (void)system;
   vdot_.resize(state.v.size());
   advanced.acceleration(state.t, state.q, state.v, vdot_);
   return s.outward * vdot_[s.v];
@@ -132,7 +130,7 @@ void JointStops::strike(system::MultibodySystem& system, integrate::SecondOrderS
   // back on the stop at once, leaving it (a flight the step cannot resolve), is held too.
   const bool leaving = s.outward * event.rate_before > 0.0;
   const double rebound = s.outward * at.v[s.v];
-  const double into = -outward_acceleration(system, advanced, s, at);
+  const double into = -outward_acceleration(advanced, s, at);
   if (into > 0.0 && (leaving || 2.0 * rebound / into < rest_flight_)) {
     event.kind = StopEventKind::rest;
     event.rest_time = at.t;

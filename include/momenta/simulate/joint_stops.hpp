@@ -109,8 +109,7 @@ class JointStops {
   double push(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
               const Stop& s, const integrate::State& state);
   // The coordinate's acceleration away from stop s, free of it, at `state`.
-  double outward_acceleration(system::MultibodySystem& system,
-                              integrate::SecondOrderSystem& advanced, const Stop& s,
+  double outward_acceleration(integrate::SecondOrderSystem& advanced, const Stop& s,
                               const integrate::State& state);
   // The first time in (a, b] the gap of stop s falls below zero on the step's interpolant, given
   // gap(b) < 0; or a itself when it only goes in from there.
