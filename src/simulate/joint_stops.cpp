@@ -44,18 +44,26 @@ JointStops::JointStops(const model::Model& model, double step)
   held_.assign(stops_.size(), 0);
 }
 
-double JointStops::push(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
-                        const Stop& s, const integrate::State& state) {
+const VecX& JointStops::accelerations(integrate::SecondOrderSystem& advanced,
+                                      const integrate::State& state) {
   vdot_.resize(state.v.size());
   advanced.acceleration(state.t, state.q, state.v, vdot_);
+  return vdot_;
+}
+
+double JointStops::push(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+                        const Stop& s, const integrate::State& state) {
+  accelerations(advanced, state);
   return s.outward * system.stop_force(s.joint);
 }
 
-double JointStops::outward_acceleration(integrate::SecondOrderSystem& advanced, const Stop& s,
-                                        const integrate::State& state) {
-  vdot_.resize(state.v.size());
-  advanced.acceleration(state.t, state.q, state.v, vdot_);
-  return s.outward * vdot_[s.v];
+StopEvent JointStops::event_at(const Stop& s, double t, StopEventKind kind) const {
+  StopEvent event;
+  event.kind = kind;
+  event.joint = model_.joints()[static_cast<std::size_t>(s.joint)].name;
+  event.upper = s.outward < 0.0;
+  event.time = event.rest_time = t;
+  return event;
 }
 
 double JointStops::first_contact(const Stop& s, integrate::SecondOrderSystem& advanced, double a,
@@ -114,11 +122,8 @@ void JointStops::strike(system::MultibodySystem& system, integrate::SecondOrderS
                         const Stop& s, integrate::State& at, StopEvent& event) {
   const int nq = model_.nq(), nv = model_.nv();
   at.q[s.q] = s.value;
-  event.joint = model_.joints()[static_cast<std::size_t>(s.joint)].name;
-  event.upper = s.outward < 0.0;
-  event.time = at.t;
+  event = event_at(s, at.t, StopEventKind::impact);
   event.rate_before = at.v[s.v];
-  event.kind = StopEventKind::impact;
   const double kinetic_before = system.energy(at.q.head(nq), at.v.head(nv)).kinetic;
   if (s.outward * at.v[s.v] < 0.0) {  // approaching: the stop strikes
     const dynamics::StopImpact impact =
@@ -130,16 +135,13 @@ void JointStops::strike(system::MultibodySystem& system, integrate::SecondOrderS
   // back on the stop at once, leaving it (a flight the step cannot resolve), is held too.
   const bool leaving = s.outward * event.rate_before > 0.0;
   const double rebound = s.outward * at.v[s.v];
-  const double into = -outward_acceleration(advanced, s, at);
+  const double into = -s.outward * accelerations(advanced, at)[s.v];
   if (into > 0.0 && (leaving || 2.0 * rebound / into < rest_flight_)) {
     event.kind = StopEventKind::rest;
-    event.rest_time = at.t;
     if (rebound > 0.0 && s.restitution < 1.0) {
       event.rest_time += 2.0 * rebound / (into * (1.0 - s.restitution));
     }
     close(system, s, at);
-  } else {
-    event.rest_time = at.t;
   }
   event.rate_after = at.v[s.v];
   event.energy_lost = kinetic_before - system.energy(at.q.head(nq), at.v.head(nv)).kinetic;
@@ -207,7 +209,6 @@ void JointStops::act(system::MultibodySystem& system, integrate::SecondOrderSyst
   const std::size_t k = static_cast<std::size_t>(pending_);
   const Stop& s = stops_[k];
   pending_ = -1;
-  event = StopEvent{};
   if (!held_[k]) {
     strike(system, advanced, s, state, event);
     return;
@@ -216,10 +217,7 @@ void JointStops::act(system::MultibodySystem& system, integrate::SecondOrderSyst
   held_[k] = 0;
   state.q[s.q] = s.value;
   state.v[s.v] = 0.0;
-  event.kind = StopEventKind::release;
-  event.joint = model_.joints()[static_cast<std::size_t>(s.joint)].name;
-  event.upper = s.outward < 0.0;
-  event.time = event.rest_time = state.t;
+  event = event_at(s, state.t, StopEventKind::release);
 }
 
 }  // namespace momenta::simulate

@@ -132,9 +132,7 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
       }
     }
     for (const model::Joint& j : model.joints()) {
-      if (j.limits)
-        add(fmt::format("{}.stop_force", j.name),
-            model::v_unit(model, j.v_index) == "m/s" ? "N" : "N·m");
+      if (j.limits) add(fmt::format("{}.stop_force", j.name), model::effort_unit(model, j.v_index));
     }
     for (std::size_t c = 0; c < model.constraints().size(); ++c) {
       const auto labels = model::constraint_force_labels(model.constraints()[c]);

@@ -108,9 +108,10 @@ class JointStops {
   // The force a held stop exerts along its outward direction at `state` (evaluates `advanced`).
   double push(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
               const Stop& s, const integrate::State& state);
-  // The coordinate's acceleration away from stop s, free of it, at `state`.
-  double outward_acceleration(integrate::SecondOrderSystem& advanced, const Stop& s,
-                              const integrate::State& state);
+  // Every coordinate's acceleration at `state` (evaluates `advanced`).
+  const VecX& accelerations(integrate::SecondOrderSystem& advanced, const integrate::State& state);
+  // What stop s does at time t, its rates and impulse still to fill.
+  StopEvent event_at(const Stop& s, double t, StopEventKind kind) const;
   // The first time in (a, b] the gap of stop s falls below zero on the step's interpolant, given
   // gap(b) < 0; or a itself when it only goes in from there.
   double first_contact(const Stop& s, integrate::SecondOrderSystem& advanced, double a, double b,
