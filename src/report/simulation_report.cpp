@@ -8,6 +8,7 @@
 #include "momenta/common/error.hpp"
 #include "momenta/model/event_spec.hpp"
 #include "momenta/model/integrators.hpp"
+#include "momenta/model/units.hpp"
 #include "momenta/report/report.hpp"
 #include "momenta/system/freedoms.hpp"
 #include "sections.hpp"
@@ -83,7 +84,10 @@ json summary_json(const SimulationRun& run, double fastest_rate) {
   }
   json stops = json::array();
   for (const simulate::StopEvent& e : s.stop_events) {
+    const int v = file.model.joint(file.model.joint_index(e.joint)).v_index;
     stops.push_back({{"kind", simulate::stop_event_kind_name(e.kind)},
+                     {"rate_unit", model::v_unit(file.model, v)},
+                     {"impulse_unit", model::effort_unit(file.model, v) + "·s"},
                      {"joint", e.joint},
                      {"stop", e.upper ? "upper" : "lower"},
                      {"time", e.time},

@@ -5,7 +5,10 @@
 #include <cstdint>
 #include <limits>
 
+#include <fmt/format.h>
+
 #include "crossing_time.hpp"
+#include "momenta/common/error.hpp"
 #include "momenta/dynamics/impulse.hpp"
 #include "momenta/system/multibody_system.hpp"
 
@@ -16,6 +19,10 @@ namespace {
 // than a sixteenth of the step is found at its estimated apex, or not at all (then it is below
 // the coordinate's resolution and the stop closes).
 constexpr int kSamples = 16;
+
+// How often the stops may act at one instant before the run is stopped as stalled: each stop
+// strikes, closes or lets go there once or twice in a real sequence.
+constexpr int kActsAtOneInstant = 64;
 
 }  // namespace
 
@@ -36,10 +43,15 @@ JointStops::JointStops(const model::Model& model, double step)
   for (const model::Joint& j : model.joints()) {
     if (!j.limits) continue;
     const model::JointLimits& l = *j.limits;
+    const auto slack = [](double value) {
+      return 4.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(value));
+    };
     if (std::isfinite(l.lower))
-      stops_.push_back({j.index, j.q_index, j.v_index, l.lower, 1.0, l.restitution});
+      stops_.push_back(
+          {j.index, j.q_index, j.v_index, l.lower, 1.0, l.restitution, slack(l.lower)});
     if (std::isfinite(l.upper))
-      stops_.push_back({j.index, j.q_index, j.v_index, l.upper, -1.0, l.restitution});
+      stops_.push_back(
+          {j.index, j.q_index, j.v_index, l.upper, -1.0, l.restitution, slack(l.upper)});
   }
   held_.assign(stops_.size(), 0);
 }
@@ -137,11 +149,18 @@ void JointStops::strike(system::MultibodySystem& system, integrate::SecondOrderS
   const double rebound = s.outward * at.v[s.v];
   const double into = -s.outward * accelerations(advanced, at)[s.v];
   if (into > 0.0 && (leaving || 2.0 * rebound / into < rest_flight_)) {
-    event.kind = StopEventKind::rest;
-    if (rebound > 0.0 && s.restitution < 1.0) {
-      event.rest_time += 2.0 * rebound / (into * (1.0 - s.restitution));
-    }
     close(system, s, at);
+    // Held, the stop must push: where its force does not (the joint pushed neither way to within
+    // round-off), the joint stays free.
+    if (push(system, advanced, s, at) > 0.0) {
+      event.kind = StopEventKind::rest;
+      if (rebound > 0.0 && s.restitution < 1.0) {
+        event.rest_time += 2.0 * rebound / (into * (1.0 - s.restitution));
+      }
+    } else {
+      system.release(s.joint);
+      held_[static_cast<std::size_t>(&s - stops_.data())] = 0;
+    }
   }
   event.rate_after = at.v[s.v];
   event.energy_lost = kinetic_before - system.energy(at.q.head(nq), at.v.head(nv)).kinetic;
@@ -187,7 +206,7 @@ bool JointStops::check(system::MultibodySystem& system, integrate::SecondOrderSy
     } else {
       if (system.held(s.joint)) continue;  // its other stop holds it
       const double gap_end = gap(s, end);
-      if (!(gap_end < 0.0)) continue;
+      if (!(gap_end < -s.slack)) continue;
       set_interpolant();
       start_rate_ = start.v[s.v];
       t = first_contact(s, advanced, start.t, end.t, gap(s, start), gap_end);
@@ -209,6 +228,17 @@ void JointStops::act(system::MultibodySystem& system, integrate::SecondOrderSyst
   const std::size_t k = static_cast<std::size_t>(pending_);
   const Stop& s = stops_[k];
   pending_ = -1;
+  acts_at_last_ = state.t == last_act_ ? acts_at_last_ + 1 : 1;
+  last_act_ = state.t;
+  if (acts_at_last_ > kActsAtOneInstant) {
+    throw NumericalError(fmt::format(
+        "the stops make no progress at t = {:.12g} s: joint '{}''s {} stop has acted {} times "
+        "there (its coordinate {:.17g}, rate {:.3g}) without the run moving on — the joint is "
+        "pushed neither onto the stop nor off it to within round-off. Widen the limits, or give "
+        "the joint a little damping or load",
+        state.t, model_.joints()[static_cast<std::size_t>(s.joint)].name,
+        s.outward > 0.0 ? "lower" : "upper", kActsAtOneInstant, state.q[s.q], state.v[s.v]));
+  }
   if (!held_[k]) {
     strike(system, advanced, s, state, event);
     return;

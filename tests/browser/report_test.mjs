@@ -263,6 +263,50 @@ test('heavy top: reports its spin, a rigid body drawn as its cone, nutating abou
   await r.page.close();
 });
 
+// The bouncing ball (a joint's stop, e = 0.8): every impact a tick on the time axis of every time
+// plot, at its time — the first at t₁ = √(2h/g), where the height plot reaches the floor — its
+// tooltip what happened; the summary lists every stop entry with units, rest at the Zeno limit.
+test('bouncing ball: its impacts ticked on the time axis and listed in the summary', async () => {
+  const r = await checkSimulationPage('bouncing_ball', path.join(examples, 'bouncing_ball.yaml'));
+  const summary = await r.page.evaluate(() => window.momentaReport.summary());
+  const stops = summary.stops;
+  assert.ok(stops.length > 50, `${stops.length} stop entries`);
+  const t1 = Math.sqrt(2 * 1.0 / 9.81);
+  assert.ok(Math.abs(stops[0].time - t1) < 1e-9, `first impact at ${stops[0].time}`);
+  assert.equal(stops[0].rate_unit, 'm/s');
+  await r.page.evaluate(() => window.momentaReport.drawAllCharts());
+  const ticks = await r.page.evaluate(() => {
+    const plot = document.querySelector('#plots .plot');
+    const over = plot.querySelector('.u-over');
+    const shown = [...plot.querySelectorAll('.time-mark')].filter((t) => t.style.display !== 'none');
+    return { count: shown.length, width: over.clientWidth,
+      first: { left: parseFloat(shown[0].style.left), title: shown[0].title, time: Number(shown[0].dataset.time) },
+      last: { left: parseFloat(shown.at(-1).style.left), kind: shown.at(-1).className } };
+  });
+  assert.equal(ticks.count, stops.length);
+  assert.match(ticks.first.title, /^drop lower stop: impact at t = 0\.451524 s, rate -4\.429 → 3\.544 m\/s, impulse 0\.7973 N·s, 0\.353 J lost$/);
+  // Placed at its time on the axis (the plot spans the run, 0 to 5 s): to within a pixel.
+  const expected = (ticks.first.time / 5.0) * ticks.width;
+  assert.ok(Math.abs(ticks.first.left - expected) <= 1.0, `first tick at ${ticks.first.left}px, expected ${expected}`);
+  assert.match(ticks.last.kind, /rest/);
+  // 93 entries: the list starts closed (open where there are at most 10); opened, as a reader would.
+  const listed = await r.page.evaluate(() => {
+    const details = document.querySelector('#summary details.stops');
+    const closed = !details.open;
+    details.open = true;
+    return { closed, text: details.innerText };
+  });
+  assert.ok(listed.closed);
+  const impacts = stops.filter((e) => e.kind === 'impact').length;
+  assert.equal(impacts, stops.length - 1);  // the last holds the ball: rest
+  assert.match(listed.text, new RegExp(`Joint stops: ${stops.length} entries, ${impacts} impacts`));
+  assert.match(listed.text, /its bounces end at 4\.0637\d* s/);
+  assert.match(listed.text, /\t-4\.42945 m\/s\t3\.54356 m\/s\t0\.7973 N·s\t/);
+  await (await r.page.$('#summary')).screenshot({ path: path.join(artifacts, 'bouncing_ball-stops.png') });
+  await (await r.page.$('#plots .plot')).screenshot({ path: path.join(artifacts, 'bouncing_ball-ticks.png') });
+  await r.page.close();
+});
+
 // The display rule in the 3-D view: a car on a road never turns, so ω and H have no arrow and
 // no scale (the legend said "ω: 1 m = 7.69e-34 rad/s" of round-off before); a swinging rod's
 // have both (a point mass's H about its centre of mass is 0: no arrow either).

@@ -291,7 +291,14 @@ TEST_F(FirstHourCli, UrdfFilesAreModelFiles) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(has(r.out, "three link arm")) << r.out;
   EXPECT_TRUE(has(r.out, "not used by momenta (6)")) << r.out;
-  EXPECT_TRUE(has(r.out, "three_link_arm.urdf:39: the limits of joint 'elbow' are not enforced"))
+  // Its <limit>s are stops; their effort and velocity are listed as not enforced.
+  EXPECT_TRUE(has(r.out,
+                  "elbow  revolute, upper → fore, damping 0.1, stops: lower -2 rad, upper "
+                  "2 rad, restitution 0"))
+      << r.out;
+  EXPECT_TRUE(has(r.out,
+                  "three_link_arm.urdf:39: joint 'elbow': its effort (50) and velocity (3) "
+                  "limits are not enforced"))
       << r.out;
   r = momenta("info " + arm + " --json");
   ASSERT_EQ(r.code, 0) << r.err;
@@ -324,10 +331,11 @@ TEST_F(FirstHourCli, MjcfFilesAreModelFiles) {
   CliRun r = momenta("info " + arm + " --json");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto info = nlohmann::json::parse(r.out);
-  EXPECT_EQ(info.at("not_used").size(), 7u) << r.out;
+  EXPECT_EQ(info.at("not_used").size(), 6u) << r.out;
   r = momenta("info " + arm);
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_TRUE(has(r.out, "arm7.xml:24: the limits of joint 'a1' are not enforced")) << r.out;
+  // Its ranges are stops (range="-170 170" in degrees).
+  EXPECT_TRUE(has(r.out, "stops: lower -2.96706 rad, upper 2.96706 rad, restitution 0")) << r.out;
   // The humanoid falls freely for 0.2 s (no contacts): every row written.
   const std::string human = quoted(source_dir() + "/tests/data/models/mjcf/humanoid.xml");
   r = momenta("simulate " + human + " --duration 0.2 --dt 0.001 --every 50 -o " + at("fall.csv"));

@@ -32,6 +32,49 @@ function timeMarker(timeline) {
   };
 }
 
+// What happened at an instant — a stop's impact, rest or release, an event — as a short tick on
+// the time axis of every time plot, its text the tooltip; placed by CSS like the time marker.
+export function timeMarks(summary) {
+  const stops = (summary.stops ?? []).map((s) => ({
+    time: s.time, kind: s.kind,
+    text: `${s.joint} ${s.stop} stop: ${s.kind === 'impact' ? 'impact' : s.kind === 'rest' ? 'holds the joint' : 'lets the joint go'} at t = ${s.time.toPrecision(6)} s`
+      + (s.kind === 'release' ? '' : `, rate ${s.rate_before.toPrecision(4)} → ${s.rate_after.toPrecision(4)} ${s.rate_unit}, impulse ${s.impulse.toPrecision(4)} ${s.impulse_unit}, ${s.energy_lost.toPrecision(3)} J lost`),
+  }));
+  const events = (summary.events ?? []).map((e) => ({
+    time: e.time, kind: 'event', text: `event ${e.name} (${e.condition}) at t = ${e.time.toPrecision(6)} s: ${e.action}`,
+  }));
+  return [...stops, ...events].sort((a, b) => a.time - b.time);
+}
+
+function markTicks(marks) {
+  return {
+    hooks: {
+      init: (u) => {
+        u.marks = marks.map((m) => {
+          const tick = document.createElement('div');
+          tick.className = `time-mark ${m.kind}`;
+          tick.title = m.text;
+          tick.dataset.time = m.time;
+          u.over.append(tick);
+          return tick;
+        });
+      },
+      ready: (u) => placeTicks(u, marks),
+      setSize: (u) => placeTicks(u, marks),
+      setScale: (u, key) => { if (key === 'x' && u.marks) placeTicks(u, marks); },
+    },
+  };
+}
+
+function placeTicks(u, marks) {
+  const { min, max } = u.scales.x;
+  marks.forEach((m, i) => {
+    const tick = u.marks[i];
+    tick.style.display = m.time >= min && m.time <= max ? '' : 'none';
+    tick.style.left = `${u.valToPos(m.time, 'x')}px`;
+  });
+}
+
 // A logarithmic axis ticked and labelled at its decades only (0.01, 0.1, 1, …, and 10⁻¹² beyond
 // 10⁻³ or from 10⁵): uPlot's own labels round values below 10⁻³ to 0.
 const isDecade = (v) => v > 0 && Math.abs(Math.log10(v) - Math.round(Math.log10(v))) < 1e-9;
@@ -58,7 +101,7 @@ function linearLabels(u, splits, axis, space, increment) {
 }
 
 export function chart(container, { title, xLabel, yLabel, x, series, logX = false, logY = false,
-  timeline = null, sync = null, width = 560, height = 220, shown = SHOWN_AT_FIRST }) {
+  timeline = null, sync = null, width = 560, height = 220, shown = SHOWN_AT_FIRST, marks = [] }) {
   const options = {
     title, width, height,
     scales: { x: { time: false, distr: logX ? 3 : 1 }, y: { distr: logY ? 3 : 1 } },
@@ -68,7 +111,7 @@ export function chart(container, { title, xLabel, yLabel, x, series, logX = fals
       width: s.width ?? 1.5, dash: s.dash, spanGaps: s.spanGaps ?? false,
       points: s.points ? { show: true, size: 9, fill: s.color } : { show: false }, show: i < shown }))],
     cursor: sync ? { sync: { key: sync } } : {},
-    plugins: timeline ? [timeMarker(timeline)] : [],
+    plugins: [...(timeline ? [timeMarker(timeline)] : []), ...(marks.length ? [markTicks(marks)] : [])],
   };
   const plot = new uPlot(options, [x, ...series.map((s) => s.data)], container);
   if (timeline) {
@@ -115,7 +158,11 @@ export function plotsSection(data, timeline) {
   const note = data.plots.thinned
     ? `${data.plots.rows} rows, drawn as each of ${data.plots.points / 2} time buckets' minimum and maximum per column (every extreme shows).`
     : `${data.plots.rows} rows, every one drawn.`;
-  section.append(element('p', { class: 'note' }, note, ' Drag to zoom, double-click to reset, click to move the 3-D view to that time.'));
+  const marks = timeMarks(data.summary);
+  const marked = marks.length
+    ? ` Ticks on the time axis mark the stops' impacts, rests and releases (orange, grey, blue) and the events (green): hover over one to read it.`
+    : '';
+  section.append(element('p', { class: 'note' }, note, ' Drag to zoom, double-click to reset, click to move the 3-D view to that time.', marked));
   const grid = element('div', { class: 'plot-grid' });
   section.append(grid);
   const time = decode(data.plots.time);
@@ -140,7 +187,7 @@ export function plotsSection(data, timeline) {
       holder.append(element('p', { class: 'note' }, `${series.length} columns, the first ${SHOWN_AT_FIRST} shown: click a legend entry to show or hide one.`));
     }
     charts.add(holder, () => chart(holder, { title: group.title, xLabel: 't (s)', yLabel: group.unit || (group.log ? '|drift|' : ''),
-      x: time, series, logY: group.log, timeline, sync: 'momenta', width: width() }));
+      x: time, series, logY: group.log, timeline, sync: 'momenta', width: width(), marks }));
   }
   new ResizeObserver(() => charts.charts.forEach((p) => p.setSize({ width: width(), height: 220 }))).observe(grid);
   return { section, charts, registry, drawnRegistry, time };

@@ -22,6 +22,7 @@ export function summarySection(data) {
     ['wall time', `${formatNumber(s.wall_seconds, 3)} s`],
   ];
   section.append(element('dl', { class: 'facts' }, ...facts.flatMap(([k, v]) => [element('dt', {}, k), element('dd', {}, String(v))])));
+  if (s.stops?.length) section.append(stopsTable(s.stops));
   const verdict = element('span', { class: `verdict ${s.verdict}` }, s.verdict === 'none' ? 'nothing conserved to audit' : s.verdict);
   section.append(element('h3', {}, 'Conservation audit ', verdict));
   if (s.audit.length) {
@@ -32,4 +33,19 @@ export function summarySection(data) {
     section.append(element('p', { class: 'note' }, 'Drifts are relative (the quaternion norm error absolute). Allowed: what the integrator\'s order and step imply over the run, at most 0.1 (docs/report.md).'));
   }
   return section;
+}
+
+// Every impact, rest and release of the joints' stops, in time order (open when there are few).
+function stopsTable(stops) {
+  const impacts = stops.filter((e) => e.kind === 'impact').length;
+  const lost = stops.reduce((sum, e) => sum + e.energy_lost, 0);
+  const details = element('details', { class: 'stops' },
+    element('summary', {}, `Joint stops: ${stops.length} entr${stops.length === 1 ? 'y' : 'ies'}, ${impacts} impact${impacts === 1 ? '' : 's'}, ${formatNumber(lost, 4)} J lost`),
+    table(['time (s)', 'joint', 'stop', 'what', 'rate before', 'rate after', 'impulse', 'energy lost (J)'],
+      stops.map((e) => [formatNumber(e.time, 12), e.joint, e.stop,
+        e.kind === 'rest' && e.rest_time > e.time ? `rest (its bounces end at ${formatNumber(e.rest_time, 12)} s)` : e.kind,
+        `${formatNumber(e.rate_before, 6)} ${e.rate_unit}`, `${formatNumber(e.rate_after, 6)} ${e.rate_unit}`,
+        `${formatNumber(e.impulse, 6)} ${e.impulse_unit}`, formatNumber(e.energy_lost, 4)])));
+  if (stops.length <= 10) details.open = true;
+  return details;
 }

@@ -25,9 +25,14 @@
 // tail (a constant acceleration's limit; the tail is shorter than a millionth of a step over 1 −
 // e).
 //
+// A gap that is negative by round-off alone (four ulps of the stop) is no crossing. Stops that act
+// again and again at one instant without the run moving on (a joint pushed neither way to within
+// round-off) stop the run with an error naming the joint, the time and its state, not a hang.
+//
 // Not yet: stops on a model with constraints (refused by the Simulation), and two stops struck at
 // one instant, which are struck one after another in joint order.
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -100,6 +105,9 @@ class JointStops {
     double value = 0.0;  // where it is (rad or m)
     double outward = 1;  // +1 for a lower stop (the joint leaves it along +q), −1 for an upper one
     double restitution = 0.0;
+    // A gap this far below zero is round-off, not a crossing: four ulps of the stop (or of 1), so
+    // that a joint resting on it with no force either way is not struck over and over.
+    double slack = 0.0;
   };
   // The signed gap of a state to stop s (≥ 0 off it).
   double gap(const Stop& s, const integrate::State& state) const {
@@ -129,6 +137,8 @@ class JointStops {
   std::vector<Stop> stops_;  // every finite stop, lower before upper, in joint order
   std::vector<int> held_;    // per stop: 1 where it holds its joint
   int pending_ = -1;         // the stop check() found acting
+  double last_act_ = -std::numeric_limits<double>::infinity();  // when act() last acted
+  int acts_at_last_ = 0;     // how often it acted then: a run that makes no progress stops
   double start_rate_ = 0.0;  // first_contact: the coordinate's rate at the step's start
   integrate::StepInterpolant interpolant_;
   integrate::State trial_;

@@ -50,6 +50,18 @@ std::vector<std::string> loads_not_written(const model::Model& model, std::strin
   return lost;
 }
 
+std::vector<std::string> restitution_not_written(const model::Model& model, std::string_view why) {
+  std::vector<std::string> lost;
+  for (const model::Joint& joint : model.joints()) {
+    if (!joint.limits || joint.limits->restitution == 0.0) continue;
+    lost.push_back(
+        fmt::format("the restitution {} of joint '{}''s stops ({}: read back, they are "
+                    "plastic)",
+                    joint.limits->restitution, joint.name, why));
+  }
+  return lost;
+}
+
 std::vector<std::string> meshes_not_written(const ModelFile& file) {
   std::vector<std::string> lost;
   for (std::size_t b = 0; b < file.body_parts.size(); ++b) {

@@ -1,8 +1,8 @@
 #pragma once
 // What the two model writers share (model_export_mjcf.cpp, model_export_urdf.cpp): numbers,
 // vectors and rotations as they print them — the shortest text that reads back to the same
-// double, −0 as 0 — the tree's joints by parent, a joint's viscous damping, and the loads and
-// mesh parts neither format keeps.
+// double, −0 as 0 — the tree's joints by parent, a joint's viscous damping, and the loads, stops'
+// restitution and mesh parts neither format keeps.
 
 #include <string>
 #include <vector>
@@ -47,6 +47,10 @@ double joint_viscous_damping(const model::Model& model, int joint);
 /// What neither format writes: applied loads and springs between bodies, prescribed motions
 /// (and, for "URDF", torsional springs).
 std::vector<std::string> loads_not_written(const model::Model& model, std::string_view format);
+
+/// The restitution of stops that are not plastic, one line a joint: neither format keeps it (its
+/// limits are read back as plastic stops); `why` says so in the format's terms.
+std::vector<std::string> restitution_not_written(const model::Model& model, std::string_view why);
 
 /// The mesh parts neither writer draws (their mass is in the body's inertial), one line a body.
 std::vector<std::string> meshes_not_written(const ModelFile& file);

@@ -49,6 +49,16 @@ std::vector<Factor> factors_of(const model::Joint& joint, const double* q) {
   return {};  // not reached: every type is named above
 }
 
+// A joint's stops as MuJoCo's range (qpos is momenta's q: ref is the drawn coordinate); a bound
+// the joint does not have is written a megametre (megaradian) away, which the reader takes as none.
+std::string range_text(const model::Joint& joint) {
+  if (!joint.limits) return "";
+  constexpr double far = 1e6;
+  const double lower = std::isfinite(joint.limits->lower) ? joint.limits->lower : -far;
+  const double upper = std::isfinite(joint.limits->upper) ? joint.limits->upper : far;
+  return fmt::format(" limited=\"true\" range=\"{} {}\"", number_text(lower), number_text(upper));
+}
+
 Transform factor_motion(const Factor& f, double value) {
   return f.hinge ? Transform::rotation(Eigen::AngleAxisd(value, f.axis).toRotationMatrix())
                  : Transform::translation(value * f.axis);
@@ -69,6 +79,8 @@ class MjcfWriter {
                        file_.file);
     std::vector<std::string> lost = detail::loads_not_written(model_, "MJCF");
     for (std::string& mesh : detail::meshes_not_written(file_)) lost.push_back(std::move(mesh));
+    for (std::string& bounce : detail::restitution_not_written(model_, "MuJoCo's limits are soft"))
+      lost.push_back(std::move(bounce));
     const std::string tendon_text = tendons(lost);
     for (const std::string& l : lost) out += fmt::format("<!-- Not written: {}. -->\n", l);
     out += fmt::format("<mujoco model=\"{}\">\n", file_.name);
@@ -208,10 +220,10 @@ class MjcfWriter {
         const Vec3 axis_B = joint.X_CJ.R * (after.R.transpose() * factors[k].axis);
         const Vec3 anchor_B = joint.X_CJ.apply(after.inverse().p);
         out += fmt::format(
-            "{}<joint name=\"{}{}\" type=\"{}\" pos=\"{}\" axis=\"{}\" ref=\"{}\"{}/>\n", inner,
+            "{}<joint name=\"{}{}\" type=\"{}\" pos=\"{}\" axis=\"{}\" ref=\"{}\"{}{}/>\n", inner,
             joint.name, factors[k].suffix, factors[k].hinge ? "hinge" : "slide",
             vector_text(anchor_B), vector_text(axis_B), number_text(factors[k].drawn),
-            factors.size() == 1 ? passive : "");
+            factors.size() == 1 ? passive : "", range_text(joint));
         qvel_.conservativeResize(qvel_.size() + 1);
         qvel_[qvel_.size() - 1] = velocity(static_cast<int>(k));
       }

@@ -1,5 +1,6 @@
 // momenta models as URDF (io/model_export.hpp; docs/model-formats.md, "Writing models").
 
+#include <cmath>
 #include <map>
 #include <variant>
 
@@ -15,6 +16,9 @@ namespace {
 
 using detail::number_text;
 using detail::vector_text;
+
+// Where a bound URDF requires and the joint does not have is written (m or rad).
+constexpr double kFarStop = 1e6;
 
 // URDF's rpy (fixed-axis roll, pitch, yaw: R = Rz(y) Ry(p) Rx(r)) of a rotation: SciPy's
 // extrinsic "xyz".
@@ -56,6 +60,8 @@ ExportedModel write_urdf(const ModelFile& file) {
     if (joint.armature != 0.0)
       lost.push_back(fmt::format("joint '{}': armature {}", joint.name, joint.armature));
   }
+  for (std::string& bounce : detail::restitution_not_written(model, "URDF has none"))
+    lost.push_back(std::move(bounce));
   if (model.gravity() != Vec3(0, 0, -9.81)) {
     lost.push_back(fmt::format("gravity {} m/s² (URDF has none: readers take (0, 0, −9.81))",
                                vector_text(model.gravity())));
@@ -111,7 +117,11 @@ ExportedModel write_urdf(const ModelFile& file) {
   // Joints: the origin places J in the parent's link; the child's link is J'.
   for (const model::Joint& joint : model.joints()) {
     // check_representable refused the types URDF has none of.
-    const std::string_view type = model::joint_traits(joint.type).urdf;
+    // A revolute joint with stops is URDF's revolute (its <limit> required), one without them
+    // continuous.
+    const std::string_view type = joint.type == model::JointType::revolute && joint.limits
+                                      ? std::string_view("revolute")
+                                      : model::joint_traits(joint.type).urdf;
     const std::string& parent = model.bodies()[static_cast<std::size_t>(joint.parent_index)].name;
     out += fmt::format(
         "  <joint name=\"{}\" type=\"{}\">\n    <parent link=\"{}\"/>\n    <child "
@@ -122,9 +132,14 @@ ExportedModel write_urdf(const ModelFile& file) {
     } else if (joint.type == model::JointType::planar) {
       out += "    <axis xyz=\"0 0 1\"/>\n";  // momenta's planar joint moves in J's x-y plane
     }
-    if (joint.type == model::JointType::prismatic) {
-      // URDF requires a prismatic joint's limits; these are wide and momenta reads them as notes.
-      out += "    <limit lower=\"-1e6\" upper=\"1e6\" effort=\"0\" velocity=\"0\"/>\n";
+    if (joint.limits || joint.type == model::JointType::prismatic) {
+      // URDF requires a prismatic joint's limits: a bound momenta does not have is written a
+      // megametre away (read back as a stop there).
+      const double lower = joint.limits ? joint.limits->lower : -kFarStop;
+      const double upper = joint.limits ? joint.limits->upper : kFarStop;
+      out += fmt::format("    <limit lower=\"{}\" upper=\"{}\" effort=\"0\" velocity=\"0\"/>\n",
+                         number_text(std::isfinite(lower) ? lower : -kFarStop),
+                         number_text(std::isfinite(upper) ? upper : kFarStop));
     }
     const double damping = detail::joint_viscous_damping(model, joint.index);
     if (damping != 0.0)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <limits>
 #include <set>
 #include <span>
 
@@ -171,6 +172,7 @@ void MjcfReader::read_compiler(const XMLElement* xml) {
     euler_sequence = s;
   }
   inertia_from_geom = keyword(e, "inertiafromgeom", {"false", "true", "auto"}, "auto");
+  auto_limits = flag(e, "autolimits", true);
   // Mesh files: relative to meshdir, else assetdir, each relative to the model's folder.
   for (const char* folder : {"meshdir", "assetdir"}) {
     if (const char* given = xml->Attribute(folder)) {
@@ -483,10 +485,7 @@ std::vector<std::string> MjcfReader::body_joints(const XMLElement* body, const s
         items.push_back(located_at(ModelItemRef::Kind::force_element, spring.name,
                                    xml->GetLineNum(), xml_column(text, xml)));
       }
-      if (attribute(e, "range") &&
-          keyword(e, "limited", {"true", "false", "auto"}, "auto") != "false") {
-        note(xml, fmt::format("the limits of {} are not enforced", owner));
-      }
+      joint.limits = joint_limits(xml, e, owner, type, ref);
       if (number(e, "frictionloss", 0.0) != 0.0) {
         note(xml, fmt::format("the dry friction of {} is not modelled", owner));
       }
@@ -500,6 +499,52 @@ std::vector<std::string> MjcfReader::body_joints(const XMLElement* body, const s
     previous = joint.child;
   }
   return carried;
+}
+
+// A hinge's or slide's `range` where `limited` (or `auto` with <compiler autolimits>, MuJoCo's
+// default) makes it one: stops on momenta's coordinate (qpos − ref), plastic (MuJoCo's limits are
+// soft, their default solref critically damped: no rebound). Not enforced, with a note, where the
+// file's start (qpos = ref) is outside the range, on a ball joint (a cone on its swing), and on a
+// model whose <equality> constrains it (stops on a model with constraints are not supported yet).
+std::optional<model::JointLimits> MjcfReader::joint_limits(const XMLElement* xml,
+                                                           const MjcfElement& e,
+                                                           const std::string& owner,
+                                                           const std::string& type, double ref) {
+  if (!attribute(e, "range")) return std::nullopt;
+  const std::string limited = keyword(e, "limited", {"true", "false", "auto"}, "auto");
+  if (limited == "false" || (limited == "auto" && !auto_limits)) return std::nullopt;
+  if (type == "ball") {
+    note(xml, fmt::format("the range of {} (a ball joint's cone) is not enforced", owner));
+    return std::nullopt;
+  }
+  const std::vector<double> range = numbers(e, "range", 2, 2);
+  const double unit = type == "slide" ? 1.0 : angle_scale;
+  if (!(range[0] < range[1])) {
+    fail(xml,
+         fmt::format("the range of {} [{:.6g}, {:.6g}] is empty: a limited joint's range is "
+                     "lower < upper",
+                     owner, range[0], range[1]),
+         "range");
+  }
+  // A bound a megametre (megaradian) away is none, as momenta's writer marks one.
+  const double far = 1e6, infinity = std::numeric_limits<double>::infinity();
+  if (range[0] <= -far && range[1] >= far) return std::nullopt;
+  const model::JointLimits limits{range[0] <= -far ? -infinity : range[0] * unit - ref,
+                                  range[1] >= far ? infinity : range[1] * unit - ref, 0.0};
+  if (limits.lower > 0.0 || limits.upper < 0.0) {
+    note(xml, fmt::format("the limits of {} are not enforced: its start (qpos = ref = {:.6g}) is "
+                          "outside its range [{:.6g}, {:.6g}]",
+                          owner, ref / unit, range[0], range[1]));
+    return std::nullopt;
+  }
+  if (constrained) {
+    note(xml, fmt::format("the limits of {} are not enforced: the model's <equality> elements are "
+                          "constraints, and stops on a model with constraints are not supported "
+                          "yet (docs/contacts.md)",
+                          owner));
+    return std::nullopt;
+  }
+  return limits;
 }
 
 namespace {
@@ -567,6 +612,11 @@ ModelFile MjcfReader::read() {
   for (const XMLElement* c = root->FirstChildElement("asset"); c != nullptr;
        c = c->NextSiblingElement("asset")) {
     read_assets(c);
+  }
+  // Stops are not put on a constrained model (JointStops does not support one yet).
+  for (const XMLElement* c = root->FirstChildElement("equality"); c != nullptr;
+       c = c->NextSiblingElement("equality")) {
+    if (c->FirstChildElement() != nullptr) constrained = true;
   }
   bool any_body = false;
   for (const XMLElement* world = root->FirstChildElement("worldbody"); world != nullptr;

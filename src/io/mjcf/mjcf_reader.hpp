@@ -131,6 +131,11 @@ class MjcfReader {
   void read_body(const XMLElement* e, const std::string& parent, const Transform& X_WP,
                  const std::string& child_class);
   void read_world_element(const XMLElement* e);
+  /// A hinge's or slide's stops from its `range` and `limited`; none (a note says why where the
+  /// file has a range) where they are not enforced.
+  std::optional<model::JointLimits> joint_limits(const XMLElement* xml, const MjcfElement& e,
+                                                 const std::string& owner, const std::string& type,
+                                                 double ref);
   std::vector<std::string> body_joints(const XMLElement* body, const std::string& name,
                                        const std::string& parent, const Transform& X_PB,
                                        const Transform& X_WB, const std::string& child_class);
@@ -163,6 +168,8 @@ class MjcfReader {
       3.14159265358979323846 / 180.0;  // <compiler angle="degree">, MuJoCo's default
   std::string euler_sequence = "xyz";
   std::string inertia_from_geom = "auto";
+  bool auto_limits = true;          // <compiler autolimits>: a range makes a joint limited
+  bool constrained = false;         // the file has <equality> constraints (no stops then)
   std::filesystem::path mesh_dir;   // the file's folder, then <compiler meshdir> or assetdir
   bool strip_path = false;          // <compiler strippath>
   bool exact_mesh_inertia = false;  // <compiler exactmeshinertia>

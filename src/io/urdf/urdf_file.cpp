@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -173,7 +174,7 @@ void UrdfReader::read_joint(const XMLElement* e) {
                         "prismatic, fixed, floating and planar",
                         name, type, did_you_mean(type, kJointTypes)));
   }
-  JointEntry entry{e, model::Joint{}, {}, 1.0, 0.0, nullptr};
+  JointEntry entry{e, model::Joint{}, {}, 1.0, 0.0, nullptr, nullptr};
   model::Joint& joint = entry.joint;
   joint.name = name;
   joint.parent = link_reference(e, "parent");
@@ -219,16 +220,7 @@ void UrdfReader::read_joint(const XMLElement* e) {
       note(d, fmt::format("the Coulomb friction of {} is not modelled", owner));
     }
   }
-  if (const XMLElement* limit = e->FirstChildElement("limit")) {
-    const bool bounded = type == "revolute" || type == "prismatic";
-    note(limit,
-         fmt::format("the limits of {} are not enforced{}{}", owner,
-                     bounded ? fmt::format(" (lower {:.6g}, upper {:.6g})",
-                                           number(limit, "lower", 0.0), number(limit, "upper", 0.0))
-                             : std::string(),
-                     fmt::format("; effort {:.6g} and velocity {:.6g} recorded only",
-                                 number(limit, "effort", 0.0), number(limit, "velocity", 0.0))));
-  }
+  if (const XMLElement* limit = e->FirstChildElement("limit")) read_limit(limit, type, entry);
   if (const XMLElement* m = e->FirstChildElement("mimic")) {
     const char* mimicked = m->Attribute("joint");
     if (mimicked == nullptr) fail(m, "<mimic> needs the attribute 'joint'");
@@ -241,6 +233,68 @@ void UrdfReader::read_joint(const XMLElement* e) {
                         {"parent", "child", "origin", "axis", "dynamics", "limit", "mimic"});
   joints_.emplace(name, std::move(entry));
   joint_order_.push_back(name);
+}
+
+// A joint's <limit>: the stops of a revolute or prismatic joint (plastic, e = 0: URDF gives no
+// restitution), where the robot's start (every q = 0) lies between them; effort and velocity are
+// recorded only.
+void UrdfReader::read_limit(const XMLElement* limit, std::string_view type, JointEntry& entry) {
+  const std::string owner = fmt::format("joint '{}'", entry.joint.name);
+  const double effort = number(limit, "effort", 0.0), velocity = number(limit, "velocity", 0.0);
+  const std::string recorded =
+      effort != 0.0 || velocity != 0.0
+          ? fmt::format("; its effort ({:.6g}) and velocity ({:.6g}) limits are not enforced",
+                        effort, velocity)
+          : std::string();
+  if (type != "revolute" && type != "prismatic") {
+    note(limit, fmt::format("the <limit> of {} (a {} joint) has no stops{}", owner, type,
+                            recorded.empty() ? std::string() : ":" + recorded.substr(1)));
+    return;
+  }
+  const double lower = number(limit, "lower", 0.0), upper = number(limit, "upper", 0.0);
+  if (lower > upper) {
+    fail(limit,
+         fmt::format("the limits of {}: lower {:.6g} is above upper {:.6g}", owner, lower, upper));
+  }
+  if (lower == upper) {
+    note(limit, fmt::format("the limits of {} are not enforced: lower = upper = {:.6g} (URDF's "
+                            "default when they are left out) would lock it{}",
+                            owner, lower, recorded));
+    return;
+  }
+  if (lower > 0.0 || upper < 0.0) {
+    note(limit, fmt::format("the limits of {} are not enforced: [{:.6g}, {:.6g}] does not hold "
+                            "the robot's start, where every joint is at 0{}",
+                            owner, lower, upper, recorded));
+    return;
+  }
+  // A bound a megametre (or megaradian) away is URDF's way of having none, as momenta writes it.
+  const double far = 1e6, infinity = std::numeric_limits<double>::infinity();
+  if (lower > -far || upper < far) {
+    entry.joint.limits =
+        model::JointLimits{lower <= -far ? -infinity : lower, upper >= far ? infinity : upper, 0.0};
+    entry.limit_element = limit;
+  }
+  if (!recorded.empty()) note(limit, fmt::format("{}:{}", owner, recorded.substr(1)));
+}
+
+// The joints' stops as read, unless a mimic joint makes the model constrained (stops on such a
+// model are not supported yet).
+void UrdfReader::enforce_limits() {
+  const bool constrained = std::any_of(joints_.begin(), joints_.end(),
+                                       [](const auto& j) { return !j.second.mimic.empty(); });
+  for (const std::string& j : joint_order_) {
+    JointEntry& entry = joints_.at(j);
+    if (!entry.joint.limits) continue;
+    if (constrained) {
+      note(entry.limit_element,
+           fmt::format("the limits of joint '{}' are not enforced: the robot's mimic joints are "
+                       "constraints, and stops on a model with constraints are not supported yet "
+                       "(docs/contacts.md)",
+                       j));
+      entry.joint.limits.reset();
+    }
+  }
 }
 
 namespace {
@@ -298,6 +352,8 @@ ModelFile UrdfReader::read() {
   }
   const std::string& root = roots.front();
   const bool root_is_world = root == model::kWorldBodyName;
+
+  enforce_limits();
 
   // The model, parents before children.
   model::ModelBuilder builder;

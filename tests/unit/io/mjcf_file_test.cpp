@@ -8,6 +8,7 @@
 #include "momenta/io/mjcf_file.hpp"
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <variant>
@@ -127,6 +128,8 @@ TEST(MjcfFile, ArmDefaultsMassesJointsMotorsAndNotes) {
   EXPECT_REL_NEAR(body("link7").mass(), m_cylinder + m_box, 1e-14);
   // Joint damping from the default classes; a6's anchor; the spring a3 at its springref.
   EXPECT_EQ(joint_of(arm, "a1").damping, 0.5);
+  ASSERT_TRUE(joint_of(arm, "a1").limits.has_value());  // range="-170 170" (degrees)
+  EXPECT_NEAR(joint_of(arm, "a1").limits->upper, 170.0 * kPi / 180.0, 1e-15);
   EXPECT_EQ(joint_of(arm, "a7").damping, 0.1);
   EXPECT_MATRIX_NEAR(joint_of(arm, "a6").X_CJ.p, Vec3(0, 0, 0.0607), 0.0);
   EXPECT_MATRIX_NEAR(joint_of(arm, "a4").axis, Vec3(0, -1, 0), 0.0);
@@ -165,7 +168,6 @@ TEST(MjcfFile, ArmDefaultsMassesJointsMotorsAndNotes) {
       "arm7.xml:8: <option> timestep and integrator",
       "arm7.xml:19: <geom name=\"floor\"> in the world: contacts are not modelled",
       "arm7.xml:20: <light name=\"sun\">: not used by momenta",
-      "arm7.xml:24: the limits of joint 'a1' are not enforced",
       "arm7.xml:48: <site name=\"flange\"> of body 'link7': not used by momenta",
       "arm7.xml:59: the control and force ranges of actuator 'm1' are not enforced",
       "arm7.xml:67: <sensor> (1 element): not used by momenta"};
@@ -248,6 +250,88 @@ TEST(MjcfFile, EqualityConstraintsCloseLoopsWhereTheFileDrawsThem) {
   EXPECT_EQ(gear.joint_a, "follow");
   EXPECT_EQ(gear.ratio, -2.0);
   EXPECT_EQ(gear.offset, 0.1);
+}
+
+// A hinge's or slide's range, where `limited` (or `auto` with <compiler autolimits>, MuJoCo's
+// default) makes it one, is a pair of plastic stops on momenta's coordinate qpos − ref, in the
+// compiler's angle unit; a bound a megametre away is none. Not enforced, each said at its line:
+// a ball's range (its cone), a range that leaves out the start (qpos = ref), and every range of a
+// model with <equality> constraints. An empty range is an error at its line.
+TEST(MjcfFile, RangesAreStops) {
+  const auto model = [](const std::string& compiler, const std::string& joints,
+                        const std::string& after = "") {
+    std::string text = "<mujoco><compiler " + compiler + "/>\n<worldbody>\n";
+    // One body of the world per line of `joints`, each on its line's joint.
+    int k = 0;
+    for (std::size_t start = 0; start < joints.size(); ++k) {
+      const std::size_t end = joints.find('\n', start);
+      text += fmt::format(
+          "<body name=\"b{}\" pos=\"{} 0 0\">{}<geom type=\"sphere\" "
+          "size=\"0.1\"/></body>\n",
+          k, k, joints.substr(start, end - start));
+      start = end + 1;
+    }
+    return text + "</worldbody>\n" + after + "</mujoco>";
+  };
+  const std::string joints =
+      "<joint name=\"hinge\" range=\"-30 60\" ref=\"10\"/>\n"
+      "<joint name=\"slide\" type=\"slide\" range=\"-0.5 1e6\"/>\n"
+      "<joint name=\"loose\" range=\"-30 60\" limited=\"false\"/>\n"
+      "<joint name=\"ball\" type=\"ball\" range=\"0 45\"/>\n"
+      "<joint name=\"away\" range=\"20 60\"/>\n";
+  const ModelFile f = parse_mjcf(model("angle=\"degree\"", joints), "m.xml");
+  const double degree = kPi / 180.0;
+  const auto& hinge = joint_of(f, "hinge").limits;
+  ASSERT_TRUE(hinge.has_value());
+  EXPECT_NEAR(hinge->lower, -40.0 * degree, 1e-15);  // qpos − ref
+  EXPECT_NEAR(hinge->upper, 50.0 * degree, 1e-15);
+  EXPECT_EQ(hinge->restitution, 0.0);
+  const auto& slide = joint_of(f, "slide").limits;
+  ASSERT_TRUE(slide.has_value());
+  EXPECT_EQ(slide->lower, -0.5);
+  EXPECT_EQ(slide->upper, std::numeric_limits<double>::infinity());
+  for (const char* none : {"loose", "ball", "away"}) {
+    EXPECT_FALSE(joint_of(f, none).limits.has_value()) << none;
+  }
+  std::string notes;
+  for (const std::string& n : f.notes) notes += n + "\n";
+  for (const char* expected :
+       {"m.xml:6: the range of joint 'ball' (a ball joint's cone) is not enforced",
+        "m.xml:7: the limits of joint 'away' are not enforced: its start (qpos = ref = 0) is "
+        "outside its range [20, 60]"}) {
+    EXPECT_NE(notes.find(expected), std::string::npos) << expected << "\n" << notes;
+  }
+  // Without autolimits a range alone limits nothing; limited="true" still does.
+  const ModelFile manual =
+      parse_mjcf(model("autolimits=\"false\"",
+                       "<joint name=\"a\" range=\"-1 1\"/>\n<joint name=\"b\" range=\"-1 1\" "
+                       "limited=\"true\"/>\n"),
+                 "m.xml");
+  EXPECT_FALSE(joint_of(manual, "a").limits.has_value());
+  ASSERT_TRUE(joint_of(manual, "b").limits.has_value());
+  EXPECT_EQ(joint_of(manual, "b").limits->upper, std::numbers::pi / 180.0);
+  // A constrained model: its ranges are listed as not enforced.
+  const ModelFile constrained =
+      parse_mjcf(model("angle=\"radian\"",
+                       "<joint name=\"a\" range=\"-1 1\"/>\n<joint name=\"b\" range=\"-1 1\"/>\n",
+                       "<equality><joint joint1=\"a\" joint2=\"b\"/></equality>\n"),
+                 "m.xml");
+  EXPECT_FALSE(constrained.model.has_joint_limits());
+  ASSERT_GE(constrained.notes.size(), 2u);
+  EXPECT_NE(constrained.notes[0].find("m.xml:3: the limits of joint 'a' are not enforced: the "
+                                      "model's <equality> elements are constraints"),
+            std::string::npos)
+      << constrained.notes[0];
+  // An empty range, at its line.
+  try {
+    parse_mjcf(model("", "<joint name=\"a\"/>\n<joint name=\"b\" range=\"1 1\"/>\n"), "m.xml");
+    ADD_FAILURE() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("m.xml:4"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("the range of joint 'b' [1, 1] is empty"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 std::string error_of(const std::string& body) {

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -20,6 +21,7 @@
 #include "momenta/dynamics/crba.hpp"
 #include "momenta/dynamics/kinematics.hpp"
 #include "momenta/io/mjcf_file.hpp"
+#include "momenta/io/model_file.hpp"
 #include "momenta/io/urdf_file.hpp"
 #include "momenta/simulate/state_at.hpp"
 #include "momenta_test/tolerance.hpp"
@@ -205,6 +207,52 @@ TEST(ModelExport, TreeExamplesThroughUrdfAndBack) {
     }
   }
   EXPECT_GE(written_count, 8);
+}
+
+// A joint's stops travel as URDF's <limit> and MJCF's range (limited) and come back as stops — on
+// MJCF's coordinate, which counts from where the model is drawn — plastic: neither format has a
+// restitution, so a stop's is listed as not written. A bound the joint does not have is written a
+// megametre away and read back as none.
+TEST(ModelExport, StopsTravelAsLimitsAndRanges) {
+  const ModelFile file = parse_model_file(R"(name: stops
+bodies:
+  - {name: arm, shape: box, mass: 1, size: [0.1, 0.1, 0.5]}
+  - {name: slider, shape: sphere, mass: 0.5, radius: 0.05}
+joints:
+  - {name: swing, type: revolute, parent: world, child: arm, axis: [0, 1, 0], q0: 0.2,
+     limits: {lower: -0.5, upper: 1.0, restitution: 0.6}}
+  - {name: reach, type: prismatic, parent: arm, child: slider, axis: [0, 0, 1],
+     limits: {lower: -0.1}}
+)",
+                                          "stops.yaml", ".");
+  const auto expect_limits = [](const ModelFile& back, const char* joint, double lower,
+                                double upper) {
+    const auto& limits = back.model.joint(back.model.joint_index(joint)).limits;
+    ASSERT_TRUE(limits.has_value()) << joint;
+    EXPECT_EQ(limits->lower, lower) << joint;
+    EXPECT_EQ(limits->upper, upper) << joint;
+    EXPECT_EQ(limits->restitution, 0.0) << joint;
+  };
+  const double none = std::numeric_limits<double>::infinity();
+  const auto says_restitution = [](const ExportedModel& written) {
+    return std::any_of(
+        written.not_written.begin(), written.not_written.end(), [](const std::string& s) {
+          return s.find("the restitution 0.6 of joint 'swing''s stops") != std::string::npos;
+        });
+  };
+
+  const ExportedModel urdf = write_urdf(file);
+  EXPECT_NE(urdf.text.find("<joint name=\"swing\" type=\"revolute\">"), std::string::npos);
+  EXPECT_TRUE(says_restitution(urdf)) << urdf.text;
+  const ModelFile from_urdf = parse_urdf(urdf.text, "stops.urdf");
+  expect_limits(from_urdf, "swing", -0.5, 1.0);
+  expect_limits(from_urdf, "reach", -0.1, none);
+
+  const ExportedModel mjcf = write_mjcf(file, file.model.initial_q());
+  EXPECT_TRUE(says_restitution(mjcf)) << mjcf.text;
+  const ModelFile from_mjcf = parse_mjcf(mjcf.text, "stops.xml");
+  expect_limits(from_mjcf, "swing", -0.5 - 0.2, 1.0 - 0.2);  // drawn at 0.2: q' = q − 0.2
+  expect_limits(from_mjcf, "reach", -0.1, none);
 }
 
 // The initial velocities travel as the key `initial`, which reading takes as the initial state:

@@ -5,10 +5,13 @@
 
 #include "momenta/io/urdf_file.hpp"
 
+#include <limits>
 #include <random>
 #include <string>
+#include <tuple>
 #include <variant>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "momenta/common/error.hpp"
@@ -92,19 +95,28 @@ model::Model arm_in_code() {
 TEST(UrdfFile, SpatialArmIsTheArmBuiltInCode) {
   const ModelFile urdf = read_urdf_file(urdf_path("three_link_arm"));
   EXPECT_LT(largest_difference(urdf.model, arm_in_code(), 50), 1e-13);
-  // Damping kept; limits, friction and the transmission listed with their lines.
+  // Damping and the limits kept (plastic stops); effort and velocity limits, friction and the
+  // transmission listed with their lines.
   EXPECT_EQ(urdf.model.joint(urdf.model.joint_index("elbow")).damping, 0.1);
+  for (const auto& [name, lower, upper] :
+       {std::tuple{"elbow", -2.0, 2.0}, std::tuple{"slide", 0.0, 0.1}}) {
+    const auto& limits = urdf.model.joint(urdf.model.joint_index(name)).limits;
+    ASSERT_TRUE(limits.has_value()) << name;
+    EXPECT_EQ(limits->lower, lower);
+    EXPECT_EQ(limits->upper, upper);
+    EXPECT_EQ(limits->restitution, 0.0);
+  }
+  EXPECT_FALSE(urdf.model.joint(urdf.model.joint_index("shoulder")).limits.has_value());
   std::string notes;
   for (const std::string& n : urdf.notes) notes += n + "\n";
   // In the file's order.
   EXPECT_NE(notes.find(":5: link 'base'"), std::string::npos);
-  EXPECT_LT(notes.find(":47: the limits"), notes.find(":49: <transmission>")) << notes;
+  EXPECT_LT(notes.find(":47: joint 'slide'"), notes.find(":49: <transmission>")) << notes;
   for (const char* expected :
        {":5: link 'base' has no <inertial>: massless",
-        ":39: the limits of joint 'elbow' are not enforced (lower -2, upper 2); effort 50 and "
-        "velocity 3 recorded only",
+        ":39: joint 'elbow': its effort (50) and velocity (3) limits are not enforced",
         ":40: the Coulomb friction of joint 'elbow' is not modelled",
-        ":47: the limits of joint 'slide' are not enforced (lower 0, upper 0.1)",
+        ":47: joint 'slide': its effort (10) and velocity (0.5) limits are not enforced",
         ":49: <transmission>: not used by momenta", ":5: link 'base', the root, is fixed"}) {
     EXPECT_NE(notes.find(expected), std::string::npos) << expected << "\n" << notes;
   }
@@ -202,6 +214,89 @@ TEST(UrdfFile, WorldRootFloatingBaseAndMimic) {
   EXPECT_EQ(coupler.ratio, -1.0);
   EXPECT_EQ(coupler.offset, 0.01);
   EXPECT_TRUE(f.notes.empty());
+}
+
+// A <limit> is a pair of plastic stops on a revolute or prismatic joint — a bound a megametre
+// away is none — except where it would lock the joint (lower = upper, URDF's default), leaves out
+// the robot's start (every q = 0) or sits on a robot whose mimic joints are constraints: those are
+// listed as not enforced, with their line. A continuous joint's <limit> has no stops.
+TEST(UrdfFile, LimitsAreStops) {
+  const auto robot = [](const std::string& joints, int links = 5) {
+    std::string text = "<robot name=\"r\">\n<link name=\"base\"/>\n";
+    for (const char* link : {"a", "b", "c", "d", "e"}) {
+      if (links-- == 0) break;
+      text += fmt::format(
+          "<link name=\"{}\"><inertial><mass value=\"1\"/><inertia ixx=\"1\" iyy=\"1\" "
+          "izz=\"1\"/></inertial></link>\n",
+          link);
+    }
+    return text + joints + "</robot>";
+  };
+  const auto joint = [](const char* name, const char* type, const char* child,
+                        const std::string& inside) {
+    return fmt::format(
+        "<joint name=\"{}\" type=\"{}\"><parent link=\"base\"/><child link=\"{}\"/><axis "
+        "xyz=\"0 0 1\"/>{}</joint>\n",
+        name, type, child, inside);
+  };
+  const std::string joints =
+      joint("hinge", "revolute", "a", R"(<limit lower="-1" upper="2" effort="0" velocity="0"/>)") +
+      joint("locked", "revolute", "b", R"(<limit effort="5" velocity="1"/>)") +
+      joint("away", "revolute", "c", R"(<limit lower="0.5" upper="1"/>)") +
+      joint("slider", "prismatic", "d", R"(<limit lower="-0.2" upper="1e6"/>)") +
+      joint("spin", "continuous", "e", R"(<limit effort="3" velocity="2"/>)");
+  const ModelFile f = parse_urdf(robot(joints), "r.urdf");
+  const auto limits = [&](const char* name) {
+    return f.model.joint(f.model.joint_index(name)).limits;
+  };
+  ASSERT_TRUE(limits("hinge").has_value());
+  EXPECT_EQ(limits("hinge")->lower, -1.0);
+  EXPECT_EQ(limits("hinge")->upper, 2.0);
+  EXPECT_EQ(limits("hinge")->restitution, 0.0);
+  ASSERT_TRUE(limits("slider").has_value());
+  EXPECT_EQ(limits("slider")->lower, -0.2);
+  EXPECT_EQ(limits("slider")->upper, std::numeric_limits<double>::infinity());
+  for (const char* none : {"locked", "away", "spin"}) EXPECT_FALSE(limits(none)) << none;
+  std::string notes;
+  for (const std::string& n : f.notes) notes += n + "\n";
+  for (const char* expected :
+       {"r.urdf:9: the limits of joint 'locked' are not enforced: lower = upper = 0 (URDF's "
+        "default when they are left out) would lock it; its effort (5) and velocity (1) limits "
+        "are not enforced",
+        "r.urdf:10: the limits of joint 'away' are not enforced: [0.5, 1] does not hold the "
+        "robot's start, where every joint is at 0",
+        "r.urdf:12: the <limit> of joint 'spin' (a continuous joint) has no stops: its effort (3) "
+        "and velocity (2) limits are not enforced"}) {
+    EXPECT_NE(notes.find(expected), std::string::npos) << expected << "\n" << notes;
+  }
+  EXPECT_EQ(f.notes.size(), 4u) << notes;  // and the root's weld to the world
+
+  // A mimic joint makes the robot constrained: its stops are not enforced, each said.
+  const ModelFile mimic = parse_urdf(
+      robot(joint("hinge", "revolute", "a", R"(<limit lower="-1" upper="2"/>)") +
+                joint("follower", "revolute", "b",
+                      R"(<limit lower="-1" upper="1"/><mimic joint="hinge" multiplier="0.5"/>)"),
+            2),
+      "r.urdf");
+  ASSERT_EQ(mimic.model.constraints().size(), 1u);
+  EXPECT_FALSE(mimic.model.has_joint_limits());
+  ASSERT_EQ(mimic.notes.size(), 3u);  // and the root's weld
+  EXPECT_NE(mimic.notes[1].find("r.urdf:5: the limits of joint 'hinge' are not enforced: the "
+                                "robot's mimic joints are constraints"),
+            std::string::npos)
+      << mimic.notes[1];
+
+  // Bounds the wrong way round are an error at their line.
+  try {
+    parse_urdf(robot(joint("hinge", "revolute", "a", R"(<limit lower="1" upper="-1"/>)"), 1),
+               "r.urdf");
+    ADD_FAILURE() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find(
+                  "r.urdf:4: the limits of joint 'hinge': lower 1 is above upper -1"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 // Each problem at its line, with a did-you-mean where a name is close.

@@ -9,6 +9,8 @@
 // - elastic stops (e = 1): the energy audit holds across every impact;
 // - a pendulum held on a stop by gravity and pulled off by a torque ramp: released when the torque
 //   equals the weight's moment, the stop's force until then m g (l/2) sin θ − c t;
+// - a robot's limits (URDF's <limit>, MJCF's range): a rod falling into one is held there; a
+//   falling humanoid's joints resting on theirs are left alone;
 // - the model file's errors for stops where there are none to give.
 
 #include <cmath>
@@ -19,8 +21,11 @@
 #include <gtest/gtest.h>
 
 #include "momenta/common/error.hpp"
+#include "momenta/io/mjcf_file.hpp"
 #include "momenta/io/model_file.hpp"
+#include "momenta/io/urdf_file.hpp"
 #include "momenta/simulate/simulation.hpp"
+#include "momenta_test/tolerance.hpp"
 
 namespace momenta::simulate {
 namespace {
@@ -190,6 +195,70 @@ TEST(JointStops, HeldOnAStopUntilATorqueRampPullsItOff) {
       }
     }
   }
+}
+
+// A robot's limits are stops: a rod (m = 1 kg, its centre 0.5 m from the pin, I_O = I_yy +
+// m 0.5²) released level, as URDF draws it (q = 0) and as MJCF does, falls into its upper limit
+// at 1 rad. It arrives with the rate energy gives, ½ I_O θ̇² = m g 0.5 sin θ_s; the stop is plastic
+// (neither format has a restitution), so it holds the rod there, pushing back the weight's moment
+// m g 0.5 cos θ_s.
+TEST(JointStops, ARobotsLimitsAreStops) {
+  const double iyy = 0.08333333333333333, I_O = iyy + 0.25, stop = 1.0;
+  const std::string urdf = R"(<robot name="rod">
+  <link name="world"/>
+  <link name="rod"><inertial><origin xyz="0.5 0 0"/><mass value="1"/>
+    <inertia ixx="1e-6" iyy="0.08333333333333333" izz="0.08333333333333333"/></inertial></link>
+  <joint name="pin" type="revolute"><parent link="world"/><child link="rod"/><axis xyz="0 1 0"/>
+    <limit lower="-3" upper="1" effort="0" velocity="0"/></joint>
+</robot>)";
+  const std::string mjcf = R"(<mujoco><compiler angle="radian"/><worldbody>
+  <body name="rod"><joint name="pin" axis="0 1 0" range="-3 1"/>
+    <inertial pos="0.5 0 0" mass="1" diaginertia="1e-6 0.08333333333333333 0.08333333333333333"/>
+  </body></worldbody></mujoco>)";
+  for (const io::ModelFile& file :
+       {io::parse_urdf(urdf, "rod.urdf"), io::parse_mjcf(mjcf, "rod.xml")}) {
+    SCOPED_TRACE(file.file);
+    const StopRun run = run_stops(file.model, "dopri5", 1e-2, 2.0, /*reactions=*/true);
+    const std::vector<StopEvent>& events = run.summary.stop_events;
+    ASSERT_EQ(events.size(), 1u);
+    EXPECT_EQ(events[0].kind, StopEventKind::rest);
+    EXPECT_TRUE(events[0].upper);
+    const double rate = std::sqrt(2.0 * kG * 0.5 * std::sin(stop) / I_O);
+    EXPECT_NEAR(events[0].rate_before, rate, 1e-9);
+    EXPECT_EQ(events[0].rate_after, 0.0);
+    EXPECT_NEAR(events[0].energy_lost, kG * 0.5 * std::sin(stop), 1e-8);
+    const int angle = run.table.column("pin.angle");
+    const int force = run.table.column("pin.stop_force");
+    for (const std::vector<double>& row : run.table.rows) {
+      EXPECT_LE(row[angle], stop) << row[0];
+      if (row[0] > events[0].time) {
+        EXPECT_EQ(row[angle], stop) << row[0];
+        EXPECT_NEAR(row[force], -kG * 0.5 * std::cos(stop), 1e-12) << row[0];
+      }
+    }
+  }
+}
+
+// Joints resting on their stops with nothing pushing them either way but round-off: the MJCF
+// humanoid falling freely, its elbows on their upper stops and its knees on their lower ones (a
+// run that struck them over and over at t = 0 until the gap's round-off was given slack). The run
+// ends; no coordinate passes its stop by more than that slack; no stop strikes with more than a
+// round-off's impulse.
+TEST(JointStops, JointsRestingOnStopsWithNothingPushingAreLeftAlone) {
+  const model::Model model =
+      io::read_mjcf_file(test::source_dir() + "/tests/data/models/mjcf/humanoid.xml").model;
+  const StopRun run = run_stops(model, "rk4", 1e-3, 0.2);
+  EXPECT_LE(run.summary.stop_events.size(), 6u);
+  for (const StopEvent& e : run.summary.stop_events) EXPECT_LT(std::abs(e.impulse), 1e-12);
+  for (const model::Joint& j : model.joints()) {
+    if (!j.limits) continue;
+    const int q = run.table.column(model.q_name(j.q_index));
+    for (const std::vector<double>& row : run.table.rows) {
+      EXPECT_GE(row[q], j.limits->lower - 1e-15) << j.name << " at " << row[0];
+      EXPECT_LE(row[q], j.limits->upper + 1e-15) << j.name << " at " << row[0];
+    }
+  }
+  EXPECT_EQ(run.table.rows.back()[0], 0.2);
 }
 
 TEST(JointStops, ModelFileRefusesStopsWhereThereAreNone) {

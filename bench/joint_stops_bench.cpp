@@ -1,0 +1,70 @@
+// A thousand bounces (issue 56): a 0.1 kg ball dropped 1 cm on an elastic floor (a prismatic
+// joint's lower stop, e = 1) bounces every 2 √(2h/g) = 90.3 ms; 90.3 s of it is 1 000 impacts,
+// each located on the step's dense output (TOMS 748), the run taken back there and restarted.
+// Beside it the same ball without the floor, falling for the same 90.3 s: what the stops cost over
+// the steps themselves. rk4 at h = 1 ms and dopri5 (rtol 1e-10, atol 1e-12, largest step 10 ms).
+// Counters: the run's steps, evaluations and impacts; the wall time is the benchmark's.
+//
+// Run: build/bench/joint_stops_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only
+// and quote the medians and the ratio of each integrator's two rows.
+
+#include <span>
+#include <string>
+
+#include <benchmark/benchmark.h>
+
+#include "momenta/io/model_file.hpp"
+#include "momenta/simulate/simulation.hpp"
+
+namespace {
+
+using namespace momenta;
+
+constexpr double kDuration = 90.3;  // s: 1 000 bounces of 90.3 ms
+
+// A sink that keeps nothing: the benchmark times the run, not a table.
+class Discard final : public simulate::RowSink {
+ public:
+  void begin(std::span<const std::string>) override {}
+  void row(std::span<const double>) override {}
+};
+
+model::Model ball(bool floor) {
+  const std::string text =
+      "gravity: [0, 0, -9.81]\n"
+      "bodies: [{name: ball, shape: sphere, mass: 0.1, radius: 0.005}]\n"
+      "joints:\n"
+      "  - {name: drop, type: prismatic, parent: world, child: ball, axis: [0, 0, 1], q0: 0.01" +
+      std::string(floor ? ", limits: {lower: 0.0, restitution: 1.0}" : "") + "}\n";
+  return io::parse_model_file(text, "ball.yaml", ".").model;
+}
+
+void BM_Bounces(benchmark::State& bench, const std::string& integrator, bool floor) {
+  const model::Model model = ball(floor);
+  simulate::SimulationOptions options;
+  options.duration = kDuration;
+  options.integrator = integrator;
+  options.step = integrator == "rk4" ? 1e-3 : 1e-2;
+  options.tolerances = {1e-10, 1e-12};
+  options.every = 1000;
+  simulate::Simulation simulation(model, {}, options);
+  simulate::SimulationSummary summary;
+  for (auto _ : bench) {
+    Discard sink;
+    summary = simulation.run(sink);
+    benchmark::DoNotOptimize(summary.t_end);
+  }
+  bench.counters["steps"] = static_cast<double>(summary.statistics.steps);
+  bench.counters["evaluations"] = static_cast<double>(summary.statistics.evaluations);
+  bench.counters["impacts"] = static_cast<double>(summary.stop_events.size());
+}
+
+BENCHMARK_CAPTURE(BM_Bounces, rk4_floor, std::string("rk4"), true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Bounces, rk4_no_floor, std::string("rk4"), false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Bounces, dopri5_floor, std::string("dopri5"), true)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Bounces, dopri5_no_floor, std::string("dopri5"), false)
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
