@@ -10,6 +10,7 @@
 #include "export/model_export_common.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/io/model_export.hpp"
+#include "xml/xml_support.hpp"
 
 namespace momenta::io {
 namespace {
@@ -50,13 +51,12 @@ std::vector<Factor> factors_of(const model::Joint& joint, const double* q) {
 }
 
 // A joint's stops as MuJoCo's range (qpos is momenta's q: ref is the drawn coordinate); a bound
-// the joint does not have is written a megametre (megaradian) away, which the reader takes as none.
+// the joint does not have is written far away (xml/xml_support.hpp).
 std::string range_text(const model::Joint& joint) {
   if (!joint.limits) return "";
-  constexpr double far = 1e6;
-  const double lower = std::isfinite(joint.limits->lower) ? joint.limits->lower : -far;
-  const double upper = std::isfinite(joint.limits->upper) ? joint.limits->upper : far;
-  return fmt::format(" limited=\"true\" range=\"{} {}\"", number_text(lower), number_text(upper));
+  return fmt::format(" limited=\"true\" range=\"{} {}\"",
+                     number_text(detail::bound_as_written(joint.limits->lower)),
+                     number_text(detail::bound_as_written(joint.limits->upper)));
 }
 
 Transform factor_motion(const Factor& f, double value) {

@@ -1,6 +1,5 @@
 // momenta models as URDF (io/model_export.hpp; docs/model-formats.md, "Writing models").
 
-#include <cmath>
 #include <map>
 #include <variant>
 
@@ -10,15 +9,13 @@
 #include "momenta/common/error.hpp"
 #include "momenta/io/model_export.hpp"
 #include "momenta/math/rotation.hpp"
+#include "xml/xml_support.hpp"
 
 namespace momenta::io {
 namespace {
 
 using detail::number_text;
 using detail::vector_text;
-
-// Where a bound URDF requires and the joint does not have is written (m or rad).
-constexpr double kFarStop = 1e6;
 
 // URDF's rpy (fixed-axis roll, pitch, yaw: R = Rz(y) Ry(p) Rx(r)) of a rotation: SciPy's
 // extrinsic "xyz".
@@ -133,13 +130,12 @@ ExportedModel write_urdf(const ModelFile& file) {
       out += "    <axis xyz=\"0 0 1\"/>\n";  // momenta's planar joint moves in J's x-y plane
     }
     if (joint.limits || joint.type == model::JointType::prismatic) {
-      // URDF requires a prismatic joint's limits: a bound momenta does not have is written a
-      // megametre away (read back as a stop there).
-      const double lower = joint.limits ? joint.limits->lower : -kFarStop;
-      const double upper = joint.limits ? joint.limits->upper : kFarStop;
+      // URDF requires a prismatic joint's limits: a bound momenta does not have is written far
+      // away (xml/xml_support.hpp), read back as none.
+      const model::JointLimits limits = joint.limits.value_or(model::JointLimits{});
       out += fmt::format("    <limit lower=\"{}\" upper=\"{}\" effort=\"0\" velocity=\"0\"/>\n",
-                         number_text(std::isfinite(lower) ? lower : -kFarStop),
-                         number_text(std::isfinite(upper) ? upper : kFarStop));
+                         number_text(detail::bound_as_written(limits.lower)),
+                         number_text(detail::bound_as_written(limits.upper)));
     }
     const double damping = detail::joint_viscous_damping(model, joint.index);
     if (damping != 0.0)

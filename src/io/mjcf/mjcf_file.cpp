@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <limits>
 #include <set>
 #include <span>
 
@@ -526,11 +525,9 @@ std::optional<model::JointLimits> MjcfReader::joint_limits(const XMLElement* xml
                      owner, range[0], range[1]),
          "range");
   }
-  // A bound a megametre (megaradian) away is none, as momenta's writer marks one.
-  const double far = 1e6, infinity = std::numeric_limits<double>::infinity();
-  if (range[0] <= -far && range[1] >= far) return std::nullopt;
-  const model::JointLimits limits{range[0] <= -far ? -infinity : range[0] * unit - ref,
-                                  range[1] >= far ? infinity : range[1] * unit - ref, 0.0};
+  const auto [low, high] = bounds_as_read(range[0], range[1]);
+  if (!std::isfinite(low) && !std::isfinite(high)) return std::nullopt;
+  const model::JointLimits limits{low * unit - ref, high * unit - ref, 0.0};
   if (limits.lower > 0.0 || limits.upper < 0.0) {
     note(xml, fmt::format("the limits of {} are not enforced: its start (qpos = ref = {:.6g}) is "
                           "outside its range [{:.6g}, {:.6g}]",

@@ -5,7 +5,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -241,14 +240,17 @@ void UrdfReader::read_joint(const XMLElement* e) {
 void UrdfReader::read_limit(const XMLElement* limit, std::string_view type, JointEntry& entry) {
   const std::string owner = fmt::format("joint '{}'", entry.joint.name);
   const double effort = number(limit, "effort", 0.0), velocity = number(limit, "velocity", 0.0);
-  const std::string recorded =
+  const std::string unenforced =
       effort != 0.0 || velocity != 0.0
-          ? fmt::format("; its effort ({:.6g}) and velocity ({:.6g}) limits are not enforced",
-                        effort, velocity)
+          ? fmt::format("its effort ({:.6g}) and velocity ({:.6g}) limits are not enforced", effort,
+                        velocity)
           : std::string();
+  // A note, the effort and velocity said after `separator` where they are given.
+  const auto note_with = [&](const std::string& text, std::string_view separator) {
+    note(limit, unenforced.empty() ? text : fmt::format("{}{}{}", text, separator, unenforced));
+  };
   if (type != "revolute" && type != "prismatic") {
-    note(limit, fmt::format("the <limit> of {} (a {} joint) has no stops{}", owner, type,
-                            recorded.empty() ? std::string() : ":" + recorded.substr(1)));
+    note_with(fmt::format("the <limit> of {} (a {} joint) has no stops", owner, type), ": ");
     return;
   }
   const double lower = number(limit, "lower", 0.0), upper = number(limit, "upper", 0.0);
@@ -257,25 +259,25 @@ void UrdfReader::read_limit(const XMLElement* limit, std::string_view type, Join
          fmt::format("the limits of {}: lower {:.6g} is above upper {:.6g}", owner, lower, upper));
   }
   if (lower == upper) {
-    note(limit, fmt::format("the limits of {} are not enforced: lower = upper = {:.6g} (URDF's "
-                            "default when they are left out) would lock it{}",
-                            owner, lower, recorded));
+    note_with(fmt::format("the limits of {} are not enforced: lower = upper = {:.6g} (URDF's "
+                          "default when they are left out) would lock it",
+                          owner, lower),
+              "; ");
     return;
   }
   if (lower > 0.0 || upper < 0.0) {
-    note(limit, fmt::format("the limits of {} are not enforced: [{:.6g}, {:.6g}] does not hold "
-                            "the robot's start, where every joint is at 0{}",
-                            owner, lower, upper, recorded));
+    note_with(fmt::format("the limits of {} are not enforced: [{:.6g}, {:.6g}] does not hold the "
+                          "robot's start, where every joint is at 0",
+                          owner, lower, upper),
+              "; ");
     return;
   }
-  // A bound a megametre (or megaradian) away is URDF's way of having none, as momenta writes it.
-  const double far = 1e6, infinity = std::numeric_limits<double>::infinity();
-  if (lower > -far || upper < far) {
-    entry.joint.limits =
-        model::JointLimits{lower <= -far ? -infinity : lower, upper >= far ? infinity : upper, 0.0};
+  const auto [low, high] = bounds_as_read(lower, upper);
+  if (std::isfinite(low) || std::isfinite(high)) {
+    entry.joint.limits = model::JointLimits{low, high, 0.0};
     entry.limit_element = limit;
   }
-  if (!recorded.empty()) note(limit, fmt::format("{}:{}", owner, recorded.substr(1)));
+  if (!unenforced.empty()) note(limit, fmt::format("{}: {}", owner, unenforced));
 }
 
 // The joints' stops as read, unless a mimic joint makes the model constrained (stops on such a

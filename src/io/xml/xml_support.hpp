@@ -1,8 +1,12 @@
 #pragma once
 // What the two XML model readers (URDF, MJCF) share: tinyxml2's errors said in words at their
-// line, whitespace-separated number lists, and where on its line an element or attribute stands.
+// line, whitespace-separated number lists, where on its line an element or attribute stands, and
+// (with the writers) how a stop's missing bound is written.
 
+#include <array>
+#include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -29,6 +33,23 @@ std::optional<std::vector<double>> parse_number_list(std::string_view text);
 /// line. tinyxml2 records lines only: this reads the source text again.
 int xml_column(std::string_view text, const tinyxml2::XMLElement* element,
                const char* attribute = nullptr);
+
+/// URDF's <limit> and MJCF's range need both bounds of a joint's stops, where momenta may have
+/// one: a missing bound is written a megametre (megaradian) away, and a bound at or beyond that
+/// is read as none.
+inline constexpr double kFarBound = 1e6;
+
+/// A stop's bound as written: ±∞ as ±kFarBound.
+inline double bound_as_written(double bound) {
+  return std::isfinite(bound) ? bound : std::copysign(kFarBound, bound);
+}
+
+/// [lower, upper] as read: a lower bound at or below −kFarBound and an upper one at or above
+/// kFarBound are none (∓∞).
+inline std::array<double, 2> bounds_as_read(double lower, double upper) {
+  constexpr double none = std::numeric_limits<double>::infinity();
+  return {lower <= -kFarBound ? -none : lower, upper >= kFarBound ? none : upper};
+}
 
 /// builder.build(), a problem it finds said as ParseError at the line and column of the item it
 /// names (`items`), or at line 0 when it names none; `hint`, where given, adds what the format's
