@@ -299,6 +299,9 @@ class ModelBuilder:
     def add_body(self, name: str, mass_properties: MassProperties) -> ModelBuilder:
         """A body with its mass properties in its own frame (momenta.inertia)."""
         ...
+    def add_contact(self, name: str, *, body: str, point: object = (0, 0, 0), radius: float = 0.0, normal: object = (0, 0, 1), plane_point: object = (0, 0, 0), restitution: float = 0.0) -> ModelBuilder:
+        """A unilateral, frictionless contact of a body's point (radius 0) or sphere (centre `point` in the body, m) with the ground plane through plane_point with unit `normal` (world): impacts with Newton's restitution e ∈ [0, 1], resting contact while the plane pushes (docs/contacts.md)."""
+        ...
     def add_controller(self, name: str, type: str, *, measure: object, drives: object, reference: object = None, kp: float = 0.0, ki: float = 0.0, kd: float = 0.0, derivative_filter: float = 0.0, gain: object = None, state_reference: object = None, feedforward: object = None, numerator: object = None, denominator: object = None, A: object = None, B: object = None, C: object = None, D: object = None, sample_time: float = 0.0, quantization: float = 0.0, noise: float = 0.0, delay: int = 0, seed: int = 1, u_min: float = -inf, u_max: float = inf, rate_limit: float = inf) -> ModelBuilder:
         """A feedback controller, as the model file's `controllers:` (docs/control.md): type 'pid' (kp, ki, kd, derivative_filter), 'state_feedback' (gain K, state_reference, feedforward), 'transfer_function' (numerator, denominator) or 'state_space' (A, B, C, D). `measure` names coordinates ("x.position", "ti"""
         ...

@@ -477,6 +477,30 @@ left out; docs/contacts.md).)doc")
           py::arg("frame") = "world", py::arg("signal") = "",
           "A pure moment (N·m) on a body, constant or u(t) · vector.")
       .def(
+          "add_contact",
+          [](Builder& b, std::string name, const std::string& body, const py::object& point,
+             double radius, const py::object& normal, const py::object& plane_point,
+             double restitution) -> Builder& {
+            model::Contact c;
+            c.name = std::move(name);
+            c.frame.body = body;
+            c.frame.X_BF.p = vec3_arg(point, "point");
+            c.radius = radius;
+            c.plane_normal = vec3_arg(normal, "normal");
+            c.plane_point = vec3_arg(plane_point, "plane_point");
+            c.restitution = restitution;
+            b.builder.add_constraint(std::move(c));
+            return b;
+          },
+          py::arg("name"), py::kw_only(), py::arg("body"),
+          py::arg("point") = py::make_tuple(0, 0, 0), py::arg("radius") = 0.0,
+          py::arg("normal") = py::make_tuple(0, 0, 1),
+          py::arg("plane_point") = py::make_tuple(0, 0, 0), py::arg("restitution") = 0.0,
+          "A unilateral, frictionless contact of a body's point (radius 0) or sphere (centre "
+          "`point` in the body, m) with the ground plane through plane_point with unit `normal` "
+          "(world): impacts with Newton's restitution e ∈ [0, 1], resting contact while the "
+          "plane pushes (docs/contacts.md).")
+      .def(
           "add_signal",
           [](Builder& b, const std::string& name, const std::string& type,
              const py::kwargs& parameters) -> Builder& {

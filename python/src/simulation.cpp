@@ -122,13 +122,15 @@ py::dict summary_of(const simulate::SimulationSummary& s) {
     events.append(event);
   }
   d["events"] = events;
-  // The joints' stops: every impact, rest and release, in time order (simulate/joint_stops.hpp).
+  // The joints' stops and the contacts: every impact, rest and release, in time order
+  // (simulate/unilaterals.hpp); a contact's has its name under "contact" and an empty "joint".
   py::list stops;
   for (const simulate::StopEvent& e : s.stop_events) {
     py::dict stop;
     stop["kind"] = std::string(simulate::stop_event_kind_name(e.kind));
     stop["joint"] = e.joint;
-    stop["stop"] = e.upper ? "upper" : "lower";
+    stop["contact"] = e.contact;
+    stop["stop"] = e.contact.empty() ? (e.upper ? "upper" : "lower") : "";
     stop["time"] = e.time;
     stop["rate_before"] = e.rate_before;
     stop["rate_after"] = e.rate_after;

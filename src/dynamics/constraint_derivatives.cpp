@@ -158,9 +158,10 @@ void constraint_derivatives(const Model& model, Data& data, VecRef q, VecRef v, 
   for (int c = 0; c < static_cast<int>(model.constraints().size()); ++c) {
     const model::Constraint& constraint = model.constraints()[c];
     if (std::holds_alternative<model::JointCoupler>(constraint)) continue;  // constant rows
+    const int first = out.rows.first_row[c];
+    if (!out.rows.enabled[first]) continue;  // an open contact: zero rows
     const detail::JoinedFrames frames = detail::joined_frames(constraint);
     const ConstraintSeeds seeds(model, data, frames);
-    const int first = out.rows.first_row[c];
     for (int k = 0; k < model.nv(); ++k) {
       if (!seeds.moved_by(k)) continue;
       for (const Along direction : {Along::configuration, Along::velocity}) {

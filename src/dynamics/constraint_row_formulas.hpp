@@ -175,6 +175,17 @@ void rolling_rows(const model::RollingContact& c, const FrameMotionOf<S>& mb, Ro
       force_rate<S>(contact, contact_rate, lateral, lateral_rate));
 }
 
+// A contact of the body of mb with the ground plane: the gap n · (centre − plane point) − radius,
+// its force along n at the sphere's lowest point (the point itself for radius 0).
+template <class S, class Row>
+void contact_rows(const model::Contact& c, const FrameMotionOf<S>& mb, Row&& row) {
+  const Vec3Of<S> n = c.plane_normal.cast<S>();
+  const Vec3Of<S> contact = mb.p - c.radius * n;
+  const Vec3Of<S> contact_rate = mb.point_velocity(mb.p);  // n · (ω × n) = 0: the centre's
+  row(n.dot(contact - c.plane_point.cast<S>()), true, force_at<S>(contact, n),
+      force_rate<S>(contact, contact_rate, n, Vec3Of<S>::Zero()));
+}
+
 // Knife edge on the body of mb: no velocity of the point across the blade, s = n × x_B / |…|.
 template <class S, class Row>
 void knife_edge_rows(const model::KnifeEdge& c, const FrameMotionOf<S>& mb, Row&& row) {
@@ -207,6 +218,8 @@ inline JoinedFrames joined_frames(const model::Constraint& constraint) {
     return {c->a.body_index, c->a.X_BF, c->b.body_index, c->b.X_BF};
   if (const auto* c = std::get_if<model::RollingContact>(&constraint))
     return {0, Transform::identity(), c->frame.body_index, c->frame.X_BF};
+  if (const auto* c = std::get_if<model::Contact>(&constraint))
+    return {0, Transform::identity(), c->frame.body_index, c->frame.X_BF};
   const auto& c = std::get<model::KnifeEdge>(constraint);
   return {0, Transform::identity(), c.frame.body_index, c.frame.X_BF};
 }
@@ -221,6 +234,8 @@ void wrench_rows(const model::Constraint& constraint, const FrameMotionOf<S>& ma
     distance_rows(*link, ma, mb, row);
   } else if (const auto* contact = std::get_if<model::RollingContact>(&constraint)) {
     rolling_rows(*contact, mb, row);
+  } else if (const auto* touch = std::get_if<model::Contact>(&constraint)) {
+    contact_rows(*touch, mb, row);
   } else {
     knife_edge_rows(std::get<model::KnifeEdge>(constraint), mb, row);
   }

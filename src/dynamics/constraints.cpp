@@ -209,6 +209,7 @@ ConstraintRows::ConstraintRows(const Model& model)
       constraint.push_back(k);
       // Rolling: the height row first; a knife edge has none.
       holonomic.push_back(r < position_rows ? 1 : 0);
+      enabled.push_back(model::is_unilateral(c) ? 0 : 1);
       names.push_back(fmt::format("{}.{}", model::constraint_name(c), labels[r]));
     }
   }
@@ -229,6 +230,13 @@ void constraint_equations(const Model& model, Data& data, VecRef q, ConstraintRo
   world_poses(model, data);
   if (acc.kind == Accelerations::velocity_products) bias_accelerations(model, data);
   write_rows(model, data, q, acc, rows);
+  for (int i = 0; i < rows.count; ++i) {
+    if (rows.enabled[i]) continue;
+    rows.position[i] = 0.0;
+    rows.G.row(i).setZero();
+    rows.wrench_W[i].setZero();
+    if (acc.velocities()) rows.bias[i] = 0.0;
+  }
 }
 
 void constraint_forces(const Model& model, const Data& data, const ConstraintRows& rows,
@@ -250,7 +258,8 @@ void constraint_forces(const Model& model, const Data& data, const ConstraintRow
     out[0] = -lambda[first];  // λ pushes b away from a along e; tension pulls them together
   } else if (std::holds_alternative<RollingContact>(constraint)) {
     for (int j = 0; j < 3; ++j) out[j] = lambda[first + j];
-  } else if (std::holds_alternative<KnifeEdge>(constraint)) {
+  } else if (std::holds_alternative<KnifeEdge>(constraint) ||
+             std::holds_alternative<model::Contact>(constraint)) {
     out[0] = lambda[first];
   } else {
     const auto& coupler = std::get<JointCoupler>(constraint);

@@ -72,7 +72,8 @@ namespace {
 // impulsive_motion with a generalized impulse on the coordinates besides the points' (a stop's;
 // zero size for none).
 ImpulsiveMotion respond(const Model& model, VecRef q, VecRef v,
-                        std::span<const PointImpulse> impulses, const VecX& generalized) {
+                        std::span<const PointImpulse> impulses, const VecX& generalized,
+                        std::span<const char> enabled_rows) {
   check_arguments(model, q, v, impulses);
   const int nv = model.nv();
   Data data(model);
@@ -103,6 +104,13 @@ ImpulsiveMotion respond(const Model& model, VecRef q, VecRef v,
         "body that carries nothing?)");
   }
   ConstraintRows rows(model);
+  if (!enabled_rows.empty()) {
+    if (static_cast<int>(enabled_rows.size()) != rows.count) {
+      throw InvalidArgument(fmt::format("impulsive_motion: {} row flags for {} constraint rows",
+                                        enabled_rows.size(), rows.count));
+    }
+    rows.enabled.assign(enabled_rows.begin(), enabled_rows.end());
+  }
   if (rows.count > 0) constraint_equations(model, data, q, rows, RowTerms::jacobian);
   MatX G_f(rows.count, nf);
   for (int i = 0; i < nf; ++i) G_f.col(i) = rows.G.col(free[i]);
@@ -118,7 +126,8 @@ ImpulsiveMotion respond(const Model& model, VecRef q, VecRef v,
     A_solve.setThreshold(1e-10);
     const VecX rhs = -(rows.G * v) - G_f * dv_f;
     r.constraint_impulses = A_solve.solve(rhs);
-    r.redundant_rows = rows.count - static_cast<int>(A_solve.rank());
+    const auto on = std::count(rows.enabled.begin(), rows.enabled.end(), 1);
+    r.redundant_rows = static_cast<int>(on) - static_cast<int>(A_solve.rank());
     dv_f += M_inv_Gt * r.constraint_impulses;
   }
   VecX dv = VecX::Zero(nv);
@@ -176,8 +185,9 @@ ImpulsiveMotion respond(const Model& model, VecRef q, VecRef v,
 }  // namespace
 
 ImpulsiveMotion impulsive_motion(const Model& model, VecRef q, VecRef v,
-                                 std::span<const PointImpulse> impulses) {
-  return respond(model, q, v, impulses, VecX());
+                                 std::span<const PointImpulse> impulses,
+                                 std::span<const char> enabled_rows) {
+  return respond(model, q, v, impulses, VecX(), enabled_rows);
 }
 
 namespace {
@@ -207,7 +217,7 @@ std::vector<PointImpulse> impulse_pair(const PointContact& c, double P) {
 }  // namespace
 
 Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointContact& contact,
-                          double restitution) {
+                          double restitution, std::span<const char> enabled_rows) {
   if (!(restitution >= 0.0 && restitution <= 1.0)) {
     throw InvalidArgument(fmt::format(
         "restitution_impact: the coefficient of restitution {} is outside [0, 1] (0: plastic, 1: "
@@ -242,7 +252,7 @@ Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointCon
   // w from a unit pair at rest: the separation speed it alone would make.
   const VecX at_rest = VecX::Zero(model.nv());
   const std::vector<PointImpulse> unit = impulse_pair(contact, 1.0);
-  const ImpulsiveMotion response = impulsive_motion(model, q, at_rest, unit);
+  const ImpulsiveMotion response = impulsive_motion(model, q, at_rest, unit, enabled_rows);
   const double w = normal_speed(model, data, q, response.v_after, contact);
   const double scale = std::max(1.0, w);
   if (!(w > 1e-12 * scale)) {
@@ -252,7 +262,8 @@ Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointCon
   }
   impact.normal_impulse = -(1.0 + restitution) * impact.approach_speed / w;
   impact.separation_speed = -restitution * impact.approach_speed;
-  impact.motion = impulsive_motion(model, q, v, impulse_pair(contact, impact.normal_impulse));
+  impact.motion =
+      impulsive_motion(model, q, v, impulse_pair(contact, impact.normal_impulse), enabled_rows);
   return impact;
 }
 
@@ -276,7 +287,7 @@ StopImpact stop_impact(const Model& model, VecRef q, VecRef v, int coordinate, d
   const VecX at_rest = VecX::Zero(model.nv());
   VecX unit = VecX::Zero(model.nv());
   unit[coordinate] = 1.0;
-  const double w = respond(model, q, at_rest, {}, unit).v_after[coordinate];
+  const double w = respond(model, q, at_rest, {}, unit, {}).v_after[coordinate];
   if (!(w > 0.0)) {
     throw InvalidArgument(fmt::format(
         "stop_impact: the mechanism cannot move {} (its constraints hold it): no stop strikes it",
@@ -288,7 +299,7 @@ StopImpact stop_impact(const Model& model, VecRef q, VecRef v, int coordinate, d
   impact.impulse = (impact.rate_after - impact.rate_before) / w;
   VecX generalized = VecX::Zero(model.nv());
   generalized[coordinate] = impact.impulse;
-  impact.motion = respond(model, q, v, {}, generalized);
+  impact.motion = respond(model, q, v, {}, generalized, {});
   impact.motion.v_after[coordinate] = impact.rate_after;  // exact, not to round-off
   return impact;
 }

@@ -27,6 +27,7 @@ struct TypeName {
   std::string_view operator()(const RollingContact&) const { return "rolling"; }
   std::string_view operator()(const KnifeEdge&) const { return "knife_edge"; }
   std::string_view operator()(const JointCoupler&) const { return "coupler"; }
+  std::string_view operator()(const Contact&) const { return "contact"; }
 };
 
 struct Rows {
@@ -46,6 +47,7 @@ struct Rows {
   int operator()(const RollingContact&) const { return 3; }
   int operator()(const KnifeEdge&) const { return 1; }
   int operator()(const JointCoupler&) const { return 1; }
+  int operator()(const Contact&) const { return 1; }
 };
 }  // namespace
 
@@ -54,6 +56,10 @@ std::string_view constraint_type_name(const Constraint& constraint) {
 }
 
 int constraint_rows(const Constraint& constraint) { return std::visit(Rows{}, constraint); }
+
+bool is_unilateral(const Constraint& constraint) {
+  return std::holds_alternative<Contact>(constraint);
+}
 
 int constraint_position_rows(const Constraint& constraint) {
   if (std::holds_alternative<RollingContact>(constraint)) return 1;
@@ -78,6 +84,7 @@ std::vector<std::string_view> constraint_row_labels(const Constraint& constraint
   if (std::holds_alternative<RollingContact>(constraint))
     return {"normal", "longitudinal", "lateral"};
   if (std::holds_alternative<KnifeEdge>(constraint)) return {"lateral"};
+  if (std::holds_alternative<Contact>(constraint)) return {"normal"};
   return {"ratio"};
 }
 
@@ -90,6 +97,7 @@ std::vector<std::string_view> constraint_force_labels(const Constraint& constrai
   if (std::holds_alternative<RollingContact>(constraint))
     return {"normal", "longitudinal", "lateral"};
   if (std::holds_alternative<KnifeEdge>(constraint)) return {"lateral"};
+  if (std::holds_alternative<Contact>(constraint)) return {"normal"};
   return {"effort_a", "effort_b"};
 }
 

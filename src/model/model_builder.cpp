@@ -668,6 +668,20 @@ class ModelAssembler {
                     vec_str(c.plane_point));
   }
 
+  void resolve(Contact& c, const std::string& who) const {
+    resolve_frame(c.frame, who);
+    require(c.frame.body_index != 0, who + ": the world cannot touch the ground; name a body");
+    MOMENTA_REQUIRE(c.radius >= 0.0 && std::isfinite(c.radius),
+                    "{}: radius must be zero (a point) or positive and finite, got {} m", who,
+                    c.radius);
+    check_plane_normal(c.plane_normal, who);
+    MOMENTA_REQUIRE(c.plane_point.allFinite(), "{}: plane point {} is not finite", who,
+                    vec_str(c.plane_point));
+    MOMENTA_REQUIRE(c.restitution >= 0.0 && c.restitution <= 1.0,
+                    "{}: restitution must be in [0, 1] (0 plastic, 1 elastic), got {}", who,
+                    c.restitution);
+  }
+
   void resolve(KnifeEdge& c, const std::string& who) const {
     resolve_frame(c.frame, who);
     require(c.frame.body_index != 0, who + ": a knife edge on the world does nothing");

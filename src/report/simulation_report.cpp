@@ -84,12 +84,19 @@ json summary_json(const SimulationRun& run, double fastest_rate) {
   }
   json stops = json::array();
   for (const simulate::StopEvent& e : s.stop_events) {
-    const int v = file.model.joint(file.model.joint_index(e.joint)).v_index;
+    // A stop's rate and impulse are its coordinate's; a contact's its normal's.
+    std::string rate_unit = "m/s", impulse_unit = "N·s";
+    if (e.contact.empty()) {
+      const int v = file.model.joint(file.model.joint_index(e.joint)).v_index;
+      rate_unit = model::v_unit(file.model, v);
+      impulse_unit = model::effort_unit(file.model, v) + "·s";
+    }
     stops.push_back({{"kind", simulate::stop_event_kind_name(e.kind)},
-                     {"rate_unit", model::v_unit(file.model, v)},
-                     {"impulse_unit", model::effort_unit(file.model, v) + "·s"},
+                     {"rate_unit", rate_unit},
+                     {"impulse_unit", impulse_unit},
                      {"joint", e.joint},
-                     {"stop", e.upper ? "upper" : "lower"},
+                     {"contact", e.contact},
+                     {"stop", e.contact.empty() ? (e.upper ? "upper" : "lower") : ""},
                      {"time", e.time},
                      {"rate_before", e.rate_before},
                      {"rate_after", e.rate_after},

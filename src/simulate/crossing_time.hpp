@@ -1,6 +1,6 @@
 #pragma once
 // Where a function of time on a step's dense output reaches zero: the one root finder the run's
-// events (event_monitor.cpp) and its joints' stops (joint_stops.cpp) locate instants with.
+// events (event_monitor.cpp) and its stops and contacts (unilaterals.cpp) locate instants with.
 
 #include <algorithm>
 #include <cmath>

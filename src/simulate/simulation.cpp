@@ -90,8 +90,9 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
   }
   if (model.has_joint_limits() && model.has_constraints()) {
     throw InvalidArgument(
-        "the model has joint limits and constraints: stops on a model with constraints are not "
-        "supported yet (docs/contacts.md); remove the limits or the constraints");
+        "the model has joint limits and constraints (or contacts): stops on a model with "
+        "constraints are not supported yet (docs/contacts.md); remove the limits or the "
+        "constraints");
   }
   if (model.has_joint_limits() &&
       model::integrator_info(options_.integrator).family == model::IntegratorFamily::rigid_body) {
@@ -103,7 +104,8 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
   // The one system every run() of this simulation advances, closed by the controllers.
   system_ = std::make_unique<MultibodySystem>(model);
   if (model.has_controllers()) closed_loop_ = std::make_unique<system::ClosedLoopSystem>(*system_);
-  if (model.has_joint_limits()) stops_ = std::make_unique<JointStops>(model, options_.step);
+  if (model.has_joint_limits() || model.has_contacts())
+    stops_ = std::make_unique<Unilaterals>(model, options_.step);
   events_ =
       std::make_unique<EventMonitor>(model, outputs_.specs(), options_.events,
                                      closed_loop_ ? closed_loop_->num_controller_states() : 0);
@@ -576,22 +578,26 @@ std::string format_stop_events(const std::vector<StopEvent>& events) {
   if (events.empty()) return "";
   constexpr std::size_t kListed = 6;
   const auto line = [](const StopEvent& e) {
-    const std::string stop = fmt::format("{} {} stop", e.joint, e.upper ? "upper" : "lower");
+    const bool contact = !e.contact.empty();
+    const std::string stop = contact
+                                 ? fmt::format("contact {}", e.contact)
+                                 : fmt::format("{} {} stop", e.joint, e.upper ? "upper" : "lower");
+    const char* const held = contact ? "the body" : "the joint";
+    const char* const rate = contact ? "normal speed" : "rate";
     switch (e.kind) {
       case StopEventKind::impact:
         return fmt::format(
-            "{} impact at t = {:.12g} s: rate {:.6g} -> {:.6g}, impulse {:.6g}, "
+            "{} impact at t = {:.12g} s: {} {:.6g} -> {:.6g}, impulse {:.6g}, "
             "{:.6g} J lost",
-            stop, e.time, e.rate_before, e.rate_after, e.impulse, e.energy_lost);
+            stop, e.time, rate, e.rate_before, e.rate_after, e.impulse, e.energy_lost);
       case StopEventKind::rest:
         return fmt::format(
-            "{} holds the joint from t = {:.12g} s{} (rate {:.6g} -> 0, {:.6g} J lost)", stop,
-            e.time,
+            "{} holds {} from t = {:.12g} s{} ({} {:.6g} -> 0, {:.6g} J lost)", stop, held, e.time,
             e.rest_time > e.time ? fmt::format(" (its bounces end at t = {:.12g} s)", e.rest_time)
                                  : "",
-            e.rate_before, e.energy_lost);
+            rate, e.rate_before, e.energy_lost);
       case StopEventKind::release:
-        return fmt::format("{} lets the joint go at t = {:.12g} s (it would pull)", stop, e.time);
+        return fmt::format("{} lets {} go at t = {:.12g} s (it would pull)", stop, held, e.time);
     }
     return std::string();
   };

@@ -41,6 +41,7 @@ class RowWriter {
       if (const auto* c = std::get_if<RollingContact>(&constraint)) rolling(*c);
       if (const auto* c = std::get_if<KnifeEdge>(&constraint)) knife_edge(*c);
       if (const auto* c = std::get_if<JointCoupler>(&constraint)) coupler(*c);
+      // A contact (model::Contact) is open in the equations of motion: no rows.
     }
     return std::move(rows_);
   }

@@ -128,7 +128,14 @@ void ConstraintSolver::find_redundant_rows(dynamics::Data& data, VecRef q) {
   reference_rank_ = cholesky_->rank();
   redundant_.clear();
   for (int i = 0; i < rows_.count; ++i)
-    if (cholesky_->dependent(i)) redundant_.push_back(rows_.names[i]);
+    if (cholesky_->dependent(i) && rows_.enabled[i]) redundant_.push_back(rows_.names[i]);
+}
+
+void ConstraintSolver::enable_row(dynamics::Data& data, VecRef q, int row, bool on) {
+  if (rows_.enabled[row] == static_cast<char>(on)) return;
+  rows_.enabled[row] = on ? 1 : 0;
+  if (!on) lambda_[row] = 0.0;
+  find_redundant_rows(data, q);
 }
 
 bool ConstraintSolver::correct_accelerations(dynamics::Data& data, VecRef q, VecX& vdot) {

@@ -1,5 +1,7 @@
 #include "momenta/system/freedoms.hpp"
 
+#include <algorithm>
+
 #include "momenta/system/constraint_solver.hpp"
 
 namespace momenta::system {
@@ -12,7 +14,9 @@ Freedoms count_freedoms(const model::Model& model) {
   }
   if (model.has_constraints()) {
     const ConstraintSolver solver(model);
-    f.constraint_rows = solver.rows().count;
+    // A contact's row is off (open) outside a run: it takes no freedom.
+    const std::vector<char>& on = solver.rows().enabled;
+    f.constraint_rows = static_cast<int>(std::count(on.begin(), on.end(), 1));
     f.independent_rows = f.constraint_rows - static_cast<int>(solver.redundant_rows().size());
   }
   return f;

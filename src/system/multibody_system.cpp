@@ -84,6 +84,10 @@ MultibodySystem::MultibodySystem(const model::Model& model)
   for (const model::Joint& j : model.joints()) {
     if (j.limits && j.limits->restitution < 1.0) inelastic_stops = true;
   }
+  for (const model::Constraint& c : model.constraints()) {
+    const auto* contact = std::get_if<model::Contact>(&c);
+    if (contact && contact->restitution < 1.0) inelastic_stops = true;
+  }
   conserves_energy_ = !model.has_prescribed_joints() && !inelastic_stops &&
                       dynamics::force_elements_conservative(model);
   // Angular momentum about the centre of mass: besides conserving energy, no body may be held
@@ -104,7 +108,7 @@ MultibodySystem::MultibodySystem(const model::Model& model)
   // ground) exert external moments.
   for (const model::Constraint& c : model.constraints()) {
     if (std::holds_alternative<model::RollingContact>(c) ||
-        std::holds_alternative<model::KnifeEdge>(c)) {
+        std::holds_alternative<model::KnifeEdge>(c) || std::holds_alternative<model::Contact>(c)) {
       floating = false;
     } else if (const auto* loop = std::get_if<model::LoopClosure>(&c)) {
       if (loop->a.body_index == 0 || loop->b.body_index == 0) floating = false;
@@ -336,6 +340,20 @@ void MultibodySystem::release(int j) {
   if (held_[j]) --holding_;
   held_[j] = 0;
   hybrid_mask_[j] = model_.joints()[static_cast<std::size_t>(j)].is_prescribed() ? 1 : 0;
+}
+
+void MultibodySystem::close_contact(int k, VecRef q, bool closed) {
+  const int row = constraints_->rows().first_row[static_cast<std::size_t>(k)];
+  constraints_->enable_row(data_, q, row, closed);
+}
+
+bool MultibodySystem::contact_closed(int k) const {
+  const dynamics::ConstraintRows& rows = constraints_->rows();
+  return rows.enabled[static_cast<std::size_t>(rows.first_row[static_cast<std::size_t>(k)])] != 0;
+}
+
+double MultibodySystem::contact_force(int k) const {
+  return constraints_->multipliers()[constraints_->rows().first_row[static_cast<std::size_t>(k)]];
 }
 
 double MultibodySystem::stop_force(int j) const {

@@ -299,7 +299,7 @@ test('bouncing ball: its impacts ticked on the time axis and listed in the summa
   assert.ok(listed.closed);
   const impacts = stops.filter((e) => e.kind === 'impact').length;
   assert.equal(impacts, stops.length - 1);  // the last holds the ball: rest
-  assert.match(listed.text, new RegExp(`Joint stops: ${stops.length} entries, ${impacts} impacts`));
+  assert.match(listed.text, new RegExp(`Stops and contacts: ${stops.length} entries, ${impacts} impacts`));
   assert.match(listed.text, /its bounces end at 4\.0637\d* s/);
   assert.match(listed.text, /\t-4\.42945 m\/s\t3\.54356 m\/s\t0\.7973 N·s\t/);
   await (await r.page.$('#summary')).screenshot({ path: path.join(artifacts, 'bouncing_ball-stops.png') });

@@ -228,3 +228,33 @@ def test_joint_stops_are_entries_of_the_summary():
         bad.add_joint("j", "prismatic", parent="world", child="b", limits={"lower": 0,
                                                                           "restitution": 2})
         bad.build()
+
+
+def test_contacts_are_entries_of_the_summary():
+    # A free 1 kg ball of radius 0.1 m dropped from 1 m (its lowest point) on the ground plane
+    # through a contact with e = 0.5, built in Python: its first impact at t₁ = √(2h/g), the
+    # rebound −e times the speed it arrives with √(2gh), the impulse m Δv, and rest at the Zeno
+    # limit t₁ (1 + e)/(1 − e) within the 1e-8 s a centre's round-off allows (docs/contacts.md).
+    b = momenta.ModelBuilder("ball")
+    b.set_gravity([0, 0, -9.81])
+    b.add_body("ball", momenta.inertia.solid_sphere(0.1, mass=1.0))
+    b.add_joint("free", "free", parent="world", child="ball", q0=[0, 0, 1.1, 1, 0, 0, 0])
+    b.add_contact("floor", body="ball", radius=0.1, restitution=0.5)
+    run = momenta.simulate(b.build(), duration=4.0, dt=1e-3)
+    stops = run.summary["stops"]
+    t1 = np.sqrt(2 / 9.81)
+    first = stops[0]
+    assert first["kind"] == "impact" and first["contact"] == "floor" and first["joint"] == ""
+    assert abs(first["time"] - t1) < 1e-12
+    assert abs(first["rate_before"] + np.sqrt(2 * 9.81)) < 1e-11
+    assert abs(first["rate_after"] + 0.5 * first["rate_before"]) < 1e-14
+    assert abs(first["impulse"] - (first["rate_after"] - first["rate_before"])) < 1e-14
+    assert stops[-1]["kind"] == "rest"
+    assert abs(stops[-1]["rest_time"] - t1 * 1.5 / 0.5) < 1e-8
+    assert run["free.z"].min() >= 0.1 - 1e-12 and abs(run["free.z"][-1] - 0.1) < 1e-15
+    with pytest.raises(ValueError, match="restitution must be in \\[0, 1\\]"):
+        bad = momenta.ModelBuilder("bad")
+        bad.add_body("b", momenta.inertia.solid_sphere(0.1, mass=1.0))
+        bad.add_joint("j", "free", parent="world", child="b")
+        bad.add_contact("floor", body="b", restitution=2)
+        bad.build()

@@ -37,7 +37,7 @@ function timeMarker(timeline) {
 export function timeMarks(summary) {
   const stops = (summary.stops ?? []).map((s) => ({
     time: s.time, kind: s.kind,
-    text: `${s.joint} ${s.stop} stop: ${s.kind === 'impact' ? 'impact' : s.kind === 'rest' ? 'holds the joint' : 'lets the joint go'} at t = ${s.time.toPrecision(6)} s`
+    text: `${s.contact ? `contact ${s.contact}` : `${s.joint} ${s.stop} stop`}: ${s.kind === 'impact' ? 'impact' : s.kind === 'rest' ? `holds the ${s.contact ? 'body' : 'joint'}` : `lets the ${s.contact ? 'body' : 'joint'} go`} at t = ${s.time.toPrecision(6)} s`
       + (s.kind === 'release' ? '' : `, rate ${s.rate_before.toPrecision(4)} → ${s.rate_after.toPrecision(4)} ${s.rate_unit}, impulse ${s.impulse.toPrecision(4)} ${s.impulse_unit}, ${s.energy_lost.toPrecision(3)} J lost`),
   }));
   const events = (summary.events ?? []).map((e) => ({

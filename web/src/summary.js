@@ -35,14 +35,15 @@ export function summarySection(data) {
   return section;
 }
 
-// Every impact, rest and release of the joints' stops, in time order (open when there are few).
+// Every impact, rest and release of the joints' stops and the contacts, in time order (open when
+// there are few); a contact is named in the 'stop' column, its rates its normal speed.
 function stopsTable(stops) {
   const impacts = stops.filter((e) => e.kind === 'impact').length;
   const lost = stops.reduce((sum, e) => sum + e.energy_lost, 0);
   const details = element('details', { class: 'stops' },
-    element('summary', {}, `Joint stops: ${stops.length} entr${stops.length === 1 ? 'y' : 'ies'}, ${impacts} impact${impacts === 1 ? '' : 's'}, ${formatNumber(lost, 4)} J lost`),
+    element('summary', {}, `Stops and contacts: ${stops.length} entr${stops.length === 1 ? 'y' : 'ies'}, ${impacts} impact${impacts === 1 ? '' : 's'}, ${formatNumber(lost, 4)} J lost`),
     table(['time (s)', 'joint', 'stop', 'what', 'rate before', 'rate after', 'impulse', 'energy lost (J)'],
-      stops.map((e) => [formatNumber(e.time, 12), e.joint, e.stop,
+      stops.map((e) => [formatNumber(e.time, 12), e.contact ? '' : e.joint, e.contact ? `contact ${e.contact}` : e.stop,
         e.kind === 'rest' && e.rest_time > e.time ? `rest (its bounces end at ${formatNumber(e.rest_time, 12)} s)` : e.kind,
         `${formatNumber(e.rate_before, 6)} ${e.rate_unit}`, `${formatNumber(e.rate_after, 6)} ${e.rate_unit}`,
         `${formatNumber(e.impulse, 6)} ${e.impulse_unit}`, formatNumber(e.energy_lost, 4)])));

@@ -23,6 +23,8 @@
 //             no slip sideways (the last two velocity rows only)
 //   knife     no velocity across the blade (a velocity row only)
 //   coupler   q_a − ratio·q_b − offset (a row of G in joint space, no wrench)
+//   contact   the gap n·(p_centre − p_plane) − radius, a force along n at the contact point;
+//             zero while the contact is off (ConstraintRows::enabled)
 
 #include <span>
 #include <string>
@@ -41,8 +43,13 @@ struct ConstraintRows {
   std::vector<int> constraint;  ///< per row: index into model.constraints()
   std::vector<int> first_row;   ///< per constraint: its first row
   std::vector<char> holonomic;  ///< per row: 1 for a position row
-  VecX position;                ///< φ per row (m or rad); 0 on velocity-only rows
-  MatX G;                       ///< count × nv
+  /// Per row: 1 where it holds. A unilateral contact's row (model::Contact) starts at 0 (open)
+  /// and is switched by whoever runs the contacts (simulate/unilaterals.hpp); constraint_equations
+  /// writes a row that is off as zero (φ, G, bias, wrench): it exerts no force and restricts
+  /// nothing.
+  std::vector<char> enabled;
+  VecX position;  ///< φ per row (m or rad); 0 on velocity-only rows
+  MatX G;         ///< count × nv
   /// k = Ġ v per row (RowTerms::with_velocity_products), G v̇ + k at data's accelerations
   /// (RowTerms::with_acceleration_residual), or ẇ·(V_b − V_a) (RowTerms::with_wrench_rates).
   VecX bias;

@@ -56,9 +56,12 @@ struct ImpulsiveMotion {
 /// The response of the model at (q, v) to the impulses. `q` must satisfy the constraints (v need
 /// not: the rows' G v⁻ is removed, as a constrained impact does). Throws InvalidArgument for a
 /// body index out of range, a non-finite impulse or state, or wrong sizes; NumericalError where
-/// the free coordinates' mass matrix is singular.
+/// the free coordinates' mass matrix is singular. `enabled_rows` (one flag per constraint row,
+/// ConstraintRows::enabled) says which rows hold; empty, the model's own (its contacts open):
+/// a run passes the contacts it has closed, which then take their impulses too.
 ImpulsiveMotion impulsive_motion(const Model& model, VecRef q, VecRef v,
-                                 std::span<const PointImpulse> impulses);
+                                 std::span<const PointImpulse> impulses,
+                                 std::span<const char> enabled_rows = {});
 
 /// Two bodies meeting at a point: A's point p_AoPa_A and B's point p_BoPb_B, which touch, and the
 /// contact normal n (unit, in W) along which B is pushed away from A. A may be the world (0).
@@ -86,8 +89,9 @@ struct Impact {
 /// so P = −(1 + e) v_n⁻ / w. Throws InvalidArgument where the points do not approach (v_n⁻ ≥ 0:
 /// no impact), e is outside [0, 1], the normal is not a unit vector, both points are on one body,
 /// or the mechanism cannot move them apart (w = 0: a contact the constraints hold still).
+/// `enabled_rows` as impulsive_motion's.
 Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointContact& contact,
-                          double restitution);
+                          double restitution, std::span<const char> enabled_rows = {});
 
 /// A stop striking a joint's coordinate (a revolute or prismatic joint at its limit,
 /// model::JointLimits): the generalized impulse P on coordinate i alone, M Δv = e_i P (+ the

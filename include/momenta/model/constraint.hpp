@@ -20,6 +20,12 @@
 // | rolling     | 3    | 1             | the body's contact point with a plane has no velocity   |
 // | knife_edge  | 1    | 0             | a body point does not slide across its blade            |
 // | coupler     | 1    | 1             | q_a = ratio · q_b + offset between two 1-dof joints    |
+// | contact     | 1    | 1             | a point or sphere stays on or above the ground plane   |
+//
+// A contact is unilateral (docs/contacts.md): its row is off while the body is clear of the
+// plane or leaving it, and a run's simulate/unilaterals.hpp switches it on (ConstraintRows::
+// enabled) while the plane holds the body up. Everything that forms the rows without a run — the
+// analyses, the impulse equations, the symbolic equations — sees a contact as open.
 //
 // Rolling and knife-edge constraints are nonholonomic: besides the rolling contact's height they
 // restrict velocities only, never positions.
@@ -116,12 +122,30 @@ struct JointCoupler {
   int joint_b_index = -1;
 };
 
-using Constraint = std::variant<LoopClosure, DistanceLink, RollingContact, KnifeEdge, JointCoupler>;
+/// A unilateral, frictionless contact between a body's point or sphere and the ground plane (the
+/// plane through plane_point with unit normal plane_normal, world; the body stays on its
+/// normal's side): gap = n · (p_centre − plane_point) − radius ≥ 0, with p_centre = frame.p and
+/// radius 0 for a point. Where the gap closes the body is struck by Newton's law of restitution
+/// along the normal, restitution e ∈ [0, 1] (dynamics::restitution_impact); while it rests on the
+/// plane the row holds it up and its force (`normal`, N, > 0 pushing the body off the plane) is
+/// reported; where that force would pull, the body is let go.
+struct Contact {
+  std::string name;
+  BodyFrame frame;      ///< the point, or the sphere's centre (only the frame's origin is used)
+  double radius = 0.0;  ///< m, ≥ 0 (0: a point)
+  Vec3 plane_normal = Vec3::UnitZ();
+  Vec3 plane_point = Vec3::Zero();
+  double restitution = 0.0;  ///< e ∈ [0, 1]
+};
+
+using Constraint =
+    std::variant<LoopClosure, DistanceLink, RollingContact, KnifeEdge, JointCoupler, Contact>;
 
 /// The constraint's name.
 const std::string& constraint_name(const Constraint& constraint);
 
-/// "weld", "point", "hinge", "slider", "distance", "rolling", "knife_edge", "coupler".
+/// "weld", "point", "hinge", "slider", "distance", "rolling", "knife_edge", "coupler",
+/// "contact".
 std::string_view constraint_type_name(const Constraint& constraint);
 std::string_view loop_type_name(LoopType type);
 
@@ -130,10 +154,13 @@ std::string_view loop_type_name(LoopType type);
 int constraint_rows(const Constraint& constraint);
 int constraint_position_rows(const Constraint& constraint);
 
+/// Whether a constraint is a unilateral contact (model::Contact): on only while it holds.
+bool is_unilateral(const Constraint& constraint);
+
 /// Each row's label, in row order (rows are named "<constraint>.<label>"): a loop closure's x, y,
 /// z, rx, ry, rz (those it has: a hinge x … ry, a slider x, y, rx … rz), a distance link's
 /// length, a rolling contact's normal, longitudinal, lateral, a knife edge's lateral, a
-/// coupler's ratio.
+/// coupler's ratio, a contact's normal.
 std::vector<std::string_view> constraint_row_labels(const Constraint& constraint);
 
 /// What a constraint reports as its forces, by label (CSV columns "<constraint>.<label>"):
@@ -145,6 +172,7 @@ std::vector<std::string_view> constraint_row_labels(const Constraint& constraint
 ///                               that)
 ///   knife_edge                  lateral (N, along n × blade on the body)
 ///   coupler                     effort_a, effort_b (generalized forces on joint a and b: N·m or N)
+///   contact                     normal (N, on the body along the plane normal; 0 while open)
 std::vector<std::string_view> constraint_force_labels(const Constraint& constraint);
 
 }  // namespace momenta::model

@@ -205,7 +205,7 @@ constexpr bool is_rotation_rate(JointType type, int k) {
 /// Stops on a revolute or prismatic joint's coordinate (rad or m): the joint moves freely between
 /// `lower` and `upper`; a stop it reaches strikes it with Newton's restitution (its rate after is
 /// −restitution × its rate before) and holds it while the stop pushes (docs/contacts.md,
-/// simulate/joint_stops.hpp). A bound may be infinite (a stop on one side only).
+/// simulate/unilaterals.hpp). A bound may be infinite (a stop on one side only).
 struct JointLimits {
   double lower = -std::numeric_limits<double>::infinity();
   double upper = std::numeric_limits<double>::infinity();

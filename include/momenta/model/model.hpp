@@ -139,6 +139,13 @@ class Model {
     }
     return false;
   }
+  /// True when any constraint is a unilateral contact (model::Contact).
+  bool has_contacts() const {
+    for (const Constraint& c : constraints_) {
+      if (is_unilateral(c)) return true;
+    }
+    return false;
+  }
 
   /// The initial state: each joint's q0 and v0 (neutral and zero where not given), stacked.
   const VecX& initial_q() const { return q0_; }

@@ -43,8 +43,9 @@
 //
 // Joint stops (model::JointLimits): the run is taken back to each instant a joint reaches a stop,
 // which strikes it (Newton's restitution through the whole mechanism) or holds it, and lets it go
-// where holding it would pull (simulate/joint_stops.hpp). Each is a row just before and one just
-// after, and an entry of the summary's stop_events. With options.reactions each limited joint has
+// where holding it would pull (simulate/unilaterals.hpp); contacts (model::Contact) likewise
+// strike, hold and let go of their bodies. Each is a row just before and one just after, and an
+// entry of the summary's stop_events. With options.reactions each limited joint has
 // a column <joint>.stop_force (N·m or N: the force its stop exerts on the coordinate, 0 when open).
 //
 // Prescribed joints. After every step the recorded copy of the state gets the prescribed
@@ -65,7 +66,7 @@
 #include "momenta/model/model.hpp"
 #include "momenta/simulate/conservation_audit.hpp"
 #include "momenta/simulate/event_monitor.hpp"
-#include "momenta/simulate/joint_stops.hpp"
+#include "momenta/simulate/unilaterals.hpp"
 #include "momenta/system/constraint_solver.hpp"
 #include "momenta/system/output_set.hpp"
 
@@ -150,7 +151,7 @@ struct SimulationSummary {
   /// Every event that happened, in time order (each also a row of the table); the last one's
   /// action is stop when an event ended the run (t_end is then its time).
   std::vector<EventOccurrence> events;
-  /// Every impact, rest and release of a joint's stops (simulate/joint_stops.hpp), in time
+  /// Every impact, rest and release of the stops and contacts (simulate/unilaterals.hpp), in time
   /// order; each impact is two rows of the table at its time, just before and just after.
   std::vector<StopEvent> stop_events;
 };
@@ -222,7 +223,7 @@ class Simulation {
   std::unique_ptr<system::ClosedLoopSystem> closed_loop_;  // null without controllers
   std::unique_ptr<integrate::Integrator> integrator_;
   std::unique_ptr<EventMonitor> events_;
-  std::unique_ptr<JointStops> stops_;  // null without joint limits
+  std::unique_ptr<Unilaterals> stops_;  // null without joint limits or contacts
   std::vector<std::string> columns_;
   std::vector<std::string> units_;
 };

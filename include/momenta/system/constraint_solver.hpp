@@ -98,6 +98,12 @@ class ConstraintSolver {
   /// initial one, or the last consistent_state()): redundant, they carry no force.
   const std::vector<std::string>& redundant_rows() const { return redundant_; }
 
+  /// Switches row `row` on or off — a unilateral contact's (model::Contact), which a run closes
+  /// while the plane holds the body and opens where it lets go — and takes the rank of the rows
+  /// then on at configuration q as the reference (and the redundant rows there). Overwrites
+  /// data. Allocates nothing after the first call; forms M (an event's cost, not a step's).
+  void enable_row(dynamics::Data& data, VecRef q, int row, bool on);
+
   /// Chooses how correct_accelerations forms M⁻¹ Gᵀ (AccelerationMethod::articulated unless
   /// set).
   void set_acceleration_method(AccelerationMethod method) { method_ = method; }

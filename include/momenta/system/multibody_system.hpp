@@ -137,7 +137,7 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   std::span<const model::SignalSample> signal_samples() const { return samples_; }
 
   /// Holds joint j's coordinate (a revolute or prismatic joint's) at `value` with zero rate and
-  /// acceleration, as a stop holds it (simulate/joint_stops.hpp): evaluations then treat it as
+  /// acceleration, as a stop holds it (simulate/unilaterals.hpp): evaluations then treat it as
   /// prescribed (hybrid dynamics), and stop_force(j) is the force the hold needs. The caller sets
   /// the state's coordinate and rate to match. No allocation.
   void hold(int j, double value);
@@ -147,6 +147,15 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   /// After an evaluation (acceleration() or evaluate()): the generalized force the hold of joint j
   /// exerts on its coordinate (N·m or N): what the joint's motion needs less the force elements'.
   double stop_force(int j) const;
+
+  /// Closes (or opens) contact k — constraint k, a model::Contact — at configuration q: its row
+  /// holds the body on the plane (ConstraintSolver::enable_row). The caller puts the state on
+  /// the plane with no normal speed first. Overwrites data().
+  void close_contact(int k, VecRef q, bool closed = true);
+  bool contact_closed(int k) const;
+  /// After an evaluation: the normal force (N) closed contact k exerts on its body, > 0 pushing
+  /// it off the plane; 0 while open.
+  double contact_force(int k) const;
 
   /// Energy at (q, v) (prescribed coordinates as given). Overwrites data()'s poses and
   /// velocities with those of (q, v). No allocation.

@@ -131,6 +131,12 @@ class MjcfWriter {
             }
           },
           c);
+      if (model::is_unilateral(c)) {
+        throw InvalidArgument(fmt::format(
+            "contact '{}': momenta does not write contacts to MJCF yet (MuJoCo's are between "
+            "geoms, and soft); remove it to export the rest",
+            model::constraint_name(c)));
+      }
       if (!kept) {
         throw InvalidArgument(fmt::format(
             "constraint '{}' ({}): MJCF has no equality that keeps it (it keeps point, hinge and "

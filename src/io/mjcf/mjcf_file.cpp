@@ -610,7 +610,7 @@ ModelFile MjcfReader::read() {
        c = c->NextSiblingElement("asset")) {
     read_assets(c);
   }
-  // Stops are not put on a constrained model (JointStops does not support one yet).
+  // Stops are not put on a constrained model (simulate/unilaterals.hpp does not support one yet).
   for (const XMLElement* c = root->FirstChildElement("equality"); c != nullptr;
        c = c->NextSiblingElement("equality")) {
     if (c->FirstChildElement() != nullptr) constrained = true;

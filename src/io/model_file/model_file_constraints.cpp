@@ -1,5 +1,6 @@
 // Model files, `constraints:`: loops closed between two bodies, links and wires, rolling and
-// knife-edge contacts, couplers (model/constraint.hpp; docs/model-format.md).
+// knife-edge contacts, couplers, unilateral contacts with the ground (model/constraint.hpp;
+// docs/model-format.md).
 
 #include <algorithm>
 #include <cmath>
@@ -30,6 +31,7 @@ const std::vector<EntryType>& constraint_types() {
       {"rolling", {"body", "shape", "radius", "centre", "axis", "normal", "plane_point"}},
       {"knife_edge", {"body", "point", "direction", "normal"}},
       {"coupler", {"joint_a", "joint_b", "ratio", "offset", "offset_deg"}},
+      {"contact", {"body", "point", "radius", "normal", "plane_point", "restitution"}},
   };
   return types;
 }
@@ -124,6 +126,25 @@ model::Constraint read_constraint(const YamlNode& e, std::string_view type, cons
     c.frame.X_BF = Transform(z_along(axis), e.find_vec3("centre").value_or(Vec3::Zero()));
     if (e.has("normal")) c.plane_normal = read_unit(e.at("normal"));
     c.plane_point = e.find_vec3("plane_point").value_or(Vec3::Zero());
+    return c;
+  }
+  if (type == "contact") {
+    model::Contact c;
+    c.name = name;
+    c.frame.body = moving_body(e.at("body"), ctx, "the world cannot touch the ground: name a body");
+    c.frame.X_BF.p = e.find_vec3("point").value_or(Vec3::Zero());
+    c.radius = e.has("radius") ? e.number("radius", Bound::kNonNegative) : 0.0;
+    if (e.has("normal")) c.plane_normal = read_unit(e.at("normal"));
+    c.plane_point = e.find_vec3("plane_point").value_or(Vec3::Zero());
+    if (e.has("restitution")) {
+      c.restitution = e.number("restitution", Bound::kNonNegative);
+      if (c.restitution > 1.0) {
+        e.at("restitution")
+            .fail(fmt::format("{} is above 1: a contact cannot give back more than the approach "
+                              "speed (0 plastic, 1 elastic)",
+                              c.restitution));
+      }
+    }
     return c;
   }
   if (type == "knife_edge") {

@@ -122,8 +122,10 @@ TEST(ModelExport, EveryExampleThroughMjcfAndBack) {
     try {
       written = write_mjcf(original, q);
     } catch (const InvalidArgument& e) {
-      EXPECT_NE(std::string(e.what()).find("MJCF has no equality that keeps it"), std::string::npos)
-          << e.what();
+      const std::string what = e.what();
+      EXPECT_TRUE(what.find("MJCF has no equality that keeps it") != std::string::npos ||
+                  what.find("does not write contacts to MJCF yet") != std::string::npos)
+          << what;
       refused.insert(path.stem().string());
       continue;
     }
@@ -144,10 +146,11 @@ TEST(ModelExport, EveryExampleThroughMjcfAndBack) {
   }
   std::printf("MJCF and back, %zu examples: bodies %.2e, M %.2e (relative)\n",
               example_models().size() - refused.size(), worst_bodies, worst_mass_matrix);
-  // Rolling, knife edges, distance links and slider loops have no MJCF equality.
-  EXPECT_EQ(refused, (std::set<std::string>{"chaplygin_sleigh", "rod_on_rotating_shaft",
-                                            "rod_on_shaft_spinning_down", "rolling_coin",
-                                            "rolling_disk_on_axle"}));
+  // Rolling, knife edges, distance links and slider loops have no MJCF equality; contacts are
+  // not written yet.
+  EXPECT_EQ(refused, (std::set<std::string>{"bouncing_sphere", "chaplygin_sleigh",
+                                            "rod_on_rotating_shaft", "rod_on_shaft_spinning_down",
+                                            "rolling_coin", "rolling_disk_on_axle"}));
 }
 
 TEST(ModelExport, TreeExamplesThroughUrdfAndBack) {

@@ -26,44 +26,12 @@
 #include "momenta/io/urdf_file.hpp"
 #include "momenta/simulate/simulation.hpp"
 #include "momenta_test/tolerance.hpp"
+#include "unilateral_runs.hpp"
 
 namespace momenta::simulate {
 namespace {
 
-constexpr double kG = 9.81;
-
-model::Model load(const std::string& text) {
-  return io::parse_model_file(text, "stops.yaml", ".").model;
-}
-
-struct StopRun {
-  SimulationSummary summary;
-  TableSink table;
-};
-
-StopRun run_stops(const model::Model& model, const std::string& integrator, double step,
-                  double duration, bool reactions = false) {
-  SimulationOptions options;
-  options.duration = duration;
-  options.step = step;
-  options.integrator = integrator;
-  options.tolerances = {1e-12, 1e-14};
-  options.reactions = reactions;
-  Simulation simulation(model, {}, options);
-  StopRun run;
-  run.summary = simulation.run(run.table);
-  return run;
-}
-
-// A uniform rod, m = 1 kg, l = 1 m, hanging from a pin about y (I_O = m l²/3).
-std::string rod(const std::string& joint_extra, const std::string& more = "") {
-  return "gravity: [0, 0, -9.81]\n"
-         "bodies: [{name: rod, shape: slender_rod, mass: 1.0, length: 1.0, position: [0, 0, "
-         "-0.5]}]\n"
-         "joints:\n"
-         "  - {name: pin, type: revolute, parent: world, child: rod, axis: [0, 1, 0], " +
-         joint_extra + "}\n" + more;
-}
+using namespace unilateral_test;
 
 TEST(JointStops, BouncingBallMatchesTheClosedForm) {
   const double h = 1.0, e = 0.8;
@@ -72,8 +40,9 @@ TEST(JointStops, BouncingBallMatchesTheClosedForm) {
   for (const std::string integrator : {"rk4", "dopri5"}) {
     SCOPED_TRACE(integrator);
     // examples/bouncing_ball.yaml: h = 1 m, e = 0.8 (tests run from the source tree).
-    const StopRun run = run_stops(io::read_model_file("examples/bouncing_ball.yaml").model,
-                                  integrator, 1e-3, 5.0, /*reactions=*/true);
+    const UnilateralRun run =
+        run_unilaterals(io::read_model_file("examples/bouncing_ball.yaml").model, integrator, 1e-3,
+                        5.0, /*reactions=*/true);
     const std::vector<StopEvent>& events = run.summary.stop_events;
     ASSERT_GT(events.size(), 50u);
     double t_expected = t1;
@@ -129,9 +98,9 @@ TEST(JointStops, BouncingBallMatchesTheClosedForm) {
 
 TEST(JointStops, PendulumReboundsOffAStopAndNeverPassesIt) {
   const double e = 0.5, lower = -0.2, theta0 = 1.0;
-  const StopRun run =
-      run_stops(load(rod("q0: 1.0, limits: {lower: -0.2, upper: 2.0, restitution: 0.5}")), "dopri5",
-                1e-2, 3.0);
+  const UnilateralRun run = run_unilaterals(
+      load(hanging_rod("q0: 1.0, limits: {lower: -0.2, upper: 2.0, restitution: 0.5}")), "dopri5",
+      1e-2, 3.0);
   const std::vector<StopEvent>& events = run.summary.stop_events;
   ASSERT_GE(events.size(), 2u);
   // Energy from θ0 to the stop: ½ I_O θ̇² = m g (l/2)(cos θ_s − cos θ0), I_O = 1/3.
@@ -147,9 +116,9 @@ TEST(JointStops, PendulumReboundsOffAStopAndNeverPassesIt) {
 }
 
 TEST(JointStops, ElasticStopsKeepTheEnergy) {
-  const StopRun run =
-      run_stops(load(rod("v0: 3.0, limits: {lower: -0.3, upper: 0.3, restitution: 1}")), "dopri5",
-                1e-2, 10.0);
+  const UnilateralRun run = run_unilaterals(
+      load(hanging_rod("v0: 3.0, limits: {lower: -0.3, upper: 0.3, restitution: 1}")), "dopri5",
+      1e-2, 10.0);
   const std::vector<StopEvent>& events = run.summary.stop_events;
   ASSERT_GT(events.size(), 20u);
   bool upper = false, lower = false;
@@ -172,17 +141,14 @@ TEST(JointStops, HeldOnAStopUntilATorqueRampPullsItOff) {
   const std::string forces =
       "inputs: [{name: pull, type: ramp, slope: 1.0}]\n"
       "forces: [{name: hand, type: torque, body: rod, vector: [0, 1, 0], signal: pull}]\n";
-  const model::Model model = load(rod("q0: 0.3, limits: {lower: 0.3}", forces));
+  const model::Model model = load(hanging_rod("q0: 0.3, limits: {lower: 0.3}", forces));
   const double weight_moment = kG * 0.5 * std::sin(0.3);
   for (const std::string integrator : {"rk4", "dopri5", "bdf"}) {
     SCOPED_TRACE(integrator);
-    const StopRun run = run_stops(model, integrator, 1e-2, 2.0, /*reactions=*/true);
+    const UnilateralRun run = run_unilaterals(model, integrator, 1e-2, 2.0, /*reactions=*/true);
     const std::vector<StopEvent>& events = run.summary.stop_events;
-    ASSERT_EQ(events.size(), 2u);
-    EXPECT_EQ(events[0].kind, StopEventKind::rest);
-    EXPECT_EQ(events[0].time, 0.0);
-    EXPECT_EQ(events[1].kind, StopEventKind::release);
-    EXPECT_NEAR(events[1].time, weight_moment, 1e-13);
+    expect_held_then_let_go(events, weight_moment);
+    if (HasFatalFailure()) return;
     const int angle = run.table.column("pin.angle");
     const int force = run.table.column("pin.stop_force");
     for (const std::vector<double>& row : run.table.rows) {
@@ -218,7 +184,7 @@ TEST(JointStops, ARobotsLimitsAreStops) {
   for (const io::ModelFile& file :
        {io::parse_urdf(urdf, "rod.urdf"), io::parse_mjcf(mjcf, "rod.xml")}) {
     SCOPED_TRACE(file.file);
-    const StopRun run = run_stops(file.model, "dopri5", 1e-2, 2.0, /*reactions=*/true);
+    const UnilateralRun run = run_unilaterals(file.model, "dopri5", 1e-2, 2.0, /*reactions=*/true);
     const std::vector<StopEvent>& events = run.summary.stop_events;
     ASSERT_EQ(events.size(), 1u);
     EXPECT_EQ(events[0].kind, StopEventKind::rest);
@@ -247,7 +213,7 @@ TEST(JointStops, ARobotsLimitsAreStops) {
 TEST(JointStops, JointsRestingOnStopsWithNothingPushingAreLeftAlone) {
   const model::Model model =
       io::read_mjcf_file(test::source_dir() + "/tests/data/models/mjcf/humanoid.xml").model;
-  const StopRun run = run_stops(model, "rk4", 1e-3, 0.2);
+  const UnilateralRun run = run_unilaterals(model, "rk4", 1e-3, 0.2);
   EXPECT_LE(run.summary.stop_events.size(), 6u);
   for (const StopEvent& e : run.summary.stop_events) EXPECT_LT(std::abs(e.impulse), 1e-12);
   for (const model::Joint& j : model.joints()) {
@@ -262,14 +228,7 @@ TEST(JointStops, JointsRestingOnStopsWithNothingPushingAreLeftAlone) {
 }
 
 TEST(JointStops, ModelFileRefusesStopsWhereThereAreNone) {
-  const auto message = [](const std::string& text) {
-    try {
-      load(text);
-    } catch (const std::exception& e) {
-      return std::string(e.what());
-    }
-    return std::string("no error");
-  };
+  const auto message = load_error;
   const std::string head =
       "bodies: [{name: b, shape: sphere, mass: 1, radius: 0.1}]\njoints:\n  - {name: j, parent: "
       "world, child: b, ";

@@ -1,0 +1,168 @@
+#pragma once
+// A run's unilateral constraints: joint stops (model::JointLimits on revolute and prismatic
+// joints, q ≥ lower and q ≤ upper) and contacts (model::Contact: a body's point or sphere on or
+// above the ground plane, gap ≥ 0). Each is open (the mechanism moves freely), striking (an
+// impact) or closed (it holds the mechanism while it pushes).
+//
+// Open: after every step the gap of each (q − lower, upper − q; a contact's distance above the
+// plane) is checked; where it has become negative inside the step, the first time it reaches
+// zero is located on the step's dense output (integrate/step_interpolant.hpp) by TOMS 748 to
+// 1e-14 relative in time, and the run is taken back to that instant (integrate::RunOptions::
+// restarted). There it strikes: a stop by dynamics::stop_impact's generalized impulse on its
+// coordinate, the coordinate set on the stop exactly; a contact by dynamics::restitution_impact's
+// normal impulse at its point (the contacts already closed take their impulses as constraints,
+// and one that would pull is opened and the impact solved again). Either way the whole mechanism
+// takes part and the normal rate after is −e times the rate before (Newton's restitution).
+//
+// Closed: a stop holds its joint (MultibodySystem::hold: prescribed at the stop, zero rate), a
+// contact holds its body on the plane (MultibodySystem::close_contact: its row switched on, the
+// state projected onto it), when the mechanism meets it with nothing to carry it away — after an
+// impact whose rebound flight 2 |v⁺| / |a| (a the acceleration into it, free of it) would be
+// shorter than the rest threshold, a millionth of the run's step (the Zeno rule below), or at the
+// start, on it, at rest or moving into it, and pushed into it. It holds while its force pushes
+// (a lower stop's along +q, a contact's along the plane's normal); where that force would pull,
+// the time it passes zero is located as an impact's is and it is let go there, with no impulse.
+//
+// Zeno. A bouncing sequence with e < 1 has flights shrinking by e each bounce and ends at a finite
+// time; the rule above ends it in resting contact after finitely many bounces. The bounces the rule
+// cuts short last, under the acceleration of that instant, Σ_k 2|v⁺| eᵏ / |a| = 2|v⁺| / (|a| (1 −
+// e)): the time it comes to rest, reported with the hold, is the hold's time plus that tail (a
+// constant acceleration's limit; the tail is shorter than a millionth of a step over 1 − e).
+//
+// A gap that is negative by round-off alone (four ulps of a stop; 1e-12 m for a contact, above
+// the projection's 1e-14) is no crossing. Unilaterals that act again and again at one instant
+// without the run moving on stop the run with an error naming the stop or contact, the time and
+// the state, not a hang.
+//
+// Not yet: stops on a model with constraints (refused by the Simulation), friction, contacts
+// between bodies, and several striking at one instant, which strike one after another in order.
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "momenta/dynamics/data.hpp"
+#include "momenta/integrate/integrator.hpp"
+#include "momenta/integrate/step_interpolant.hpp"
+#include "momenta/model/model.hpp"
+
+namespace momenta::system {
+class MultibodySystem;
+}
+
+namespace momenta::simulate {
+
+/// What a stop or contact did.
+enum class StopEventKind {
+  impact,   ///< struck; the mechanism rebounds
+  rest,     ///< struck (or found closed at the start) and holds
+  release,  ///< let go: the force it needed would pull
+};
+
+/// "impact", "rest" or "release".
+std::string_view stop_event_kind_name(StopEventKind kind);
+
+/// One thing a stop or a contact did in a run.
+struct StopEvent {
+  StopEventKind kind = StopEventKind::impact;
+  std::string joint;    ///< a stop's joint (empty for a contact)
+  std::string contact;  ///< a contact's name (empty for a stop)
+  bool upper = false;   ///< a stop's: its upper (true) or lower one
+  double time = 0.0;    ///< s
+  /// A stop's coordinate rate (rad/s or m/s); a contact's normal speed (m/s, > 0 leaving).
+  double rate_before = 0.0, rate_after = 0.0;
+  /// A stop's generalized impulse on its coordinate (N·m·s or N·s); a contact's normal impulse
+  /// (N·s).
+  double impulse = 0.0;
+  double energy_lost = 0.0;  ///< J: the kinetic energy the impact took (0 at e = 1, a release)
+  /// A rest after a bouncing sequence: the time the cut-short bounces end (the Zeno limit,
+  /// time + 2|v⁺| / (|a| (1 − e))); the time itself otherwise.
+  double rest_time = 0.0;
+};
+
+class Unilaterals {
+ public:
+  /// The stops of `model`'s joints and its contacts (model must outlive this); `step` is the
+  /// run's (fixed, or largest adaptive) step, which sets the rest threshold (a millionth of it).
+  Unilaterals(const model::Model& model, double step);
+
+  bool empty() const { return entries_.empty(); }
+
+  /// At the run's first state: closes those the mechanism starts on, at rest or moving into
+  /// them, and pushed into them (those events are returned). `advanced` is what the integrator
+  /// advances (`system` itself, or its closed loop); `state` may gain the exact stop value.
+  std::vector<StopEvent> start(system::MultibodySystem& system,
+                               integrate::SecondOrderSystem& advanced, integrate::State& state);
+
+  /// After the step `integrator` took from `start` to `end`: whether one acts inside it — one
+  /// the mechanism reaches, or a closed one that would pull. Then `before` is the state at the
+  /// first such instant (a stop's coordinate exactly on it), and act() does what it does.
+  /// Allocates nothing.
+  bool check(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+             const integrate::Integrator& integrator, const integrate::State& start,
+             const integrate::State& end, integrate::State& before);
+
+  /// After check() found one acting: `state` (the state check() set `before` to) becomes the
+  /// state just after — struck (and perhaps held), or let go — and `event` says what happened.
+  /// The caller restarts the integrator from it.
+  void act(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+           integrate::State& state, StopEvent& event);
+
+ private:
+  struct Entry {
+    bool contact = false;  // a contact (constraint `index`), or a stop (on joint `index`)
+    int index = 0;
+    int q = 0, v = 0;    // a stop's coordinate indices
+    double value = 0.0;  // a stop's position (rad or m)
+    double outward = 1;  // a stop's: +1 for a lower stop (left along +q), −1 for an upper one
+    double restitution = 0.0;
+    // A gap this far below zero is round-off, not a crossing, so that a mechanism resting on it
+    // with no force either way is not struck over and over.
+    double slack = 0.0;
+  };
+  const model::Contact& contact_of(const Entry& e) const;
+  // The signed gap of a state (≥ 0 off it; m or rad).
+  double gap(const Entry& e, const integrate::State& state);
+  // Its rate, > 0 leaving (m/s or rad/s).
+  double rate(const Entry& e, const integrate::State& state);
+  // The force a closed one exerts along its outward direction at `state` (evaluates `advanced`).
+  double push(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+              const Entry& e, const integrate::State& state);
+  // Its acceleration into the constraint (> 0 towards it) at `state`, free of it (evaluates
+  // `advanced`).
+  double acceleration_into(integrate::SecondOrderSystem& advanced, const Entry& e,
+                           const integrate::State& state);
+  // What e does at time t, its rates and impulse still to fill.
+  StopEvent event_at(const Entry& e, double t, StopEventKind kind) const;
+  // The first time in (a, b] the gap of e falls below zero on the step's interpolant, given
+  // gap(b) < 0; or a itself when it only goes in from there.
+  double first_contact(const Entry& e, integrate::SecondOrderSystem& advanced, double a, double b,
+                       double gap_a, double gap_b);
+  // The time in (a, b] a closed one's push passes zero, push(a) ≥ 0 > push(b).
+  double first_pull(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+                    const Entry& e, double a, double b, double push_a, double push_b);
+  // Strikes (or closes) e at the state `at` (on it), filling `event`.
+  void strike(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+              const Entry& e, integrate::State& at, StopEvent& event);
+  // A contact's impact: the state just after, its normal impulse returned; closed contacts that
+  // would pull are opened.
+  double contact_impact(system::MultibodySystem& system, const Entry& e, integrate::State& at);
+  void close(system::MultibodySystem& system, const Entry& e, integrate::State& at);
+  void open(system::MultibodySystem& system, const Entry& e, const integrate::State& at);
+
+  const model::Model& model_;
+  double rest_flight_;          // s: a rebound flight shorter than this closes it
+  std::vector<Entry> entries_;  // every finite stop, lower before upper, in joint order; then
+                                // the contacts in constraint order
+  std::vector<char> closed_;    // per entry: 1 where it holds
+  int pending_ = -1;            // the one check() found acting
+  double last_act_ = -std::numeric_limits<double>::infinity();  // when act() last acted
+  int acts_at_last_ = 0;     // how often it acted then: a run that makes no progress stops
+  double start_rate_ = 0.0;  // first_contact: the rate at the step's start
+  integrate::StepInterpolant interpolant_;
+  integrate::State trial_;
+  VecX vdot_, q_, v_;
+  dynamics::Data data_;  // a contact's kinematics
+};
+
+}  // namespace momenta::simulate

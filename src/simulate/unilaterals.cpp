@@ -1,0 +1,368 @@
+#include "momenta/simulate/unilaterals.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "crossing_time.hpp"
+#include "momenta/common/error.hpp"
+#include "momenta/dynamics/impulse.hpp"
+#include "momenta/dynamics/kinematics.hpp"
+#include "momenta/dynamics/point_kinematics.hpp"
+#include "momenta/system/multibody_system.hpp"
+
+namespace momenta::simulate {
+namespace {
+
+// Samples of a step where a joint that starts on a stop is looked for off it: a rebound shorter
+// than a sixteenth of the step is found at its estimated apex, or not at all (then it is below
+// the coordinate's resolution and the stop closes).
+constexpr int kSamples = 16;
+
+// How often the unilaterals may act at one instant before the run is stopped as stalled: each
+// strikes, closes or lets go there once or twice in a real sequence.
+constexpr int kActsAtOneInstant = 64;
+
+// A contact's gap below zero by this much (m, times its radius where that is above 1 m) is
+// round-off: above the constraint projection's 1e-14, far below any motion a run resolves.
+constexpr double kContactSlack = 1e-12;
+
+}  // namespace
+
+std::string_view stop_event_kind_name(StopEventKind kind) {
+  switch (kind) {
+    case StopEventKind::impact:
+      return "impact";
+    case StopEventKind::rest:
+      return "rest";
+    case StopEventKind::release:
+      return "release";
+  }
+  return "";
+}
+
+Unilaterals::Unilaterals(const model::Model& model, double step)
+    : model_(model), rest_flight_(1e-6 * step), data_(model) {
+  for (const model::Joint& j : model.joints()) {
+    if (!j.limits) continue;
+    const model::JointLimits& l = *j.limits;
+    const auto slack = [](double value) {
+      return 4.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(value));
+    };
+    if (std::isfinite(l.lower))
+      entries_.push_back(
+          {false, j.index, j.q_index, j.v_index, l.lower, 1.0, l.restitution, slack(l.lower)});
+    if (std::isfinite(l.upper))
+      entries_.push_back(
+          {false, j.index, j.q_index, j.v_index, l.upper, -1.0, l.restitution, slack(l.upper)});
+  }
+  for (std::size_t k = 0; k < model.constraints().size(); ++k) {
+    const auto* c = std::get_if<model::Contact>(&model.constraints()[k]);
+    if (c == nullptr) continue;
+    entries_.push_back({true, static_cast<int>(k), 0, 0, 0.0, 1.0, c->restitution,
+                        kContactSlack * std::max(1.0, c->radius)});
+  }
+  q_ = VecX::Zero(model.nq());
+  v_ = VecX::Zero(model.nv());
+}
+
+const model::Contact& Unilaterals::contact_of(const Entry& e) const {
+  return std::get<model::Contact>(model_.constraints()[static_cast<std::size_t>(e.index)]);
+}
+
+double Unilaterals::gap(const Entry& e, const integrate::State& state) {
+  if (!e.contact) return e.outward * (state.q[e.q] - e.value);
+  const model::Contact& c = contact_of(e);
+  dynamics::forward_kinematics(model_, data_, state.q.head(model_.nq()));
+  const Vec3 centre = data_.X_WB[c.frame.body_index].apply(c.frame.X_BF.p);
+  return c.plane_normal.dot(centre - c.plane_point) - c.radius;
+}
+
+double Unilaterals::rate(const Entry& e, const integrate::State& state) {
+  if (!e.contact) return e.outward * state.v[e.v];
+  const model::Contact& c = contact_of(e);
+  const int b = c.frame.body_index;
+  dynamics::forward_kinematics(model_, data_, state.q.head(model_.nq()), state.v.head(model_.nv()));
+  const Vec6& V = data_.V_WB_B[b];
+  const Vec3 p = c.frame.X_BF.p;
+  const Vec3 velocity_B = V.tail<3>() + V.head<3>().cross(p);
+  return c.plane_normal.dot(data_.X_WB[b].R * velocity_B);
+}
+
+double Unilaterals::push(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+                         const Entry& e, const integrate::State& state) {
+  vdot_.resize(state.v.size());
+  advanced.acceleration(state.t, state.q, state.v, vdot_);
+  return e.contact ? system.contact_force(e.index) : e.outward * system.stop_force(e.index);
+}
+
+double Unilaterals::acceleration_into(integrate::SecondOrderSystem& advanced, const Entry& e,
+                                      const integrate::State& state) {
+  vdot_.resize(state.v.size());
+  advanced.acceleration(state.t, state.q, state.v, vdot_);
+  if (!e.contact) return -e.outward * vdot_[e.v];
+  const model::Contact& c = contact_of(e);
+  const dynamics::PointKinematics k = dynamics::point_kinematics(
+      model_, data_, state.q.head(model_.nq()), state.v.head(model_.nv()), vdot_.head(model_.nv()),
+      c.frame.body_index, c.frame.X_BF.p);
+  return -c.plane_normal.dot(k.a_WP_W);
+}
+
+StopEvent Unilaterals::event_at(const Entry& e, double t, StopEventKind kind) const {
+  StopEvent event;
+  event.kind = kind;
+  if (e.contact) {
+    event.contact = contact_of(e).name;
+  } else {
+    event.joint = model_.joints()[static_cast<std::size_t>(e.index)].name;
+    event.upper = e.outward < 0.0;
+  }
+  event.time = event.rest_time = t;
+  return event;
+}
+
+double Unilaterals::first_contact(const Entry& e, integrate::SecondOrderSystem& advanced, double a,
+                                  double b, double gap_a, double gap_b) {
+  const auto f = [&](double t) {
+    interpolant_.evaluate(advanced, t, trial_);
+    return gap(e, trial_);
+  };
+  if (gap_a > 0.0) return detail::crossing_time(f, a, b, gap_a, gap_b);
+  // On it at a (it struck or let go there): off it first, then back. The highest point of a
+  // short rebound is estimated from the gap's parabola through its rate at a and its value at b;
+  // the samples of the step find a longer one.
+  const double span = b - a;
+  const double rate_a = start_rate_;
+  const double curvature = 2.0 * (gap_b - rate_a * span) / (span * span);
+  const double apex = curvature < 0.0 && rate_a > 0.0 ? -rate_a / curvature : span;
+  double last_off = a, f_off = 0.0;
+  bool apex_tried = !(apex < span);
+  for (int k = 1; k <= kSamples; ++k) {
+    double t = k == kSamples ? b : a + span * k / kSamples;
+    if (!apex_tried && t - a > apex) {
+      t = a + apex;
+      apex_tried = true;
+      --k;
+    }
+    const double g = t == b ? gap_b : f(t);
+    if (g > 0.0) {
+      last_off = t;
+      f_off = g;
+    } else if (f_off > 0.0) {
+      return detail::crossing_time(f, last_off, t, f_off, g);
+    }
+  }
+  return a;  // it never leaves that the interpolant can see: it meets it again at once
+}
+
+double Unilaterals::first_pull(system::MultibodySystem& system,
+                               integrate::SecondOrderSystem& advanced, const Entry& e, double a,
+                               double b, double push_a, double push_b) {
+  if (!(push_a > 0.0)) return a;
+  const auto f = [&](double t) {
+    interpolant_.evaluate(advanced, t, trial_);
+    return push(system, advanced, e, trial_);
+  };
+  return detail::crossing_time(f, a, b, push_a, push_b);
+}
+
+void Unilaterals::close(system::MultibodySystem& system, const Entry& e, integrate::State& at) {
+  closed_[static_cast<std::size_t>(&e - entries_.data())] = 1;
+  if (!e.contact) {
+    at.q[e.q] = e.value;
+    at.v[e.v] = 0.0;
+    system.hold(e.index, e.value);
+    return;
+  }
+  // On the plane with no normal speed: the row switched on, the state projected onto it.
+  const int nq = model_.nq(), nv = model_.nv();
+  q_ = at.q.head(nq);
+  v_ = at.v.head(nv);
+  system.close_contact(e.index, q_);
+  system.project(at.t, q_, v_);
+  at.q.head(nq) = q_;
+  at.v.head(nv) = v_;
+}
+
+void Unilaterals::open(system::MultibodySystem& system, const Entry& e,
+                       const integrate::State& at) {
+  closed_[static_cast<std::size_t>(&e - entries_.data())] = 0;
+  if (e.contact) {
+    system.close_contact(e.index, at.q.head(model_.nq()), false);
+  } else {
+    system.release(e.index);
+  }
+}
+
+double Unilaterals::contact_impact(system::MultibodySystem& system, const Entry& e,
+                                   integrate::State& at) {
+  const model::Contact& c = contact_of(e);
+  const int nq = model_.nq(), nv = model_.nv();
+  const int b = c.frame.body_index;
+  dynamics::forward_kinematics(model_, data_, at.q.head(nq));
+  const Transform& X_WB = data_.X_WB[b];
+  dynamics::PointContact touch;
+  touch.body_b = b;
+  touch.p_BoPb_B = c.frame.X_BF.p - c.radius * X_WB.R.transpose() * c.plane_normal;
+  touch.p_AoPa_A = X_WB.apply(touch.p_BoPb_B);
+  touch.normal_W = c.plane_normal;
+  // The contacts closed now take their impulses as constraints; one that would pull (a negative
+  // impulse) lets go, and the impact is solved again without it.
+  const system::ConstraintSolver& solver = *system.constraints();
+  for (;;) {
+    const dynamics::Impact impact = dynamics::restitution_impact(
+        model_, at.q.head(nq), at.v.head(nv), touch, e.restitution, solver.rows().enabled);
+    const Entry* pulling = nullptr;
+    double least = 0.0;
+    for (const Entry& other : entries_) {
+      if (!other.contact || !closed_[static_cast<std::size_t>(&other - entries_.data())]) continue;
+      const double P = impact.motion.constraint_impulses[solver.rows().first_row[other.index]];
+      if (P < least) {
+        least = P;
+        pulling = &other;
+      }
+    }
+    if (pulling == nullptr) {
+      at.v.head(nv) = impact.motion.v_after;
+      return impact.normal_impulse;
+    }
+    open(system, *pulling, at);
+  }
+}
+
+void Unilaterals::strike(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+                         const Entry& e, integrate::State& at, StopEvent& event) {
+  const int nq = model_.nq(), nv = model_.nv();
+  if (!e.contact) at.q[e.q] = e.value;
+  event = event_at(e, at.t, StopEventKind::impact);
+  // A stop reports its coordinate's rate as it is; a contact its normal speed.
+  const auto reported_rate = [&] { return e.contact ? rate(e, at) : at.v[e.v]; };
+  event.rate_before = reported_rate();
+  const double approach = rate(e, at);
+  const double kinetic_before = system.energy(at.q.head(nq), at.v.head(nv)).kinetic;
+  if (approach < 0.0) {  // approaching: it strikes
+    if (e.contact) {
+      event.impulse = contact_impact(system, e, at);
+    } else {
+      const dynamics::StopImpact impact =
+          dynamics::stop_impact(model_, at.q.head(nq), at.v.head(nv), e.v, e.restitution);
+      at.v.head(nv) = impact.motion.v_after;
+      event.impulse = impact.impulse;
+    }
+  }
+  // Carried away, or held: the rebound's flight under the acceleration into it; one found back
+  // on it at once, leaving it (a flight the step cannot resolve), is held too.
+  const bool leaving = approach > 0.0;
+  const double rebound = rate(e, at);
+  const double into = acceleration_into(advanced, e, at);
+  if (into > 0.0 && (leaving || 2.0 * rebound / into < rest_flight_)) {
+    close(system, e, at);
+    // Closed, it must push: where its force does not (pushed neither way to within round-off),
+    // it stays open.
+    if (push(system, advanced, e, at) > 0.0) {
+      event.kind = StopEventKind::rest;
+      if (rebound > 0.0 && e.restitution < 1.0) {
+        event.rest_time += 2.0 * rebound / (into * (1.0 - e.restitution));
+      }
+    } else {
+      open(system, e, at);
+    }
+  }
+  event.rate_after = reported_rate();
+  event.energy_lost = kinetic_before - system.energy(at.q.head(nq), at.v.head(nv)).kinetic;
+}
+
+std::vector<StopEvent> Unilaterals::start(system::MultibodySystem& system,
+                                          integrate::SecondOrderSystem& advanced,
+                                          integrate::State& state) {
+  interpolant_.resize(static_cast<int>(state.q.size()), static_cast<int>(state.v.size()));
+  trial_ = state;
+  closed_.assign(entries_.size(), 0);
+  std::vector<StopEvent> events;
+  for (const Entry& e : entries_) {
+    if (gap(e, state) > e.slack || rate(e, state) > 0.0) continue;
+    StopEvent event;
+    strike(system, advanced, e, state, event);
+    if (event.kind == StopEventKind::rest || event.impulse != 0.0) events.push_back(event);
+  }
+  return events;
+}
+
+bool Unilaterals::check(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+                        const integrate::Integrator& integrator, const integrate::State& start,
+                        const integrate::State& end, integrate::State& before) {
+  // The first to act in the step: one that closes on the mechanism, or a closed one that would
+  // pull.
+  double first = std::numeric_limits<double>::infinity();
+  const Entry* acting = nullptr;
+  bool interpolant_set = false;
+  const auto set_interpolant = [&] {
+    if (interpolant_set) return;
+    interpolant_.set(advanced, integrator, start, end);
+    interpolant_set = true;
+  };
+  for (std::size_t k = 0; k < entries_.size(); ++k) {
+    const Entry& e = entries_[k];
+    double t = first;
+    if (closed_[k]) {
+      const double push_end = push(system, advanced, e, end);
+      if (!(push_end < 0.0)) continue;
+      const double push_start = push(system, advanced, e, start);
+      set_interpolant();
+      t = first_pull(system, advanced, e, start.t, end.t, push_start, push_end);
+    } else {
+      if (!e.contact && system.held(e.index)) continue;  // its other stop holds the joint
+      const double gap_end = gap(e, end);
+      if (!(gap_end < -e.slack)) continue;
+      set_interpolant();
+      start_rate_ = rate(e, start);
+      t = first_contact(e, advanced, start.t, end.t, gap(e, start), gap_end);
+    }
+    if (t < first) {
+      first = t;
+      acting = &e;
+    }
+  }
+  if (acting == nullptr) return false;
+  interpolant_.evaluate(advanced, first, before);
+  if (!acting->contact) before.q[acting->q] = acting->value;
+  pending_ = static_cast<int>(acting - entries_.data());
+  return true;
+}
+
+void Unilaterals::act(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+                      integrate::State& state, StopEvent& event) {
+  const std::size_t k = static_cast<std::size_t>(pending_);
+  const Entry& e = entries_[k];
+  pending_ = -1;
+  acts_at_last_ = state.t == last_act_ ? acts_at_last_ + 1 : 1;
+  last_act_ = state.t;
+  if (acts_at_last_ > kActsAtOneInstant) {
+    const std::string what =
+        e.contact ? fmt::format("contact '{}'", contact_of(e).name)
+                  : fmt::format("joint '{}''s {} stop",
+                                model_.joints()[static_cast<std::size_t>(e.index)].name,
+                                e.outward > 0.0 ? "lower" : "upper");
+    throw NumericalError(fmt::format(
+        "the unilaterals make no progress at t = {:.12g} s: {} has acted {} times there (its gap "
+        "{:.17g}, rate {:.3g}) without the run moving on — it is pushed neither onto its "
+        "constraint nor off it to within round-off. Move the limit or the plane, or give the "
+        "mechanism a little damping or load",
+        state.t, what, kActsAtOneInstant, gap(e, state), rate(e, state)));
+  }
+  if (!closed_[k]) {
+    strike(system, advanced, e, state, event);
+    return;
+  }
+  open(system, e, state);
+  if (!e.contact) {
+    state.q[e.q] = e.value;
+    state.v[e.v] = 0.0;
+  }
+  event = event_at(e, state.t, StopEventKind::release);
+}
+
+}  // namespace momenta::simulate
