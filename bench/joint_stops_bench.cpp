@@ -2,7 +2,9 @@
 // joint's lower stop, e = 1) bounces every 2 √(2h/g) = 90.3 ms; 90.3 s of it is 1 000 impacts,
 // each located on the step's dense output (TOMS 748), the run taken back there and restarted.
 // Beside it the same ball without the floor, falling for the same 90.3 s: what the stops cost over
-// the steps themselves. rk4 at h = 1 ms and dopri5 (rtol 1e-10, atol 1e-12, largest step 10 ms).
+// the steps themselves. The same again as a free body (6 speeds) on a floor that is a contact
+// (model::Contact: the constraint solver's row, off while the ball flies), beside the free body
+// falling. rk4 at h = 1 ms and dopri5 (rtol 1e-10, atol 1e-12, largest step 10 ms).
 // Counters: the run's steps, evaluations and impacts; the wall time is the benchmark's.
 //
 // Run: build/bench/joint_stops_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only
@@ -29,18 +31,32 @@ class Discard final : public simulate::RowSink {
   void row(std::span<const double>) override {}
 };
 
-model::Model ball(bool floor) {
-  const std::string text =
+// The ball on a vertical slide (its floor a stop), or free (its floor a contact).
+model::Model ball(bool free, bool floor) {
+  std::string text =
       "gravity: [0, 0, -9.81]\n"
       "bodies: [{name: ball, shape: sphere, mass: 0.1, radius: 0.005}]\n"
-      "joints:\n"
-      "  - {name: drop, type: prismatic, parent: world, child: ball, axis: [0, 0, 1], q0: 0.01" +
-      std::string(floor ? ", limits: {lower: 0.0, restitution: 1.0}" : "") + "}\n";
+      "joints:\n";
+  if (!free) {
+    text +=
+        "  - {name: drop, type: prismatic, parent: world, child: ball, axis: [0, 0, 1], q0: "
+        "0.01" +
+        std::string(floor ? ", limits: {lower: 0.0, restitution: 1.0}" : "") + "}\n";
+  } else {
+    text +=
+        "  - {name: free, type: free, parent: world, child: ball, q0: [0, 0, 0.015, 1, 0, 0, "
+        "0]}\n";
+    if (floor) {
+      text +=
+          "constraints: [{name: floor, type: contact, body: ball, radius: 0.005, restitution: "
+          "1}]\n";
+    }
+  }
   return io::parse_model_file(text, "ball.yaml", ".").model;
 }
 
-void BM_Bounces(benchmark::State& bench, const std::string& integrator, bool floor) {
-  const model::Model model = ball(floor);
+void BM_Bounces(benchmark::State& bench, const std::string& integrator, bool free, bool floor) {
+  const model::Model model = ball(free, floor);
   simulate::SimulationOptions options;
   options.duration = kDuration;
   options.integrator = integrator;
@@ -59,12 +75,21 @@ void BM_Bounces(benchmark::State& bench, const std::string& integrator, bool flo
   bench.counters["impacts"] = static_cast<double>(summary.stop_events.size());
 }
 
-BENCHMARK_CAPTURE(BM_Bounces, rk4_floor, std::string("rk4"), true)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Bounces, rk4_no_floor, std::string("rk4"), false)
+BENCHMARK_CAPTURE(BM_Bounces, rk4_floor, std::string("rk4"), false, true)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Bounces, dopri5_floor, std::string("dopri5"), true)
+BENCHMARK_CAPTURE(BM_Bounces, rk4_no_floor, std::string("rk4"), false, false)
     ->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_Bounces, dopri5_no_floor, std::string("dopri5"), false)
+BENCHMARK_CAPTURE(BM_Bounces, dopri5_floor, std::string("dopri5"), false, true)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Bounces, dopri5_no_floor, std::string("dopri5"), false, false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Bounces, rk4_free_contact, std::string("rk4"), true, true)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Bounces, rk4_free_no_floor, std::string("rk4"), true, false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Bounces, dopri5_free_contact, std::string("dopri5"), true, true)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Bounces, dopri5_free_no_floor, std::string("dopri5"), true, false)
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

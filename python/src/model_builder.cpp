@@ -480,6 +480,7 @@ left out; docs/contacts.md).)doc")
           "add_contact",
           [](Builder& b, std::string name, const std::string& body, const py::object& point,
              double radius, const py::object& normal, const py::object& plane_point,
+             std::string other_body, const py::object& other_point, double other_radius,
              double restitution) -> Builder& {
             model::Contact c;
             c.name = std::move(name);
@@ -488,6 +489,9 @@ left out; docs/contacts.md).)doc")
             c.radius = radius;
             c.plane_normal = vec3_arg(normal, "normal");
             c.plane_point = vec3_arg(plane_point, "plane_point");
+            c.other.body = std::move(other_body);
+            c.other.X_BF.p = vec3_arg(other_point, "other_point");
+            c.other_radius = other_radius;
             c.restitution = restitution;
             b.builder.add_constraint(std::move(c));
             return b;
@@ -495,11 +499,14 @@ left out; docs/contacts.md).)doc")
           py::arg("name"), py::kw_only(), py::arg("body"),
           py::arg("point") = py::make_tuple(0, 0, 0), py::arg("radius") = 0.0,
           py::arg("normal") = py::make_tuple(0, 0, 1),
-          py::arg("plane_point") = py::make_tuple(0, 0, 0), py::arg("restitution") = 0.0,
+          py::arg("plane_point") = py::make_tuple(0, 0, 0), py::arg("other_body") = "",
+          py::arg("other_point") = py::make_tuple(0, 0, 0), py::arg("other_radius") = 0.0,
+          py::arg("restitution") = 0.0,
           "A unilateral, frictionless contact of a body's point (radius 0) or sphere (centre "
           "`point` in the body, m) with the ground plane through plane_point with unit `normal` "
-          "(world): impacts with Newton's restitution e ∈ [0, 1], resting contact while the "
-          "plane pushes (docs/contacts.md).")
+          "(world), or with other_body's sphere (centre other_point, radius other_radius): "
+          "impacts with Newton's restitution e ∈ [0, 1], resting contact while it pushes "
+          "(docs/contacts.md).")
       .def(
           "add_signal",
           [](Builder& b, const std::string& name, const std::string& type,

@@ -176,14 +176,33 @@ void rolling_rows(const model::RollingContact& c, const FrameMotionOf<S>& mb, Ro
 }
 
 // A contact of the body of mb with the ground plane: the gap n · (centre − plane point) − radius,
-// its force along n at the sphere's lowest point (the point itself for radius 0).
+// its force along n at the sphere's lowest point (the point itself for radius 0). With another
+// body's sphere (ma its centre): the gap |c_b − c_a| − r_a − r_b, its force along the line of
+// centres e at the contact point c_a + r_a e (on b; −e on a), whose rate along e is that of the
+// centres' distance — the spheres' spins move their material points there across e only.
 template <class S, class Row>
-void contact_rows(const model::Contact& c, const FrameMotionOf<S>& mb, Row&& row) {
-  const Vec3Of<S> n = c.plane_normal.cast<S>();
-  const Vec3Of<S> contact = mb.p - c.radius * n;
-  const Vec3Of<S> contact_rate = mb.point_velocity(mb.p);  // n · (ω × n) = 0: the centre's
-  row(n.dot(contact - c.plane_point.cast<S>()), true, force_at<S>(contact, n),
-      force_rate<S>(contact, contact_rate, n, Vec3Of<S>::Zero()));
+void contact_rows(const model::Contact& c, const FrameMotionOf<S>& ma, const FrameMotionOf<S>& mb,
+                  Row&& row) {
+  if (c.on_ground()) {
+    const Vec3Of<S> n = c.plane_normal.cast<S>();
+    const Vec3Of<S> contact = mb.p - c.radius * n;
+    const Vec3Of<S> contact_rate = mb.point_velocity(mb.p);  // n · (ω × n) = 0: the centre's
+    row(n.dot(contact - c.plane_point.cast<S>()), true, force_at<S>(contact, n),
+        force_rate<S>(contact, contact_rate, n, Vec3Of<S>::Zero()));
+    return;
+  }
+  const Vec3Of<S> d = mb.p - ma.p;
+  const S length = d.norm();
+  if (!(value_of(length) > kDegenerate)) {
+    degenerate(c.name, "the spheres' centres coincide: no line of centres to push along");
+  }
+  const Vec3Of<S> e = d / length;
+  const Vec3Of<S> ca_rate = ma.point_velocity(ma.p);
+  const Vec3Of<S> e_rate = unit_rate<S>(e, mb.point_velocity(mb.p) - ca_rate, length);
+  const Vec3Of<S> contact = ma.p + c.other_radius * e;
+  const Vec3Of<S> contact_rate = ca_rate + c.other_radius * e_rate;
+  row(length - (c.radius + c.other_radius), true, force_at<S>(contact, e),
+      force_rate<S>(contact, contact_rate, e, e_rate));
 }
 
 // Knife edge on the body of mb: no velocity of the point across the blade, s = n × x_B / |…|.
@@ -219,7 +238,7 @@ inline JoinedFrames joined_frames(const model::Constraint& constraint) {
   if (const auto* c = std::get_if<model::RollingContact>(&constraint))
     return {0, Transform::identity(), c->frame.body_index, c->frame.X_BF};
   if (const auto* c = std::get_if<model::Contact>(&constraint))
-    return {0, Transform::identity(), c->frame.body_index, c->frame.X_BF};
+    return {c->other.body_index, c->other.X_BF, c->frame.body_index, c->frame.X_BF};
   const auto& c = std::get<model::KnifeEdge>(constraint);
   return {0, Transform::identity(), c.frame.body_index, c.frame.X_BF};
 }
@@ -235,7 +254,7 @@ void wrench_rows(const model::Constraint& constraint, const FrameMotionOf<S>& ma
   } else if (const auto* contact = std::get_if<model::RollingContact>(&constraint)) {
     rolling_rows(*contact, mb, row);
   } else if (const auto* touch = std::get_if<model::Contact>(&constraint)) {
-    contact_rows(*touch, mb, row);
+    contact_rows(*touch, ma, mb, row);
   } else {
     knife_edge_rows(std::get<model::KnifeEdge>(constraint), mb, row);
   }

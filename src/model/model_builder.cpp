@@ -674,9 +674,22 @@ class ModelAssembler {
     MOMENTA_REQUIRE(c.radius >= 0.0 && std::isfinite(c.radius),
                     "{}: radius must be zero (a point) or positive and finite, got {} m", who,
                     c.radius);
-    check_plane_normal(c.plane_normal, who);
-    MOMENTA_REQUIRE(c.plane_point.allFinite(), "{}: plane point {} is not finite", who,
-                    vec_str(c.plane_point));
+    if (c.on_ground()) {
+      c.other.body_index = 0;
+      check_plane_normal(c.plane_normal, who);
+      MOMENTA_REQUIRE(c.plane_point.allFinite(), "{}: plane point {} is not finite", who,
+                      vec_str(c.plane_point));
+    } else {
+      resolve_frame(c.other, who);
+      MOMENTA_REQUIRE(c.other.body_index != c.frame.body_index,
+                      "{}: both spheres are on body '{}'; a contact is between two bodies", who,
+                      c.frame.body);
+      MOMENTA_REQUIRE(c.other_radius >= 0.0 && std::isfinite(c.other_radius),
+                      "{}: other_radius must be zero or positive and finite, got {} m", who,
+                      c.other_radius);
+      MOMENTA_REQUIRE(c.radius + c.other_radius > 0.0,
+                      "{}: two points cannot touch; give either sphere a radius", who);
+    }
     MOMENTA_REQUIRE(c.restitution >= 0.0 && c.restitution <= 1.0,
                     "{}: restitution must be in [0, 1] (0 plastic, 1 elastic), got {}", who,
                     c.restitution);

@@ -73,23 +73,51 @@ const model::Contact& Unilaterals::contact_of(const Entry& e) const {
   return std::get<model::Contact>(model_.constraints()[static_cast<std::size_t>(e.index)]);
 }
 
+namespace {
+
+// A contact's two centres in W, from data's poses: body b's (the point or sphere) and body a's
+// sphere (a plane's point for the ground, unused).
+struct Centres {
+  Vec3 a = Vec3::Zero(), b = Vec3::Zero();
+};
+
+Centres centres(const model::Contact& c, const dynamics::Data& data) {
+  Centres out;
+  out.b = data.X_WB[c.frame.body_index].apply(c.frame.X_BF.p);
+  if (!c.on_ground()) out.a = data.X_WB[c.other.body_index].apply(c.other.X_BF.p);
+  return out;
+}
+
+// The velocity in W of the point p_B of body b, from data's velocities.
+Vec3 point_velocity(const dynamics::Data& data, int b, const Vec3& p_B) {
+  const Vec6& V = data.V_WB_B[b];
+  return data.X_WB[b].R * (V.tail<3>() + V.head<3>().cross(p_B));
+}
+
+}  // namespace
+
+Vec3 Unilaterals::contact_normal(const model::Contact& c) const {
+  if (c.on_ground()) return c.plane_normal;
+  const Centres x = centres(c, data_);
+  return (x.b - x.a).normalized();
+}
+
 double Unilaterals::gap(const Entry& e, const integrate::State& state) {
   if (!e.contact) return e.outward * (state.q[e.q] - e.value);
   const model::Contact& c = contact_of(e);
   dynamics::forward_kinematics(model_, data_, state.q.head(model_.nq()));
-  const Vec3 centre = data_.X_WB[c.frame.body_index].apply(c.frame.X_BF.p);
-  return c.plane_normal.dot(centre - c.plane_point) - c.radius;
+  const Centres x = centres(c, data_);
+  if (c.on_ground()) return c.plane_normal.dot(x.b - c.plane_point) - c.radius;
+  return (x.b - x.a).norm() - c.radius - c.other_radius;
 }
 
 double Unilaterals::rate(const Entry& e, const integrate::State& state) {
   if (!e.contact) return e.outward * state.v[e.v];
   const model::Contact& c = contact_of(e);
-  const int b = c.frame.body_index;
   dynamics::forward_kinematics(model_, data_, state.q.head(model_.nq()), state.v.head(model_.nv()));
-  const Vec6& V = data_.V_WB_B[b];
-  const Vec3 p = c.frame.X_BF.p;
-  const Vec3 velocity_B = V.tail<3>() + V.head<3>().cross(p);
-  return c.plane_normal.dot(data_.X_WB[b].R * velocity_B);
+  Vec3 relative = point_velocity(data_, c.frame.body_index, c.frame.X_BF.p);
+  if (!c.on_ground()) relative -= point_velocity(data_, c.other.body_index, c.other.X_BF.p);
+  return contact_normal(c).dot(relative);
 }
 
 double Unilaterals::push(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
@@ -104,11 +132,22 @@ double Unilaterals::acceleration_into(integrate::SecondOrderSystem& advanced, co
   vdot_.resize(state.v.size());
   advanced.acceleration(state.t, state.q, state.v, vdot_);
   if (!e.contact) return -e.outward * vdot_[e.v];
+  // The second rate of the gap: n · a for the ground; for two spheres that of |c_b − c_a|,
+  // n · a_rel + (|v_rel|² − (n · v_rel)²) / |c_b − c_a|.
   const model::Contact& c = contact_of(e);
-  const dynamics::PointKinematics k = dynamics::point_kinematics(
-      model_, data_, state.q.head(model_.nq()), state.v.head(model_.nv()), vdot_.head(model_.nv()),
-      c.frame.body_index, c.frame.X_BF.p);
-  return -c.plane_normal.dot(k.a_WP_W);
+  const auto centre = [&](int body, const Vec3& p) {
+    return dynamics::point_kinematics(model_, data_, state.q.head(model_.nq()),
+                                      state.v.head(model_.nv()), vdot_.head(model_.nv()), body, p);
+  };
+  const dynamics::PointKinematics b = centre(c.frame.body_index, c.frame.X_BF.p);
+  if (c.on_ground()) return -c.plane_normal.dot(b.a_WP_W);
+  const dynamics::PointKinematics a = centre(c.other.body_index, c.other.X_BF.p);
+  const Vec3 d = b.p_WoP_W - a.p_WoP_W;
+  const double length = d.norm();
+  const Vec3 n = d / length;
+  const Vec3 v = b.v_WP_W - a.v_WP_W;
+  const double along = n.dot(v);
+  return -(n.dot(b.a_WP_W - a.a_WP_W) + (v.squaredNorm() - along * along) / length);
 }
 
 StopEvent Unilaterals::event_at(const Entry& e, double t, StopEventKind kind) const {
@@ -201,14 +240,21 @@ double Unilaterals::contact_impact(system::MultibodySystem& system, const Entry&
                                    integrate::State& at) {
   const model::Contact& c = contact_of(e);
   const int nq = model_.nq(), nv = model_.nv();
-  const int b = c.frame.body_index;
   dynamics::forward_kinematics(model_, data_, at.q.head(nq));
-  const Transform& X_WB = data_.X_WB[b];
+  // The contact point: the sphere's point nearest the plane, or on the line of centres.
   dynamics::PointContact touch;
-  touch.body_b = b;
-  touch.p_BoPb_B = c.frame.X_BF.p - c.radius * X_WB.R.transpose() * c.plane_normal;
-  touch.p_AoPa_A = X_WB.apply(touch.p_BoPb_B);
-  touch.normal_W = c.plane_normal;
+  touch.normal_W = contact_normal(c);
+  const Centres x = centres(c, data_);
+  const Vec3 point = c.on_ground() ? Vec3(x.b - c.radius * touch.normal_W)
+                                   : Vec3(x.a + c.other_radius * touch.normal_W);
+  touch.body_b = c.frame.body_index;
+  const auto in_body = [&](int body) {
+    const Transform& X = data_.X_WB[body];
+    return Vec3(X.R.transpose() * (point - X.p));
+  };
+  touch.p_BoPb_B = in_body(touch.body_b);
+  touch.body_a = c.other.body_index;
+  touch.p_AoPa_A = touch.body_a == 0 ? point : in_body(touch.body_a);
   // The contacts closed now take their impulses as constraints; one that would pull (a negative
   // impulse) lets go, and the impact is solved again without it.
   const system::ConstraintSolver& solver = *system.constraints();

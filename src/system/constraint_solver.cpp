@@ -62,6 +62,7 @@ ConstraintSolver::ConstraintSolver(const model::Model& model)
   zero_ = VecX::Zero(model.nv());
   if (m > 0) iterate_data_ = std::make_unique<dynamics::Data>(model);
   all_rows_.assign(m, 1);
+  rows_on_ = static_cast<int>(std::count(rows_.enabled.begin(), rows_.enabled.end(), 1));
   position_rows_.assign(rows_.holonomic.begin(), rows_.holonomic.end());
   if (m > 0) {
     dynamics::Data data(model);
@@ -134,6 +135,7 @@ void ConstraintSolver::find_redundant_rows(dynamics::Data& data, VecRef q) {
 void ConstraintSolver::enable_row(dynamics::Data& data, VecRef q, int row, bool on) {
   if (rows_.enabled[row] == static_cast<char>(on)) return;
   rows_.enabled[row] = on ? 1 : 0;
+  rows_on_ += on ? 1 : -1;
   if (!on) lambda_[row] = 0.0;
   find_redundant_rows(data, q);
 }

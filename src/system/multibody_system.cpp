@@ -138,8 +138,10 @@ int MultibodySystem::nq() const { return model_.nq(); }
 int MultibodySystem::nv() const { return model_.nv(); }
 
 const VecX& MultibodySystem::compute(double t, const VecX& q, const VecX& v, model::Limit limit) {
-  free_dynamics(t, q, v, limit, constraints_ && constraints_->finishes_forward_dynamics());
-  if (constraints_) {
+  // Every row off (a model whose only constraints are open contacts): the free dynamics.
+  const bool constrained = constraints_ && constraints_->rows_on() > 0;
+  free_dynamics(t, q, v, limit, constrained && constraints_->finishes_forward_dynamics());
+  if (constrained) {
     if (!constraints_->correct_accelerations(data_, q_, data_.vdot)) {
       accelerations_at_singular_configuration(t, limit);
     }
@@ -232,7 +234,7 @@ void MultibodySystem::accelerations_at_singular_configuration(double t, model::L
 }
 
 bool MultibodySystem::project(double t, VecX& q, VecX& v) {
-  if (!constraints_) return false;
+  if (!constraints_ || constraints_->rows_on() == 0) return false;
   apply_prescribed_motion(t, q, v);
   return constraints_->project(t, data_, q, v);
 }

@@ -307,6 +307,37 @@ test('bouncing ball: its impacts ticked on the time axis and listed in the summa
   await r.page.close();
 });
 
+// Newton's cradle (contacts between balls, e = 1): its eight impacts, in pairs at one instant, each
+// a tick and a row of the summary's list — open, as there are few — named by its contact, the
+// rates the normal speed in m/s.
+test('newtons cradle: its contacts ticked and listed', async () => {
+  const r = await checkSimulationPage('newtons_cradle', path.join(examples, 'newtons_cradle.yaml'));
+  const summary = await r.page.evaluate(() => window.momentaReport.summary());
+  const stops = summary.stops;
+  assert.equal(stops.length, 8);
+  assert.deepEqual(stops.slice(0, 2).map((s) => s.contact), ['touch12', 'touch23']);
+  assert.equal(stops[0].time, stops[1].time);
+  assert.equal(stops[0].rate_unit, 'm/s');
+  assert.equal(stops[0].impulse_unit, 'N·s');
+  await r.page.evaluate(() => window.momentaReport.drawAllCharts());
+  const first = await r.page.evaluate(() => {
+    const shown = [...document.querySelectorAll('#plots .plot:first-child .time-mark')].filter((t) => t.style.display !== 'none');
+    return { count: shown.length, title: shown[0].title };
+  });
+  assert.equal(first.count, 8);
+  assert.match(first.title, /^contact touch12: impact at t = 0\.360248 s, normal speed -1\.096 → 1\.096 m\/s, impulse 0\.1096 N·s, 0\.00 J lost$/);
+  const listed = await r.page.evaluate(() => {
+    const details = document.querySelector('#summary details.stops');
+    return { open: details.open, text: details.innerText };
+  });
+  assert.ok(listed.open);
+  assert.match(listed.text, /Stops and contacts: 8 entries, 8 impacts/);
+  assert.match(listed.text, /0\.360247555493\t\tcontact touch12\timpact\t-1\.09586 m\/s\t1\.09586 m\/s\t0\.109586 N·s\t/);
+  await (await r.page.$('#summary')).screenshot({ path: path.join(artifacts, 'newtons_cradle-contacts.png') });
+  await (await r.page.$('#plots .plot')).screenshot({ path: path.join(artifacts, 'newtons_cradle-ticks.png') });
+  await r.page.close();
+});
+
 // The display rule in the 3-D view: a car on a road never turns, so ω and H have no arrow and
 // no scale (the legend said "ω: 1 m = 7.69e-34 rad/s" of round-off before); a swinging rod's
 // have both (a point mass's H about its centre of mass is 0: no arrow either).

@@ -38,7 +38,7 @@ export function timeMarks(summary) {
   const stops = (summary.stops ?? []).map((s) => ({
     time: s.time, kind: s.kind,
     text: `${s.contact ? `contact ${s.contact}` : `${s.joint} ${s.stop} stop`}: ${s.kind === 'impact' ? 'impact' : s.kind === 'rest' ? `holds the ${s.contact ? 'body' : 'joint'}` : `lets the ${s.contact ? 'body' : 'joint'} go`} at t = ${s.time.toPrecision(6)} s`
-      + (s.kind === 'release' ? '' : `, rate ${s.rate_before.toPrecision(4)} → ${s.rate_after.toPrecision(4)} ${s.rate_unit}, impulse ${s.impulse.toPrecision(4)} ${s.impulse_unit}, ${s.energy_lost.toPrecision(3)} J lost`),
+      + (s.kind === 'release' ? '' : `, ${s.contact ? 'normal speed' : 'rate'} ${s.rate_before.toPrecision(4)} → ${s.rate_after.toPrecision(4)} ${s.rate_unit}, impulse ${s.impulse.toPrecision(4)} ${s.impulse_unit}, ${s.energy_lost.toPrecision(3)} J lost`),
   }));
   const events = (summary.events ?? []).map((e) => ({
     time: e.time, kind: 'event', text: `event ${e.name} (${e.condition}) at t = ${e.time.toPrecision(6)} s: ${e.action}`,

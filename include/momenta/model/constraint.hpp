@@ -20,7 +20,8 @@
 // | rolling     | 3    | 1             | the body's contact point with a plane has no velocity   |
 // | knife_edge  | 1    | 0             | a body point does not slide across its blade            |
 // | coupler     | 1    | 1             | q_a = ratio · q_b + offset between two 1-dof joints    |
-// | contact     | 1    | 1             | a point or sphere stays on or above the ground plane   |
+// | contact     | 1    | 1             | a point or sphere stays on or above the ground plane,  |
+// |             |      |               | or outside another body's sphere                       |
 //
 // A contact is unilateral (docs/contacts.md): its row is off while the body is clear of the
 // plane or leaving it, and a run's simulate/unilaterals.hpp switches it on (ConstraintRows::
@@ -122,20 +123,30 @@ struct JointCoupler {
   int joint_b_index = -1;
 };
 
-/// A unilateral, frictionless contact between a body's point or sphere and the ground plane (the
-/// plane through plane_point with unit normal plane_normal, world; the body stays on its
-/// normal's side): gap = n · (p_centre − plane_point) − radius ≥ 0, with p_centre = frame.p and
-/// radius 0 for a point. Where the gap closes the body is struck by Newton's law of restitution
-/// along the normal, restitution e ∈ [0, 1] (dynamics::restitution_impact); while it rests on the
-/// plane the row holds it up and its force (`normal`, N, > 0 pushing the body off the plane) is
-/// reported; where that force would pull, the body is let go.
+/// A unilateral, frictionless contact of a body's point or sphere (body b: `frame`, `radius`) with
+/// the ground plane — the plane through plane_point with unit normal plane_normal (world), the body
+/// on its normal's side — or with another body's sphere (body a: `other`, `other_radius`, where
+/// other.body names a body):
+///
+///   ground:   gap = n · (p_centre − plane_point) − radius
+///   sphere:   gap = |p_centre − p_other| − radius − other_radius,  n = (p_centre − p_other) / |…|
+///
+/// p_centre = frame.p (radius 0 for a point). Where the gap closes the bodies are struck by
+/// Newton's law of restitution along n, e ∈ [0, 1] (dynamics::restitution_impact); while they
+/// touch the row holds them and its force (`normal`, N, on body b along n, > 0 pushing it away)
+/// is reported; where that force would pull, they are let go.
 struct Contact {
   std::string name;
-  BodyFrame frame;      ///< the point, or the sphere's centre (only the frame's origin is used)
+  BodyFrame frame;      ///< body b: the point, or the sphere's centre (only the origin is used)
   double radius = 0.0;  ///< m, ≥ 0 (0: a point)
   Vec3 plane_normal = Vec3::UnitZ();
   Vec3 plane_point = Vec3::Zero();
-  double restitution = 0.0;  ///< e ∈ [0, 1]
+  /// Body a's sphere centre where other.body names a body; empty (or "world"): the ground plane.
+  BodyFrame other;
+  double other_radius = 0.0;  ///< m, ≥ 0
+  double restitution = 0.0;   ///< e ∈ [0, 1]
+  /// Whether it is with the ground plane (not another body's sphere).
+  bool on_ground() const { return other.body.empty() || other.body == "world"; }
 };
 
 using Constraint =

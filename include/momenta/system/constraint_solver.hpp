@@ -103,6 +103,9 @@ class ConstraintSolver {
   /// then on at configuration q as the reference (and the redundant rows there). Overwrites
   /// data. Allocates nothing after the first call; forms M (an event's cost, not a step's).
   void enable_row(dynamics::Data& data, VecRef q, int row, bool on);
+  /// How many rows are on: 0 where the only constraints are open contacts, whose motion is then
+  /// the free one (MultibodySystem skips the solver; λ is 0).
+  int rows_on() const { return rows_on_; }
 
   /// Chooses how correct_accelerations forms M⁻¹ Gᵀ (AccelerationMethod::articulated unless
   /// set).
@@ -212,6 +215,7 @@ class ConstraintSolver {
   std::unique_ptr<dynamics::Data> iterate_data_;
   std::unique_ptr<detail::OrderedCholesky> cholesky_;
   int reference_rank_ = 0;
+  int rows_on_ = 0;  // rows_.enabled's ones
   std::vector<std::string> redundant_;
 };
 

@@ -31,7 +31,9 @@ const std::vector<EntryType>& constraint_types() {
       {"rolling", {"body", "shape", "radius", "centre", "axis", "normal", "plane_point"}},
       {"knife_edge", {"body", "point", "direction", "normal"}},
       {"coupler", {"joint_a", "joint_b", "ratio", "offset", "offset_deg"}},
-      {"contact", {"body", "point", "radius", "normal", "plane_point", "restitution"}},
+      {"contact",
+       {"body", "point", "radius", "normal", "plane_point", "other_body", "other_point",
+        "other_radius", "restitution"}},
   };
   return types;
 }
@@ -134,8 +136,23 @@ model::Constraint read_constraint(const YamlNode& e, std::string_view type, cons
     c.frame.body = moving_body(e.at("body"), ctx, "the world cannot touch the ground: name a body");
     c.frame.X_BF.p = e.find_vec3("point").value_or(Vec3::Zero());
     c.radius = e.has("radius") ? e.number("radius", Bound::kNonNegative) : 0.0;
-    if (e.has("normal")) c.plane_normal = read_unit(e.at("normal"));
-    c.plane_point = e.find_vec3("plane_point").value_or(Vec3::Zero());
+    if (e.has("other_body")) {
+      // Another body's sphere instead of the ground plane.
+      for (const char* key : {"normal", "plane_point"}) {
+        if (e.has(key))
+          e.at(key).fail("a contact with another body's sphere has no plane; leave it out");
+      }
+      c.other.body = moving_body(e.at("other_body"), ctx,
+                                 "leave other_body out for the ground plane, or name a body");
+      c.other.X_BF.p = e.find_vec3("other_point").value_or(Vec3::Zero());
+      c.other_radius = e.has("other_radius") ? e.number("other_radius", Bound::kNonNegative) : 0.0;
+    } else {
+      for (const char* key : {"other_point", "other_radius"}) {
+        if (e.has(key)) e.at(key).fail("give other_body: the body whose sphere this is");
+      }
+      if (e.has("normal")) c.plane_normal = read_unit(e.at("normal"));
+      c.plane_point = e.find_vec3("plane_point").value_or(Vec3::Zero());
+    }
     if (e.has("restitution")) {
       c.restitution = e.number("restitution", Bound::kNonNegative);
       if (c.restitution > 1.0) {

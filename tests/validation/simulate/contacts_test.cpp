@@ -10,6 +10,9 @@
 //   joint at that angle (simulate's stops, a second algorithm), its rate there from energy;
 // - a ball resting on the floor lifted by a force ramp c t: let go at t = m g / c, the floor's
 //   force m g − c t until then;
+// - Newton's cradle (examples/newtons_cradle.yaml): balls touching balls, the impacts at one
+//   instant struck one after another: the swing's quarter period from the elliptic integral, the
+//   momentum passed along whole, the middle ball still, the energy kept;
 // - the model file's errors for a contact.
 
 #include <cmath>
@@ -173,6 +176,50 @@ TEST(Contacts, RestingBallLetGoWhenAForceLiftsIt) {
   }
 }
 
+// examples/newtons_cradle.yaml: three 0.1 kg balls on L = 0.5 m strings, touching; the first let
+// go from θ₀ = 0.5 rad arrives after a quarter period t₁ = √(L/g) K(sin(θ₀/2)) at v₀ =
+// √(2 g L (1 − cos θ₀)). The impacts at one instant strike one after another: 1 on 2, then 2 on
+// 3, each elastic between equal masses, so that ball 3 leaves with v₀ and balls 1 and 2 stop; it
+// is back at 3 t₁, and so on: the impacts at (2k + 1) t₁, in pairs.
+TEST(Contacts, NewtonsCradlePassesTheMomentumAlongTheRow) {
+  const double L = 0.5, theta_0 = 0.5, m = 0.1;
+  const double t1 = std::sqrt(L / kG) * std::comp_ellint_1(std::sin(theta_0 / 2));
+  const double v0 = std::sqrt(2 * kG * L * (1 - std::cos(theta_0)));
+  const model::Model model = io::read_model_file("examples/newtons_cradle.yaml").model;
+  const UnilateralRun run = run_unilaterals(model, "dopri5", 1e-3, 3.0);
+  const std::vector<StopEvent>& events = run.summary.stop_events;
+  ASSERT_EQ(events.size(), 8u);  // (2k + 1) t₁ < 3 s: k ≤ 3, two impacts each
+  for (std::size_t k = 0; k < events.size(); ++k) {
+    SCOPED_TRACE(k);
+    const StopEvent& s = events[k];
+    ASSERT_EQ(s.kind, StopEventKind::impact);
+    const bool outward = (k / 2) % 2 == 0;  // 1 → 3 at t₁, 5 t₁; 3 → 1 at 3 t₁, 7 t₁
+    EXPECT_EQ(s.contact, (k % 2 == 0) == outward ? "touch12" : "touch23");
+    EXPECT_NEAR(s.time, (2.0 * static_cast<double>(k / 2) + 1.0) * t1, 1e-11 * t1);
+    if (k % 2 == 1) {
+      // The same instant, to the time a ball's round-off in place (1e-16 m) takes at v₀.
+      EXPECT_NEAR(s.time, events[k - 1].time, 1e-14);
+    }
+    EXPECT_NEAR(s.rate_before, -v0, 1e-10 * v0);
+    EXPECT_NEAR(s.rate_after, -s.rate_before, 1e-14 * v0);
+    EXPECT_NEAR(s.impulse, m * v0, 1e-10 * m * v0);
+    EXPECT_NEAR(s.energy_lost, 0.0, 1e-15);
+  }
+  // The middle ball never moves; the first is still from t₁ to 3 t₁ while the third swings.
+  const int middle = run.table.column("string2.angle"), first = run.table.column("string1.angle");
+  const int third = run.table.column("string3.angle");
+  for (const std::vector<double>& row : run.table.rows) {
+    EXPECT_NEAR(row[middle], 0.0, 1e-14) << row[0];
+    if (row[0] > t1 && row[0] < 3 * t1 - 1e-9) {
+      EXPECT_NEAR(row[first], 0.0, 1e-14) << row[0];
+      EXPECT_LT(row[third], 0.0) << row[0];
+    }
+  }
+  ASSERT_FALSE(run.summary.audit.empty());
+  EXPECT_EQ(run.summary.audit[0].name, "energy");
+  EXPECT_LT(run.summary.audit[0].max_drift, 1e-12);
+}
+
 TEST(Contacts, TheModelFileSaysWhatIsWrongWithAContact) {
   const auto message = load_error;
   std::string text = sphere(1.5);
@@ -191,6 +238,13 @@ TEST(Contacts, TheModelFileSaysWhatIsWrongWithAContact) {
   text = sphere(0.5);
   text.replace(text.find("radius: 0.05, rest"), 12, "normal: [0, 0, 2]");
   EXPECT_NE(message(text).find("unit vector"), std::string::npos) << message(text);
+  text = sphere(0.5);
+  text.replace(text.find("radius: 0.05, rest"), 12, "other_radius: 1");
+  EXPECT_NE(message(text).find("give other_body"), std::string::npos) << message(text);
+  text = sphere(0.5);
+  text.replace(text.find("radius: 0.05, rest"), 12, "other_body: ball");
+  EXPECT_NE(message(text).find("both spheres are on body 'ball'"), std::string::npos)
+      << message(text);
 }
 
 }  // namespace
