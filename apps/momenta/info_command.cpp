@@ -51,6 +51,47 @@ const char* frame_name(model::LoadFrame frame) {
   return frame == model::LoadFrame::world ? "world" : "body";
 }
 
+// A constraint's kind and rows; a contact's shapes and restitution besides.
+json constraint_json(const model::Constraint& constraint) {
+  json j = {{"name", model::constraint_name(constraint)},
+            {"type", model::constraint_type_name(constraint)},
+            {"rows", model::constraint_rows(constraint)}};
+  if (const auto* c = std::get_if<model::Contact>(&constraint)) {
+    j["body"] = c->frame.body;
+    j["point"] = vec_json(c->frame.X_BF.p);
+    j["radius"] = c->radius;
+    if (c->on_ground()) {
+      j["plane"] = {{"normal", vec_json(c->plane_normal)}, {"point", vec_json(c->plane_point)}};
+    } else {
+      j["other_body"] = c->other.body;
+      j["other_point"] = vec_json(c->other.X_BF.p);
+      j["other_radius"] = c->other_radius;
+    }
+    j["restitution"] = c->restitution;
+  }
+  return j;
+}
+
+// A constraint's line: its kind and rows, or what a contact touches.
+std::string constraint_text(const model::Constraint& constraint) {
+  const auto* c = std::get_if<model::Contact>(&constraint);
+  if (c == nullptr) {
+    const int rows = model::constraint_rows(constraint);
+    return fmt::format("{} ({} row{})", model::constraint_type_name(constraint), rows,
+                       rows == 1 ? "" : "s");
+  }
+  const auto shape = [](const std::string& body, const Vec3& p, double r) {
+    return r > 0.0 ? fmt::format("{}'s sphere (radius {:.6g} m, centre {} m)", body, r, vec_text(p))
+                   : fmt::format("{}'s point {} m", body, vec_text(p));
+  };
+  const std::string other = c->on_ground()
+                                ? fmt::format("the ground plane (normal {}, through {} m)",
+                                              vec_text(c->plane_normal), vec_text(c->plane_point))
+                                : shape(c->other.body, c->other.X_BF.p, c->other_radius);
+  return fmt::format("contact, {} on {}, restitution {:.6g}, frictionless",
+                     shape(c->frame.body, c->frame.X_BF.p, c->radius), other, c->restitution);
+}
+
 // A force element's kind and parameters.
 json element_json(const model::ForceElement& element) {
   return std::visit(
@@ -299,6 +340,10 @@ json describe(const InfoOptions& o, const io::ModelFile& file) {
   }
   j["joints"] = std::move(joints);
 
+  json constraints = json::array();
+  for (const model::Constraint& c : m.constraints()) constraints.push_back(constraint_json(c));
+  j["constraints"] = std::move(constraints);
+
   json elements = json::array();
   for (const model::ForceElement& e : m.force_elements()) elements.push_back(element_json(e));
   j["force_elements"] = std::move(elements);
@@ -411,6 +456,12 @@ void print_text(const json& j, const io::ModelFile& file) {
                  joint.type == model::JointType::free ? "rotation vector, then position"
                                                       : "rotation vector");
     }
+  }
+
+  if (m.has_constraints()) {
+    fmt::print("\nconstraints ({})\n", m.constraints().size());
+    for (const model::Constraint& c : m.constraints())
+      fmt::print("  {}  {}\n", model::constraint_name(c), constraint_text(c));
   }
 
   fmt::print("\nforce elements ({})\n", m.force_elements().size());

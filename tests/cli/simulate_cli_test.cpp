@@ -2,6 +2,7 @@
 // (MOMENTA_CLI_PATH), its CSV against the library's Simulation on the same model file, its exit
 // codes (0 ok, 1 user error, 2 usage error) and messages, and `info --json` against the Model.
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -353,6 +354,43 @@ TEST_F(SimulateCli, JointStopsAreListedAndTheirImpactsSaid) {
   EXPECT_EQ(bad.code, 1) << bad.err;
   EXPECT_NE(bad.err.find("stops.yaml:4:"), std::string::npos) << bad.err;
   EXPECT_NE(bad.err.find("restitution 2 is above 1"), std::string::npos) << bad.err;
+}
+
+// A contact: `info` lists it (text and JSON) and counts no freedom taken (it is open there);
+// `simulate` says each impact on stderr with the normal speeds, and --reactions gives its force.
+TEST_F(SimulateCli, ContactsAreListedAndTheirImpactsSaid) {
+  const std::string sphere = quoted(example("bouncing_sphere.yaml"));
+  const CliRun info = momenta("info " + sphere);
+  ASSERT_EQ(info.code, 0) << info.err;
+  EXPECT_NE(info.out.find("degrees of freedom  6\n"), std::string::npos) << info.out;
+  EXPECT_NE(info.out.find("constraints (1)\n  floor  contact, ball's sphere (radius 0.05 m, centre "
+                          "[0, 0, 0] m) on the ground plane (normal [0, 0, 1], through [0, 0, 0] "
+                          "m), restitution 0.8, frictionless\n"),
+            std::string::npos)
+      << info.out;
+  const json j = json::parse(momenta("info " + sphere + " --json").out);
+  const json& floor = j.at("constraints")[0];
+  EXPECT_EQ(floor.at("type"), "contact");
+  EXPECT_EQ(floor.at("radius"), 0.05);
+  EXPECT_EQ(floor.at("restitution"), 0.8);
+  EXPECT_EQ(floor.at("plane").at("normal"), json({0.0, 0.0, 1.0}));
+  const json cradle =
+      json::parse(momenta("info " + quoted(example("newtons_cradle.yaml")) + " --json").out);
+  EXPECT_EQ(cradle.at("constraints")[0].at("other_body"), "ball1");
+  EXPECT_EQ(cradle.at("constraints")[0].at("other_radius"), 0.025);
+
+  const CliRun run = momenta("simulate " + sphere + " --reactions");
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.err.find("stops        contact floor impact at t = 0.451523640986 s: normal speed "
+                         "-4.42945 -> 3.54356, impulse 0.7973, 0.35316 J lost"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("contact floor holds the body from t = "), std::string::npos) << run.err;
+  const Csv csv = parse_csv(run.out);
+  const auto normal = std::find(csv.header.begin(), csv.header.end(), "floor.normal");
+  ASSERT_NE(normal, csv.header.end());
+  EXPECT_NEAR(csv.rows.back()[static_cast<std::size_t>(normal - csv.header.begin())], 0.1 * 9.81,
+              1e-13);
 }
 
 // Freedoms are counted after prescribed motion and constraints take theirs: the crank-driven
