@@ -11,6 +11,7 @@
 
 #include "momenta/analysis/free_body.hpp"
 #include "momenta/analysis/linearize.hpp"
+#include "momenta/dynamics/contact_geometry.hpp"
 #include "momenta/dynamics/data.hpp"
 #include "momenta/dynamics/kinematics.hpp"
 #include "momenta/system/multibody_system.hpp"
@@ -129,6 +130,9 @@ json frames_json(const SimulationRun& run) {
   // moves; a coupler's acts in joint space and has none): from the constrained dynamics of the
   // row's state, as its free-body diagram draws it (analysis::constraint_load).
   std::vector<std::pair<int, int>> constraint_bodies;  // (constraint, body)
+  // A contact's force is open in the dynamics of a row's state alone: its recorded column
+  // `<contact>.normal` says it, N along the contact's normal at its point (−1: not a contact).
+  std::vector<int> contact_columns;
   std::optional<system::MultibodySystem> constrained;
   if (reactions && !model.constraints().empty()) {
     constrained.emplace(model);
@@ -138,7 +142,14 @@ json frames_json(const SimulationRun& run) {
           static_cast<std::size_t>(constraint_rows.first_row[static_cast<std::size_t>(k)]);
       const int body = constraint_rows.body_b[first] != 0 ? constraint_rows.body_b[first]
                                                           : constraint_rows.body_a[first];
-      if (body != 0) constraint_bodies.emplace_back(k, body);
+      if (body == 0) continue;
+      constraint_bodies.emplace_back(k, body);
+      const model::Constraint& c = model.constraints()[static_cast<std::size_t>(k)];
+      const auto it =
+          std::find(run.columns.begin(), run.columns.end(), model::constraint_name(c) + ".normal");
+      contact_columns.push_back(model::is_unilateral(c) && it != run.columns.end()
+                                    ? static_cast<int>(it - run.columns.begin())
+                                    : -1);
     }
   }
 
@@ -177,8 +188,19 @@ json frames_json(const SimulationRun& run) {
     }
     if (!constraint_bodies.empty()) {
       constrained->evaluate(row[0], q, v);
-      for (const auto& [k, body] : constraint_bodies) {
-        const std::optional<analysis::Load> load = analysis::constraint_load(*constrained, k, body);
+      for (std::size_t i = 0; i < constraint_bodies.size(); ++i) {
+        const auto [k, body] = constraint_bodies[i];
+        std::optional<analysis::Load> load;
+        if (contact_columns[i] >= 0) {  // on body b: N n at the contact point
+          const auto& contact = std::get<model::Contact>(model.constraints()[std::size_t(k)]);
+          const dynamics::ContactGeometry g = dynamics::contact_geometry(contact, data);
+          load = analysis::Load{};
+          load->force_W = row[static_cast<std::size_t>(contact_columns[i])] * g.normal_W;
+          load->couple_W.setZero();
+          load->p_WoP_W = g.point_W;
+        } else {
+          load = analysis::constraint_load(*constrained, k, body);
+        }
         const Vec3 F = load ? load->force_W : Vec3::Zero(),
                    M = load ? load->couple_W : Vec3::Zero();
         const Vec3 at = load ? load->p_WoP_W : data.X_WB[body].p;

@@ -9,6 +9,7 @@
 
 #include "crossing_time.hpp"
 #include "momenta/common/error.hpp"
+#include "momenta/dynamics/contact_geometry.hpp"
 #include "momenta/dynamics/impulse.hpp"
 #include "momenta/dynamics/kinematics.hpp"
 #include "momenta/dynamics/point_kinematics.hpp"
@@ -75,19 +76,6 @@ const model::Contact& Unilaterals::contact_of(const Entry& e) const {
 
 namespace {
 
-// A contact's two centres in W, from data's poses: body b's (the point or sphere) and body a's
-// sphere (a plane's point for the ground, unused).
-struct Centres {
-  Vec3 a = Vec3::Zero(), b = Vec3::Zero();
-};
-
-Centres centres(const model::Contact& c, const dynamics::Data& data) {
-  Centres out;
-  out.b = data.X_WB[c.frame.body_index].apply(c.frame.X_BF.p);
-  if (!c.on_ground()) out.a = data.X_WB[c.other.body_index].apply(c.other.X_BF.p);
-  return out;
-}
-
 // The velocity in W of the point p_B of body b, from data's velocities.
 Vec3 point_velocity(const dynamics::Data& data, int b, const Vec3& p_B) {
   const Vec6& V = data.V_WB_B[b];
@@ -96,19 +84,10 @@ Vec3 point_velocity(const dynamics::Data& data, int b, const Vec3& p_B) {
 
 }  // namespace
 
-Vec3 Unilaterals::contact_normal(const model::Contact& c) const {
-  if (c.on_ground()) return c.plane_normal;
-  const Centres x = centres(c, data_);
-  return (x.b - x.a).normalized();
-}
-
 double Unilaterals::gap(const Entry& e, const integrate::State& state) {
   if (!e.contact) return e.outward * (state.q[e.q] - e.value);
-  const model::Contact& c = contact_of(e);
   dynamics::forward_kinematics(model_, data_, state.q.head(model_.nq()));
-  const Centres x = centres(c, data_);
-  if (c.on_ground()) return c.plane_normal.dot(x.b - c.plane_point) - c.radius;
-  return (x.b - x.a).norm() - c.radius - c.other_radius;
+  return dynamics::contact_geometry(contact_of(e), data_).gap;
 }
 
 double Unilaterals::rate(const Entry& e, const integrate::State& state) {
@@ -117,7 +96,7 @@ double Unilaterals::rate(const Entry& e, const integrate::State& state) {
   dynamics::forward_kinematics(model_, data_, state.q.head(model_.nq()), state.v.head(model_.nv()));
   Vec3 relative = point_velocity(data_, c.frame.body_index, c.frame.X_BF.p);
   if (!c.on_ground()) relative -= point_velocity(data_, c.other.body_index, c.other.X_BF.p);
-  return contact_normal(c).dot(relative);
+  return dynamics::contact_geometry(c, data_).normal_W.dot(relative);
 }
 
 double Unilaterals::push(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
@@ -242,11 +221,10 @@ double Unilaterals::contact_impact(system::MultibodySystem& system, const Entry&
   const int nq = model_.nq(), nv = model_.nv();
   dynamics::forward_kinematics(model_, data_, at.q.head(nq));
   // The contact point: the sphere's point nearest the plane, or on the line of centres.
+  const dynamics::ContactGeometry geometry = dynamics::contact_geometry(c, data_);
+  const Vec3& point = geometry.point_W;
   dynamics::PointContact touch;
-  touch.normal_W = contact_normal(c);
-  const Centres x = centres(c, data_);
-  const Vec3 point = c.on_ground() ? Vec3(x.b - c.radius * touch.normal_W)
-                                   : Vec3(x.a + c.other_radius * touch.normal_W);
+  touch.normal_W = geometry.normal_W;
   touch.body_b = c.frame.body_index;
   const auto in_body = [&](int body) {
     const Transform& X = data_.X_WB[body];

@@ -408,6 +408,29 @@ test('four-bar: the closure\'s force drawn in 3-D beside the joints\' reactions'
   await page.close();
 });
 
+// A contact's force (examples/bouncing_sphere.yaml): none while the ball flies; once it rests, the
+// floor's push drawn upwards where the ball touches the floor, as the CSV's floor.normal says.
+test('bouncing sphere: the floor\'s force drawn where it touches, once it holds the ball', async () => {
+  const model = path.join(examples, 'bouncing_sphere.yaml');
+  const file = path.join(work, 'bouncing_sphere.html');
+  run('report', model, '-o', file, '-q');
+  const { page, problems } = await open(file);
+  await firstFrame(page);
+  const times = await page.evaluate(() => window.momentaReport.frameTimes());
+  const floorAt = async (time) => {
+    await page.evaluate((t) => { window.momentaReport.showReactions(true); window.momentaReport.setTime(t); }, time);
+    return (await page.evaluate(() => window.momentaReport.reactionArrows())).find((a) => a.name === 'floor');
+  };
+  const flying = await floorAt(times.find((t) => t > 0.2));  // before the first impact, 0.4515 s
+  assert.ok(flying && !flying.visible, `in flight: ${JSON.stringify(flying)}`);
+  const resting = await floorAt(times.at(-1));  // at rest from 4.0637 s, pushed up with m g
+  assert.ok(resting.visible, JSON.stringify(resting));
+  resting.direction.forEach((d, i) => assert.ok(Math.abs(d - [0, 0, 1][i]) < 1e-6, `direction ${resting.direction}`));
+  await page.$('#motion').then((h) => h.screenshot({ path: path.join(artifacts, 'bouncing_sphere-floor-force.png') }));
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
 test('rotor on bearings: modes about the steady motion and the Campbell diagram with its critical speeds', async () => {
   const model = path.join(examples, 'rotor_on_bearings.yaml');
   const r = await checkSimulationPage('rotor', model, ['--about', 'steady', '--campbell', '500', '5000', '--duration', '0.1']);

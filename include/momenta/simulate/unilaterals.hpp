@@ -121,8 +121,6 @@ class Unilaterals {
     double slack = 0.0;
   };
   const model::Contact& contact_of(const Entry& e) const;
-  // A contact's normal (on body b, away from a) at data_'s poses.
-  Vec3 contact_normal(const model::Contact& c) const;
   // The signed gap of a state (≥ 0 off it; m or rad).
   double gap(const Entry& e, const integrate::State& state);
   // Its rate, > 0 leaving (m/s or rad/s).
