@@ -349,11 +349,6 @@ void MultibodySystem::close_contact(int k, VecRef q, bool closed) {
   constraints_->enable_row(data_, q, row, closed);
 }
 
-bool MultibodySystem::contact_closed(int k) const {
-  const dynamics::ConstraintRows& rows = constraints_->rows();
-  return rows.enabled[static_cast<std::size_t>(rows.first_row[static_cast<std::size_t>(k)])] != 0;
-}
-
 double MultibodySystem::contact_force(int k) const {
   return constraints_->multipliers()[constraints_->rows().first_row[static_cast<std::size_t>(k)]];
 }

@@ -9,9 +9,10 @@
 namespace momenta::system {
 
 struct Freedoms {
-  int speeds = 0;           ///< velocity coordinates of the joints (Model::nv)
-  int prescribed = 0;       ///< of them, those driven by signals
-  int constraint_rows = 0;  ///< the constraints' rows (position and velocity); open contacts have none
+  int speeds = 0;      ///< velocity coordinates of the joints (Model::nv)
+  int prescribed = 0;  ///< of them, those driven by signals
+  int constraint_rows =
+      0;  ///< the constraints' rows (position and velocity); open contacts have none
   /// Of those, the independent ones over the unprescribed speeds at the initial configuration
   /// (the others are implied: a planar loop's out-of-plane rows).
   int independent_rows = 0;

@@ -152,7 +152,6 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   /// holds the body on the plane (ConstraintSolver::enable_row). The caller puts the state on
   /// the plane with no normal speed first. Overwrites data().
   void close_contact(int k, VecRef q, bool closed = true);
-  bool contact_closed(int k) const;
   /// After an evaluation: the normal force (N) closed contact k exerts on its body, > 0 pushing
   /// it off the plane; 0 while open.
   double contact_force(int k) const;
