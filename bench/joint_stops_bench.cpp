@@ -7,6 +7,12 @@
 // falling. rk4 at h = 1 ms and dopri5 (rtol 1e-10, atol 1e-12, largest step 10 ms).
 // Counters: the run's steps, evaluations and impacts; the wall time is the benchmark's.
 //
+// Stick–slip: the block on the belt of examples/belt_stick_slip.yaml for 100 cycles (80.08 s,
+// 200 sticks and slips, each located, the contact's rows switched), beside the same block on its
+// spring with no belt and no contact (a frictionless oscillator): what Coulomb friction costs —
+// the sliding phases' normal force takes three solves an evaluation (system/multibody_system.hpp)
+// — over the steps themselves. Counters: steps, evaluations, events.
+//
 // Run: build/bench/joint_stops_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only
 // and quote the medians and the ratio of each integrator's two rows.
 
@@ -30,6 +36,22 @@ class Discard final : public simulate::RowSink {
   void begin(std::span<const std::string>) override {}
   void row(std::span<const double>) override {}
 };
+
+// Times the run of `model` with `options` and counts its steps, evaluations and stop events
+// (under `events`).
+void run_timed(benchmark::State& bench, const model::Model& model,
+               const simulate::SimulationOptions& options, const char* events) {
+  simulate::Simulation simulation(model, {}, options);
+  simulate::SimulationSummary summary;
+  for (auto _ : bench) {
+    Discard sink;
+    summary = simulation.run(sink);
+    benchmark::DoNotOptimize(summary.t_end);
+  }
+  bench.counters["steps"] = static_cast<double>(summary.statistics.steps);
+  bench.counters["evaluations"] = static_cast<double>(summary.statistics.evaluations);
+  bench.counters[events] = static_cast<double>(summary.stop_events.size());
+}
 
 // The ball on a vertical slide (its floor a stop), or free (its floor a contact).
 model::Model ball(bool free, bool floor) {
@@ -63,17 +85,53 @@ void BM_Bounces(benchmark::State& bench, const std::string& integrator, bool fre
   options.step = integrator == "rk4" ? 1e-3 : 1e-2;
   options.tolerances = {1e-10, 1e-12};
   options.every = 1000;
-  simulate::Simulation simulation(model, {}, options);
-  simulate::SimulationSummary summary;
-  for (auto _ : bench) {
-    Discard sink;
-    summary = simulation.run(sink);
-    benchmark::DoNotOptimize(summary.t_end);
-  }
-  bench.counters["steps"] = static_cast<double>(summary.statistics.steps);
-  bench.counters["evaluations"] = static_cast<double>(summary.statistics.evaluations);
-  bench.counters["impacts"] = static_cast<double>(summary.stop_events.size());
+  run_timed(bench, model, options, "impacts");
 }
+
+// The block on the belt (a contact with the belt's plane, μs = 0.6, μk = 0.4), or the same block
+// on its spring alone.
+model::Model belt(bool contact) {
+  std::string text =
+      "gravity: [0, 0, -9.81]\n"
+      "inputs: [{name: belt_drive, type: ramp, slope: 0.1}]\n"
+      "bodies:\n"
+      "  - {name: belt, shape: box, size: [2.0, 0.3, 0.02], mass: 1.0, position: [0, 0, -0.01]}\n"
+      "  - {name: carriage, mass: 0}\n"
+      "  - {name: block, shape: box, size: [0.1, 0.1, 0.1], mass: 1.0}\n"
+      "joints:\n"
+      "  - {name: belt, type: prismatic, parent: world, child: belt, axis: [1, 0, 0], "
+      "prescribed: belt_drive}\n"
+      "  - {name: slide, type: prismatic, parent: world, child: carriage, axis: [1, 0, 0], q0: "
+      "0.01962, v0: 0.1}\n";
+  // Without the belt's contact the block would fall: it is welded to the carriage instead.
+  text += contact ? "  - {name: lift, type: prismatic, parent: carriage, child: block, axis: [0, "
+                    "0, 1], q0: 0.05}\n"
+                  : "  - {name: lift, type: fixed, parent: carriage, child: block, in_parent: "
+                    "{position: [0, 0, 0.05]}}\n";
+  text +=
+      "forces: [{name: spring, type: spring_damper, body_a: world, point_a: [-0.5, 0, 0.05], "
+      "body_b: block, point_b: [0, 0, 0], stiffness: 100.0, free_length: 0.5}]\n";
+  if (contact) {
+    text +=
+        "constraints: [{name: belt_contact, type: contact, body: block, point: [0, 0, -0.05], "
+        "other_body: belt, normal: [0, 0, 1], plane_point: [0, 0, 0], friction: {static: 0.6, "
+        "kinetic: 0.4}}]\n";
+  }
+  return io::parse_model_file(text, "belt.yaml", ".").model;
+}
+
+void BM_StickSlip(benchmark::State& bench, bool contact) {
+  const model::Model model = belt(contact);
+  simulate::SimulationOptions options;
+  options.duration = 100 * 0.8008322171201989;  // 100 cycles
+  options.integrator = "rk4";
+  options.step = 1e-3;
+  options.every = 1000;
+  run_timed(bench, model, options, "events");
+}
+
+BENCHMARK_CAPTURE(BM_StickSlip, rk4_belt, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_StickSlip, rk4_spring_alone, false)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_CAPTURE(BM_Bounces, rk4_floor, std::string("rk4"), false, true)
     ->Unit(benchmark::kMillisecond);

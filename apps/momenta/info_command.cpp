@@ -60,14 +60,18 @@ json constraint_json(const model::Constraint& constraint) {
     j["body"] = c->frame.body;
     j["point"] = vec_json(c->frame.X_BF.p);
     j["radius"] = c->radius;
-    if (c->on_ground()) {
+    if (c->on_plane()) {
       j["plane"] = {{"normal", vec_json(c->plane_normal)}, {"point", vec_json(c->plane_point)}};
+      // A body's plane: its normal and point in that body's frame.
+      if (c->other_plane) j["plane"]["body"] = c->other.body;
     } else {
       j["other_body"] = c->other.body;
       j["other_point"] = vec_json(c->other.X_BF.p);
       j["other_radius"] = c->other_radius;
     }
     j["restitution"] = c->restitution;
+    j["static_friction"] = c->static_friction;
+    j["kinetic_friction"] = c->kinetic_friction;
   }
   return j;
 }
@@ -84,12 +88,20 @@ std::string constraint_text(const model::Constraint& constraint) {
     return r > 0.0 ? fmt::format("{}'s sphere (radius {:.6g} m, centre {} m)", body, r, vec_text(p))
                    : fmt::format("{}'s point {} m", body, vec_text(p));
   };
-  const std::string other = c->on_ground()
-                                ? fmt::format("the ground plane (normal {}, through {} m)",
-                                              vec_text(c->plane_normal), vec_text(c->plane_point))
-                                : shape(c->other.body, c->other.X_BF.p, c->other_radius);
-  return fmt::format("contact, {} on {}, restitution {:.6g}, frictionless",
-                     shape(c->frame.body, c->frame.X_BF.p, c->radius), other, c->restitution);
+  const std::string other =
+      c->on_ground() ? fmt::format("the ground plane (normal {}, through {} m)",
+                                   vec_text(c->plane_normal), vec_text(c->plane_point))
+      : c->other_plane
+          ? fmt::format("{}'s plane (normal {}, through {} m, in {}'s frame)", c->other.body,
+                        vec_text(c->plane_normal), vec_text(c->plane_point), c->other.body)
+          : shape(c->other.body, c->other.X_BF.p, c->other_radius);
+  const std::string friction =
+      c->has_friction()
+          ? fmt::format("friction μs {:.6g}, μk {:.6g}", c->static_friction, c->kinetic_friction)
+          : std::string("frictionless");
+  return fmt::format("contact, {} on {}, restitution {:.6g}, {}",
+                     shape(c->frame.body, c->frame.X_BF.p, c->radius), other, c->restitution,
+                     friction);
 }
 
 // A force element's kind and parameters.

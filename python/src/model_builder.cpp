@@ -481,7 +481,8 @@ left out; docs/contacts.md).)doc")
           [](Builder& b, std::string name, const std::string& body, const py::object& point,
              double radius, const py::object& normal, const py::object& plane_point,
              std::string other_body, const py::object& other_point, double other_radius,
-             double restitution) -> Builder& {
+             double restitution, double friction, const py::object& kinetic_friction,
+             bool other_plane) -> Builder& {
             model::Contact c;
             c.name = std::move(name);
             c.frame.body = body;
@@ -492,7 +493,11 @@ left out; docs/contacts.md).)doc")
             c.other.body = std::move(other_body);
             c.other.X_BF.p = vec3_arg(other_point, "other_point");
             c.other_radius = other_radius;
+            c.other_plane = other_plane;
             c.restitution = restitution;
+            c.static_friction = friction;
+            c.kinetic_friction =
+                kinetic_friction.is_none() ? friction : kinetic_friction.cast<double>();
             b.builder.add_constraint(std::move(c));
             return b;
           },
@@ -501,12 +506,16 @@ left out; docs/contacts.md).)doc")
           py::arg("normal") = py::make_tuple(0, 0, 1),
           py::arg("plane_point") = py::make_tuple(0, 0, 0), py::arg("other_body") = "",
           py::arg("other_point") = py::make_tuple(0, 0, 0), py::arg("other_radius") = 0.0,
-          py::arg("restitution") = 0.0,
-          "A unilateral, frictionless contact of a body's point (radius 0) or sphere (centre "
-          "`point` in the body, m) with the ground plane through plane_point with unit `normal` "
-          "(world), or with other_body's sphere (centre other_point, radius other_radius): "
-          "impacts with Newton's restitution e ∈ [0, 1], resting contact while it pushes "
-          "(docs/contacts.md).")
+          py::arg("restitution") = 0.0, py::arg("friction") = 0.0,
+          py::arg("kinetic_friction") = py::none(), py::arg("other_plane") = false,
+          "A unilateral contact of a body's point (radius 0) or sphere (centre `point` in the "
+          "body, m) with the ground plane through plane_point with unit `normal` (world), or "
+          "with other_body's sphere (centre other_point, radius other_radius) — or its plane "
+          "(other_plane=True: normal and plane_point in other_body's frame): impacts with "
+          "Newton's restitution e ∈ [0, 1], resting contact while it pushes; on a plane, "
+          "Coulomb friction with the static coefficient `friction` and the kinetic one "
+          "`kinetic_friction` (≤ friction; the same when left out): it sticks while the cone "
+          "holds, slides against the slip beyond (docs/contacts.md).")
       .def(
           "add_signal",
           [](Builder& b, const std::string& name, const std::string& type,

@@ -137,6 +137,11 @@ py::dict summary_of(const simulate::SimulationSummary& s) {
     stop["impulse"] = e.impulse;
     stop["energy_lost"] = e.energy_lost;
     stop["rest_time"] = e.rest_time;
+    // A contact with friction: "sticking" or "sliding" after a rest, stick or slip ("" else), and
+    // at a stick or slip the friction sticking needs and the cone's μs N (N).
+    stop["friction"] = std::string(simulate::friction_state_name(e.friction));
+    stop["friction_needed"] = e.friction_needed;
+    stop["friction_limit"] = e.friction_limit;
     stops.append(stop);
   }
   d["stops"] = stops;

@@ -22,6 +22,7 @@
 
 #include "dual.hpp"
 #include "momenta/common/error.hpp"
+#include "momenta/math/rotation.hpp"
 #include "momenta/math/spatial.hpp"
 #include "momenta/math/types.hpp"
 #include "momenta/model/constraint.hpp"
@@ -158,9 +159,7 @@ void rolling_rows(const model::RollingContact& c, const FrameMotionOf<S>& mb, Ro
     forward_rate = unit_rate<S>(forward, axis_rate.cross(n), s);
   } else {
     // A sphere: any fixed tangent basis of the plane.
-    const Vec3 n0 = c.plane_normal;
-    const Vec3 x = std::abs(n0.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
-    forward = (x - n0 * n0.dot(x)).normalized().cast<S>();
+    forward = plane_tangent(c.plane_normal).cast<S>();
   }
   const Vec3Of<S> lateral = n.cross(forward);
   const Vec3Of<S> lateral_rate = n.cross(forward_rate);
@@ -176,7 +175,9 @@ void rolling_rows(const model::RollingContact& c, const FrameMotionOf<S>& mb, Ro
 }
 
 // A contact of the body of mb with the ground plane: the gap n · (centre − plane point) − radius,
-// its force along n at the sphere's lowest point (the point itself for radius 0). With another
+// its force along n at the sphere's lowest point (the point itself for radius 0); with friction,
+// no slip along the plane's tangents t₁, t₂ there (dynamics/contact_geometry.hpp). On body a's
+// plane the same, with the plane's normal and tangents turning with a. With another
 // body's sphere (ma its centre): the gap |c_b − c_a| − r_a − r_b, its force along the line of
 // centres e at the contact point c_a + r_a e (on b; −e on a), whose rate along e is that of the
 // centres' distance — the spheres' spins move their material points there across e only.
@@ -189,6 +190,30 @@ void contact_rows(const model::Contact& c, const FrameMotionOf<S>& ma, const Fra
     const Vec3Of<S> contact_rate = mb.point_velocity(mb.p);  // n · (ω × n) = 0: the centre's
     row(n.dot(contact - c.plane_point.cast<S>()), true, force_at<S>(contact, n),
         force_rate<S>(contact, contact_rate, n, Vec3Of<S>::Zero()));
+    if (!c.has_friction()) return;
+    // Friction: the material point at the contact has no velocity along the plane's tangents
+    // (velocity rows, as a rolling sphere's).
+    const Vec3 t1 = plane_tangent(c.plane_normal);
+    for (const Vec3& t : {t1, Vec3(c.plane_normal.cross(t1))}) {
+      row(S(0.0), false, force_at<S>(contact, t.cast<S>()),
+          force_rate<S>(contact, contact_rate, t.cast<S>(), Vec3Of<S>::Zero()));
+    }
+    return;
+  }
+  if (c.other_plane) {
+    // Body a's plane (ma its frame: z the normal, x and y the tangents), turning with a at ω_a.
+    const Vec3Of<S> n = ma.R.col(2);
+    const Vec3Of<S> n_rate = ma.w().cross(n);
+    const Vec3Of<S> contact = mb.p - c.radius * n;
+    const Vec3Of<S> contact_rate = mb.point_velocity(mb.p) - c.radius * n_rate;
+    row(n.dot(mb.p - ma.p) - c.radius, true, force_at<S>(contact, n),
+        force_rate<S>(contact, contact_rate, n, n_rate));
+    if (!c.has_friction()) return;
+    for (int k = 0; k < 2; ++k) {
+      const Vec3Of<S> t = ma.R.col(k);
+      row(S(0.0), false, force_at<S>(contact, t),
+          force_rate<S>(contact, contact_rate, t, Vec3Of<S>(ma.w().cross(t))));
+    }
     return;
   }
   const Vec3Of<S> d = mb.p - ma.p;

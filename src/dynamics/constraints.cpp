@@ -256,10 +256,11 @@ void constraint_forces(const Model& model, const Data& data, const ConstraintRow
     }
   } else if (std::holds_alternative<DistanceLink>(constraint)) {
     out[0] = -lambda[first];  // λ pushes b away from a along e; tension pulls them together
-  } else if (std::holds_alternative<RollingContact>(constraint)) {
-    for (int j = 0; j < 3; ++j) out[j] = lambda[first + j];
-  } else if (std::holds_alternative<KnifeEdge>(constraint) ||
+  } else if (std::holds_alternative<RollingContact>(constraint) ||
              std::holds_alternative<model::Contact>(constraint)) {
+    // A contact's normal, then its friction along t₁, t₂ where it has friction.
+    for (int j = 0; j < model::constraint_rows(constraint); ++j) out[j] = lambda[first + j];
+  } else if (std::holds_alternative<KnifeEdge>(constraint)) {
     out[0] = lambda[first];
   } else {
     const auto& coupler = std::get<JointCoupler>(constraint);

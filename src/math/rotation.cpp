@@ -61,6 +61,18 @@ Vec3 intrinsic_angles(int i, int j, int k, const Mat3& R) {
 
 }  // namespace
 
+Vec3 plane_tangent(const Vec3& n) {
+  const Vec3 x = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  return (x - n * n.dot(x)).normalized();
+}
+
+Mat3 plane_frame(const Vec3& n) {
+  const Vec3 t1 = plane_tangent(n);
+  Mat3 R;
+  R << t1, n.cross(t1), n;
+  return R;
+}
+
 Mat3 skew(const Vec3& a) {
   Mat3 S;
   S << 0, -a.z(), a.y(), a.z(), 0, -a.x(), -a.y(), a.x(), 0;

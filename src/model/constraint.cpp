@@ -47,8 +47,13 @@ struct Rows {
   int operator()(const RollingContact&) const { return 3; }
   int operator()(const KnifeEdge&) const { return 1; }
   int operator()(const JointCoupler&) const { return 1; }
-  int operator()(const Contact&) const { return 1; }
+  int operator()(const Contact& c) const { return c.has_friction() ? 3 : 1; }
 };
+// A contact's rows and forces: the normal, and with friction the two tangents.
+std::vector<std::string_view> contact_labels(const Contact& c) {
+  if (c.has_friction()) return {"normal", "tangent_1", "tangent_2"};
+  return {"normal"};
+}
 }  // namespace
 
 std::string_view constraint_type_name(const Constraint& constraint) {
@@ -63,6 +68,7 @@ bool is_unilateral(const Constraint& constraint) {
 
 int constraint_position_rows(const Constraint& constraint) {
   if (std::holds_alternative<RollingContact>(constraint)) return 1;
+  if (std::holds_alternative<Contact>(constraint)) return 1;
   if (std::holds_alternative<KnifeEdge>(constraint)) return 0;
   return constraint_rows(constraint);
 }
@@ -84,7 +90,7 @@ std::vector<std::string_view> constraint_row_labels(const Constraint& constraint
   if (std::holds_alternative<RollingContact>(constraint))
     return {"normal", "longitudinal", "lateral"};
   if (std::holds_alternative<KnifeEdge>(constraint)) return {"lateral"};
-  if (std::holds_alternative<Contact>(constraint)) return {"normal"};
+  if (const auto* c = std::get_if<Contact>(&constraint)) return contact_labels(*c);
   return {"ratio"};
 }
 
@@ -97,7 +103,7 @@ std::vector<std::string_view> constraint_force_labels(const Constraint& constrai
   if (std::holds_alternative<RollingContact>(constraint))
     return {"normal", "longitudinal", "lateral"};
   if (std::holds_alternative<KnifeEdge>(constraint)) return {"lateral"};
-  if (std::holds_alternative<Contact>(constraint)) return {"normal"};
+  if (const auto* c = std::get_if<Contact>(&constraint)) return contact_labels(*c);
   return {"effort_a", "effort_b"};
 }
 

@@ -674,11 +674,21 @@ class ModelAssembler {
     MOMENTA_REQUIRE(c.radius >= 0.0 && std::isfinite(c.radius),
                     "{}: radius must be zero (a point) or positive and finite, got {} m", who,
                     c.radius);
-    if (c.on_ground()) {
-      c.other.body_index = 0;
+    if (c.on_plane()) {
       check_plane_normal(c.plane_normal, who);
       MOMENTA_REQUIRE(c.plane_point.allFinite(), "{}: plane point {} is not finite", who,
                       vec_str(c.plane_point));
+    }
+    if (c.on_ground()) {
+      c.other.body_index = 0;
+    } else if (c.other_plane) {
+      // The plane's frame in body a: z its normal, x a's x axis projected on it.
+      c.other.X_BF = Transform(plane_frame(c.plane_normal.normalized()), c.plane_point);
+      resolve_frame(c.other, who);
+      MOMENTA_REQUIRE(c.other.body_index != c.frame.body_index,
+                      "{}: the point and the plane are both on body '{}'; a contact is between "
+                      "two bodies",
+                      who, c.frame.body);
     } else {
       resolve_frame(c.other, who);
       MOMENTA_REQUIRE(c.other.body_index != c.frame.body_index,
@@ -693,6 +703,19 @@ class ModelAssembler {
     MOMENTA_REQUIRE(c.restitution >= 0.0 && c.restitution <= 1.0,
                     "{}: restitution must be in [0, 1] (0 plastic, 1 elastic), got {}", who,
                     c.restitution);
+    MOMENTA_REQUIRE(c.static_friction >= 0.0 && std::isfinite(c.static_friction),
+                    "{}: the static friction coefficient must be zero or positive and finite, "
+                    "got {}",
+                    who, c.static_friction);
+    MOMENTA_REQUIRE(c.kinetic_friction >= 0.0 && c.kinetic_friction <= c.static_friction,
+                    "{}: the kinetic friction coefficient {} must be in [0, μs = {}]: sliding "
+                    "friction is no greater than the friction that can hold",
+                    who, c.kinetic_friction, c.static_friction);
+    MOMENTA_REQUIRE(!c.has_friction() || c.on_plane(),
+                    "{}: friction between two bodies' spheres is not modelled yet "
+                    "(docs/contacts.md); friction acts at contacts with a plane, the ground's or "
+                    "a body's",
+                    who);
   }
 
   void resolve(KnifeEdge& c, const std::string& who) const {

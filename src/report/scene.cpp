@@ -87,11 +87,22 @@ json scene_json(const io::ModelFile& file) {
   for (const model::ForceElement& e : model.force_elements()) {
     elements.push_back(force_element_json(model, e));
   }
+  // The ground planes contacts touch (a ramp, a floor): drawn so that a body resting on one is
+  // seen on it.
+  json planes = json::array();
+  for (const model::Constraint& c : model.constraints()) {
+    const auto* contact = std::get_if<model::Contact>(&c);
+    if (contact == nullptr || !contact->on_ground()) continue;
+    planes.push_back({{"name", contact->name},
+                      {"point", vec_json(contact->plane_point)},
+                      {"normal", vec_json(contact->plane_normal)}});
+  }
   return {{"gravity", vec_json(model.gravity())},
           {"length", analysis::characteristic_length(model)},
           {"bodies", bodies},
           {"joints", joints},
-          {"elements", elements}};
+          {"elements", elements},
+          {"planes", planes}};
 }
 
 void append_poses(const model::Model& model, const dynamics::Data& data,
@@ -130,8 +141,9 @@ json frames_json(const SimulationRun& run) {
   // moves; a coupler's acts in joint space and has none): from the constrained dynamics of the
   // row's state, as its free-body diagram draws it (analysis::constraint_load).
   std::vector<std::pair<int, int>> constraint_bodies;  // (constraint, body)
-  // A contact's force is open in the dynamics of a row's state alone: its recorded column
-  // `<contact>.normal` says it, N along the contact's normal at its point (−1: not a contact).
+  // A contact's force is open in the dynamics of a row's state alone: its recorded columns
+  // `<contact>.normal` (and with friction .tangent_1, .tangent_2, which follow it) say it,
+  // N n + F₁ t₁ + F₂ t₂ at its point (−1: not a contact).
   std::vector<int> contact_columns;
   std::optional<system::MultibodySystem> constrained;
   if (reactions && !model.constraints().empty()) {
@@ -191,11 +203,15 @@ json frames_json(const SimulationRun& run) {
       for (std::size_t i = 0; i < constraint_bodies.size(); ++i) {
         const auto [k, body] = constraint_bodies[i];
         std::optional<analysis::Load> load;
-        if (contact_columns[i] >= 0) {  // on body b: N n at the contact point
+        if (contact_columns[i] >= 0) {  // on body b: N n + friction at the contact point
           const auto& contact = std::get<model::Contact>(model.constraints()[std::size_t(k)]);
           const dynamics::ContactGeometry g = dynamics::contact_geometry(contact, data);
+          const auto column = static_cast<std::size_t>(contact_columns[i]);
           load = analysis::Load{};
-          load->force_W = row[static_cast<std::size_t>(contact_columns[i])] * g.normal_W;
+          load->force_W = row[column] * g.normal_W;
+          if (contact.has_friction()) {
+            load->force_W += row[column + 1] * g.tangent_1_W + row[column + 2] * g.tangent_2_W;
+          }
           load->couple_W.setZero();
           load->p_WoP_W = g.point_W;
         } else {

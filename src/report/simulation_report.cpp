@@ -102,7 +102,10 @@ json summary_json(const SimulationRun& run, double fastest_rate) {
                      {"rate_after", e.rate_after},
                      {"impulse", e.impulse},
                      {"energy_lost", e.energy_lost},
-                     {"rest_time", e.rest_time}});
+                     {"rest_time", e.rest_time},
+                     {"friction", simulate::friction_state_name(e.friction)},
+                     {"friction_needed", e.friction_needed},
+                     {"friction_limit", e.friction_limit}});
   }
   return {{"model", file.name},
           {"description", file.description},

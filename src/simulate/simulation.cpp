@@ -591,13 +591,27 @@ std::string format_stop_events(const std::vector<StopEvent>& events) {
             "{:.6g} J lost",
             stop, e.time, rate, e.rate_before, e.rate_after, e.impulse, e.energy_lost);
       case StopEventKind::rest:
-        return fmt::format(
-            "{} holds {} from t = {:.12g} s{} ({} {:.6g} -> 0, {:.6g} J lost)", stop, held, e.time,
-            e.rest_time > e.time ? fmt::format(" (its bounces end at t = {:.12g} s)", e.rest_time)
-                                 : "",
-            rate, e.rate_before, e.energy_lost);
+        return fmt::format("{} holds {} from t = {:.12g} s{}{} ({} {:.6g} -> 0, {:.6g} J lost)",
+                           stop, held, e.time,
+                           e.rest_time > e.time
+                               ? fmt::format(" (its bounces end at t = {:.12g} s)", e.rest_time)
+                               : "",
+                           e.friction == FrictionState::none
+                               ? ""
+                               : fmt::format(", {}", friction_state_name(e.friction)),
+                           rate, e.rate_before, e.energy_lost);
       case StopEventKind::release:
         return fmt::format("{} lets {} go at t = {:.12g} s (it would pull)", stop, held, e.time);
+      case StopEventKind::stick:
+        return fmt::format(
+            "{} sticks at t = {:.12g} s (slip speed {:.3g} -> 0; friction {:.6g} N within "
+            "μs N = {:.6g} N)",
+            stop, e.time, e.rate_before, e.friction_needed, e.friction_limit);
+      case StopEventKind::slip:
+        return fmt::format(
+            "{} slips at t = {:.12g} s (sticking would need {:.6g} N of friction, beyond "
+            "μs N = {:.6g} N)",
+            stop, e.time, e.friction_needed, e.friction_limit);
     }
     return std::string();
   };

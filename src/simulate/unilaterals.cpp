@@ -31,6 +31,10 @@ constexpr int kActsAtOneInstant = 64;
 // round-off: above the constraint projection's 1e-14, far below any motion a run resolves.
 constexpr double kContactSlack = 1e-12;
 
+// A contact that closes with its contact point slipping slower than this (m/s) is taken as not
+// slipping: it sticks if friction can hold it (projecting that slip away is no visible jump).
+constexpr double kSlipAtRest = 1e-10;
+
 }  // namespace
 
 std::string_view stop_event_kind_name(StopEventKind kind) {
@@ -41,6 +45,22 @@ std::string_view stop_event_kind_name(StopEventKind kind) {
       return "rest";
     case StopEventKind::release:
       return "release";
+    case StopEventKind::stick:
+      return "stick";
+    case StopEventKind::slip:
+      return "slip";
+  }
+  return "";
+}
+
+std::string_view friction_state_name(FrictionState state) {
+  switch (state) {
+    case FrictionState::none:
+      return "";
+    case FrictionState::sticking:
+      return "sticking";
+    case FrictionState::sliding:
+      return "sliding";
   }
   return "";
 }
@@ -64,7 +84,7 @@ Unilaterals::Unilaterals(const model::Model& model, double step)
     const auto* c = std::get_if<model::Contact>(&model.constraints()[k]);
     if (c == nullptr) continue;
     entries_.push_back({true, static_cast<int>(k), 0, 0, 0.0, 1.0, c->restitution,
-                        kContactSlack * std::max(1.0, c->radius)});
+                        kContactSlack * std::max(1.0, c->radius), c->static_friction});
   }
   q_ = VecX::Zero(model.nq());
   v_ = VecX::Zero(model.nv());
@@ -94,9 +114,14 @@ double Unilaterals::rate(const Entry& e, const integrate::State& state) {
   if (!e.contact) return e.outward * state.v[e.v];
   const model::Contact& c = contact_of(e);
   dynamics::forward_kinematics(model_, data_, state.q.head(model_.nq()), state.v.head(model_.nv()));
-  Vec3 relative = point_velocity(data_, c.frame.body_index, c.frame.X_BF.p);
-  if (!c.on_ground()) relative -= point_velocity(data_, c.other.body_index, c.other.X_BF.p);
-  return dynamics::contact_geometry(c, data_).normal_W.dot(relative);
+  const dynamics::ContactGeometry g = dynamics::contact_geometry(c, data_);
+  if (c.on_plane()) {  // the bodies' material points at the contact, along the normal
+    return g.normal_W.dot(dynamics::contact_point_velocity(c, data_, g.point_W));
+  }
+  // Two spheres: the rate of the centres' distance.
+  const Vec3 relative = point_velocity(data_, c.frame.body_index, c.frame.X_BF.p) -
+                        point_velocity(data_, c.other.body_index, c.other.X_BF.p);
+  return g.normal_W.dot(relative);
 }
 
 double Unilaterals::push(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
@@ -120,6 +145,16 @@ double Unilaterals::acceleration_into(integrate::SecondOrderSystem& advanced, co
   };
   const dynamics::PointKinematics b = centre(c.frame.body_index, c.frame.X_BF.p);
   if (c.on_ground()) return -c.plane_normal.dot(b.a_WP_W);
+  if (c.other_plane) {
+    // The centre's acceleration relative to body a, along a's normal: n · (a_b − a_a − 2 ω_a ×
+    // (v_b − v_a)) with a's material point at the centre (its Coriolis term).
+    const int body_a = c.other.body_index;
+    const Transform X_WA = data_.X_WB[body_a];
+    const Vec3 w_a = X_WA.R * data_.V_WB_B[body_a].head<3>();
+    const dynamics::PointKinematics a = centre(body_a, X_WA.R.transpose() * (b.p_WoP_W - X_WA.p));
+    const Vec3 n = (X_WA * c.other.X_BF).R.col(2);
+    return -n.dot(b.a_WP_W - a.a_WP_W - 2.0 * w_a.cross(b.v_WP_W - a.v_WP_W));
+  }
   const dynamics::PointKinematics a = centre(c.other.body_index, c.other.X_BF.p);
   const Vec3 d = b.p_WoP_W - a.p_WoP_W;
   const double length = d.norm();
@@ -187,31 +222,109 @@ double Unilaterals::first_pull(system::MultibodySystem& system,
   return detail::crossing_time(f, a, b, push_a, push_b);
 }
 
-void Unilaterals::close(system::MultibodySystem& system, const Entry& e, integrate::State& at) {
-  closed_[static_cast<std::size_t>(&e - entries_.data())] = 1;
-  if (!e.contact) {
-    at.q[e.q] = e.value;
-    at.v[e.v] = 0.0;
-    system.hold(e.index, e.value);
-    return;
-  }
-  // On the plane with no normal speed: the row switched on, the state projected onto it.
+void Unilaterals::hold_contact(system::MultibodySystem& system, const Entry& e,
+                               integrate::State& at, Hold how, const Vec3& slip_W) {
+  hold_[slot(e)] = how;
   const int nq = model_.nq(), nv = model_.nv();
   q_ = at.q.head(nq);
   v_ = at.v.head(nv);
-  system.close_contact(e.index, q_);
+  const system::ContactHold hold = how == Hold::open      ? system::ContactHold::open
+                                   : how == Hold::sliding ? system::ContactHold::sliding
+                                                          : system::ContactHold::sticking;
+  system.hold_contact(e.index, q_, hold, slip_W);
+  if (how == Hold::sliding) slip_reference_[slot(e)] = slip_W;
+  if (how == Hold::open) return;
+  // On the plane with no normal speed (and no slip where it sticks).
   system.project(at.t, q_, v_);
   at.q.head(nq) = q_;
   at.v.head(nv) = v_;
 }
 
+void Unilaterals::close(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+                        const Entry& e, integrate::State& at) {
+  if (!e.contact) {
+    hold_[slot(e)] = Hold::closed;
+    at.q[e.q] = e.value;
+    at.v[e.v] = 0.0;
+    system.hold(e.index, e.value);
+    return;
+  }
+  if (e.static_friction > 0.0) {
+    const Vec3 slip = slip_velocity(e, at);
+    if (slip.norm() > kSlipAtRest) {
+      hold_contact(system, e, at, Hold::sliding, slip);
+      return;
+    }
+    StopEvent ignored;
+    stick_or_slip(system, advanced, e, at, ignored);
+    return;
+  }
+  hold_contact(system, e, at, Hold::closed);
+}
+
+void Unilaterals::stick_or_slip(system::MultibodySystem& system,
+                                integrate::SecondOrderSystem& advanced, const Entry& e,
+                                integrate::State& at, StopEvent& event) {
+  hold_contact(system, e, at, Hold::closed);
+  vdot_.resize(at.v.size());
+  advanced.acceleration(at.t, at.q, at.v, vdot_);
+  const Vec3 friction = sticking_friction(system, e, at);
+  event.friction_needed = friction.norm();
+  event.friction_limit = e.static_friction * system.contact_force(e.index);
+  if (event.friction_needed <= event.friction_limit) {
+    event.friction = FrictionState::sticking;
+    return;
+  }
+  // It slips the way the friction it needed held it from.
+  event.friction = FrictionState::sliding;
+  hold_contact(system, e, at, Hold::sliding, -friction);
+}
+
 void Unilaterals::open(system::MultibodySystem& system, const Entry& e,
                        const integrate::State& at) {
-  closed_[static_cast<std::size_t>(&e - entries_.data())] = 0;
+  hold_[slot(e)] = Hold::open;
   if (e.contact) {
-    system.close_contact(e.index, at.q.head(model_.nq()), false);
+    system.hold_contact(e.index, at.q.head(model_.nq()), system::ContactHold::open);
   } else {
     system.release(e.index);
+  }
+}
+
+Vec3 Unilaterals::slip_velocity(const Entry& e, const integrate::State& state) {
+  const model::Contact& c = contact_of(e);
+  dynamics::forward_kinematics(model_, data_, state.q.head(model_.nq()), state.v.head(model_.nv()));
+  const dynamics::ContactGeometry g = dynamics::contact_geometry(c, data_);
+  const Vec3 v = dynamics::contact_point_velocity(c, data_, g.point_W);
+  return v - g.normal_W * g.normal_W.dot(v);
+}
+
+Vec3 Unilaterals::sticking_friction(const system::MultibodySystem& system, const Entry& e,
+                                    const integrate::State& state) {
+  const model::Contact& c = contact_of(e);
+  dynamics::forward_kinematics(model_, data_, state.q.head(model_.nq()));
+  const dynamics::ContactGeometry g = dynamics::contact_geometry(c, data_);
+  const int first = system.constraints()->rows().first_row[static_cast<std::size_t>(e.index)];
+  const VecX& lambda = system.constraints()->multipliers();
+  return lambda[first + 1] * g.tangent_1_W + lambda[first + 2] * g.tangent_2_W;
+}
+
+double Unilaterals::cone_margin(system::MultibodySystem& system,
+                                integrate::SecondOrderSystem& advanced, const Entry& e,
+                                const integrate::State& state) {
+  vdot_.resize(state.v.size());
+  advanced.acceleration(state.t, state.q, state.v, vdot_);
+  return e.static_friction * system.contact_force(e.index) -
+         sticking_friction(system, e, state).norm();
+}
+
+void Unilaterals::set_slip_references(system::MultibodySystem& system,
+                                      const integrate::State& state) {
+  for (const Entry& e : entries_) {
+    if (hold_[slot(e)] != Hold::sliding) continue;
+    const Vec3 slip = slip_velocity(e, state);
+    if (!(slip.norm() > kSlipAtRest)) continue;  // too slow to say: the last one stands
+    slip_reference_[slot(e)] = slip;
+    system.set_slip_reference(e.index, slip);
   }
 }
 
@@ -242,7 +355,7 @@ double Unilaterals::contact_impact(system::MultibodySystem& system, const Entry&
     const Entry* pulling = nullptr;
     double least = 0.0;
     for (const Entry& other : entries_) {
-      if (!other.contact || !closed_[static_cast<std::size_t>(&other - entries_.data())]) continue;
+      if (!other.contact || hold_[slot(other)] == Hold::open) continue;
       const double P = impact.motion.constraint_impulses[solver.rows().first_row[other.index]];
       if (P < least) {
         least = P;
@@ -283,11 +396,15 @@ void Unilaterals::strike(system::MultibodySystem& system, integrate::SecondOrder
   const double rebound = rate(e, at);
   const double into = acceleration_into(advanced, e, at);
   if (into > 0.0 && (leaving || 2.0 * rebound / into < rest_flight_)) {
-    close(system, e, at);
+    close(system, advanced, e, at);
     // Closed, it must push: where its force does not (pushed neither way to within round-off),
     // it stays open.
     if (push(system, advanced, e, at) > 0.0) {
       event.kind = StopEventKind::rest;
+      if (e.static_friction > 0.0) {
+        event.friction =
+            hold_[slot(e)] == Hold::sliding ? FrictionState::sliding : FrictionState::sticking;
+      }
       if (rebound > 0.0 && e.restitution < 1.0) {
         event.rest_time += 2.0 * rebound / (into * (1.0 - e.restitution));
       }
@@ -304,7 +421,8 @@ std::vector<StopEvent> Unilaterals::start(system::MultibodySystem& system,
                                           integrate::State& state) {
   interpolant_.resize(static_cast<int>(state.q.size()), static_cast<int>(state.v.size()));
   trial_ = state;
-  closed_.assign(entries_.size(), 0);
+  hold_.assign(entries_.size(), Hold::open);
+  slip_reference_.assign(entries_.size(), Vec3::UnitX());
   std::vector<StopEvent> events;
   for (const Entry& e : entries_) {
     if (gap(e, state) > e.slack || rate(e, state) > 0.0) continue;
@@ -318,8 +436,9 @@ std::vector<StopEvent> Unilaterals::start(system::MultibodySystem& system,
 bool Unilaterals::check(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
                         const integrate::Integrator& integrator, const integrate::State& start,
                         const integrate::State& end, integrate::State& before) {
-  // The first to act in the step: one that closes on the mechanism, or a closed one that would
-  // pull.
+  // The first to act in the step: one that closes on the mechanism, a closed one that would
+  // pull, a sticking contact whose friction leaves the cone, or a sliding one whose slip passes
+  // zero. At one instant, letting go comes first.
   double first = std::numeric_limits<double>::infinity();
   const Entry* acting = nullptr;
   bool interpolant_set = false;
@@ -328,29 +447,65 @@ bool Unilaterals::check(system::MultibodySystem& system, integrate::SecondOrderS
     interpolant_.set(advanced, integrator, start, end);
     interpolant_set = true;
   };
+  const auto consider = [&](const Entry& e, double t, Pending what) {
+    if (!(t < first)) return;
+    first = t;
+    acting = &e;
+    pending_action_ = what;
+  };
+  // The first time in [start, end] a function of the state, ≥ 0 at the start and < 0 at the
+  // end, reaches zero on the step's dense output (the start where it is not above zero there).
+  const auto zero_of = [&](auto&& of_state, double at_end) {
+    const double at_start = of_state(start);
+    if (!(at_start > 0.0)) return start.t;
+    set_interpolant();
+    const auto f = [&](double t) {
+      interpolant_.evaluate(advanced, t, trial_);
+      return of_state(trial_);
+    };
+    return detail::crossing_time(f, start.t, end.t, at_start, at_end);
+  };
   for (std::size_t k = 0; k < entries_.size(); ++k) {
     const Entry& e = entries_[k];
-    double t = first;
-    if (closed_[k]) {
-      const double push_end = push(system, advanced, e, end);
-      if (!(push_end < 0.0)) continue;
-      const double push_start = push(system, advanced, e, start);
-      set_interpolant();
-      t = first_pull(system, advanced, e, start.t, end.t, push_start, push_end);
-    } else {
+    if (hold_[k] == Hold::open) {
       if (!e.contact && system.held(e.index)) continue;  // its other stop holds the joint
       const double gap_end = gap(e, end);
       if (!(gap_end < -e.slack)) continue;
       set_interpolant();
       start_rate_ = rate(e, start);
-      t = first_contact(e, advanced, start.t, end.t, gap(e, start), gap_end);
+      consider(e, first_contact(e, advanced, start.t, end.t, gap(e, start), gap_end),
+               Pending::reach);
+      continue;
     }
-    if (t < first) {
-      first = t;
-      acting = &e;
+    const double push_end = push(system, advanced, e, end);
+    if (push_end < 0.0) {
+      const double push_start = push(system, advanced, e, start);
+      set_interpolant();
+      consider(e, first_pull(system, advanced, e, start.t, end.t, push_start, push_end),
+               Pending::release);
+    }
+    if (hold_[k] == Hold::closed && e.static_friction > 0.0) {
+      // Sticking, from the evaluation push() just made at the end.
+      const double margin_end =
+          e.static_friction * push_end - sticking_friction(system, e, end).norm();
+      if (!(margin_end < 0.0)) continue;
+      const auto margin = [&](const integrate::State& x) {
+        return cone_margin(system, advanced, e, x);
+      };
+      consider(e, zero_of(margin, margin_end), Pending::slip);
+    } else if (hold_[k] == Hold::sliding) {
+      const Vec3 reference = slip_reference_[k].normalized();
+      const auto along = [&](const integrate::State& x) {
+        return slip_velocity(e, x).dot(reference);
+      };
+      const double along_end = along(end);
+      if (along_end < 0.0) consider(e, zero_of(along, along_end), Pending::stop_slipping);
     }
   }
-  if (acting == nullptr) return false;
+  if (acting == nullptr) {
+    set_slip_references(system, end);
+    return false;
+  }
   interpolant_.evaluate(advanced, first, before);
   if (!acting->contact) before.q[acting->q] = acting->value;
   pending_ = static_cast<int>(acting - entries_.data());
@@ -377,16 +532,35 @@ void Unilaterals::act(system::MultibodySystem& system, integrate::SecondOrderSys
         "mechanism a little damping or load",
         state.t, what, kActsAtOneInstant, gap(e, state), rate(e, state)));
   }
-  if (!closed_[k]) {
-    strike(system, advanced, e, state, event);
-    return;
+  switch (pending_action_) {
+    case Pending::reach:
+      strike(system, advanced, e, state, event);
+      return;
+    case Pending::release:
+      open(system, e, state);
+      if (!e.contact) {
+        state.q[e.q] = e.value;
+        state.v[e.v] = 0.0;
+      }
+      event = event_at(e, state.t, StopEventKind::release);
+      return;
+    case Pending::slip: {
+      // It slides the way the friction sticking needs held it from.
+      event = event_at(e, state.t, StopEventKind::slip);
+      event.friction_limit = e.static_friction * push(system, advanced, e, state);
+      const Vec3 friction = sticking_friction(system, e, state);
+      event.friction_needed = friction.norm();
+      event.friction = FrictionState::sliding;
+      hold_contact(system, e, state, Hold::sliding, -friction);
+      return;
+    }
+    case Pending::stop_slipping:
+      event = event_at(e, state.t, StopEventKind::stick);
+      event.rate_before = slip_velocity(e, state).norm();
+      stick_or_slip(system, advanced, e, state, event);
+      if (event.friction == FrictionState::sliding) event.kind = StopEventKind::slip;
+      return;
   }
-  open(system, e, state);
-  if (!e.contact) {
-    state.q[e.q] = e.value;
-    state.v[e.v] = 0.0;
-  }
-  event = event_at(e, state.t, StopEventKind::release);
 }
 
 }  // namespace momenta::simulate

@@ -132,12 +132,16 @@ void ConstraintSolver::find_redundant_rows(dynamics::Data& data, VecRef q) {
     if (cholesky_->dependent(i) && rows_.enabled[i]) redundant_.push_back(rows_.names[i]);
 }
 
-void ConstraintSolver::enable_row(dynamics::Data& data, VecRef q, int row, bool on) {
-  if (rows_.enabled[row] == static_cast<char>(on)) return;
-  rows_.enabled[row] = on ? 1 : 0;
-  rows_on_ += on ? 1 : -1;
-  if (!on) lambda_[row] = 0.0;
-  find_redundant_rows(data, q);
+void ConstraintSolver::enable_rows(dynamics::Data& data, VecRef q, int first, int count, bool on) {
+  bool changed = false;
+  for (int row = first; row < first + count; ++row) {
+    lambda_[row] = 0.0;
+    if (rows_.enabled[row] == static_cast<char>(on)) continue;
+    rows_.enabled[row] = on ? 1 : 0;
+    rows_on_ += on ? 1 : -1;
+    changed = true;
+  }
+  if (changed) find_redundant_rows(data, q);
 }
 
 bool ConstraintSolver::correct_accelerations(dynamics::Data& data, VecRef q, VecX& vdot) {

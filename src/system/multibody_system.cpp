@@ -7,6 +7,7 @@
 
 #include "momenta/common/error.hpp"
 #include "momenta/dynamics/aba.hpp"
+#include "momenta/dynamics/contact_geometry.hpp"
 #include "momenta/dynamics/crba.hpp"
 #include "momenta/dynamics/energy.hpp"
 #include "momenta/dynamics/force_elements.hpp"
@@ -86,7 +87,8 @@ MultibodySystem::MultibodySystem(const model::Model& model)
   }
   for (const model::Constraint& c : model.constraints()) {
     const auto* contact = std::get_if<model::Contact>(&c);
-    if (contact && contact->restitution < 1.0) inelastic_stops = true;
+    if (contact && (contact->restitution < 1.0 || contact->kinetic_friction > 0.0))
+      inelastic_stops = true;
   }
   conserves_energy_ = !model.has_prescribed_joints() && !inelastic_stops &&
                       dynamics::force_elements_conservative(model);
@@ -137,7 +139,62 @@ MultibodySystem::MultibodySystem(const model::Model& model)
 int MultibodySystem::nq() const { return model_.nq(); }
 int MultibodySystem::nv() const { return model_.nv(); }
 
+namespace {
+
+// A slip slower than this (m/s) gives no direction of its own: the friction keeps its reference.
+constexpr double kSlipDirectionSpeed = 1e-12;
+
+// Below this 1 − ∂N/∂N through friction (det of I − R), sliding has no single normal force.
+constexpr double kPainleve = 1e-9;
+
+}  // namespace
+
 const VecX& MultibodySystem::compute(double t, const VecX& q, const VecX& v, model::Limit limit) {
+  if (sliding_.empty()) return solve(t, q, v, limit);
+  // N = N₀ + R N (R_ij: contact i's normal force per newton of contact j's normal force, through
+  // j's friction), so (I − R) N = N₀: one solve without friction and one per sliding contact at
+  // unit N give N₀ and R, and the last solve applies the friction at N.
+  const int m = static_cast<int>(sliding_.size());
+  for (SlidingContact& s : sliding_) s.normal = 0.0;
+  solve(t, q, v, limit);
+  for (int i = 0; i < m; ++i)
+    sliding_base_[i] = constraints_->multipliers()[sliding_[i].normal_row];
+  for (int j = 0; j < m; ++j) {
+    sliding_[j].normal = 1.0;
+    solve(t, q, v, limit);
+    sliding_[j].normal = 0.0;
+    for (int i = 0; i < m; ++i) {
+      const double response =
+          constraints_->multipliers()[sliding_[i].normal_row] - sliding_base_[i];
+      sliding_response_(i, j) = (i == j ? 1.0 : 0.0) - response;
+    }
+  }
+  sliding_lu_.compute(sliding_response_);
+  const double determinant = sliding_lu_.determinant();
+  if (!(determinant > kPainleve)) {
+    const auto& c = std::get<model::Contact>(model_.constraints()[sliding_[0].constraint]);
+    throw NumericalError(fmt::format(
+        "contact '{}' at t = {:.12g} s: sliding with kinetic friction μk = {} has no single "
+        "normal force (Painlevé's paradox: the friction presses the body into the plane as fast "
+        "as the normal force lifts it, det(I − ∂N/∂N) = {:.3g}); momenta does not resolve it. "
+        "Lower the friction coefficient",
+        c.name, t, sliding_[0].mu, determinant));
+  }
+  sliding_base_ = sliding_lu_.solve(sliding_base_);
+  for (int i = 0; i < m; ++i) sliding_[i].normal = sliding_base_[i];
+  solve(t, q, v, limit);
+  // The friction reported by the tangent rows, which are off (data_ holds the poses).
+  for (const SlidingContact& s : sliding_) {
+    const auto& c = std::get<model::Contact>(model_.constraints()[s.constraint]);
+    const dynamics::ContactGeometry g = dynamics::contact_geometry(c, data_);
+    const Vec3 friction = -s.mu * s.normal * s.slip_W;
+    constraints_->report_off_row_force(s.normal_row + 1, friction.dot(g.tangent_1_W));
+    constraints_->report_off_row_force(s.normal_row + 2, friction.dot(g.tangent_2_W));
+  }
+  return data_.vdot;
+}
+
+const VecX& MultibodySystem::solve(double t, const VecX& q, const VecX& v, model::Limit limit) {
   // Every row off (a model whose only constraints are open contacts): the free dynamics.
   const bool constrained = constraints_ && constraints_->rows_on() > 0;
   free_dynamics(t, q, v, limit, constrained && constraints_->finishes_forward_dynamics());
@@ -187,10 +244,12 @@ void MultibodySystem::free_dynamics(double t, const VecX& q, const VecX& v, mode
   // The force elements. Those on bodies read the poses and velocities of forward kinematics;
   // without any, only joint-space elements remain (they read q and v alone), kinematics is left
   // to the dynamics algorithm, and the zero wrenches are not passed on.
-  if (body_loads_) dynamics::forward_kinematics(model_, data_, q_, v_);
+  const bool loads = body_loads_ || !sliding_.empty();
+  if (loads) dynamics::forward_kinematics(model_, data_, q_, v_);
   dynamics::force_element_forces(model_, data_, signal_values_, q_, v_, tau_elements_, f_ext_);
+  add_sliding_friction();
   const std::span<const Vec6> f_ext =
-      body_loads_ ? std::span<const Vec6>(f_ext_) : std::span<const Vec6>();
+      loads ? std::span<const Vec6>(f_ext_) : std::span<const Vec6>();
 
   // Forward dynamics; hybrid where joints are prescribed (it also fills data_.tau with the
   // generalized forces the prescription needs).
@@ -201,6 +260,24 @@ void MultibodySystem::free_dynamics(double t, const VecX& q, const VecX& v, mode
     dynamics::aba_articulate(model_, data_, q_, v_, tau_elements_, f_ext);
     if (!factors_only) dynamics::aba_accelerate(model_, data_);
     data_.tau = tau_elements_;
+  }
+}
+
+void MultibodySystem::add_sliding_friction() {
+  for (SlidingContact& s : sliding_) {
+    const auto& c = std::get<model::Contact>(model_.constraints()[s.constraint]);
+    const dynamics::ContactGeometry g = dynamics::contact_geometry(c, data_);
+    Vec3 slip = dynamics::contact_point_velocity(c, data_, g.point_W);
+    slip -= g.normal_W * g.normal_W.dot(slip);
+    const double speed = slip.norm();
+    s.slip_W = speed > kSlipDirectionSpeed && slip.dot(s.reference_W) > 0.0 ? Vec3(slip / speed)
+                                                                            : s.reference_W;
+    const Vec3 force = -s.mu * s.normal * s.slip_W;
+    Vec6 wrench;  // in W about Wo
+    wrench << g.point_W.cross(force), force;
+    f_ext_[c.frame.body_index] += data_.X_WB[c.frame.body_index].act_force_inverse(wrench);
+    if (c.other.body_index != 0)
+      f_ext_[c.other.body_index] -= data_.X_WB[c.other.body_index].act_force_inverse(wrench);
   }
 }
 
@@ -344,9 +421,34 @@ void MultibodySystem::release(int j) {
   hybrid_mask_[j] = model_.joints()[static_cast<std::size_t>(j)].is_prescribed() ? 1 : 0;
 }
 
-void MultibodySystem::close_contact(int k, VecRef q, bool closed) {
-  const int row = constraints_->rows().first_row[static_cast<std::size_t>(k)];
-  constraints_->enable_row(data_, q, row, closed);
+void MultibodySystem::hold_contact(int k, VecRef q, ContactHold how, const Vec3& slip_W) {
+  const auto& c = std::get<model::Contact>(model_.constraints()[static_cast<std::size_t>(k)]);
+  const int first = constraints_->rows().first_row[static_cast<std::size_t>(k)];
+  const int tangents = model::constraint_rows(c) - 1;
+  std::erase_if(sliding_, [k](const SlidingContact& s) { return s.constraint == k; });
+  if (how == ContactHold::sliding && c.kinetic_friction > 0.0) {
+    SlidingContact s;
+    s.constraint = k;
+    s.normal_row = first;
+    s.mu = c.kinetic_friction;
+    sliding_.push_back(s);
+    set_slip_reference(k, slip_W);
+  }
+  const int m = static_cast<int>(sliding_.size());
+  sliding_base_.resize(m);
+  sliding_response_.resize(m, m);
+  sliding_lu_ = Eigen::PartialPivLU<MatX>(m);
+  constraints_->enable_rows(data_, q, first, 1, how != ContactHold::open);
+  if (tangents > 0)
+    constraints_->enable_rows(data_, q, first + 1, tangents, how == ContactHold::sticking);
+}
+
+void MultibodySystem::set_slip_reference(int k, const Vec3& slip_W) {
+  const double length = slip_W.norm();
+  if (!(length > 0.0)) return;  // no direction: the last one stands
+  for (SlidingContact& s : sliding_) {
+    if (s.constraint == k) s.reference_W = slip_W / length;
+  }
 }
 
 double MultibodySystem::contact_force(int k) const {

@@ -431,6 +431,42 @@ test('bouncing sphere: the floor\'s force drawn where it touches, once it holds 
   await page.close();
 });
 
+test('crate on a ramp: friction drawn against the slide, then holding it; the stick ticked and listed', async () => {
+  const r = await checkSimulationPage('block_on_incline', path.join(examples, 'block_on_incline.yaml'));
+  const summary = await r.page.evaluate(() => window.momentaReport.summary());
+  assert.deepEqual(summary.stops.map((s) => [s.kind, s.friction]), [['rest', 'sliding'], ['stick', 'sticking']]);
+  await r.page.evaluate(() => window.momentaReport.drawAllCharts());
+  const tick = await r.page.evaluate(() => [...document.querySelectorAll('#plots .plot:first-child .time-mark.stick')].map((t) => t.title));
+  assert.deepEqual(tick, ['contact ramp: sticks at t = 0.327767 s, friction 9.810 N within μs N = 11.89 N']);
+  const listed = await r.page.evaluate(() => document.querySelector('#summary details.stops').innerText);
+  assert.match(listed, /0\.327766596246\t\tcontact ramp\tstick \(friction 9\.81 N ≤ μs N = 11\.89 N\)/);
+  assert.match(listed, /\tcontact ramp\trest \(sliding\)\t/);
+  // The ramp's force N n + F t₁ on the crate (m = 2 kg): sliding up, kinetic friction μk N down the
+  // ramp tilts it back from the normal (−sin 30°, 0, cos 30°); stuck, it holds the weight, straight up.
+  const times = await r.page.evaluate(() => window.momentaReport.frameTimes());
+  const rampAt = async (time) => {
+    await r.page.evaluate((t) => { window.momentaReport.showReactions(true); window.momentaReport.setTime(t); }, time);
+    return (await r.page.evaluate(() => window.momentaReport.reactionArrows())).find((a) => a.name === 'ramp');
+  };
+  // The ramp drawn: a plane through the origin with its normal, under the crate.
+  const planes = await r.page.evaluate(() => window.momentaReport.planes());
+  assert.equal(planes.length, 1);
+  assert.equal(planes[0].name, 'ramp');
+  const s = 0.5, c = Math.sqrt(3) / 2, sliding = [-s - 0.5 * c, 0, c - 0.5 * s];
+  planes[0].normal.forEach((d, i) => assert.ok(Math.abs(d - [-s, 0, c][i]) < 1e-6, `ramp normal ${planes[0].normal}`));
+  assert.ok(Math.abs(-s * planes[0].center[0] + c * planes[0].center[2]) < 1e-6, `ramp centre ${planes[0].center}`);
+  const norm = Math.hypot(...sliding);
+  const up = await rampAt(times.find((t) => t > 0.1));
+  assert.ok(up.visible, JSON.stringify(up));
+  up.direction.forEach((d, i) => assert.ok(Math.abs(d - sliding[i] / norm) < 1e-6, `sliding: ${up.direction}`));
+  await (await r.page.$('#motion')).screenshot({ path: path.join(artifacts, 'block_on_incline-sliding.png') });
+  const held = await rampAt(times.at(-1));
+  held.direction.forEach((d, i) => assert.ok(Math.abs(d - [0, 0, 1][i]) < 1e-6, `stuck: ${held.direction}`));
+  await (await r.page.$('#motion')).screenshot({ path: path.join(artifacts, 'block_on_incline-stuck.png') });
+  await (await r.page.$('#summary')).screenshot({ path: path.join(artifacts, 'block_on_incline-stops.png') });
+  await r.page.close();
+});
+
 test('rotor on bearings: modes about the steady motion and the Campbell diagram with its critical speeds', async () => {
   const model = path.join(examples, 'rotor_on_bearings.yaml');
   const r = await checkSimulationPage('rotor', model, ['--about', 'steady', '--campbell', '500', '5000', '--duration', '0.1']);

@@ -393,6 +393,37 @@ TEST_F(SimulateCli, ContactsAreListedAndTheirImpactsSaid) {
               1e-13);
 }
 
+// Friction: info gives the coefficients; a run says where the ball stops skidding, and records the
+// friction along the plane's tangents (−μk m g while it slides, 0 once it rolls).
+TEST_F(SimulateCli, FrictionIsListedAndItsStickSaid) {
+  const std::string ball = quoted(example("skidding_ball.yaml"));
+  const CliRun info = momenta("info " + ball);
+  ASSERT_EQ(info.code, 0) << info.err;
+  EXPECT_NE(info.out.find("restitution 0, friction μs 0.12, μk 0.1\n"), std::string::npos)
+      << info.out;
+  const json lane = json::parse(momenta("info " + ball + " --json").out).at("constraints")[0];
+  EXPECT_EQ(lane.at("static_friction"), 0.12);
+  EXPECT_EQ(lane.at("kinetic_friction"), 0.1);
+  EXPECT_EQ(lane.at("rows"), 3);
+
+  const CliRun run = momenta("simulate " + ball + " --reactions --duration 2");
+  ASSERT_EQ(run.code, 0) << run.err;
+  EXPECT_NE(run.err.find("stops        contact lane holds the body from t = 0 s, sliding"),
+            std::string::npos)
+      << run.err;
+  EXPECT_NE(run.err.find("contact lane sticks at t = 1.74748798602 s"), std::string::npos)
+      << run.err;
+  const Csv csv = parse_csv(run.out);
+  const auto column = [&](const std::string& name) {
+    const auto it = std::find(csv.header.begin(), csv.header.end(), name);
+    EXPECT_NE(it, csv.header.end()) << name;
+    return static_cast<std::size_t>(it - csv.header.begin());
+  };
+  EXPECT_NEAR(csv.rows[1][column("lane.tangent_1")], -0.1 * 7 * 9.81, 1e-11);
+  EXPECT_NEAR(csv.rows.back()[column("lane.tangent_1")], 0.0, 1e-11);
+  EXPECT_EQ(csv.rows.back()[column("lane.tangent_2")], 0.0);
+}
+
 // Freedoms are counted after prescribed motion and constraints take theirs: the crank-driven
 // four-bar has three joint speeds, one prescribed, two independent loop rows (of the hinge's five:
 // the out-of-plane ones are implied) and none left; the sleigh's rolling rows leave its

@@ -258,3 +258,28 @@ def test_contacts_are_entries_of_the_summary():
         bad.add_joint("j", "free", parent="world", child="b")
         bad.add_contact("floor", body="b", restitution=2)
         bad.build()
+
+
+def test_a_skidding_ball_built_in_python_rolls_when_friction_says():
+    # A 1 kg ball of radius 0.1 m set down at 2 m/s without spin, μk = 0.2 (μs the same when
+    # kinetic_friction is left out, 0.15 here): it slides, then sticks (rolls) at
+    # t = 2 v₀ / (7 μk g) with 5 v₀ / 7, as the command line's skidding ball (docs/contacts.md).
+    b = momenta.ModelBuilder("ball")
+    b.set_gravity([0, 0, -9.81])
+    b.add_body("ball", momenta.inertia.solid_sphere(0.1, mass=1.0))
+    b.add_joint("free", "free", parent="world", child="ball", q0=[0, 0, 0.1, 1, 0, 0, 0],
+                v0=[0, 0, 0, 2, 0, 0])
+    b.add_contact("floor", body="ball", radius=0.1, friction=0.2, kinetic_friction=0.15)
+    run = momenta.simulate(b.build(), duration=1.0, dt=1e-3)
+    stops = run.summary["stops"]
+    assert [(s["kind"], s["friction"]) for s in stops] == [("rest", "sliding"), ("stick", "sticking")]
+    t_roll = 2 * 2 / (7 * 0.15 * 9.81)
+    assert abs(stops[1]["time"] - t_roll) < 1e-12 * t_roll
+    assert abs(stops[1]["friction_limit"] - 0.2 * 9.81) < 1e-12
+    assert abs(run["free.vx"][-1] - 5 * 2 / 7) < 1e-12
+    with pytest.raises(ValueError, match="kinetic friction coefficient 0.3 must be in \\[0"):
+        bad = momenta.ModelBuilder("bad")
+        bad.add_body("b", momenta.inertia.solid_sphere(0.1, mass=1.0))
+        bad.add_joint("j", "free", parent="world", child="b")
+        bad.add_contact("floor", body="b", friction=0.2, kinetic_friction=0.3)
+        bad.build()

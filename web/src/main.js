@@ -77,6 +77,7 @@ function simulationPage(app, data) {
     sweptLowest: () => Math.min(...motion.sweptPoints.map((p) => p[0] * motion.viewer.up.x + p[1] * motion.viewer.up.y + p[2] * motion.viewer.up.z)),
     showReactions: (on) => motion.setToggle('reactions', on),
     reactionArrows: () => motion.reactionArrowsDrawn(),
+    planes: () => motion.planesDrawn(),
     summary: () => data.summary,
     diagrams: () => data.diagrams && { times: data.diagrams.times, bodies: data.diagrams.bodies.map((b) => b.name) },
     showDiagram: (body, k) => diagrams.select(body, k),

@@ -64,6 +64,7 @@ export class Motion {
     this.buildVectors(frames);
     this.show(timeline.time);
     this.viewer.frame(this.sweptPoints, this.skeleton);
+    this.buildPlanes();
     timeline.onChange((t) => { if (!this.mode) this.show(t); });
   }
 
@@ -374,6 +375,38 @@ export class Motion {
   render(now) {
     if (this.mode) this.animateMode(now);
     return this.viewer.renderIfStale();
+  }
+
+  // The ground planes the contacts touch (a floor, a ramp): a translucent square on each, centred
+  // where the motion's middle projects onto it, three times the motion's size across, with its
+  // outline. A plane a body rests on is then seen under it.
+  buildPlanes() {
+    const box = new THREE.Box3();
+    this.sweptPoints.forEach((p) => box.expandByPoint(new THREE.Vector3(...p)));
+    const middle = box.getCenter(new THREE.Vector3());
+    const size = 3 * Math.max(box.getSize(new THREE.Vector3()).length(), this.length);
+    const square = new THREE.PlaneGeometry(size, size);
+    const material = new THREE.MeshStandardMaterial({ color: 0xc8b27d, transparent: true, opacity: 0.45, side: THREE.DoubleSide, depthWrite: false });
+    const outline = new THREE.LineBasicMaterial({ color: 0x8c7a4f });
+    this.planes = (this.scene.planes ?? []).map((plane) => {
+      const normal = new THREE.Vector3(...plane.normal).normalize();
+      const point = new THREE.Vector3(...plane.point);
+      const center = middle.clone().addScaledVector(normal, normal.dot(point) - normal.dot(middle));
+      const mesh = new THREE.Mesh(square, material);
+      mesh.add(new THREE.LineSegments(new THREE.EdgesGeometry(square), outline));
+      mesh.quaternion.setFromUnitVectors(new THREE.Vector3(0, 0, 1), normal);
+      mesh.position.copy(center);
+      this.viewer.scene.add(mesh);
+      return { name: plane.name, mesh, normal, size };
+    });
+    this.viewer.invalidate();
+  }
+
+  // The planes drawn (for the test hook): each one's name, centre, unit normal and side (m).
+  planesDrawn() {
+    return this.planes.map((p) => ({
+      name: p.name, center: p.mesh.position.toArray(), normal: new THREE.Vector3(0, 0, 1).applyQuaternion(p.mesh.quaternion).toArray(), size: p.size,
+    }));
   }
 
   // What the reaction arrows show now (for the test hook): each one's name, whether it is drawn,

@@ -32,14 +32,26 @@ function timeMarker(timeline) {
   };
 }
 
-// What happened at an instant — a stop's impact, rest or release, an event — as a short tick on
-// the time axis of every time plot, its text the tooltip; placed by CSS like the time marker.
+// What a stop or contact did at an instant, in words (a tick's tooltip).
+function stopText(s) {
+  const held = s.contact ? 'body' : 'joint';
+  const what = {
+    impact: 'impact', rest: `holds the ${held}`, release: `lets the ${held} go`, stick: 'sticks', slip: 'slips',
+  }[s.kind] ?? s.kind;
+  const head = `${s.contact ? `contact ${s.contact}` : `${s.joint} ${s.stop} stop`}: ${what}`
+    + `${s.kind === 'rest' && s.friction ? `, ${s.friction}` : ''} at t = ${s.time.toPrecision(6)} s`;
+  if (s.kind === 'release') return head;
+  if (s.kind === 'stick' || s.kind === 'slip') {
+    return `${head}, friction ${s.friction_needed.toPrecision(4)} N ${s.kind === 'stick' ? 'within' : 'beyond'} μs N = ${s.friction_limit.toPrecision(4)} N`;
+  }
+  return `${head}, ${s.contact ? 'normal speed' : 'rate'} ${s.rate_before.toPrecision(4)} → ${s.rate_after.toPrecision(4)} ${s.rate_unit}, impulse ${s.impulse.toPrecision(4)} ${s.impulse_unit}, ${s.energy_lost.toPrecision(3)} J lost`;
+}
+
+// What happened at an instant — a stop's impact, rest or release, a contact's stick or slip, an
+// event — as a short tick on the time axis of every time plot, its text the tooltip; placed by
+// CSS like the time marker.
 export function timeMarks(summary) {
-  const stops = (summary.stops ?? []).map((s) => ({
-    time: s.time, kind: s.kind,
-    text: `${s.contact ? `contact ${s.contact}` : `${s.joint} ${s.stop} stop`}: ${s.kind === 'impact' ? 'impact' : s.kind === 'rest' ? `holds the ${s.contact ? 'body' : 'joint'}` : `lets the ${s.contact ? 'body' : 'joint'} go`} at t = ${s.time.toPrecision(6)} s`
-      + (s.kind === 'release' ? '' : `, ${s.contact ? 'normal speed' : 'rate'} ${s.rate_before.toPrecision(4)} → ${s.rate_after.toPrecision(4)} ${s.rate_unit}, impulse ${s.impulse.toPrecision(4)} ${s.impulse_unit}, ${s.energy_lost.toPrecision(3)} J lost`),
-  }));
+  const stops = (summary.stops ?? []).map((s) => ({ time: s.time, kind: s.kind, text: stopText(s) }));
   const events = (summary.events ?? []).map((e) => ({
     time: e.time, kind: 'event', text: `event ${e.name} (${e.condition}) at t = ${e.time.toPrecision(6)} s: ${e.action}`,
   }));
@@ -160,7 +172,7 @@ export function plotsSection(data, timeline) {
     : `${data.plots.rows} rows, every one drawn.`;
   const marks = timeMarks(data.summary);
   const marked = marks.length
-    ? ` Ticks on the time axis mark the stops' impacts, rests and releases (orange, grey, blue) and the events (green): hover over one to read it.`
+    ? ` Ticks on the time axis mark the stops' and contacts' impacts, rests and releases (orange, grey, blue), where friction sticks or slips (purple, brown) and the events (green): hover over one to read it.`
     : '';
   section.append(element('p', { class: 'note' }, note, ' Drag to zoom, double-click to reset, click to move the 3-D view to that time.', marked));
   const grid = element('div', { class: 'plot-grid' });

@@ -35,6 +35,19 @@ export function summarySection(data) {
   return section;
 }
 
+// A stop's or contact's entry in words: a rest with when its bounces end and how friction holds,
+// a stick or slip with the friction it needed against the cone's μs N.
+function stopWhat(e) {
+  if (e.kind === 'stick' || e.kind === 'slip') {
+    return `${e.kind} (friction ${formatNumber(e.friction_needed, 4)} N ${e.kind === 'stick' ? '≤' : '>'} μs N = ${formatNumber(e.friction_limit, 4)} N)`;
+  }
+  if (e.kind !== 'rest') return e.kind;
+  const notes = [];
+  if (e.rest_time > e.time) notes.push(`its bounces end at ${formatNumber(e.rest_time, 12)} s`);
+  if (e.friction) notes.push(e.friction);
+  return notes.length ? `rest (${notes.join('; ')})` : 'rest';
+}
+
 // Every impact, rest and release of the joints' stops and the contacts, in time order (open when
 // there are few); a contact is named in the 'stop' column, its rates its normal speed.
 function stopsTable(stops) {
@@ -44,7 +57,7 @@ function stopsTable(stops) {
     element('summary', {}, `Stops and contacts: ${stops.length} entr${stops.length === 1 ? 'y' : 'ies'}, ${impacts} impact${impacts === 1 ? '' : 's'}, ${formatNumber(lost, 4)} J lost`),
     table(['time (s)', 'joint', 'stop', 'what', 'rate before', 'rate after', 'impulse', 'energy lost (J)'],
       stops.map((e) => [formatNumber(e.time, 12), e.contact ? '' : e.joint, e.contact ? `contact ${e.contact}` : e.stop,
-        e.kind === 'rest' && e.rest_time > e.time ? `rest (its bounces end at ${formatNumber(e.rest_time, 12)} s)` : e.kind,
+        stopWhat(e),
         `${formatNumber(e.rate_before, 6)} ${e.rate_unit}`, `${formatNumber(e.rate_after, 6)} ${e.rate_unit}`,
         `${formatNumber(e.impulse, 6)} ${e.impulse_unit}`, formatNumber(e.energy_lost, 4)])));
   if (stops.length <= 10) details.open = true;

@@ -24,7 +24,8 @@
 //   knife     no velocity across the blade (a velocity row only)
 //   coupler   q_a − ratio·q_b − offset (a row of G in joint space, no wrench)
 //   contact   the gap n·(p_centre − p_plane) − radius, a force along n at the contact point;
-//             zero while the contact is off (ConstraintRows::enabled)
+//             with friction, no slip along the plane's tangents t₁, t₂ (velocity rows); each
+//             zero while off (ConstraintRows::enabled)
 
 #include <span>
 #include <string>

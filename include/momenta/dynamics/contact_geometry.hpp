@@ -3,24 +3,34 @@
 // where its bodies touch (or would), in W — what a run's unilaterals locate and strike with and
 // what the report draws the contact's force at.
 //
-//   ground:   n the plane's normal; gap = n · (c_b − plane_point) − r_b; point c_b − r_b n
+//   plane:    n the plane's normal; gap = n · (c_b − plane_point) − r_b; point c_b − r_b n
 //   sphere:   n = (c_b − c_a) / |c_b − c_a|; gap = |c_b − c_a| − r_a − r_b; point c_a + r_a n
 //
 // c_b (c_a) the centre of body b's (a's) sphere, or b's point. The normal points from a (or the
-// plane) towards b: the contact's force on b is N n, N ≥ 0.
+// plane) towards b: the contact's force on b is N n, N ≥ 0. On another body's plane, n and the
+// plane point turn and move with that body. The tangents t₁ (the ground's — or the plane's body's
+// — x axis projected on the plane, its y axis where n is within 25° of x: plane_tangent) and
+// t₂ = n × t₁ carry a contact's friction (model::Contact, its tangent_1 and tangent_2 rows).
 
 #include "momenta/dynamics/data.hpp"
 
 namespace momenta::dynamics {
 
 struct ContactGeometry {
-  double gap = 0.0;               ///< m: ≥ 0 apart
-  Vec3 normal_W = Vec3::UnitZ();  ///< unit, from a (or the plane) towards b
-  Vec3 point_W = Vec3::Zero();    ///< the contact point (b's surface point nearest a)
+  double gap = 0.0;                  ///< m: ≥ 0 apart
+  Vec3 normal_W = Vec3::UnitZ();     ///< unit, from a (or the plane) towards b
+  Vec3 point_W = Vec3::Zero();       ///< the contact point (b's surface point nearest a)
+  Vec3 tangent_1_W = Vec3::UnitX();  ///< unit, ⊥ normal_W
+  Vec3 tangent_2_W = Vec3::UnitY();  ///< normal_W × tangent_1_W
 };
 
 /// The geometry of `contact` at data's poses (data.X_WB, set by forward_kinematics). Throws
 /// NumericalError where two spheres' centres coincide (no line of centres). No allocation.
 ContactGeometry contact_geometry(const model::Contact& contact, const Data& data);
+
+/// The velocity (W) of body b's material point at `point_W` relative to body a's (or the
+/// ground's): the contact's slip velocity once its normal part is taken out. Needs data's poses
+/// and velocities (forward_kinematics(q, v)). No allocation.
+Vec3 contact_point_velocity(const model::Contact& contact, const Data& data, const Vec3& point_W);
 
 }  // namespace momenta::dynamics

@@ -55,6 +55,13 @@ Vec3 euler_from_rotation(std::string_view sequence, const Mat3& R);
 /// middle angle).
 Mat3 euler_rate_matrix(std::string_view sequence, const Vec3& angles);
 
+/// A tangent t₁ of the plane of unit normal n: the x axis projected on it, or the y axis where
+/// |n_x| ≥ 0.9 (the projection of x would be short). A contact's friction rows lie along t₁ and
+/// n × t₁ (model::Contact).
+Vec3 plane_tangent(const Vec3& n);
+/// The frame [t₁, n × t₁, n] of a plane of unit normal n: z along n, x along plane_tangent(n).
+Mat3 plane_frame(const Vec3& n);
+
 /// True when R is orthonormal with determinant +1 to within `tolerance` (max-norm of RᵀR − I).
 bool is_rotation_matrix(const Mat3& R, double tolerance = 1e-9);
 

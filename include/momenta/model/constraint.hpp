@@ -20,8 +20,9 @@
 // | rolling     | 3    | 1             | the body's contact point with a plane has no velocity   |
 // | knife_edge  | 1    | 0             | a body point does not slide across its blade            |
 // | coupler     | 1    | 1             | q_a = ratio · q_b + offset between two 1-dof joints    |
-// | contact     | 1    | 1             | a point or sphere stays on or above the ground plane,  |
-// |             |      |               | or outside another body's sphere                       |
+// | contact     | 1, 3 | 1             | a point or sphere stays on or above the ground plane,  |
+// |             |      |               | or outside another body's sphere; with friction, the   |
+// |             |      |               | contact point does not slip while friction holds it    |
 //
 // A contact is unilateral (docs/contacts.md): its row is off while the body is clear of the
 // plane or leaving it, and a run's simulate/unilaterals.hpp switches it on (ConstraintRows::
@@ -123,30 +124,49 @@ struct JointCoupler {
   int joint_b_index = -1;
 };
 
-/// A unilateral, frictionless contact of a body's point or sphere (body b: `frame`, `radius`) with
+/// A unilateral contact of a body's point or sphere (body b: `frame`, `radius`) with
 /// the ground plane — the plane through plane_point with unit normal plane_normal (world), the body
-/// on its normal's side — or with another body's sphere (body a: `other`, `other_radius`, where
-/// other.body names a body):
+/// on its normal's side —, with another body's plane (other_plane: plane_point and plane_normal in
+/// body a's frame; `other` is then the plane's frame, z along its normal, x along a's x axis
+/// projected on it, set by ModelBuilder::build()), or with another body's sphere (body a: `other`,
+/// `other_radius`, where other.body names a body):
 ///
-///   ground:   gap = n · (p_centre − plane_point) − radius
+///   plane:    gap = n · (p_centre − plane_point) − radius  (n, plane_point in W)
 ///   sphere:   gap = |p_centre − p_other| − radius − other_radius,  n = (p_centre − p_other) / |…|
 ///
 /// p_centre = frame.p (radius 0 for a point). Where the gap closes the bodies are struck by
 /// Newton's law of restitution along n, e ∈ [0, 1] (dynamics::restitution_impact); while they
 /// touch the row holds them and its force (`normal`, N, on body b along n, > 0 pushing it away)
 /// is reported; where that force would pull, they are let go.
+///
+/// Coulomb friction (on a plane only; docs/contacts.md): with static_friction μs > 0 the
+/// contact has two more rows, tangent_1 and tangent_2 (the plane's tangents t₁, the world's — or
+/// body a's — x axis, or y where n is near x, projected on the plane, and t₂ = n × t₁), which hold
+/// the body's
+/// material point at the contact still while the friction they need stays in the cone
+/// |F_t| ≤ μs N (sticking). Beyond it the contact slides: those rows are off and the kinetic
+/// friction μk N acts against the slip. Their forces (N, on body b along t₁ and t₂) are the
+/// friction either way.
 struct Contact {
   std::string name;
   BodyFrame frame;      ///< body b: the point, or the sphere's centre (only the origin is used)
   double radius = 0.0;  ///< m, ≥ 0 (0: a point)
   Vec3 plane_normal = Vec3::UnitZ();
   Vec3 plane_point = Vec3::Zero();
-  /// Body a's sphere centre where other.body names a body; empty (or "world"): the ground plane.
+  /// Body a's sphere centre, or its plane's frame (other_plane), where other.body names a body;
+  /// empty (or "world"): the ground plane.
   BodyFrame other;
-  double other_radius = 0.0;  ///< m, ≥ 0
-  double restitution = 0.0;   ///< e ∈ [0, 1]
-  /// Whether it is with the ground plane (not another body's sphere).
+  bool other_plane = false;       ///< other.body's plane (plane_point, plane_normal in its frame)
+  double other_radius = 0.0;      ///< m, ≥ 0
+  double restitution = 0.0;       ///< e ∈ [0, 1]
+  double static_friction = 0.0;   ///< μs ≥ 0 (0: frictionless)
+  double kinetic_friction = 0.0;  ///< μk ∈ [0, μs]
+  /// Whether it is with the ground plane (not another body's plane or sphere).
   bool on_ground() const { return other.body.empty() || other.body == "world"; }
+  /// Whether it is with a plane: the ground's or another body's (not a sphere).
+  bool on_plane() const { return on_ground() || other_plane; }
+  /// Whether it has friction (μs > 0): its tangent rows exist.
+  bool has_friction() const { return static_friction > 0.0; }
 };
 
 using Constraint =
@@ -171,7 +191,7 @@ bool is_unilateral(const Constraint& constraint);
 /// Each row's label, in row order (rows are named "<constraint>.<label>"): a loop closure's x, y,
 /// z, rx, ry, rz (those it has: a hinge x … ry, a slider x, y, rx … rz), a distance link's
 /// length, a rolling contact's normal, longitudinal, lateral, a knife edge's lateral, a
-/// coupler's ratio, a contact's normal.
+/// coupler's ratio, a contact's normal (and, with friction, tangent_1, tangent_2).
 std::vector<std::string_view> constraint_row_labels(const Constraint& constraint);
 
 /// What a constraint reports as its forces, by label (CSV columns "<constraint>.<label>"):
@@ -183,7 +203,9 @@ std::vector<std::string_view> constraint_row_labels(const Constraint& constraint
 ///                               that)
 ///   knife_edge                  lateral (N, along n × blade on the body)
 ///   coupler                     effort_a, effort_b (generalized forces on joint a and b: N·m or N)
-///   contact                     normal (N, on the body along the plane normal; 0 while open)
+///   contact                     normal (N, on the body along the plane normal; 0 while open);
+///                               with friction also tangent_1, tangent_2 (N, the friction on
+///                               the body along the plane's tangents, sticking or sliding)
 std::vector<std::string_view> constraint_force_labels(const Constraint& constraint);
 
 }  // namespace momenta::model

@@ -1,8 +1,9 @@
 #pragma once
 // A run's unilateral constraints: joint stops (model::JointLimits on revolute and prismatic
 // joints, q ≥ lower and q ≤ upper) and contacts (model::Contact: a body's point or sphere on or
-// above the ground plane, gap ≥ 0). Each is open (the mechanism moves freely), striking (an
-// impact) or closed (it holds the mechanism while it pushes).
+// above a plane — the ground's or another body's — or outside another body's sphere, gap ≥ 0). Each
+// is open (the mechanism moves freely), striking (an impact) or closed (it holds the mechanism
+// while it pushes).
 //
 // Open: after every step the gap of each (q − lower, upper − q; a contact's distance above the
 // plane) is checked; where it has become negative inside the step, the first time it reaches
@@ -34,8 +35,17 @@
 // without the run moving on stop the run with an error naming the stop or contact, the time and
 // the state, not a hang.
 //
-// Not yet: stops on a model with constraints (refused by the Simulation), friction, contacts
-// between bodies, and several striking at one instant, which strike one after another in order.
+// Friction (a contact with a plane, the ground's or a body's, with μs > 0). A contact that closes
+// slipping slides: its normal row holds and the kinetic friction μk N acts against the slip
+// (MultibodySystem::hold_contact). It stops slipping where the slip velocity's component along its
+// direction at the step's start passes zero (located as above): there it sticks — every row on, the
+// state projected onto them — if the friction that needs, |F_t|, is within the cone μs N; else it
+// slides on, against that friction. A contact that closes without slip sticks on the same test. A
+// sticking contact slides from the instant |F_t| reaches μs N (located as above), against F_t.
+// Impacts are frictionless at the striking contact; sticking contacts hold through an impact.
+//
+// Not yet: stops on a model with constraints (refused by the Simulation), friction between two
+// spheres and at impact.
 
 #include <limits>
 #include <string>
@@ -57,10 +67,19 @@ enum class StopEventKind {
   impact,   ///< struck; the mechanism rebounds
   rest,     ///< struck (or found closed at the start) and holds
   release,  ///< let go: the force it needed would pull
+  stick,    ///< a sliding contact's slip reached zero and friction holds it there
+  slip,     ///< a contact's friction cannot hold it (the cone is left): it slides
 };
 
-/// "impact", "rest" or "release".
+/// "impact", "rest", "release", "stick" or "slip".
 std::string_view stop_event_kind_name(StopEventKind kind);
+
+/// How a closed contact's friction holds after an event: not at all (a stop, a frictionless or
+/// open contact), sticking, or sliding.
+enum class FrictionState { none, sticking, sliding };
+
+/// "", "sticking" or "sliding".
+std::string_view friction_state_name(FrictionState state);
 
 /// One thing a stop or a contact did in a run.
 struct StopEvent {
@@ -69,7 +88,8 @@ struct StopEvent {
   std::string contact;  ///< a contact's name (empty for a stop)
   bool upper = false;   ///< a stop's: its upper (true) or lower one
   double time = 0.0;    ///< s
-  /// A stop's coordinate rate (rad/s or m/s); a contact's normal speed (m/s, > 0 leaving).
+  /// A stop's coordinate rate (rad/s or m/s); a contact's normal speed (m/s, > 0 leaving); at a
+  /// stick or slip, the contact point's slip speed (m/s; 0 after a stick).
   double rate_before = 0.0, rate_after = 0.0;
   /// A stop's generalized impulse on its coordinate (N·m·s or N·s); a contact's normal impulse
   /// (N·s).
@@ -78,6 +98,11 @@ struct StopEvent {
   /// A rest after a bouncing sequence: the time the cut-short bounces end (the Zeno limit,
   /// time + 2|v⁺| / (|a| (1 − e))); the time itself otherwise.
   double rest_time = 0.0;
+  /// A contact with friction, after a rest, stick or slip: whether it sticks or slides.
+  FrictionState friction = FrictionState::none;
+  /// A stick or slip: the friction force sticking needs there, |F_t|, and what the cone gives,
+  /// μs N (N).
+  double friction_needed = 0.0, friction_limit = 0.0;
 };
 
 class Unilaterals {
@@ -109,6 +134,11 @@ class Unilaterals {
            integrate::State& state, StopEvent& event);
 
  private:
+  // How an entry holds: open; closed (a stop holds its joint, a contact's rows are on — it
+  // sticks where it has friction); or sliding (a contact's normal row on, kinetic friction).
+  enum class Hold : char { open, closed, sliding };
+  // What check() found one about to do.
+  enum class Pending { reach, release, slip, stop_slipping };
   struct Entry {
     bool contact = false;  // a contact (constraint `index`), or a stop (on joint `index`)
     int index = 0;
@@ -119,6 +149,7 @@ class Unilaterals {
     // A gap this far below zero is round-off, not a crossing, so that a mechanism resting on it
     // with no force either way is not struck over and over.
     double slack = 0.0;
+    double static_friction = 0.0;  // a contact's μs (0: frictionless)
   };
   const model::Contact& contact_of(const Entry& e) const;
   // The signed gap of a state (≥ 0 off it; m or rad).
@@ -147,15 +178,40 @@ class Unilaterals {
   // A contact's impact: the state just after, its normal impulse returned; closed contacts that
   // would pull are opened.
   double contact_impact(system::MultibodySystem& system, const Entry& e, integrate::State& at);
-  void close(system::MultibodySystem& system, const Entry& e, integrate::State& at);
+  // Closes e at `at`: a stop holds; a contact holds its body on the plane, sliding where its
+  // contact point slips (faster than kSlipAtRest) or friction cannot hold it, sticking otherwise.
+  void close(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+             const Entry& e, integrate::State& at);
   void open(system::MultibodySystem& system, const Entry& e, const integrate::State& at);
+  // A contact with friction at `at`: sticks if the cone holds it there, else slides against the
+  // friction sticking would need (the state projected onto its rows; `event` gets the state and
+  // the forces).
+  void stick_or_slip(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+                     const Entry& e, integrate::State& at, StopEvent& event);
+  void hold_contact(system::MultibodySystem& system, const Entry& e, integrate::State& at, Hold how,
+                    const Vec3& slip_W = Vec3::Zero());
+  // A contact's slip velocity at `state` (W, along the plane).
+  Vec3 slip_velocity(const Entry& e, const integrate::State& state);
+  // After an evaluation of a sticking contact at `state`: the friction its tangent rows exert
+  // (W, N).
+  Vec3 sticking_friction(const system::MultibodySystem& system, const Entry& e,
+                         const integrate::State& state);
+  // μs N − |F_t| of a sticking contact at `state` (evaluates `advanced`): < 0 outside the cone.
+  double cone_margin(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+                     const Entry& e, const integrate::State& state);
+  // Sets each sliding contact's reference slip direction from `state` (see
+  // MultibodySystem::set_slip_reference).
+  void set_slip_references(system::MultibodySystem& system, const integrate::State& state);
+  std::size_t slot(const Entry& e) const { return static_cast<std::size_t>(&e - entries_.data()); }
 
   const model::Model& model_;
-  double rest_flight_;          // s: a rebound flight shorter than this closes it
-  std::vector<Entry> entries_;  // every finite stop, lower before upper, in joint order; then
-                                // the contacts in constraint order
-  std::vector<char> closed_;    // per entry: 1 where it holds
-  int pending_ = -1;            // the one check() found acting
+  double rest_flight_;                // s: a rebound flight shorter than this closes it
+  std::vector<Entry> entries_;        // every finite stop, lower before upper, in joint order; then
+                                      // the contacts in constraint order
+  std::vector<Hold> hold_;            // per entry
+  std::vector<Vec3> slip_reference_;  // per entry: a sliding contact's reference slip direction
+  int pending_ = -1;                  // the one check() found acting
+  Pending pending_action_ = Pending::reach;
   double last_act_ = -std::numeric_limits<double>::infinity();  // when act() last acted
   int acts_at_last_ = 0;     // how often it acted then: a run that makes no progress stops
   double start_rate_ = 0.0;  // first_contact: the rate at the step's start

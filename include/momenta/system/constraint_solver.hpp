@@ -30,6 +30,7 @@
 // accelerations (the articulated-body factors of aba at that state, or M's Cholesky factor). The
 // residuals stay at round-off; no Baumgarte terms, nothing to tune.
 
+#include <cassert>
 #include <memory>
 #include <span>
 #include <string>
@@ -98,11 +99,20 @@ class ConstraintSolver {
   /// initial one, or the last consistent_state()): redundant, they carry no force.
   const std::vector<std::string>& redundant_rows() const { return redundant_; }
 
-  /// Switches row `row` on or off — a unilateral contact's (model::Contact), which a run closes
-  /// while the plane holds the body and opens where it lets go — and takes the rank of the rows
-  /// then on at configuration q as the reference (and the redundant rows there). Overwrites
-  /// data. Allocates nothing after the first call; forms M (an event's cost, not a step's).
-  void enable_row(dynamics::Data& data, VecRef q, int row, bool on);
+  /// Switches rows [first, first + count) on or off — a unilateral contact's (model::Contact),
+  /// which a run closes while the plane holds the body, slides or sticks, and opens where it
+  /// lets go — and takes the rank of the rows then on at configuration q as the reference (and
+  /// the redundant rows there). Overwrites data. Allocates nothing after the first call; forms M
+  /// (an event's cost, not a step's).
+  void enable_rows(dynamics::Data& data, VecRef q, int first, int count, bool on);
+  /// Sets the multiplier of a row that is off: a force it reports without exerting it — a
+  /// sliding contact's kinetic friction along its tangent rows, which MultibodySystem applies as
+  /// a load — so that whoever reads multipliers() reads the friction. add_forces() adds nothing
+  /// for it (an off row's wrench is zero). No allocation.
+  void report_off_row_force(int row, double value) {
+    assert(!rows_.enabled[static_cast<std::size_t>(row)]);
+    lambda_[row] = value;
+  }
   /// How many rows are on: 0 where the only constraints are open contacts, whose motion is then
   /// the free one (MultibodySystem skips the solver; λ is 0).
   int rows_on() const { return rows_on_; }

@@ -27,12 +27,21 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/LU>
+
 #include "momenta/dynamics/data.hpp"
 #include "momenta/integrate/second_order_system.hpp"
 #include "momenta/model/model.hpp"
 #include "momenta/system/constraint_solver.hpp"
 
 namespace momenta::system {
+
+/// How a run holds a contact (model::Contact; MultibodySystem::hold_contact).
+enum class ContactHold {
+  open,      ///< every row off: the bodies move freely
+  sliding,   ///< the normal row on; kinetic friction μk N against the slip, applied as a load
+  sticking,  ///< every row on (the normal alone where the contact has no friction)
+};
 
 /// Energy of the system at one instant (J).
 struct Energy {
@@ -148,10 +157,25 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   /// exerts on its coordinate (N·m or N): what the joint's motion needs less the force elements'.
   double stop_force(int j) const;
 
-  /// Closes (or opens) contact k — constraint k, a model::Contact — at configuration q: its row
-  /// holds the body on the plane (ConstraintSolver::enable_row). The caller puts the state on
-  /// the plane with no normal speed first. Overwrites data().
-  void close_contact(int k, VecRef q, bool closed = true);
+  /// Holds contact k — constraint k, a model::Contact — as `how` from configuration q
+  /// (ConstraintSolver::enable_rows): its rows on while it holds (the normal alone while it
+  /// slides), off while open. Sliding with kinetic friction μk > 0, evaluations apply the force
+  /// −μk N ŝ at the contact point, ŝ the direction of the contact point's slip velocity v_t —
+  /// while v_t · ŝ_ref > 0 and |v_t| > 1e-12 m/s, else ŝ_ref (see set_slip_reference), which
+  /// `slip_W` (along the plane, not zero) sets first. The normal force N depends on the friction
+  /// and the friction on N: both are affine in the loads, so N comes exactly from the solves with
+  /// each sliding contact's friction at unit N and none (Painlevé's paradox — no N ≥ 0 or many
+  /// — is a NumericalError). The caller puts the state on the plane with no normal speed (and no
+  /// slip where it sticks) first. Overwrites data(). Allocates only when the set of sliding
+  /// contacts changes.
+  void hold_contact(int k, VecRef q, ContactHold how, const Vec3& slip_W = Vec3::Zero());
+  /// Sets sliding contact k's reference direction ŝ_ref (along the plane; normalized here, and
+  /// ignored where zero): the friction keeps acting against it, not turning round, where the slip
+  /// speed passes zero inside a step (the run locates that instant; simulate/unilaterals.hpp sets
+  /// the reference from the slip at each step's start). No allocation.
+  void set_slip_reference(int k, const Vec3& slip_W);
+  /// The contacts that slide, in the order they began to.
+  int sliding_contacts() const { return static_cast<int>(sliding_.size()); }
   /// After an evaluation: the normal force (N) closed contact k exerts on its body, > 0 pushing
   /// it off the plane; 0 while open.
   double contact_force(int k) const;
@@ -169,8 +193,13 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
 
  private:
   // evaluate() without the bodies' accelerations: signals (from the side `limit` at a
-  // breakpoint), prescribed state, kinematics, force elements, forward dynamics.
+  // breakpoint), prescribed state, kinematics, force elements, forward dynamics; with sliding
+  // contacts, the normal forces their friction needs (see hold_contact).
   const VecX& compute(double t, const VecX& q, const VecX& v, model::Limit limit);
+  // compute() with each sliding contact's friction at the normal force it is given.
+  const VecX& solve(double t, const VecX& q, const VecX& v, model::Limit limit);
+  // Adds each sliding contact's friction −μk N ŝ to f_ext_ (needs data_'s poses and velocities).
+  void add_sliding_friction();
   // compute() up to the constraints: signals, the prescribed state, force elements and the
   // unconstrained forward dynamics into data_ — only aba_articulate's passes where `factors_only`
   // (the constraint solver finishes aba with the constraint forces).
@@ -208,6 +237,21 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   std::vector<double> held_value_;
   std::vector<char> hybrid_mask_;
   int holding_ = 0;
+  // The contacts that slide (hold_contact): constraint index, its normal row, μk, the reference
+  // slip direction, the normal force their friction is taken at, and the direction it acts
+  // against at the last evaluation.
+  struct SlidingContact {
+    int constraint = 0;
+    int normal_row = 0;
+    double mu = 0.0;
+    Vec3 reference_W = Vec3::UnitX();
+    double normal = 0.0;
+    Vec3 slip_W = Vec3::UnitX();
+  };
+  std::vector<SlidingContact> sliding_;
+  VecX sliding_base_;      // their normal forces with no friction
+  MatX sliding_response_;  // I − ∂N_i/∂N_j through friction
+  Eigen::PartialPivLU<MatX> sliding_lu_;
   bool body_loads_ = false;  // some element acts on bodies (needs poses; f_ext is not zero)
   bool conserves_energy_ = false;
   bool conserves_angular_momentum_ = false;

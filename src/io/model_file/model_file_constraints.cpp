@@ -33,7 +33,7 @@ const std::vector<EntryType>& constraint_types() {
       {"coupler", {"joint_a", "joint_b", "ratio", "offset", "offset_deg"}},
       {"contact",
        {"body", "point", "radius", "normal", "plane_point", "other_body", "other_point",
-        "other_radius", "restitution"}},
+        "other_radius", "restitution", "friction"}},
   };
   return types;
 }
@@ -81,6 +81,30 @@ model::BodyFrame read_end(const YamlNode& e, const Context& ctx, std::string_vie
   const Vec3 axis = e.has(axis_key) ? read_unit(e.at(axis_key)) : Vec3::UnitZ();
   f.X_BF = Transform(z_along(axis), e.find_vec3(point_key).value_or(Vec3::Zero()));
   return f;
+}
+
+// A contact's Coulomb friction: one coefficient for both (friction: 0.4), or the two
+// (friction: {static: 0.5, kinetic: 0.4}, kinetic ≤ static).
+void read_friction(const YamlNode& node, model::Contact& c) {
+  if (!node.is_map()) {
+    c.static_friction = c.kinetic_friction = node.as_double(Bound::kNonNegative);
+  } else {
+    node.check_keys({"static", "kinetic"});
+    c.static_friction = node.number("static", Bound::kNonNegative);
+    c.kinetic_friction =
+        node.find_number("kinetic", Bound::kNonNegative).value_or(c.static_friction);
+    if (c.kinetic_friction > c.static_friction) {
+      node.at("kinetic").fail(fmt::format(
+          "{} is above the static coefficient {}: sliding friction is no greater than the "
+          "friction that can hold",
+          c.kinetic_friction, c.static_friction));
+    }
+  }
+  if (c.static_friction > 0.0 && !c.on_plane()) {
+    node.fail(
+        "friction between two bodies' spheres is not modelled yet (docs/contacts.md); friction "
+        "acts at contacts with a plane, the ground's or a body's");
+  }
 }
 
 model::Constraint read_constraint(const YamlNode& e, std::string_view type, const std::string& name,
@@ -137,15 +161,25 @@ model::Constraint read_constraint(const YamlNode& e, std::string_view type, cons
     c.frame.X_BF.p = e.find_vec3("point").value_or(Vec3::Zero());
     c.radius = e.has("radius") ? e.number("radius", Bound::kNonNegative) : 0.0;
     if (e.has("other_body")) {
-      // Another body's sphere instead of the ground plane.
-      for (const char* key : {"normal", "plane_point"}) {
-        if (e.has(key))
-          e.at(key).fail("a contact with another body's sphere has no plane; leave it out");
-      }
       c.other.body = moving_body(e.at("other_body"), ctx,
                                  "leave other_body out for the ground plane, or name a body");
-      c.other.X_BF.p = e.find_vec3("other_point").value_or(Vec3::Zero());
-      c.other_radius = e.has("other_radius") ? e.number("other_radius", Bound::kNonNegative) : 0.0;
+      c.other_plane = e.has("normal") || e.has("plane_point");
+      if (c.other_plane) {
+        // The other body's plane, in its frame.
+        for (const char* key : {"other_point", "other_radius"}) {
+          if (e.has(key)) {
+            e.at(key).fail(
+                "a contact with another body's plane (normal, plane_point) has no other sphere; "
+                "give the plane or the sphere");
+          }
+        }
+        if (e.has("normal")) c.plane_normal = read_unit(e.at("normal"));
+        c.plane_point = e.find_vec3("plane_point").value_or(Vec3::Zero());
+      } else {  // the other body's sphere
+        c.other.X_BF.p = e.find_vec3("other_point").value_or(Vec3::Zero());
+        c.other_radius =
+            e.has("other_radius") ? e.number("other_radius", Bound::kNonNegative) : 0.0;
+      }
     } else {
       for (const char* key : {"other_point", "other_radius"}) {
         if (e.has(key)) e.at(key).fail("give other_body: the body whose sphere this is");
@@ -162,6 +196,7 @@ model::Constraint read_constraint(const YamlNode& e, std::string_view type, cons
                               c.restitution));
       }
     }
+    if (e.has("friction")) read_friction(e.at("friction"), c);
     return c;
   }
   if (type == "knife_edge") {

@@ -145,6 +145,78 @@ TEST_F(ConstraintRowsTest, ForcesDeliverThePowerOfTheirMultipliers) {
   }
 }
 
+// Contacts (model::Contact), switched on as a run switches them on: a point with friction on a
+// tilted ground plane, a sphere with friction on another body's plane (both turning and moving),
+// and two spheres. Their rows against finite differences as above: G v the rate of each gap, and
+// G v̇ + k the rate of every row's G v (the tangent rows: the slip along the plane's tangents).
+TEST(ConstraintRows, ContactRowsSwitchedOnAreTheRatesOfTheirGapsAndSlips) {
+  model::ModelBuilder b;
+  add_tree_of_joint_types(b);
+  const Transform X(Eigen::AngleAxisd(0.7, Vec3(-1, 2, 1).normalized()).toRotationMatrix(),
+                    Vec3(0.05, 0.1, -0.2));
+  model::Contact ground;
+  ground.name = "floor";
+  ground.frame = frame("b3", X);
+  ground.plane_normal = Vec3(0, 0.6, 0.8);
+  ground.plane_point = Vec3(0, 0, -0.1);
+  ground.static_friction = 0.5;
+  ground.kinetic_friction = 0.4;
+  model::Contact on_body = ground;
+  on_body.name = "on_body";
+  on_body.frame = frame("b2", X);
+  on_body.radius = 0.05;
+  on_body.other = frame("b4", {});
+  on_body.other_plane = true;
+  on_body.plane_normal = Vec3(0.48, 0.6, 0.64);
+  on_body.plane_point = Vec3(0.1, 0.2, 0.3);
+  model::Contact spheres;
+  spheres.name = "spheres";
+  spheres.frame = frame("b5", X);
+  spheres.radius = 0.1;
+  spheres.other = frame("b1", X.inverse());
+  spheres.other_radius = 0.2;
+  for (const model::Contact& c : {ground, on_body, spheres}) b.add_constraint(c);
+  const model::Model model = b.build();
+  dynamics::Data data(model);
+  dynamics::ConstraintRows rows(model);
+  ASSERT_EQ(rows.count, 3 + 3 + 1);
+  EXPECT_EQ(rows.names[4], "on_body.tangent_1");
+  std::fill(rows.enabled.begin(), rows.enabled.end(), 1);
+  const auto rows_at = [&](const VecX& q, const VecX& v) {
+    dynamics::forward_kinematics(model, data, q, v);
+    dynamics::constraint_equations(model, data, q, rows,
+                                   dynamics::RowTerms::with_velocity_products);
+  };
+  std::mt19937 rng(11);
+  const double h = 1e-5;
+  for (int trial = 0; trial < 20; ++trial) {
+    const RandomState s = random_state(model, rng);
+    rows_at(s.q, s.v);
+    const VecX Gv = rows.G * s.v;
+    const VecX accel = rows.G * s.vdot + rows.bias;
+    const auto position_at = [&](double t) {
+      rows_at(model::integrate(model, s.q, s.v, t), s.v);
+      return VecX(rows.position);
+    };
+    const VecX rate = (position_at(h) - position_at(-h)) / (2 * h);
+    const auto Gv_at = [&](double t) {
+      const VecX q = model::integrate(model, s.q, t * s.v + 0.5 * t * t * s.vdot, 1.0);
+      const VecX v = s.v + t * s.vdot;
+      rows_at(q, v);
+      return VecX(rows.G * v);
+    };
+    const VecX Gv_rate = (Gv_at(h) - Gv_at(-h)) / (2 * h);
+    for (int i = 0; i < rows.count; ++i) {
+      if (rows.holonomic[i]) {
+        EXPECT_NEAR(Gv[i], rate[i], 1e-7 * (1 + std::abs(Gv[i])))
+            << rows.names[i] << " trial " << trial;
+      }
+      EXPECT_NEAR(accel[i], Gv_rate[i], 1e-7 * (1 + std::abs(accel[i])))
+          << rows.names[i] << " trial " << trial;
+    }
+  }
+}
+
 TEST(ConstraintRows, DegenerateDirectionIsNamed) {
   model::ModelBuilder b;
   b.add_body("arm", inertia::box(inertia::Amount::mass(1.0), Vec3(0.1, 0.2, 0.3)));

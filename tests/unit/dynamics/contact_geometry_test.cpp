@@ -1,6 +1,6 @@
-// dynamics::contact_geometry against the geometry worked by hand: a ball above a tilted plane and
-// two balls on rotated bodies — gap, normal and contact point — and the error where two centres
-// coincide.
+// dynamics::contact_geometry against the geometry worked by hand: a ball above a tilted plane,
+// two balls on rotated bodies and a ball on a turned body's plane — gap, normal, contact point and
+// tangents — and the error where two centres coincide.
 
 #include "momenta/dynamics/contact_geometry.hpp"
 
@@ -18,7 +18,8 @@ namespace {
 
 // Two free balls; contact 0 is ball b's sphere (r = 0.1 at [0.2, 0, 0] in b) on a plane tilted
 // 30° about x through [0, 0, -1]; contact 1 is b's sphere on a's sphere (r = 0.3 at [0, 0, 0.5]
-// in a).
+// in a); contact 2 is b's sphere on a plane of a's (normal [0, 0.6, 0.8] through [0, 0, 0.5] in
+// a), with friction.
 const char* const kModel =
     "bodies: [{name: a, shape: sphere, mass: 1, radius: 0.3}, {name: b, shape: sphere, mass: 1, "
     "radius: 0.1}]\n"
@@ -29,7 +30,9 @@ const char* const kModel =
     "  - {name: tilted, type: contact, body: b, point: [0.2, 0, 0], radius: 0.1, normal: [0, "
     "-0.5, 0.8660254037844386], plane_point: [0, 0, -1]}\n"
     "  - {name: balls, type: contact, body: b, point: [0.2, 0, 0], radius: 0.1, other_body: a, "
-    "other_point: [0, 0, 0.5], other_radius: 0.3}\n";
+    "other_point: [0, 0, 0.5], other_radius: 0.3}\n"
+    "  - {name: on_a, type: contact, body: b, point: [0.2, 0, 0], radius: 0.1, other_body: a, "
+    "normal: [0, 0.6, 0.8], plane_point: [0, 0, 0.5], friction: 0.3}\n";
 
 TEST(ContactGeometry, GapNormalAndPointAsWorkedByHand) {
   const model::Model model = io::parse_model_file(kModel, "geometry.yaml", ".").model;
@@ -56,6 +59,20 @@ TEST(ContactGeometry, GapNormalAndPointAsWorkedByHand) {
   EXPECT_NEAR(s.gap, 0.3 * std::sqrt(5.0) - 0.4, 1e-15);
   EXPECT_LT((s.normal_W - e).norm(), 1e-15);
   EXPECT_LT((s.point_W - (Vec3(1, 2, 3.5) + 0.3 * e)).norm(), 1e-15);
+
+  // a's plane: a turned 90° about z carries its normal [0, 0.6, 0.8] to [−0.6, 0, 0.8] and its
+  // point to [1, 2, 3.5]; t₁ is a's x axis ([0, 1, 0] in W) projected on the plane, already on it.
+  const auto& on_a = std::get<model::Contact>(model.constraints()[2]);
+  const ContactGeometry p = contact_geometry(on_a, data);
+  const Vec3 m(-0.6, 0, 0.8);
+  EXPECT_NEAR(p.gap, m.dot(centre - Vec3(1, 2, 3.5)) - 0.1, 1e-15);
+  EXPECT_LT((p.normal_W - m).norm(), 1e-15);
+  EXPECT_LT((p.point_W - (centre - 0.1 * m)).norm(), 1e-15);
+  EXPECT_LT((p.tangent_1_W - Vec3(0, 1, 0)).norm(), 1e-15);
+  EXPECT_LT((p.tangent_2_W - m.cross(Vec3(0, 1, 0))).norm(), 1e-15);
+  // The ground's tangents: the world's x on the tilted plane, and n × t₁.
+  EXPECT_LT((g.tangent_1_W - Vec3::UnitX()).norm(), 1e-15);
+  EXPECT_LT((g.tangent_2_W - n.cross(Vec3::UnitX())).norm(), 1e-15);
 
   // The centres on each other: no line of centres.
   q.segment<3>(7) = Vec3(1.0, 1.8, 3.5);  // b's sphere centre then at a's, [1, 2, 3.5]

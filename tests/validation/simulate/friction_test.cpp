@@ -1,0 +1,266 @@
+// Coulomb friction at contacts with the ground (model::Contact with μs, μk; simulate/
+// unilaterals.hpp) against the textbook's closed forms:
+// - a ball set down skidding with v₀ and no spin (examples/skidding_ball.yaml): it rolls from
+//   t = 2 v₀ / (7 μk g) at 5 v₀ / 7, friction −μk m g until then and none after, the energy
+//   friction took m v₀² / 7;
+// - a crate thrown up a rough ramp (examples/block_on_incline.yaml): it decelerates at
+//   g (sin θ + μk cos θ), stops at v₀ / that, and with tan θ < μs sticks there, held by m g sin θ;
+//   with tan θ > μs it slides back at g (sin θ − μk cos θ);
+// - a crate set down at rest on a ramp with tan θ < μs moves less than 1e-12 m in 100 s (no
+//   creep), and with tan θ > μs slides at g (sin θ − μk cos θ) from the start;
+// - a block on a moving belt held by a spring (examples/belt_stick_slip.yaml: a contact with
+//   another body's plane): the stick–slip cycle's instants, positions and friction from the
+//   piecewise closed form;
+// - the model file's errors for friction.
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "momenta/io/model_file.hpp"
+#include "momenta/simulate/simulation.hpp"
+#include "unilateral_runs.hpp"
+
+namespace momenta::simulate {
+namespace friction {
+namespace {
+
+using namespace unilateral_test;
+
+constexpr double kTheta = std::numbers::pi / 6.0;  // the ramp: 30°
+
+TEST(Friction, SkiddingBallRollsFromTheClosedFormsInstant) {
+  const double m = 7.0, r = 0.11, v0 = 6.0, mu_k = 0.1;
+  const double t_roll = 2.0 * v0 / (7.0 * mu_k * kG), v_roll = 5.0 * v0 / 7.0;
+  const model::Model model = io::read_model_file("examples/skidding_ball.yaml").model;
+  for (const std::string integrator : {"rk4", "dopri5"}) {
+    SCOPED_TRACE(integrator);
+    const UnilateralRun run = run_unilaterals(model, integrator, 1e-3, 3.0, /*reactions=*/true);
+    const std::vector<StopEvent>& events = run.summary.stop_events;
+    ASSERT_EQ(events.size(), 2u);
+    EXPECT_EQ(events[0].kind, StopEventKind::rest);
+    EXPECT_EQ(events[0].friction, FrictionState::sliding);
+    EXPECT_EQ(events[0].time, 0.0);
+    EXPECT_EQ(events[1].kind, StopEventKind::stick);
+    EXPECT_EQ(events[1].friction, FrictionState::sticking);
+    EXPECT_EQ(events[1].contact, "lane");
+    // The slip is linear in time and the integrators exact on it: the instant to the locator's
+    // 1e-14 and the round-off the speeds gather over 1 750 steps (~1e-12 m/s at a slip
+    // deceleration of 3.4 m/s²).
+    EXPECT_NEAR(events[1].time, t_roll, 1e-12 * t_roll);
+    EXPECT_LT(events[1].rate_before, 1e-13);
+    EXPECT_NEAR(events[1].friction_limit, 0.12 * m * kG, 1e-12);
+    EXPECT_LT(events[1].friction_needed, 1e-12);  // rolling on the level: no friction at all
+
+    const int vx = run.table.column("free.vx"), wy = run.table.column("free.wy");
+    const int normal = run.table.column("lane.normal");
+    const int f1 = run.table.column("lane.tangent_1"), f2 = run.table.column("lane.tangent_2");
+    const int kinetic = run.table.column("energy_kinetic");
+    const double kinetic_0 = 0.5 * m * v0 * v0;
+    // Speeds to the round-off of a thousand steps' sums (1e-12 of v₀); forces to 1e-12 of the
+    // weight (the sliding normal force comes from three solves, see MultibodySystem).
+    for (const std::vector<double>& row : run.table.rows) {
+      const double t = row[0];
+      EXPECT_NEAR(row[normal], m * kG, 1e-12 * m * kG) << t;
+      EXPECT_EQ(row[f2], 0.0) << t;
+      if (t < events[1].time) {
+        EXPECT_NEAR(row[vx], v0 - mu_k * kG * t, 1e-12 * v0) << t;
+        EXPECT_NEAR(row[wy], 5.0 * mu_k * kG * t / (2.0 * r), 1e-12 * v0 / r) << t;
+        EXPECT_NEAR(row[f1], -mu_k * m * kG, 1e-12 * m * kG) << t;
+      } else if (t > events[1].time) {
+        EXPECT_NEAR(row[vx], v_roll, 1e-12 * v0) << t;
+        EXPECT_NEAR(row[wy], v_roll / r, 1e-12 * v0 / r) << t;
+        EXPECT_NEAR(row[f1], 0.0, 1e-12 * m * kG) << t;
+        EXPECT_NEAR(kinetic_0 - row[kinetic], m * v0 * v0 / 7.0, 1e-10) << t;
+      }
+    }
+  }
+}
+
+// The 2 kg crate of examples/block_on_incline.yaml on its 30° ramp (it translates: a joint up the
+// ramp, one along its normal), with μs, μk and its speed up the ramp v0.
+std::string crate(double mu_s, double mu_k, double v0) {
+  return fmt::format(
+      "gravity: [0, 0, -9.81]\n"
+      "bodies: [{{name: carriage, mass: 0}}, {{name: crate, shape: box, mass: 2.0, size: [0.4, "
+      "0.3, 0.2]}}]\n"
+      "joints:\n"
+      "  - {{name: up, type: prismatic, parent: world, child: carriage, axis: [1, 0, 0], v0: {},\n"
+      "     in_parent: {{quaternion: [{:.17g}, 0, {:.17g}, 0]}}}}\n"
+      "  - {{name: lift, type: prismatic, parent: carriage, child: crate, axis: [0, 0, 1], q0: "
+      "0.1}}\n"
+      "constraints: [{{name: ramp, type: contact, body: crate, point: [0, 0, -0.1], normal: "
+      "[{:.17g}, 0, {:.17g}], friction: {{static: {}, kinetic: {}}}}}]\n",
+      v0, std::cos(kTheta / 2), -std::sin(kTheta / 2), -std::sin(kTheta), std::cos(kTheta), mu_s,
+      mu_k);
+}
+
+// The crate's distance up the ramp, or its speed up it, in a row.
+double up_the_ramp(const UnilateralRun& run, const std::vector<double>& row, bool rate) {
+  return row[run.table.column(rate ? "up.position_rate" : "up.position")];
+}
+
+TEST(Friction, CrateThrownUpTheRampStopsAndSticks) {
+  const double m = 2.0, v0 = 3.0, mu_k = 0.5, mu_s = 0.7;
+  const double a = kG * (std::sin(kTheta) + mu_k * std::cos(kTheta));
+  const double t_stop = v0 / a, d = v0 * v0 / (2.0 * a);
+  const model::Model model = io::read_model_file("examples/block_on_incline.yaml").model;
+  const UnilateralRun run = run_unilaterals(model, "rk4", 1e-3, 2.0, /*reactions=*/true);
+  const std::vector<StopEvent>& events = run.summary.stop_events;
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[0].friction, FrictionState::sliding);
+  EXPECT_EQ(events[1].kind, StopEventKind::stick);
+  EXPECT_NEAR(events[1].time, t_stop, 1e-14 * 8);
+  EXPECT_NEAR(events[1].friction_needed, m * kG * std::sin(kTheta), 1e-12);
+  EXPECT_NEAR(events[1].friction_limit, mu_s * m * kG * std::cos(kTheta), 1e-12);
+  // The rows at the stick's instant itself (before and after it) are left out.
+  const int normal = run.table.column("ramp.normal"), f1 = run.table.column("ramp.tangent_1");
+  for (const std::vector<double>& row : run.table.rows) {
+    const double t = row[0];
+    EXPECT_NEAR(row[normal], m * kG * std::cos(kTheta), 1e-12) << t;
+    if (t < events[1].time) {
+      EXPECT_NEAR(up_the_ramp(run, row, true), v0 - a * t, 1e-12) << t;
+      EXPECT_NEAR(up_the_ramp(run, row, false), v0 * t - 0.5 * a * t * t, 1e-12) << t;
+      // t₁ is the world's x on the plane: up the ramp. Friction points down it.
+      EXPECT_NEAR(row[f1], -mu_k * m * kG * std::cos(kTheta), 1e-12) << t;
+    } else if (t > events[1].time) {
+      EXPECT_NEAR(up_the_ramp(run, row, false), d, 1e-12) << t;
+      EXPECT_NEAR(up_the_ramp(run, row, true), 0.0, 1e-14) << t;  // the projection's round-off
+      EXPECT_NEAR(row[f1], m * kG * std::sin(kTheta), 1e-12) << t;
+    }
+  }
+}
+
+TEST(Friction, CrateThrownUpASteepRampSlidesBack) {
+  // tan 30° = 0.577 > μs = 0.55: stopped, it cannot stick.
+  const double v0 = 3.0, mu_k = 0.5;
+  const double up = kG * (std::sin(kTheta) + mu_k * std::cos(kTheta));
+  const double down = kG * (std::sin(kTheta) - mu_k * std::cos(kTheta));
+  const double t_stop = v0 / up, d = v0 * v0 / (2.0 * up);
+  const UnilateralRun run = run_unilaterals(load(crate(0.55, mu_k, v0)), "dopri5", 1e-2, 2.0);
+  const std::vector<StopEvent>& events = run.summary.stop_events;
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[1].kind, StopEventKind::slip);
+  EXPECT_EQ(events[1].friction, FrictionState::sliding);
+  EXPECT_NEAR(events[1].time, t_stop, 1e-14 * 8);
+  EXPECT_NEAR(events[1].friction_needed, 2.0 * kG * std::sin(kTheta), 1e-12);
+  for (const std::vector<double>& row : run.table.rows) {
+    const double t = row[0];
+    if (t <= events[1].time) continue;
+    const double after = t - t_stop;
+    EXPECT_NEAR(up_the_ramp(run, row, true), -down * after, 1e-12) << t;
+    EXPECT_NEAR(up_the_ramp(run, row, false), d - 0.5 * down * after * after, 1e-12) << t;
+  }
+}
+
+TEST(Friction, CrateAtRestOnTheRampNeverCreeps) {
+  // tan 30° < μs = 0.7: held from the start for 100 s, it moves by round-off alone.
+  const double m = 2.0;
+  const UnilateralRun run =
+      run_unilaterals(load(crate(0.7, 0.5, 0.0)), "dopri5", 1e-1, 100.0, /*reactions=*/true);
+  const std::vector<StopEvent>& events = run.summary.stop_events;
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].kind, StopEventKind::rest);
+  EXPECT_EQ(events[0].friction, FrictionState::sticking);
+  const std::vector<double>& last = run.table.rows.back();
+  EXPECT_EQ(last[0], 100.0);
+  EXPECT_LT(std::abs(up_the_ramp(run, last, false)), 1e-12);
+  // On the ramp to the projection's 1e-14 (the plane's normal and the joints' frame are rounded).
+  EXPECT_NEAR(last[run.table.column("lift.position")], 0.1, 1e-14);
+  EXPECT_NEAR(last[run.table.column("ramp.tangent_1")], m * kG * std::sin(kTheta), 1e-12);
+  EXPECT_NEAR(last[run.table.column("ramp.normal")], m * kG * std::cos(kTheta), 1e-12);
+}
+
+TEST(Friction, CrateAtRestOnASteepRampSlidesFromTheStart) {
+  const double mu_k = 0.4, a = kG * (std::sin(kTheta) - mu_k * std::cos(kTheta));
+  const UnilateralRun run = run_unilaterals(load(crate(0.5, mu_k, 0.0)), "rk4", 1e-3, 2.0);
+  const std::vector<StopEvent>& events = run.summary.stop_events;
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].friction, FrictionState::sliding);
+  for (const std::vector<double>& row : run.table.rows) {
+    const double t = row[0];
+    EXPECT_NEAR(up_the_ramp(run, row, true), -a * t, 1e-12) << t;
+    EXPECT_NEAR(up_the_ramp(run, row, false), -0.5 * a * t * t, 1e-12) << t;
+  }
+}
+
+// The block on the belt of examples/belt_stick_slip.yaml (m = 1 kg, k = 100 N/m, V = 0.1 m/s,
+// μs = 0.6, μk = 0.4), started where a slip ends, riding the belt: it sticks for 2 d / V, slips
+// for (π + 2 atan2(V/ω, d)) / ω, and again, d = (μs − μk) m g / k, ω = √(k/m). While it sticks
+// x = x_k − d + V τ and the belt holds it with the spring's k x; while it slips x = x_k +
+// A cos(θ₀ + ω τ), A = √(d² + (V/ω)²), θ₀ = −atan2(V/ω, d), friction μk m g along the belt.
+TEST(Friction, BlockOnABeltSticksAndSlipsOnTheClosedFormCycle) {
+  const double m = 1.0, k = 100.0, V = 0.1, mu_s = 0.6, mu_k = 0.4;
+  const double w = std::sqrt(k / m), x_s = mu_s * m * kG / k, x_k = mu_k * m * kG / k;
+  const double d = x_s - x_k, A = std::hypot(d, V / w), theta0 = -std::atan2(V / w, d);
+  const double stick = 2.0 * d / V, slip = (std::numbers::pi - 2.0 * theta0) / w;
+  const double period = stick + slip;
+  const model::Model model = io::read_model_file("examples/belt_stick_slip.yaml").model;
+  const UnilateralRun run = run_unilaterals(model, "rk4", 1e-3, 4.0, /*reactions=*/true);
+  const std::vector<StopEvent>& events = run.summary.stop_events;
+  ASSERT_EQ(events.size(), 1u + 2u * 4u + 1u);  // rest, then four cycles and a fifth slip
+  EXPECT_EQ(events[0].friction, FrictionState::sticking);
+  for (std::size_t i = 1; i < events.size(); ++i) {
+    const int cycle = static_cast<int>((i - 1) / 2);
+    const bool slips = i % 2 == 1;
+    const StopEvent& e = events[i];
+    SCOPED_TRACE(fmt::format("event {}", i));
+    EXPECT_EQ(e.contact, "belt_contact");
+    EXPECT_EQ(e.kind, slips ? StopEventKind::slip : StopEventKind::stick);
+    // rk4's error over each slip's swing (h = 1 ms at ω = 10 rad/s) shifts each cycle by ~3e-11 s
+    // (measured): the instants to 5e-11 s a cycle.
+    EXPECT_NEAR(e.time, cycle * period + (slips ? stick : period), 5e-11 * (cycle + 1));
+    if (slips) {  // where the spring's pull reaches the cone
+      EXPECT_NEAR(e.friction_needed, mu_s * m * kG, 1e-9);
+      EXPECT_NEAR(e.friction_limit, mu_s * m * kG, 1e-12);
+    }
+  }
+  const int x = run.table.column("slide.position");
+  const int friction = run.table.column("belt_contact.tangent_1");
+  const int normal = run.table.column("belt_contact.normal");
+  for (const std::vector<double>& row : run.table.rows) {
+    const double t = row[0];
+    const double tau = std::fmod(t, period);
+    if (std::abs(tau - stick) < 1e-9 || std::min(tau, period - tau) < 1e-9) continue;  // events
+    EXPECT_NEAR(row[normal], m * kG, 1e-12) << t;
+    if (tau < stick) {
+      EXPECT_NEAR(row[x], x_k - d + V * tau, 1e-10) << t;
+      EXPECT_NEAR(row[friction], k * row[x], 1e-9) << t;
+    } else {
+      EXPECT_NEAR(row[x], x_k + A * std::cos(theta0 + w * (tau - stick)), 1e-10) << t;
+      EXPECT_NEAR(row[friction], mu_k * m * kG, 1e-12) << t;
+    }
+  }
+}
+
+TEST(Friction, ModelFileErrorsNameTheKey) {
+  const std::string ball =
+      "bodies: [{name: ball, shape: sphere, mass: 1, radius: 0.1}, {name: other, shape: sphere, "
+      "mass: 1, radius: 0.1}]\n"
+      "joints: [{name: f, type: free, parent: world, child: ball, q0: [0, 0, 1, 1, 0, 0, 0]}, "
+      "{name: g, type: free, parent: world, child: other}]\n";
+  const auto contact = [&](const std::string& keys) {
+    return load_error(ball + "constraints: [{name: c, type: contact, body: ball, radius: 0.1, " +
+                      keys + "}]\n");
+  };
+  EXPECT_NE(contact("friction: {static: 0.3, kinetic: 0.4}")
+                .find("kinetic: 0.4 is above the static coefficient 0.3"),
+            std::string::npos)
+      << contact("friction: {static: 0.3, kinetic: 0.4}");
+  EXPECT_NE(contact("friction: -0.1").find("friction"), std::string::npos);
+  EXPECT_NE(contact("friction: {static: 0.3, kinetc: 0.2}").find("did you mean 'kinetic'"),
+            std::string::npos)
+      << contact("friction: {static: 0.3, kinetc: 0.2}");
+  EXPECT_NE(contact("other_body: other, other_radius: 0.1, friction: 0.3")
+                .find("friction between two bodies' spheres is not modelled yet"),
+            std::string::npos);
+  EXPECT_EQ(contact("friction: 0.3"), "no error");
+}
+
+}  // namespace
+}  // namespace friction
+}  // namespace momenta::simulate
