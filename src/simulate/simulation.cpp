@@ -608,6 +608,12 @@ std::string format_stop_events(const std::vector<StopEvent>& events) {
             "μs N = {:.6g} N)",
             stop, e.time, e.rate_before, e.friction_needed, e.friction_limit);
       case StopEventKind::slip:
+        // Where the friction sticking needs reached the cone (located there), or was beyond it
+        // where a slip stopped (it slides on the other way).
+        if (e.friction_needed <= e.friction_limit * (1.0 + 1e-9)) {
+          return fmt::format("{} slips at t = {:.12g} s (its friction reached μs N = {:.6g} N)",
+                             stop, e.time, e.friction_limit);
+        }
         return fmt::format(
             "{} slips at t = {:.12g} s (sticking would need {:.6g} N of friction, beyond "
             "μs N = {:.6g} N)",

@@ -422,6 +422,15 @@ TEST_F(SimulateCli, FrictionIsListedAndItsStickSaid) {
   EXPECT_NEAR(csv.rows[1][column("lane.tangent_1")], -0.1 * 7 * 9.81, 1e-11);
   EXPECT_NEAR(csv.rows.back()[column("lane.tangent_1")], 0.0, 1e-11);
   EXPECT_EQ(csv.rows.back()[column("lane.tangent_2")], 0.0);
+
+  // The belt: a slip where the spring's pull reaches the cone μs m g.
+  const CliRun belt = momenta("simulate " + quoted(example("belt_stick_slip.yaml")) +
+                              " --duration 1 -o " + quoted((dir_ / "belt.csv").string()));
+  ASSERT_EQ(belt.code, 0) << belt.err;
+  EXPECT_NE(belt.err.find("contact belt_contact slips at t = 0.3924 s (its friction reached "
+                          "μs N = 5.886 N)"),
+            std::string::npos)
+      << belt.err;
 }
 
 // Freedoms are counted after prescribed motion and constraints take theirs: the crank-driven

@@ -38,6 +38,9 @@ export function summarySection(data) {
 // A stop's or contact's entry in words: a rest with when its bounces end and how friction holds,
 // a stick or slip with the friction it needed against the cone's μs N.
 function stopWhat(e) {
+  if (e.kind === 'slip' && e.friction_needed <= e.friction_limit * (1 + 1e-9)) {
+    return `slip (friction reached μs N = ${formatNumber(e.friction_limit, 4)} N)`;
+  }
   if (e.kind === 'stick' || e.kind === 'slip') {
     return `${e.kind} (friction ${formatNumber(e.friction_needed, 4)} N ${e.kind === 'stick' ? '≤' : '>'} μs N = ${formatNumber(e.friction_limit, 4)} N)`;
   }
