@@ -192,8 +192,8 @@ ImpulsiveMotion impulsive_motion(const Model& model, VecRef q, VecRef v,
 
 namespace {
 
-// n · (v_Pb − v_Pa) at (q, v).
-double normal_speed(const Model& model, Data& data, VecRef q, VecRef v, const PointContact& c) {
+// v_Pb − v_Pa at (q, v), in W.
+Vec3 relative_velocity(const Model& model, Data& data, VecRef q, VecRef v, const PointContact& c) {
   forward_kinematics(model, data, q, v);
   MatX J(6, model.nv());
   const auto point_velocity = [&](int body, const Vec3& p) -> Vec3 {
@@ -202,15 +202,19 @@ double normal_speed(const Model& model, Data& data, VecRef q, VecRef v, const Po
     frame_jacobian(model, data, body, p, J);
     return J.bottomRows<3>() * v;
   };
-  return c.normal_W.dot(point_velocity(c.body_b, c.p_BoPb_B) -
-                        point_velocity(c.body_a, c.p_AoPa_A));
+  return point_velocity(c.body_b, c.p_BoPb_B) - point_velocity(c.body_a, c.p_AoPa_A);
 }
 
-// The pair ±P n: P n on B's point, −P n on A's (none on the world).
-std::vector<PointImpulse> impulse_pair(const PointContact& c, double P) {
+// n · (v_Pb − v_Pa) at (q, v).
+double normal_speed(const Model& model, Data& data, VecRef q, VecRef v, const PointContact& c) {
+  return c.normal_W.dot(relative_velocity(model, data, q, v, c));
+}
+
+// The pair ±P: P on B's point, −P on A's (none on the world).
+std::vector<PointImpulse> impulse_pair(const PointContact& c, const Vec3& P) {
   std::vector<PointImpulse> pair;
-  pair.push_back({c.body_b, c.p_BoPb_B, P * c.normal_W});
-  if (c.body_a != 0) pair.push_back({c.body_a, c.p_AoPa_A, -P * c.normal_W});
+  pair.push_back({c.body_b, c.p_BoPb_B, P});
+  if (c.body_a != 0) pair.push_back({c.body_a, c.p_AoPa_A, -P});
   return pair;
 }
 
@@ -251,7 +255,7 @@ Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointCon
   }
   // w from a unit pair at rest: the separation speed it alone would make.
   const VecX at_rest = VecX::Zero(model.nv());
-  const std::vector<PointImpulse> unit = impulse_pair(contact, 1.0);
+  const std::vector<PointImpulse> unit = impulse_pair(contact, contact.normal_W);
   const ImpulsiveMotion response = impulsive_motion(model, q, at_rest, unit, enabled_rows);
   const double w = normal_speed(model, data, q, response.v_after, contact);
   const double scale = std::max(1.0, w);
@@ -262,8 +266,86 @@ Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointCon
   }
   impact.normal_impulse = -(1.0 + restitution) * impact.approach_speed / w;
   impact.separation_speed = -restitution * impact.approach_speed;
-  impact.motion =
-      impulsive_motion(model, q, v, impulse_pair(contact, impact.normal_impulse), enabled_rows);
+  impact.motion = impulsive_motion(
+      model, q, v, impulse_pair(contact, impact.normal_impulse * contact.normal_W), enabled_rows);
+  return impact;
+}
+
+FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
+                                   const PointContact& contact, double restitution,
+                                   double static_friction, double kinetic_friction,
+                                   std::span<const char> enabled_rows) {
+  if (!(static_friction >= 0.0 && std::isfinite(static_friction) && kinetic_friction >= 0.0 &&
+        kinetic_friction <= static_friction)) {
+    throw InvalidArgument(fmt::format(
+        "frictional_impact: the friction coefficients μs = {}, μk = {} must satisfy 0 ≤ μk ≤ μs",
+        static_friction, kinetic_friction));
+  }
+  // The frictionless impact checks the arguments and the approach, and gives the normal response.
+  const Impact frictionless = restitution_impact(model, q, v, contact, restitution, enabled_rows);
+  const Vec3 n = contact.normal_W;
+  Data data(model);
+  FrictionalImpact impact;
+  impact.approach_speed = frictionless.approach_speed;
+  impact.separation_speed = frictionless.separation_speed;
+  const Vec3 u_before = relative_velocity(model, data, q, v, contact);
+  impact.slip_before_W = u_before - n * n.dot(u_before);
+  // W: the relative velocity a unit impulse pair along each world axis gives the mechanism at
+  // rest (symmetric, positive semi-definite: the mechanism's inverse inertia at the contact).
+  Mat3 W;
+  const VecX at_rest = VecX::Zero(model.nv());
+  for (int k = 0; k < 3; ++k) {
+    const ImpulsiveMotion unit =
+        impulsive_motion(model, q, at_rest, impulse_pair(contact, Vec3::Unit(k)), enabled_rows);
+    W.col(k) = relative_velocity(model, data, q, unit.v_after, contact);
+  }
+  // This closed form of Coulomb's law follows the impact's course where the normal impulse makes
+  // no slip (the tangential part of W n is zero) and a sliding impulse keeps the slip's direction
+  // (ŝ an eigenvector of W). Elsewhere the slip turns or stops within the impact — Routh's and
+  // Stronge's analysis, not followed yet — and the impact is the frictionless one.
+  const double slip = impact.slip_before_W.norm();
+  const Vec3 s = slip > 0.0 ? Vec3(impact.slip_before_W / slip) : Vec3::Zero();
+  const auto across = [&](const Vec3& x, const Vec3& along) {  // x's part ⊥ n and ⊥ along
+    const Vec3 t = x - n * n.dot(x);
+    return (t - along * along.dot(t)).norm();
+  };
+  const double tolerance = 1e-9 * W.norm();
+  if (across(W * n, Vec3::Zero()) > tolerance || (slip > 0.0 && across(W * s, s) > tolerance)) {
+    impact.coulomb = false;
+    impact.normal_impulse = frictionless.normal_impulse;
+    impact.impulse_W = frictionless.normal_impulse * n;
+    impact.motion = frictionless.motion;
+    const Vec3 u_after = relative_velocity(model, data, q, impact.motion.v_after, contact);
+    impact.slip_after_W = u_after - n * n.dot(u_after);
+    return impact;
+  }
+  // Sticking: the separation speed −e v_n⁻ with no slip after, W P = u⁺ − u⁻ (least-norm where
+  // the mechanism cannot move the point some way: nothing slips that way either). Its normal
+  // impulse is the frictionless one; it holds while its friction is within μs P_n.
+  Vec3 P = W.completeOrthogonalDecomposition().solve(Vec3(impact.separation_speed * n - u_before));
+  double P_n = n.dot(P);
+  impact.sticking = P_n >= 0.0 && (P - P_n * n).norm() <= static_friction * P_n;
+  if (!impact.sticking) {
+    // Sliding: P = P_n (n − μk ŝ), the same normal impulse and μk P_n against the slip, which
+    // it slows without reversing (reversing it would take more than sticking needs).
+    P_n = frictionless.normal_impulse;
+    P = P_n * (n - kinetic_friction * s);
+  }
+  impact.normal_impulse = P_n;
+  impact.impulse_W = P;
+  impact.motion = impulsive_motion(model, q, v, impulse_pair(contact, P), enabled_rows);
+  const Vec3 u_after = relative_velocity(model, data, q, impact.motion.v_after, contact);
+  impact.slip_after_W = u_after - n * n.dot(u_after);
+  // Newton's restitution with Coulomb friction can give back more than it took where the
+  // mechanism couples the normal and the slip: refused, not run.
+  const double kinetic_before = impact.motion.kinetic_before;
+  if (impact.motion.kinetic_after > kinetic_before + 1e-12 * std::max(1.0, kinetic_before)) {
+    throw NumericalError(fmt::format(
+        "frictional_impact: with e = {} and μk = {} this impact would create energy ({:.6g} J "
+        "→ {:.6g} J): Newton's law of restitution with Coulomb friction is not consistent for "
+        "this mechanism here",
+        restitution, kinetic_friction, kinetic_before, impact.motion.kinetic_after));
+  }
   return impact;
 }
 

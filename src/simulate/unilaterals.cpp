@@ -350,21 +350,38 @@ double Unilaterals::contact_impact(system::MultibodySystem& system, const Entry&
   // impulse) lets go, and the impact is solved again without it.
   const system::ConstraintSolver& solver = *system.constraints();
   for (;;) {
-    const dynamics::Impact impact = dynamics::restitution_impact(
-        model_, at.q.head(nq), at.v.head(nv), touch, e.restitution, solver.rows().enabled);
+    // With friction, Newton's restitution and Coulomb's law at impact (dynamics::
+    // frictional_impact); without, the normal impulse alone.
+    const dynamics::ImpulsiveMotion* motion = nullptr;
+    double normal_impulse = 0.0;
+    dynamics::Impact smooth;
+    dynamics::FrictionalImpact rough;
+    if (c.has_friction()) {
+      rough =
+          dynamics::frictional_impact(model_, at.q.head(nq), at.v.head(nv), touch, e.restitution,
+                                      c.static_friction, c.kinetic_friction, solver.rows().enabled);
+      motion = &rough.motion;
+      normal_impulse = rough.normal_impulse;
+    } else {
+      smooth = dynamics::restitution_impact(model_, at.q.head(nq), at.v.head(nv), touch,
+                                            e.restitution, solver.rows().enabled);
+      motion = &smooth.motion;
+      normal_impulse = smooth.normal_impulse;
+    }
+    const dynamics::ImpulsiveMotion& impact = *motion;
     const Entry* pulling = nullptr;
     double least = 0.0;
     for (const Entry& other : entries_) {
       if (!other.contact || hold_[slot(other)] == Hold::open) continue;
-      const double P = impact.motion.constraint_impulses[solver.rows().first_row[other.index]];
+      const double P = impact.constraint_impulses[solver.rows().first_row[other.index]];
       if (P < least) {
         least = P;
         pulling = &other;
       }
     }
     if (pulling == nullptr) {
-      at.v.head(nv) = impact.motion.v_after;
-      return impact.normal_impulse;
+      at.v.head(nv) = impact.v_after;
+      return normal_impulse;
     }
     open(system, *pulling, at);
   }

@@ -93,6 +93,38 @@ struct Impact {
 Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointContact& contact,
                           double restitution, std::span<const char> enabled_rows = {});
 
+/// An impact with Newton's restitution and Coulomb friction (a contact with friction,
+/// model::Contact; docs/contacts.md): the impulse P on B (−P on A) with the normal separation
+/// speed v_n⁺ = −e v_n⁻ and, after, either no slip (sticking: the impulse W⁻¹(u⁺ − u⁻), W the
+/// mechanism's inverse inertia at the contact found from unit impulses, while its tangential part
+/// is within μs P_n) or a sliding impulse P_n (n − μk ŝ) against the slip ŝ before. This closed
+/// form follows the impact's course (Stronge, Impact Mechanics, 2000, ch. 4) where the normal
+/// impulse makes no slip — W n has no tangential part — and a sliding impulse keeps the slip's
+/// direction (ŝ an eigenvector of W): a ball, a point mass, a body struck on the line of its
+/// centre's response. Elsewhere the slip turns or stops within the impact (Routh's and Stronge's
+/// analysis, not followed yet): the impact is then the frictionless one (`coulomb` false), and
+/// friction acts from the instant after. Refused with NumericalError where the result would create
+/// kinetic energy (a guard: the law above cannot).
+struct FrictionalImpact {
+  Vec3 impulse_W = Vec3::Zero();  ///< P on B (N·s, W): P_n n + the friction impulse
+  double normal_impulse = 0.0;    ///< P_n (N·s), ≥ 0
+  double approach_speed = 0.0;    ///< v_n⁻ (m/s), < 0
+  double separation_speed = 0.0;  ///< −e v_n⁻ (m/s)
+  Vec3 slip_before_W = Vec3::Zero(), slip_after_W = Vec3::Zero();  ///< tangential u (m/s)
+  bool sticking = false;  ///< the impulse leaves no slip (within the cone)
+  /// False where the mechanism couples the normal and the slip at the contact: the impact was
+  /// the frictionless one.
+  bool coulomb = true;
+  ImpulsiveMotion motion;
+};
+
+/// The impact at `contact` with restitution e, static and kinetic friction μs ≥ μk ≥ 0 at
+/// (q, v); arguments checked as restitution_impact's. `enabled_rows` as impulsive_motion's.
+FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
+                                   const PointContact& contact, double restitution,
+                                   double static_friction, double kinetic_friction,
+                                   std::span<const char> enabled_rows = {});
+
 /// A stop striking a joint's coordinate (a revolute or prismatic joint at its limit,
 /// model::JointLimits): the generalized impulse P on coordinate i alone, M Δv = e_i P (+ the
 /// constraints' impulses), that turns its rate v_i⁻ into v_i⁺ = −e v_i⁻ (Newton's restitution on

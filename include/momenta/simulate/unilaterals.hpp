@@ -42,10 +42,12 @@
 // state projected onto them — if the friction that needs, |F_t|, is within the cone μs N; else it
 // slides on, against that friction. A contact that closes without slip sticks on the same test. A
 // sticking contact slides from the instant |F_t| reaches μs N (located as above), against F_t.
-// Impacts are frictionless at the striking contact; sticking contacts hold through an impact.
+// A contact with friction strikes with dynamics::frictional_impact (Newton's restitution and
+// Coulomb's law at impact); sticking contacts hold through an impact elsewhere, their cones not
+// yet checked.
 //
 // Not yet: stops on a model with constraints (refused by the Simulation), friction between two
-// spheres and at impact.
+// spheres, and the cones of contacts that stick through another's impact.
 
 #include <limits>
 #include <string>

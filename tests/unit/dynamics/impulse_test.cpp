@@ -11,6 +11,7 @@
 #include <random>
 #include <string>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <Eigen/LU>
 
@@ -302,6 +303,128 @@ TEST(ImpulsiveMotion, ASphereStrikingAPinnedRodAsTheTextbookHasIt) {
               std::string::npos);
     EXPECT_NE(message(v, 1.5).find("outside [0, 1]"), std::string::npos);
   }
+}
+
+// A free solid sphere (m = 0.5 kg, r = 0.1 m, I = 2/5 m r²) striking the ground at its lowest
+// point with v = (v_x, 0, −V) and spin ω_y: its contact point slips at u = v_x − r ω_y, and for a
+// sphere the normal and the slip do not couple (W = diag(1/m, 7/(2m), …) at the contact). Sticking
+// (Beer & Johnston's ball that rolls off the impact): P_t = −2 m u / 7, so v_x⁺ = v_x − 2u/7 and
+// ω_y⁺ = ω_y + 5u/(7r), no slip after. Sliding (μ below 2u / (7 (1 + e) V)): P_t = −μk (1 + e) m V
+// along the slip, v_x⁺ = v_x − μk (1 + e) V, ω_y⁺ = ω_y + 5 μk (1 + e) V / (2r). Either way
+// v_z⁺ = e V, and the energy lost is Kelvin's.
+TEST(ImpulsiveMotion, ASpinningSphereStrikesTheGroundWithFriction) {
+  const double m = 0.5, r = 0.1, V = 3.0, e = 0.6, v_x = 1.0, w_y = -4.0;
+  const double u = v_x - r * w_y;  // 1.4 m/s forward
+  model::ModelBuilder b;
+  b.add_body("ball", inertia::MassProperties(m, Vec3::Zero(), 0.4 * m * r * r * Mat3::Identity()));
+  b.add_joint(test::make_joint("free", JointType::free, "world", "ball", Vec3::UnitZ()));
+  const Model model = b.build();
+  VecX q = model.initial_q();
+  q[2] = r;
+  VecX v = VecX::Zero(6);
+  v << 0, w_y, 0, v_x, 0, -V;  // ω in the body (here W), then the centre's velocity
+  const PointContact floor{0, Vec3(0, 0, 0), 1, Vec3(0, 0, -r), Vec3::UnitZ()};
+
+  const FrictionalImpact stick = frictional_impact(model, q, v, floor, e, 0.5, 0.4);
+  EXPECT_TRUE(stick.sticking);
+  EXPECT_NEAR(stick.normal_impulse, (1 + e) * m * V, 1e-14);
+  EXPECT_NEAR(stick.impulse_W.x(), -2.0 * m * u / 7.0, 1e-14);
+  const VecX& after = stick.motion.v_after;
+  EXPECT_NEAR(after[3], v_x - 2.0 * u / 7.0, 1e-14);
+  EXPECT_NEAR(after[1], w_y + 5.0 * u / (7.0 * r), 1e-13);
+  EXPECT_NEAR(after[5], e * V, 1e-14);
+  EXPECT_LT(stick.slip_after_W.norm(), 1e-14);
+  EXPECT_NEAR(stick.slip_before_W.x(), u, 1e-15);
+  EXPECT_NEAR(stick.motion.kinetic_after - stick.motion.kinetic_before, stick.motion.impulse_work,
+              1e-13);
+
+  const double mu = 0.05;  // below 2u / (7 (1 + e) V) = 0.0833: it slides through the impact
+  const FrictionalImpact slide = frictional_impact(model, q, v, floor, e, mu, mu);
+  EXPECT_FALSE(slide.sticking);
+  EXPECT_NEAR(slide.impulse_W.x(), -mu * (1 + e) * m * V, 1e-14);
+  EXPECT_NEAR(slide.motion.v_after[3], v_x - mu * (1 + e) * V, 1e-14);
+  EXPECT_NEAR(slide.motion.v_after[1], w_y + 5.0 * mu * (1 + e) * V / (2.0 * r), 1e-13);
+  EXPECT_NEAR(slide.motion.v_after[5], e * V, 1e-14);
+  EXPECT_NEAR(slide.slip_after_W.x(), u - 3.5 * mu * (1 + e) * V, 1e-13);
+  EXPECT_LE(slide.motion.kinetic_after, slide.motion.kinetic_before);
+
+  // Without slip before it sticks with no friction at all; friction coefficients out of order
+  // are refused.
+  VecX rolling = v;
+  rolling[3] = r * w_y;
+  const FrictionalImpact none = frictional_impact(model, q, rolling, floor, e, 0.5, 0.4);
+  EXPECT_TRUE(none.sticking);
+  EXPECT_LT(none.impulse_W.head<2>().norm(), 1e-15);
+  EXPECT_THROW(frictional_impact(model, q, v, floor, e, 0.3, 0.4), InvalidArgument);
+}
+
+// Coulomb's law at impact where it applies and where it does not, at random states: a free
+// sphere (m = 0.5 kg, r = 0.1 m) with random spin, speeds and coefficients — its normal and slip
+// decouple, and it sticks or slides: the separation speed −e v_n⁻, the friction impulse against
+// the slip and within μs P_n with no slip after (sticking) or μk P_n with the slip slowed, not
+// reversed (sliding), no energy created; and a free slender rod (m = 1 kg, L = 1 m) striking by
+// one end tilted 0.1 to 1.4 rad — its normal impulse makes its end slip: the frictionless impact.
+TEST(ImpulsiveMotion, CoulombsLawAtImpactWhereItFollowsTheImpact) {
+  model::ModelBuilder b;
+  b.add_body("ball", inertia::MassProperties(0.5, Vec3::Zero(), 0.002 * Mat3::Identity()));
+  b.add_joint(test::make_joint("free", JointType::free, "world", "ball", Vec3::UnitZ()));
+  b.add_body("rod", inertia::MassProperties(1.0, Vec3::Zero(),
+                                            Vec3(1.0 / 12, 1.0 / 12, 1e-4).asDiagonal()));
+  b.add_joint(test::make_joint("free_rod", JointType::free, "world", "rod", Vec3::UnitZ()));
+  const Model model = b.build();
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0, 1);
+  int sticking = 0, sliding = 0, frictionless = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    SCOPED_TRACE(fmt::format("trial {}", trial));
+    const double tilt = 0.1 + 1.3 * u(rng);  // the rod's, about y
+    const Quat R(Eigen::AngleAxisd(tilt, Vec3::UnitY()));
+    const Vec3 end_B(0, 0, -0.5);
+    VecX q = model.initial_q();
+    q.head<3>() = Vec3(0, 0, 0.1);                // the ball on the ground at the origin
+    q.segment<3>(7) = Vec3(2, 0, 0) - R * end_B;  // the rod's end on the ground at [2, 0, 0]
+    q.segment<4>(10) << R.w(), R.x(), R.y(), R.z();
+    VecX v(12);
+    for (int k = 0; k < 12; ++k) v[k] = 6 * (u(rng) - 0.5);
+    v[5] = -0.5 - 3 * u(rng);   // the ball falls
+    v[11] = -0.5 - 3 * u(rng);  // the rod falls
+    v[6] = v[8] = 0;            // the rod turns about y alone
+    const double e = u(rng), mu_s = 1.2 * u(rng), mu_k = mu_s * u(rng);
+    const PointContact ball{0, Vec3::Zero(), 1, Vec3(0, 0, -0.1), Vec3::UnitZ()};
+    const PointContact rod{0, Vec3(2, 0, 0), 2, end_B, Vec3::UnitZ()};
+    try {
+      const FrictionalImpact coupled = frictional_impact(model, q, v, rod, e, mu_s, mu_k);
+      EXPECT_FALSE(coupled.coulomb);
+      EXPECT_MATRIX_NEAR(coupled.motion.v_after,
+                         restitution_impact(model, q, v, rod, e).motion.v_after, 1e-14);
+      ++frictionless;
+    } catch (const InvalidArgument&) {  // the rod's end does not approach the ground
+    }
+    const FrictionalImpact impact = frictional_impact(model, q, v, ball, e, mu_s, mu_k);
+    ASSERT_TRUE(impact.coulomb);
+    const double P_n = impact.normal_impulse;
+    const Vec3 P_t(impact.impulse_W.x(), impact.impulse_W.y(), 0);
+    const double slip = impact.slip_before_W.norm();
+    EXPECT_NEAR(impact.motion.v_after[5], -e * v[5], 1e-14);  // the centre's is the point's
+    EXPECT_NEAR(P_n, -(1 + e) * 0.5 * v[5], 1e-14);
+    EXPECT_LE(P_t.dot(impact.slip_before_W), 0.0);
+    EXPECT_LE(impact.motion.kinetic_after, impact.motion.kinetic_before);
+    EXPECT_NEAR(impact.motion.kinetic_after - impact.motion.kinetic_before,
+                impact.motion.impulse_work, 1e-13);
+    if (impact.sticking) {
+      ++sticking;
+      EXPECT_LE(P_t.norm(), mu_s * P_n * (1 + 1e-12));
+      EXPECT_LT(impact.slip_after_W.norm(), 1e-13);
+    } else {
+      ++sliding;
+      EXPECT_NEAR(P_t.norm(), mu_k * P_n, 1e-14);
+      EXPECT_GE(impact.slip_after_W.dot(impact.slip_before_W), 0.0);  // slowed, not reversed
+      EXPECT_LT(impact.slip_after_W.norm(), slip);
+    }
+  }
+  EXPECT_GT(sticking, 20);
+  EXPECT_GT(sliding, 20);
+  EXPECT_GT(frictionless, 20);
 }
 
 TEST(ImpulsiveMotion, RefusesWhatIsNotAnImpulseOnTheModel) {

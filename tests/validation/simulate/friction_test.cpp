@@ -11,6 +11,8 @@
 // - a block on a moving belt held by a spring (examples/belt_stick_slip.yaml: a contact with
 //   another body's plane): the stick–slip cycle's instants, positions and friction from the
 //   piecewise closed form;
+// - a ball dropped sliding onto a rough floor: it leaves the first impact rolling (Coulomb's law
+//   at impact, sticking), and rests rolling;
 // - the model file's errors for friction.
 
 #include <cmath>
@@ -233,6 +235,42 @@ TEST(Friction, BlockOnABeltSticksAndSlipsOnTheClosedFormCycle) {
     } else {
       EXPECT_NEAR(row[x], x_k + A * std::cos(theta0 + w * (tau - stick)), 1e-10) << t;
       EXPECT_NEAR(row[friction], mu_k * m * kG, 1e-12) << t;
+    }
+  }
+}
+
+// A ball (m = 0.1 kg, r = 0.05 m) dropped from 1 m moving sideways at 1 m/s without spin on a
+// rough floor (e = 0.8, μ = 0.3): at the first impact its contact point slips at u = 1 m/s and
+// sticking needs P_t = 2 m u / 7 = 0.0286 N·s, within μ P_n = 0.3 · 1.8 m √(2gh) = 0.239 N·s: it
+// leaves rolling, v_x = 5/7 m/s and ω_y = 5 / (7 r) rad/s, having lost ½ m (1 − e²) v_n² and
+// m u² / 7 more; every later impact has no slip to stop, and it comes to rest rolling at 5/7 m/s.
+TEST(Friction, BallDroppedSlidingOntoARoughFloorLeavesRolling) {
+  const double m = 0.1, r = 0.05, e = 0.8, h = 1.0;
+  const double t1 = std::sqrt(2.0 * h / kG), V = std::sqrt(2.0 * kG * h);
+  const std::string model =
+      "gravity: [0, 0, -9.81]\n"
+      "bodies: [{name: ball, shape: sphere, mass: 0.1, radius: 0.05}]\n"
+      "joints: [{name: free, type: free, parent: world, child: ball, q0: [0, 0, 1.05, 1, 0, 0, "
+      "0], v0: [0, 0, 0, 1, 0, 0]}]\n"
+      "constraints: [{name: floor, type: contact, body: ball, radius: 0.05, restitution: 0.8, "
+      "friction: 0.3}]\n";
+  const UnilateralRun run = run_unilaterals(load(model), "dopri5", 1e-2, 5.0);
+  const std::vector<StopEvent>& events = run.summary.stop_events;
+  ASSERT_GT(events.size(), 20u);
+  const StopEvent& first = events[0];
+  EXPECT_EQ(first.kind, StopEventKind::impact);
+  EXPECT_NEAR(first.time, t1, 1e-12 * t1);
+  EXPECT_NEAR(first.impulse, (1 + e) * m * V, 1e-12);
+  EXPECT_NEAR(first.energy_lost, 0.5 * m * (1 - e * e) * V * V + m / 7.0, 1e-12);
+  EXPECT_EQ(events.back().kind, StopEventKind::rest);
+  EXPECT_EQ(events.back().friction, FrictionState::sticking);
+  const int vx = run.table.column("free.vx"), wy = run.table.column("free.wy");
+  for (const std::vector<double>& row : run.table.rows) {
+    if (row[0] < first.time) {
+      EXPECT_EQ(row[vx], 1.0) << row[0];
+    } else if (row[0] > first.time) {
+      EXPECT_NEAR(row[vx], 5.0 / 7.0, 1e-12) << row[0];
+      EXPECT_NEAR(row[wy], 5.0 / (7.0 * r), 1e-11) << row[0];
     }
   }
 }
