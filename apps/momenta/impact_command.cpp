@@ -1,9 +1,10 @@
 // `momenta impact MODEL (--at BODY:x,y,z --impulse Px,Py,Pz | --between A:x,y,z B:x,y,z --normal n
-// --restitution e) [--time T | --state FILE] [--json]`: impulse and momentum (Beer & Johnston
-// ch. 17) — the speeds just after an impulse at a point of a body, or after two bodies' points
-// collide with restitution e; the impulses every joint and constraint carries (a pin's impulsive
-// reaction), the drive impulses of prescribed joints, and the kinetic energy gained or lost,
-// checked by Kelvin's theorem. Calls dynamics::impulsive_motion and restitution_impact;
+// --restitution e [--friction μs[,μk]]) [--time T | --state FILE] [--json]`: impulse and momentum
+// (Beer & Johnston ch. 17) — the speeds just after an impulse at a point of a body, or after two
+// bodies' points collide with restitution e (and Coulomb friction); the impulses every joint and
+// constraint carries (a pin's impulsive reaction), the drive impulses of prescribed joints, and
+// the kinetic energy gained or lost, checked by Kelvin's theorem. Calls dynamics::
+// impulsive_motion, restitution_impact and frictional_impact;
 // documented in docs/cli.md and docs/contacts.md.
 
 #include <algorithm>
@@ -39,6 +40,7 @@ struct ImpactOptions {
   std::vector<std::string> between;  // A[:x,y,z] B[:x,y,z]
   std::string normal;                // nx,ny,nz: B is pushed along it
   std::optional<double> restitution;
+  std::vector<double> friction;  // μs[, μk]: Coulomb friction at the contact
   InstantOptions instant;
   bool json = false;
 };
@@ -49,7 +51,15 @@ struct Blow {
   std::optional<dynamics::PointContact> contact;
   double restitution = 0.0;
   std::optional<dynamics::Impact> impact;
+  // With --friction: the coefficients and what Coulomb's law did (dynamics::frictional_impact).
+  std::optional<dynamics::FrictionalImpact> rough;
+  double static_friction = 0.0, kinetic_friction = 0.0;
 };
+
+// "sticking", "sliding", or "frictionless" where the mechanism couples the normal and the slip.
+const char* friction_outcome(const dynamics::FrictionalImpact& f) {
+  return !f.coulomb ? "frictionless" : f.sticking ? "sticking" : "sliding";
+}
 
 // A vector as text shows it (common/number_text.hpp: round-off of `scale` as 0).
 Vec3 shown(const Vec3& v, double scale) {
@@ -96,6 +106,24 @@ void print_text(const io::ModelFile& file, double t, const Blow& blow,
         "normal speed {:.6g} m/s (approach) → {:.6g} m/s (separation); normal impulse "
         "{:.6g} N·s\n",
         blow.impact->approach_speed, blow.impact->separation_speed, blow.impact->normal_impulse);
+    if (const auto& f = blow.rough) {
+      const Vec3 friction = f->impulse_W - f->normal_impulse * c->normal_W;
+      const double scale = std::max(f->slip_before_W.norm(), f->slip_after_W.norm());
+      if (f->coulomb) {
+        fmt::print(
+            "friction (μs {:.6g}, μk {:.6g}): {}, friction impulse {} N·s; slip {} → {} m/s\n",
+            blow.static_friction, blow.kinetic_friction, friction_outcome(*f),
+            vec_text(shown(friction, f->impulse_W.norm())),
+            vec_text(shown(f->slip_before_W, scale)), vec_text(shown(f->slip_after_W, scale)));
+      } else {
+        fmt::print(
+            "friction (μs {:.6g}, μk {:.6g}): none at this impact — the mechanism couples the "
+            "normal and the slip at the contact, whose course momenta does not follow yet "
+            "(docs/contacts.md); slip {} → {} m/s\n",
+            blow.static_friction, blow.kinetic_friction, vec_text(shown(f->slip_before_W, scale)),
+            vec_text(shown(f->slip_after_W, scale)));
+      }
+    }
   } else {
     const dynamics::PointImpulse& hit = blow.impulses.front();
     fmt::print("{} at t = {:.6g} s: an impulse P = {} N·s (world axes) at {} + {} m\n", file.name,
@@ -181,6 +209,15 @@ json result_json(const io::ModelFile& file, double t, const Blow& blow,
                  {"approach_speed", blow.impact->approach_speed},
                  {"separation_speed", blow.impact->separation_speed},
                  {"normal_impulse", blow.impact->normal_impulse}};
+    if (const auto& f = blow.rough) {
+      blow_json["friction"] = {
+          {"static", blow.static_friction},
+          {"kinetic", blow.kinetic_friction},
+          {"outcome", friction_outcome(*f)},
+          {"impulse", vec_json(Vec3(f->impulse_W - f->normal_impulse * c->normal_W))},
+          {"slip_before", vec_json(f->slip_before_W)},
+          {"slip_after", vec_json(f->slip_after_W)}};
+    }
   } else {
     const dynamics::PointImpulse& hit = blow.impulses.front();
     blow_json = {{"body", model.body(hit.body).name},
@@ -235,9 +272,22 @@ Blow blow_of(const model::Model& model, const ImpactOptions& o, const integrate:
   n.normalize();
   blow.contact = dynamics::PointContact{a, p_a, b, p_b, n};
   blow.restitution = *o.restitution;
-  blow.impact =
-      dynamics::restitution_impact(model, state.q, state.v, *blow.contact, blow.restitution);
-  blow.impulses.push_back({b, p_b, blow.impact->normal_impulse * n});
+  if (o.friction.empty()) {
+    blow.impact =
+        dynamics::restitution_impact(model, state.q, state.v, *blow.contact, blow.restitution);
+    blow.impulses.push_back({b, p_b, blow.impact->normal_impulse * n});
+    return blow;
+  }
+  if (o.friction.size() > 2) {
+    throw CLI::ValidationError("--friction", "give μs, or μs,μk (μk ≤ μs)");
+  }
+  blow.static_friction = o.friction[0];
+  blow.kinetic_friction = o.friction.size() == 2 ? o.friction[1] : o.friction[0];
+  blow.rough = dynamics::frictional_impact(model, state.q, state.v, *blow.contact, blow.restitution,
+                                           blow.static_friction, blow.kinetic_friction);
+  blow.impact = dynamics::Impact{blow.rough->normal_impulse, blow.rough->approach_speed,
+                                 blow.rough->separation_speed, blow.rough->motion};
+  blow.impulses.push_back({b, p_b, blow.rough->impulse_W});
   return blow;
 }
 
@@ -280,6 +330,11 @@ void add_impact_command(CLI::App& app) {
   command->add_option("--normal", options->normal,
                       "nx,ny,nz — the contact normal, along which B is pushed away from A (world "
                       "axes; normalized)");
+  command
+      ->add_option("--friction", options->friction,
+                   "μs[,μk] — Coulomb friction at the contact (μk ≤ μs, the same when left out): "
+                   "the impact sticks or slides (docs/contacts.md)")
+      ->delimiter(',');
   command->add_option("--restitution", options->restitution,
                       "e in [0, 1]: the separation speed is e times the approach speed (0 "
                       "plastic, 1 elastic)");

@@ -153,6 +153,30 @@ TEST_F(AnalysisCli, ImpactOnTheStruckRodAsTheTextbookHasIt) {
   EXPECT_NEAR(h.at("separation_speed").get<double>(), e * v0, 1e-14);
   EXPECT_NEAR(h.at("joint_impulses").at("pin").at("force").at(0).get<double>(),
               4.0 * omega * 0.6 - ms * (v0 - v_s), 1e-14);
+  // With friction (examples/bouncing_sphere.yaml at t = 0.4 s: falling at g t, sliding sideways
+  // at 1 m/s, spinning about the vertical): the ball strikes the floor at its lowest point and
+  // sticks — it leaves rolling, v_x = 5/7 m/s, ω_y = 5 / (7 r) — its friction impulse −2 m u / 7.
+  const CliRun rough = momenta("impact " + example("bouncing_sphere") +
+                               " --time 0.4 --between world:0,0,0 ball:0,0,-0.05 --normal 0,0,1 "
+                               "--restitution 0.6 --friction 0.5,0.4 --json");
+  ASSERT_EQ(rough.code, 0) << rough.err;
+  const json r = json::parse(rough.out);
+  EXPECT_EQ(r.at("friction").at("outcome"), "sticking");
+  EXPECT_NEAR(r.at("friction").at("impulse").at(0).get<double>(), -2.0 * 0.1 / 7.0, 1e-14);
+  EXPECT_NEAR(r.at("v_after").at("free.vx").get<double>(), 5.0 / 7.0, 1e-14);
+  // ω in the ball's axes, turned 1.2 rad about the vertical by then: its horizontal part.
+  const json& w = r.at("v_after");
+  EXPECT_NEAR(std::hypot(w.at("free.wx").get<double>(), w.at("free.wy").get<double>()),
+              5.0 / (7.0 * 0.05), 1e-12);
+  EXPECT_NEAR(w.at("free.wz").get<double>(), 3.0, 1e-12);
+  EXPECT_NEAR(r.at("separation_speed").get<double>(), 0.6 * 9.81 * 0.4, 1e-12);
+  const CliRun rough_text = momenta("impact " + example("bouncing_sphere") +
+                                    " --time 0.4 --between world:0,0,0 ball:0,0,-0.05 --normal "
+                                    "0,0,1 --restitution 0.6 --friction 0.5,0.4");
+  EXPECT_NE(rough_text.out.find("friction (μs 0.5, μk 0.4): sticking, friction impulse "
+                                "[-0.0285714, 0, 0] N·s; slip [1, 0, 0] → [0, 0, 0] m/s"),
+            std::string::npos)
+      << rough_text.out;
   const CliRun apart = momenta("impact " + eccentric +
                                " --between sphere rod:0,0,-1.1 --normal -1,0,0 --restitution 0.6");
   EXPECT_NE(apart.err.find("do not approach along the normal"), std::string::npos) << apart.err;
