@@ -288,6 +288,12 @@ FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
   FrictionalImpact impact;
   impact.approach_speed = frictionless.approach_speed;
   impact.separation_speed = frictionless.separation_speed;
+  if (static_friction == 0.0) {  // smooth: the normal impulse alone, nothing to stick or slide
+    impact.normal_impulse = frictionless.normal_impulse;
+    impact.impulse_W = frictionless.normal_impulse * n;
+    impact.motion = frictionless.motion;
+    return impact;
+  }
   const Vec3 u_before = relative_velocity(model, data, q, v, contact);
   impact.slip_before_W = u_before - n * n.dot(u_before);
   // W: the relative velocity a unit impulse pair along each world axis gives the mechanism at

@@ -211,17 +211,6 @@ double Unilaterals::first_contact(const Entry& e, integrate::SecondOrderSystem& 
   return a;  // it never leaves that the interpolant can see: it meets it again at once
 }
 
-double Unilaterals::first_pull(system::MultibodySystem& system,
-                               integrate::SecondOrderSystem& advanced, const Entry& e, double a,
-                               double b, double push_a, double push_b) {
-  if (!(push_a > 0.0)) return a;
-  const auto f = [&](double t) {
-    interpolant_.evaluate(advanced, t, trial_);
-    return push(system, advanced, e, trial_);
-  };
-  return detail::crossing_time(f, a, b, push_a, push_b);
-}
-
 void Unilaterals::hold_contact(system::MultibodySystem& system, const Entry& e,
                                integrate::State& at, Hold how, const Vec3& slip_W) {
   hold_[slot(e)] = how;
@@ -266,11 +255,9 @@ void Unilaterals::stick_or_slip(system::MultibodySystem& system,
                                 integrate::SecondOrderSystem& advanced, const Entry& e,
                                 integrate::State& at, StopEvent& event) {
   hold_contact(system, e, at, Hold::closed);
-  vdot_.resize(at.v.size());
-  advanced.acceleration(at.t, at.q, at.v, vdot_);
+  event.friction_limit = e.static_friction * push(system, advanced, e, at);
   const Vec3 friction = sticking_friction(system, e, at);
   event.friction_needed = friction.norm();
-  event.friction_limit = e.static_friction * system.contact_force(e.index);
   if (event.friction_needed <= event.friction_limit) {
     event.friction = FrictionState::sticking;
     return;
@@ -311,9 +298,7 @@ Vec3 Unilaterals::sticking_friction(const system::MultibodySystem& system, const
 double Unilaterals::cone_margin(system::MultibodySystem& system,
                                 integrate::SecondOrderSystem& advanced, const Entry& e,
                                 const integrate::State& state) {
-  vdot_.resize(state.v.size());
-  advanced.acceleration(state.t, state.q, state.v, vdot_);
-  return e.static_friction * system.contact_force(e.index) -
+  return e.static_friction * push(system, advanced, e, state) -
          sticking_friction(system, e, state).norm();
 }
 
@@ -350,38 +335,23 @@ double Unilaterals::contact_impact(system::MultibodySystem& system, const Entry&
   // impulse) lets go, and the impact is solved again without it.
   const system::ConstraintSolver& solver = *system.constraints();
   for (;;) {
-    // With friction, Newton's restitution and Coulomb's law at impact (dynamics::
-    // frictional_impact); without, the normal impulse alone.
-    const dynamics::ImpulsiveMotion* motion = nullptr;
-    double normal_impulse = 0.0;
-    dynamics::Impact smooth;
-    dynamics::FrictionalImpact rough;
-    if (c.has_friction()) {
-      rough =
-          dynamics::frictional_impact(model_, at.q.head(nq), at.v.head(nv), touch, e.restitution,
-                                      c.static_friction, c.kinetic_friction, solver.rows().enabled);
-      motion = &rough.motion;
-      normal_impulse = rough.normal_impulse;
-    } else {
-      smooth = dynamics::restitution_impact(model_, at.q.head(nq), at.v.head(nv), touch,
-                                            e.restitution, solver.rows().enabled);
-      motion = &smooth.motion;
-      normal_impulse = smooth.normal_impulse;
-    }
-    const dynamics::ImpulsiveMotion& impact = *motion;
+    // Newton's restitution and Coulomb's law at impact (none without friction).
+    const dynamics::FrictionalImpact impact =
+        dynamics::frictional_impact(model_, at.q.head(nq), at.v.head(nv), touch, e.restitution,
+                                    c.static_friction, c.kinetic_friction, solver.rows().enabled);
     const Entry* pulling = nullptr;
     double least = 0.0;
     for (const Entry& other : entries_) {
       if (!other.contact || hold_[slot(other)] == Hold::open) continue;
-      const double P = impact.constraint_impulses[solver.rows().first_row[other.index]];
+      const double P = impact.motion.constraint_impulses[solver.rows().first_row[other.index]];
       if (P < least) {
         least = P;
         pulling = &other;
       }
     }
     if (pulling == nullptr) {
-      at.v.head(nv) = impact.v_after;
-      return normal_impulse;
+      at.v.head(nv) = impact.motion.v_after;
+      return impact.normal_impulse;
     }
     open(system, *pulling, at);
   }
@@ -496,10 +466,8 @@ bool Unilaterals::check(system::MultibodySystem& system, integrate::SecondOrderS
     }
     const double push_end = push(system, advanced, e, end);
     if (push_end < 0.0) {
-      const double push_start = push(system, advanced, e, start);
-      set_interpolant();
-      consider(e, first_pull(system, advanced, e, start.t, end.t, push_start, push_end),
-               Pending::release);
+      const auto pushes = [&](const integrate::State& x) { return push(system, advanced, e, x); };
+      consider(e, zero_of(pushes, push_end), Pending::release);
     }
     if (hold_[k] == Hold::closed && e.static_friction > 0.0) {
       // Sticking, from the evaluation push() just made at the end.

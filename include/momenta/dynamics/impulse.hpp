@@ -119,7 +119,8 @@ struct FrictionalImpact {
 };
 
 /// The impact at `contact` with restitution e, static and kinetic friction μs ≥ μk ≥ 0 at
-/// (q, v); arguments checked as restitution_impact's. `enabled_rows` as impulsive_motion's.
+/// (q, v); arguments checked as restitution_impact's. `enabled_rows` as impulsive_motion's. With
+/// μs = 0 it is restitution_impact's (its slips left zero, not computed).
 FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
                                    const PointContact& contact, double restitution,
                                    double static_friction, double kinetic_friction,

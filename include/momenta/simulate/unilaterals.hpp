@@ -171,9 +171,6 @@ class Unilaterals {
   // gap(b) < 0; or a itself when it only goes in from there.
   double first_contact(const Entry& e, integrate::SecondOrderSystem& advanced, double a, double b,
                        double gap_a, double gap_b);
-  // The time in (a, b] a closed one's push passes zero, push(a) ≥ 0 > push(b).
-  double first_pull(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
-                    const Entry& e, double a, double b, double push_a, double push_b);
   // Strikes (or closes) e at the state `at` (on it), filling `event`.
   void strike(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
               const Entry& e, integrate::State& at, StopEvent& event);
