@@ -16,8 +16,8 @@
 
 #include <fmt/format.h>
 
-#include "body_point_argument.hpp"
 #include "commands.hpp"
+#include "impact_blow.hpp"
 #include "model_argument.hpp"
 #include "momenta/common/number_text.hpp"
 #include "momenta/dynamics/constraints.hpp"
@@ -35,31 +35,10 @@ using json = nlohmann::ordered_json;
 
 struct ImpactOptions {
   ModelArgument model;
-  std::string at;                    // BODY or BODY:x,y,z
-  std::string impulse;               // Px,Py,Pz (N·s, world axes)
-  std::vector<std::string> between;  // A[:x,y,z] B[:x,y,z]
-  std::string normal;                // nx,ny,nz: B is pushed along it
-  std::optional<double> restitution;
-  std::vector<double> friction;  // μs[, μk]: Coulomb friction at the contact
+  BlowOptions blow;
   InstantOptions instant;
   bool json = false;
 };
-
-// What struck: an applied impulse, or a collision at a contact (then `impact` is set).
-struct Blow {
-  std::vector<dynamics::PointImpulse> impulses;  // on B, and −P n on A where A moves
-  std::optional<dynamics::PointContact> contact;
-  double restitution = 0.0;
-  std::optional<dynamics::Impact> impact;
-  // With --friction: the coefficients and what Coulomb's law did (dynamics::frictional_impact).
-  std::optional<dynamics::FrictionalImpact> rough;
-  double static_friction = 0.0, kinetic_friction = 0.0;
-};
-
-// "sticking", "sliding", or "frictionless" where the mechanism couples the normal and the slip.
-const char* friction_outcome(const dynamics::FrictionalImpact& f) {
-  return !f.coulomb ? "frictionless" : f.sticking ? "sticking" : "sliding";
-}
 
 // A vector as text shows it (common/number_text.hpp: round-off of `scale` as 0).
 Vec3 shown(const Vec3& v, double scale) {
@@ -241,64 +220,12 @@ json result_json(const io::ModelFile& file, double t, const Blow& blow,
   return out;
 }
 
-// The blow the options describe: --at and --impulse, or --between, --normal and --restitution.
-Blow blow_of(const model::Model& model, const ImpactOptions& o, const integrate::State& state) {
-  const bool applied = !o.at.empty() || !o.impulse.empty();
-  const bool contact = !o.between.empty() || !o.normal.empty() || o.restitution.has_value();
-  if (applied == contact) {
-    throw CLI::ValidationError(
-        "impact",
-        "give an applied impulse (--at BODY:x,y,z --impulse Px,Py,Pz) or a collision "
-        "(--between A:x,y,z B:x,y,z --normal nx,ny,nz --restitution e), one of them");
-  }
-  Blow blow;
-  if (applied) {
-    if (o.at.empty() || o.impulse.empty()) {
-      throw CLI::ValidationError("impact", "an applied impulse needs both --at and --impulse");
-    }
-    const auto [body, p] = parse_body_point(model, o.at, "--at");
-    blow.impulses.push_back(
-        {body, p, parse_vector(o.impulse, "--impulse", "N·s, in the world's axes")});
-    return blow;
-  }
-  if (o.between.size() != 2 || o.normal.empty() || !o.restitution) {
-    throw CLI::ValidationError(
-        "impact", "a collision needs --between A:x,y,z B:x,y,z, --normal and --restitution");
-  }
-  const auto [a, p_a] = parse_body_point(model, o.between[0], "--between", true);
-  const auto [b, p_b] = parse_body_point(model, o.between[1], "--between");
-  Vec3 n = parse_vector(o.normal, "--normal", "the direction B is pushed, in the world's axes");
-  if (!(n.norm() > 0.0)) throw CLI::ValidationError("--normal", "the normal is zero");
-  n.normalize();
-  blow.contact = dynamics::PointContact{a, p_a, b, p_b, n};
-  blow.restitution = *o.restitution;
-  if (o.friction.empty()) {
-    blow.impact =
-        dynamics::restitution_impact(model, state.q, state.v, *blow.contact, blow.restitution);
-    blow.impulses.push_back({b, p_b, blow.impact->normal_impulse * n});
-    return blow;
-  }
-  if (o.friction.size() > 2) {
-    throw CLI::ValidationError("--friction", "give μs, or μs,μk (μk ≤ μs)");
-  }
-  blow.static_friction = o.friction[0];
-  blow.kinetic_friction = o.friction.size() == 2 ? o.friction[1] : o.friction[0];
-  blow.rough = dynamics::frictional_impact(model, state.q, state.v, *blow.contact, blow.restitution,
-                                           blow.static_friction, blow.kinetic_friction);
-  blow.impact = dynamics::Impact{blow.rough->normal_impulse, blow.rough->approach_speed,
-                                 blow.rough->separation_speed, blow.rough->motion};
-  blow.impulses.push_back({b, p_b, blow.rough->impulse_W});
-  return blow;
-}
-
 void run(const ImpactOptions& o) {
   const io::ModelFile file = load_model(o.model);
   const model::Model& model = file.model;
   const integrate::State state = instant_of(file, o.instant);
-  const Blow blow = blow_of(model, o, state);
-  const dynamics::ImpulsiveMotion r =
-      blow.impact ? blow.impact->motion
-                  : dynamics::impulsive_motion(model, state.q, state.v, blow.impulses);
+  const Blow blow = blow_of(model, o.blow, state);
+  const dynamics::ImpulsiveMotion& r = blow.motion;
   const auto constraints = constraint_impulses(model, state.q, r.constraint_impulses);
   if (o.json) {
     fmt::print("{}\n",
@@ -317,27 +244,7 @@ void add_impact_command(CLI::App& app) {
       "Impulse and momentum: the speeds just after an impulse at a body's point, the impulses "
       "the joints and constraints carry, the kinetic energy gained or lost");
   add_model_argument(command, options->model);
-  command->add_option("--at", options->at,
-                      "BODY or BODY:x,y,z — where an applied impulse acts: a point fixed in a "
-                      "body (m, in the body's frame)");
-  command->add_option("--impulse", options->impulse,
-                      "Px,Py,Pz — the applied impulse (N·s, in the world's axes)");
-  command
-      ->add_option("--between", options->between,
-                   "A[:x,y,z] B[:x,y,z] — a collision: the points of bodies A (or the world) and "
-                   "B that touch")
-      ->expected(2);
-  command->add_option("--normal", options->normal,
-                      "nx,ny,nz — the contact normal, along which B is pushed away from A (world "
-                      "axes; normalized)");
-  command
-      ->add_option("--friction", options->friction,
-                   "μs[,μk] — Coulomb friction at the contact (μk ≤ μs, the same when left out): "
-                   "the impact sticks or slides (docs/contacts.md)")
-      ->delimiter(',');
-  command->add_option("--restitution", options->restitution,
-                      "e in [0, 1]: the separation speed is e times the approach speed (0 "
-                      "plastic, 1 elastic)");
+  add_blow_options(command, options->blow);
   add_instant_options(command, options->instant);
   command->add_flag("--json", options->json, "Print JSON instead of text");
   command->footer(

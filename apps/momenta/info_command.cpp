@@ -60,6 +60,8 @@ json constraint_json(const model::Constraint& constraint) {
     j["body"] = c->frame.body;
     j["point"] = vec_json(c->frame.X_BF.p);
     j["radius"] = c->radius;
+    j["shape"] = c->shape == model::ContactShape::disk ? "disk" : "sphere";
+    if (c->shape == model::ContactShape::disk) j["axis"] = vec_json(c->frame.X_BF.R.col(2));
     if (c->on_plane()) {
       j["plane"] = {{"normal", vec_json(c->plane_normal)}, {"point", vec_json(c->plane_point)}};
       // A body's plane: its normal and point in that body's frame.
@@ -99,8 +101,12 @@ std::string constraint_text(const model::Constraint& constraint) {
       c->has_friction()
           ? fmt::format("friction μs {:.6g}, μk {:.6g}", c->static_friction, c->kinetic_friction)
           : std::string("frictionless");
-  return fmt::format("contact, {} on {}, restitution {:.6g}, {}",
-                     shape(c->frame.body, c->frame.X_BF.p, c->radius), other, c->restitution,
+  const std::string body =
+      c->shape == model::ContactShape::disk
+          ? fmt::format("{}'s disk rim (radius {:.6g} m, centre {} m, axis {})", c->frame.body,
+                        c->radius, vec_text(c->frame.X_BF.p), vec_text(c->frame.X_BF.R.col(2)))
+          : shape(c->frame.body, c->frame.X_BF.p, c->radius);
+  return fmt::format("contact, {} on {}, restitution {:.6g}, {}", body, other, c->restitution,
                      friction);
 }
 

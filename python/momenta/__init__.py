@@ -73,6 +73,7 @@ from ._core import (
     find_rolling_steady_motions,
     find_steady_precession,
     free_body_diagram,
+    impulse_momentum_diagram,
     impulse_response,
     joint_steady_motion,
     linear_analysis,
@@ -169,7 +170,7 @@ def _takes_a_model(function):
 
 
 for _name in ["campbell_diagram", "find_equilibrium", "find_rolling_steady_motions", "find_steady_precession",
-              "free_body_diagram", "joint_steady_motion", "linear_analysis", "linearize", "relative_kinematics",
+              "free_body_diagram", "impulse_momentum_diagram", "joint_steady_motion", "linear_analysis", "linearize", "relative_kinematics",
               "rolling_steady_modes", "simulate", "steady_motion", "steady_precession",
               "with_initial_state"] + (["equations", "symbolic_transfer_function"] if with_symbolic else []):
     globals()[_name] = _takes_a_model(globals()[_name])

@@ -299,8 +299,8 @@ class ModelBuilder:
     def add_body(self, name: str, mass_properties: MassProperties) -> ModelBuilder:
         """A body with its mass properties in its own frame (momenta.inertia)."""
         ...
-    def add_contact(self, name: str, *, body: str, point: object = (0, 0, 0), radius: float = 0.0, normal: object = (0, 0, 1), plane_point: object = (0, 0, 0), other_body: str = '', other_point: object = (0, 0, 0), other_radius: float = 0.0, restitution: float = 0.0, friction: float = 0.0, kinetic_friction: object = None, other_plane: bool = False) -> ModelBuilder:
-        """A unilateral contact of a body's point (radius 0) or sphere (centre `point` in the body, m) with the ground plane through plane_point with unit `normal` (world), or with other_body's sphere (centre other_point, radius other_radius) — or its plane (other_plane=True: normal and plane_point in other_bo"""
+    def add_contact(self, name: str, *, body: str, point: object = (0, 0, 0), radius: float = 0.0, normal: object = (0, 0, 1), plane_point: object = (0, 0, 0), other_body: str = '', other_point: object = (0, 0, 0), other_radius: float = 0.0, restitution: float = 0.0, friction: float = 0.0, kinetic_friction: object = None, other_plane: bool = False, shape: str = 'sphere', axis: object = (0, 0, 1)) -> ModelBuilder:
+        """A unilateral contact of a body's point (radius 0), sphere (centre `point` in the body, m) or disk rim (shape='disk': centre `point`, `axis` in the body) with the ground plane through plane_point with unit `normal` (world), or with other_body's sphere (centre other_point, radius other_radius) — or it"""
         ...
     def add_controller(self, name: str, type: str, *, measure: object, drives: object, reference: object = None, kp: float = 0.0, ki: float = 0.0, kd: float = 0.0, derivative_filter: float = 0.0, gain: object = None, state_reference: object = None, feedforward: object = None, numerator: object = None, denominator: object = None, A: object = None, B: object = None, C: object = None, D: object = None, sample_time: float = 0.0, quantization: float = 0.0, noise: float = 0.0, delay: int = 0, seed: int = 1, u_min: float = -inf, u_max: float = inf, rate_limit: float = inf) -> ModelBuilder:
         """A feedback controller, as the model file's `controllers:` (docs/control.md): type 'pid' (kp, ki, kd, derivative_filter), 'state_feedback' (gain K, state_reference, feedforward), 'transfer_function' (numerator, denominator) or 'state_space' (A, B, C, D). `measure` names coordinates ("x.position", "ti"""
@@ -822,6 +822,10 @@ def find_steady_precession(model: Model, tilt: float, spin: float) -> FoundPrece
 
 def free_body_diagram(model: Model, body: ArrayLike, *, q: object = None, v: object = None, t: float = 0.0) -> dict:
     """The body's free-body and kinetic diagrams at (t, q, v) — without q and v, the state the model's own run reaches at t (its initial state at t = 0) — as `momenta diagram` computes them: a dict with `loads` (each a dict: kind, name, description, point, force, couple in the world's axes, and the joint i"""
+    ...
+
+def impulse_momentum_diagram(model: Model, body: ArrayLike, impulses: list, *, q: object = None, v: object = None, t: float = 0.0) -> dict:
+    """The body's impulse–momentum diagram for impulses applied at (t, q, v) — impulses = [(body, p_BoP_B, P_W), ...] (N·s), as `momenta diagram --at … --impulse …` draws it: a dict with the momenta linear_before (m v̄₁), angular_before (H_G1), linear_after, angular_after, the `impulses` on the body (each """
     ...
 
 def impulse_response(system: object, input: object = 0, *, final_time: Optional[float] = None, samples: Optional[int] = None) -> TimeResponse:

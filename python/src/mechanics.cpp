@@ -1,4 +1,5 @@
-// The textbook's method from Python: free-body diagrams (`momenta diagram`), rotating-frame
+// The textbook's method from Python: free-body and impulse–momentum diagrams (`momenta
+// diagram`), rotating-frame
 // kinematics (`momenta kinematics`) and equations of motion in symbols (`momenta equations`),
 // each returning what the command prints, as Python values.
 
@@ -10,10 +11,13 @@
 #include "bindings.hpp"
 #include "model_handle.hpp"
 #include "momenta/analysis/free_body.hpp"
+#include "momenta/analysis/impulse_momentum.hpp"
+#include "momenta/dynamics/impulse.hpp"
 #include "momenta/dynamics/momentum.hpp"
 #include "momenta/dynamics/relative_kinematics.hpp"
 #include "momenta/model/euler_coordinates.hpp"
 #include "momenta/report/free_body_svg.hpp"
+#include "momenta/report/impulse_momentum_svg.hpp"
 #include "momenta/simulate/run_request.hpp"
 #include "momenta/simulate/state_at.hpp"
 #if MOMENTA_WITH_SYMBOLIC
@@ -122,6 +126,60 @@ them: a dict with `loads` (each a dict: kind, name,
 description, point, force, couple in the world's axes, and the joint it acts through), the kinetic
 terms m_a_G, I_alpha, omega_cross_H, the residuals of ΣF = m a_G and ΣM_G = Ḣ_G, the plane normal
 when the diagram is planar, and `svg`, the picture (docs/diagrams.md).)doc");
+
+  m.def(
+      "impulse_momentum_diagram",
+      [](const ModelHandle& h, const py::handle& body, const py::list& impulses,
+         const py::object& q, const py::object& v, double t) {
+        const Instant s = instant_of(h, q, v, t);
+        std::vector<dynamics::PointImpulse> blow;
+        for (const py::handle& item : impulses) {
+          const py::tuple hit = py::reinterpret_borrow<py::object>(item).cast<py::tuple>();
+          if (hit.size() != 3) {
+            throw py::value_error(
+                "impulses: a list of (body, point p_BoP_B, impulse in W) triples");
+          }
+          blow.push_back(
+              {body_index_arg(h, hit[0]), vec3_arg(hit[1], "point"), vec3_arg(hit[2], "impulse")});
+        }
+        const dynamics::ImpulsiveMotion motion =
+            dynamics::impulsive_motion(h.model(), s.q, s.v, blow);
+        const int b = body_index_arg(h, body);
+        const analysis::ImpulseMomentumDiagram d = analysis::impulse_momentum_diagram(
+            h.model(), h.model().body(b).name, s.t, s.q, motion, blow, "applied impulse");
+        py::list listed;
+        for (const analysis::Load& impulse : d.impulses) {
+          py::dict item = load_dict(h.model(), impulse);
+          item["impulse"] = item["force"];
+          item.attr("pop")("force");
+          listed.append(item);
+        }
+        py::dict out;
+        out["body"] = d.body;
+        out["t"] = d.t;
+        out["mass"] = d.mass;
+        out["com"] = to_numpy(d.p_WoG_W);
+        out["plane_normal"] =
+            d.plane_normal ? py::object(to_numpy(*d.plane_normal)) : py::object(py::none());
+        out["linear_before"] = to_numpy(d.linear_before());
+        out["angular_before"] = to_numpy(d.angular_before());
+        out["impulses"] = listed;
+        out["linear_after"] = to_numpy(d.linear_after());
+        out["angular_after"] = to_numpy(d.angular_after());
+        out["linear_residual"] = to_numpy(d.linear_residual());
+        out["angular_residual"] = to_numpy(d.angular_residual());
+        out["svg"] = report::impulse_momentum_svg(d, h.file->name);
+        return out;
+      },
+      py::arg("model"), py::arg("body"), py::arg("impulses"), py::kw_only(),
+      py::arg("q") = py::none(), py::arg("v") = py::none(), py::arg("t") = 0.0,
+      R"doc(The body's impulse–momentum diagram for impulses applied at (t, q, v) — impulses =
+[(body, p_BoP_B, P_W), ...] (N·s), as `momenta diagram --at … --impulse …` draws it: a dict
+with the momenta linear_before (m v̄₁), angular_before (H_G1), linear_after, angular_after, the
+`impulses` on the body (each a dict: kind, name, description, point, impulse, couple in the
+world's axes, and the joint it acts through — the blow and the joints' and constraints'
+impulsive reactions), the residuals of m v̄₁ + ΣP = m v̄₂ and H_G1 + ΣM_G = H_G2, the plane
+normal when planar, and `svg`, the picture (docs/diagrams.md).)doc");
 
   m.def(
       "relative_kinematics",

@@ -15,6 +15,7 @@
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
 #include "momenta/frontend/model_loading.hpp"
+#include "momenta/math/rotation.hpp"
 #include "momenta/model/model_builder.hpp"
 
 namespace momenta::python {
@@ -482,11 +483,20 @@ left out; docs/contacts.md).)doc")
              double radius, const py::object& normal, const py::object& plane_point,
              std::string other_body, const py::object& other_point, double other_radius,
              double restitution, double friction, const py::object& kinetic_friction,
-             bool other_plane) -> Builder& {
+             bool other_plane, const std::string& shape, const py::object& axis) -> Builder& {
             model::Contact c;
             c.name = std::move(name);
             c.frame.body = body;
             c.frame.X_BF.p = vec3_arg(point, "point");
+            if (shape == "disk") {
+              c.shape = model::ContactShape::disk;
+              const Vec3 a = vec3_arg(axis, "axis");
+              if (!(a.norm() > 0.0)) throw py::value_error("add_contact: axis must not be zero");
+              c.frame.X_BF.R = plane_frame(a.normalized());
+            } else if (shape != "sphere") {
+              throw py::value_error(fmt::format(
+                  "add_contact: unknown shape '{}'; expected 'sphere' or 'disk'", shape));
+            }
             c.radius = radius;
             c.plane_normal = vec3_arg(normal, "normal");
             c.plane_point = vec3_arg(plane_point, "plane_point");
@@ -508,11 +518,13 @@ left out; docs/contacts.md).)doc")
           py::arg("other_point") = py::make_tuple(0, 0, 0), py::arg("other_radius") = 0.0,
           py::arg("restitution") = 0.0, py::arg("friction") = 0.0,
           py::arg("kinetic_friction") = py::none(), py::arg("other_plane") = false,
-          "A unilateral contact of a body's point (radius 0) or sphere (centre `point` in the "
-          "body, m) with the ground plane through plane_point with unit `normal` (world), or "
+          py::arg("shape") = "sphere", py::arg("axis") = py::make_tuple(0, 0, 1),
+          "A unilateral contact of a body's point (radius 0), sphere (centre `point` in the "
+          "body, m) or disk rim (shape='disk': centre `point`, `axis` in the body) with the ground "
+          "plane through plane_point with unit `normal` (world), or "
           "with other_body's sphere (centre other_point, radius other_radius) — or its plane "
           "(other_plane=True: normal and plane_point in other_body's frame): impacts with "
-          "Newton's restitution e ∈ [0, 1], resting contact while it pushes; on a plane, "
+          "Newton's restitution e ∈ [0, 1], resting contact while it pushes; "
           "Coulomb friction with the static coefficient `friction` and the kinetic one "
           "`kinetic_friction` (≤ friction; the same when left out): it sticks while the cone "
           "holds, slides against the slip beyond (docs/contacts.md).")

@@ -278,53 +278,6 @@ class DiagramBuilder {
   int joint_index_ = -1;           // the joint add_joint is at
 };
 
-// The plane of motion, when every force and m a_G lie in it and every moment about G (and Ḣ_G)
-// is normal to it.
-std::optional<Vec3> plane_of_motion(const FreeBodyDiagram& d, const model::Model& model, int b) {
-  std::vector<Vec3> candidates = {Vec3::UnitZ(), Vec3::UnitY(), Vec3::UnitX()};
-  const model::Joint& joint = model.joint(model.body(b).joint_index);
-  if (joint.type == model::JointType::revolute || joint.type == model::JointType::cylindrical) {
-    // The axis is the same in J and J'; J' turns with the body (R_WJ' = R_WB R_BJ').
-    const auto& c = model.joint_constants()[static_cast<std::size_t>(joint.index)];
-    candidates.push_back((d.R_WB * c.X_JC.R.transpose() * joint.axis).normalized());
-  }
-  // From the loads themselves: the largest moment about G, and the normal of the two largest
-  // forces (a rotor's bearing couple turns with it, off every world axis).
-  double force_scale = d.m_a_G().norm(), moment_scale = d.H_G_dot().norm();
-  Vec3 largest_moment = d.H_G_dot(), largest_force = d.m_a_G(), second_force = Vec3::Zero();
-  for (const Load& load : d.loads) {
-    const Vec3 m_G = (load.p_WoP_W - d.p_WoG_W).cross(load.force_W) + load.couple_W;
-    if (m_G.norm() > moment_scale) largest_moment = m_G;
-    moment_scale = std::max(moment_scale, m_G.norm());
-    if (load.force_W.norm() > force_scale) {
-      second_force = largest_force;
-      largest_force = load.force_W;
-    } else if (load.force_W.norm() > second_force.norm()) {
-      second_force = load.force_W;
-    }
-    force_scale = std::max(force_scale, load.force_W.norm());
-  }
-  if (largest_moment.norm() > 0.0) candidates.push_back(largest_moment.normalized());
-  const Vec3 across = largest_force.cross(second_force);
-  if (across.norm() > kRelativeRoundOff * largest_force.norm() * second_force.norm() &&
-      across.norm() > 0.0) {
-    candidates.push_back(across.normalized());
-  }
-  const double force_tol = kRelativeRoundOff * force_scale;
-  const double moment_tol = kRelativeRoundOff * moment_scale;
-  for (const Vec3& n : candidates) {
-    const auto in_plane = [&](const Vec3& f) { return std::abs(f.dot(n)) <= force_tol; };
-    const auto normal = [&](const Vec3& m) { return (m - m.dot(n) * n).norm() <= moment_tol; };
-    bool planar = in_plane(d.m_a_G()) && normal(d.H_G_dot());
-    for (const Load& load : d.loads) {
-      planar = planar && in_plane(load.force_W) &&
-               normal((load.p_WoP_W - d.p_WoG_W).cross(load.force_W) + load.couple_W);
-    }
-    if (planar) return n;
-  }
-  return std::nullopt;
-}
-
 }  // namespace
 
 const char* load_kind_name(LoadKind kind) {
@@ -343,25 +296,36 @@ const char* load_kind_name(LoadKind kind) {
   return "";
 }
 
-Vec3 FreeBodyDiagram::sum_of_forces() const {
+Vec3 sum_of_forces(std::span<const Load> loads) {
   Vec3 sum = Vec3::Zero();
   for (const Load& load : loads) sum += load.force_W;
   return sum;
 }
 
-Vec3 FreeBodyDiagram::sum_of_moments_about_G() const {
+Vec3 sum_of_moments_about(std::span<const Load> loads, const Vec3& p_WoO_W) {
   Vec3 sum = Vec3::Zero();
   for (const Load& load : loads)
-    sum += (load.p_WoP_W - p_WoG_W).cross(load.force_W) + load.couple_W;
+    sum += (load.p_WoP_W - p_WoO_W).cross(load.force_W) + load.couple_W;
   return sum;
+}
+
+Vec3 FreeBodyDiagram::sum_of_forces() const { return analysis::sum_of_forces(loads); }
+
+Vec3 FreeBodyDiagram::sum_of_moments_about_G() const {
+  return sum_of_moments_about(loads, p_WoG_W);
 }
 
 std::optional<Load> constraint_load(const system::MultibodySystem& system, int constraint,
                                     int body) {
   const system::ConstraintSolver* solver = system.constraints();
   if (solver == nullptr) return std::nullopt;
-  const dynamics::ConstraintRows& rows = solver->rows();
-  const VecX& lambda = solver->multipliers();
+  return constraint_load(system.model(), system.data(), solver->rows(), solver->multipliers(),
+                         constraint, body);
+}
+
+std::optional<Load> constraint_load(const model::Model& model, const dynamics::Data& data,
+                                    const dynamics::ConstraintRows& rows, const VecX& multipliers,
+                                    int constraint, int body) {
   Vec6 w_O = Vec6::Zero();  // on the body, in W about Wo
   bool acts = false;
   for (int i = 0; i < rows.count; ++i) {
@@ -370,13 +334,11 @@ std::optional<Load> constraint_load(const system::MultibodySystem& system, int c
     const double sign = rows.body_b[row] == body ? 1.0 : rows.body_a[row] == body ? -1.0 : 0.0;
     if (sign == 0.0 || rows.wrench_W[row].isZero(0.0)) continue;
     acts = true;
-    w_O += sign * lambda[i] * rows.wrench_W[row];
+    w_O += sign * multipliers[i] * rows.wrench_W[row];
   }
   if (!acts) return std::nullopt;
-  const model::Model& model = system.model();
   const model::Constraint& c = model.constraints()[static_cast<std::size_t>(constraint)];
-  const Vec3 p_WoG_W =
-      system.data().X_WB[body].apply(model.body(body).mass_properties.center_of_mass());
+  const Vec3 p_WoG_W = data.X_WB[body].apply(model.body(body).mass_properties.center_of_mass());
   const Vec3 f = w_O.tail<3>();
   const Vec3 n_G = w_O.head<3>() - p_WoG_W.cross(f);
   const std::string& name = model::constraint_name(c);
@@ -384,6 +346,61 @@ std::optional<Load> constraint_load(const system::MultibodySystem& system, int c
       LoadKind::reaction, name,
       fmt::format("reaction of the {} constraint {}", model::constraint_type_name(c), name),
       p_WoG_W, n_G, f);
+}
+
+std::optional<Vec3> plane_of_loads(const model::Model& model, int b, const Mat3& R_WB,
+                                   const Vec3& p_WoG_W, std::span<const Load> loads,
+                                   std::span<const Vec3> forces, std::span<const Vec3> moments) {
+  std::vector<Vec3> candidates = {Vec3::UnitZ(), Vec3::UnitY(), Vec3::UnitX()};
+  const model::Joint& joint = model.joint(model.body(b).joint_index);
+  if (joint.type == model::JointType::revolute || joint.type == model::JointType::cylindrical) {
+    // The axis is the same in J and J'; J' turns with the body (R_WJ' = R_WB R_BJ').
+    const auto& c = model.joint_constants()[static_cast<std::size_t>(joint.index)];
+    candidates.push_back((R_WB * c.X_JC.R.transpose() * joint.axis).normalized());
+  }
+  // From the loads themselves: the largest moment about G, and the normal of the two largest
+  // forces (a rotor's bearing couple turns with it, off every world axis).
+  double force_scale = 0.0, moment_scale = 0.0;
+  Vec3 largest_moment = Vec3::Zero(), largest_force = Vec3::Zero(), second_force = Vec3::Zero();
+  const auto consider_force = [&](const Vec3& f) {
+    if (f.norm() > force_scale) {
+      second_force = largest_force;
+      largest_force = f;
+    } else if (f.norm() > second_force.norm()) {
+      second_force = f;
+    }
+    force_scale = std::max(force_scale, f.norm());
+  };
+  const auto consider_moment = [&](const Vec3& m) {
+    if (m.norm() > moment_scale) largest_moment = m;
+    moment_scale = std::max(moment_scale, m.norm());
+  };
+  for (const Vec3& f : forces) consider_force(f);
+  for (const Vec3& m : moments) consider_moment(m);
+  for (const Load& load : loads) {
+    consider_moment((load.p_WoP_W - p_WoG_W).cross(load.force_W) + load.couple_W);
+    consider_force(load.force_W);
+  }
+  if (largest_moment.norm() > 0.0) candidates.push_back(largest_moment.normalized());
+  const Vec3 across = largest_force.cross(second_force);
+  if (across.norm() > kRelativeRoundOff * largest_force.norm() * second_force.norm() &&
+      across.norm() > 0.0) {
+    candidates.push_back(across.normalized());
+  }
+  const double force_tol = kRelativeRoundOff * force_scale;
+  const double moment_tol = kRelativeRoundOff * moment_scale;
+  for (const Vec3& n : candidates) {
+    const auto in_plane = [&](const Vec3& f) { return std::abs(f.dot(n)) <= force_tol; };
+    const auto normal = [&](const Vec3& m) { return (m - m.dot(n) * n).norm() <= moment_tol; };
+    bool planar = std::all_of(forces.begin(), forces.end(), in_plane) &&
+                  std::all_of(moments.begin(), moments.end(), normal);
+    for (const Load& load : loads) {
+      planar = planar && in_plane(load.force_W) &&
+               normal((load.p_WoP_W - p_WoG_W).cross(load.force_W) + load.couple_W);
+    }
+    if (planar) return n;
+  }
+  return std::nullopt;
 }
 
 FreeBodyDiagram free_body_diagram(system::MultibodySystem& system, const std::string& body,
@@ -402,7 +419,8 @@ FreeBodyDiagram free_body_diagram(system::MultibodySystem& system, const std::st
   builder.add_body_elements();
   builder.add_constraints();
   builder.add_joints();
-  d.plane_normal = plane_of_motion(d, model, b);
+  const std::array<Vec3, 1> forces{d.m_a_G()}, moments{d.H_G_dot()};
+  d.plane_normal = plane_of_loads(model, b, d.R_WB, d.p_WoG_W, d.loads, forces, moments);
   return d;
 }
 

@@ -174,20 +174,78 @@ void rolling_rows(const model::RollingContact& c, const FrameMotionOf<S>& mb, Ro
       force_rate<S>(contact, contact_rate, lateral, lateral_rate));
 }
 
-// A contact of the body of mb with the ground plane: the gap n · (centre − plane point) − radius,
-// its force along n at the sphere's lowest point (the point itself for radius 0); with friction,
-// no slip along the plane's tangents t₁, t₂ there (dynamics/contact_geometry.hpp). On body a's
-// plane the same, with the plane's normal and tangents turning with a. With another
-// body's sphere (ma its centre): the gap |c_b − c_a| − r_a − r_b, its force along the line of
-// centres e at the contact point c_a + r_a e (on b; −e on a), whose rate along e is that of the
-// centres' distance — the spheres' spins move their material points there across e only.
+// The tangents of a plane of unit normal n turning at n_rate, and their rates: t₁ the world's x
+// projected on it (its y where n is within 25° of x: math/rotation.hpp's plane_tangent, which
+// contact_geometry takes) and t₂ = n × t₁.
+template <class S>
+struct TangentsOf {
+  Vec3Of<S> t1, t1_rate, t2, t2_rate;
+};
+
+template <class S>
+TangentsOf<S> turning_tangents(const Vec3Of<S>& n, const Vec3Of<S>& n_rate) {
+  const Vec3Of<S> x = std::abs(value_of(n.x())) < 0.9 ? Vec3Of<S>::UnitX() : Vec3Of<S>::UnitY();
+  const S along = n.dot(x);
+  const Vec3Of<S> p = x - n * along;
+  const S norm = p.norm();
+  TangentsOf<S> t;
+  t.t1 = p / norm;
+  t.t1_rate = unit_rate<S>(t.t1, Vec3Of<S>(-n_rate * along - n * n_rate.dot(x)), norm);
+  t.t2 = n.cross(t.t1);
+  t.t2_rate = n_rate.cross(t.t1) + n.cross(t.t1_rate);
+  return t;
+}
+
+// Where body b of a contact (mb its frame) touches a plane of normal n turning at n_rate: the
+// offset from its centre mb.p to the point of its surface nearest the plane, and the offset's
+// rate. A sphere's −r n; a disk's rim point −r w / |w|, w = n − (n · a) a with a the disk's axis
+// (the frame's z), which moves round the rim as the disk rolls — along the frame's x axis where
+// the disk lies flat and no rim point is nearest (model::Contact).
+template <class S>
+struct SurfaceOffsetOf {
+  Vec3Of<S> offset;
+  Vec3Of<S> rate;
+};
+
+template <class S>
+SurfaceOffsetOf<S> surface_offset(const model::Contact& c, const FrameMotionOf<S>& mb,
+                                  const Vec3Of<S>& n, const Vec3Of<S>& n_rate) {
+  if (c.shape == model::ContactShape::sphere) return {-c.radius * n, -c.radius * n_rate};
+  const Vec3Of<S> axis = mb.R.col(2);
+  const Vec3Of<S> axis_rate = mb.w().cross(axis);
+  const S along = n.dot(axis);
+  const Vec3Of<S> w = n - along * axis;  // the normal's part in the disk's plane
+  const S s = w.norm();
+  if (!(value_of(s) > kDegenerate)) {
+    const Vec3Of<S> x = mb.R.col(0);
+    return {c.radius * x, c.radius * mb.w().cross(x)};
+  }
+  const Vec3Of<S> w_rate =
+      n_rate - (n_rate.dot(axis) + n.dot(axis_rate)) * axis - along * axis_rate;
+  const Vec3Of<S> u = w / s;
+  return {-c.radius * u, -c.radius * unit_rate<S>(u, w_rate, s)};
+}
+
+// A contact of the body of mb with the ground plane: the gap n · (contact − plane point) at the
+// point of its sphere or disk rim nearest the plane (surface_offset; the point itself for radius
+// 0), its force along n there; with friction, no slip along the plane's tangents t₁, t₂ there
+// (dynamics/contact_geometry.hpp). On body a's plane the same, with the plane's normal and
+// tangents turning with a. With another body's sphere (ma its centre): the gap
+// |c_b − c_a| − r_a − r_b, its force along the line of centres e at the contact point c_a + r_a e
+// (on b; −e on a), whose rate along e is that of the centres' distance — the spheres' spins move
+// their material points there across e only.
+//
+// The contact point's rate is that of the geometric point (the centre's velocity plus the
+// offset's rate), what the wrench's rate needs; the gap's rate is still n · (the material
+// points' relative velocity) there, since the point is where the gap is least.
 template <class S, class Row>
 void contact_rows(const model::Contact& c, const FrameMotionOf<S>& ma, const FrameMotionOf<S>& mb,
                   Row&& row) {
   if (c.on_ground()) {
     const Vec3Of<S> n = c.plane_normal.cast<S>();
-    const Vec3Of<S> contact = mb.p - c.radius * n;
-    const Vec3Of<S> contact_rate = mb.point_velocity(mb.p);  // n · (ω × n) = 0: the centre's
+    const SurfaceOffsetOf<S> offset = surface_offset<S>(c, mb, n, Vec3Of<S>::Zero());
+    const Vec3Of<S> contact = mb.p + offset.offset;
+    const Vec3Of<S> contact_rate = mb.point_velocity(mb.p) + offset.rate;
     row(n.dot(contact - c.plane_point.cast<S>()), true, force_at<S>(contact, n),
         force_rate<S>(contact, contact_rate, n, Vec3Of<S>::Zero()));
     if (!c.has_friction()) return;
@@ -204,10 +262,12 @@ void contact_rows(const model::Contact& c, const FrameMotionOf<S>& ma, const Fra
     // Body a's plane (ma its frame: z the normal, x and y the tangents), turning with a at ω_a.
     const Vec3Of<S> n = ma.R.col(2);
     const Vec3Of<S> n_rate = ma.w().cross(n);
-    const Vec3Of<S> contact = mb.p - c.radius * n;
-    const Vec3Of<S> contact_rate = mb.point_velocity(mb.p) - c.radius * n_rate;
-    row(n.dot(mb.p - ma.p) - c.radius, true, force_at<S>(contact, n),
-        force_rate<S>(contact, contact_rate, n, n_rate));
+    const SurfaceOffsetOf<S> offset = surface_offset<S>(c, mb, n, n_rate);
+    const Vec3Of<S> contact = mb.p + offset.offset;
+    const Vec3Of<S> contact_rate = mb.point_velocity(mb.p) + offset.rate;
+    const S gap = c.shape == model::ContactShape::sphere ? S(n.dot(mb.p - ma.p) - c.radius)
+                                                         : S(n.dot(contact - ma.p));
+    row(gap, true, force_at<S>(contact, n), force_rate<S>(contact, contact_rate, n, n_rate));
     if (!c.has_friction()) return;
     for (int k = 0; k < 2; ++k) {
       const Vec3Of<S> t = ma.R.col(k);
@@ -228,6 +288,14 @@ void contact_rows(const model::Contact& c, const FrameMotionOf<S>& ma, const Fra
   const Vec3Of<S> contact_rate = ca_rate + c.other_radius * e_rate;
   row(length - (c.radius + c.other_radius), true, force_at<S>(contact, e),
       force_rate<S>(contact, contact_rate, e, e_rate));
+  if (!c.has_friction()) return;
+  // Friction: no slip of the material points at the contact along the tangents across the line
+  // of centres, which turn with it.
+  const TangentsOf<S> t = turning_tangents<S>(e, e_rate);
+  row(S(0.0), false, force_at<S>(contact, t.t1),
+      force_rate<S>(contact, contact_rate, t.t1, t.t1_rate));
+  row(S(0.0), false, force_at<S>(contact, t.t2),
+      force_rate<S>(contact, contact_rate, t.t2, t.t2_rate));
 }
 
 // Knife edge on the body of mb: no velocity of the point across the blade, s = n × x_B / |…|.

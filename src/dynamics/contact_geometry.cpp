@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "constraint_row_formulas.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/math/rotation.hpp"
 
@@ -26,6 +27,39 @@ Vec3 material_velocity(const Data& data, int body, const Vec3& point_W) {
   return X.R * (V.tail<3>() + V.head<3>().cross(p_B));
 }
 
+// The motion of the frame X_BF of body (the ground's where body is 0) at data's poses, and, with
+// motion, its velocity and acceleration — spatial, in W about Wo (dynamics/constraints.hpp's rows).
+detail::FrameMotionOf<double> frame_motion(const Data& data, int body, const Transform& X_BF,
+                                           bool motion) {
+  detail::FrameMotionOf<double> m;
+  const Transform& X_WB = data.X_WB[body];
+  const Transform X_WF = X_WB * X_BF;
+  m.R = X_WF.R;
+  m.p = X_WF.p;
+  if (motion && body != 0) {
+    m.V = X_WB.act_motion(data.V_WB_B[body]);
+    m.A = X_WB.act_motion(data.A_WB_B[body]);
+  }
+  return m;
+}
+
+// Body b's surface point nearest a plane of normal n: the sphere's lowest point or the disk's.
+Vec3 nearest_point(const model::Contact& contact, const Data& data, const Vec3& normal_W) {
+  const detail::FrameMotionOf<double> mb =
+      frame_motion(data, contact.frame.body_index, contact.frame.X_BF, false);
+  return mb.p + detail::surface_offset<double>(contact, mb, normal_W, Vec3::Zero()).offset;
+}
+
+// The gap to a plane through plane_point: from a sphere's centre less its radius (as the rows
+// write it), from a disk's rim point.
+double plane_gap(const model::Contact& contact, const ContactGeometry& g, const Vec3& centre_W,
+                 const Vec3& plane_point_W) {
+  if (contact.shape == model::ContactShape::sphere) {
+    return g.normal_W.dot(centre_W - plane_point_W) - contact.radius;
+  }
+  return g.normal_W.dot(g.point_W - plane_point_W);
+}
+
 }  // namespace
 
 Vec3 contact_point_velocity(const model::Contact& contact, const Data& data, const Vec3& point_W) {
@@ -38,8 +72,8 @@ ContactGeometry contact_geometry(const model::Contact& contact, const Data& data
   const Vec3 centre_b = data.X_WB[contact.frame.body_index].apply(contact.frame.X_BF.p);
   if (contact.on_ground()) {
     g.normal_W = contact.plane_normal;
-    g.gap = g.normal_W.dot(centre_b - contact.plane_point) - contact.radius;
-    g.point_W = centre_b - contact.radius * g.normal_W;
+    g.point_W = nearest_point(contact, data, g.normal_W);
+    g.gap = plane_gap(contact, g, centre_b, contact.plane_point);
     return with_tangents(g);
   }
   if (contact.other_plane) {  // the plane's frame: z its normal, x and y its tangents
@@ -47,8 +81,8 @@ ContactGeometry contact_geometry(const model::Contact& contact, const Data& data
     g.normal_W = X_WF.R.col(2);
     g.tangent_1_W = X_WF.R.col(0);
     g.tangent_2_W = X_WF.R.col(1);
-    g.gap = g.normal_W.dot(centre_b - X_WF.p) - contact.radius;
-    g.point_W = centre_b - contact.radius * g.normal_W;
+    g.point_W = nearest_point(contact, data, g.normal_W);
+    g.gap = plane_gap(contact, g, centre_b, X_WF.p);
     return g;
   }
   const Vec3 centre_a = data.X_WB[contact.other.body_index].apply(contact.other.X_BF.p);
@@ -63,6 +97,29 @@ ContactGeometry contact_geometry(const model::Contact& contact, const Data& data
   g.gap = length - contact.radius - contact.other_radius;
   g.point_W = centre_a + contact.other_radius * g.normal_W;
   return with_tangents(g);
+}
+
+double contact_gap_acceleration(const model::Contact& contact, const Data& data) {
+  const detail::FrameMotionOf<double> ma =
+      frame_motion(data, contact.other.body_index, contact.other.X_BF, true);
+  const detail::FrameMotionOf<double> mb =
+      frame_motion(data, contact.frame.body_index, contact.frame.X_BF, true);
+  // The gap's row comes first: its second rate is ẇ · (V_b − V_a) + w · (A_b − A_a).
+  double gap_acceleration = 0.0;
+  bool first = true;
+  detail::contact_rows<double>(contact, ma, mb,
+                               [&](double, bool, const Vec6& w, const Vec6& w_rate) {
+                                 if (!first) return;
+                                 gap_acceleration = w_rate.dot(mb.V - ma.V) + w.dot(mb.A - ma.A);
+                                 first = false;
+                               });
+  return gap_acceleration;
+}
+
+bool disk_lies_flat(const model::Contact& contact, const Data& data, double tolerance) {
+  if (contact.shape != model::ContactShape::disk) return false;
+  const Vec3 axis_W = (data.X_WB[contact.frame.body_index] * contact.frame.X_BF).R.col(2);
+  return axis_W.cross(contact_geometry(contact, data).normal_W).norm() < tolerance;
 }
 
 }  // namespace momenta::dynamics

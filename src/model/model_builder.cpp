@@ -674,6 +674,14 @@ class ModelAssembler {
     MOMENTA_REQUIRE(c.radius >= 0.0 && std::isfinite(c.radius),
                     "{}: radius must be zero (a point) or positive and finite, got {} m", who,
                     c.radius);
+    if (c.shape == model::ContactShape::disk) {
+      MOMENTA_REQUIRE(c.radius > 0.0, "{}: a disk's radius must be positive, got {} m", who,
+                      c.radius);
+      require(c.on_plane(),
+              who +
+                  ": a disk's rim touches a plane, the ground's or a body's; a disk against "
+                  "another body's sphere is not modelled (docs/contacts.md)");
+    }
     if (c.on_plane()) {
       check_plane_normal(c.plane_normal, who);
       MOMENTA_REQUIRE(c.plane_point.allFinite(), "{}: plane point {} is not finite", who,
@@ -711,11 +719,6 @@ class ModelAssembler {
                     "{}: the kinetic friction coefficient {} must be in [0, μs = {}]: sliding "
                     "friction is no greater than the friction that can hold",
                     who, c.kinetic_friction, c.static_friction);
-    MOMENTA_REQUIRE(!c.has_friction() || c.on_plane(),
-                    "{}: friction between two bodies' spheres is not modelled yet "
-                    "(docs/contacts.md); friction acts at contacts with a plane, the ground's or "
-                    "a body's",
-                    who);
   }
 
   void resolve(KnifeEdge& c, const std::string& who) const {

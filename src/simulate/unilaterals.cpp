@@ -12,7 +12,6 @@
 #include "momenta/dynamics/contact_geometry.hpp"
 #include "momenta/dynamics/impulse.hpp"
 #include "momenta/dynamics/kinematics.hpp"
-#include "momenta/dynamics/point_kinematics.hpp"
 #include "momenta/system/multibody_system.hpp"
 
 namespace momenta::simulate {
@@ -30,6 +29,10 @@ constexpr int kActsAtOneInstant = 64;
 // A contact's gap below zero by this much (m, times its radius where that is above 1 m) is
 // round-off: above the constraint projection's 1e-14, far below any motion a run resolves.
 constexpr double kContactSlack = 1e-12;
+
+// A disk contact whose axis comes this close to its plane's normal (rad) while it touches lies
+// flat: its face, not a rim point, would touch — not modelled (model::Contact).
+constexpr double kFlatDisk = 1e-6;
 
 // A contact that closes with its contact point slipping slower than this (m/s) is taken as not
 // slipping: it sticks if friction can hold it (projecting that slip away is no visible jump).
@@ -136,32 +139,20 @@ double Unilaterals::acceleration_into(integrate::SecondOrderSystem& advanced, co
   vdot_.resize(state.v.size());
   advanced.acceleration(state.t, state.q, state.v, vdot_);
   if (!e.contact) return -e.outward * vdot_[e.v];
-  // The second rate of the gap: n · a for the ground; for two spheres that of |c_b − c_a|,
-  // n · a_rel + (|v_rel|² − (n · v_rel)²) / |c_b − c_a|.
+  dynamics::forward_kinematics(model_, data_, state.q.head(model_.nq()), state.v.head(model_.nv()),
+                               vdot_.head(model_.nv()));
+  return -dynamics::contact_gap_acceleration(contact_of(e), data_);
+}
+
+void Unilaterals::refuse_flat_disk(const Entry& e, const integrate::State& state) {
   const model::Contact& c = contact_of(e);
-  const auto centre = [&](int body, const Vec3& p) {
-    return dynamics::point_kinematics(model_, data_, state.q.head(model_.nq()),
-                                      state.v.head(model_.nv()), vdot_.head(model_.nv()), body, p);
-  };
-  const dynamics::PointKinematics b = centre(c.frame.body_index, c.frame.X_BF.p);
-  if (c.on_ground()) return -c.plane_normal.dot(b.a_WP_W);
-  if (c.other_plane) {
-    // The centre's acceleration relative to body a, along a's normal: n · (a_b − a_a − 2 ω_a ×
-    // (v_b − v_a)) with a's material point at the centre (its Coriolis term).
-    const int body_a = c.other.body_index;
-    const Transform X_WA = data_.X_WB[body_a];
-    const Vec3 w_a = X_WA.R * data_.V_WB_B[body_a].head<3>();
-    const dynamics::PointKinematics a = centre(body_a, X_WA.R.transpose() * (b.p_WoP_W - X_WA.p));
-    const Vec3 n = (X_WA * c.other.X_BF).R.col(2);
-    return -n.dot(b.a_WP_W - a.a_WP_W - 2.0 * w_a.cross(b.v_WP_W - a.v_WP_W));
-  }
-  const dynamics::PointKinematics a = centre(c.other.body_index, c.other.X_BF.p);
-  const Vec3 d = b.p_WoP_W - a.p_WoP_W;
-  const double length = d.norm();
-  const Vec3 n = d / length;
-  const Vec3 v = b.v_WP_W - a.v_WP_W;
-  const double along = n.dot(v);
-  return -(n.dot(b.a_WP_W - a.a_WP_W) + (v.squaredNorm() - along * along) / length);
+  if (c.shape != model::ContactShape::disk) return;
+  dynamics::forward_kinematics(model_, data_, state.q.head(model_.nq()));
+  if (!dynamics::disk_lies_flat(c, data_, kFlatDisk)) return;
+  throw NumericalError(fmt::format(
+      "contact '{}' at t = {:.9g} s: the disk lies flat on the plane (its axis within {:g} rad of "
+      "the normal) and touches it with its face, which momenta does not model (docs/contacts.md)",
+      c.name, state.t, kFlatDisk));
 }
 
 StopEvent Unilaterals::event_at(const Entry& e, double t, StopEventKind kind) const {
@@ -238,6 +229,7 @@ void Unilaterals::close(system::MultibodySystem& system, integrate::SecondOrderS
     system.hold(e.index, e.value);
     return;
   }
+  refuse_flat_disk(e, at);
   if (e.static_friction > 0.0) {
     const Vec3 slip = slip_velocity(e, at);
     if (slip.norm() > kSlipAtRest) {
@@ -412,9 +404,17 @@ std::vector<StopEvent> Unilaterals::start(system::MultibodySystem& system,
   slip_reference_.assign(entries_.size(), Vec3::UnitX());
   std::vector<StopEvent> events;
   for (const Entry& e : entries_) {
-    if (gap(e, state) > e.slack || rate(e, state) > 0.0) continue;
+    if (gap(e, state) > e.slack) continue;
+    // Touching and leaving it so slowly that the flight is below what a step resolves (the
+    // round-off of a state given as resting on it: a rolling coin's rim point) is resting on it,
+    // as strike() holds such a rebound.
+    const double leaving = rate(e, state);
+    if (leaving > 0.0 && !(2.0 * leaving < rest_flight_ * acceleration_into(advanced, e, state))) {
+      continue;
+    }
     StopEvent event;
     strike(system, advanced, e, state, event);
+    if (leaving > 0.0) event.rest_time = event.time;  // resting from the start: no bounces
     if (event.kind == StopEventKind::rest || event.impulse != 0.0) events.push_back(event);
   }
   return events;
@@ -464,6 +464,7 @@ bool Unilaterals::check(system::MultibodySystem& system, integrate::SecondOrderS
                Pending::reach);
       continue;
     }
+    if (e.contact) refuse_flat_disk(e, end);
     const double push_end = push(system, advanced, e, end);
     if (push_end < 0.0) {
       const auto pushes = [&](const integrate::State& x) { return push(system, advanced, e, x); };

@@ -146,6 +146,91 @@ for (const c of cases) {
   });
 }
 
+// The impulse–momentum diagram (`momenta diagram … --between … --restitution …`): three panels,
+// momenta before + impulses = momenta after, each arrow in its panel with its value, inside the
+// picture, labels apart; the residual lines round-off.
+const impacts = [
+  { name: 'eccentric-impact-rod', model: 'eccentric_impact.yaml', body: 'rod',
+    blow: ['--between', 'sphere', 'rod:0,0,-1.1', '--normal', '1,0,0', '--restitution', '0.6'] },
+  { name: 'eccentric-impact-sphere', model: 'eccentric_impact.yaml', body: 'sphere',
+    blow: ['--between', 'sphere', 'rod:0,0,-1.1', '--normal', '1,0,0', '--restitution', '0.6'] },
+  { name: 'struck-rod-tip', model: 'struck_rod.yaml', body: 'rod',
+    blow: ['--at', 'rod:0,0,-1.2', '--impulse', '4,0,0'] },
+];
+
+for (const c of impacts) {
+  test(`the ${c.name} impulse–momentum diagram shows momenta and impulses in their panels`, async () => {
+    const file = path.join(work, `${c.name}.svg`);
+    const result = JSON.parse(run('diagram', path.join(examples, c.model), '--body', c.body, ...c.blow,
+      '-o', file, '--json'));
+    const page = await browser.newPage();
+    await page.setViewport({ width: 1600, height: 900 });
+    await page.goto(`file://${file}`, { waitUntil: 'load' });
+    const shown = await page.evaluate(() => {
+      const svg = document.querySelector('svg');
+      const box = (e) => { const b = e.getBBox(); return { x: b.x, y: b.y, w: b.width, h: b.height }; };
+      const arrows = [...svg.querySelectorAll('g.force, g.couple')].map((g) => ({
+        type: g.getAttribute('class'), kind: g.dataset.kind, name: g.dataset.name,
+        value: Number(g.dataset.value), panel: g.closest('g.panel').dataset.panel,
+        box: box(g), label: g.querySelector('text').textContent, labelBox: box(g.querySelector('text')),
+      }));
+      const headings = [...svg.querySelectorAll('text')].map((t) => t.textContent);
+      const residuals = [...svg.querySelectorAll('text.residual')].map((t) => t.textContent);
+      return { width: svg.viewBox.baseVal.width, height: svg.viewBox.baseVal.height, arrows, headings, residuals };
+    });
+    await page.screenshot({ path: path.join(artifacts, `impulse-${c.name}.png`), fullPage: true });
+    await page.close();
+
+    const norm = (v) => Math.hypot(...v);
+    for (const heading of ['momenta just before', 'impulses on the body', 'momenta just after', '+', '=']) {
+      assert.ok(shown.headings.includes(heading), `heading ${heading}`);
+    }
+    const largest = Math.max(norm(result.before.linear), norm(result.after.linear),
+      ...result.impulses.map((p) => norm(p.impulse)));
+    // Each side's momentum where it moves, drawn in its panel with its value (N·s).
+    for (const [side, index] of [['before', '₁'], ['after', '₂']]) {
+      const size = norm(result[side].linear);
+      const drawn = shown.arrows.filter((a) => a.panel === side && a.type === 'force');
+      if (size <= 1e-9 * largest) {
+        assert.equal(drawn.length, 0, `no momentum ${side}`);
+        continue;
+      }
+      assert.equal(drawn.length, 1, `m v̄ ${side}`);
+      assert.ok(Math.abs(drawn[0].value - size) <= 1e-12 * size);
+      assert.ok(drawn[0].label.startsWith(`m v̄${index} `), drawn[0].label);
+    }
+    // Every impulse beyond round-off, in the middle panel with its value and kind.
+    for (const p of result.impulses) {
+      const size = norm(p.impulse);
+      const drawn = shown.arrows.filter((a) => a.panel === 'impulses' && a.type === 'force' && a.name === p.name);
+      if (size <= 1e-9 * largest) {
+        assert.equal(drawn.length, 0, `${p.name} (round-off) not drawn`);
+        continue;
+      }
+      assert.equal(drawn.length, 1, `${p.name} drawn once`);
+      assert.equal(drawn[0].kind, p.kind);
+      assert.ok(Math.abs(drawn[0].value - size) <= 1e-12 * size);
+      const digits = Number(drawn[0].label.match(/([-\d.e+]+) N·s/)[1]);
+      assert.ok(Math.abs(digits - size) <= 5e-4 * size, `label ${drawn[0].label} shows ${size}`);
+    }
+    for (const a of shown.arrows) {
+      assert.ok(within(a.box, shown.width, shown.height), `${a.name} inside: ${JSON.stringify(a.box)}`);
+      assert.ok(within(a.labelBox, shown.width, shown.height), `label ${a.label} inside`);
+    }
+    for (const panel of ['before', 'impulses', 'after']) {
+      const labels = shown.arrows.filter((a) => a.panel === panel);
+      for (let i = 0; i < labels.length; ++i) {
+        for (let j = i + 1; j < labels.length; ++j) {
+          assert.ok(!overlap(labels[i].labelBox, labels[j].labelBox), `labels ${labels[i].label} and ${labels[j].label} overlap`);
+        }
+      }
+    }
+    assert.equal(shown.residuals.length, 2);
+    assert.ok(norm(result.residual.linear) <= 1e-12 * largest, `linear residual ${result.residual.linear}`);
+    assert.ok(norm(result.residual.angular) <= 1e-12 * 2 * largest, `angular residual ${result.residual.angular}`);
+  });
+}
+
 test('the report shows each body\'s diagrams and follows its time selector', async () => {
   const file = path.join(work, 'bent-rod.html');
   run('report', path.join(examples, 'rotating_shaft_bent_rod.yaml'), '-o', file, '-q');

@@ -661,6 +661,46 @@ TEST_F(AnalysisCli, DiagramOfThePendulumBobWritesTheSvgAndKeepsTheUsersFile) {
   EXPECT_NE(unknown.err.find("did you mean 'bob'"), std::string::npos) << unknown.err;
 }
 
+TEST_F(AnalysisCli, DiagramOfAnImpactIsTheImpulseMomentumDiagram) {
+  // The eccentric impact (examples/eccentric_impact.yaml, e = 0.6): the rod at rest before, the
+  // contact's impulse m_s (v0 − v_s) and the pin's m ω L/2 − m_s (v0 − v_s) on it, then m ω L/2.
+  const double I_O = 1.92, ms = 0.5, v0 = 3.0, d = 1.1, e = 0.6;
+  const double omega = ms * v0 * d * (1 + e) / (I_O + ms * d * d);
+  const double v_s = v0 * (ms * d * d - e * I_O) / (I_O + ms * d * d);
+  const std::string svg = (dir_ / "impulse.svg").string();
+  const std::string args = "diagram " + example("eccentric_impact") +
+                           " --body rod --between sphere rod:0,0,-1.1 --normal 1,0,0 "
+                           "--restitution 0.6 -o '" +
+                           svg + "'";
+  const CliRun r = momenta(args + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  ASSERT_EQ(j.at("impulses").size(), 2U);
+  EXPECT_EQ(j.at("impulses").at(0).at("name"), "contact impulse");
+  EXPECT_NEAR(j.at("impulses").at(0).at("impulse").at(0).get<double>(), ms * (v0 - v_s), 1e-14);
+  EXPECT_EQ(j.at("impulses").at(1).at("name"), "pin");
+  EXPECT_NEAR(j.at("impulses").at(1).at("impulse").at(0).get<double>(),
+              4.0 * omega * 0.6 - ms * (v0 - v_s), 1e-14);
+  EXPECT_EQ(j.at("before").at("linear").at(0).get<double>(), 0.0);
+  EXPECT_NEAR(j.at("after").at("linear").at(0).get<double>(), 4.0 * omega * 0.6, 1e-14);
+  const std::string picture = slurp(dir_ / "impulse.svg");
+  for (const char* panel : {"before", "impulses", "after"}) {
+    EXPECT_NE(picture.find(fmt::format("data-panel=\"{}\"", panel)), std::string::npos) << panel;
+  }
+  const CliRun text = momenta(args + " --force");
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_NE(text.out.find("impulsive reaction of joint pin (from world)"), std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find("m v̄₁ + ΣP − m v̄₂"), std::string::npos) << text.out;
+  // A blow half given is refused, as `momenta impact` refuses it.
+  const CliRun half = momenta("diagram " + example("eccentric_impact") +
+                              " --body rod --between sphere rod:0,0,-1.1 --restitution 0.6");
+  EXPECT_EQ(half.code, 2);  // a usage error
+  EXPECT_NE(half.err.find("a collision needs --between A:x,y,z B:x,y,z, --normal"),
+            std::string::npos)
+      << half.err;
+}
+
 TEST_F(AnalysisCli, ModesOfThePendulumAboutItsEquilibriumFromAState) {
   // A state file at the bottom: ω = √(g/L) = 3.1321 rad/s = 0.49849 Hz.
   std::ofstream(dir_ / "bottom.json") << R"({"q": [0.0], "v": [0.0]})";

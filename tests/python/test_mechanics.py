@@ -84,6 +84,25 @@ def test_restitution_impact_is_the_command_lines():
     assert r["separation_speed"] == pytest.approx(1.8, rel=1e-15)
 
 
+def test_impulse_momentum_diagram_is_the_command_lines():
+    """The struck rod hit at its tip (4 N·s at 1.2 m): the pin pushes back 2 N·s along the blow;
+    the rod at rest before, m v̄ = 6 N·s after; the same numbers as `momenta diagram --at`."""
+    path = EXAMPLES / "struck_rod.yaml"
+    d = momenta.impulse_momentum_diagram(momenta.load_model(path), "rod",
+                                         [("rod", [0, 0, -1.2], [4.0, 0, 0])])
+    cli = cli_json("diagram", path, "--body", "rod", "--at", "rod:0,0,-1.2", "--impulse", "4,0,0")
+    assert [p["name"] for p in d["impulses"]] == [p["name"] for p in cli["impulses"]]
+    for mine, theirs in zip(d["impulses"], cli["impulses"]):
+        np.testing.assert_array_equal(mine["impulse"], theirs["impulse"])
+    np.testing.assert_allclose(d["impulses"][1]["impulse"], [2.0, 0, 0], atol=1e-14)
+    np.testing.assert_array_equal(d["linear_before"], [0, 0, 0])
+    np.testing.assert_allclose(d["linear_after"], [6.0, 0, 0], rtol=1e-14)
+    assert np.linalg.norm(d["linear_residual"]) < 1e-14 * 6
+    assert d["svg"].startswith("<svg") and 'data-panel="impulses"' in d["svg"]
+    with pytest.raises(ValueError, match="triples"):
+        momenta.impulse_momentum_diagram(momenta.load_model(path), "rod", [("rod", [0, 0, 0])])
+
+
 def same_expression(a, b, names):
     """Two expressions as GiNaC prints them are equal at random values of their symbols (GiNaC's
     order of terms can differ from process to process)."""

@@ -283,3 +283,30 @@ def test_a_skidding_ball_built_in_python_rolls_when_friction_says():
         bad.add_joint("j", "free", parent="world", child="b")
         bad.add_contact("floor", body="b", friction=0.2, kinetic_friction=0.3)
         bad.build()
+
+
+def test_a_wheel_built_in_python_touches_with_its_rim():
+    # A 1 kg thin disk of radius 0.2 m standing upright (its axis, body z, along world y: the body
+    # turned −90° about x), set down at 3 m/s without spin, μk = 0.25: it slides, then rolls at
+    # t = v₀ / (3 μk g) with 2 v₀ / 3 (I = m r² / 2; docs/contacts.md, a disk's rim).
+    b = momenta.ModelBuilder("wheel")
+    b.set_gravity([0, 0, -9.81])
+    b.add_body("wheel", momenta.inertia.thin_disk(0.2, mass=1.0))
+    h = 0.5 ** 0.5
+    b.add_joint("free", "free", parent="world", child="wheel", q0=[0, 0, 0.2, h, -h, 0, 0],
+                v0=[0, 0, 0, 3, 0, 0])
+    b.add_contact("floor", body="wheel", shape="disk", axis=[0, 0, 1], radius=0.2, friction=0.25)
+    run = momenta.simulate(b.build(), duration=1.0, dt=1e-3)
+    stops = run.summary["stops"]
+    assert [(s["kind"], s["friction"]) for s in stops] == [("rest", "sliding"), ("stick", "sticking")]
+    t_roll = 3 / (3 * 0.25 * 9.81)
+    assert abs(stops[1]["time"] - t_roll) < 1e-12 * t_roll
+    assert abs(run["free.vx"][-1] - 2) < 1e-12
+    with pytest.raises(ValueError, match="unknown shape 'disc'"):
+        b.add_contact("rim", body="wheel", shape="disc", radius=0.2)
+    with pytest.raises(ValueError, match="a disk's radius must be positive"):
+        bad = momenta.ModelBuilder("bad")
+        bad.add_body("b", momenta.inertia.thin_disk(0.2, mass=1.0))
+        bad.add_joint("j", "free", parent="world", child="b")
+        bad.add_contact("floor", body="b", shape="disk")
+        bad.build()

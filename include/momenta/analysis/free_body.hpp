@@ -22,9 +22,11 @@
 // the joint reactions of dynamics::joint_reactions. All vectors are in the world frame W (SI).
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "momenta/dynamics/constraints.hpp"
 #include "momenta/math/types.hpp"
 #include "momenta/system/multibody_system.hpp"
 
@@ -54,6 +56,11 @@ struct Load {
   /// one joint sum to the wrench dynamics::joint_reaction gives (reversed on the parent).
   int joint_index = -1;
 };
+
+/// The sum of the loads' forces (N; or impulses, N·s).
+Vec3 sum_of_forces(std::span<const Load> loads);
+/// The sum of the loads' moments about the point p_WoO_W: Σ (p − O) × F + couples (N·m).
+Vec3 sum_of_moments_about(std::span<const Load> loads, const Vec3& p_WoO_W);
 
 /// The body's diagrams at one instant.
 struct FreeBodyDiagram {
@@ -100,5 +107,21 @@ FreeBodyDiagram free_body_diagram(system::MultibodySystem& system, const std::st
 /// coupler), or the model has no constraints.
 std::optional<Load> constraint_load(const system::MultibodySystem& system, int constraint,
                                     int body);
+
+/// The same from constraint rows written at data's poses (dynamics::constraint_equations) and
+/// their multipliers — forces, or the impulses Λ of an impact (dynamics::ImpulsiveMotion).
+std::optional<Load> constraint_load(const model::Model& model, const dynamics::Data& data,
+                                    const dynamics::ConstraintRows& rows, const VecX& multipliers,
+                                    int constraint, int body);
+
+/// The unit normal of the plane of motion of body `body` (an index; R_WB its axes, G at p_WoG_W)
+/// under `loads` with the kinetic vectors `forces` (m a_G, or momenta) and `moments` (Ḣ_G, or
+/// H_G): every force in the plane, every moment about G normal to it, to 1e-9 of the largest.
+/// Tried in turn: the world's z, y and x axes, the body's joint axis (a revolute or
+/// cylindrical joint), the largest moment, the normal of the two largest forces. Empty where
+/// none is (a 3-D view).
+std::optional<Vec3> plane_of_loads(const model::Model& model, int body, const Mat3& R_WB,
+                                   const Vec3& p_WoG_W, std::span<const Load> loads,
+                                   std::span<const Vec3> forces, std::span<const Vec3> moments);
 
 }  // namespace momenta::analysis

@@ -4,6 +4,8 @@
 // what the report draws the contact's force at.
 //
 //   plane:    n the plane's normal; gap = n · (c_b − plane_point) − r_b; point c_b − r_b n
+//   disk rim on a plane: point c_b − r_b w / |w|, w = n − (n · a) a (a the disk's axis);
+//             gap = n · (point − plane_point)
 //   sphere:   n = (c_b − c_a) / |c_b − c_a|; gap = |c_b − c_a| − r_a − r_b; point c_a + r_a n
 //
 // c_b (c_a) the centre of body b's (a's) sphere, or b's point. The normal points from a (or the
@@ -32,5 +34,15 @@ ContactGeometry contact_geometry(const model::Contact& contact, const Data& data
 /// ground's): the contact's slip velocity once its normal part is taken out. Needs data's poses
 /// and velocities (forward_kinematics(q, v)). No allocation.
 Vec3 contact_point_velocity(const model::Contact& contact, const Data& data, const Vec3& point_W);
+
+/// The gap's second time rate (m/s²) at data's poses, velocities and accelerations
+/// (forward_kinematics(q, v, v̇)): the acceleration of body b's surface away from body a's, or
+/// the plane, along the normal — the contact's first row's ẇ · (V_b − V_a) + w · (A_b − A_a)
+/// (dynamics/constraints.hpp). No allocation.
+double contact_gap_acceleration(const model::Contact& contact, const Data& data);
+
+/// Whether a disk contact's axis is within `tolerance` rad of its plane's normal at data's
+/// poses: the disk lies flat, touching with its face (not modelled). False for a sphere.
+bool disk_lies_flat(const model::Contact& contact, const Data& data, double tolerance);
 
 }  // namespace momenta::dynamics

@@ -124,7 +124,13 @@ struct JointCoupler {
   int joint_b_index = -1;
 };
 
-/// A unilateral contact of a body's point or sphere (body b: `frame`, `radius`) with
+/// The shape of body b's side of a contact.
+enum class ContactShape {
+  sphere,  ///< a sphere of `radius` about frame.p (a point where the radius is 0)
+  disk,    ///< the rim of a disk or wheel of `radius` about frame.p, its axis frame's z axis
+};
+
+/// A unilateral contact of a body's point, sphere or disk rim (body b: `frame`, `radius`) with
 /// the ground plane — the plane through plane_point with unit normal plane_normal (world), the body
 /// on its normal's side —, with another body's plane (other_plane: plane_point and plane_normal in
 /// body a's frame; `other` is then the plane's frame, z along its normal, x along a's x axis
@@ -133,24 +139,30 @@ struct JointCoupler {
 ///
 ///   plane:    gap = n · (p_centre − plane_point) − radius  (n, plane_point in W)
 ///   sphere:   gap = |p_centre − p_other| − radius − other_radius,  n = (p_centre − p_other) / |…|
+///   disk rim on a plane: gap = n · (p_centre − plane_point) − radius |n − (n · a) a|, a the axis
 ///
-/// p_centre = frame.p (radius 0 for a point). Where the gap closes the bodies are struck by
-/// Newton's law of restitution along n, e ∈ [0, 1] (dynamics::restitution_impact); while they
-/// touch the row holds them and its force (`normal`, N, on body b along n, > 0 pushing it away)
-/// is reported; where that force would pull, they are let go.
+/// p_centre = frame.p (radius 0 for a point). A disk touches at the rim point nearest the plane,
+/// p_centre − radius w / |w| with w = n − (n · a) a; a disk lying flat (|w| below 1e-9) touches
+/// with its face, which is not modelled: a run stops where a closed disk contact comes within 1e-6
+/// rad of flat, and takes the rim point along the frame's x axis for an open one. Where the gap
+/// closes the bodies are struck by Newton's law of restitution along n, e ∈ [0, 1]
+/// (dynamics::restitution_impact); while they touch the row holds them and its force (`normal`, N,
+/// on body b along n, > 0 pushing it away) is reported; where that force would pull, they are let
+/// go.
 ///
-/// Coulomb friction (on a plane only; docs/contacts.md): with static_friction μs > 0 the
-/// contact has two more rows, tangent_1 and tangent_2 (the plane's tangents t₁, the world's — or
-/// body a's — x axis, or y where n is near x, projected on the plane, and t₂ = n × t₁), which hold
-/// the body's
+/// Coulomb friction (docs/contacts.md): with static_friction μs > 0 the contact has two more rows,
+/// tangent_1 and tangent_2 (the plane's tangents t₁, the world's — or body a's — x axis, or y
+/// where n is near x, projected on the plane, and t₂ = n × t₁; between two spheres the world's x
+/// or y projected across the line of centres), which hold the body's
 /// material point at the contact still while the friction they need stays in the cone
 /// |F_t| ≤ μs N (sticking). Beyond it the contact slides: those rows are off and the kinetic
 /// friction μk N acts against the slip. Their forces (N, on body b along t₁ and t₂) are the
 /// friction either way.
 struct Contact {
   std::string name;
-  BodyFrame frame;      ///< body b: the point, or the sphere's centre (only the origin is used)
-  double radius = 0.0;  ///< m, ≥ 0 (0: a point)
+  BodyFrame frame;  ///< body b: the point, the sphere's centre, or the disk's centre and axis (z)
+  ContactShape shape = ContactShape::sphere;
+  double radius = 0.0;  ///< m, ≥ 0 (0: a point; a disk's > 0)
   Vec3 plane_normal = Vec3::UnitZ();
   Vec3 plane_point = Vec3::Zero();
   /// Body a's sphere centre, or its plane's frame (other_plane), where other.body names a body;

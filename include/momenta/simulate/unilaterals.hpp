@@ -46,8 +46,8 @@
 // Coulomb's law at impact); sticking contacts hold through an impact elsewhere, their cones not
 // yet checked.
 //
-// Not yet: stops on a model with constraints (refused by the Simulation), friction between two
-// spheres, and the cones of contacts that stick through another's impact.
+// Not yet: stops on a model with constraints (refused by the Simulation), and the cones of
+// contacts that stick through another's impact.
 
 #include <limits>
 #include <string>
@@ -165,6 +165,8 @@ class Unilaterals {
   // `advanced`).
   double acceleration_into(integrate::SecondOrderSystem& advanced, const Entry& e,
                            const integrate::State& state);
+  // Throws NumericalError, naming the time, where e is a disk contact lying flat at `state`.
+  void refuse_flat_disk(const Entry& e, const integrate::State& state);
   // What e does at time t, its rates and impulse still to fill.
   StopEvent event_at(const Entry& e, double t, StopEventKind kind) const;
   // The first time in (a, b] the gap of e falls below zero on the step's interpolant, given

@@ -28,12 +28,13 @@ const std::vector<EntryType>& constraint_types() {
       {"hinge", loop},
       {"slider", loop},
       {"distance", {"body_a", "point_a", "body_b", "point_b", "length"}},
-      {"rolling", {"body", "shape", "radius", "centre", "axis", "normal", "plane_point"}},
+      {"rolling",
+       {"body", "shape", "radius", "centre", "axis", "normal", "plane_point", "friction"}},
       {"knife_edge", {"body", "point", "direction", "normal"}},
       {"coupler", {"joint_a", "joint_b", "ratio", "offset", "offset_deg"}},
       {"contact",
-       {"body", "point", "radius", "normal", "plane_point", "other_body", "other_point",
-        "other_radius", "restitution", "friction"}},
+       {"body", "shape", "point", "axis", "radius", "normal", "plane_point", "other_body",
+        "other_point", "other_radius", "restitution", "friction"}},
   };
   return types;
 }
@@ -100,11 +101,50 @@ void read_friction(const YamlNode& node, model::Contact& c) {
           c.kinetic_friction, c.static_friction));
     }
   }
-  if (c.static_friction > 0.0 && !c.on_plane()) {
-    node.fail(
-        "friction between two bodies' spheres is not modelled yet (docs/contacts.md); friction "
-        "acts at contacts with a plane, the ground's or a body's");
+}
+
+// A contact's shape: a sphere of `radius` (0, a point, by default) centred at `point`, or a disk
+// (`shape: disk`) of `radius` there with its axis along `axis` (the body's z by default).
+void read_contact_shape(const YamlNode& e, model::Contact& c) {
+  const std::string shape = e.find_string("shape").value_or("sphere");
+  if (shape == "disk") {
+    c.shape = model::ContactShape::disk;
+    c.radius = e.number("radius", Bound::kPositive);
+    const Vec3 axis = e.has("axis") ? read_unit(e.at("axis")) : Vec3::UnitZ();
+    c.frame.X_BF.R = z_along(axis);
+    return;
   }
+  if (shape != "sphere") {
+    const std::string_view names[] = {"sphere", "disk"};
+    e.at("shape").fail(
+        fmt::format("unknown shape '{}'{}; expected sphere (a point where the "
+                    "radius is 0) or disk",
+                    shape, did_you_mean(shape, names)));
+  }
+  if (e.has("axis")) e.at("axis").fail("a sphere or point has no axis; give shape: disk");
+  c.radius = e.has("radius") ? e.number("radius", Bound::kNonNegative) : 0.0;
+}
+
+// A rolling contact that may slip: with friction, `rolling` is a contact of the wheel's rim or
+// the ball with the plane (model::Contact), which sticks — rolls — while friction can hold it,
+// slides with μk N beyond, and leaves the plane where it would have to pull.
+model::Contact rolling_with_friction(const model::RollingContact& rolling,
+                                     const YamlNode& friction) {
+  model::Contact c;
+  c.name = rolling.name;
+  c.frame = rolling.frame;
+  c.shape = rolling.shape == model::RollingShape::disk ? model::ContactShape::disk
+                                                       : model::ContactShape::sphere;
+  c.radius = rolling.radius;
+  c.plane_normal = rolling.plane_normal;
+  c.plane_point = rolling.plane_point;
+  read_friction(friction, c);
+  if (!c.has_friction()) {
+    friction.fail(
+        "a rolling contact's friction must be above 0; leave friction out for rolling "
+        "that never slips");
+  }
+  return c;
 }
 
 model::Constraint read_constraint(const YamlNode& e, std::string_view type, const std::string& name,
@@ -152,6 +192,7 @@ model::Constraint read_constraint(const YamlNode& e, std::string_view type, cons
     c.frame.X_BF = Transform(z_along(axis), e.find_vec3("centre").value_or(Vec3::Zero()));
     if (e.has("normal")) c.plane_normal = read_unit(e.at("normal"));
     c.plane_point = e.find_vec3("plane_point").value_or(Vec3::Zero());
+    if (e.has("friction")) return rolling_with_friction(c, e.at("friction"));
     return c;
   }
   if (type == "contact") {
@@ -159,7 +200,7 @@ model::Constraint read_constraint(const YamlNode& e, std::string_view type, cons
     c.name = name;
     c.frame.body = moving_body(e.at("body"), ctx, "the world cannot touch the ground: name a body");
     c.frame.X_BF.p = e.find_vec3("point").value_or(Vec3::Zero());
-    c.radius = e.has("radius") ? e.number("radius", Bound::kNonNegative) : 0.0;
+    read_contact_shape(e, c);
     if (e.has("other_body")) {
       c.other.body = moving_body(e.at("other_body"), ctx,
                                  "leave other_body out for the ground plane, or name a body");
@@ -197,6 +238,11 @@ model::Constraint read_constraint(const YamlNode& e, std::string_view type, cons
       }
     }
     if (e.has("friction")) read_friction(e.at("friction"), c);
+    if (c.shape == model::ContactShape::disk && !c.on_plane()) {
+      e.at("shape").fail(
+          "a disk's rim touches a plane (the ground's, or a body's: give normal and plane_point); "
+          "a disk against another body's sphere is not modelled (docs/contacts.md)");
+    }
     return c;
   }
   if (type == "knife_edge") {

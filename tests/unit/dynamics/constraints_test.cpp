@@ -18,6 +18,7 @@
 #include "momenta/common/error.hpp"
 #include "momenta/dynamics/aba.hpp"
 #include "momenta/dynamics/constraints.hpp"
+#include "momenta/dynamics/contact_geometry.hpp"
 #include "momenta/dynamics/crba.hpp"
 #include "momenta/dynamics/hybrid_dynamics.hpp"
 #include "momenta/dynamics/kinematics.hpp"
@@ -147,8 +148,10 @@ TEST_F(ConstraintRowsTest, ForcesDeliverThePowerOfTheirMultipliers) {
 
 // Contacts (model::Contact), switched on as a run switches them on: a point with friction on a
 // tilted ground plane, a sphere with friction on another body's plane (both turning and moving),
-// and two spheres. Their rows against finite differences as above: G v the rate of each gap, and
-// G v̇ + k the rate of every row's G v (the tangent rows: the slip along the plane's tangents).
+// two spheres with friction, and a disk's rim with friction on each plane. Their rows against
+// finite differences as above: G v the rate of each gap, and G v̇ + k the rate of every row's G v
+// (the tangent rows: the slip along the plane's tangents). The gap's second rate the run's locator
+// takes (contact_gap_acceleration, from the bodies' accelerations) is the first row's G v̇ + k.
 TEST(ConstraintRows, ContactRowsSwitchedOnAreTheRatesOfTheirGapsAndSlips) {
   model::ModelBuilder b;
   add_tree_of_joint_types(b);
@@ -175,11 +178,26 @@ TEST(ConstraintRows, ContactRowsSwitchedOnAreTheRatesOfTheirGapsAndSlips) {
   spheres.radius = 0.1;
   spheres.other = frame("b1", X.inverse());
   spheres.other_radius = 0.2;
-  for (const model::Contact& c : {ground, on_body, spheres}) b.add_constraint(c);
+  spheres.static_friction = 0.3;  // its tangents turn with the line of centres
+  spheres.kinetic_friction = 0.2;
+  model::Contact disk_on_ground = ground;
+  disk_on_ground.name = "disk_on_ground";
+  disk_on_ground.frame = frame("b4", X);
+  disk_on_ground.shape = model::ContactShape::disk;
+  disk_on_ground.radius = 0.15;
+  model::Contact disk_on_body = on_body;
+  disk_on_body.name = "disk_on_body";
+  disk_on_body.frame = frame("b1", X.inverse());
+  disk_on_body.other = frame("b3", {});
+  disk_on_body.shape = model::ContactShape::disk;
+  disk_on_body.radius = 0.1;
+  const std::vector<model::Contact> contacts{ground, on_body, spheres, disk_on_ground,
+                                             disk_on_body};
+  for (const model::Contact& c : contacts) b.add_constraint(c);
   const model::Model model = b.build();
   dynamics::Data data(model);
   dynamics::ConstraintRows rows(model);
-  ASSERT_EQ(rows.count, 3 + 3 + 1);
+  ASSERT_EQ(rows.count, 3 + 3 + 3 + 3 + 3);
   EXPECT_EQ(rows.names[4], "on_body.tangent_1");
   std::fill(rows.enabled.begin(), rows.enabled.end(), 1);
   const auto rows_at = [&](const VecX& q, const VecX& v) {
@@ -213,6 +231,15 @@ TEST(ConstraintRows, ContactRowsSwitchedOnAreTheRatesOfTheirGapsAndSlips) {
       }
       EXPECT_NEAR(accel[i], Gv_rate[i], 1e-7 * (1 + std::abs(accel[i])))
           << rows.names[i] << " trial " << trial;
+    }
+    // Two sums of the same products by different routes: round-off of the largest term.
+    dynamics::forward_kinematics(model, data, s.q, s.v, s.vdot);
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+      const double gap_acceleration = dynamics::contact_gap_acceleration(
+          std::get<model::Contact>(model.constraints()[k]), data);
+      const int first = rows.first_row[k];
+      EXPECT_NEAR(gap_acceleration, accel[first], 1e-12 * (1 + std::abs(accel[first])))
+          << rows.names[first] << " trial " << trial;
     }
   }
 }

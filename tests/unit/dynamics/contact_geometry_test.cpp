@@ -1,6 +1,6 @@
 // dynamics::contact_geometry against the geometry worked by hand: a ball above a tilted plane,
-// two balls on rotated bodies and a ball on a turned body's plane — gap, normal, contact point and
-// tangents — and the error where two centres coincide.
+// two balls on rotated bodies, a ball on a turned body's plane and a tilted disk on the ground —
+// gap, normal, contact point and tangents — and the error where two centres coincide.
 
 #include "momenta/dynamics/contact_geometry.hpp"
 
@@ -78,6 +78,38 @@ TEST(ContactGeometry, GapNormalAndPointAsWorkedByHand) {
   q.segment<3>(7) = Vec3(1.0, 1.8, 3.5);  // b's sphere centre then at a's, [1, 2, 3.5]
   forward_kinematics(model, data, q);
   EXPECT_THROW(contact_geometry(balls, data), NumericalError);
+}
+
+// A disk of radius 0.1 m, its axis (the coin's z) turned about y by β = 60° — a = (cos φ, 0,
+// sin φ) with φ = 30° above the floor —, its centre at [0, 0, 1]: its rim point nearest the floor
+// is c + r (sin φ, 0, −cos φ) (w = n − (n · a) a = cos φ (−sin φ, 0, cos φ)), the gap
+// 1 − r cos φ. Turned flat (β = 0), every rim point is as low: the rim point along the coin's x.
+TEST(ContactGeometry, ADiskTouchesAtItsRimPointNearestThePlane) {
+  const model::Model model =
+      io::parse_model_file(
+          "bodies: [{name: coin, shape: thin_disk, mass: 1, radius: 0.1}]\n"
+          "joints: [{name: f, type: free, parent: world, child: coin}]\n"
+          "constraints: [{name: floor, type: contact, shape: disk, body: coin, radius: 0.1}]\n",
+          "disk.yaml", ".")
+          .model;
+  const auto& floor = std::get<model::Contact>(model.constraints()[0]);
+  const double phi = std::acos(-1.0) / 6, beta = std::acos(-1.0) / 3;
+  VecX q = model.initial_q();
+  q.segment<7>(0) << 0, 0, 1, std::cos(beta / 2), 0, std::sin(beta / 2), 0;
+  Data data(model);
+  forward_kinematics(model, data, q);
+  const ContactGeometry g = contact_geometry(floor, data);
+  EXPECT_NEAR(g.gap, 1 - 0.1 * std::cos(phi), 1e-15);
+  EXPECT_LT((g.point_W - Vec3(0.1 * std::sin(phi), 0, 1 - 0.1 * std::cos(phi))).norm(), 1e-15);
+  EXPECT_LT((g.normal_W - Vec3::UnitZ()).norm(), 1e-15);
+  EXPECT_FALSE(disk_lies_flat(floor, data, 1e-6));
+
+  q.segment<4>(3) << 1, 0, 0, 0;  // flat
+  forward_kinematics(model, data, q);
+  const ContactGeometry flat = contact_geometry(floor, data);
+  EXPECT_NEAR(flat.gap, 1.0, 1e-15);
+  EXPECT_LT((flat.point_W - Vec3(0.1, 0, 1)).norm(), 1e-15);
+  EXPECT_TRUE(disk_lies_flat(floor, data, 1e-6));
 }
 
 }  // namespace

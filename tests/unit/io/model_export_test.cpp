@@ -152,7 +152,7 @@ TEST(ModelExport, EveryExampleThroughMjcfAndBack) {
             (std::set<std::string>{"belt_stick_slip", "block_on_incline", "bouncing_sphere",
                                    "chaplygin_sleigh", "newtons_cradle", "rod_on_rotating_shaft",
                                    "rod_on_shaft_spinning_down", "rolling_coin",
-                                   "rolling_disk_on_axle", "skidding_ball"}));
+                                   "rolling_disk_on_axle", "skidding_ball", "skidding_wheel"}));
 }
 
 TEST(ModelExport, TreeExamplesThroughUrdfAndBack) {

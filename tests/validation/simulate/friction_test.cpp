@@ -13,6 +13,8 @@
 //   piecewise closed form;
 // - a ball dropped sliding onto a rough floor: it leaves the first impact rolling (Coulomb's law
 //   at impact, sticking), and rests rolling;
+// - a ball rolling off a fixed dome (friction between two spheres): rolling until its cone
+//   gives out where (2/7) sin θ = μs (17 cos θ − 10 cos θ₀) / 7;
 // - the model file's errors for friction.
 
 #include <cmath>
@@ -275,6 +277,68 @@ TEST(Friction, BallDroppedSlidingOntoARoughFloorLeavesRolling) {
   }
 }
 
+// A ball (m = 1 kg, r = 0.1 m, I = 2 m r² / 5) let go from rest at θ₀ = 0.2 rad on top of a fixed
+// dome (R = 1 m), with friction between the two spheres (μs = 0.5, μk = 0.4). While it rolls,
+// energy and the rolling condition give, with ρ = R + r the centre's path radius,
+//   ρ² θ̇² = (10/7) g ρ (cos θ₀ − cos θ),   N = m g (17 cos θ − 10 cos θ₀) / 7,   F = (2/7) m g sin
+//   θ,
+// so the friction it needs grows as the normal force falls: it slips where F = μs N,
+// 2 sin θ = μs (17 cos θ − 10 cos θ₀) — before it would leave the dome (17 cos θ = 10 cos θ₀).
+TEST(Friction, BallRollingOffADomeSlipsWhereItsConeSays) {
+  const double m = 1.0, r = 0.1, R = 1.0, rho = R + r, theta0 = 0.2, mu_s = 0.5;
+  const auto cone_margin = [&](double th) {
+    return mu_s * (17 * std::cos(th) - 10 * std::cos(theta0)) - 2 * std::sin(th);
+  };
+  double lo = theta0, hi = std::acos(10 * std::cos(theta0) / 17);  // margin > 0 at lo, < 0 at hi
+  for (int k = 0; k < 200; ++k) (cone_margin(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
+  const double theta_slip = 0.5 * (lo + hi);
+  const model::Model model = load(fmt::format(
+      "gravity: [0, 0, -9.81]\n"
+      "bodies: [{{name: dome, shape: sphere, mass: 10.0, radius: 1.0}},\n"
+      "         {{name: ball, shape: sphere, mass: 1.0, radius: 0.1}}]\n"
+      "joints:\n"
+      "  - {{name: base, type: fixed, parent: world, child: dome}}\n"
+      "  - {{name: free, type: free, parent: world, child: ball, q0: [{:.17g}, 0, {:.17g}, 1, 0, "
+      "0, "
+      "0]}}\n"
+      "constraints:\n"
+      "  - {{name: touch, type: contact, body: ball, radius: 0.1, other_body: dome, other_radius: "
+      "1.0, friction: {{static: 0.5, kinetic: 0.4}}}}\n",
+      rho * std::sin(theta0), rho * std::cos(theta0)));
+  const UnilateralRun run = run_unilaterals(model, "dopri5", 1e-3, 1.5, /*reactions=*/true);
+  const std::vector<StopEvent>& events = run.summary.stop_events;
+  ASSERT_GE(events.size(), 2u);
+  EXPECT_EQ(events[0].kind, StopEventKind::rest);
+  EXPECT_EQ(events[0].friction, FrictionState::sticking);
+  EXPECT_EQ(events[1].kind, StopEventKind::slip);
+  // At the slip the friction it needs is the cone's limit, both the closed forms' at θ_slip: the
+  // angle located to the dense output's accuracy (dopri5 at rtol 1e-12).
+  const double needed = 2.0 / 7.0 * m * kG * std::sin(theta_slip);
+  EXPECT_NEAR(events[1].friction_needed, needed, 1e-9 * needed);
+  EXPECT_NEAR(events[1].friction_limit, needed, 1e-9 * needed);
+  const int x = run.table.column("free.x"), z = run.table.column("free.z");
+  const int vx = run.table.column("free.vx"), vz = run.table.column("free.vz");
+  const int normal = run.table.column("touch.normal");
+  const int f1 = run.table.column("touch.tangent_1"), f2 = run.table.column("touch.tangent_2");
+  int rolling_rows = 0;
+  for (const std::vector<double>& row : run.table.rows) {
+    if (!(row[0] < events[1].time)) break;
+    ++rolling_rows;
+    const double th = std::atan2(row[x], row[z]);
+    const double scale = m * kG;
+    EXPECT_NEAR(std::hypot(row[x], row[z]), rho, 1e-12) << row[0];  // on the dome
+    EXPECT_NEAR(row[vx] * row[vx] + row[vz] * row[vz],
+                10.0 / 7.0 * kG * rho * (std::cos(theta0) - std::cos(th)), 1e-10)
+        << row[0];
+    EXPECT_NEAR(row[normal], m * kG * (17 * std::cos(th) - 10 * std::cos(theta0)) / 7,
+                1e-10 * scale)
+        << row[0];
+    EXPECT_NEAR(std::hypot(row[f1], row[f2]), 2.0 / 7.0 * m * kG * std::sin(th), 1e-10 * scale)
+        << row[0];
+  }
+  EXPECT_GT(rolling_rows, 100);
+}
+
 TEST(Friction, ModelFileErrorsNameTheKey) {
   const std::string ball =
       "bodies: [{name: ball, shape: sphere, mass: 1, radius: 0.1}, {name: other, shape: sphere, "
@@ -293,9 +357,8 @@ TEST(Friction, ModelFileErrorsNameTheKey) {
   EXPECT_NE(contact("friction: {static: 0.3, kinetc: 0.2}").find("did you mean 'kinetic'"),
             std::string::npos)
       << contact("friction: {static: 0.3, kinetc: 0.2}");
-  EXPECT_NE(contact("other_body: other, other_radius: 0.1, friction: 0.3")
-                .find("friction between two bodies' spheres is not modelled yet"),
-            std::string::npos);
+  // Between two spheres too: the tangents across their line of centres.
+  EXPECT_EQ(contact("other_body: other, other_radius: 0.1, friction: 0.3"), "no error");
   EXPECT_EQ(contact("friction: 0.3"), "no error");
 }
 
