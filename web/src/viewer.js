@@ -78,15 +78,24 @@ export class Viewer {
     const center = box.getCenter(new THREE.Vector3());
     const radius = Math.max(0.5 * box.getSize(new THREE.Vector3()).length(), 1e-3 * this.length);
     const flat = boxOf(skeleton).getSize(new THREE.Vector3());
-    const thinnest = [0, 1, 2].reduce((a, k) => (flat.getComponent(k) < flat.getComponent(a) ? k : a), 0);
+    // Of the thin directions, the thinnest; where the motion runs along a line (two thin
+    // directions: a wheel rolling, a block sliding) the one across `up`, so that it is seen from
+    // the side as the textbook draws it, not from above (which of the two is thinner is then
+    // round-off).
+    const largest = Math.max(flat.x, flat.y, flat.z);
+    const thin = [0, 1, 2].filter((k) => flat.getComponent(k) < 0.2 * largest);
+    const level = thin.filter((k) => Math.abs(this.up.getComponent(k)) < 0.9);
+    const candidates = thin.length >= 2 && level.length > 0 ? level : [0, 1, 2];
+    const thinnest = candidates.reduce((a, k) => (flat.getComponent(k) < flat.getComponent(a) ? k : a));
     const threeQuarter = this.threeQuarterDirection();
     let direction = threeQuarter;
     if (flat.getComponent(thinnest) < 0.2 * Math.max(flat.x, flat.y, flat.z)) {
       // Along the plane's normal, turned 20° about the up direction (or a side) to show depth.
       const normal = new THREE.Vector3().setComponent(thinnest, 1);
       const side = Math.abs(normal.dot(this.up)) > 0.9 ? new THREE.Vector3(1, 0, 0) : this.up;
-      direction = normal.applyAxisAngle(side, (20 * Math.PI) / 180).add(this.up.clone().multiplyScalar(0.15));
+      direction = normal.applyAxisAngle(side, (20 * Math.PI) / 180);
       if (direction.dot(threeQuarter) < 0) direction.negate();
+      direction.add(this.up.clone().multiplyScalar(0.15));  // from a little above, after the turn
     }
     direction.normalize();
     // First the sphere fits the narrower of the vertical and horizontal fields of view, with 15 %
