@@ -32,7 +32,7 @@ struct BlowOptions {
 
 // What struck: an applied impulse, or a collision at a contact (then `impact` is set).
 struct Blow {
-  std::vector<dynamics::PointImpulse> impulses;  // on B, and −P n on A where A moves
+  std::vector<dynamics::PointImpulse> impulses;  // the applied one, or P on B (see on_bodies)
   std::optional<dynamics::PointContact> contact;
   double restitution = 0.0;
   std::optional<dynamics::Impact> impact;
