@@ -23,6 +23,7 @@
 #include "momenta/report/free_body_svg.hpp"
 #include "momenta/report/impulse_momentum_svg.hpp"
 #include "momenta/report/report.hpp"
+#include "momenta/simulate/unilaterals.hpp"
 #include "option_checks.hpp"
 #include "output_format.hpp"
 #include "state_file.hpp"
@@ -177,9 +178,11 @@ void run(const DiagramOptions& o) {
     });
     return;
   }
+  // The stops and contacts the mechanism touches hold, as a run starting there holds them.
   system::MultibodySystem system(file.model);
-  const analysis::FreeBodyDiagram d =
-      analysis::free_body_diagram(system, o.body, state.t, state.q, state.v);
+  integrate::State at = state;
+  simulate::hold_what_touches(system, at);
+  const analysis::FreeBodyDiagram d = analysis::free_body_diagram(system, o.body, at.t, at.q, at.v);
   show(o, file, d, [&](std::span<const io::PartSummary> parts) {
     return report::free_body_svg(d, file.name, parts);
   });

@@ -1,5 +1,7 @@
 #include "impact_blow.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "body_point_argument.hpp"
@@ -7,7 +9,13 @@
 namespace momenta::cli {
 
 const char* friction_outcome(const dynamics::FrictionalImpact& f) {
-  return !f.coulomb ? "frictionless" : f.sticking ? "sticking" : "sliding";
+  // A slip at rest before (to the course's own 1e-13 of the relative speed) that slides again
+  // starts from rest.
+  const double speed = std::hypot(f.slip_before_W.norm(), f.approach_speed);
+  if (f.course == dynamics::SlipCourse::slides_again && f.slip_before_W.norm() <= 1e-13 * speed) {
+    return "sliding from rest";
+  }
+  return dynamics::slip_course_name(f.course);
 }
 
 std::vector<dynamics::PointImpulse> Blow::on_bodies() const {

@@ -87,21 +87,15 @@ void print_text(const io::ModelFile& file, double t, const Blow& blow,
         blow.impact->approach_speed, blow.impact->separation_speed, blow.impact->normal_impulse);
     if (const auto& f = blow.rough) {
       const Vec3 friction = f->impulse_W - f->normal_impulse * c->normal_W;
-      const double scale = std::max(f->slip_before_W.norm(), f->slip_after_W.norm());
-      if (f->coulomb) {
-        fmt::print(
-            "friction (μs {:.6g}, μk {:.6g}): {}, friction impulse {} N·s; slip {} → {} m/s\n",
-            blow.static_friction, blow.kinetic_friction, friction_outcome(*f),
-            vec_text(shown(friction, f->impulse_W.norm())),
-            vec_text(shown(f->slip_before_W, scale)), vec_text(shown(f->slip_after_W, scale)));
-      } else {
-        fmt::print(
-            "friction (μs {:.6g}, μk {:.6g}): none at this impact — the mechanism couples the "
-            "normal and the slip at the contact, whose course momenta does not follow yet "
-            "(docs/contacts.md); slip {} → {} m/s\n",
-            blow.static_friction, blow.kinetic_friction, vec_text(shown(f->slip_before_W, scale)),
-            vec_text(shown(f->slip_after_W, scale)));
-      }
+      // Slips shown against the contact's relative speed: round-off of it reads as zero.
+      const double scale = std::max(
+          {f->slip_before_W.norm(), f->slip_after_W.norm(), std::abs(blow.impact->approach_speed)});
+      fmt::print(
+          "friction (μs {:.6g}, μk {:.6g}): {}, friction impulse {} N·s; slip {} → {} m/s "
+          "(compression ends at a normal impulse of {:.6g} N·s)\n",
+          blow.static_friction, blow.kinetic_friction, friction_outcome(*f),
+          vec_text(shown(friction, f->impulse_W.norm())), vec_text(shown(f->slip_before_W, scale)),
+          vec_text(shown(f->slip_after_W, scale)), f->compression_impulse);
     }
   } else {
     const dynamics::PointImpulse& hit = blow.impulses.front();
@@ -193,6 +187,7 @@ json result_json(const io::ModelFile& file, double t, const Blow& blow,
           {"static", blow.static_friction},
           {"kinetic", blow.kinetic_friction},
           {"outcome", friction_outcome(*f)},
+          {"compression_impulse", f->compression_impulse},
           {"impulse", vec_json(Vec3(f->impulse_W - f->normal_impulse * c->normal_W))},
           {"slip_before", vec_json(f->slip_before_W)},
           {"slip_after", vec_json(f->slip_after_W)}};

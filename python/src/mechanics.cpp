@@ -20,6 +20,7 @@
 #include "momenta/report/impulse_momentum_svg.hpp"
 #include "momenta/simulate/run_request.hpp"
 #include "momenta/simulate/state_at.hpp"
+#include "momenta/simulate/unilaterals.hpp"
 #if MOMENTA_WITH_SYMBOLIC
 #include "momenta/symbolic/equations.hpp"
 #include "momenta/symbolic/linear_equations.hpp"
@@ -98,8 +99,11 @@ void bind_mechanics(py::module_& m) {
         const Instant s = instant_of(h, q, v, t);
         system::MultibodySystem system(h.model());
         const int b = body_index_arg(h, body);
+        // The stops and contacts it touches hold, as momenta diagram holds them.
+        integrate::State at{s.t, s.q, s.v};
+        simulate::hold_what_touches(system, at);
         const analysis::FreeBodyDiagram d =
-            analysis::free_body_diagram(system, h.model().body(b).name, s.t, s.q, s.v);
+            analysis::free_body_diagram(system, h.model().body(b).name, at.t, at.q, at.v);
         py::list loads;
         for (const analysis::Load& load : d.loads) loads.append(load_dict(h.model(), load));
         py::dict out;
@@ -125,7 +129,9 @@ the model's own run reaches at t (its initial state at t = 0) — as `momenta di
 them: a dict with `loads` (each a dict: kind, name,
 description, point, force, couple in the world's axes, and the joint it acts through), the kinetic
 terms m_a_G, I_alpha, omega_cross_H, the residuals of ΣF = m a_G and ΣM_G = Ḣ_G, the plane normal
-when the diagram is planar, and `svg`, the picture (docs/diagrams.md).)doc");
+when the diagram is planar, and `svg`, the picture (docs/diagrams.md). The contacts and stops the
+mechanism touches hold as a run starting there holds them: a contact the body rests on is one load at
+its point, its normal force and friction.)doc");
 
   m.def(
       "impulse_momentum_diagram",

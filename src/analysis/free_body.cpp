@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "momenta/common/error.hpp"
+#include "momenta/dynamics/contact_geometry.hpp"
 #include "momenta/dynamics/force_elements.hpp"
 #include "momenta/dynamics/point_kinematics.hpp"
 #include "momenta/dynamics/reactions.hpp"
@@ -131,14 +132,41 @@ class DiagramBuilder {
     }
   }
 
-  // Constraint forces on the body, each constraint's rows summed, on its line of action.
+  // Constraint forces on the body, each constraint's rows summed, on its line of action; a
+  // closed contact's whole force at its point.
   void add_constraints() {
     for (int k = 0; k < static_cast<int>(model_.constraints().size()); ++k) {
-      if (std::optional<Load> load = constraint_load(system_, k, b_)) d_.loads.push_back(*load);
+      std::optional<Load> load = constraint_load(system_, k, b_);
+      const auto* contact = std::get_if<model::Contact>(&model_.constraints()[k]);
+      if (contact != nullptr) load = contact_load(*contact, k, load);
+      if (load) d_.loads.push_back(*load);
     }
   }
 
  private:
+  // A contact's force on the body — its rows' (the normal force, and the friction while it
+  // sticks) and the kinetic friction −μk N ŝ while it slides (a load the system applies) — drawn
+  // at the contact point; −that on the body A of a contact between two bodies.
+  std::optional<Load> contact_load(const model::Contact& c, int k,
+                                   const std::optional<Load>& rows) const {
+    const double sign = c.frame.body_index == b_ ? 1.0 : c.other.body_index == b_ ? -1.0 : 0.0;
+    const Vec3 friction = sign * system_.contact_friction(k);
+    if (sign == 0.0 || (!rows && friction.isZero(0.0))) return rows;
+    // A contact transmits a force at its point and no couple: its rows' wrench has its line
+    // through the point.
+    Load load;
+    load.kind = LoadKind::reaction;
+    load.name = model::constraint_name(model_.constraints()[static_cast<std::size_t>(k)]);
+    load.p_WoP_W = dynamics::contact_geometry(c, data_).point_W;
+    load.force_W = friction + (rows ? rows->force_W : Vec3::Zero());
+    const char* friction_text = c.static_friction == 0.0 ? ""
+                                : friction.isZero(0.0)
+                                    ? " and the friction that holds it (sticking)"
+                                    : " and kinetic friction μk N against the slip (sliding)";
+    load.description = fmt::format("contact {}: its normal force{}", load.name, friction_text);
+    return load;
+  }
+
   bool touches_body(const model::ForceElement& element) const {
     return std::visit(
         [&](const auto& e) {
@@ -242,10 +270,10 @@ class DiagramBuilder {
                         along_motion(S, nv, tau), sign);
       }
       // What remains along the motion: a prescribed joint's drive, or a coupler's force.
-      // (Round-off against the whole transmitted wrench: a joint that carries no torque has
-      // a τ of round-off only.)
-      if (rest.norm() > kRelativeRoundOff *
-                            std::max({tau_total.norm(), r.force.norm(), r.moment.norm(), 1e-300})) {
+      // (Round-off against the whole transmitted wrench and the loads already on the body: a
+      // joint that carries no torque has a τ of round-off only.)
+      if (rest.norm() > kRelativeRoundOff * std::max({tau_total.norm(), r.force.norm(),
+                                                      r.moment.norm(), loads_scale(), 1e-300})) {
         const bool drive = joint.is_prescribed();
         push_joint_load(drive ? LoadKind::drive : LoadKind::reaction, joint.name,
                         fmt::format("{} of joint {} ({})",
@@ -258,6 +286,17 @@ class DiagramBuilder {
     push_joint_load(LoadKind::reaction, joint.name,
                     fmt::format("reaction of joint {} ({})", joint.name, side), X_WJ, reaction,
                     sign);
+  }
+
+  // The largest force (N) and moment about G (N·m) among the loads so far, summed.
+  double loads_scale() const {
+    double force = 0.0, moment = 0.0;
+    for (const Load& load : d_.loads) {
+      force = std::max(force, load.force_W.norm());
+      moment = std::max(moment,
+                        (load.couple_W + (load.p_WoP_W - d_.p_WoG_W).cross(load.force_W)).norm());
+    }
+    return force + moment;
   }
 
   void push_joint_load(LoadKind kind, std::string name, std::string description,

@@ -13,6 +13,8 @@
 #include "momenta/dynamics/kinematics.hpp"
 #include "momenta/dynamics/point_kinematics.hpp"
 
+#include "impact_course.hpp"
+
 namespace momenta::dynamics {
 namespace {
 
@@ -220,6 +222,20 @@ std::vector<PointImpulse> impulse_pair(const PointContact& c, const Vec3& P) {
 
 }  // namespace
 
+const char* slip_course_name(SlipCourse course) {
+  switch (course) {
+    case SlipCourse::sticks:
+      return "sticking";
+    case SlipCourse::slides:
+      return "sliding";
+    case SlipCourse::stops:
+      return "sliding, then sticking";
+    case SlipCourse::slides_again:
+      return "sliding again";
+  }
+  return "sliding";
+}
+
 Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointContact& contact,
                           double restitution, std::span<const char> enabled_rows) {
   if (!(restitution >= 0.0 && restitution <= 1.0)) {
@@ -290,6 +306,7 @@ FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
   impact.separation_speed = frictionless.separation_speed;
   if (static_friction == 0.0) {  // smooth: the normal impulse alone, nothing to stick or slide
     impact.normal_impulse = frictionless.normal_impulse;
+    impact.compression_impulse = frictionless.normal_impulse / (1.0 + restitution);
     impact.impulse_W = frictionless.normal_impulse * n;
     impact.motion = frictionless.motion;
     return impact;
@@ -305,51 +322,30 @@ FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
         impulsive_motion(model, q, at_rest, impulse_pair(contact, Vec3::Unit(k)), enabled_rows);
     W.col(k) = relative_velocity(model, data, q, unit.v_after, contact);
   }
-  // This closed form of Coulomb's law follows the impact's course where the normal impulse makes
-  // no slip (the tangential part of W n is zero) and a sliding impulse keeps the slip's direction
-  // (ŝ an eigenvector of W). Elsewhere the slip turns or stops within the impact — Routh's and
-  // Stronge's analysis, not followed yet — and the impact is the frictionless one.
-  const double slip = impact.slip_before_W.norm();
-  const Vec3 s = slip > 0.0 ? Vec3(impact.slip_before_W / slip) : Vec3::Zero();
-  const auto across = [&](const Vec3& x, const Vec3& along) {  // x's part ⊥ n and ⊥ along
-    const Vec3 t = x - n * n.dot(x);
-    return (t - along * along.dot(t)).norm();
-  };
-  const double tolerance = 1e-9 * W.norm();
-  if (across(W * n, Vec3::Zero()) > tolerance || (slip > 0.0 && across(W * s, s) > tolerance)) {
-    impact.coulomb = false;
-    impact.normal_impulse = frictionless.normal_impulse;
-    impact.impulse_W = frictionless.normal_impulse * n;
-    impact.motion = frictionless.motion;
-    const Vec3 u_after = relative_velocity(model, data, q, impact.motion.v_after, contact);
-    impact.slip_after_W = u_after - n * n.dot(u_after);
-    return impact;
-  }
-  // Sticking: the separation speed −e v_n⁻ with no slip after, W P = u⁺ − u⁻ (least-norm where
-  // the mechanism cannot move the point some way: nothing slips that way either). Its normal
-  // impulse is the frictionless one; it holds while its friction is within μs P_n.
-  Vec3 P = W.completeOrthogonalDecomposition().solve(Vec3(impact.separation_speed * n - u_before));
-  double P_n = n.dot(P);
-  impact.sticking = P_n >= 0.0 && (P - P_n * n).norm() <= static_friction * P_n;
-  if (!impact.sticking) {
-    // Sliding: P = P_n (n − μk ŝ), the same normal impulse and μk P_n against the slip, which
-    // it slows without reversing (reversing it would take more than sticking needs).
-    P_n = frictionless.normal_impulse;
-    P = P_n * (n - kinetic_friction * s);
-  }
-  impact.normal_impulse = P_n;
+  // The course in the contact's basis [t₁ t₂ n].
+  Mat3 basis;
+  basis.col(2) = n;
+  basis.col(0) = n.unitOrthogonal();
+  basis.col(1) = n.cross(basis.col(0));
+  const detail::ImpactCourse course =
+      detail::follow_impact(basis.transpose() * W * basis, basis.transpose() * u_before,
+                            restitution, static_friction, kinetic_friction);
+  const Vec3 P = basis * course.impulse;
+  impact.normal_impulse = course.impulse.z();
+  impact.compression_impulse = course.compression_impulse;
   impact.impulse_W = P;
+  impact.course = course.course;
+  impact.sticking = course.course == SlipCourse::sticks || course.course == SlipCourse::stops;
   impact.motion = impulsive_motion(model, q, v, impulse_pair(contact, P), enabled_rows);
   const Vec3 u_after = relative_velocity(model, data, q, impact.motion.v_after, contact);
-  impact.slip_after_W = u_after - n * n.dot(u_after);
-  // Newton's restitution with Coulomb friction can give back more than it took where the
-  // mechanism couples the normal and the slip: refused, not run.
+  impact.separation_speed = n.dot(u_after);
+  impact.slip_after_W = u_after - n * impact.separation_speed;
+  // A guard: the course above takes energy or none.
   const double kinetic_before = impact.motion.kinetic_before;
   if (impact.motion.kinetic_after > kinetic_before + 1e-12 * std::max(1.0, kinetic_before)) {
     throw NumericalError(fmt::format(
         "frictional_impact: with e = {} and μk = {} this impact would create energy ({:.6g} J "
-        "→ {:.6g} J): Newton's law of restitution with Coulomb friction is not consistent for "
-        "this mechanism here",
+        "→ {:.6g} J)",
         restitution, kinetic_friction, kinetic_before, impact.motion.kinetic_after));
   }
   return impact;

@@ -395,6 +395,14 @@ void Unilaterals::strike(system::MultibodySystem& system, integrate::SecondOrder
   event.energy_lost = kinetic_before - system.energy(at.q.head(nq), at.v.head(nv)).kinetic;
 }
 
+std::vector<StopEvent> hold_what_touches(system::MultibodySystem& system, integrate::State& state) {
+  const model::Model& model = system.model();
+  if (!model.has_joint_limits() && !model.has_contacts()) return {};
+  if (model.has_joint_limits() && model.has_constraints()) return {};
+  Unilaterals unilaterals(model, 1e-3);
+  return unilaterals.start(system, system, state);
+}
+
 std::vector<StopEvent> Unilaterals::start(system::MultibodySystem& system,
                                           integrate::SecondOrderSystem& advanced,
                                           integrate::State& state) {

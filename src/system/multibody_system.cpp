@@ -455,6 +455,13 @@ double MultibodySystem::contact_force(int k) const {
   return constraints_->multipliers()[constraints_->rows().first_row[static_cast<std::size_t>(k)]];
 }
 
+Vec3 MultibodySystem::contact_friction(int k) const {
+  for (const SlidingContact& s : sliding_) {
+    if (s.constraint == k) return -s.mu * s.normal * s.slip_W;
+  }
+  return Vec3::Zero();
+}
+
 double MultibodySystem::stop_force(int j) const {
   const int v = model_.joints()[static_cast<std::size_t>(j)].v_index;
   return data_.tau[v] - tau_elements_[v];

@@ -154,14 +154,16 @@ TEST_F(AnalysisCli, ImpactOnTheStruckRodAsTheTextbookHasIt) {
   EXPECT_NEAR(h.at("joint_impulses").at("pin").at("force").at(0).get<double>(),
               4.0 * omega * 0.6 - ms * (v0 - v_s), 1e-14);
   // With friction (examples/bouncing_sphere.yaml at t = 0.4 s: falling at g t, sliding sideways
-  // at 1 m/s, spinning about the vertical): the ball strikes the floor at its lowest point and
-  // sticks — it leaves rolling, v_x = 5/7 m/s, ω_y = 5 / (7 r) — its friction impulse −2 m u / 7.
+  // at 1 m/s, spinning about the vertical): the ball strikes the floor at its lowest point, its
+  // slip stopped within the impact — it leaves rolling, v_x = 5/7 m/s, ω_y = 5 / (7 r) — by the
+  // friction impulse −2 m u / 7; compression ends at half the normal impulse's (1 + e).
   const CliRun rough = momenta("impact " + example("bouncing_sphere") +
                                " --time 0.4 --between world:0,0,0 ball:0,0,-0.05 --normal 0,0,1 "
                                "--restitution 0.6 --friction 0.5,0.4 --json");
   ASSERT_EQ(rough.code, 0) << rough.err;
   const json r = json::parse(rough.out);
-  EXPECT_EQ(r.at("friction").at("outcome"), "sticking");
+  EXPECT_EQ(r.at("friction").at("outcome"), "sliding, then sticking");
+  EXPECT_NEAR(r.at("friction").at("compression_impulse").get<double>(), 0.1 * 9.81 * 0.4, 1e-14);
   EXPECT_NEAR(r.at("friction").at("impulse").at(0).get<double>(), -2.0 * 0.1 / 7.0, 1e-14);
   EXPECT_NEAR(r.at("v_after").at("free.vx").get<double>(), 5.0 / 7.0, 1e-14);
   // ω in the ball's axes, turned 1.2 rad about the vertical by then: its horizontal part.
@@ -173,10 +175,33 @@ TEST_F(AnalysisCli, ImpactOnTheStruckRodAsTheTextbookHasIt) {
   const CliRun rough_text = momenta("impact " + example("bouncing_sphere") +
                                     " --time 0.4 --between world:0,0,0 ball:0,0,-0.05 --normal "
                                     "0,0,1 --restitution 0.6 --friction 0.5,0.4");
-  EXPECT_NE(rough_text.out.find("friction (μs 0.5, μk 0.4): sticking, friction impulse "
-                                "[-0.0285714, 0, 0] N·s; slip [1, 0, 0] → [0, 0, 0] m/s"),
+  EXPECT_NE(rough_text.out.find("friction (μs 0.5, μk 0.4): sliding, then sticking, friction "
+                                "impulse [-0.0285714, 0, 0] N·s; slip [1, 0, 0] → [0, 0, 0] m/s "
+                                "(compression ends at a normal impulse of 0.3924 N·s)"),
             std::string::npos)
       << rough_text.out;
+  // A rod striking by one end (examples/falling_rod.yaml at t = 0.2 s, falling at V = g t): the
+  // normal impulse would make the end slip; within μs = 0.5 it sticks, P_n = (1 + e) m V a / 4,
+  // P_t = 3 sin θ cos θ P_n / a (a = 1 + 3 cos² θ); with μ = 0.2 it slides from rest, P_t = μ P_n.
+  const auto rod_impact = [&](const std::string& friction) {
+    return momenta("impact " + example("falling_rod") +
+                   " --time 0.2 --between world:0,0,0 rod:0,0,-0.5 --normal 0,0,1 --restitution "
+                   "0.5 --friction " +
+                   friction + " --json");
+  };
+  const CliRun stuck = rod_impact("0.5,0.4"), slid = rod_impact("0.2");
+  ASSERT_EQ(stuck.code, 0) << stuck.err;
+  ASSERT_EQ(slid.code, 0) << slid.err;
+  const double V = 9.81 * 0.2, sn = 0.5, cs = std::sqrt(3.0) / 2, a = 1 + 3 * cs * cs;
+  const json st = json::parse(stuck.out), sl = json::parse(slid.out);
+  EXPECT_EQ(st.at("friction").at("outcome"), "sticking");
+  EXPECT_NEAR(st.at("normal_impulse").get<double>(), 1.5 * V * a / 4, 1e-13);
+  EXPECT_NEAR(st.at("friction").at("impulse").at(0).get<double>(), 1.5 * V * 3 * sn * cs / 4,
+              1e-13);
+  EXPECT_EQ(sl.at("friction").at("outcome"), "sliding from rest");
+  const double P_n = 1.5 * V / (1 + 3 * sn * sn - 3 * 0.2 * sn * cs);
+  EXPECT_NEAR(sl.at("normal_impulse").get<double>(), P_n, 1e-13);
+  EXPECT_NEAR(sl.at("friction").at("impulse").at(0).get<double>(), 0.2 * P_n, 1e-13);
   const CliRun apart = momenta("impact " + eccentric +
                                " --between sphere rod:0,0,-1.1 --normal -1,0,0 --restitution 0.6");
   EXPECT_NE(apart.err.find("do not approach along the normal"), std::string::npos) << apart.err;

@@ -1,5 +1,5 @@
 """The textbook's method from Python: free-body diagrams against `momenta diagram --json`
-(bit-identical) and the pendulum's rod tension, rotating-frame kinematics against
+(bit-identical), the pendulum's rod tension and a contact's force, rotating-frame kinematics against
 `momenta kinematics --json`, equations and transfer functions in symbols against the command
 line and the numeric linearization."""
 
@@ -41,6 +41,19 @@ def test_pendulum_rod_pulls_with_mg_cos_theta_plus_ml_theta_dot_squared():
     np.testing.assert_allclose(pin["force"], -tension * d["com"], rtol=1e-13, atol=1e-13)
     assert np.linalg.norm(d["force_residual"]) <= 1e-13 * 10
     assert abs(abs(d["plane_normal"][1]) - 1) <= 1e-15
+
+
+def test_a_contact_the_body_rests_on_pushes_and_rubs_as_the_command_line_says():
+    # The bowling ball set down skidding: N = m g and μk m g against the slip at the contact point.
+    path = EXAMPLES / "skidding_ball.yaml"
+    d = momenta.free_body_diagram(momenta.load_model(path), "ball")
+    lane = next(load for load in d["loads"] if load["name"] == "lane")
+    weight = 7.0 * 9.81
+    np.testing.assert_allclose(lane["force"], [-0.1 * weight, 0, weight], rtol=0, atol=1e-12 * weight)
+    np.testing.assert_allclose(lane["point"], [0, 0, 0], atol=1e-15)
+    expected = json.loads(run_cli("diagram", path, "--body", "ball", "--json"))
+    theirs = next(load for load in expected["loads"] if load["name"] == "lane")
+    np.testing.assert_array_equal(lane["force"], theirs["force"])
 
 
 def test_relative_kinematics_is_the_command_lines():

@@ -93,34 +93,49 @@ struct Impact {
 Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointContact& contact,
                           double restitution, std::span<const char> enabled_rows = {});
 
-/// An impact with Newton's restitution and Coulomb friction (a contact with friction,
-/// model::Contact; docs/contacts.md): the impulse P on B (−P on A) with the normal separation
-/// speed v_n⁺ = −e v_n⁻ and, after, either no slip (sticking: the impulse W⁻¹(u⁺ − u⁻), W the
-/// mechanism's inverse inertia at the contact found from unit impulses, while its tangential part
-/// is within μs P_n) or a sliding impulse P_n (n − μk ŝ) against the slip ŝ before. This closed
-/// form follows the impact's course (Stronge, Impact Mechanics, 2000, ch. 4) where the normal
-/// impulse makes no slip — W n has no tangential part — and a sliding impulse keeps the slip's
-/// direction (ŝ an eigenvector of W): a ball, a point mass, a body struck on the line of its
-/// centre's response. Elsewhere the slip turns or stops within the impact (Routh's and Stronge's
-/// analysis, not followed yet): the impact is then the frictionless one (`coulomb` false), and
-/// friction acts from the instant after. Refused with NumericalError where the result would create
-/// kinetic energy (a guard: the law above cannot).
+/// What the slip at a contact did within an impact with friction.
+enum class SlipCourse {
+  sticks,        ///< no slip before, and the friction cone holds it: none after
+  slides,        ///< it slides throughout (its direction may turn)
+  stops,         ///< the slip comes to rest within the impact and the cone holds it there
+  slides_again,  ///< it comes to rest (or starts at rest) where the cone cannot hold it, and slides
+                 ///< again along ŝ with W_tn − μk W_tt ŝ = λ ŝ, λ > 0 (reversed, in a plane)
+};
+
+/// The course's name as `momenta impact` prints it: "sticking", "sliding", "sliding, then
+/// sticking", "sliding again" (from rest, or reversed).
+const char* slip_course_name(SlipCourse course);
+
+/// An impact with restitution and Coulomb friction (a contact with friction, model::Contact;
+/// docs/contacts.md), its course followed (Routh's process; Stronge, Impact Mechanics, 2000,
+/// ch. 4–5): the normal impulse p grows from zero and the contact's relative velocity follows
+/// du/dp = W (n + f), W the mechanism's inverse inertia at the contact (from three unit impulse
+/// solves) and f the friction impulse per unit normal impulse — μk against the slip while it
+/// slides (its direction may turn), and while it sticks the fixed f* = −W_tt⁺ W_tn that keeps it
+/// stuck, held while |f*| ≤ μs; where the cone cannot hold a stopped slip, it slides again.
+/// Compression ends where u_n reaches zero at p_c; the impact ends where the normal impulse has
+/// given back e² of the work it took in compression (Stronge's energetic coefficient of
+/// restitution, which cannot create energy). Where W n has no tangential part (a ball, a point
+/// mass, a body struck on the line of its centre's response), u_n is linear in p and this is
+/// Newton's −e v_n⁻ with μk P_n against the slip or the impulse that stops it; where the mechanism
+/// couples the normal and the slip (a rod striking by one end) the separation speed differs from
+/// −e v_n⁻. Refused with NumericalError where the impact would not end (friction jamming it:
+/// Painlevé) or the result would create kinetic energy (a guard: the law above cannot).
 struct FrictionalImpact {
-  Vec3 impulse_W = Vec3::Zero();  ///< P on B (N·s, W): P_n n + the friction impulse
-  double normal_impulse = 0.0;    ///< P_n (N·s), ≥ 0
-  double approach_speed = 0.0;    ///< v_n⁻ (m/s), < 0
-  double separation_speed = 0.0;  ///< −e v_n⁻ (m/s)
+  Vec3 impulse_W = Vec3::Zero();     ///< P on B (N·s, W): P_n n + the friction impulse
+  double normal_impulse = 0.0;       ///< P_n (N·s), ≥ 0
+  double compression_impulse = 0.0;  ///< p_c (N·s): the normal impulse at the end of compression
+  double approach_speed = 0.0;       ///< v_n⁻ (m/s), < 0
+  double separation_speed = 0.0;     ///< v_n⁺ (m/s), ≥ 0
   Vec3 slip_before_W = Vec3::Zero(), slip_after_W = Vec3::Zero();  ///< tangential u (m/s)
-  bool sticking = false;  ///< the impulse leaves no slip (within the cone)
-  /// False where the mechanism couples the normal and the slip at the contact: the impact was
-  /// the frictionless one.
-  bool coulomb = true;
+  bool sticking = false;  ///< the impulse leaves no slip (sticks or stops)
+  SlipCourse course = SlipCourse::slides;
   ImpulsiveMotion motion;
 };
 
 /// The impact at `contact` with restitution e, static and kinetic friction μs ≥ μk ≥ 0 at
 /// (q, v); arguments checked as restitution_impact's. `enabled_rows` as impulsive_motion's. With
-/// μs = 0 it is restitution_impact's (its slips left zero, not computed).
+/// μs = 0 it is restitution_impact's (its slips left zero, not computed, its course `slides`).
 FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
                                    const PointContact& contact, double restitution,
                                    double static_friction, double kinetic_friction,

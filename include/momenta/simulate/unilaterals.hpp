@@ -42,9 +42,9 @@
 // state projected onto them — if the friction that needs, |F_t|, is within the cone μs N; else it
 // slides on, against that friction. A contact that closes without slip sticks on the same test. A
 // sticking contact slides from the instant |F_t| reaches μs N (located as above), against F_t.
-// A contact with friction strikes with dynamics::frictional_impact (Newton's restitution and
-// Coulomb's law at impact); sticking contacts hold through an impact elsewhere, their cones not
-// yet checked.
+// A contact with friction strikes with dynamics::frictional_impact (the impact's course: Routh's
+// process, Stronge's energetic restitution); sticking contacts hold through an impact elsewhere,
+// their cones not yet checked.
 //
 // Not yet: stops on a model with constraints (refused by the Simulation), and the cones of
 // contacts that stick through another's impact.
@@ -106,6 +106,13 @@ struct StopEvent {
   /// μs N (N).
   double friction_needed = 0.0, friction_limit = 0.0;
 };
+
+/// The stops and contacts a run starting at `state` holds (Unilaterals::start, `system` advancing
+/// itself, a 1 ms step setting the rest threshold): those the mechanism touches, at rest or moving
+/// into them (struck first: `state` becomes the state after), and pushed into them — so that an
+/// evaluation at one instant (a free-body diagram) feels their forces. None on a model with both
+/// joint limits and constraints (a run refuses it). Returns the events start() says.
+std::vector<StopEvent> hold_what_touches(system::MultibodySystem& system, integrate::State& state);
 
 class Unilaterals {
  public:

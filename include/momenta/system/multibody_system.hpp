@@ -179,6 +179,10 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   /// After an evaluation: the normal force (N) closed contact k exerts on its body, > 0 pushing
   /// it off the plane; 0 while open.
   double contact_force(int k) const;
+  /// After an evaluation: the kinetic friction −μk N ŝ (N, world axes) sliding contact k exerts
+  /// on its body at the contact point; zero where it sticks (its rows carry the friction) or is
+  /// open.
+  Vec3 contact_friction(int k) const;
 
   /// Energy at (q, v) (prescribed coordinates as given). Overwrites data()'s poses and
   /// velocities with those of (q, v). No allocation.

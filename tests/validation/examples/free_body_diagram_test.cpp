@@ -5,7 +5,8 @@
 //    (the same row's state), and on its parent to the opposite;
 //  - closed forms: the pendulum's rod tension m g cos θ + m L θ̇², the bent rod's weld couple
 //    (m L²/12) ω² sin β cos β, a spring's and a loop closure's forces equal and opposite on
-//    their two bodies, a prescribed joint's drive equal to its effort.
+//    their two bodies, a prescribed joint's drive equal to its effort, a contact's normal force
+//    and its friction (sliding and sticking) at its point.
 
 #include <cmath>
 #include <filesystem>
@@ -20,6 +21,7 @@
 #include "momenta/common/error.hpp"
 #include "momenta/simulate/simulation.hpp"
 #include "momenta/simulate/state_at.hpp"
+#include "momenta/simulate/unilaterals.hpp"
 
 namespace momenta {
 namespace {
@@ -281,6 +283,55 @@ TEST(FreeBodyDiagram, APrescribedJointsDriveIsItsEffort) {
   }
   EXPECT_EQ(drives, 1);
   EXPECT_GT(std::abs(effort), 1e-3);
+}
+
+// A body on a contact: the contact holds as a run starting there holds it
+// (simulate::hold_what_touches), and its force — normal force and friction — is one load at the
+// contact point. The bowling ball set down skidding (examples/skidding_ball.yaml, m = 7 kg,
+// μk = 0.1): N = m g up and μk m g against the slip, m a_G = −μk m g x̂; once it rolls (state
+// set to v = r ω), N = m g and no friction. The crate thrown up the 30° ramp
+// (examples/block_on_incline.yaml, m = 2 kg, μk = 0.5): N = m g cos θ along the ramp's normal
+// and μk N down the ramp; set at rest there (tan θ < μs = 0.7) it sticks, the ramp holding up
+// its weight: m g sin θ up the ramp, the whole force m g straight up. To 1e-12 of the weight.
+TEST(FreeBodyDiagram, AContactsForceIsItsNormalForceAndItsFrictionAtItsPoint) {
+  const auto diagram = [](const model::Model& m, const std::string& body, integrate::State s) {
+    system::MultibodySystem system(m);
+    simulate::hold_what_touches(system, s);
+    return analysis::free_body_diagram(system, body, s.t, s.q, s.v);
+  };
+  const double g = 9.81;
+  const model::Model ball = io::read_model_file("examples/skidding_ball.yaml").model;
+  integrate::State s{0.0, ball.initial_q(), ball.initial_v()};
+  const double m = 7.0, r = 0.11, weight = m * g;
+  FreeBodyDiagram d = diagram(ball, "ball", s);
+  ASSERT_EQ(d.loads.size(), 3U);  // the weight, the lane's force, the free joint's (none)
+  EXPECT_EQ(load_named(d, "free").force_W, Vec3::Zero());
+  const Load& lane = load_named(d, "lane");
+  EXPECT_EQ(lane.kind, LoadKind::reaction);
+  EXPECT_NE(lane.description.find("sliding"), std::string::npos) << lane.description;
+  EXPECT_LE((lane.force_W - Vec3(-0.1 * weight, 0, weight)).norm(), 1e-12 * weight);
+  EXPECT_LE(lane.p_WoP_W.norm(), 1e-15);
+  EXPECT_LE(lane.couple_W.norm(), 1e-12 * weight * r);
+  EXPECT_LE((d.m_a_G() - Vec3(-0.1 * weight, 0, 0)).norm(), 1e-12 * weight);
+  EXPECT_LE(d.force_residual().norm(), 1e-12 * weight);
+  EXPECT_LE(d.moment_residual().norm(), 1e-12 * weight * r);
+  s.v[1] = 6.0 / r;  // ω_y: rolling
+  d = diagram(ball, "ball", s);
+  EXPECT_NE(load_named(d, "lane").description.find("sticking"), std::string::npos);
+  EXPECT_LE((load_named(d, "lane").force_W - Vec3(0, 0, weight)).norm(), 1e-12 * weight);
+
+  const model::Model crate = io::read_model_file("examples/block_on_incline.yaml").model;
+  const double mc = 2.0, theta = std::numbers::pi / 6, N = mc * g * std::cos(theta);
+  const Vec3 n(-std::sin(theta), 0, std::cos(theta)), up(std::cos(theta), 0, std::sin(theta));
+  integrate::State c{0.0, crate.initial_q(), crate.initial_v()};
+  const Load thrown = load_named(diagram(crate, "crate", c), "ramp");
+  EXPECT_LE((thrown.force_W - (N * n - 0.5 * N * up)).norm(), 1e-12 * mc * g);
+  c.v.setZero();
+  const FreeBodyDiagram at_rest = diagram(crate, "crate", c);
+  const Load& held = load_named(at_rest, "ramp");
+  EXPECT_LE((held.force_W - Vec3(0, 0, mc * g)).norm(), 1e-12 * mc * g);
+  EXPECT_NEAR(held.force_W.dot(up), mc * g * std::sin(theta), 1e-12 * mc * g);
+  EXPECT_LE(at_rest.force_residual().norm(), 1e-12 * mc * g);
 }
 
 TEST(FreeBodyDiagram, AnUnknownBodyOrTheWorldIsRefusedWithTheReason) {

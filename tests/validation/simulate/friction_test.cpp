@@ -13,11 +13,15 @@
 //   piecewise closed form;
 // - a ball dropped sliding onto a rough floor: it leaves the first impact rolling (Coulomb's law
 //   at impact, sticking), and rests rolling;
+// - a rod dropped tilted on a rough floor (examples/falling_rod.yaml): it strikes by one end,
+//   which sticks or slides from rest as Routh's process says;
 // - a ball rolling off a fixed dome (friction between two spheres): rolling until its cone
 //   gives out where (2/7) sin θ = μs (17 cos θ − 10 cos θ₀) / 7;
 // - the model file's errors for friction.
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -274,6 +278,67 @@ TEST(Friction, BallDroppedSlidingOntoARoughFloorLeavesRolling) {
       EXPECT_NEAR(row[vx], 5.0 / 7.0, 1e-12) << row[0];
       EXPECT_NEAR(row[wy], 5.0 / (7.0 * r), 1e-11) << row[0];
     }
+  }
+}
+
+// A slender rod (m = 1 kg, L = 1 m) tilted θ = 30° from the vertical, dropped from its lower end
+// h = 0.2 m above a rough floor (examples/falling_rod.yaml, e = 0.5): it strikes by that end at
+// t₁ = √(2h/g) at V = √(2gh), and the normal impulse alone would make the end slip. With W at the
+// end (a = 1 + 3 cos² θ, b = −3 sin θ cos θ, c = 1 + 3 sin² θ, over m, in (x, z)) the friction
+// that keeps it stuck is f* = −b/a per unit normal impulse: within μs = 0.5 it sticks, the normal
+// speed grows at 4 / (m a), and P_n = (1 + e) m V a / 4, P_t = f* P_n; with μs = μk = 0.2 < |f*| it
+// slides from rest the other way, P_t = μk P_n and P_n = (1 + e) m V / (c − 3 μk sin θ cos θ).
+// After the impact the rod flies: v_x, ω_y constant and v_z = v_z⁺ − g (t − t₁) until its next.
+TEST(Friction, RodDroppedOnARoughFloorStrikesByItsEndAsRouthSays) {
+  const double m = 1.0, L = 1.0, h = 0.2, e = 0.5, theta = std::numbers::pi / 6;
+  const double s = std::sin(theta), c = std::cos(theta), I = m * L * L / 12;
+  const double t1 = std::sqrt(2 * h / kG), V = std::sqrt(2 * kG * h);
+  const Vec3 r(-L / 2 * s, 0, -L / 2 * c);  // centre to the lower end
+  std::ifstream file("examples/falling_rod.yaml");
+  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  ASSERT_NE(text.find("friction: {static: 0.5, kinetic: 0.4}"), std::string::npos);
+  std::string sliding_text = text;
+  sliding_text.replace(sliding_text.find("friction: {static: 0.5, kinetic: 0.4}"),
+                       std::string("friction: {static: 0.5, kinetic: 0.4}").size(),
+                       "friction: 0.2");
+  struct Case {
+    std::string text;
+    double P_n, P_t;
+    FrictionState friction;
+  };
+  const double mu = 0.2;
+  const double sticking_P_n = (1 + e) * m * V * (1 + 3 * c * c) / 4;
+  const double sliding_P_n = (1 + e) * m * V / (1 + 3 * s * s - 3 * mu * s * c);
+  for (const Case& k :
+       {Case{text, sticking_P_n, 3 * s * c / (1 + 3 * c * c) * sticking_P_n,
+             FrictionState::sticking},
+        Case{sliding_text, sliding_P_n, mu * sliding_P_n, FrictionState::sliding}}) {
+    SCOPED_TRACE(k.text == text ? "sticking" : "sliding");
+    const UnilateralRun run = run_unilaterals(load(k.text), "dopri5", 1e-3, 0.4);
+    const std::vector<StopEvent>& events = run.summary.stop_events;
+    ASSERT_GE(events.size(), 1u);
+    const StopEvent& first = events[0];
+    EXPECT_EQ(first.kind, StopEventKind::impact);
+    EXPECT_NEAR(first.time, t1, 1e-12 * t1);
+    EXPECT_NEAR(first.impulse, k.P_n, 1e-12 * m * V);
+    const double next = events.size() > 1 ? events[1].time : 0.4;
+    const Vec3 P(k.P_t, 0, k.P_n);
+    const double omega = r.cross(P).y() / I, vx = P.x() / m, vz = -V + P.z() / m;
+    // The end leaves the floor at e V where it sticks (u_n linear in p: Newton's e).
+    if (k.friction == FrictionState::sticking) {
+      EXPECT_NEAR(vz - omega * r.x(), e * V, 1e-12 * V);
+    }
+    const int wy = run.table.column("free.wy"), vx_col = run.table.column("free.vx"),
+              vz_col = run.table.column("free.vz");
+    int rows = 0;
+    for (const std::vector<double>& row : run.table.rows) {
+      if (!(row[0] > first.time && row[0] < next)) continue;
+      ++rows;
+      EXPECT_NEAR(row[wy], omega, 1e-12 * V / L) << row[0];
+      EXPECT_NEAR(row[vx_col], vx, 1e-12 * V) << row[0];
+      EXPECT_NEAR(row[vz_col], vz - kG * (row[0] - t1), 1e-11 * V) << row[0];
+    }
+    EXPECT_GT(rows, 10);
   }
 }
 
