@@ -54,7 +54,8 @@ function stopWhat(e) {
 // Every impact, rest and release of the joints' stops and the contacts, in time order (open when
 // there are few); a contact is named in the 'stop' column, its rates its normal speed.
 function stopsTable(stops) {
-  const impacts = stops.filter((e) => e.kind === 'impact').length;
+  // Counted as the run's summary counts them: a rest that strikes (an impulse) is an impact too.
+  const impacts = stops.filter((e) => e.kind === 'impact' || (e.kind === 'rest' && e.impulse !== 0)).length;
   const lost = stops.reduce((sum, e) => sum + e.energy_lost, 0);
   const details = element('details', { class: 'stops' },
     element('summary', {}, `Stops and contacts: ${stops.length} entr${stops.length === 1 ? 'y' : 'ies'}, ${impacts} impact${impacts === 1 ? '' : 's'}, ${formatNumber(lost, 4)} J lost`),
