@@ -13,14 +13,19 @@
 // the sliding phases' normal force takes three solves an evaluation (system/multibody_system.hpp)
 // — over the steps themselves. Counters: steps, evaluations, events.
 //
-// Run: build/bench/joint_stops_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only
-// and quote the medians and the ratio of each integrator's two rows.
+// One impact with friction followed through its course, beside the frictionless one: see
+// BM_FrictionalImpact.
+//
+// Run (from the repository root): build/bench/joint_stops_bench --benchmark_repetitions=5
+// --benchmark_report_aggregates_only and quote the medians and the ratio of each integrator's two
+// rows.
 
 #include <span>
 #include <string>
 
 #include <benchmark/benchmark.h>
 
+#include "momenta/dynamics/impulse.hpp"
 #include "momenta/io/model_file.hpp"
 #include "momenta/simulate/simulation.hpp"
 
@@ -129,6 +134,36 @@ void BM_StickSlip(benchmark::State& bench, bool contact) {
   options.every = 1000;
   run_timed(bench, model, options, "events");
 }
+
+// One impact with friction (dynamics::frictional_impact), the rod of examples/falling_rod.yaml
+// striking the floor by its lower end at 1.962 m/s (e = 0.5): its course followed where the
+// normal and the slip couple — the end sticking (μs 0.5, μk 0.4: the course in closed form),
+// sliding from rest (μ 0.2: straight, stepped exactly), its slip turning (a sideways slip of
+// 0.5 m/s, μ 0.3: the adaptive integration in p) — beside the frictionless impact
+// (dynamics::restitution_impact) of the same state: what following the course costs over the
+// three unit impulse solves that find W.
+void BM_FrictionalImpact(benchmark::State& bench, double mu_s, double mu_k, double sideways) {
+  const model::Model model = io::read_model_file("examples/falling_rod.yaml").model;
+  const VecX q = model.initial_q();
+  VecX v = VecX::Zero(model.nv());
+  v[5] = -9.81 * 0.2;
+  v[4] = sideways;
+  const dynamics::PointContact end{0, Vec3::Zero(), 1, Vec3(0, 0, -0.5), Vec3::UnitZ()};
+  for (auto _ : bench) {
+    if (mu_s == 0.0) {
+      benchmark::DoNotOptimize(dynamics::restitution_impact(model, q, v, end, 0.5).normal_impulse);
+    } else {
+      benchmark::DoNotOptimize(
+          dynamics::frictional_impact(model, q, v, end, 0.5, mu_s, mu_k).normal_impulse);
+    }
+  }
+}
+
+BENCHMARK_CAPTURE(BM_FrictionalImpact, frictionless, 0.0, 0.0, 0.0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_FrictionalImpact, sticking, 0.5, 0.4, 0.0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_FrictionalImpact, sliding_from_rest, 0.2, 0.2, 0.0)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_FrictionalImpact, slip_turning, 0.3, 0.3, 0.5)->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_CAPTURE(BM_StickSlip, rk4_belt, true)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_StickSlip, rk4_spring_alone, false)->Unit(benchmark::kMillisecond);
