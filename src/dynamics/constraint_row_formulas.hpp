@@ -22,6 +22,7 @@
 
 #include "dual.hpp"
 #include "momenta/common/error.hpp"
+#include "momenta/dynamics/data.hpp"
 #include "momenta/math/rotation.hpp"
 #include "momenta/math/spatial.hpp"
 #include "momenta/math/types.hpp"
@@ -52,6 +53,20 @@ struct FrameMotionOf {
   Vec3Of<S> w() const { return V.template head<3>(); }
   Vec3Of<S> point_velocity(const Vec3Of<S>& x) const { return V.template tail<3>() + w().cross(x); }
 };
+
+// Frame X_BF of `body` (the ground's where body is 0) at data's poses, and with `velocity` its
+// spatial velocity; which acceleration goes with it (the velocity products, the whole) is the
+// caller's (constraints.cpp's rows, contact_geometry.cpp's gap).
+inline FrameMotionOf<double> frame_pose_and_velocity(const Data& data, int body,
+                                                     const Transform& X_BF, bool velocity) {
+  FrameMotionOf<double> m;
+  const Transform& X_WB = data.X_WB[body];
+  const Transform X_WF = X_WB * X_BF;
+  m.R = X_WF.R;
+  m.p = X_WF.p;
+  if (velocity && body != 0) m.V = X_WB.act_motion(data.V_WB_B[body]);
+  return m;
+}
 
 template <class S>
 [[gnu::always_inline]] inline Vec6Of<S> spatial_of(const Vec3Of<S>& angular,

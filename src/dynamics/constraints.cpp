@@ -34,18 +34,13 @@ struct Accelerations {
 
 FrameMotion frame_motion(const Data& data, int body, const Transform& X_BF,
                          const Accelerations& acc) {
-  FrameMotion m;
+  FrameMotion m = detail::frame_pose_and_velocity(data, body, X_BF, acc.velocities());
+  if (!acc.velocities() || body == 0) return m;
   const Transform& X_WB = data.X_WB[body];
-  const Transform X_WF = X_WB * X_BF;
-  m.R = X_WF.R;
-  m.p = X_WF.p;
-  if (acc.velocities() && body != 0) {
-    m.V = X_WB.act_motion(data.V_WB_B[body]);
-    if (acc.kind == Accelerations::velocity_products) {
-      m.A = X_WB.act_motion(data.A_bias_B[body]);
-    } else if (acc.kind == Accelerations::whole) {
-      m.A = X_WB.act_motion(data.A_gf[body]) + acc.gravity_W;
-    }
+  if (acc.kind == Accelerations::velocity_products) {
+    m.A = X_WB.act_motion(data.A_bias_B[body]);
+  } else if (acc.kind == Accelerations::whole) {
+    m.A = X_WB.act_motion(data.A_gf[body]) + acc.gravity_W;
   }
   return m;
 }

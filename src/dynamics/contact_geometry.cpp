@@ -31,15 +31,8 @@ Vec3 material_velocity(const Data& data, int body, const Vec3& point_W) {
 // motion, its velocity and acceleration — spatial, in W about Wo (dynamics/constraints.hpp's rows).
 detail::FrameMotionOf<double> frame_motion(const Data& data, int body, const Transform& X_BF,
                                            bool motion) {
-  detail::FrameMotionOf<double> m;
-  const Transform& X_WB = data.X_WB[body];
-  const Transform X_WF = X_WB * X_BF;
-  m.R = X_WF.R;
-  m.p = X_WF.p;
-  if (motion && body != 0) {
-    m.V = X_WB.act_motion(data.V_WB_B[body]);
-    m.A = X_WB.act_motion(data.A_WB_B[body]);
-  }
+  detail::FrameMotionOf<double> m = detail::frame_pose_and_velocity(data, body, X_BF, motion);
+  if (motion && body != 0) m.A = data.X_WB[body].act_motion(data.A_WB_B[body]);
   return m;
 }
 
