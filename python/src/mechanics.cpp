@@ -52,6 +52,18 @@ Instant instant_of(const ModelHandle& h, const py::object& q, const py::object& 
   return s;
 }
 
+// What every diagram's dict begins with: the body, the instant, its mass, G and the plane.
+py::dict diagram_body_dict(const analysis::DiagramBody& d) {
+  py::dict out;
+  out["body"] = d.body;
+  out["t"] = d.t;
+  out["mass"] = d.mass;
+  out["com"] = to_numpy(d.p_WoG_W);
+  out["plane_normal"] =
+      d.plane_normal ? py::object(to_numpy(*d.plane_normal)) : py::object(py::none());
+  return out;
+}
+
 py::dict load_dict(const model::Model& model, const analysis::Load& load) {
   py::dict d;
   d["kind"] = analysis::load_kind_name(load.kind);
@@ -106,13 +118,7 @@ void bind_mechanics(py::module_& m) {
             analysis::free_body_diagram(system, h.model().body(b).name, at.t, at.q, at.v);
         py::list loads;
         for (const analysis::Load& load : d.loads) loads.append(load_dict(h.model(), load));
-        py::dict out;
-        out["body"] = d.body;
-        out["t"] = d.t;
-        out["mass"] = d.mass;
-        out["com"] = to_numpy(d.p_WoG_W);
-        out["plane_normal"] =
-            d.plane_normal ? py::object(to_numpy(*d.plane_normal)) : py::object(py::none());
+        py::dict out = diagram_body_dict(d);
         out["loads"] = loads;
         out["m_a_G"] = to_numpy(d.m_a_G());
         out["I_alpha"] = to_numpy(d.I_alpha());
@@ -160,13 +166,7 @@ its point, its normal force and friction.)doc");
           item.attr("pop")("force");
           listed.append(item);
         }
-        py::dict out;
-        out["body"] = d.body;
-        out["t"] = d.t;
-        out["mass"] = d.mass;
-        out["com"] = to_numpy(d.p_WoG_W);
-        out["plane_normal"] =
-            d.plane_normal ? py::object(to_numpy(*d.plane_normal)) : py::object(py::none());
+        py::dict out = diagram_body_dict(d);
         out["linear_before"] = to_numpy(d.linear_before());
         out["angular_before"] = to_numpy(d.angular_before());
         out["impulses"] = listed;

@@ -25,30 +25,15 @@ struct JointWrench {
 // test allows out of the plane, and what the joint-split leaves as "nothing along the motion".
 constexpr double kRelativeRoundOff = 1e-9;
 
-int checked_body(const model::Model& model, const std::string& name) {
-  const int b = model.body_index(name);  // throws with a did-you-mean
-  if (b == 0) {
-    throw InvalidArgument(
-        "the world has no free-body diagram: it is the ground everything is held against "
-        "(name a body)");
-  }
-  return b;
-}
-
-// Pose, motion and mass of body b from the evaluated data.
+// The kinetic terms of body b from the evaluated data.
 void fill_kinetics(FreeBodyDiagram& d, const model::Model& model, const dynamics::Data& data,
                    int b) {
   const auto& mp = model.body(b).mass_properties;
   const Transform& X_WB = data.X_WB[b];
-  d.mass = mp.mass();
-  d.R_WB = X_WB.R;
-  d.p_WoBo_W = X_WB.p;
-  d.p_WoG_W = X_WB.apply(mp.center_of_mass());
   d.w_WB_W = X_WB.R * data.V_WB_B[b].head<3>();
   // The angular part of the spatial acceleration is ω̇ itself (in B; R ω̇_B in W).
   d.alpha_WB_W = X_WB.R * data.A_WB_B[b].head<3>();
   d.a_WG_W = dynamics::point_kinematics(model, data, b, mp.center_of_mass()).a_WP_W;
-  d.I_G_W = X_WB.R * mp.inertia_about_com() * X_WB.R.transpose();
 }
 
 // A wrench on the body given as its moment about G and its force (W), as a force through the
@@ -442,15 +427,38 @@ std::optional<Vec3> plane_of_loads(const model::Model& model, int b, const Mat3&
   return std::nullopt;
 }
 
+int diagram_body_index(const model::Model& model, const std::string& name, std::string_view diagram,
+                       std::string_view why) {
+  const int b = model.body_index(name);  // throws with a did-you-mean
+  if (b == 0) {
+    throw InvalidArgument(fmt::format("the world has no {}: {} (name a body)", diagram, why));
+  }
+  return b;
+}
+
+DiagramBody diagram_body(const model::Model& model, const dynamics::Data& data, int b, double t) {
+  const auto& mp = model.body(b).mass_properties;
+  const Transform& X_WB = data.X_WB[b];
+  DiagramBody d;
+  d.body = model.body(b).name;
+  d.t = t;
+  d.mass = mp.mass();
+  d.R_WB = X_WB.R;
+  d.p_WoBo_W = X_WB.p;
+  d.p_WoG_W = X_WB.apply(mp.center_of_mass());
+  d.I_G_W = X_WB.R * mp.inertia_about_com() * X_WB.R.transpose();
+  return d;
+}
+
 FreeBodyDiagram free_body_diagram(system::MultibodySystem& system, const std::string& body,
                                   double t, const VecX& q, const VecX& v) {
   const model::Model& model = system.model();
-  const int b = checked_body(model, body);
+  const int b = diagram_body_index(model, body, "free-body diagram",
+                                   "it is the ground everything is held against");
   system.evaluate(t, q, v);
-  FreeBodyDiagram d;
-  d.body = body;
-  d.t = t;
   dynamics::Data& data = system.data();
+  FreeBodyDiagram d;
+  static_cast<DiagramBody&>(d) = diagram_body(model, data, b, t);
   fill_kinetics(d, model, data, b);
 
   DiagramBuilder builder(system, b, d);

@@ -13,16 +13,6 @@ namespace momenta::analysis {
 
 namespace {
 
-int struck_body_index(const model::Model& model, const std::string& name) {
-  const int b = model.body_index(name);  // throws with a did-you-mean
-  if (b == 0) {
-    throw InvalidArgument(
-        "the world has no impulse–momentum diagram: it takes every impulse without moving "
-        "(name a body)");
-  }
-  return b;
-}
-
 // G's velocity and the body's ω at data's velocities.
 void body_motion(const model::Model& model, const dynamics::Data& data, int b, Vec3& v_G, Vec3& w) {
   const Vec3 p_BoG_B = model.body(b).mass_properties.center_of_mass();
@@ -65,22 +55,16 @@ ImpulseMomentumDiagram impulse_momentum_diagram(const model::Model& model, const
                                                 const dynamics::ImpulsiveMotion& motion,
                                                 std::span<const dynamics::PointImpulse> blow,
                                                 const std::string& blow_name) {
-  const int b = struck_body_index(model, body);
+  const int b = diagram_body_index(model, body, "impulse–momentum diagram",
+                                   "it takes every impulse without moving");
   ImpulseMomentumDiagram d;
-  d.body = body;
-  d.t = t;
   dynamics::Data data(model);
   dynamics::forward_kinematics(model, data, q, motion.v_after);
   body_motion(model, data, b, d.v_G_after_W, d.w_after_W);
   dynamics::forward_kinematics(model, data, q, motion.v_before);
   body_motion(model, data, b, d.v_G_before_W, d.w_before_W);
-  const auto& mp = model.body(b).mass_properties;
+  static_cast<DiagramBody&>(d) = diagram_body(model, data, b, t);
   const Transform& X_WB = data.X_WB[b];
-  d.mass = mp.mass();
-  d.R_WB = X_WB.R;
-  d.p_WoBo_W = X_WB.p;
-  d.p_WoG_W = X_WB.apply(mp.center_of_mass());
-  d.I_G_W = X_WB.R * mp.inertia_about_com() * X_WB.R.transpose();
 
   for (const dynamics::PointImpulse& hit : blow) {
     if (hit.body != b) continue;

@@ -24,6 +24,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "momenta/dynamics/constraints.hpp"
@@ -62,18 +63,34 @@ Vec3 sum_of_forces(std::span<const Load> loads);
 /// The sum of the loads' moments about the point p_WoO_W: Σ (p − O) × F + couples (N·m).
 Vec3 sum_of_moments_about(std::span<const Load> loads, const Vec3& p_WoO_W);
 
-/// The body's diagrams at one instant.
-struct FreeBodyDiagram {
+/// The body a diagram isolates (free-body, kinetic or impulse–momentum), at its instant.
+struct DiagramBody {
   std::string body;
   double t = 0.0;
-  double mass = 0.0;               ///< kg
-  Vec3 p_WoG_W = Vec3::Zero();     ///< centre of mass G (m)
-  Vec3 p_WoBo_W = Vec3::Zero();    ///< body frame origin (m)
-  Mat3 R_WB = Mat3::Identity();    ///< body axes
+  double mass = 0.0;             ///< kg
+  Vec3 p_WoG_W = Vec3::Zero();   ///< centre of mass G (m)
+  Vec3 p_WoBo_W = Vec3::Zero();  ///< body frame origin (m)
+  Mat3 R_WB = Mat3::Identity();  ///< body axes
+  Mat3 I_G_W = Mat3::Zero();     ///< Ī_G in W (kg·m²)
+  /// The unit normal of the plane of motion when the diagram is planar (plane_of_loads): every
+  /// force and momentum or m a_G in the plane, every couple and moment normal to it. Empty
+  /// otherwise (a 3-D view).
+  std::optional<Vec3> plane_normal;
+};
+
+/// The index of body `name` for a diagram: throws InvalidArgument for an unknown body (with a
+/// did-you-mean) or the world — "the world has no <diagram>: <why>".
+int diagram_body_index(const model::Model& model, const std::string& name, std::string_view diagram,
+                       std::string_view why);
+
+/// Body b's name, mass, pose and central inertia at data's poses, at time t.
+DiagramBody diagram_body(const model::Model& model, const dynamics::Data& data, int b, double t);
+
+/// The body's diagrams at one instant.
+struct FreeBodyDiagram : DiagramBody {
   Vec3 w_WB_W = Vec3::Zero();      ///< ω (rad/s)
   Vec3 alpha_WB_W = Vec3::Zero();  ///< α (rad/s²)
   Vec3 a_WG_W = Vec3::Zero();      ///< a_G (m/s²)
-  Mat3 I_G_W = Mat3::Zero();       ///< Ī_G in W (kg·m²)
   std::vector<Load> loads;
 
   // --- the kinetic diagram ------------------------------------------------------------------
@@ -87,11 +104,6 @@ struct FreeBodyDiagram {
   Vec3 sum_of_moments_about_G() const;  ///< ΣM_G: Σ (p − G) × F + couples (N·m)
   Vec3 force_residual() const { return sum_of_forces() - m_a_G(); }              ///< ΣF − m a_G
   Vec3 moment_residual() const { return sum_of_moments_about_G() - H_G_dot(); }  ///< ΣM_G − Ḣ_G
-
-  /// The unit normal of the plane of motion when the diagram is planar: every force and m a_G
-  /// lie in the plane, every couple and Ḣ_G are normal to it (to 1e-9 of the largest). Tried in
-  /// turn: the world's z, y and x axes, then the body's joint axis. Empty otherwise (a 3-D view).
-  std::optional<Vec3> plane_normal;
 };
 
 /// The diagrams of body `body` (a name; not the world) at time t and state (q, v) of `system`'s

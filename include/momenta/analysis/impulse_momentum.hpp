@@ -28,14 +28,7 @@
 namespace momenta::analysis {
 
 /// The body's momenta before and after an impact and the impulses between.
-struct ImpulseMomentumDiagram {
-  std::string body;
-  double t = 0.0;
-  double mass = 0.0;                                             ///< kg
-  Vec3 p_WoG_W = Vec3::Zero();                                   ///< centre of mass G (m)
-  Vec3 p_WoBo_W = Vec3::Zero();                                  ///< body frame origin (m)
-  Mat3 R_WB = Mat3::Identity();                                  ///< body axes
-  Mat3 I_G_W = Mat3::Zero();                                     ///< Ī_G in W (kg·m²)
+struct ImpulseMomentumDiagram : DiagramBody {
   Vec3 v_G_before_W = Vec3::Zero(), v_G_after_W = Vec3::Zero();  ///< v̄₁, v̄₂ (m/s)
   Vec3 w_before_W = Vec3::Zero(), w_after_W = Vec3::Zero();      ///< ω₁, ω₂ (rad/s)
   /// Each impulse: force_W a force impulse (N·s) at p_WoP_W, couple_W an impulsive couple
@@ -54,9 +47,6 @@ struct ImpulseMomentumDiagram {
   Vec3 angular_residual() const {
     return angular_before() + sum_of_moments_about_G() - angular_after();
   }
-  /// The plane of motion where every impulse and momentum lies in it (every moment normal to
-  /// it), as FreeBodyDiagram::plane_normal: the world's z, y, x, or the body's joint axis.
-  std::optional<Vec3> plane_normal;
 };
 
 /// The diagram of body `body` (a name; not the world) for an impact at time t and configuration
