@@ -23,6 +23,7 @@
 
 namespace momenta::report::drawing {
 
+using analysis::DiagramBody;
 using analysis::FreeBodyDiagram;
 using analysis::Load;
 using analysis::LoadKind;
@@ -75,7 +76,7 @@ struct View {
 
 inline const char* axis_name(int k) { return k == 0 ? "x" : k == 1 ? "y" : "z"; }
 
-inline View make_view(const FreeBodyDiagram& d) {
+inline View make_view(const DiagramBody& d) {
   View view;
   if (d.plane_normal) {
     const Vec3 n = *d.plane_normal;
@@ -135,7 +136,7 @@ struct Placement {
 // The corners of the body's equivalent uniform box: the box of the same mass and central
 // inertia (half-sides a_k with a_1² = 3 (I_2 + I_3 − I_1) / 2m, ...), along the principal axes
 // — a rod's segment, a disc's square, nothing for a point mass.
-inline std::vector<Vec3> equivalent_box(const FreeBodyDiagram& d) {
+inline std::vector<Vec3> equivalent_box(const DiagramBody& d) {
   if (d.mass <= 0.0) return {};
   const Eigen::SelfAdjointEigenSolver<Mat3> principal(d.I_G_W);
   const Vec3 I = principal.eigenvalues();
@@ -154,10 +155,10 @@ inline std::vector<Vec3> equivalent_box(const FreeBodyDiagram& d) {
 
 // What the outline of the body goes round: G, the points loads act at, and its parts' surface
 // points (page_data.hpp) placed in the world, or its equivalent box where it has no parts.
-inline std::vector<Vec3> body_points(const FreeBodyDiagram& d,
+inline std::vector<Vec3> body_points(const DiagramBody& d, std::span<const Load> loads,
                                      std::span<const io::PartSummary> parts) {
   std::vector<Vec3> points = {d.p_WoG_W};
-  for (const Load& load : d.loads) points.push_back(load.p_WoP_W);
+  for (const Load& load : loads) points.push_back(load.p_WoP_W);
   std::vector<Vec3> surface;
   for (const io::PartSummary& part : parts) {
     for (const Vec3& p_BoP_B : detail::part_outline_points(part))
@@ -168,7 +169,7 @@ inline std::vector<Vec3> body_points(const FreeBodyDiagram& d,
   return points;
 }
 
-inline Placement place(const View& view, const std::vector<Vec3>& outline, const FreeBodyDiagram& d,
+inline Placement place(const View& view, const std::vector<Vec3>& outline, const DiagramBody& d,
                        double panel_x) {
   Vec2 lo(1e300, 1e300), hi(-1e300, -1e300);
   for (const Vec3& p : outline) {
@@ -237,7 +238,7 @@ class Canvas {
 
   std::string& svg() { return svg_; }
 
-  void body(const Placement& at, const FreeBodyDiagram& d) {
+  void body(const Placement& at, const DiagramBody& d) {
     // The outline: a thick rounded stroke through the body's points (their convex hull), a
     // capsule for two points, a disc for one.
     std::vector<Vec2> points;

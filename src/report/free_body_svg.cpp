@@ -80,7 +80,7 @@ void draw_kinetic(Canvas& canvas, const Placement& at, const View& view, const F
 std::string free_body_svg(const FreeBodyDiagram& d, const std::string& title,
                           std::span<const io::PartSummary> parts) {
   const View view = make_view(d);
-  const std::vector<Vec3> outline = body_points(d, parts);
+  const std::vector<Vec3> outline = body_points(d, d.loads, parts);
   const Scales scale = largest(d);
   Canvas canvas(kWidth, page_height(d.loads.size()));
   canvas.text(kLeftX, 24, fmt::format("{} — body {} at t = {:.6g} s", title, d.body, d.t),

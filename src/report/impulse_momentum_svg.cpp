@@ -23,20 +23,6 @@ constexpr double kAfterX = kImpulsesX + kPanel + kPanelGap;
 constexpr double kImpulsePageWidth = kAfterX + kPanel + 20.0;
 
 // The body as the drawing helpers take it: its pose, inertia and plane, the impulses as loads.
-FreeBodyDiagram picture_of(const ImpulseMomentumDiagram& d) {
-  FreeBodyDiagram picture;
-  picture.body = d.body;
-  picture.t = d.t;
-  picture.mass = d.mass;
-  picture.p_WoG_W = d.p_WoG_W;
-  picture.p_WoBo_W = d.p_WoBo_W;
-  picture.R_WB = d.R_WB;
-  picture.I_G_W = d.I_G_W;
-  picture.loads = d.impulses;
-  picture.plane_normal = d.plane_normal;
-  return picture;
-}
-
 Scales largest_momenta(const ImpulseMomentumDiagram& d) {
   Scales s{std::max(d.linear_before().norm(), d.linear_after().norm()),
            std::max(d.angular_before().norm(), d.angular_after().norm())};
@@ -49,11 +35,11 @@ Scales largest_momenta(const ImpulseMomentumDiagram& d) {
 
 // One side's momenta: m v̄ from G, H_G about G; "0 (at rest)" where both are negligible.
 void draw_momenta(Canvas& canvas, const Placement& at, const View& view,
-                  const FreeBodyDiagram& picture, const Vec3& linear, const Vec3& angular,
+                  const ImpulseMomentumDiagram& d, const Vec3& linear, const Vec3& angular,
                   const std::string& when, const std::string& index, const Scales& scale) {
   LabelBoard labels;
-  canvas.body(at, picture);
-  const Vec3& G = picture.p_WoG_W;
+  canvas.body(at, d);
+  const Vec3& G = d.p_WoG_W;
   const bool moving = linear.norm() > kNegligible * scale.force;
   const bool turning = angular.norm() > kNegligible * scale.moment;
   if (moving) {
@@ -71,15 +57,15 @@ void draw_momenta(Canvas& canvas, const Placement& at, const View& view,
 }
 
 void draw_impulses(Canvas& canvas, const Placement& at, const View& view,
-                   const FreeBodyDiagram& picture, const Scales& scale) {
+                   const ImpulseMomentumDiagram& d, const Scales& scale) {
   LabelBoard labels;
-  canvas.body(at, picture);
-  for (const Load& impulse : picture.loads) {
+  canvas.body(at, d);
+  for (const Load& impulse : d.impulses) {
     const std::string kind = analysis::load_kind_name(impulse.kind);
     if (impulse.force_W.norm() > kNegligible * scale.force) {
       // A push ends at its point; one at G (a particle's) is drawn as the push it is.
-      const bool at_G = (impulse.p_WoP_W - picture.p_WoG_W).norm() * at.scale < 1.0;
-      const Vec3 toward = at_G ? Vec3(impulse.p_WoP_W + impulse.force_W) : picture.p_WoG_W;
+      const bool at_G = (impulse.p_WoP_W - d.p_WoG_W).norm() * at.scale < 1.0;
+      const Vec3 toward = at_G ? Vec3(impulse.p_WoP_W + impulse.force_W) : d.p_WoG_W;
       canvas.force(at, impulse.p_WoP_W, toward, impulse.force_W,
                    arrow_length(impulse.force_W.norm(), scale.force), impulse.name, kind,
                    fmt::format("{} {:.4g} N·s", impulse.name, impulse.force_W.norm()), labels);
@@ -95,9 +81,8 @@ void draw_impulses(Canvas& canvas, const Placement& at, const View& view,
 
 std::string impulse_momentum_svg(const ImpulseMomentumDiagram& d, const std::string& title,
                                  std::span<const io::PartSummary> parts) {
-  const FreeBodyDiagram picture = picture_of(d);
-  const View view = make_view(picture);
-  const std::vector<Vec3> outline = body_points(picture, parts);
+  const View view = make_view(d);
+  const std::vector<Vec3> outline = body_points(d, d.impulses, parts);
   const Scales scale = largest_momenta(d);
   Canvas canvas(kImpulsePageWidth, page_height(d.impulses.size()));
   canvas.text(kLeftX, 24, fmt::format("{} — body {} at t = {:.6g} s", title, d.body, d.t),
@@ -133,14 +118,13 @@ std::string impulse_momentum_svg(const ImpulseMomentumDiagram& d, const std::str
     canvas.svg() += "</g>\n";
   };
   panel_group("before", kLeftX, [&] {
-    draw_momenta(canvas, place(view, outline, picture, kLeftX), view, picture, d.linear_before(),
+    draw_momenta(canvas, place(view, outline, d, kLeftX), view, d, d.linear_before(),
                  d.angular_before(), "before", "₁", scale);
   });
-  panel_group("impulses", kImpulsesX, [&] {
-    draw_impulses(canvas, place(view, outline, picture, kImpulsesX), view, picture, scale);
-  });
+  panel_group("impulses", kImpulsesX,
+              [&] { draw_impulses(canvas, place(view, outline, d, kImpulsesX), view, d, scale); });
   panel_group("after", kAfterX, [&] {
-    draw_momenta(canvas, place(view, outline, picture, kAfterX), view, picture, d.linear_after(),
+    draw_momenta(canvas, place(view, outline, d, kAfterX), view, d, d.linear_after(),
                  d.angular_after(), "after", "₂", scale);
   });
   canvas.keep_labels_within(4.0, kImpulsePageWidth - 4.0);
