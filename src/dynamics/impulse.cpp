@@ -43,11 +43,17 @@ void check_arguments(const Model& model, VecRef q, VecRef v,
   }
 }
 
-// The velocity coordinates no prescribed joint holds.
-std::vector<int> free_coordinates(const Model& model) {
+// Whether joint j keeps its speed through the impulses: prescribed, or held by a stop.
+bool keeps_speed(const model::Joint& j, std::span<const char> held_joints) {
+  return j.is_prescribed() ||
+         (!held_joints.empty() && held_joints[static_cast<std::size_t>(j.index)]);
+}
+
+// The velocity coordinates of the joints that do not keep their speed.
+std::vector<int> free_coordinates(const Model& model, std::span<const char> held_joints) {
   std::vector<int> free;
   for (const model::Joint& j : model.joints()) {
-    if (j.is_prescribed()) continue;
+    if (keeps_speed(j, held_joints)) continue;
     for (int k = 0; k < j.nv(); ++k) free.push_back(j.v_index + k);
   }
   return free;
@@ -75,8 +81,12 @@ namespace {
 // zero size for none).
 ImpulsiveMotion respond(const Model& model, VecRef q, VecRef v,
                         std::span<const PointImpulse> impulses, const VecX& generalized,
-                        std::span<const char> enabled_rows) {
+                        std::span<const char> enabled_rows, std::span<const char> held_joints) {
   check_arguments(model, q, v, impulses);
+  if (!held_joints.empty() && static_cast<int>(held_joints.size()) != model.num_joints()) {
+    throw InvalidArgument(fmt::format("impulsive_motion: {} held-joint flags for {} joints",
+                                      held_joints.size(), model.num_joints()));
+  }
   const int nv = model.nv();
   Data data(model);
   ImpulsiveMotion r;
@@ -91,7 +101,7 @@ ImpulsiveMotion respond(const Model& model, VecRef q, VecRef v,
 
   // The free coordinates' mass matrix and constraint rows.
   const MatX M = crba(model, data, q);
-  const std::vector<int> free = free_coordinates(model);
+  const std::vector<int> free = free_coordinates(model, held_joints);
   const int nf = static_cast<int>(free.size());
   MatX M_ff(nf, nf);
   VecX b_f(nf);
@@ -136,14 +146,14 @@ ImpulsiveMotion respond(const Model& model, VecRef q, VecRef v,
   for (int i = 0; i < nf; ++i) dv[free[i]] = dv_f[i];
   r.v_after = v + dv;
 
-  // The drives' impulses: what the generalized momentum balance leaves at the prescribed
-  // coordinates.
+  // The drives' and holding stops' impulses: what the generalized momentum balance leaves at the
+  // coordinates that keep their speed.
   VecX constraint_tau = VecX::Zero(nv);
   if (rows.count > 0) constraint_tau = rows.G.transpose() * r.constraint_impulses;
   r.drive_impulses = VecX::Zero(nv);
   const VecX balance = M * dv - applied - constraint_tau;
   for (const model::Joint& j : model.joints()) {
-    if (!j.is_prescribed()) continue;
+    if (!keeps_speed(j, held_joints)) continue;
     r.drive_impulses.segment(j.v_index, j.nv()) = balance.segment(j.v_index, j.nv());
   }
 
@@ -188,8 +198,9 @@ ImpulsiveMotion respond(const Model& model, VecRef q, VecRef v,
 
 ImpulsiveMotion impulsive_motion(const Model& model, VecRef q, VecRef v,
                                  std::span<const PointImpulse> impulses,
-                                 std::span<const char> enabled_rows) {
-  return respond(model, q, v, impulses, VecX(), enabled_rows);
+                                 std::span<const char> enabled_rows,
+                                 std::span<const char> held_joints) {
+  return respond(model, q, v, impulses, VecX(), enabled_rows, held_joints);
 }
 
 namespace {
@@ -237,7 +248,8 @@ const char* slip_course_name(SlipCourse course) {
 }
 
 Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointContact& contact,
-                          double restitution, std::span<const char> enabled_rows) {
+                          double restitution, std::span<const char> enabled_rows,
+                          std::span<const char> held_joints) {
   if (!(restitution >= 0.0 && restitution <= 1.0)) {
     throw InvalidArgument(fmt::format(
         "restitution_impact: the coefficient of restitution {} is outside [0, 1] (0: plastic, 1: "
@@ -272,7 +284,8 @@ Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointCon
   // w from a unit pair at rest: the separation speed it alone would make.
   const VecX at_rest = VecX::Zero(model.nv());
   const std::vector<PointImpulse> unit = impulse_pair(contact, contact.normal_W);
-  const ImpulsiveMotion response = impulsive_motion(model, q, at_rest, unit, enabled_rows);
+  const ImpulsiveMotion response =
+      impulsive_motion(model, q, at_rest, unit, enabled_rows, held_joints);
   const double w = normal_speed(model, data, q, response.v_after, contact);
   const double scale = std::max(1.0, w);
   if (!(w > 1e-12 * scale)) {
@@ -282,15 +295,17 @@ Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointCon
   }
   impact.normal_impulse = -(1.0 + restitution) * impact.approach_speed / w;
   impact.separation_speed = -restitution * impact.approach_speed;
-  impact.motion = impulsive_motion(
-      model, q, v, impulse_pair(contact, impact.normal_impulse * contact.normal_W), enabled_rows);
+  impact.motion =
+      impulsive_motion(model, q, v, impulse_pair(contact, impact.normal_impulse * contact.normal_W),
+                       enabled_rows, held_joints);
   return impact;
 }
 
 FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
                                    const PointContact& contact, double restitution,
                                    double static_friction, double kinetic_friction,
-                                   std::span<const char> enabled_rows) {
+                                   std::span<const char> enabled_rows,
+                                   std::span<const char> held_joints) {
   if (!(static_friction >= 0.0 && std::isfinite(static_friction) && kinetic_friction >= 0.0 &&
         kinetic_friction <= static_friction)) {
     throw InvalidArgument(fmt::format(
@@ -298,7 +313,8 @@ FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
         static_friction, kinetic_friction));
   }
   // The frictionless impact checks the arguments and the approach, and gives the normal response.
-  const Impact frictionless = restitution_impact(model, q, v, contact, restitution, enabled_rows);
+  const Impact frictionless =
+      restitution_impact(model, q, v, contact, restitution, enabled_rows, held_joints);
   const Vec3 n = contact.normal_W;
   Data data(model);
   FrictionalImpact impact;
@@ -318,8 +334,8 @@ FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
   Mat3 W;
   const VecX at_rest = VecX::Zero(model.nv());
   for (int k = 0; k < 3; ++k) {
-    const ImpulsiveMotion unit =
-        impulsive_motion(model, q, at_rest, impulse_pair(contact, Vec3::Unit(k)), enabled_rows);
+    const ImpulsiveMotion unit = impulsive_motion(
+        model, q, at_rest, impulse_pair(contact, Vec3::Unit(k)), enabled_rows, held_joints);
     W.col(k) = relative_velocity(model, data, q, unit.v_after, contact);
   }
   // The course in the contact's basis [t₁ t₂ n].
@@ -336,7 +352,8 @@ FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
   impact.impulse_W = P;
   impact.course = course.course;
   impact.sticking = course.course == SlipCourse::sticks || course.course == SlipCourse::stops;
-  impact.motion = impulsive_motion(model, q, v, impulse_pair(contact, P), enabled_rows);
+  impact.motion =
+      impulsive_motion(model, q, v, impulse_pair(contact, P), enabled_rows, held_joints);
   const Vec3 u_after = relative_velocity(model, data, q, impact.motion.v_after, contact);
   impact.separation_speed = n.dot(u_after);
   impact.slip_after_W = u_after - n * impact.separation_speed;
@@ -351,7 +368,8 @@ FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
   return impact;
 }
 
-StopImpact stop_impact(const Model& model, VecRef q, VecRef v, int coordinate, double restitution) {
+StopImpact stop_impact(const Model& model, VecRef q, VecRef v, int coordinate, double restitution,
+                       std::span<const char> enabled_rows, std::span<const char> held_joints) {
   if (coordinate < 0 || coordinate >= model.nv()) {
     throw InvalidArgument(fmt::format("stop_impact: no velocity coordinate {}; the model has {}",
                                       coordinate, model.nv()));
@@ -361,9 +379,16 @@ StopImpact stop_impact(const Model& model, VecRef q, VecRef v, int coordinate, d
         "stop_impact: the coefficient of restitution {} is outside [0, 1] (0: plastic, 1: elastic)",
         restitution));
   }
-  if (model.joints()[static_cast<std::size_t>(model.joint_of_v(coordinate))].is_prescribed()) {
+  const model::Joint& joint =
+      model.joints()[static_cast<std::size_t>(model.joint_of_v(coordinate))];
+  if (joint.is_prescribed()) {
     throw InvalidArgument(
         fmt::format("stop_impact: {} is prescribed: its motion is its signal's, no stop strikes it",
+                    model.v_name(coordinate)));
+  }
+  if (keeps_speed(joint, held_joints)) {
+    throw InvalidArgument(
+        fmt::format("stop_impact: {} is held by a stop already: no other stop strikes it",
                     model.v_name(coordinate)));
   }
   // The rate a unit impulse on the coordinate gives it, from rest: (M⁻¹)_ii over the free
@@ -371,7 +396,8 @@ StopImpact stop_impact(const Model& model, VecRef q, VecRef v, int coordinate, d
   const VecX at_rest = VecX::Zero(model.nv());
   VecX unit = VecX::Zero(model.nv());
   unit[coordinate] = 1.0;
-  const double w = respond(model, q, at_rest, {}, unit, {}).v_after[coordinate];
+  const double w =
+      respond(model, q, at_rest, {}, unit, enabled_rows, held_joints).v_after[coordinate];
   if (!(w > 0.0)) {
     throw InvalidArgument(fmt::format(
         "stop_impact: the mechanism cannot move {} (its constraints hold it): no stop strikes it",
@@ -383,7 +409,7 @@ StopImpact stop_impact(const Model& model, VecRef q, VecRef v, int coordinate, d
   impact.impulse = (impact.rate_after - impact.rate_before) / w;
   VecX generalized = VecX::Zero(model.nv());
   generalized[coordinate] = impact.impulse;
-  impact.motion = respond(model, q, v, {}, generalized, {});
+  impact.motion = respond(model, q, v, {}, generalized, enabled_rows, held_joints);
   impact.motion.v_after[coordinate] = impact.rate_after;  // exact, not to round-off
   return impact;
 }

@@ -88,12 +88,6 @@ Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec>
                     "symplectic_euler",
                     options_.integrator));
   }
-  if (model.has_joint_limits() && model.has_constraints()) {
-    throw InvalidArgument(
-        "the model has joint limits and constraints (or contacts): stops on a model with "
-        "constraints are not supported yet (docs/contacts.md); remove the limits or the "
-        "constraints");
-  }
   if (model.has_joint_limits() &&
       model::integrator_info(options_.integrator).family == model::IntegratorFamily::rigid_body) {
     throw InvalidArgument(fmt::format(

@@ -91,6 +91,7 @@ Unilaterals::Unilaterals(const model::Model& model, double step)
   }
   q_ = VecX::Zero(model.nq());
   v_ = VecX::Zero(model.nv());
+  held_joints_.assign(static_cast<std::size_t>(model.num_joints()), 0);
 }
 
 const model::Contact& Unilaterals::contact_of(const Entry& e) const {
@@ -323,30 +324,65 @@ double Unilaterals::contact_impact(system::MultibodySystem& system, const Entry&
   touch.p_BoPb_B = in_body(touch.body_b);
   touch.body_a = c.other.body_index;
   touch.p_AoPa_A = touch.body_a == 0 ? point : in_body(touch.body_a);
-  // The contacts closed now take their impulses as constraints; one that would pull (a negative
-  // impulse) lets go, and the impact is solved again without it.
-  const system::ConstraintSolver& solver = *system.constraints();
+  // The contacts closed now and the stops holding take their impulses as constraints; one that
+  // would pull lets go, and the impact is solved again without it.
   for (;;) {
     // Newton's restitution and Coulomb's law at impact (none without friction).
-    const dynamics::FrictionalImpact impact =
-        dynamics::frictional_impact(model_, at.q.head(nq), at.v.head(nv), touch, e.restitution,
-                                    c.static_friction, c.kinetic_friction, solver.rows().enabled);
-    const Entry* pulling = nullptr;
-    double least = 0.0;
-    for (const Entry& other : entries_) {
-      if (!other.contact || hold_[slot(other)] == Hold::open) continue;
-      const double P = impact.motion.constraint_impulses[solver.rows().first_row[other.index]];
-      if (P < least) {
-        least = P;
-        pulling = &other;
-      }
-    }
-    if (pulling == nullptr) {
+    const dynamics::FrictionalImpact impact = dynamics::frictional_impact(
+        model_, at.q.head(nq), at.v.head(nv), touch, e.restitution, c.static_friction,
+        c.kinetic_friction, enabled_rows(system), held_joints(system));
+    if (!let_go_one_that_pulls(system, impact.motion, at)) {
       at.v.head(nv) = impact.motion.v_after;
       return impact.normal_impulse;
     }
-    open(system, *pulling, at);
   }
+}
+
+double Unilaterals::stop_strike(system::MultibodySystem& system, const Entry& e,
+                                integrate::State& at) {
+  const int nq = model_.nq(), nv = model_.nv();
+  for (;;) {  // as contact_impact: what holds takes its impulse, unless it would pull
+    const dynamics::StopImpact impact =
+        dynamics::stop_impact(model_, at.q.head(nq), at.v.head(nv), e.v, e.restitution,
+                              enabled_rows(system), held_joints(system));
+    if (!let_go_one_that_pulls(system, impact.motion, at)) {
+      at.v.head(nv) = impact.motion.v_after;
+      return impact.impulse;
+    }
+  }
+}
+
+std::span<const char> Unilaterals::enabled_rows(const system::MultibodySystem& system) const {
+  if (system.constraints() == nullptr) return {};
+  return system.constraints()->rows().enabled;
+}
+
+std::span<const char> Unilaterals::held_joints(const system::MultibodySystem& system) {
+  for (const model::Joint& j : model_.joints())
+    held_joints_[static_cast<std::size_t>(j.index)] = system.held(j.index) ? 1 : 0;
+  return held_joints_;
+}
+
+bool Unilaterals::let_go_one_that_pulls(system::MultibodySystem& system,
+                                        const dynamics::ImpulsiveMotion& motion,
+                                        const integrate::State& at) {
+  // The most negative impulse: a contact's normal impulse, a holding stop's along its outward
+  // direction (N·s or N·m·s; round-off of a zero impulse lets nothing go).
+  const Entry* pulling = nullptr;
+  double least = 0.0;
+  for (const Entry& e : entries_) {
+    if (hold_[slot(e)] == Hold::open) continue;
+    const double P =
+        e.contact ? motion.constraint_impulses[system.constraints()->rows().first_row[e.index]]
+                  : e.outward * motion.drive_impulses[e.v];
+    if (P < least) {
+      least = P;
+      pulling = &e;
+    }
+  }
+  if (pulling == nullptr) return false;
+  open(system, *pulling, at);
+  return true;
 }
 
 void Unilaterals::strike(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
@@ -363,10 +399,7 @@ void Unilaterals::strike(system::MultibodySystem& system, integrate::SecondOrder
     if (e.contact) {
       event.impulse = contact_impact(system, e, at);
     } else {
-      const dynamics::StopImpact impact =
-          dynamics::stop_impact(model_, at.q.head(nq), at.v.head(nv), e.v, e.restitution);
-      at.v.head(nv) = impact.motion.v_after;
-      event.impulse = impact.impulse;
+      event.impulse = stop_strike(system, e, at);
     }
   }
   // Carried away, or held: the rebound's flight under the acceleration into it; one found back
@@ -398,7 +431,6 @@ void Unilaterals::strike(system::MultibodySystem& system, integrate::SecondOrder
 std::vector<StopEvent> hold_what_touches(system::MultibodySystem& system, integrate::State& state) {
   const model::Model& model = system.model();
   if (!model.has_joint_limits() && !model.has_contacts()) return {};
-  if (model.has_joint_limits() && model.has_constraints()) return {};
   Unilaterals unilaterals(model, 1e-3);
   return unilaterals.start(system, system, state);
 }

@@ -37,28 +37,20 @@ double max_abs_over(const VecX& x, std::span<const char> mask) {
 ConstraintSolver::ConstraintSolver(const model::Model& model)
     : model_(model),
       rows_(model),
+      held_(dynamics::prescribed_joint_mask(model)),
       lambda_(VecX::Zero(rows_.count)),
       rhs_(VecX::Zero(rows_.count)),
       delta_(VecX::Zero(model.nv())),
       q_saved_(VecX::Zero(model.nq())),
       lambda_active_(VecX::Zero(rows_.count)),
       cholesky_(std::make_unique<detail::OrderedCholesky>(rows_.count)) {
-  for (const model::Joint& j : model.joints()) {
-    if (j.is_prescribed()) continue;
-    for (int k = 0; k < j.nv(); ++k) free_.push_back(j.v_index + k);
-  }
-  const int nf = static_cast<int>(free_.size());
+  gather_free_coordinates();
   const int m = rows_.count;
-  M_ff_ = MatX::Zero(nf, nf);
-  llt_.compute(MatX::Identity(nf, nf));  // sizes its storage (and its info) once
-  G_f_ = MatX::Zero(m, nf);
-  W_ = MatX::Zero(nf, m);
   A_ = MatX::Zero(m, m);
   Y_ = MatX::Zero(model.nv(), m);
   Dinv_LGt_ = MatX::Zero(model.nv(), m);
   du_ = VecX::Zero(model.nv());
   active_.assign(m, 0);
-  dv_ = VecX::Zero(nf);
   zero_ = VecX::Zero(model.nv());
   if (m > 0) iterate_data_ = std::make_unique<dynamics::Data>(model);
   all_rows_.assign(m, 1);
@@ -73,6 +65,33 @@ ConstraintSolver::ConstraintSolver(const model::Model& model)
 }
 
 ConstraintSolver::~ConstraintSolver() = default;
+
+void ConstraintSolver::gather_free_coordinates() {
+  free_.clear();
+  holding_ = false;
+  for (const model::Joint& j : model_.joints()) {
+    if (held_[static_cast<std::size_t>(j.index)]) {
+      holding_ = true;
+      continue;
+    }
+    for (int k = 0; k < j.nv(); ++k) free_.push_back(j.v_index + k);
+  }
+  const int nf = static_cast<int>(free_.size());
+  const int m = rows_.count;
+  M_ff_ = MatX::Zero(nf, nf);
+  llt_.compute(MatX::Identity(nf, nf));  // sizes its storage (and its info)
+  G_f_ = MatX::Zero(m, nf);
+  W_ = MatX::Zero(nf, m);
+  dv_ = VecX::Zero(nf);
+}
+
+void ConstraintSolver::hold_joints(dynamics::Data& data, VecRef q, std::span<const char> held) {
+  assert(static_cast<int>(held.size()) == model_.num_joints());
+  if (std::equal(held.begin(), held.end(), held_.begin())) return;
+  held_.assign(held.begin(), held.end());
+  gather_free_coordinates();
+  if (rows_.count > 0) find_redundant_rows(data, q);
+}
 
 void ConstraintSolver::gather_free_columns() {
   const int nf = static_cast<int>(free_.size());
@@ -221,10 +240,9 @@ void ConstraintSolver::factor_rows_articulated(dynamics::Data& data, std::span<c
   Y_ = rows_.G.transpose();
   for (int i = 0; i < rows_.count; ++i)
     if (!mask[i]) Y_.col(i).setZero();
-  // Held where the forward dynamics was hybrid (the model's own prescribed joints).
-  const std::span<const char> prescribed = model_.has_prescribed_joints()
-                                               ? std::span<const char>(data.prescribed_mask)
-                                               : std::span<const char>();
+  // Held where the forward dynamics was hybrid (prescribed joints, and those stops hold).
+  const std::span<const char> prescribed =
+      holding_ ? std::span<const char>(held_) : std::span<const char>();
   dynamics::articulated_solve(model_, data, prescribed, Y_);
   // A = G Y, symmetric: its lower triangle (what the factorization reads), zero outside the
   // mask, and nothing to form for a row that exerts no force here (its column of Y is zero: a
@@ -272,8 +290,8 @@ void ConstraintSolver::factor_metric(dynamics::Data& data, VecRef q, VecRef v) {
   if (method_ == AccelerationMethod::dense) {
     dynamics::forward_kinematics(model_, data, q);
     factor_mass_matrix(data, q);
-  } else if (model_.has_prescribed_joints()) {
-    dynamics::hybrid_dynamics(model_, data, q, v, zero_, zero_);
+  } else if (holding_) {
+    dynamics::hybrid_dynamics(model_, data, held_, q, v, zero_, zero_);
   } else {
     dynamics::aba(model_, data, q, v, zero_);
   }

@@ -53,6 +53,7 @@ MultibodySystem::MultibodySystem(const model::Model& model)
       q_(model.initial_q()),
       v_(model.initial_v()),
       tau_elements_(VecX::Zero(model.nv())),
+      constraint_tau_(VecX::Zero(model.nv())),
       vdot_prescribed_(VecX::Zero(model.nv())),
       f_ext_(model.num_bodies(), Vec6::Zero()),
       samples_(model.signals().size(), model::SignalSample{0.0, 0.0, 0.0}),
@@ -202,9 +203,15 @@ const VecX& MultibodySystem::solve(double t, const VecX& q, const VecX& v, model
     if (!constraints_->correct_accelerations(data_, q_, data_.vdot)) {
       accelerations_at_singular_configuration(t, limit);
     }
-    constraints_->add_forces(data_, f_ext_, data_.tau);
-    // The drives of prescribed joints also carry the constraint forces.
-    if (model_.has_prescribed_joints()) dynamics::rnea(model_, data_, q_, v_, data_.vdot, f_ext_);
+    constraint_tau_.setZero();
+    constraints_->add_forces(data_, f_ext_, constraint_tau_);
+    // The drives of prescribed joints, and the stops that hold joints, also carry the constraint
+    // forces: the whole generalized force the motion needs (couplers' included).
+    if (model_.has_prescribed_joints() || holding_ > 0) {
+      dynamics::rnea(model_, data_, q_, v_, data_.vdot, f_ext_);
+    } else {
+      data_.tau += constraint_tau_;
+    }
   }
   return data_.vdot;
 }
@@ -412,13 +419,17 @@ void MultibodySystem::hold(int j, double value) {
   held_[j] = 1;
   held_value_[j] = value;
   hybrid_mask_[j] = 1;
-  (void)joint;
+  if (constraints_) {
+    q_[joint.q_index] = value;
+    constraints_->hold_joints(data_, q_, hybrid_mask_);
+  }
 }
 
 void MultibodySystem::release(int j) {
   if (held_[j]) --holding_;
   held_[j] = 0;
   hybrid_mask_[j] = model_.joints()[static_cast<std::size_t>(j)].is_prescribed() ? 1 : 0;
+  if (constraints_) constraints_->hold_joints(data_, q_, hybrid_mask_);
 }
 
 void MultibodySystem::hold_contact(int k, VecRef q, ContactHold how, const Vec3& slip_W) {
@@ -464,7 +475,7 @@ Vec3 MultibodySystem::contact_friction(int k) const {
 
 double MultibodySystem::stop_force(int j) const {
   const int v = model_.joints()[static_cast<std::size_t>(j)].v_index;
-  return data_.tau[v] - tau_elements_[v];
+  return data_.tau[v] - tau_elements_[v] - constraint_tau_[v];
 }
 
 void MultibodySystem::drive_signal(int s) {

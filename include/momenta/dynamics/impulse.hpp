@@ -58,10 +58,13 @@ struct ImpulsiveMotion {
 /// body index out of range, a non-finite impulse or state, or wrong sizes; NumericalError where
 /// the free coordinates' mass matrix is singular. `enabled_rows` (one flag per constraint row,
 /// ConstraintRows::enabled) says which rows hold; empty, the model's own (its contacts open):
-/// a run passes the contacts it has closed, which then take their impulses too.
+/// a run passes the contacts it has closed, which then take their impulses too. `held_joints`
+/// (one flag per joint; empty, none) marks the joints a stop holds: they keep their speed like a
+/// prescribed joint's, and the stop's impulse is their entry of drive_impulses.
 ImpulsiveMotion impulsive_motion(const Model& model, VecRef q, VecRef v,
                                  std::span<const PointImpulse> impulses,
-                                 std::span<const char> enabled_rows = {});
+                                 std::span<const char> enabled_rows = {},
+                                 std::span<const char> held_joints = {});
 
 /// Two bodies meeting at a point: A's point p_AoPa_A and B's point p_BoPb_B, which touch, and the
 /// contact normal n (unit, in W) along which B is pushed away from A. A may be the world (0).
@@ -89,9 +92,10 @@ struct Impact {
 /// so P = −(1 + e) v_n⁻ / w. Throws InvalidArgument where the points do not approach (v_n⁻ ≥ 0:
 /// no impact), e is outside [0, 1], the normal is not a unit vector, both points are on one body,
 /// or the mechanism cannot move them apart (w = 0: a contact the constraints hold still).
-/// `enabled_rows` as impulsive_motion's.
+/// `enabled_rows` and `held_joints` as impulsive_motion's.
 Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointContact& contact,
-                          double restitution, std::span<const char> enabled_rows = {});
+                          double restitution, std::span<const char> enabled_rows = {},
+                          std::span<const char> held_joints = {});
 
 /// What the slip at a contact did within an impact with friction.
 enum class SlipCourse {
@@ -134,12 +138,14 @@ struct FrictionalImpact {
 };
 
 /// The impact at `contact` with restitution e, static and kinetic friction μs ≥ μk ≥ 0 at
-/// (q, v); arguments checked as restitution_impact's. `enabled_rows` as impulsive_motion's. With
-/// μs = 0 it is restitution_impact's (its slips left zero, not computed, its course `slides`).
+/// (q, v); arguments checked as restitution_impact's. `enabled_rows` and `held_joints` as
+/// impulsive_motion's. With μs = 0 it is restitution_impact's (its slips left zero, not computed,
+/// its course `slides`).
 FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
                                    const PointContact& contact, double restitution,
                                    double static_friction, double kinetic_friction,
-                                   std::span<const char> enabled_rows = {});
+                                   std::span<const char> enabled_rows = {},
+                                   std::span<const char> held_joints = {});
 
 /// A stop striking a joint's coordinate (a revolute or prismatic joint at its limit,
 /// model::JointLimits): the generalized impulse P on coordinate i alone, M Δv = e_i P (+ the
@@ -156,7 +162,10 @@ struct StopImpact {
 
 /// The stop's impact on velocity coordinate `coordinate` with restitution e ∈ [0, 1] at (q, v).
 /// Whatever the sign of v_i⁻ (the caller knows which stop it meets). Throws InvalidArgument for a
-/// coordinate out of range or prescribed, e outside [0, 1], or one the constraints hold still.
-StopImpact stop_impact(const Model& model, VecRef q, VecRef v, int coordinate, double restitution);
+/// coordinate out of range, prescribed or held, e outside [0, 1], or one the constraints hold
+/// still. `enabled_rows` and `held_joints` as impulsive_motion's.
+StopImpact stop_impact(const Model& model, VecRef q, VecRef v, int coordinate, double restitution,
+                       std::span<const char> enabled_rows = {},
+                       std::span<const char> held_joints = {});
 
 }  // namespace momenta::dynamics

@@ -50,10 +50,12 @@
 // contacts that stick through another's impact.
 
 #include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "momenta/dynamics/data.hpp"
+#include "momenta/dynamics/impulse.hpp"
 #include "momenta/integrate/integrator.hpp"
 #include "momenta/integrate/step_interpolant.hpp"
 #include "momenta/model/model.hpp"
@@ -186,6 +188,17 @@ class Unilaterals {
   // A contact's impact: the state just after, its normal impulse returned; closed contacts that
   // would pull are opened.
   double contact_impact(system::MultibodySystem& system, const Entry& e, integrate::State& at);
+  // A stop's impact: the state just after, its impulse returned; as contact_impact, the closed
+  // contacts and the holding stops take their impulses, and one that would pull lets go.
+  double stop_strike(system::MultibodySystem& system, const Entry& e, integrate::State& at);
+  // The rows the system's closed contacts have on (empty without constraints), and the joints
+  // its stops hold (per joint), for the impulse solves.
+  std::span<const char> enabled_rows(const system::MultibodySystem& system) const;
+  std::span<const char> held_joints(const system::MultibodySystem& system);
+  // After an impact's impulses `motion`: lets go the closed contact or holding stop whose impulse
+  // pulls most, if one does, and says whether one did.
+  bool let_go_one_that_pulls(system::MultibodySystem& system,
+                             const dynamics::ImpulsiveMotion& motion, const integrate::State& at);
   // Closes e at `at`: a stop holds; a contact holds its body on the plane, sliding where its
   // contact point slips (faster than kSlipAtRest) or friction cannot hold it, sticking otherwise.
   void close(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
@@ -226,7 +239,8 @@ class Unilaterals {
   integrate::StepInterpolant interpolant_;
   integrate::State trial_;
   VecX vdot_, q_, v_;
-  dynamics::Data data_;  // a contact's kinematics
+  std::vector<char> held_joints_;  // see held_joints()
+  dynamics::Data data_;            // a contact's kinematics
 };
 
 }  // namespace momenta::simulate

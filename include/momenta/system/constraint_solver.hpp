@@ -105,6 +105,16 @@ class ConstraintSolver {
   /// the redundant rows there). Overwrites data. Allocates nothing after the first call; forms M
   /// (an event's cost, not a step's).
   void enable_rows(dynamics::Data& data, VecRef q, int first, int count, bool on);
+  /// Holds still the joints marked in `held` (num_joints() entries, 1 where the model prescribes
+  /// the joint or a stop holds it: MultibodySystem's hybrid mask) — their coordinates are no
+  /// longer free: the accelerations (the forward dynamics is then hybrid_dynamics with this
+  /// mask), the projection and the consistent state leave them be — and takes the rank of the
+  /// rows at configuration q as the reference again (a hold that locks a loop leaves its rows
+  /// dependent: redundant). Overwrites data. Allocates (an event's cost, not a step's).
+  void hold_joints(dynamics::Data& data, VecRef q, std::span<const char> held);
+  /// The mask the solver holds (the model's prescribed joints until hold_joints).
+  std::span<const char> held_joints() const { return held_; }
+
   /// Sets the multiplier of a row that is off: a force it reports without exerting it — a
   /// sliding contact's kinetic friction along its tangent rows, which MultibodySystem applies as
   /// a load — so that whoever reads multipliers() reads the friction. add_forces() adds nothing
@@ -122,16 +132,16 @@ class ConstraintSolver {
   void set_acceleration_method(AccelerationMethod method) { method_ = method; }
 
   /// Whether correct_accelerations finishes the forward dynamics itself: the articulated method
-  /// on a model without prescribed joints, which needs only aba_articulate(q, v, …) before it
-  /// (the constraint forces enter aba's one pass 3, dynamics/articulated_solve.hpp's
+  /// with no joint prescribed or held (hold_joints), which needs only aba_articulate(q, v, …)
+  /// before it (the constraint forces enter aba's one pass 3, dynamics/articulated_solve.hpp's
   /// articulated_row_factors). Otherwise the whole aba, or hybrid_dynamics, comes first.
   bool finishes_forward_dynamics() const {
-    return method_ == AccelerationMethod::articulated && !model_.has_prescribed_joints();
+    return method_ == AccelerationMethod::articulated && !holding_;
   }
 
   /// Sets vdot (size nv) to the constrained accelerations at (t, q, v), stores λ and returns
-  /// true. `data` holds what aba(q, v, …) — or, where the model has prescribed joints,
-  /// hybrid_dynamics(q, v, …) with data's prescribed_mask — left in it (kinematics, the bodies'
+  /// true. `data` holds what aba(q, v, …) — or, where joints are prescribed or held,
+  /// hybrid_dynamics(q, v, …) with held_joints() — left in it (kinematics, the bodies'
   /// accelerations and the articulated-body factors), and vdot is those accelerations (data.vdot,
   /// or a copy), corrected here with prescribed coordinates kept; except where
   /// finishes_forward_dynamics(), when aba_articulate's state is enough (a whole aba's does too),
@@ -179,6 +189,8 @@ class ConstraintSolver {
                                    std::span<const char> q_given, std::span<const char> v_given);
 
  private:
+  // free_ from held_ (and holding_), and the workspaces sized to them.
+  void gather_free_coordinates();
   // Mass matrix of the free coordinates at data's configuration, factorized; G_f too.
   void factor_mass_matrix(dynamics::Data& data, VecRef q);
   void gather_free_columns();
@@ -209,7 +221,9 @@ class ConstraintSolver {
 
   const model::Model& model_;
   dynamics::ConstraintRows rows_;
-  std::vector<int> free_;  // velocity indices not prescribed
+  std::vector<int> free_;   // velocity indices not held (see hold_joints)
+  std::vector<char> held_;  // per joint: prescribed, or held by a stop
+  bool holding_ = false;    // some joint is held
   std::vector<char> all_rows_, position_rows_;
   MatX M_ff_, G_f_, W_, A_;  // W = L⁻¹ G_fᵀ with M_ff = L Lᵀ; A = Wᵀ W
   MatX Y_;                   // nv × rows: M⁻¹ Gᵀ (articulated; 0 on prescribed coordinates),

@@ -148,7 +148,9 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   /// Holds joint j's coordinate (a revolute or prismatic joint's) at `value` with zero rate and
   /// acceleration, as a stop holds it (simulate/unilaterals.hpp): evaluations then treat it as
   /// prescribed (hybrid dynamics), and stop_force(j) is the force the hold needs. The caller sets
-  /// the state's coordinate and rate to match. No allocation.
+  /// the state's coordinate and rate to match. No allocation without constraints; with them the
+  /// constraint solver frees the joint's coordinate no more (ConstraintSolver::hold_joints: an
+  /// event's cost), and the stop's force carries the constraints' share.
   void hold(int j, double value);
   /// Lets joint j move by forces again.
   void release(int j);
@@ -220,6 +222,7 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   dynamics::Data data_;
   VecX q_, v_;            // the state with prescribed coordinates applied
   VecX tau_elements_;     // force elements on the joints
+  VecX constraint_tau_;   // couplers' forces on the joints (the last evaluation's)
   VecX vdot_prescribed_;  // signals' accelerations at the prescribed coordinates
   std::vector<Vec6> f_ext_;
   std::vector<model::SignalSample> samples_;  // every signal at the current instant

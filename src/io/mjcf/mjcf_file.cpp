@@ -503,8 +503,7 @@ std::vector<std::string> MjcfReader::body_joints(const XMLElement* body, const s
 // A hinge's or slide's `range` where `limited` (or `auto` with <compiler autolimits>, MuJoCo's
 // default) makes it one: stops on momenta's coordinate (qpos − ref), plastic (MuJoCo's limits are
 // soft, their default solref critically damped: no rebound). Not enforced, with a note, where the
-// file's start (qpos = ref) is outside the range, on a ball joint (a cone on its swing), and on a
-// model whose <equality> constrains it (stops on a model with constraints are not supported yet).
+// file's start (qpos = ref) is outside the range, and on a ball joint (a cone on its swing).
 std::optional<model::JointLimits> MjcfReader::joint_limits(const XMLElement* xml,
                                                            const MjcfElement& e,
                                                            const std::string& owner,
@@ -532,13 +531,6 @@ std::optional<model::JointLimits> MjcfReader::joint_limits(const XMLElement* xml
     note(xml, fmt::format("the limits of {} are not enforced: its start (qpos = ref = {:.6g}) is "
                           "outside its range [{:.6g}, {:.6g}]",
                           owner, ref / unit, range[0], range[1]));
-    return std::nullopt;
-  }
-  if (constrained) {
-    note(xml, fmt::format("the limits of {} are not enforced: the model's <equality> elements are "
-                          "constraints, and stops on a model with constraints are not supported "
-                          "yet (docs/contacts.md)",
-                          owner));
     return std::nullopt;
   }
   return limits;
@@ -609,11 +601,6 @@ ModelFile MjcfReader::read() {
   for (const XMLElement* c = root->FirstChildElement("asset"); c != nullptr;
        c = c->NextSiblingElement("asset")) {
     read_assets(c);
-  }
-  // Stops are not put on a constrained model (simulate/unilaterals.hpp does not support one yet).
-  for (const XMLElement* c = root->FirstChildElement("equality"); c != nullptr;
-       c = c->NextSiblingElement("equality")) {
-    if (c->FirstChildElement() != nullptr) constrained = true;
   }
   bool any_body = false;
   for (const XMLElement* world = root->FirstChildElement("worldbody"); world != nullptr;

@@ -169,7 +169,6 @@ class MjcfReader {
   std::string euler_sequence = "xyz";
   std::string inertia_from_geom = "auto";
   bool auto_limits = true;          // <compiler autolimits>: a range makes a joint limited
-  bool constrained = false;         // the file has <equality> constraints (no stops then)
   std::filesystem::path mesh_dir;   // the file's folder, then <compiler meshdir> or assetdir
   bool strip_path = false;          // <compiler strippath>
   bool exact_mesh_inertia = false;  // <compiler exactmeshinertia>

@@ -173,7 +173,7 @@ void UrdfReader::read_joint(const XMLElement* e) {
                         "prismatic, fixed, floating and planar",
                         name, type, did_you_mean(type, kJointTypes)));
   }
-  JointEntry entry{e, model::Joint{}, {}, 1.0, 0.0, nullptr, nullptr};
+  JointEntry entry{e, model::Joint{}, {}, 1.0, 0.0, nullptr};
   model::Joint& joint = entry.joint;
   joint.name = name;
   joint.parent = link_reference(e, "parent");
@@ -275,28 +275,8 @@ void UrdfReader::read_limit(const XMLElement* limit, std::string_view type, Join
   const auto [low, high] = bounds_as_read(lower, upper);
   if (std::isfinite(low) || std::isfinite(high)) {
     entry.joint.limits = model::JointLimits{low, high, 0.0};
-    entry.limit_element = limit;
   }
   if (!unenforced.empty()) note(limit, fmt::format("{}: {}", owner, unenforced));
-}
-
-// The joints' stops as read, unless a mimic joint makes the model constrained (stops on such a
-// model are not supported yet).
-void UrdfReader::enforce_limits() {
-  const bool constrained = std::any_of(joints_.begin(), joints_.end(),
-                                       [](const auto& j) { return !j.second.mimic.empty(); });
-  for (const std::string& j : joint_order_) {
-    JointEntry& entry = joints_.at(j);
-    if (!entry.joint.limits) continue;
-    if (constrained) {
-      note(entry.limit_element,
-           fmt::format("the limits of joint '{}' are not enforced: the robot's mimic joints are "
-                       "constraints, and stops on a model with constraints are not supported yet "
-                       "(docs/contacts.md)",
-                       j));
-      entry.joint.limits.reset();
-    }
-  }
 }
 
 namespace {
@@ -354,8 +334,6 @@ ModelFile UrdfReader::read() {
   }
   const std::string& root = roots.front();
   const bool root_is_world = root == model::kWorldBodyName;
-
-  enforce_limits();
 
   // The model, parents before children.
   model::ModelBuilder builder;

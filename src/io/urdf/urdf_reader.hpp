@@ -52,7 +52,6 @@ class UrdfReader {
     std::string mimic;  // the mimicked joint's name, or empty
     double multiplier = 1.0, offset = 0.0;
     const XMLElement* mimic_element = nullptr;
-    const XMLElement* limit_element = nullptr;  // where joint.limits was read
   };
 
   [[noreturn]] void fail(const XMLElement* at, const std::string& message) const;
@@ -67,7 +66,6 @@ class UrdfReader {
   void read_link(const XMLElement* e);
   void read_joint(const XMLElement* e);
   void read_limit(const XMLElement* limit, std::string_view type, JointEntry& entry);
-  void enforce_limits();
   void note_ignored_children(const XMLElement* e, const std::string& owner,
                              std::initializer_list<std::string_view> used);
   model::Model build(const model::ModelBuilder& builder, const std::vector<ItemLocation>& items);

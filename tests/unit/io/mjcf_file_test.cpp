@@ -255,8 +255,8 @@ TEST(MjcfFile, EqualityConstraintsCloseLoopsWhereTheFileDrawsThem) {
 // A hinge's or slide's range, where `limited` (or `auto` with <compiler autolimits>, MuJoCo's
 // default) makes it one, is a pair of plastic stops on momenta's coordinate qpos − ref, in the
 // compiler's angle unit; a bound a megametre away is none. Not enforced, each said at its line:
-// a ball's range (its cone), a range that leaves out the start (qpos = ref), and every range of a
-// model with <equality> constraints. An empty range is an error at its line.
+// a ball's range (its cone) and a range that leaves out the start (qpos = ref); a model with
+// <equality> constraints keeps its stops. An empty range is an error at its line.
 TEST(MjcfFile, RangesAreStops) {
   const auto model = [](const std::string& compiler, const std::string& joints,
                         const std::string& after = "") {
@@ -310,18 +310,17 @@ TEST(MjcfFile, RangesAreStops) {
   EXPECT_FALSE(joint_of(manual, "a").limits.has_value());
   ASSERT_TRUE(joint_of(manual, "b").limits.has_value());
   EXPECT_EQ(joint_of(manual, "b").limits->upper, std::numbers::pi / 180.0);
-  // A constrained model: its ranges are listed as not enforced.
+  // A constrained model keeps its stops.
   const ModelFile constrained =
       parse_mjcf(model("angle=\"radian\"",
                        "<joint name=\"a\" range=\"-1 1\"/>\n<joint name=\"b\" range=\"-1 1\"/>\n",
                        "<equality><joint joint1=\"a\" joint2=\"b\"/></equality>\n"),
                  "m.xml");
-  EXPECT_FALSE(constrained.model.has_joint_limits());
-  ASSERT_GE(constrained.notes.size(), 2u);
-  EXPECT_NE(constrained.notes[0].find("m.xml:3: the limits of joint 'a' are not enforced: the "
-                                      "model's <equality> elements are constraints"),
-            std::string::npos)
-      << constrained.notes[0];
+  EXPECT_TRUE(constrained.model.has_constraints());
+  ASSERT_TRUE(joint_of(constrained, "a").limits.has_value());
+  EXPECT_EQ(joint_of(constrained, "a").limits->upper, 1.0);
+  for (const std::string& n : constrained.notes)
+    EXPECT_EQ(n.find("limits"), std::string::npos) << n;
   // An empty range, at its line.
   try {
     parse_mjcf(model("", "<joint name=\"a\"/>\n<joint name=\"b\" range=\"1 1\"/>\n"), "m.xml");

@@ -218,8 +218,8 @@ TEST(UrdfFile, WorldRootFloatingBaseAndMimic) {
 
 // A <limit> is a pair of plastic stops on a revolute or prismatic joint — a bound a megametre
 // away is none — except where it would lock the joint (lower = upper, URDF's default), leaves out
-// the robot's start (every q = 0) or sits on a robot whose mimic joints are constraints: those are
-// listed as not enforced, with their line. A continuous joint's <limit> has no stops.
+// the robot's start (every q = 0): those are listed as not enforced, with their line. A robot
+// whose mimic joints are constraints keeps its stops. A continuous joint's <limit> has no stops.
 TEST(UrdfFile, LimitsAreStops) {
   const auto robot = [](const std::string& joints, int links = 5) {
     std::string text = "<robot name=\"r\">\n<link name=\"base\"/>\n";
@@ -271,7 +271,7 @@ TEST(UrdfFile, LimitsAreStops) {
   }
   EXPECT_EQ(f.notes.size(), 4u) << notes;  // and the root's weld to the world
 
-  // A mimic joint makes the robot constrained: its stops are not enforced, each said.
+  // A mimic joint makes the robot constrained; its stops are stops all the same.
   const ModelFile mimic = parse_urdf(
       robot(joint("hinge", "revolute", "a", R"(<limit lower="-1" upper="2"/>)") +
                 joint("follower", "revolute", "b",
@@ -279,12 +279,10 @@ TEST(UrdfFile, LimitsAreStops) {
             2),
       "r.urdf");
   ASSERT_EQ(mimic.model.constraints().size(), 1u);
-  EXPECT_FALSE(mimic.model.has_joint_limits());
-  ASSERT_EQ(mimic.notes.size(), 3u);  // and the root's weld
-  EXPECT_NE(mimic.notes[1].find("r.urdf:5: the limits of joint 'hinge' are not enforced: the "
-                                "robot's mimic joints are constraints"),
-            std::string::npos)
-      << mimic.notes[1];
+  ASSERT_TRUE(mimic.model.joint(mimic.model.joint_index("hinge")).limits.has_value());
+  ASSERT_TRUE(mimic.model.joint(mimic.model.joint_index("follower")).limits.has_value());
+  EXPECT_EQ(mimic.model.joint(mimic.model.joint_index("follower")).limits->upper, 1.0);
+  EXPECT_EQ(mimic.notes.size(), 1u);  // the root's weld
 
   // Bounds the wrong way round are an error at their line.
   try {

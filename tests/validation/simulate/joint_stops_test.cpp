@@ -11,6 +11,11 @@
 //   equals the weight's moment, the stop's force until then m g (l/2) sin θ − c t;
 // - a robot's limits (URDF's <limit>, MJCF's range): a rod falling into one is held there; a
 //   falling humanoid's joints resting on theirs are left alone;
+// - stops on constrained models: a four-bar whose crank falls onto its stop — the loop's rows and
+//   the hold together — loses (1 − e²) of what gravity gave it at each impact and comes to rest
+//   on the stop, which then pushes with the torque virtual work gives, dV/dθ₂ along the loop; a
+//   robot whose mimic joint (URDF) or joint equality (MJCF) couples a second rod to the limited
+//   one: the stop holds both, its force the moments of both weights;
 // - the model file's errors for stops where there are none to give.
 
 #include <cmath>
@@ -18,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "momenta/common/error.hpp"
@@ -201,6 +207,141 @@ TEST(JointStops, ARobotsLimitsAreStops) {
         EXPECT_EQ(row[angle], stop) << row[0];
         EXPECT_NEAR(row[force], -kG * 0.5 * std::cos(stop), 1e-12) << row[0];
       }
+    }
+  }
+}
+
+// The four-bar of examples/constraints/four_bar.yaml (ground d = 0.30 m, crank a = 0.10 m of
+// 1 kg, coupler b = 0.30 m of 2 kg, rocker c = 0.25 m of 1.5 kg, uniform rods, pins about z,
+// gravity −y), its crank free with a lower stop at θ_s = −0.5 rad, released at rest from θ₂ ≈ 0.
+// Its potential energy along the loop, V(θ₂) = g Σ mᵢ yᵢ: the crank's end A = a (cos θ₂, sin θ₂),
+// the coupler–rocker pin B where the circles of radius b about A and c about O₄ = (d, 0) meet
+// (the branch above the ground line, θ₄ ≈ 97° at θ₂ = 0), the centres halfway along the rods.
+double four_bar_potential(double theta2) {
+  const double a = 0.10, b = 0.30, c = 0.25, d = 0.30;
+  const Eigen::Vector2d A(a * std::cos(theta2), a * std::sin(theta2)), O4(d, 0.0);
+  const Eigen::Vector2d AO4 = O4 - A;
+  const double L = AO4.norm();
+  const double along = (b * b - c * c + L * L) / (2.0 * L),
+               across = std::sqrt(b * b - along * along);
+  const Eigen::Vector2d u = AO4 / L, n(-u.y(), u.x());
+  Eigen::Vector2d B = A + along * u + across * n;
+  if (B.y() < 0.0) B = A + along * u - across * n;
+  return kG * (1.0 * A.y() / 2.0 + 2.0 * (A.y() + B.y()) / 2.0 + 1.5 * B.y() / 2.0);
+}
+
+std::string four_bar_with_a_crank_stop(double restitution) {
+  return fmt::format(R"(gravity: [0, -9.81, 0]
+bodies:
+  - {{name: crank, shape: slender_rod, mass: 1.0, length: 0.10, position: [0.05, 0, 0],
+     euler: {{sequence: XYZ, angles_deg: [0, 90, 0]}}}}
+  - {{name: coupler, shape: slender_rod, mass: 2.0, length: 0.30, position: [0.15, 0, 0],
+     euler: {{sequence: XYZ, angles_deg: [0, 90, 0]}}}}
+  - {{name: rocker, shape: slender_rod, mass: 1.5, length: 0.25, position: [0.125, 0, 0],
+     euler: {{sequence: XYZ, angles_deg: [0, 90, 0]}}}}
+joints:
+  - {{name: crank_pin, type: revolute, parent: world, child: crank, axis: [0, 0, 1], q0: 0,
+     limits: {{lower: -0.5, restitution: {}}}}}
+  - {{name: coupler_pin, type: revolute, parent: crank, child: coupler, axis: [0, 0, 1],
+     in_parent: {{position: [0.10, 0, 0]}}, q0_deg: 56}}
+  - {{name: rocker_pin, type: revolute, parent: world, child: rocker, axis: [0, 0, 1],
+     in_parent: {{position: [0.30, 0, 0]}}, q0_deg: 97}}
+constraints:
+  - {{name: closure, type: hinge, body_a: rocker, point_a: [0.25, 0, 0],
+     body_b: coupler, point_b: [0.30, 0, 0]}}
+)",
+                     restitution);
+}
+
+// The crank strikes its stop through the loop: one coordinate of motion, so each impact leaves
+// e² of the kinetic energy, all of it V(0) − V(θ_s) at the first (energy conserved between
+// impacts to the integrator's tolerance: 1e-8 J allows for it with rtol 1e-12); the stop's rate
+// rule is exact on the coordinate. The bounces end in rest on the stop, where the stop's torque
+// balances gravity's through the loop: dV/dθ₂ at θ_s (central difference, δ = 1e-5: truncation
+// ~1e-10, round-off ~1e-10 N·m).
+TEST(JointStops, AFourBarFallsOntoItsCranksStopAndRestsWhereVirtualWorkSays) {
+  const double e = 0.5, stop = -0.5, delta = 1e-5;
+  const UnilateralRun run =
+      run_unilaterals(load(four_bar_with_a_crank_stop(e)), "dopri5", 1e-2, 3.0, /*reactions=*/true);
+  const int angle = run.table.column("crank_pin.angle");
+  // Every angle is given roughly, so the assembly moves the crank too (1.3 mrad): V from there.
+  const double start = run.table.rows.front()[angle];
+  EXPECT_NEAR(start, 0.0, 2e-3);
+  const double fallen = four_bar_potential(start) - four_bar_potential(stop);
+  const double holding =
+      (four_bar_potential(stop + delta) - four_bar_potential(stop - delta)) / (2.0 * delta);
+  ASSERT_GT(fallen, 1.0);   // J: gravity turns the crank into its stop ...
+  ASSERT_GT(holding, 2.0);  // N·m: ... and holds it there
+  const std::vector<StopEvent>& events = run.summary.stop_events;
+  ASSERT_GE(events.size(), 3u);
+  EXPECT_EQ(events[0].kind, StopEventKind::impact);
+  EXPECT_NEAR(events[0].energy_lost, (1.0 - e * e) * fallen, 1e-8);
+  for (std::size_t k = 0; k + 1 < events.size(); ++k) {
+    EXPECT_EQ(events[k].joint, "crank_pin");
+    EXPECT_FALSE(events[k].upper);
+    EXPECT_EQ(events[k].rate_after, -e * events[k].rate_before);
+  }
+  EXPECT_EQ(events.back().kind, StopEventKind::rest);
+  const double rest = events.back().time;
+  EXPECT_LT(rest, 2.0);
+  const int force = run.table.column("crank_pin.stop_force");
+  const int rocker_rate = run.table.column("rocker_pin.angle_rate");
+  for (const std::vector<double>& row : run.table.rows) {
+    EXPECT_GE(row[angle], stop) << row[0];
+    if (row[0] <= rest) continue;
+    EXPECT_EQ(row[angle], stop) << row[0];
+    EXPECT_NEAR(row[force], holding, 1e-8) << row[0];
+    EXPECT_NEAR(row[rocker_rate], 0.0, 1e-12) << row[0];
+  }
+}
+
+// Two rods (m = 1 kg, centre 0.5 m from the pin, I_O = 1/3 kg·m²) on pins about y at the world,
+// the second coupled to the first (q_b = q_a: URDF's mimic joint, MJCF's joint equality), the first
+// with an upper limit at 1 rad, released level. They fall as one, ½ (2 I_O) θ̇² = 2 m g 0.5 sin θ_s,
+// into the stop, which (plastic) holds both: its force the moments of both weights,
+// −2 m g 0.5 cos θ_s — the coupler carries the second rod's to it.
+TEST(JointStops, ALimitHoldsTheJointsCoupledToIt) {
+  const double I_O = 0.08333333333333333 + 0.25, stop = 1.0;
+  const std::string urdf = R"(<robot name="rods">
+  <link name="world"/>
+  <link name="a"><inertial><origin xyz="0.5 0 0"/><mass value="1"/>
+    <inertia ixx="1e-6" iyy="0.08333333333333333" izz="0.08333333333333333"/></inertial></link>
+  <link name="b"><inertial><origin xyz="0.5 0 0"/><mass value="1"/>
+    <inertia ixx="1e-6" iyy="0.08333333333333333" izz="0.08333333333333333"/></inertial></link>
+  <joint name="pin" type="revolute"><parent link="world"/><child link="a"/><axis xyz="0 1 0"/>
+    <limit lower="-3" upper="1" effort="0" velocity="0"/></joint>
+  <joint name="follower" type="continuous"><parent link="world"/><child link="b"/>
+    <origin xyz="0 1 0"/><axis xyz="0 1 0"/><mimic joint="pin"/></joint>
+</robot>)";
+  const std::string mjcf = R"(<mujoco><compiler angle="radian"/><worldbody>
+  <body name="a"><joint name="pin" axis="0 1 0" range="-3 1"/>
+    <inertial pos="0.5 0 0" mass="1" diaginertia="1e-6 0.08333333333333333 0.08333333333333333"/>
+  </body>
+  <body name="b" pos="0 1 0"><joint name="follower" axis="0 1 0"/>
+    <inertial pos="0.5 0 0" mass="1" diaginertia="1e-6 0.08333333333333333 0.08333333333333333"/>
+  </body></worldbody>
+  <equality><joint joint1="follower" joint2="pin" polycoef="0 1 0 0 0"/></equality></mujoco>)";
+  for (const io::ModelFile& file :
+       {io::parse_urdf(urdf, "rods.urdf"), io::parse_mjcf(mjcf, "rods.xml")}) {
+    SCOPED_TRACE(file.file);
+    ASSERT_TRUE(file.model.has_constraints());
+    const UnilateralRun run = run_unilaterals(file.model, "dopri5", 1e-2, 2.0, /*reactions=*/true);
+    const std::vector<StopEvent>& events = run.summary.stop_events;
+    ASSERT_EQ(events.size(), 1u);
+    EXPECT_EQ(events[0].kind, StopEventKind::rest);
+    EXPECT_TRUE(events[0].upper);
+    EXPECT_NEAR(events[0].rate_before, std::sqrt(2.0 * kG * 0.5 * std::sin(stop) / I_O), 1e-9);
+    EXPECT_EQ(events[0].rate_after, 0.0);
+    EXPECT_NEAR(events[0].energy_lost, 2.0 * kG * 0.5 * std::sin(stop), 1e-8);
+    const int angle = run.table.column("pin.angle");
+    const int follower = run.table.column("follower.angle");
+    const int force = run.table.column("pin.stop_force");
+    for (const std::vector<double>& row : run.table.rows) {
+      EXPECT_LE(row[angle], stop) << row[0];
+      if (row[0] <= events[0].time) continue;
+      EXPECT_EQ(row[angle], stop) << row[0];
+      EXPECT_NEAR(row[follower], stop, 1e-14) << row[0];
+      EXPECT_NEAR(row[force], -2.0 * kG * 0.5 * std::cos(stop), 1e-12) << row[0];
     }
   }
 }
