@@ -16,11 +16,20 @@
 // One impact with friction followed through its course, beside the frictionless one: see
 // BM_FrictionalImpact.
 //
+// A stop on a loop: the four-bar of examples/constraints/four_bar_on_a_stop.yaml for 10 s (rk4,
+// 1 ms) — 25 impacts through the loop's rows in its first 0.4 s, then held on its stop (the
+// constraint solver with the crank held: hybrid dynamics and the loop's rows) — beside the same
+// four-bar without the stop, swinging freely (the loop alone). Counters: steps, evaluations,
+// events.
+//
 // Run (from the repository root): build/bench/joint_stops_bench --benchmark_repetitions=5
 // --benchmark_report_aggregates_only and quote the medians and the ratio of each integrator's two
 // rows.
 
+#include <fstream>
+#include <iterator>
 #include <span>
+#include <stdexcept>
 #include <string>
 
 #include <benchmark/benchmark.h>
@@ -135,6 +144,27 @@ void BM_StickSlip(benchmark::State& bench, bool contact) {
   run_timed(bench, model, options, "events");
 }
 
+// The four-bar of examples/constraints/four_bar_on_a_stop.yaml, with its crank's stop or without.
+model::Model four_bar(bool stop) {
+  std::ifstream in("examples/constraints/four_bar_on_a_stop.yaml");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string limits = ",\n     limits: {lower: -0.5, restitution: 0.5}";
+  const std::size_t at = text.find(limits);
+  if (at == std::string::npos) throw std::runtime_error("four_bar_on_a_stop.yaml: no crank stop");
+  if (!stop) text.erase(at, limits.size());
+  return io::parse_model_file(text, "four_bar_on_a_stop.yaml", ".").model;
+}
+
+void BM_FourBarOnAStop(benchmark::State& bench, bool stop) {
+  const model::Model model = four_bar(stop);
+  simulate::SimulationOptions options;
+  options.duration = 10.0;
+  options.integrator = "rk4";
+  options.step = 1e-3;
+  options.every = 1000;
+  run_timed(bench, model, options, "events");
+}
+
 // One impact with friction (dynamics::frictional_impact), the rod of examples/falling_rod.yaml
 // striking the floor by its lower end at 1.962 m/s (e = 0.5): its course followed where the
 // normal and the slip couple — the end sticking (μs 0.5, μk 0.4: the course in closed form),
@@ -164,6 +194,9 @@ BENCHMARK_CAPTURE(BM_FrictionalImpact, sticking, 0.5, 0.4, 0.0)->Unit(benchmark:
 BENCHMARK_CAPTURE(BM_FrictionalImpact, sliding_from_rest, 0.2, 0.2, 0.0)
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_FrictionalImpact, slip_turning, 0.3, 0.3, 0.5)->Unit(benchmark::kMicrosecond);
+
+BENCHMARK_CAPTURE(BM_FourBarOnAStop, rk4_stop, true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_FourBarOnAStop, rk4_free, false)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_CAPTURE(BM_StickSlip, rk4_belt, true)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_StickSlip, rk4_spring_alone, false)->Unit(benchmark::kMillisecond);

@@ -399,6 +399,7 @@ SimulationSummary Simulation::run(RowSink& sink) {
   model::normalize(model_, state.q);
   if (model_.has_prescribed_joints())
     recorder.system().apply_prescribed_motion(0.0, state.q, state.v);
+  if (stops_) stops_->open_all(recorder.system(), state);  // nothing held from an earlier run
   summary.initial_state = recorder.system().make_consistent(0.0, state.q, state.v);
   if (const system::ConstraintSolver* solver = recorder.system().constraints())
     summary.redundant_constraint_rows = solver->redundant_rows();

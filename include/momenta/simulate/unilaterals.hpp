@@ -124,16 +124,24 @@ class Unilaterals {
 
   bool empty() const { return entries_.empty(); }
 
-  /// At the run's first state: closes those the mechanism starts on, at rest or moving into
-  /// them, and pushed into them (those events are returned). `advanced` is what the integrator
-  /// advances (`system` itself, or its closed loop); `state` may gain the exact stop value.
+  /// Opens every one on `system` (a stop lets its joint go, a contact's rows go off): what an
+  /// earlier run left held is held no more. A run does so before it makes its initial state
+  /// consistent, where a held joint would not move.
+  void open_all(system::MultibodySystem& system, const integrate::State& state);
+
+  /// At the run's first state: opens every one (open_all), then closes those the mechanism
+  /// starts on, at rest or moving into them, and pushed into them (those events are returned).
+  /// `advanced` is what the integrator advances (`system` itself, or its closed loop); `state` may
+  /// gain the exact stop value.
   std::vector<StopEvent> start(system::MultibodySystem& system,
                                integrate::SecondOrderSystem& advanced, integrate::State& state);
 
   /// After the step `integrator` took from `start` to `end`: whether one acts inside it — one
   /// the mechanism reaches, or a closed one that would pull. Then `before` is the state at the
-  /// first such instant (a stop's coordinate exactly on it), and act() does what it does.
-  /// Allocates nothing.
+  /// first such instant (a stop's coordinate exactly on it), projected onto the constraints that
+  /// hold (a reached stop's coordinate kept), and act() does what it does. Allocates nothing
+  /// where none acts (a stop reached on a constrained model is held for the projection: an
+  /// event's cost, ConstraintSolver::hold_joints).
   bool check(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
              const integrate::Integrator& integrator, const integrate::State& start,
              const integrate::State& end, integrate::State& before);
@@ -211,6 +219,9 @@ class Unilaterals {
                      const Entry& e, integrate::State& at, StopEvent& event);
   void hold_contact(system::MultibodySystem& system, const Entry& e, integrate::State& at, Hold how,
                     const Vec3& slip_W = Vec3::Zero());
+  // Projects `at` onto the constraints that hold now (MultibodySystem::project; a held joint's
+  // coordinate stays).
+  void project(system::MultibodySystem& system, integrate::State& at);
   // A contact's slip velocity at `state` (W, along the plane).
   Vec3 slip_velocity(const Entry& e, const integrate::State& state);
   // After an evaluation of a sticking contact at `state`: the friction its tangent rows exert

@@ -23,7 +23,6 @@
 #include <string>
 #include <vector>
 
-#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "momenta/common/error.hpp"
@@ -211,9 +210,10 @@ TEST(JointStops, ARobotsLimitsAreStops) {
   }
 }
 
-// The four-bar of examples/constraints/four_bar.yaml (ground d = 0.30 m, crank a = 0.10 m of
-// 1 kg, coupler b = 0.30 m of 2 kg, rocker c = 0.25 m of 1.5 kg, uniform rods, pins about z,
-// gravity −y), its crank free with a lower stop at θ_s = −0.5 rad, released at rest from θ₂ ≈ 0.
+// examples/constraints/four_bar_on_a_stop.yaml: the four-bar of four_bar.yaml (ground d = 0.30 m,
+// crank a = 0.10 m of 1 kg, coupler b = 0.30 m of 2 kg, rocker c = 0.25 m of 1.5 kg, uniform rods,
+// pins about z, gravity −y), its crank free with a lower stop at θ_s = −0.5 rad (e = 0.5),
+// released at rest from θ₂ ≈ 0.
 // Its potential energy along the loop, V(θ₂) = g Σ mᵢ yᵢ: the crank's end A = a (cos θ₂, sin θ₂),
 // the coupler–rocker pin B where the circles of radius b about A and c about O₄ = (d, 0) meet
 // (the branch above the ground line, θ₄ ≈ 97° at θ₂ = 0), the centres halfway along the rods.
@@ -230,29 +230,6 @@ double four_bar_potential(double theta2) {
   return kG * (1.0 * A.y() / 2.0 + 2.0 * (A.y() + B.y()) / 2.0 + 1.5 * B.y() / 2.0);
 }
 
-std::string four_bar_with_a_crank_stop(double restitution) {
-  return fmt::format(R"(gravity: [0, -9.81, 0]
-bodies:
-  - {{name: crank, shape: slender_rod, mass: 1.0, length: 0.10, position: [0.05, 0, 0],
-     euler: {{sequence: XYZ, angles_deg: [0, 90, 0]}}}}
-  - {{name: coupler, shape: slender_rod, mass: 2.0, length: 0.30, position: [0.15, 0, 0],
-     euler: {{sequence: XYZ, angles_deg: [0, 90, 0]}}}}
-  - {{name: rocker, shape: slender_rod, mass: 1.5, length: 0.25, position: [0.125, 0, 0],
-     euler: {{sequence: XYZ, angles_deg: [0, 90, 0]}}}}
-joints:
-  - {{name: crank_pin, type: revolute, parent: world, child: crank, axis: [0, 0, 1], q0: 0,
-     limits: {{lower: -0.5, restitution: {}}}}}
-  - {{name: coupler_pin, type: revolute, parent: crank, child: coupler, axis: [0, 0, 1],
-     in_parent: {{position: [0.10, 0, 0]}}, q0_deg: 56}}
-  - {{name: rocker_pin, type: revolute, parent: world, child: rocker, axis: [0, 0, 1],
-     in_parent: {{position: [0.30, 0, 0]}}, q0_deg: 97}}
-constraints:
-  - {{name: closure, type: hinge, body_a: rocker, point_a: [0.25, 0, 0],
-     body_b: coupler, point_b: [0.30, 0, 0]}}
-)",
-                     restitution);
-}
-
 // The crank strikes its stop through the loop: one coordinate of motion, so each impact leaves
 // e² of the kinetic energy, all of it V(0) − V(θ_s) at the first (energy conserved between
 // impacts to the integrator's tolerance: 1e-8 J allows for it with rtol 1e-12); the stop's rate
@@ -261,8 +238,10 @@ constraints:
 // ~1e-10, round-off ~1e-10 N·m).
 TEST(JointStops, AFourBarFallsOntoItsCranksStopAndRestsWhereVirtualWorkSays) {
   const double e = 0.5, stop = -0.5, delta = 1e-5;
-  const UnilateralRun run =
-      run_unilaterals(load(four_bar_with_a_crank_stop(e)), "dopri5", 1e-2, 3.0, /*reactions=*/true);
+  const model::Model model =
+      io::read_model_file("examples/constraints/four_bar_on_a_stop.yaml").model;
+  ASSERT_EQ(model.joint(model.joint_index("crank_pin")).limits->restitution, e);
+  const UnilateralRun run = run_unilaterals(model, "dopri5", 1e-2, 3.0, /*reactions=*/true);
   const int angle = run.table.column("crank_pin.angle");
   // Every angle is given roughly, so the assembly moves the crank too (1.3 mrad): V from there.
   const double start = run.table.rows.front()[angle];
@@ -292,6 +271,33 @@ TEST(JointStops, AFourBarFallsOntoItsCranksStopAndRestsWhereVirtualWorkSays) {
     EXPECT_EQ(row[angle], stop) << row[0];
     EXPECT_NEAR(row[force], holding, 1e-8) << row[0];
     EXPECT_NEAR(row[rocker_rate], 0.0, 1e-12) << row[0];
+  }
+}
+
+// One Simulation run twice runs twice alike: the second starts from the model's initial state
+// with every stop and contact open, whatever the first left held (the four-bar ends held on its
+// stop; the bouncing sphere resting on its floor, the contact's row on).
+TEST(JointStops, ASecondRunStartsWithNothingHeld) {
+  for (const char* path :
+       {"examples/constraints/four_bar_on_a_stop.yaml", "examples/bouncing_sphere.yaml"}) {
+    SCOPED_TRACE(path);
+    const io::ModelFile file = io::read_model_file(path);
+    SimulationOptions options;
+    options.duration = file.simulation.duration.value();
+    options.step = 1e-3;
+    options.integrator = "rk4";
+    Simulation simulation(file.model, {}, options);
+    TableSink first, second;
+    const SimulationSummary a = simulation.run(first);
+    const SimulationSummary b = simulation.run(second);
+    ASSERT_GT(a.stop_events.size(), 2u);
+    EXPECT_EQ(a.stop_events.back().kind, StopEventKind::rest);
+    ASSERT_EQ(b.stop_events.size(), a.stop_events.size());
+    for (std::size_t k = 0; k < a.stop_events.size(); ++k) {
+      EXPECT_EQ(b.stop_events[k].time, a.stop_events[k].time) << k;
+      EXPECT_EQ(b.stop_events[k].impulse, a.stop_events[k].impulse) << k;
+    }
+    EXPECT_EQ(second.rows, first.rows);
   }
 }
 
