@@ -93,7 +93,6 @@ Unilaterals::Unilaterals(const model::Model& model, double step)
   slip_reference_.assign(entries_.size(), Vec3::UnitX());
   q_ = VecX::Zero(model.nq());
   v_ = VecX::Zero(model.nv());
-  held_joints_.assign(static_cast<std::size_t>(model.num_joints()), 0);
 }
 
 const model::Contact& Unilaterals::contact_of(const Entry& e) const {
@@ -340,7 +339,7 @@ double Unilaterals::contact_impact(system::MultibodySystem& system, const Entry&
     // Newton's restitution and Coulomb's law at impact (none without friction).
     const dynamics::FrictionalImpact impact = dynamics::frictional_impact(
         model_, at.q.head(nq), at.v.head(nv), touch, e.restitution, c.static_friction,
-        c.kinetic_friction, enabled_rows(system), held_joints(system));
+        c.kinetic_friction, enabled_rows(system), system.held_joints());
     if (!let_go_one_that_pulls(system, impact.motion, at)) {
       at.v.head(nv) = impact.motion.v_after;
       return impact.normal_impulse;
@@ -354,7 +353,7 @@ double Unilaterals::stop_strike(system::MultibodySystem& system, const Entry& e,
   for (;;) {  // as contact_impact: what holds takes its impulse, unless it would pull
     const dynamics::StopImpact impact =
         dynamics::stop_impact(model_, at.q.head(nq), at.v.head(nv), e.v, e.restitution,
-                              enabled_rows(system), held_joints(system));
+                              enabled_rows(system), system.held_joints());
     if (!let_go_one_that_pulls(system, impact.motion, at)) {
       at.v.head(nv) = impact.motion.v_after;
       return impact.impulse;
@@ -365,12 +364,6 @@ double Unilaterals::stop_strike(system::MultibodySystem& system, const Entry& e,
 std::span<const char> Unilaterals::enabled_rows(const system::MultibodySystem& system) const {
   if (system.constraints() == nullptr) return {};
   return system.constraints()->rows().enabled;
-}
-
-std::span<const char> Unilaterals::held_joints(const system::MultibodySystem& system) {
-  for (const model::Joint& j : model_.joints())
-    held_joints_[static_cast<std::size_t>(j.index)] = system.held(j.index) ? 1 : 0;
-  return held_joints_;
 }
 
 bool Unilaterals::let_go_one_that_pulls(system::MultibodySystem& system,

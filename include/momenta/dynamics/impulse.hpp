@@ -44,8 +44,8 @@ struct ImpulsiveMotion {
   /// Per joint: the impulse it transmits to its child, force (N·s) and moment (N·m·s) about J''s
   /// origin, in W — the part along its motion is a prescribed joint's drive impulse.
   std::vector<JointReaction> joint_impulses;
-  /// Per velocity coordinate: the drive impulse a prescribed joint gives to keep its speed
-  /// (N·s or N·m·s; 0 on free coordinates).
+  /// Per velocity coordinate: the drive impulse a prescribed joint gives to keep its speed, or
+  /// the stop's impulse on a held joint (`held_joints`) (N·s or N·m·s; 0 on free coordinates).
   VecX drive_impulses;
   double kinetic_before = 0.0, kinetic_after = 0.0;  ///< J (armature included)
   /// The impulses' work (J): Σ ½ P · (v_P⁻ + v_P⁺) over the applied impulses, plus each drive

@@ -199,10 +199,9 @@ class Unilaterals {
   // A stop's impact: the state just after, its impulse returned; as contact_impact, the closed
   // contacts and the holding stops take their impulses, and one that would pull lets go.
   double stop_strike(system::MultibodySystem& system, const Entry& e, integrate::State& at);
-  // The rows the system's closed contacts have on (empty without constraints), and the joints
-  // its stops hold (per joint), for the impulse solves.
+  // The rows the system's closed contacts have on (empty without constraints), for the impulse
+  // solves.
   std::span<const char> enabled_rows(const system::MultibodySystem& system) const;
-  std::span<const char> held_joints(const system::MultibodySystem& system);
   // After an impact's impulses `motion`: lets go the closed contact or holding stop whose impulse
   // pulls most, if one does, and says whether one did.
   bool let_go_one_that_pulls(system::MultibodySystem& system,
@@ -250,8 +249,7 @@ class Unilaterals {
   integrate::StepInterpolant interpolant_;
   integrate::State trial_;
   VecX vdot_, q_, v_;
-  std::vector<char> held_joints_;  // see held_joints()
-  dynamics::Data data_;            // a contact's kinematics
+  dynamics::Data data_;  // a contact's kinematics
 };
 
 }  // namespace momenta::simulate

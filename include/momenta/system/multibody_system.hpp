@@ -155,6 +155,9 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   /// Lets joint j move by forces again.
   void release(int j);
   bool held(int j) const { return held_[static_cast<std::size_t>(j)] != 0; }
+  /// Per joint, 1 where a stop holds it (the model's prescribed joints not marked): the mask
+  /// dynamics::stop_impact and the impacts take as `held_joints`.
+  std::span<const char> held_joints() const { return held_; }
   /// After an evaluation (acceleration() or evaluate()): the generalized force the hold of joint j
   /// exerts on its coordinate (N·m or N): what the joint's motion needs less the force elements'.
   double stop_force(int j) const;
