@@ -54,6 +54,9 @@ void add_diagram_command(CLI::App& app);
 /// `momenta export MODEL --mjcf FILE | --urdf FILE`: the model written for MuJoCo or ROS.
 void add_export_command(CLI::App& app);
 
+/// `momenta identify MODEL --data LOG.csv`: base inertial parameters from measured data.
+void add_identify_command(CLI::App& app);
+
 /// `momenta equations MODEL`: equations of motion in symbols (docs/equations.md).
 void add_equations_command(CLI::App& app);
 

@@ -61,6 +61,7 @@ constexpr std::pair<std::string_view, std::string_view> kCommandSummaries[] = {
     {"diagram", "a body's free-body and kinetic diagrams (SVG)"},
     {"equations", "equations of motion in symbols, LaTeX or generated code"},
     {"export", "write a model as MJCF (MuJoCo) or URDF (ROS)"},
+    {"identify", "a robot's inertial parameters from measured motion and efforts"},
     {"sweep", "a parameter grid or Monte Carlo study, one CSV row per run"},
     {"sweep-merge", "join the shards of a sweep into one results file"},
     {"version", "print momenta's version"},
@@ -104,6 +105,7 @@ int main(int argc, char** argv) {
   momenta::cli::add_impact_command(app);
   momenta::cli::add_diagram_command(app);
   momenta::cli::add_export_command(app);
+  momenta::cli::add_identify_command(app);
   momenta::cli::add_equations_command(app);  // without MOMENTA_WITH_SYMBOLIC: says how to get it
   momenta::cli::add_sweep_command(app);
   momenta::cli::add_sweep_merge_command(app);

@@ -776,6 +776,10 @@ class Workspace:
         """(∂τ/∂q, ∂τ/∂v, M), each (nv, nv), of τ = rnea(q, v, vdot), analytically (Carpentier & Mansard 2018); ∂/∂q along the configuration's tangent, f_ext held in its bodies."""
         ...
 
+def base_parameters(model: Model) -> dict:
+    """The base (identifiable) inertial parameters, as `momenta identify` finds them: a dict with `names` (each base parameter in words, 'upper.I_yy + 0.64·lower.m'), `leading` (the parameter each starts with), `regrouping` (β = regrouping @ π), `never_felt` and `regrouped` (the parameters joint efforts ca"""
+    ...
+
 def bode(system: object, input: object, output: object, *, frequencies: object = None, omega_min: float = 0.01, omega_max: float = 100.0, points: int = 200) -> FrequencyResponse:
     """Bode data of one pair at the given frequencies (rad/s) or on a log grid from omega_min to omega_max."""
     ...
@@ -808,6 +812,10 @@ def equations(model: Model, *, format: str = 'text', symbols: List[str] = [], al
     """The model's equations of motion in symbols, as `momenta equations` prints them: a list of strings (format 'text' or 'latex'; options form='lagrange' | 'matrix' | 'newton-euler', principal_axes, greek), with format='cpp' or 'python' the code computing M and b as `--cpp` / `--python` write it (one str"""
     ...
 
+def estimate_inertia(model: Model, q: ArrayLike, v: ArrayLike, vdot: ArrayLike, tau: ArrayLike) -> dict:
+    """The base inertial parameters estimated from N measured samples — q (N, nq), v, vdot and tau (N, nv) — by weighted least squares, as `momenta identify` does: base_parameters' dict with `estimate`, `standard_error`, `lower` and `upper` (95 %), `covariance`, `correlation`, each coordinate's `noise` and"""
+    ...
+
 def find_equilibrium(model: Model, *, q_guess: object = None, t: float = 0.0, tolerance: float = 1e-10, max_iterations: int = 100) -> Equilibrium:
     """The static equilibrium nearest (by Newton's method) to q_guess (default the initial configuration), with its linearization and stability. Raises NumericalError when there is none to be found, naming the largest residual."""
     ...
@@ -830,6 +838,14 @@ def impulse_momentum_diagram(model: Model, body: ArrayLike, impulses: list, *, q
 
 def impulse_response(system: object, input: object = 0, *, final_time: Optional[float] = None, samples: Optional[int] = None) -> TimeResponse:
     """Impulse response, x(t) = e^(At) B."""
+    ...
+
+def inertial_parameters(model: Model) -> tuple:
+    """(π, names): the model's inertial parameters, ten per body about its frame's origin in its axes — m, h_x, h_y, h_z (h = m c), I_xx, I_xy, I_xz, I_yy, I_yz, I_zz (off-diagonals minus the products of inertia) — and their names '<body>.<name>' (docs/identification.md)."""
+    ...
+
+def inertial_regressor(model: Model, q: ArrayLike, v: ArrayLike, vdot: ArrayLike) -> numpy.ndarray:
+    """Y (nv × 10 bodies): the joint efforts are Y π + armature · vdot with π the bodies' inertial parameters (inertial_parameters), so Y @ π equals Workspace.rnea where no joint has armature."""
     ...
 
 def joint_steady_motion(model: Model, *, inputs: List[str] = [], outputs: List[str] = [], q: object = None, v: object = None, t: float = 0.0) -> JointSteadyMotion:

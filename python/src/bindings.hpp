@@ -110,5 +110,6 @@ void bind_analysis(py::module_& m);
 void bind_control(py::module_& m);
 void bind_sweep(py::module_& m);
 void bind_mechanics(py::module_& m);
+void bind_identify(py::module_& m);
 
 }  // namespace momenta::python

@@ -22,4 +22,5 @@ PYBIND11_MODULE(_core, m) {
   bind_control(m);
   bind_sweep(m);
   bind_mechanics(m);
+  bind_identify(m);
 }

@@ -17,7 +17,8 @@ LAYER_OF = {
     "common": "core", "math": "core", "inertia": "inertia", "model": "model",
     "dynamics": "dynamics", "integrate": "integrate", "rigid_body": "rigid_body",
     "system": "system", "simulate": "simulate", "analysis": "analysis", "symbolic": "symbolic",
-    "sweep_design": "sweep_design", "io": "io", "frontend": "frontend", "sweep": "sweep",
+    "sweep_design": "sweep_design", "io": "io", "identify": "identify", "frontend": "frontend",
+    "sweep": "sweep",
     "report": "report",
 }
 DEPENDS = {
@@ -33,6 +34,7 @@ DEPENDS = {
     "symbolic": ["model"],
     "sweep_design": ["model"],
     "io": ["inertia", "model", "sweep_design"],
+    "identify": ["simulate", "analysis"],
     "frontend": ["io", "simulate"],
     "sweep": ["frontend", "simulate", "analysis", "sweep_design"],
     "report": ["io", "simulate", "analysis", "symbolic"],

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "csv/csv_fields.hpp"
 #include "model_file/model_file_internal.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
@@ -34,18 +35,8 @@ const std::vector<EntryType>& signal_types() {
   return types;
 }
 
-std::string trim(std::string_view s) {
-  const auto not_space = [](char c) { return c != ' ' && c != '\t' && c != '\r'; };
-  const auto b = std::find_if(s.begin(), s.end(), not_space);
-  const auto e = std::find_if(s.rbegin(), s.rend(), not_space).base();
-  return b < e ? std::string(b, e) : std::string();
-}
-
-bool parse_number(const std::string& text, double& value) {
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  return ec == std::errc() && ptr == end && std::isfinite(value);
-}
+using csv::parse_number;
+using csv::trim;
 
 // A two-column CSV file `time,value`: one optional header line, blank lines and `#` comments
 // skipped. Errors name the CSV file and its line; a missing file is reported at `ref`.

@@ -1,0 +1,206 @@
+// `momenta identify MODEL --data LOG.csv [--json]`: a tree's base inertial parameters estimated
+// from measured motion and joint efforts (identify::estimate_inertia), with their standard
+// errors, 95 % intervals, correlations, each coordinate's noise and residual, what the data
+// cannot tell, and the physical consistency of the result. Documented in docs/identification.md.
+
+#include <algorithm>
+#include <memory>
+#include <string>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "model_argument.hpp"
+#include "momenta/common/number_text.hpp"
+#include "momenta/identify/inertia_data.hpp"
+#include "momenta/io/measured_data.hpp"
+#include "momenta/model/units.hpp"
+#include "output_format.hpp"
+
+namespace momenta::cli {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+struct IdentifyOptions {
+  ModelArgument model;
+  std::string data;
+  bool json = false;
+};
+
+// A correlation this large means the data barely separates the two parameters.
+constexpr double kStrongCorrelation = 0.9;
+
+std::string unit_of(int parameter) {
+  return std::string(identify::kParameterUnits[parameter % identify::kParametersPerBody]);
+}
+
+std::vector<std::string> names_of(const model::Model& model, const std::vector<int>& indices) {
+  std::vector<std::string> names;
+  for (int k : indices) names.push_back(identify::parameter_name(model, k));
+  return names;
+}
+
+std::vector<int> regrouped(const identify::BaseParameters& base) {
+  std::vector<int> out;
+  for (int d : base.dependent) {
+    if (std::find(base.no_effect.begin(), base.no_effect.end(), d) == base.no_effect.end())
+      out.push_back(d);
+  }
+  return out;
+}
+
+json estimate_json(const model::Model& model, const identify::InertiaEstimate& e,
+                   const VecX& model_beta, const io::MeasuredTable& table) {
+  json j;
+  j["data"] = table.source;
+  j["samples"] = e.samples;
+  j["inertial_parameters"] = e.base.num_parameters;
+  j["degrees_of_freedom"] = e.degrees_of_freedom;
+  json base = json::array();
+  for (int k = 0; k < e.base.rank(); ++k) {
+    base.push_back({{"name", e.base.describe(model, k)},
+                    {"leading", identify::parameter_name(model, e.base.independent[k])},
+                    {"unit", unit_of(e.base.independent[k])},
+                    {"estimate", e.beta[k]},
+                    {"standard_error", e.standard_error[k]},
+                    {"interval_95", {e.lower[k], e.upper[k]}},
+                    {"model", model_beta[k]}});
+  }
+  j["base_parameters"] = std::move(base);
+  j["correlation"] = matrix_json(e.correlation);
+  json noise = json::object(), rms = json::object();
+  const std::vector<std::string> columns = identify::inertia_data_columns(model);
+  for (int i = 0; i < model.nv(); ++i) {
+    const std::string& effort = columns[columns.size() - model.nv() + i];
+    noise[effort] = e.noise[i];
+    rms[effort] = e.residual_rms[i];
+  }
+  j["noise"] = std::move(noise);
+  j["residual_rms"] = std::move(rms);
+  j["never_felt"] = names_of(model, e.base.no_effect);
+  j["regrouped"] = names_of(model, regrouped(e.base));
+  json bodies = json::array();
+  for (int b = 1; b < model.num_bodies(); ++b) {
+    const identify::PhysicalConsistency& c = e.consistency[b - 1];
+    bodies.push_back({{"body", model.body(b).name},
+                      {"consistent", c.consistent()},
+                      {"verdict", c.verdict()},
+                      {"mass", c.mass},
+                      {"center_of_mass", vec_json(c.center_of_mass)},
+                      {"principal_moments", vec_json(c.principal_moments)}});
+  }
+  j["consistency"] = std::move(bodies);
+  return j;
+}
+
+void print_estimate(const model::Model& model, const identify::InertiaEstimate& e,
+                    const VecX& model_beta, const io::MeasuredTable& table,
+                    const std::string& model_file) {
+  const identify::BaseParameters& base = e.base;
+  fmt::print("{}: base inertial parameters from {} samples of {}\n", model_file, e.samples,
+             table.source);
+  fmt::print(
+      "{} of the {} inertial parameters are identifiable from joint efforts ({} degrees "
+      "of freedom)\n\n",
+      base.rank(), base.num_parameters, e.degrees_of_freedom);
+  std::size_t width = std::string_view("base parameter").size();
+  for (int k = 0; k < base.rank(); ++k) width = std::max(width, base.describe(model, k).size());
+  fmt::print("  {:<{}}  {:<6} {:>12} {:>11}   {:<27} {:>12}\n", "base parameter", width, "unit",
+             "estimate", "std. error", "95 % interval", "model");
+  for (int k = 0; k < base.rank(); ++k) {
+    const double scale = std::max({std::abs(e.beta[k]), e.standard_error[k], 1e-300});
+    fmt::print("  {:<{}}  {:<6} {:>12} {:>11}   {:<27} {:>12}\n", base.describe(model, k), width,
+               unit_of(base.independent[k]), number_text(shown_value(e.beta[k], scale), 6),
+               number_text(e.standard_error[k], 3),
+               fmt::format("[{}, {}]", number_text(shown_value(e.lower[k], scale), 6),
+                           number_text(shown_value(e.upper[k], scale), 6)),
+               number_text(shown_value(model_beta[k], std::abs(model_beta[k])), 6));
+  }
+  fmt::print("\nnoise (from the residuals) and residual RMS per effort:\n");
+  const std::vector<std::string> columns = identify::inertia_data_columns(model);
+  for (int i = 0; i < model.nv(); ++i) {
+    const std::string unit = model::effort_unit(model, i);
+    fmt::print("  {}: σ {} {}, RMS {} {}\n", columns[columns.size() - model.nv() + i],
+               number_text(e.noise[i], 4), unit, number_text(e.residual_rms[i], 4), unit);
+  }
+  std::vector<std::string> strong;
+  for (int a = 0; a < base.rank(); ++a) {
+    for (int b = a + 1; b < base.rank(); ++b) {
+      if (std::abs(e.correlation(a, b)) > kStrongCorrelation) {
+        strong.push_back(fmt::format("{} and {} ({})", base.describe(model, a),
+                                     base.describe(model, b), number_text(e.correlation(a, b), 3)));
+      }
+    }
+  }
+  fmt::print("\nstrongly correlated (|ρ| > {}): {}\n", kStrongCorrelation,
+             strong.empty() ? std::string("none") : fmt::format("{}", fmt::join(strong, "; ")));
+  const std::vector<std::string> never = names_of(model, base.no_effect);
+  const std::vector<std::string> grouped = names_of(model, regrouped(base));
+  fmt::print("never felt by the joints (no data of this kind can tell them): {}\n",
+             never.empty() ? std::string("none") : fmt::format("{}", fmt::join(never, ", ")));
+  fmt::print("regrouped (told only in the combinations above): {}\n",
+             grouped.empty() ? std::string("none") : fmt::format("{}", fmt::join(grouped, ", ")));
+  fmt::print(
+      "\nphysical consistency (can a body have these estimates? regrouped parameters at the "
+      "model's values, the never-felt ones chosen so that it can where any choice does):\n");
+  const std::vector<int> from_model = regrouped(base);
+  const VecX pi_model = identify::inertial_parameters(model);
+  for (int b = 1; b < model.num_bodies(); ++b) {
+    std::vector<std::string> assumed;
+    for (int k : from_model) {
+      if (k / identify::kParametersPerBody != b - 1) continue;
+      assumed.push_back(fmt::format("{} = {} {}", identify::parameter_name(model, k),
+                                    number_text(pi_model[k], 6), unit_of(k)));
+    }
+    fmt::print("  {}: {}{}\n", model.body(b).name, e.consistency[b - 1].verdict(),
+               assumed.empty()
+                   ? std::string()
+                   : fmt::format(" (with {} from the model)", fmt::join(assumed, ", ")));
+  }
+}
+
+void run(const IdentifyOptions& o) {
+  const io::ModelFile file = load_model(o.model);
+  const model::Model& model = file.model;
+  const io::MeasuredTable table = io::read_measured_csv(o.data);
+  const identify::InertiaSamples samples =
+      identify::inertia_samples(model, table.columns, table.values, table.source);
+  const identify::BaseParameters base = identify::base_parameters(model);
+  const identify::InertiaEstimate e = identify::estimate_inertia(model, samples, base);
+  const VecX model_beta = base.base_of(identify::inertial_parameters(model));
+  if (o.json) {
+    fmt::print("{}\n", json_text(estimate_json(model, e, model_beta, table)));
+    return;
+  }
+  print_estimate(model, e, model_beta, table, o.model.file);
+}
+
+}  // namespace
+
+void add_identify_command(CLI::App& app) {
+  auto options = std::make_shared<IdentifyOptions>();
+  CLI::App* command = app.add_subcommand(
+      "identify",
+      "Estimate a model's base inertial parameters from measured motion and joint efforts "
+      "(τ = Y π, linear least squares): estimates, standard errors, 95 % intervals, "
+      "correlations, noise, what the data cannot tell, physical consistency");
+  add_model_argument(command, options->model);
+  command
+      ->add_option("--data", options->data,
+                   "Measured CSV: per coordinate its position, rate, rate's rate (_dot) and "
+                   "effort, named as docs/identification.md says")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_flag("--json", options->json, "Print JSON instead of text");
+  command->footer(
+      "Example:\n"
+      "  momenta identify examples/identification/two_link_arm.yaml \\\n"
+      "      --data examples/identification/two_link_arm_log.csv\n"
+      "Columns, method and what is tested: docs/identification.md.");
+  command->callback([options] { run(*options); });
+}
+
+}  // namespace momenta::cli

@@ -1,0 +1,122 @@
+// momenta.inertial_regressor, base_parameters, estimate_inertia: identification of a tree's
+// inertial parameters from measured motion and joint efforts (docs/identification.md), with the
+// same numbers as `momenta identify`.
+
+#include <algorithm>
+
+#include <pybind11/stl.h>
+
+#include "bindings.hpp"
+#include "model_handle.hpp"
+#include "momenta/identify/inertia_data.hpp"
+#include "momenta/identify/inertial_regressor.hpp"
+
+namespace momenta::python {
+namespace {
+
+py::list names_of(const model::Model& model, const std::vector<int>& indices) {
+  py::list names;
+  for (int k : indices) names.append(identify::parameter_name(model, k));
+  return names;
+}
+
+py::list regrouped_names(const model::Model& model, const identify::BaseParameters& base) {
+  std::vector<int> regrouped;
+  for (int d : base.dependent) {
+    if (std::find(base.no_effect.begin(), base.no_effect.end(), d) == base.no_effect.end())
+      regrouped.push_back(d);
+  }
+  return names_of(model, regrouped);
+}
+
+py::dict base_dict(const model::Model& model, const identify::BaseParameters& base) {
+  py::dict d;
+  py::list described;
+  for (int k = 0; k < base.rank(); ++k) described.append(base.describe(model, k));
+  d["names"] = described;
+  d["leading"] = names_of(model, base.independent);
+  d["regrouping"] = to_numpy(base.regrouping);
+  d["never_felt"] = names_of(model, base.no_effect);
+  d["regrouped"] = regrouped_names(model, base);
+  d["model_values"] = to_numpy(base.base_of(identify::inertial_parameters(model)));
+  return d;
+}
+
+}  // namespace
+
+void bind_identify(py::module_& m) {
+  m.def(
+      "inertial_parameters",
+      [](const ModelHandle& h) {
+        py::list names;
+        for (int k = 0; k < identify::num_inertial_parameters(h.model()); ++k)
+          names.append(identify::parameter_name(h.model(), k));
+        return py::make_tuple(to_numpy(identify::inertial_parameters(h.model())), names);
+      },
+      py::arg("model"),
+      "(π, names): the model's inertial parameters, ten per body about its frame's origin in its "
+      "axes — m, h_x, h_y, h_z (h = m c), I_xx, I_xy, I_xz, I_yy, I_yz, I_zz (off-diagonals minus "
+      "the products of inertia) — and their names '<body>.<name>' (docs/identification.md).");
+  m.def(
+      "inertial_regressor",
+      [](const ModelHandle& h, const py::handle& q, const py::handle& v, const py::handle& vdot) {
+        const model::Model& model = h.model();
+        ArgStorage sq, sv, sa;
+        return to_numpy(identify::inertial_regressor(
+            model, vector_arg(q, "q", model.nq(), "the model's nq", sq),
+            vector_arg(v, "v", model.nv(), "the model's nv", sv),
+            vector_arg(vdot, "vdot", model.nv(), "the model's nv", sa)));
+      },
+      py::arg("model"), py::arg("q"), py::arg("v"), py::arg("vdot"),
+      "Y (nv × 10 bodies): the joint efforts are Y π + armature · vdot with π the bodies' "
+      "inertial parameters (inertial_parameters), so Y @ π equals Workspace.rnea where no joint "
+      "has armature.");
+  m.def(
+      "base_parameters",
+      [](const ModelHandle& h) {
+        return base_dict(h.model(), identify::base_parameters(h.model()));
+      },
+      py::arg("model"),
+      "The base (identifiable) inertial parameters, as `momenta identify` finds them: a dict with "
+      "`names` (each base parameter in words, 'upper.I_yy + 0.64·lower.m'), `leading` (the "
+      "parameter each starts with), `regrouping` (β = regrouping @ π), `never_felt` and "
+      "`regrouped` (the parameters joint efforts cannot tell, or tell only in the combinations), "
+      "and `model_values` (β of the model's own π).");
+  m.def(
+      "estimate_inertia",
+      [](const ModelHandle& h, const py::handle& q, const py::handle& v, const py::handle& vdot,
+         const py::handle& tau) {
+        const model::Model& model = h.model();
+        identify::InertiaSamples s;
+        s.q = matrix_arg(q, "q", -1, model.nq());
+        s.v = matrix_arg(v, "v", s.q.rows(), model.nv());
+        s.vdot = matrix_arg(vdot, "vdot", s.q.rows(), model.nv());
+        s.tau = matrix_arg(tau, "tau", s.q.rows(), model.nv());
+        const identify::BaseParameters base = identify::base_parameters(model);
+        const identify::InertiaEstimate e = identify::estimate_inertia(model, s, base);
+        py::dict d = base_dict(model, base);
+        d["estimate"] = to_numpy(e.beta);
+        d["standard_error"] = to_numpy(e.standard_error);
+        d["lower"] = to_numpy(e.lower);
+        d["upper"] = to_numpy(e.upper);
+        d["covariance"] = to_numpy(e.covariance);
+        d["correlation"] = to_numpy(e.correlation);
+        d["noise"] = to_numpy(e.noise);
+        d["residual_rms"] = to_numpy(e.residual_rms);
+        d["degrees_of_freedom"] = e.degrees_of_freedom;
+        d["parameters"] = to_numpy(e.parameters);
+        py::dict consistency;
+        for (int b = 1; b < model.num_bodies(); ++b)
+          consistency[py::str(model.body(b).name)] = e.consistency[b - 1].verdict();
+        d["consistency"] = consistency;
+        return d;
+      },
+      py::arg("model"), py::arg("q"), py::arg("v"), py::arg("vdot"), py::arg("tau"),
+      "The base inertial parameters estimated from N measured samples — q (N, nq), v, vdot and "
+      "tau (N, nv) — by weighted least squares, as `momenta identify` does: base_parameters' "
+      "dict with `estimate`, `standard_error`, `lower` and `upper` (95 %), `covariance`, "
+      "`correlation`, each coordinate's `noise` and `residual_rms`, `degrees_of_freedom`, a full "
+      "π that gives the estimate (`parameters`) and each body's `consistency` in words.");
+}
+
+}  // namespace momenta::python

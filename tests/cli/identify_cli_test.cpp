@@ -1,0 +1,107 @@
+// `momenta identify`, run as a user runs it on the bundled arm's log (efforts from the textbook's
+// closed form with noise, make_two_link_arm_log.py): its JSON is the library's estimate bit for
+// bit, the estimates hold the built arm's base parameters, the text names each quantity with its
+// unit, and bad data is one line naming the file, line and column.
+
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli_runner.hpp"
+#include "momenta/identify/inertia_data.hpp"
+#include "momenta/io/measured_data.hpp"
+#include "momenta/io/model_file.hpp"
+
+namespace momenta {
+namespace {
+
+using nlohmann::json;
+using test::CliRun;
+
+class IdentifyCli : public test::CliTest {
+ protected:
+  static std::string example(const std::string& name) {
+    return (std::filesystem::current_path() / "examples" / "identification" / name).string();
+  }
+  static std::string arm_command(const std::string& data) {
+    return "identify " + test::quoted(example("two_link_arm.yaml")) + " --data " +
+           test::quoted(data);
+  }
+};
+
+// The built arm (Spong's §7.4.1 figures in the example's header): 0, −(m1 lc1 + m2 l1),
+// I1 + m1 lc1² + m2 l1², 0, −m2 lc2, I2 + m2 lc2² — each within 4 standard errors of the estimate.
+TEST_F(IdentifyCli, TheBundledArmsLogGivesTheBuiltArmsBaseParameters) {
+  const CliRun r = momenta(arm_command(example("two_link_arm_log.csv")) + " --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  const double built[6] = {
+      0.0,        -(2.0 * 0.35 + 1.5 * 0.8), 0.12 + 2.0 * 0.35 * 0.35 + 1.5 * 0.64, 0.0,
+      -1.5 * 0.4, 0.06 + 1.5 * 0.16};
+  ASSERT_EQ(j.at("base_parameters").size(), 6u);
+  for (int k = 0; k < 6; ++k) {
+    const json& p = j.at("base_parameters")[k];
+    EXPECT_LT(std::abs(p.at("estimate").get<double>() - built[k]),
+              4 * p.at("standard_error").get<double>())
+        << p.at("name");
+  }
+  EXPECT_EQ(j.at("base_parameters")[2].at("name"), "upper.I_yy + 0.64·lower.m");
+  EXPECT_EQ(j.at("regrouped"), json({"lower.m"}));
+  EXPECT_EQ(j.at("samples"), 501);
+
+  // The library on the same file gives the same numbers, bit for bit.
+  const io::ModelFile file = io::read_model_file(example("two_link_arm.yaml"));
+  const io::MeasuredTable table = io::read_measured_csv(example("two_link_arm_log.csv"));
+  const identify::InertiaEstimate e = identify::estimate_inertia(
+      file.model, identify::inertia_samples(file.model, table.columns, table.values, table.source),
+      identify::base_parameters(file.model));
+  for (int k = 0; k < 6; ++k) {
+    EXPECT_EQ(j.at("base_parameters")[k].at("estimate").get<double>(), e.beta[k]);
+    EXPECT_EQ(j.at("base_parameters")[k].at("standard_error").get<double>(), e.standard_error[k]);
+  }
+  EXPECT_NEAR(j.at("noise").at("shoulder.effort").get<double>(), 0.02, 0.002);
+}
+
+TEST_F(IdentifyCli, TextNamesEachQuantityWithItsUnit) {
+  const CliRun r = momenta(arm_command(example("two_link_arm_log.csv")));
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* expected :
+       {"6 of the 20 inertial parameters are identifiable from joint efforts (996 degrees of "
+        "freedom)",
+        "upper.I_yy + 0.64·lower.m   kg·m²", "95 % interval", "shoulder.effort: σ 0.02",
+        " N·m, RMS ", "regrouped (told only in the combinations above): lower.m",
+        "never felt by the joints (no data of this kind can tell them): upper.m,",
+        "lower: consistent (with lower.m = 1.2 kg from the model)"}) {
+    EXPECT_NE(r.out.find(expected), std::string::npos) << expected << "\n" << r.out;
+  }
+}
+
+TEST_F(IdentifyCli, BadDataIsOneLineNamingFileLineAndColumn) {
+  const auto error_of = [&](const std::string& csv) {
+    const CliRun r = momenta(arm_command(write("log.csv", csv).string()));
+    EXPECT_EQ(r.code, 1) << r.err;
+    return r.err;
+  };
+  std::string log = test::slurp(example("two_link_arm_log.csv"));
+  const std::string header = log.substr(0, log.find('\n') + 1);
+  EXPECT_NE(error_of(header + "0,1,1,1,1,1,1,1,1\n0,1,1,1,1,1,1,1,1\n")
+                .find("log.csv:3: time must increase: 0 does not come after 0"),
+            std::string::npos);
+  EXPECT_NE(error_of(header + "0,1,1,1,nan,1,1,1,1\n")
+                .find("log.csv:2: column 'elbow.angle_rate': 'nan' is not a finite number"),
+            std::string::npos);
+  EXPECT_NE(error_of(header + "0,1,1,1\n").find("log.csv:2: 4 values for the header's 9 columns"),
+            std::string::npos);
+  std::string misspelt = header;
+  misspelt.replace(misspelt.find("elbow.effort"), 12, "elbow.efort");
+  const std::string missing = error_of(misspelt + "0,1,1,1,1,1,1,1,1\n");
+  EXPECT_NE(missing.find("log.csv: no column 'elbow.effort' (the effort the actuator applied "
+                         "along elbow.angle_rate) (did you mean 'elbow.efort'?)"),
+            std::string::npos)
+      << missing;
+  EXPECT_EQ(std::count(missing.begin(), missing.end(), '\n'), 1);
+}
+
+}  // namespace
+}  // namespace momenta
