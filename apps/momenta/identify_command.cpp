@@ -4,7 +4,9 @@
 // cannot tell, and the physical consistency of the result. Documented in docs/identification.md.
 
 #include <algorithm>
+#include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
@@ -13,10 +15,13 @@
 
 #include "commands.hpp"
 #include "model_argument.hpp"
+#include "momenta/common/error.hpp"
 #include "momenta/common/number_text.hpp"
 #include "momenta/identify/inertia_data.hpp"
 #include "momenta/io/measured_data.hpp"
 #include "momenta/model/units.hpp"
+#include "momenta/report/report.hpp"
+#include "option_checks.hpp"
 #include "output_format.hpp"
 
 namespace momenta::cli {
@@ -28,6 +33,8 @@ struct IdentifyOptions {
   ModelArgument model;
   std::string data;
   bool json = false;
+  std::optional<std::string> report;
+  bool force = false;
 };
 
 // A correlation this large means the data barely separates the two parameters.
@@ -162,7 +169,56 @@ void print_estimate(const model::Model& model, const identify::InertiaEstimate& 
   }
 }
 
+report::IdentificationResults page_results(const io::ModelFile& file,
+                                           const identify::InertiaEstimate& e,
+                                           const VecX& model_beta, const io::MeasuredTable& table,
+                                           const identify::InertiaSamples& samples,
+                                           const std::string& model_file) {
+  const model::Model& model = file.model;
+  report::IdentificationResults r;
+  r.title = file.name;
+  r.model_source = model_file;
+  r.data_source = table.source;
+  r.samples = e.samples;
+  r.degrees_of_freedom = e.degrees_of_freedom;
+  r.num_parameters = e.base.num_parameters;
+  if (const auto time = table.find("time")) {
+    r.time.assign(table.values.col(*time).data(),
+                  table.values.col(*time).data() + table.values.rows());
+  }
+  const std::vector<std::string> columns = identify::inertia_data_columns(model);
+  for (int i = 0; i < model.nv(); ++i) {
+    r.efforts.push_back(columns[columns.size() - model.nv() + i]);
+    r.effort_units.push_back(model::effort_unit(model, i));
+    const VecX measured = samples.tau.col(i), fitted = e.fitted.col(i);
+    r.measured.emplace_back(measured.data(), measured.data() + measured.size());
+    r.fitted.emplace_back(fitted.data(), fitted.data() + fitted.size());
+    r.noise.push_back(e.noise[i]);
+    r.residual_rms.push_back(e.residual_rms[i]);
+  }
+  for (int k = 0; k < e.base.rank(); ++k) {
+    r.estimates.push_back({e.base.describe(model, k), unit_of(e.base.independent[k]), e.beta[k],
+                           e.standard_error[k], e.lower[k], e.upper[k], model_beta[k]});
+  }
+  for (int a = 0; a < e.base.rank(); ++a) {
+    const VecX row = e.correlation.row(a);
+    r.correlation.emplace_back(row.data(), row.data() + row.size());
+  }
+  r.never_felt = names_of(model, e.base.no_effect);
+  r.regrouped = names_of(model, regrouped(e.base));
+  for (int b = 1; b < model.num_bodies(); ++b) {
+    r.bodies.push_back(
+        {model.body(b).name, e.consistency[b - 1].verdict(), e.consistency[b - 1].consistent()});
+  }
+  return r;
+}
+
 void run(const IdentifyOptions& o) {
+  // Refused before any work: the user's file is never overwritten without --force.
+  if (o.report && std::filesystem::exists(*o.report) && !o.force) {
+    throw FileError(
+        fmt::format("{}: the report file exists; pass --force to overwrite it", *o.report));
+  }
   const io::ModelFile file = load_model(o.model);
   const model::Model& model = file.model;
   const io::MeasuredTable table = io::read_measured_csv(o.data);
@@ -171,11 +227,18 @@ void run(const IdentifyOptions& o) {
   const identify::BaseParameters base = identify::base_parameters(model);
   const identify::InertiaEstimate e = identify::estimate_inertia(model, samples, base);
   const VecX model_beta = base.base_of(identify::inertial_parameters(model));
+  if (o.report) {
+    report::write_report(*o.report,
+                         report::identification_report_html(
+                             page_results(file, e, model_beta, table, samples, o.model.file)),
+                         o.force);
+  }
   if (o.json) {
     fmt::print("{}\n", json_text(estimate_json(model, e, model_beta, table)));
-    return;
+  } else {
+    print_estimate(model, e, model_beta, table, o.model.file);
   }
-  print_estimate(model, e, model_beta, table, o.model.file);
+  if (o.report) fmt::print(stderr, "wrote {}\n", *o.report);
 }
 
 }  // namespace
@@ -195,10 +258,16 @@ void add_identify_command(CLI::App& app) {
       ->required()
       ->check(CLI::ExistingFile);
   command->add_flag("--json", options->json, "Print JSON instead of text");
+  command
+      ->add_option("--report", options->report,
+                   "Also write the identification's HTML page: measured and fitted efforts, "
+                   "residuals, estimates with intervals, the correlations as a heat map")
+      ->check(not_a_folder());
+  command->add_flag("--force", options->force, "Overwrite the report file if it exists");
   command->footer(
       "Example:\n"
       "  momenta identify examples/identification/two_link_arm.yaml \\\n"
-      "      --data examples/identification/two_link_arm_log.csv\n"
+      "      --data examples/identification/two_link_arm_log.csv --report arm.html\n"
       "Columns, method and what is tested: docs/identification.md.");
   command->callback([options] { run(*options); });
 }

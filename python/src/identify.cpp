@@ -103,6 +103,7 @@ void bind_identify(py::module_& m) {
         d["correlation"] = to_numpy(e.correlation);
         d["noise"] = to_numpy(e.noise);
         d["residual_rms"] = to_numpy(e.residual_rms);
+        d["fitted"] = to_numpy(e.fitted);
         d["degrees_of_freedom"] = e.degrees_of_freedom;
         d["parameters"] = to_numpy(e.parameters);
         py::dict consistency;
@@ -115,7 +116,8 @@ void bind_identify(py::module_& m) {
       "The base inertial parameters estimated from N measured samples — q (N, nq), v, vdot and "
       "tau (N, nv) — by weighted least squares, as `momenta identify` does: base_parameters' "
       "dict with `estimate`, `standard_error`, `lower` and `upper` (95 %), `covariance`, "
-      "`correlation`, each coordinate's `noise` and `residual_rms`, `degrees_of_freedom`, a full "
+      "`correlation`, each coordinate's `noise` and `residual_rms`, the `fitted` efforts (N, nv), "
+      "`degrees_of_freedom`, a full "
       "π that gives the estimate (`parameters`) and each body's `consistency` in words.");
 }
 

@@ -197,7 +197,12 @@ InertiaEstimate estimate_inertia(const Model& model, const InertiaSamples& sampl
   const double t975 = boost::math::quantile(t, 0.975);
   e.lower = e.beta - t975 * e.standard_error;
   e.upper = e.beta + t975 * e.standard_error;
-  e.residual_rms = joint_rms(b - A * e.beta);
+  const VecX fitted = A * e.beta;
+  e.residual_rms = joint_rms(b - fitted);
+  e.fitted = samples.tau;
+  for (int s = 0; s < N; ++s) {
+    e.fitted.row(s) += (fitted.segment(s * nv, nv) - b.segment(s * nv, nv)).transpose();
+  }
 
   e.parameters = completed_parameters(model, base, e.beta);
   for (int body = 1; body < model.num_bodies(); ++body) {

@@ -774,4 +774,47 @@ test('sweep page: a scatter plot and parallel coordinates of every run, the numb
   await page.close();
 });
 
+test('identification page: measured and fitted efforts, residuals, estimates and their correlations, the numbers of the command line', async () => {
+  const file = path.join(work, 'arm.html');
+  const model = path.join(examples, 'identification', 'two_link_arm.yaml');
+  const log = path.join(examples, 'identification', 'two_link_arm_log.csv');
+  const printed = JSON.parse(run('identify', model, '--data', log, '--report', file, '--json'));
+  const data = csv(fs.readFileSync(log, 'utf8'));
+  const { page, problems } = await open(file);
+  assert.equal(await page.evaluate(() => window.momentaReport.kind), 'identification');
+  await page.evaluate(() => window.momentaReport.drawAllCharts());
+  const shown = await page.evaluate(() => ({
+    estimates: window.momentaReport.estimates(), rows: window.momentaReport.tableRows(),
+    shoulder: window.momentaReport.plotted('shoulder.effort'),
+    residual: window.momentaReport.plotted('elbow.effort residual'),
+    cells: window.momentaReport.heatMap(),
+    consistency: Array.from(document.querySelectorAll('#identifiability tbody tr')).map((tr) => tr.innerText),
+  }));
+  // The estimates are the command line's, bit for bit, each row named as `identify` names it.
+  assert.deepEqual(shown.estimates.map((e) => e.estimate), printed.base_parameters.map((p) => p.estimate));
+  assert.deepEqual(shown.rows.map((r) => r[0]), printed.base_parameters.map((p) => p.name));
+  assert.equal(shown.rows[2][1], 'kg·m²');
+  // The measured effort is the log's column, against its time; the fitted one beside it, within
+  // the noise (σ = 0.02 N·m: 5σ); both axes name their quantity and unit.
+  assert.deepEqual(shown.shoulder.x, data.column('time'));
+  assert.deepEqual(shown.shoulder.series[0].values, data.column('shoulder.effort'));
+  assert.deepEqual(shown.shoulder.axes, ['time (s)', 'shoulder.effort (N·m)']);
+  const gap = Math.max(...shown.shoulder.series[1].values.map((f, i) => Math.abs(f - shown.shoulder.series[0].values[i])));
+  assert.ok(gap < 0.1, `fitted ${gap} N·m from measured`);
+  // The residual's band is ±2σ of the noise found.
+  assert.equal(shown.residual.series[1].values[0], 2 * printed.noise['elbow.effort']);
+  assert.deepEqual(shown.residual.axes, ['time (s)', 'residual (N·m)']);
+  // The heat map: 6 × 6 cells, ones on the diagonal in full red, each cell's number the matrix's.
+  assert.equal(shown.cells.length, 36);
+  for (const c of shown.cells) {
+    assert.equal(c.text, printed.correlation[c.row][c.column].toFixed(2));
+    if (c.row === c.column) assert.equal(c.fill, 'rgb(214,39,40)');
+  }
+  assert.deepEqual(shown.consistency.map((t) => t.replace(/\s+/g, ' ').trim()), ['upper consistent', 'lower consistent']);
+  await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+  await page.screenshot({ path: path.join(artifacts, 'identification-page.png'), fullPage: true });
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
 after(() => fs.writeFileSync(path.join(artifacts, 'measured.json'), JSON.stringify(measured, null, 2)));

@@ -57,6 +57,8 @@ def test_the_arms_base_parameters_from_numpy_data():
     assert e["degrees_of_freedom"] == 2 * n - 6
     assert e["consistency"] == {"upper": "consistent", "lower": "consistent"}
     assert np.max(np.abs(e["regrouping"] @ e["parameters"] - e["estimate"])) < 1e-12
+    # The fitted efforts differ from the measured by the noise alone (5σ).
+    assert np.max(np.abs(e["fitted"] - tau)) < 5 * 0.03
 
 
 def test_estimate_is_the_command_lines():

@@ -47,6 +47,16 @@ export function element(tag, attributes = {}, ...children) {
   return node;
 }
 
+const SVG = 'http://www.w3.org/2000/svg';
+
+// An SVG element with its attributes and children (the pages' own diagrams: sweep, heat map).
+export function svg(tag, attributes = {}, ...children) {
+  const node = document.createElementNS(SVG, tag);
+  for (const [key, value] of Object.entries(attributes)) node.setAttribute(key, value);
+  for (const child of children) node.append(child);
+  return node;
+}
+
 export function table(headers, rows) {
   return element('table', {},
     element('thead', {}, element('tr', {}, ...headers.map((h) => element('th', {}, h)))),

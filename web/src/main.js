@@ -7,6 +7,7 @@ import { decode, element, readData } from './data.js';
 import { campbellSection } from './campbell.js';
 import { diagramsSection } from './diagrams.js';
 import { equationsSection } from './equations.js';
+import { identificationPage } from './identification.js';
 import { inertiaPage } from './inertia.js';
 import { linearSection } from './linear.js';
 import { loopsSection } from './loops.js';
@@ -99,7 +100,7 @@ function start() {
   const app = document.getElementById('app');
   const started = performance.now();
   const data = readData();
-  const pages = { inertia: inertiaPage, sweep: sweepPage };
+  const pages = { inertia: inertiaPage, sweep: sweepPage, identification: identificationPage };
   const hook = (pages[data.kind] ?? simulationPage)(app, data);
   hook.loadMilliseconds = performance.now() - started;
   hook.ready = true;

@@ -2,16 +2,7 @@
 // column against any other, and parallel coordinates of every column, a line per run. Drawn as
 // SVG, so that what the page shows can be read back (the browser test counts its marks).
 
-import { decode, element, formatNumber } from './data.js';
-
-const SVG = 'http://www.w3.org/2000/svg';
-
-function svg(tag, attributes = {}, ...children) {
-  const node = document.createElementNS(SVG, tag);
-  for (const [key, value] of Object.entries(attributes)) node.setAttribute(key, value);
-  for (const child of children) node.append(child);
-  return node;
-}
+import { decode, element, formatNumber, svg } from './data.js';
 
 function extent(values) {
   let low = Infinity;

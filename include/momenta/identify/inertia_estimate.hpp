@@ -33,6 +33,7 @@ struct InertiaEstimate {
   MatX correlation;     ///< Of β: covariance scaled to unit diagonal.
   VecX noise;           ///< σ_j of each joint (N·m or N), from the residuals.
   VecX residual_rms;    ///< Each joint's RMS residual at the estimate.
+  MatX fitted;  ///< The efforts the estimate gives at each sample (N × nv): Y_I β + armature ∘ v̇.
   int samples = 0;
   int degrees_of_freedom = 0;  ///< N nv − rank.
   /// A full π that gives β: the independent parameters solved from β with the model's values

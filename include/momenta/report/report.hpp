@@ -118,6 +118,35 @@ struct SweepResults {
 /// metric, one line per run coloured by the first metric.
 std::string sweep_report_html(const SweepResults& results);
 
+/// What an identification's page shows (`momenta identify --report`), filled by the front end
+/// from identify::InertiaEstimate (the report layer sits beside identify, not above it).
+struct IdentificationResults {
+  std::string title;                      ///< the model's name
+  std::string model_source, data_source;  ///< the files
+  int samples = 0, degrees_of_freedom = 0, num_parameters = 0;
+  std::vector<double> time;  ///< each sample's time (s); empty: the data has no time column
+  std::vector<std::string> efforts, effort_units;     ///< one per coordinate: the columns fitted
+  std::vector<std::vector<double>> measured, fitted;  ///< per effort, one value per sample
+  std::vector<double> noise, residual_rms;            ///< per effort
+  struct Estimate {
+    std::string name, unit;  ///< the base parameter in words, its unit
+    double estimate = 0, standard_error = 0, lower = 0, upper = 0, model = 0;
+  };
+  std::vector<Estimate> estimates;
+  std::vector<std::vector<double>> correlation;  ///< of the estimates, row by row
+  std::vector<std::string> never_felt, regrouped;
+  struct Body {
+    std::string name, verdict;
+    bool consistent = false;
+  };
+  std::vector<Body> bodies;
+};
+
+/// The identification's page: measured and fitted efforts against time, their residuals with the
+/// noise found, the estimates with their 95 % intervals beside the model's values, the
+/// correlation matrix as a heat map, what the data cannot tell and each body's consistency.
+std::string identification_report_html(const IdentificationResults& results);
+
 /// Writes `html` to `path`. An existing file is kept (FileError naming it and --force) unless
 /// `overwrite`; a failed write leaves no partial file (written to a temporary name, then renamed).
 void write_report(const std::filesystem::path& path, const std::string& html, bool overwrite);

@@ -40,10 +40,12 @@ TEST(InertiaEstimate, FromExactTorquesIsTheClosedFormsBeta) {
   const test::TwoLinkArm arm;
   const Model model = arm.model();
   std::mt19937 rng(11);
-  const InertiaEstimate e =
-      estimate_inertia(model, closed_form_samples(arm, 40, 0.0, rng), base_parameters(model));
+  const InertiaSamples samples = closed_form_samples(arm, 40, 0.0, rng);
+  const InertiaEstimate e = estimate_inertia(model, samples, base_parameters(model));
   EXPECT_LT((e.beta - textbook_beta(arm)).cwiseAbs().maxCoeff(), 1e-11);
   EXPECT_LT(e.residual_rms.maxCoeff(), 1e-11);
+  // The fitted efforts are the measured ones (the report's red line on the grey).
+  EXPECT_LT((e.fitted - samples.tau).cwiseAbs().maxCoeff(), 1e-11);
   for (const PhysicalConsistency& c : e.consistency) EXPECT_TRUE(c.consistent()) << c.verdict();
 }
 

@@ -1,0 +1,51 @@
+#include <fmt/format.h>
+
+#include "momenta/report/report.hpp"
+#include "page_data.hpp"
+
+namespace momenta::report {
+
+std::string identification_report_html(const IdentificationResults& r) {
+  using detail::json;
+  json data;
+  data["kind"] = "identification";
+  data["title"] = r.title;
+  data["model_source"] = r.model_source;
+  data["data_source"] = r.data_source;
+  data["samples"] = r.samples;
+  data["degrees_of_freedom"] = r.degrees_of_freedom;
+  data["num_parameters"] = r.num_parameters;
+  data["time"] = r.time.empty() ? json(nullptr) : json(detail::encode_f64(r.time));
+  json efforts = json::array();
+  for (std::size_t k = 0; k < r.efforts.size(); ++k) {
+    efforts.push_back({{"name", r.efforts[k]},
+                       {"unit", r.effort_units[k]},
+                       {"measured", detail::encode_f64(r.measured[k])},
+                       {"fitted", detail::encode_f64(r.fitted[k])},
+                       {"noise", r.noise[k]},
+                       {"residual_rms", r.residual_rms[k]}});
+  }
+  data["efforts"] = std::move(efforts);
+  json estimates = json::array();
+  for (const IdentificationResults::Estimate& e : r.estimates) {
+    estimates.push_back({{"name", e.name},
+                         {"unit", e.unit},
+                         {"estimate", e.estimate},
+                         {"standard_error", e.standard_error},
+                         {"lower", e.lower},
+                         {"upper", e.upper},
+                         {"model", e.model}});
+  }
+  data["estimates"] = std::move(estimates);
+  data["correlation"] = r.correlation;
+  data["never_felt"] = r.never_felt;
+  data["regrouped"] = r.regrouped;
+  json bodies = json::array();
+  for (const IdentificationResults::Body& b : r.bodies) {
+    bodies.push_back({{"name", b.name}, {"verdict", b.verdict}, {"consistent", b.consistent}});
+  }
+  data["bodies"] = std::move(bodies);
+  return detail::html_page(fmt::format("{} — momenta identify", r.title), data);
+}
+
+}  // namespace momenta::report
