@@ -59,6 +59,25 @@ std::vector<int> regrouped(const identify::BaseParameters& base) {
   return out;
 }
 
+// The effort column of each velocity coordinate.
+std::vector<std::string> effort_names(const model::Model& model) {
+  const std::vector<std::string> columns = identify::inertia_data_columns(model);
+  return {columns.end() - model.nv(), columns.end()};
+}
+
+// The least-determined combination in words: its entries above 0.1, "0.71 [upper.h_x] − 0.7
+// [lower.h_x]" (in the scaling of InertiaEstimate::excitation).
+std::string least_determined_text(const model::Model& model, const identify::InertiaEstimate& e) {
+  std::string text;
+  for (int k = 0; k < e.least_determined.size(); ++k) {
+    const double c = e.least_determined[k];
+    if (std::abs(c) < 0.1) continue;
+    text += fmt::format("{}{} [{}]", text.empty() ? (c < 0 ? "−" : "") : (c < 0 ? " − " : " + "),
+                        number_text(std::abs(c), 2), e.base.describe(model, k));
+  }
+  return text;
+}
+
 json estimate_json(const model::Model& model, const identify::InertiaEstimate& e,
                    const VecX& model_beta, const io::MeasuredTable& table) {
   json j;
@@ -79,14 +98,25 @@ json estimate_json(const model::Model& model, const identify::InertiaEstimate& e
   j["base_parameters"] = std::move(base);
   j["correlation"] = matrix_json(e.correlation);
   json noise = json::object(), rms = json::object();
-  const std::vector<std::string> columns = identify::inertia_data_columns(model);
+  const std::vector<std::string> efforts = effort_names(model);
   for (int i = 0; i < model.nv(); ++i) {
-    const std::string& effort = columns[columns.size() - model.nv() + i];
+    const std::string& effort = efforts[i];
     noise[effort] = e.noise[i];
     rms[effort] = e.residual_rms[i];
   }
   j["noise"] = std::move(noise);
   j["residual_rms"] = std::move(rms);
+  j["excitation"] = {
+      {"singular_values",
+       json(std::vector<double>(e.excitation.data(), e.excitation.data() + e.excitation.size()))},
+      {"condition_number", e.condition_number},
+      {"least_determined",
+       json(std::vector<double>(e.least_determined.data(),
+                                e.least_determined.data() + e.least_determined.size()))},
+      {"least_determined_text", least_determined_text(model, e)}};
+  json white = json::object();
+  for (int i = 0; i < model.nv(); ++i) white[effort_names(model)[i]] = e.whiteness_p[i];
+  j["whiteness"] = {{"lags", e.whiteness_lags}, {"p", std::move(white)}};
   j["never_felt"] = names_of(model, e.base.no_effect);
   j["regrouped"] = names_of(model, regrouped(e.base));
   json bodies = json::array();
@@ -127,12 +157,35 @@ void print_estimate(const model::Model& model, const identify::InertiaEstimate& 
                number_text(shown_value(model_beta[k], std::abs(model_beta[k])), 6));
   }
   fmt::print("\nnoise (from the residuals) and residual RMS per effort:\n");
-  const std::vector<std::string> columns = identify::inertia_data_columns(model);
   for (int i = 0; i < model.nv(); ++i) {
     const std::string unit = model::effort_unit(model, i);
-    fmt::print("  {}: σ {} {}, RMS {} {}\n", columns[columns.size() - model.nv() + i],
-               number_text(e.noise[i], 4), unit, number_text(e.residual_rms[i], 4), unit);
+    fmt::print("  {}: σ {} {}, RMS {} {}\n", effort_names(model)[i], number_text(e.noise[i], 4),
+               unit, number_text(e.residual_rms[i], 4), unit);
   }
+  fmt::print("\nexcitation: condition number {} of the scaled regressor (singular values {})\n",
+             number_text(e.condition_number, 3),
+             fmt::join(std::vector<std::string>([&] {
+                         std::vector<std::string> v;
+                         for (double x : e.excitation) v.push_back(number_text(x, 2));
+                         return v;
+                       }()),
+                       ", "));
+  if (e.condition_number > identify::kPoorExcitation) {
+    fmt::print("poorly excited (above {}): least determined by this data: {}\n",
+               identify::kPoorExcitation, least_determined_text(model, e));
+  }
+  const std::vector<std::string> efforts = effort_names(model);
+  std::vector<std::string> white;
+  bool all_white = true;
+  for (int i = 0; i < model.nv(); ++i) {
+    white.push_back(fmt::format("{} p = {}", efforts[i], number_text(e.whiteness_p[i], 2)));
+    all_white = all_white && e.whiteness_p[i] >= identify::kWhitenessLevel;
+  }
+  fmt::print("residuals (Ljung–Box over {} lags): {} — {}\n", e.whiteness_lags,
+             fmt::join(white, ", "),
+             all_white ? "white, as noise is"
+                       : "correlated: the model's structure misses something the data has "
+                         "(joint friction? a flexible link? a wrong length?)");
   std::vector<std::string> strong;
   for (int a = 0; a < base.rank(); ++a) {
     for (int b = a + 1; b < base.rank(); ++b) {
@@ -186,9 +239,8 @@ report::IdentificationResults page_results(const io::ModelFile& file,
     r.time.assign(table.values.col(*time).data(),
                   table.values.col(*time).data() + table.values.rows());
   }
-  const std::vector<std::string> columns = identify::inertia_data_columns(model);
+  r.efforts = effort_names(model);
   for (int i = 0; i < model.nv(); ++i) {
-    r.efforts.push_back(columns[columns.size() - model.nv() + i]);
     r.effort_units.push_back(model::effort_unit(model, i));
     const VecX measured = samples.tau.col(i), fitted = e.fitted.col(i);
     r.measured.emplace_back(measured.data(), measured.data() + measured.size());
@@ -206,6 +258,13 @@ report::IdentificationResults page_results(const io::ModelFile& file,
   }
   r.never_felt = names_of(model, e.base.no_effect);
   r.regrouped = names_of(model, regrouped(e.base));
+  r.excitation.assign(e.excitation.data(), e.excitation.data() + e.excitation.size());
+  r.condition_number = e.condition_number;
+  r.least_determined = least_determined_text(model, e);
+  r.poor_excitation = identify::kPoorExcitation;
+  r.whiteness_p.assign(e.whiteness_p.data(), e.whiteness_p.data() + e.whiteness_p.size());
+  r.whiteness_lags = e.whiteness_lags;
+  r.whiteness_level = identify::kWhitenessLevel;
   for (int b = 1; b < model.num_bodies(); ++b) {
     r.bodies.push_back(
         {model.body(b).name, e.consistency[b - 1].verdict(), e.consistency[b - 1].consistent()});

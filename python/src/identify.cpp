@@ -104,6 +104,10 @@ void bind_identify(py::module_& m) {
         d["noise"] = to_numpy(e.noise);
         d["residual_rms"] = to_numpy(e.residual_rms);
         d["fitted"] = to_numpy(e.fitted);
+        d["excitation"] = to_numpy(e.excitation);
+        d["condition_number"] = e.condition_number;
+        d["least_determined"] = to_numpy(e.least_determined);
+        d["whiteness_p"] = to_numpy(e.whiteness_p);
         d["degrees_of_freedom"] = e.degrees_of_freedom;
         d["parameters"] = to_numpy(e.parameters);
         py::dict consistency;
@@ -117,6 +121,9 @@ void bind_identify(py::module_& m) {
       "tau (N, nv) — by weighted least squares, as `momenta identify` does: base_parameters' "
       "dict with `estimate`, `standard_error`, `lower` and `upper` (95 %), `covariance`, "
       "`correlation`, each coordinate's `noise` and `residual_rms`, the `fitted` efforts (N, nv), "
+      "the data's `excitation` (relative singular values of the scaled regressor), "
+      "`condition_number` and `least_determined` combination, each effort's `whiteness_p` "
+      "(Ljung–Box), "
       "`degrees_of_freedom`, a full "
       "π that gives the estimate (`parameters`) and each body's `consistency` in words.");
 }

@@ -7,6 +7,8 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
+#include <Eigen/SVD>
+#include <boost/math/distributions/chi_squared.hpp>
 #include <boost/math/distributions/students_t.hpp>
 
 #include "momenta/common/error.hpp"
@@ -38,6 +40,37 @@ void check_samples(const Model& model, const InertiaSamples& s) {
   check(s.v, "v", model.nv(), "nv");
   check(s.vdot, "vdot", model.nv(), "nv");
   check(s.tau, "tau", model.nv(), "nv");
+}
+
+// The model's own size of parameter k: a mass the bodies' mean mass M, a first moment M L, an
+// inertia M L², with L the bodies' radius of gyration about their own origins, √(Σ tr I_O / 2
+// Σ m) (1 m for a model without mass, where any scale serves).
+double parameter_scale(const Model& model, int k) {
+  double mass = 0.0, trace = 0.0;
+  for (int b = 1; b < model.num_bodies(); ++b) {
+    mass += model.spatial_inertia(b).mass;
+    trace += model.spatial_inertia(b).I_O.trace();
+  }
+  const double M = mass > 0.0 ? mass / (model.num_bodies() - 1) : 1.0;
+  const double L = mass > 0.0 && trace > 0.0 ? std::sqrt(trace / (2.0 * mass)) : 1.0;
+  const int kind = k % kParametersPerBody;
+  return kind == 0 ? M : kind < 4 ? M * L : M * L * L;
+}
+
+// The Ljung–Box statistic of a sequence over lags 1 … m and its p-value under χ²(m) (Ljung &
+// Box 1978): Q = N (N + 2) Σ ρ_k² / (N − k), ρ_k the sample autocorrelation at lag k.
+double ljung_box_p(const VecX& x, int m) {
+  const Eigen::Index N = x.size();
+  const VecX centred = x.array() - x.mean();
+  const double c0 = centred.squaredNorm();
+  if (!(c0 > 0.0) || m < 1) return 1.0;
+  double Q = 0.0;
+  for (int k = 1; k <= m; ++k) {
+    const double rho = centred.head(N - k).dot(centred.tail(N - k)) / c0;
+    Q += rho * rho / double(N - k);
+  }
+  Q *= double(N) * double(N + 2);
+  return boost::math::cdf(boost::math::complement(boost::math::chi_squared(m), Q));
 }
 
 // Row and column of I_O's entry k (4 … 9 of a body's ten).
@@ -202,6 +235,29 @@ InertiaEstimate estimate_inertia(const Model& model, const InertiaSamples& sampl
   e.fitted = samples.tau;
   for (int s = 0; s < N; ++s) {
     e.fitted.row(s) += (fitted.segment(s * nv, nv) - b.segment(s * nv, nv)).transpose();
+  }
+
+  // Excitation: the weighted regressor's singular values with each column scaled by the model's
+  // own size of its parameter (parameter_scale).
+  VecX scale(r);
+  for (int i = 0; i < r; ++i) scale[i] = parameter_scale(model, base.independent[i]);
+  const MatX scaled = Aw * scale.asDiagonal();
+  const Eigen::JacobiSVD<MatX> svd(scaled, Eigen::ComputeThinV);
+  const VecX& sigma = svd.singularValues();
+  e.excitation = sigma / sigma[0];
+  e.condition_number = sigma[0] / sigma[r - 1];
+  e.least_determined = svd.matrixV().col(r - 1);
+  if (e.least_determined.cwiseAbs().maxCoeff() != e.least_determined.maxCoeff())
+    e.least_determined = -e.least_determined;  // its largest entry positive: one sign every call
+
+  // Whiteness of each joint's residuals, in sample order.
+  e.whiteness_lags = std::min(20, N / 5);
+  e.whiteness_p = VecX::Ones(nv);
+  const VecX residual = b - fitted;
+  for (int j = 0; j < nv; ++j) {
+    VecX sequence(N);
+    for (int s = 0; s < N; ++s) sequence[s] = residual[s * nv + j];
+    e.whiteness_p[j] = ljung_box_p(sequence, e.whiteness_lags);
   }
 
   e.parameters = completed_parameters(model, base, e.beta);

@@ -40,6 +40,12 @@ std::string identification_report_html(const IdentificationResults& r) {
   data["correlation"] = r.correlation;
   data["never_felt"] = r.never_felt;
   data["regrouped"] = r.regrouped;
+  data["excitation"] = {{"singular_values", r.excitation},
+                        {"condition_number", r.condition_number},
+                        {"least_determined", r.least_determined},
+                        {"poor", r.poor_excitation}};
+  data["whiteness"] = {
+      {"p", r.whiteness_p}, {"lags", r.whiteness_lags}, {"level", r.whiteness_level}};
   json bodies = json::array();
   for (const IdentificationResults::Body& b : r.bodies) {
     bodies.push_back({{"name", b.name}, {"verdict", b.verdict}, {"consistent", b.consistent}});

@@ -811,6 +811,13 @@ test('identification page: measured and fitted efforts, residuals, estimates and
     if (c.row === c.column) assert.equal(c.fill, 'rgb(214,39,40)');
   }
   assert.deepEqual(shown.consistency.map((t) => t.replace(/\s+/g, ' ').trim()), ['upper consistent', 'lower consistent']);
+  // The excitation and the residuals' whiteness, as the command line words them.
+  const words = await page.evaluate(() => ({
+    least: document.querySelector('#identifiability .least-determined').textContent,
+    white: Array.from(document.querySelectorAll('#effort-noise tbody tr')).map((tr) => tr.lastChild.textContent),
+  }));
+  assert.equal(words.least, printed.excitation.least_determined_text);
+  assert.deepEqual(words.white.map((w) => w.endsWith(': white')), [true, true]);
   await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
   await page.screenshot({ path: path.join(artifacts, 'identification-page.png'), fullPage: true });
   assert.deepEqual(problems, []);

@@ -3,6 +3,7 @@
 // bit, the estimates hold the built arm's base parameters, the text names each quantity with its
 // unit, and bad data is one line naming the file, line and column.
 
+#include <random>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -12,6 +13,7 @@
 #include "momenta/identify/inertia_data.hpp"
 #include "momenta/io/measured_data.hpp"
 #include "momenta/io/model_file.hpp"
+#include "momenta_test/two_link_arm.hpp"
 
 namespace momenta {
 namespace {
@@ -75,6 +77,48 @@ TEST_F(IdentifyCli, TextNamesEachQuantityWithItsUnit) {
         "lower: consistent (with lower.m = 1.2 kg from the model)"}) {
     EXPECT_NE(r.out.find(expected), std::string::npos) << expected << "\n" << r.out;
   }
+}
+
+// A slow log (the arm weighed more than accelerated) is called poorly excited, naming the
+// moments of inertia as what it barely tells; a log whose efforts carry joint friction the model
+// lacks is called correlated. Both logs written here from Spong's closed form.
+TEST_F(IdentifyCli, SaysWhenTheExperimentOrTheModelFallsShort) {
+  const test::TwoLinkArm arm;
+  const auto log = [&](double speed, double friction) {
+    std::mt19937 rng(19);
+    std::normal_distribution<double> noise(0.0, 0.01);
+    std::string text = test::slurp(example("two_link_arm_log.csv"));
+    std::string out = text.substr(0, text.find('\n') + 1);
+    for (int i = 0; i < 300; ++i) {
+      const double t = 0.02 * i;
+      const Eigen::Vector2d q(1.2 * std::sin(0.9 * t) + 0.5 * std::sin(2.3 * t + 1),
+                              std::sin(1.3 * t + 0.5) + 0.6 * std::sin(2.9 * t + 2.5));
+      const Eigen::Vector2d v =
+          speed * Eigen::Vector2d(1.08 * std::cos(0.9 * t) + 1.15 * std::cos(2.3 * t + 1),
+                                  1.3 * std::cos(1.3 * t + 0.5) + 1.74 * std::cos(2.9 * t + 2.5));
+      const Eigen::Vector2d a =
+          speed *
+          Eigen::Vector2d(-0.972 * std::sin(0.9 * t) - 2.645 * std::sin(2.3 * t + 1),
+                          -1.69 * std::sin(1.3 * t + 0.5) - 5.046 * std::sin(2.9 * t + 2.5));
+      const Eigen::Vector2d tau =
+          arm.torque(q, v, a) + friction * v + Eigen::Vector2d(noise(rng), noise(rng));
+      out += fmt::format("{},{},{},{},{},{},{},{},{}\n", t, q[0], q[1], v[0], v[1], a[0], a[1],
+                         tau[0], tau[1]);
+    }
+    return write(fmt::format("log_{}_{}.csv", speed, friction), out).string();
+  };
+  const CliRun slow = momenta(arm_command(log(0.01, 0.0)));
+  ASSERT_EQ(slow.code, 0) << slow.err;
+  EXPECT_NE(slow.out.find("poorly excited (above 100): least determined by this data: "),
+            std::string::npos)
+      << slow.out;
+  EXPECT_NE(slow.out.find("[upper.I_yy + 0.64·lower.m]"), std::string::npos) << slow.out;
+  const CliRun rubbing = momenta(arm_command(log(1.0, 0.3)));
+  ASSERT_EQ(rubbing.code, 0) << rubbing.err;
+  EXPECT_EQ(rubbing.out.find("poorly excited"), std::string::npos) << rubbing.out;
+  EXPECT_NE(rubbing.out.find("correlated: the model's structure misses something the data has"),
+            std::string::npos)
+      << rubbing.out;
 }
 
 TEST_F(IdentifyCli, BadDataIsOneLineNamingFileLineAndColumn) {

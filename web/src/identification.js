@@ -49,8 +49,17 @@ function effortsSection(data, charts, drawn) {
         { name: '+2σ', data: x.map(() => band), color: '#000', width: 1, dash: [5, 4] },
         { name: '−2σ', data: x.map(() => -band), color: '#000', width: 1, dash: [5, 4] }], shown: Infinity })));
   });
-  section.append(table(['effort', 'noise σ (from the residuals)', 'residual RMS'],
-    data.efforts.map((e) => [e.name, `${formatNumber(e.noise, 4)} ${e.unit}`, `${formatNumber(e.residual_rms, 4)} ${e.unit}`])));
+  const white = data.whiteness;
+  const noise = table(['effort', 'noise σ (from the residuals)', 'residual RMS', `whiteness (Ljung–Box p, ${white.lags} lags)`],
+    data.efforts.map((e, k) => [e.name, `${formatNumber(e.noise, 4)} ${e.unit}`, `${formatNumber(e.residual_rms, 4)} ${e.unit}`,
+      element('span', { class: white.p[k] >= white.level ? 'verdict pass' : 'verdict warn' },
+        `p = ${formatNumber(white.p[k], 2)}: ${white.p[k] >= white.level ? 'white' : 'correlated'}`)]));
+  noise.id = 'effort-noise';
+  section.append(noise);
+  if (white.p.some((p) => p < white.level)) {
+    section.append(element('p', { class: 'unavailable' },
+      'A residual is correlated: the model\u2019s structure misses something the data has (joint friction? a flexible link? a wrong length?).'));
+  }
   return section;
 }
 
@@ -112,6 +121,15 @@ function correlationSection(data) {
 function identifiabilitySection(data) {
   const section = element('section', { id: 'identifiability' }, element('h2', {}, 'What the data cannot tell'));
   const list = (items) => (items.length ? items.join(', ') : 'none');
+  const x = data.excitation;
+  section.append(element('p', {}, element('strong', {}, 'Excitation: '),
+    `condition number ${formatNumber(x.condition_number, 3)} of the regressor with each column scaled by the model\u2019s own size of its parameter `,
+    `(singular values ${x.singular_values.map((v) => formatNumber(v, 2)).join(', ')}): `,
+    x.condition_number > x.poor
+      ? element('span', { class: 'verdict warn' }, `poorly excited (above ${x.poor})`)
+      : element('span', { class: 'verdict pass' }, `every base parameter excited (below ${x.poor})`),
+    '. Least determined by this data: ',
+    element('span', { class: 'least-determined' }, x.least_determined), '.'));
   section.append(element('p', {}, element('strong', {}, 'Never felt by the joints: '), list(data.never_felt),
     ' — no data of joint efforts can tell these.'));
   section.append(element('p', {}, element('strong', {}, 'Regrouped: '), list(data.regrouped),

@@ -18,6 +18,13 @@
 
 namespace momenta::identify {
 
+/// Above this condition number of the scaled regressor an experiment is called poorly exciting
+/// (the usual aim for an identification trajectory is below 100: Gautier & Khalil 1992).
+inline constexpr double kPoorExcitation = 100.0;
+
+/// A residual sequence whose Ljung–Box p-value is below this is called correlated (not white).
+inline constexpr double kWhitenessLevel = 0.01;
+
 /// N measured samples, one per row: q (N × nq), v, v̇ and τ (N × nv) — τ the joint forces
 /// (N·m, N) the actuators applied, v̇ measured or differentiated from filtered q.
 struct InertiaSamples {
@@ -34,6 +41,22 @@ struct InertiaEstimate {
   VecX noise;           ///< σ_j of each joint (N·m or N), from the residuals.
   VecX residual_rms;    ///< Each joint's RMS residual at the estimate.
   MatX fitted;  ///< The efforts the estimate gives at each sample (N × nv): Y_I β + armature ∘ v̇.
+  /// How well the data excites the base parameters: the singular values of the weighted
+  /// regressor with each column scaled by the model's own size of its parameter (a mass by the
+  /// bodies' mean mass M, a first moment by M L, an inertia by M L², L their radius of gyration
+  /// about their origins), descending and divided by the largest (1 … 1/κ); κ the condition
+  /// number; and the least-determined combination, the right singular vector of the smallest (a
+  /// unit vector over the base parameters in that scaling: its large entries name what the data
+  /// barely tells — a change of that size along it moves the efforts least).
+  VecX excitation;
+  double condition_number = 0.0;
+  VecX least_determined;
+  /// Whether each joint's residuals, in sample order, are white: the Ljung–Box statistic over
+  /// lags 1 … whiteness_lags (min(20, N/5)) and its p-value under χ² with that many degrees of
+  /// freedom. A small p (below kWhitenessLevel) says the residuals are correlated: the model's
+  /// structure misses something the data has (friction, a flexible link, a wrong geometry).
+  VecX whiteness_p;
+  int whiteness_lags = 0;
   int samples = 0;
   int degrees_of_freedom = 0;  ///< N nv − rank.
   /// A full π that gives β: the independent parameters solved from β with the model's values

@@ -135,6 +135,13 @@ struct IdentificationResults {
   std::vector<Estimate> estimates;
   std::vector<std::vector<double>> correlation;  ///< of the estimates, row by row
   std::vector<std::string> never_felt, regrouped;
+  std::vector<double> excitation;  ///< relative singular values of the scaled regressor
+  double condition_number = 0;
+  std::string least_determined;     ///< the least-determined combination, in words
+  double poor_excitation = 100;     ///< above this condition number, named poorly exciting
+  std::vector<double> whiteness_p;  ///< per effort: Ljung–Box p of its residuals
+  int whiteness_lags = 0;
+  double whiteness_level = 0.01;  ///< below it, a residual is called correlated
   struct Body {
     std::string name, verdict;
     bool consistent = false;
