@@ -223,8 +223,12 @@ InertiaEstimate estimate_inertia(const Model& model, const InertiaSamples& sampl
   const MatX P = weighted.colsPermutation();
   e.covariance = s2 * P * R_inv * R_inv.transpose() * P.transpose();
   e.standard_error = e.covariance.diagonal().cwiseSqrt();
-  const VecX inverse_se = e.standard_error.cwiseInverse();
+  // Correlations; a parameter the data fixes exactly (exact efforts: zero standard error) is
+  // uncorrelated with the rest rather than 0/0.
+  const VecX inverse_se =
+      (e.standard_error.array() > 0.0).select(e.standard_error.cwiseInverse(), 0.0);
   e.correlation = inverse_se.asDiagonal() * e.covariance * inverse_se.asDiagonal();
+  e.correlation.diagonal().setOnes();
 
   const boost::math::students_t t(e.degrees_of_freedom);
   const double t975 = boost::math::quantile(t, 0.975);

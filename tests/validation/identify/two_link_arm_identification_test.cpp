@@ -46,6 +46,9 @@ TEST(InertiaEstimate, FromExactTorquesIsTheClosedFormsBeta) {
   EXPECT_LT(e.residual_rms.maxCoeff(), 1e-11);
   // The fitted efforts are the measured ones (the report's red line on the grey).
   EXPECT_LT((e.fitted - samples.tau).cwiseAbs().maxCoeff(), 1e-11);
+  // Every figure finite, the correlations too (standard errors at round-off, or zero).
+  EXPECT_TRUE(e.correlation.allFinite() && e.standard_error.allFinite() && e.lower.allFinite());
+  EXPECT_TRUE(e.whiteness_p.allFinite() && e.excitation.allFinite());
   for (const PhysicalConsistency& c : e.consistency) EXPECT_TRUE(c.consistent()) << c.verdict();
 }
 
