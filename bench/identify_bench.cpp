@@ -47,7 +47,7 @@ void BM_EstimateInertiaTwoLinkArm500Samples(benchmark::State& state) {
   const model::Model model = arm.model();
   std::mt19937 rng(1);
   std::uniform_real_distribution<double> u(-2, 2);
-  identify::InertiaSamples s{MatX(500, 2), MatX(500, 2), MatX(500, 2), MatX(500, 2)};
+  identify::InertiaSamples s{MatX(500, 2), MatX(500, 2), MatX(500, 2), MatX(500, 2), {}};
   for (int i = 0; i < 500; ++i) {
     const Eigen::Vector2d q(u(rng), u(rng)), v(u(rng), u(rng)), a(u(rng), u(rng));
     s.q.row(i) = q, s.v.row(i) = v, s.vdot.row(i) = a;

@@ -35,6 +35,7 @@ struct IdentifyOptions {
   bool json = false;
   std::optional<std::string> report;
   bool force = false;
+  int window = identify::kDefaultDerivativeWindow;
 };
 
 // A correlation this large means the data barely separates the two parameters.
@@ -79,9 +80,11 @@ std::string least_determined_text(const model::Model& model, const identify::Ine
 }
 
 json estimate_json(const model::Model& model, const identify::InertiaEstimate& e,
-                   const VecX& model_beta, const io::MeasuredTable& table) {
+                   const VecX& model_beta, const io::MeasuredTable& table,
+                   const std::string& derived) {
   json j;
   j["data"] = table.source;
+  j["derived"] = derived;
   j["samples"] = e.samples;
   j["inertial_parameters"] = e.base.num_parameters;
   j["degrees_of_freedom"] = e.degrees_of_freedom;
@@ -135,7 +138,7 @@ json estimate_json(const model::Model& model, const identify::InertiaEstimate& e
 
 void print_estimate(const model::Model& model, const identify::InertiaEstimate& e,
                     const VecX& model_beta, const io::MeasuredTable& table,
-                    const std::string& model_file) {
+                    const std::string& model_file, const std::string& derived) {
   const identify::BaseParameters& base = e.base;
   fmt::print("{}: base inertial parameters from {} samples of {}\n", model_file, e.samples,
              table.source);
@@ -186,6 +189,11 @@ void print_estimate(const model::Model& model, const identify::InertiaEstimate& 
              all_white ? "white, as noise is"
                        : "correlated: the model's structure misses something the data has "
                          "(joint friction? a flexible link? a wrong length?)");
+  if (!all_white && !derived.empty()) {
+    fmt::print(
+        "  (or the derivatives taken from the positions are biased: a narrower --window "
+        "if the positions are clean)\n");
+  }
   std::vector<std::string> strong;
   for (int a = 0; a < base.rank(); ++a) {
     for (int b = a + 1; b < base.rank(); ++b) {
@@ -282,7 +290,7 @@ void run(const IdentifyOptions& o) {
   const model::Model& model = file.model;
   const io::MeasuredTable table = io::read_measured_csv(o.data);
   const identify::InertiaSamples samples =
-      identify::inertia_samples(model, table.columns, table.values, table.source);
+      identify::inertia_samples(model, table.columns, table.values, table.source, o.window);
   const identify::BaseParameters base = identify::base_parameters(model);
   const identify::InertiaEstimate e = identify::estimate_inertia(model, samples, base);
   const VecX model_beta = base.base_of(identify::inertial_parameters(model));
@@ -293,9 +301,10 @@ void run(const IdentifyOptions& o) {
                          o.force);
   }
   if (o.json) {
-    fmt::print("{}\n", json_text(estimate_json(model, e, model_beta, table)));
+    fmt::print("{}\n", json_text(estimate_json(model, e, model_beta, table, samples.derived)));
   } else {
-    print_estimate(model, e, model_beta, table, o.model.file);
+    print_estimate(model, e, model_beta, table, o.model.file, samples.derived);
+    if (!samples.derived.empty()) fmt::print("\nnot measured: {}\n", samples.derived);
   }
   if (o.report) fmt::print(stderr, "wrote {}\n", *o.report);
 }
@@ -323,6 +332,11 @@ void add_identify_command(CLI::App& app) {
                    "residuals, estimates with intervals, the correlations as a heat map")
       ->check(not_a_folder());
   command->add_flag("--force", options->force, "Overwrite the report file if it exists");
+  command
+      ->add_option("--window", options->window,
+                   "Samples (odd, ≥ 5) of the cubic fitted to take rates and accelerations from "
+                   "positions where the data leaves them out (default 5)")
+      ->check(CLI::Range(5, 100001));
   command->footer(
       "Example:\n"
       "  momenta identify examples/identification/two_link_arm.yaml \\\n"

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "momenta/identify/inertia_estimate.hpp"
+#include "momenta/identify/position_derivatives.hpp"
 
 namespace momenta::identify {
 
@@ -22,7 +23,13 @@ std::vector<std::string> inertia_data_columns(const Model& model);
 
 /// The samples in a table of measured data (`columns` its header, `values` one row per sample);
 /// a column missing is an error naming `source`, the column, what it holds, and a near miss.
+/// The rates and the accelerations may each be left out all together: they are then taken from
+/// the positions (the accelerations from the rates where those are given) over a `time` column by
+/// differentiate_positions with `derivative_window` samples — only where each rate is its
+/// position's derivative (`shoulder.angle_rate` of `shoulder.angle`; not a ball joint's);
+/// InertiaSamples::derived says so.
 InertiaSamples inertia_samples(const Model& model, const std::vector<std::string>& columns,
-                               const MatX& values, std::string_view source);
+                               const MatX& values, std::string_view source,
+                               int derivative_window = kDefaultDerivativeWindow);
 
 }  // namespace momenta::identify

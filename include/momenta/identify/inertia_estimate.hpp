@@ -12,6 +12,7 @@
 // Student's t at those degrees of freedom. (Coverage of the 95 % interval over 1000 noise draws
 // of a two-link arm: tested to lie in 93–97 %.)
 
+#include <string>
 #include <vector>
 
 #include "momenta/identify/base_parameters.hpp"
@@ -29,6 +30,7 @@ inline constexpr double kWhitenessLevel = 0.01;
 /// (N·m, N) the actuators applied, v̇ measured or differentiated from filtered q.
 struct InertiaSamples {
   MatX q, v, vdot, tau;
+  std::string derived;  ///< What was differentiated rather than measured, in words ("" if none).
 };
 
 struct InertiaEstimate {

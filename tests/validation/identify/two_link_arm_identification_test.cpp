@@ -16,7 +16,7 @@ InertiaSamples closed_form_samples(const test::TwoLinkArm& arm, int N, double si
                                    std::mt19937& rng) {
   std::uniform_real_distribution<double> angle(-M_PI, M_PI), rate(-2, 2), acc(-5, 5);
   std::normal_distribution<double> noise(0.0, sigma);
-  InertiaSamples s{MatX(N, 2), MatX(N, 2), MatX(N, 2), MatX(N, 2)};
+  InertiaSamples s{MatX(N, 2), MatX(N, 2), MatX(N, 2), MatX(N, 2), {}};
   for (int i = 0; i < N; ++i) {
     const Eigen::Vector2d q(angle(rng), angle(rng)), v(rate(rng), rate(rng)), a(acc(rng), acc(rng));
     s.q.row(i) = q;
@@ -149,7 +149,7 @@ InertiaSamples logged_samples(const test::TwoLinkArm& arm, double friction, doub
                                  {{1.0, 1.3, 0.5}, {0.6, 2.9, 2.5}, {0.3, 5.2, 0.3}}};
   std::normal_distribution<double> noise(0.0, sigma);
   const int N = 501;
-  InertiaSamples s{MatX(N, 2), MatX(N, 2), MatX(N, 2), MatX(N, 2)};
+  InertiaSamples s{MatX(N, 2), MatX(N, 2), MatX(N, 2), MatX(N, 2), {}};
   for (int i = 0; i < N; ++i) {
     const double t = 0.02 * i;
     Eigen::Vector2d q = Eigen::Vector2d::Zero(), v = q, a = q;
