@@ -51,15 +51,6 @@ std::vector<std::string> names_of(const model::Model& model, const std::vector<i
   return names;
 }
 
-std::vector<int> regrouped(const identify::BaseParameters& base) {
-  std::vector<int> out;
-  for (int d : base.dependent) {
-    if (std::find(base.no_effect.begin(), base.no_effect.end(), d) == base.no_effect.end())
-      out.push_back(d);
-  }
-  return out;
-}
-
 // The effort column of each velocity coordinate.
 std::vector<std::string> effort_names(const model::Model& model) {
   const std::vector<std::string> columns = identify::inertia_data_columns(model);
@@ -121,7 +112,7 @@ json estimate_json(const model::Model& model, const identify::InertiaEstimate& e
   for (int i = 0; i < model.nv(); ++i) white[effort_names(model)[i]] = e.whiteness_p[i];
   j["whiteness"] = {{"lags", e.whiteness_lags}, {"p", std::move(white)}};
   j["never_felt"] = names_of(model, e.base.no_effect);
-  j["regrouped"] = names_of(model, regrouped(e.base));
+  j["regrouped"] = names_of(model, e.base.regrouped());
   json bodies = json::array();
   for (int b = 1; b < model.num_bodies(); ++b) {
     const identify::PhysicalConsistency& c = e.consistency[b - 1];
@@ -206,7 +197,7 @@ void print_estimate(const model::Model& model, const identify::InertiaEstimate& 
   fmt::print("\nstrongly correlated (|ρ| > {}): {}\n", kStrongCorrelation,
              strong.empty() ? std::string("none") : fmt::format("{}", fmt::join(strong, "; ")));
   const std::vector<std::string> never = names_of(model, base.no_effect);
-  const std::vector<std::string> grouped = names_of(model, regrouped(base));
+  const std::vector<std::string> grouped = names_of(model, base.regrouped());
   fmt::print("never felt by the joints (no data of this kind can tell them): {}\n",
              never.empty() ? std::string("none") : fmt::format("{}", fmt::join(never, ", ")));
   fmt::print("regrouped (told only in the combinations above): {}\n",
@@ -214,7 +205,7 @@ void print_estimate(const model::Model& model, const identify::InertiaEstimate& 
   fmt::print(
       "\nphysical consistency (can a body have these estimates? regrouped parameters at the "
       "model's values, the never-felt ones chosen so that it can where any choice does):\n");
-  const std::vector<int> from_model = regrouped(base);
+  const std::vector<int> from_model = base.regrouped();
   const VecX pi_model = identify::inertial_parameters(model);
   for (int b = 1; b < model.num_bodies(); ++b) {
     std::vector<std::string> assumed;
@@ -265,7 +256,7 @@ report::IdentificationResults page_results(const io::ModelFile& file,
     r.correlation.emplace_back(row.data(), row.data() + row.size());
   }
   r.never_felt = names_of(model, e.base.no_effect);
-  r.regrouped = names_of(model, regrouped(e.base));
+  r.regrouped = names_of(model, e.base.regrouped());
   r.excitation.assign(e.excitation.data(), e.excitation.data() + e.excitation.size());
   r.condition_number = e.condition_number;
   r.least_determined = least_determined_text(model, e);

@@ -2,8 +2,6 @@
 // inertial parameters from measured motion and joint efforts (docs/identification.md), with the
 // same numbers as `momenta identify`.
 
-#include <algorithm>
-
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
@@ -20,15 +18,6 @@ py::list names_of(const model::Model& model, const std::vector<int>& indices) {
   return names;
 }
 
-py::list regrouped_names(const model::Model& model, const identify::BaseParameters& base) {
-  std::vector<int> regrouped;
-  for (int d : base.dependent) {
-    if (std::find(base.no_effect.begin(), base.no_effect.end(), d) == base.no_effect.end())
-      regrouped.push_back(d);
-  }
-  return names_of(model, regrouped);
-}
-
 py::dict base_dict(const model::Model& model, const identify::BaseParameters& base) {
   py::dict d;
   py::list described;
@@ -37,7 +26,7 @@ py::dict base_dict(const model::Model& model, const identify::BaseParameters& ba
   d["leading"] = names_of(model, base.independent);
   d["regrouping"] = to_numpy(base.regrouping);
   d["never_felt"] = names_of(model, base.no_effect);
-  d["regrouped"] = regrouped_names(model, base);
+  d["regrouped"] = names_of(model, base.regrouped());
   d["model_values"] = to_numpy(base.base_of(identify::inertial_parameters(model)));
   return d;
 }

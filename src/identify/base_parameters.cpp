@@ -1,5 +1,6 @@
 #include "momenta/identify/base_parameters.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -88,6 +89,14 @@ BaseParameters base_parameters(const Model& model, int num_states, unsigned seed
     base.regrouping.col(base.dependent[d]) = K_d.col(static_cast<Eigen::Index>(d));
   }
   return base;
+}
+
+std::vector<int> BaseParameters::regrouped() const {
+  std::vector<int> out;
+  for (int d : dependent) {
+    if (std::find(no_effect.begin(), no_effect.end(), d) == no_effect.end()) out.push_back(d);
+  }
+  return out;
 }
 
 std::string BaseParameters::describe(const Model& model, int k) const {

@@ -13,6 +13,7 @@
 
 #include "momenta/common/error.hpp"
 #include "momenta/identify/inertial_regressor.hpp"
+#include "momenta/inertia/mass_properties.hpp"
 
 namespace momenta::identify {
 namespace {
@@ -131,15 +132,14 @@ VecX completed_parameters(const Model& model, const BaseParameters& base, const 
       if (never_felt[first + 1 + a]) pi[first + 1 + a] = m * c_prior[a];
     }
     const Vec3 c = pi.segment<3>(first + 1) / m;
-    const auto shift = [](double mass, const Vec3& p) {
-      return Mat3(mass * (p.squaredNorm() * Mat3::Identity() - p * p.transpose()));
-    };
-    const Mat3 I_C_prior = prior.I_O - shift(prior.mass, c_prior);
+    using inertia::point_mass_inertia;  // the parallel-axis term
+    const Mat3 I_C_prior = prior.I_O - point_mass_inertia(prior.mass, c_prior);
     const Mat3 I_C_estimated =
-        spatial_inertia_of(pi.segment<kParametersPerBody>(first)).I_O - shift(m, c);
+        spatial_inertia_of(pi.segment<kParametersPerBody>(first)).I_O - point_mass_inertia(m, c);
     std::array<bool, 10> felt{};
     for (int k = 4; k < kParametersPerBody; ++k) felt[k] = !never_felt[first + k];
-    const Mat3 I_O = consistent_completion(I_C_prior, I_C_estimated, felt) + shift(m, c);
+    const Mat3 I_O =
+        consistent_completion(I_C_prior, I_C_estimated, felt) + point_mass_inertia(m, c);
     const Vec10 completed = parameters_of({m, m * c, I_O});
     for (int k = 4; k < kParametersPerBody; ++k) {
       if (never_felt[first + k]) pi[first + k] = completed[k];

@@ -53,9 +53,8 @@ PhysicalConsistency physical_consistency(const Vec10& pi) {
   if (!c.positive_mass) return c;
   const SpatialInertia I = spatial_inertia_of(pi);
   c.center_of_mass = I.h / c.mass;
-  // Parallel axes back to the centre: I_C = I_O − m (|c|² 1 − c cᵀ).
-  const Vec3& p = c.center_of_mass;
-  const Mat3 I_C = I.I_O - c.mass * (p.squaredNorm() * Mat3::Identity() - p * p.transpose());
+  // Parallel axes back to the centre.
+  const Mat3 I_C = I.I_O - inertia::point_mass_inertia(c.mass, c.center_of_mass);
   const Eigen::SelfAdjointEigenSolver<Mat3> eigen(I_C, Eigen::EigenvaluesOnly);
   c.principal_moments = eigen.eigenvalues();  // ascending
   const double scale = std::max(std::abs(c.principal_moments[2]), 1e-300);

@@ -34,6 +34,8 @@ struct BaseParameters {
   MatX regrouping;               ///< rank × num_parameters: β = regrouping π.
 
   int rank() const { return static_cast<int>(independent.size()); }
+  /// The dependent parameters that are felt: told only in the combinations.
+  std::vector<int> regrouped() const;
   /// β of a π.
   VecX base_of(const VecX& pi) const { return regrouping * pi; }
   /// Base parameter k in words: "upper.I_yy + 1·lower.m" (coefficients in SI, 6 digits).
