@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build ccache pkg-config
   libeigen3-dev libfmt-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev
-  libassimp-dev libboost-dev libboost-math-dev libsundials-dev libtinyxml2-dev
+  libassimp-dev libboost-dev libboost-math-dev libsundials-dev libtinyxml2-dev libceres-dev
   libgtest-dev libgmock-dev libbenchmark-dev libginac-dev libssl-dev
   python3 python3-numpy python3-scipy
 )

@@ -1,7 +1,9 @@
 // `momenta identify MODEL --data LOG.csv [--json]`: a tree's base inertial parameters estimated
 // from measured motion and joint efforts (identify::estimate_inertia), with their standard
 // errors, 95 % intervals, correlations, each coordinate's noise and residual, what the data
-// cannot tell, and the physical consistency of the result. Documented in docs/identification.md.
+// cannot tell, and the physical consistency of the result. `momenta identify FILE.yaml` of an
+// identification file (no --data): the grey-box route (grey_box_identify.hpp). Documented in
+// docs/identification.md.
 
 #include <algorithm>
 #include <filesystem>
@@ -14,9 +16,11 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.hpp"
+#include "grey_box_identify.hpp"
 #include "model_argument.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/number_text.hpp"
+#include "momenta/identify/identification_file.hpp"
 #include "momenta/identify/inertia_data.hpp"
 #include "momenta/io/measured_data.hpp"
 #include "momenta/model/units.hpp"
@@ -31,9 +35,10 @@ using json = nlohmann::ordered_json;
 
 struct IdentifyOptions {
   ModelArgument model;
-  std::string data;
+  std::optional<std::string> data;
   bool json = false;
   std::optional<std::string> report;
+  std::optional<std::string> output;
   bool force = false;
   int window = identify::kDefaultDerivativeWindow;
 };
@@ -272,6 +277,25 @@ report::IdentificationResults page_results(const io::ModelFile& file,
 }
 
 void run(const IdentifyOptions& o) {
+  if (!o.data) {
+    if (!identify::is_identification_file(o.model.file)) {
+      throw InvalidArgument(fmt::format(
+          "{}: a model file; give its measured motion and efforts with --data LOG.csv (the "
+          "inertial parameters), or an identification file naming the model, the numbers to "
+          "estimate and the experiments (docs/identification.md, \"Grey-box fits\")",
+          o.model.file));
+    }
+    if (o.report) {
+      throw InvalidArgument("--report: the grey-box fit's page is not written yet; use --json");
+    }
+    run_grey_box({o.model.file, o.json, o.report, o.output, o.force});
+    return;
+  }
+  if (o.output) {
+    throw InvalidArgument(
+        "-o writes a grey-box fit's identified model (an identification file, no --data); the "
+        "base inertial parameters do not give every body's numbers");
+  }
   // Refused before any work: the user's file is never overwritten without --force.
   if (o.report && std::filesystem::exists(*o.report) && !o.force) {
     throw FileError(
@@ -279,7 +303,7 @@ void run(const IdentifyOptions& o) {
   }
   const io::ModelFile file = load_model(o.model);
   const model::Model& model = file.model;
-  const io::MeasuredTable table = io::read_measured_csv(o.data);
+  const io::MeasuredTable table = io::read_measured_csv(*o.data);
   const identify::InertiaSamples samples =
       identify::inertia_samples(model, table.columns, table.values, table.source, o.window);
   const identify::BaseParameters base = identify::base_parameters(model);
@@ -306,15 +330,19 @@ void add_identify_command(CLI::App& app) {
   auto options = std::make_shared<IdentifyOptions>();
   CLI::App* command = app.add_subcommand(
       "identify",
-      "Estimate a model's base inertial parameters from measured motion and joint efforts "
-      "(τ = Y π, linear least squares): estimates, standard errors, 95 % intervals, "
-      "correlations, noise, what the data cannot tell, physical consistency");
-  add_model_argument(command, options->model);
+      "Estimate a model's numbers from measured data: with --data, its base inertial parameters "
+      "from measured motion and joint efforts (τ = Y π, linear least squares); given an "
+      "identification file, any numbers of a model file fitted to measured responses "
+      "(Levenberg–Marquardt on simulated runs, sensitivities). Estimates, standard errors, 95 % "
+      "intervals, correlations, noise, what the data cannot tell");
+  add_model_argument(
+      command, options->model,
+      "A model file (with --data), or an identification file: the model, the numbers "
+      "to estimate and the experiments (docs/identification.md)");
   command
       ->add_option("--data", options->data,
                    "Measured CSV: per coordinate its position, rate, rate's rate (_dot) and "
-                   "effort, named as docs/identification.md says")
-      ->required()
+                   "effort, named as docs/identification.md says (MODEL a model file)")
       ->check(CLI::ExistingFile);
   command->add_flag("--json", options->json, "Print JSON instead of text");
   command
@@ -322,16 +350,23 @@ void add_identify_command(CLI::App& app) {
                    "Also write the identification's HTML page: measured and fitted efforts, "
                    "residuals, estimates with intervals, the correlations as a heat map")
       ->check(not_a_folder());
-  command->add_flag("--force", options->force, "Overwrite the report file if it exists");
+  command
+      ->add_option("-o,--output", options->output,
+                   "Grey-box fits: write the identified model — the model file with the "
+                   "estimates in place of its numbers, comments kept — for simulate, modes, "
+                   "response")
+      ->check(not_a_folder());
+  command->add_flag("--force", options->force, "Overwrite the report or model file if it exists");
   command
       ->add_option("--window", options->window,
                    "Samples (odd, ≥ 5) of the cubic fitted to take rates and accelerations from "
                    "positions where the data leaves them out (default 5)")
       ->check(CLI::Range(5, 100001));
   command->footer(
-      "Example:\n"
+      "Examples:\n"
       "  momenta identify examples/identification/two_link_arm.yaml \\\n"
       "      --data examples/identification/two_link_arm_log.csv --report arm.html\n"
+      "  momenta identify examples/identification/quarter_car_identify.yaml -o identified.yaml\n"
       "Columns, method and what is tested: docs/identification.md.");
   command->callback([options] { run(*options); });
 }

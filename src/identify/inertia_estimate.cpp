@@ -8,12 +8,12 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 #include <Eigen/SVD>
-#include <boost/math/distributions/chi_squared.hpp>
 #include <boost/math/distributions/students_t.hpp>
 
 #include "momenta/common/error.hpp"
 #include "momenta/identify/inertial_regressor.hpp"
 #include "momenta/inertia/mass_properties.hpp"
+#include "residual_whiteness.hpp"
 
 namespace momenta::identify {
 namespace {
@@ -56,22 +56,6 @@ double parameter_scale(const Model& model, int k) {
   const double L = mass > 0.0 && trace > 0.0 ? std::sqrt(trace / (2.0 * mass)) : 1.0;
   const int kind = k % kParametersPerBody;
   return kind == 0 ? M : kind < 4 ? M * L : M * L * L;
-}
-
-// The Ljung–Box statistic of a sequence over lags 1 … m and its p-value under χ²(m) (Ljung &
-// Box 1978): Q = N (N + 2) Σ ρ_k² / (N − k), ρ_k the sample autocorrelation at lag k.
-double ljung_box_p(const VecX& x, int m) {
-  const Eigen::Index N = x.size();
-  const VecX centred = x.array() - x.mean();
-  const double c0 = centred.squaredNorm();
-  if (!(c0 > 0.0) || m < 1) return 1.0;
-  double Q = 0.0;
-  for (int k = 1; k <= m; ++k) {
-    const double rho = centred.head(N - k).dot(centred.tail(N - k)) / c0;
-    Q += rho * rho / double(N - k);
-  }
-  Q *= double(N) * double(N + 2);
-  return boost::math::cdf(boost::math::complement(boost::math::chi_squared(m), Q));
 }
 
 // Row and column of I_O's entry k (4 … 9 of a body's ten).
@@ -255,13 +239,13 @@ InertiaEstimate estimate_inertia(const Model& model, const InertiaSamples& sampl
     e.least_determined = -e.least_determined;  // its largest entry positive: one sign every call
 
   // Whiteness of each joint's residuals, in sample order.
-  e.whiteness_lags = std::min(20, N / 5);
+  e.whiteness_lags = detail::whiteness_lags(N);
   e.whiteness_p = VecX::Ones(nv);
   const VecX residual = b - fitted;
   for (int j = 0; j < nv; ++j) {
     VecX sequence(N);
     for (int s = 0; s < N; ++s) sequence[s] = residual[s * nv + j];
-    e.whiteness_p[j] = ljung_box_p(sequence, e.whiteness_lags);
+    e.whiteness_p[j] = detail::ljung_box_p(sequence, e.whiteness_lags);
   }
 
   e.parameters = completed_parameters(model, base, e.beta);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -71,6 +72,16 @@ Model Model::with_initial_state(const VecX& q, const VecX& v) const {
   Model model = *this;
   model.q0_ = q;
   model.v0_ = v;
+  return model;
+}
+
+Model Model::with_signal_shape(int s, Signal::Shape shape) const {
+  if (s < 0 || s >= static_cast<int>(signals_.size())) {
+    throw InvalidArgument(fmt::format("signal {} of a model with {} signals", s, signals_.size()));
+  }
+  Model model = *this;
+  model.signals_[static_cast<std::size_t>(s)] =
+      Signal(signals_[static_cast<std::size_t>(s)].name(), std::move(shape));
   return model;
 }
 

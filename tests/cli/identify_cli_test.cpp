@@ -3,6 +3,7 @@
 // bit, the estimates hold the built arm's base parameters, the text names each quantity with its
 // unit, and bad data is one line naming the file, line and column.
 
+#include <cmath>
 #include <random>
 #include <sstream>
 #include <string>
@@ -188,6 +189,93 @@ TEST_F(IdentifyCli, BadDataIsOneLineNamingFileLineAndColumn) {
             std::string::npos)
       << missing;
   EXPECT_EQ(std::count(missing.begin(), missing.end(), '\n'), 1);
+}
+
+// The grey-box route: `momenta identify FILE.yaml` of an identification file. The quarter car's
+// log was made by SciPy from Franklin's equations (make_grey_box_logs.py) with ks = 130 000 N/m
+// and b = 9 800 N·s/m; the JSON's intervals hold them, and -o writes a model file that reads
+// back with the estimates in place and the rest of the file as it was.
+TEST_F(IdentifyCli, AnIdentificationFileFitsTheModelsNumbersAndWritesTheIdentifiedModel) {
+  const std::string identified = (dir_ / "identified.yaml").string();
+  const CliRun r = momenta("identify " + test::quoted(example("quarter_car_identify.yaml")) +
+                           " --json -o " + test::quoted(identified));
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = json::parse(r.out);
+  EXPECT_TRUE(j.at("converged").get<bool>());
+  EXPECT_TRUE(j.at("identifiability").at("identifiable").get<bool>());
+  const double truth[2] = {130000.0, 9800.0};
+  for (int i = 0; i < 2; ++i) {
+    const json& p = j.at("parameters")[i];
+    EXPECT_LE(p.at("interval_95")[0].get<double>(), truth[i]) << p.at("name");
+    EXPECT_GE(p.at("interval_95")[1].get<double>(), truth[i]) << p.at("name");
+  }
+  EXPECT_EQ(j.at("channels")[0].at("noise_given"), true);
+
+  const io::ModelFile written = io::read_model_file(identified);
+  const io::ModelFile original =
+      io::read_model_file(std::filesystem::current_path() / "examples" / "quarter_car.yaml");
+  const auto stiffness = [](const io::ModelFile& f) {
+    return std::get<model::LinearSpringDamper>(f.model.force_elements()[1]).stiffness;
+  };
+  EXPECT_EQ(stiffness(written), j.at("parameters")[0].at("estimate").get<double>());
+  EXPECT_NE(stiffness(written), stiffness(original));
+  EXPECT_EQ(written.model.spatial_inertia(2).mass, original.model.spatial_inertia(2).mass);
+
+  // Not overwritten without --force; with it, written again.
+  const CliRun again = momenta("identify " + test::quoted(example("quarter_car_identify.yaml")) +
+                               " -o " + test::quoted(identified));
+  EXPECT_NE(again.code, 0);
+  EXPECT_NE(again.err.find("pass --force"), std::string::npos) << again.err;
+}
+
+TEST_F(IdentifyCli, AFreeResponseWithoutAForceSaysWhatItCannotTell) {
+  write("msd.yaml",
+        "name: mass spring damper\n"
+        "gravity: [0, 0, 0]\n"
+        "bodies: [{name: mass, mass: 2.0}]\n"
+        "joints:\n"
+        "  - {name: slide, type: prismatic, parent: world, child: mass, axis: [1, 0, 0],\n"
+        "     q0: 0.1, damping: 0.8}\n"
+        "forces: [{name: spring, type: torsional_spring, joint: slide, stiffness: 50.0}]\n");
+  std::ostringstream log;
+  log << "time,x\n";
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> noise(0.0, 1e-3);
+  const double w = 5.0, zeta = 0.04, wd = w * std::sqrt(1.0 - zeta * zeta);
+  for (int k = 0; k <= 300; ++k) {
+    const double t = 0.02 * k;
+    log << t << ","
+        << 0.1 * std::exp(-zeta * w * t) *
+                   (std::cos(wd * t) + zeta / std::sqrt(1.0 - zeta * zeta) * std::sin(wd * t)) +
+               noise(rng)
+        << "\n";
+  }
+  write("free.csv", log.str());
+  const auto file =
+      write("fit.yaml",
+            "model: msd.yaml\n"
+            "parameters:\n"
+            "  - {name: m, path: bodies.mass.mass, guess: 1.5}\n"
+            "  - {name: k, path: forces.spring.stiffness, guess: 40}\n"
+            "  - {name: b, path: joints.slide.damping, guess: 1.0}\n"
+            "experiments:\n"
+            "  - {data: free.csv, outputs: [{column: x, channel: slide.position}]}\n");
+  const CliRun r = momenta("identify " + test::quoted(file.string()));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("NOT IDENTIFIABLE from these experiments:\n  m, k and b scaled by one "
+                       "factor together change no output: the data determine only the ratios "
+                       "k/m and b/m"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("not determined"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("nan"), std::string::npos) << r.out;
+}
+
+TEST_F(IdentifyCli, AModelFileWithoutDataSaysWhatToGive) {
+  const CliRun r = momenta("identify " + test::quoted(example("damped_pendulum.yaml")));
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("give its measured motion and efforts with --data"), std::string::npos)
+      << r.err;
 }
 
 }  // namespace

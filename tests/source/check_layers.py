@@ -34,7 +34,7 @@ DEPENDS = {
     "symbolic": ["model"],
     "sweep_design": ["model"],
     "io": ["inertia", "model", "sweep_design"],
-    "identify": ["simulate", "analysis"],
+    "identify": ["io", "simulate", "analysis"],
     "frontend": ["io", "simulate"],
     "sweep": ["frontend", "simulate", "analysis", "sweep_design"],
     "report": ["io", "simulate", "analysis", "symbolic"],

@@ -59,8 +59,15 @@ class ModelTemplate {
   /// ("quarter_car.yaml:14:11: bodies[1].mass: must be ≥ 0, got -1"). Safe to call concurrently.
   ModelFile with(std::span<const NumberOverride> overrides) const;
 
+  /// The file's text with the numbers at the overrides' paths written as their values (in the
+  /// shortest form that reads back exactly), every other character kept — comments, layout,
+  /// units in comments. A path whose last key is absent gets `key: value` as the first entry of
+  /// its map. Throws as number_at for a bad path.
+  std::string text_with(std::span<const NumberOverride> overrides) const;
+
  private:
   std::filesystem::path path_;
+  std::string text_;   // the file as read
   YamlNode document_;  // parsed once, read only (number_at)
   std::shared_ptr<detail::DocumentPool> documents_;
   ModelFile nominal_;

@@ -154,6 +154,10 @@ class Model {
   /// simulate --state`). Throws InvalidArgument naming the size expected, or the first
   /// non-finite entry with its coordinate's name.
   Model with_initial_state(const VecX& q, const VecX& v) const;
+  /// This model with signal s following `shape` instead (its name kept): a measured input
+  /// replayed as a table (identify/grey_box.hpp). Throws InvalidArgument for s out of range and
+  /// what Signal's constructor throws for the shape.
+  Model with_signal_shape(int s, Signal::Shape shape) const;
   /// This model with one more controller (an external law's: Python's simulate(controller=fn)).
   /// Throws what resolve_controller and check_controller_fits throw.
   Model with_controller(const Controller& controller) const;

@@ -1,5 +1,6 @@
 #include "momenta/io/file_template.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <fstream>
 #include <mutex>
@@ -194,8 +195,9 @@ class detail::DocumentPool {
 
 ModelTemplate::ModelTemplate(const std::filesystem::path& path)
     : path_(path),
+      text_(read_text(path)),
       document_(YamlNode::load_file(path)),
-      documents_(std::make_shared<detail::DocumentPool>(read_text(path), document_.file())),
+      documents_(std::make_shared<detail::DocumentPool>(text_, document_.file())),
       nominal_(detail::compose_model_file(document_, path.parent_path())) {}
 
 std::optional<double> ModelTemplate::number_at(const std::string& path) const {
@@ -206,6 +208,39 @@ ModelFile ModelTemplate::with(std::span<const NumberOverride> overrides) const {
   return documents_->read_with(overrides, [&](const YamlNode& document) {
     return detail::compose_model_file(document, path_.parent_path());
   });
+}
+
+std::string ModelTemplate::text_with(std::span<const NumberOverride> overrides) const {
+  // Each edit at its byte offset in the text, applied from the last so the others stay valid.
+  struct Edit {
+    std::size_t at = 0, length = 0;
+    std::string text;
+  };
+  std::vector<Edit> edits;
+  const YAML::Node& root = detail::YamlAccess::yaml(document_);
+  for (const NumberOverride& o : overrides) {
+    const PathTarget target = find_target(root, o.path);
+    const std::string value = fmt::format("{}", o.value);
+    if (target.node.IsDefined() && !target.node.IsNull()) {
+      const auto at = static_cast<std::size_t>(target.node.Mark().pos);
+      const std::size_t end = text_.find_first_of(" \t\r\n,]}#", at);
+      edits.push_back({at, (end == std::string::npos ? text_.size() : end) - at, value});
+      continue;
+    }
+    const YAML::Mark mark = target.parent.Mark();
+    const auto at = static_cast<std::size_t>(mark.pos);
+    if (at < text_.size() && text_[at] == '{') {
+      edits.push_back({at + 1, 0, fmt::format("{}: {}, ", target.key, value)});
+    } else {
+      edits.push_back({at, 0,
+                       fmt::format("{}: {}\n{}", target.key, value,
+                                   std::string(static_cast<std::size_t>(mark.column), ' '))});
+    }
+  }
+  std::sort(edits.begin(), edits.end(), [](const Edit& a, const Edit& b) { return a.at > b.at; });
+  std::string text = text_;
+  for (const Edit& e : edits) text.replace(e.at, e.length, e.text);
+  return text;
 }
 
 PartTemplate::PartTemplate(const std::filesystem::path& path, PartFileOptions options)

@@ -1,0 +1,213 @@
+#include "grey_box_identify.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
+
+#include "momenta/common/error.hpp"
+#include "momenta/common/number_text.hpp"
+#include "momenta/identify/grey_box.hpp"
+#include "momenta/identify/identification_file.hpp"
+#include "momenta/io/model_file.hpp"
+#include "output_format.hpp"
+
+namespace momenta::cli {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+// A correlation this large means the data barely separates the two parameters.
+constexpr double kStronglyCorrelated = 0.9;
+// A channel's residuals whose Ljung–Box p-value is below this are called correlated.
+constexpr double kWhiteResiduals = 0.01;
+
+constexpr const char* kUndeterminedAdvice =
+    "fix one of them (leave it out of `parameters`) or add an experiment that tells them apart "
+    "(a measured force or a known mass sets the scale)";
+
+std::vector<double> values_of(const VecX& x) { return {x.data(), x.data() + x.size()}; }
+
+// A number that may be infinite (an undetermined parameter's standard error or bound).
+json number_or_null(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+json estimate_json(const identify::GreyBoxProblem& problem, const identify::GreyBoxEstimate& e) {
+  json j;
+  j["name"] = problem.name;
+  j["model"] = problem.model.string();
+  j["converged"] = e.converged;
+  j["termination"] = e.termination;
+  json parameters = json::array();
+  for (std::size_t i = 0; i < e.names.size(); ++i) {
+    const auto k = static_cast<Eigen::Index>(i);
+    parameters.push_back(
+        {{"name", e.names[i]},
+         {"path", e.paths[i]},
+         {"estimate", e.value[k]},
+         {"standard_error", number_or_null(e.standard_error[k])},
+         {"interval_95", {number_or_null(e.lower95[k]), number_or_null(e.upper95[k])}},
+         {"start", e.start[k]},
+         {"log_scale", bool(e.positive[i])},
+         {"at_bound", bool(e.at_bound[i])}});
+  }
+  j["parameters"] = std::move(parameters);
+  j["correlation"] = matrix_json(e.correlation);
+  j["identifiability"] = {{"identifiable", e.identifiable},
+                          {"singular_values", values_of(e.singular_values)},
+                          {"condition_number", number_or_null(e.condition_number)},
+                          {"undetermined", e.undetermined},
+                          {"least_determined", e.least_determined}};
+  json channels = json::array();
+  for (const identify::FittedChannel& c : e.channels) {
+    channels.push_back({{"experiment", c.experiment},
+                        {"column", c.column},
+                        {"channel", c.channel},
+                        {"unit", c.unit},
+                        {"noise", c.noise},
+                        {"noise_given", c.noise_given},
+                        {"residual_rms", c.rms},
+                        {"whiteness_p", c.whiteness_p}});
+  }
+  j["channels"] = std::move(channels);
+  j["degrees_of_freedom"] = e.degrees_of_freedom;
+  j["iterations"] = e.iterations;
+  j["simulations"] = e.simulations;
+  j["sensitivity_simulations"] = e.sensitivity_simulations;
+  j["evaluations"] = e.evaluations;
+  j["initial_cost"] = e.initial_cost;
+  j["final_cost"] = e.final_cost;
+  j["seconds"] = e.wall_seconds;
+  return j;
+}
+
+void print_estimate(const identify::GreyBoxProblem& problem, const identify::GreyBoxEstimate& e) {
+  long samples = 0;
+  for (const identify::FittedChannel& c : e.channels) samples += static_cast<long>(c.time.size());
+  fmt::print("{}: {} parameters of {} from {} experiment{} ({} measured values)\n", problem.name,
+             e.names.size(), problem.model.filename().string(), problem.experiments.size(),
+             problem.experiments.size() == 1 ? "" : "s", samples);
+  fmt::print("fit: {}\n", e.termination);
+  fmt::print("     {} runs, {} with sensitivities, {} evaluations of the dynamics, {} s\n\n",
+             e.simulations, e.sensitivity_simulations, e.evaluations,
+             number_text(e.wall_seconds, 3));
+
+  std::size_t width = std::string_view("parameter").size();
+  for (const std::string& name : e.names) width = std::max(width, name.size());
+  fmt::print("  {:<{}}  {:>12} {:>11}   {:<29} {:>12}\n", "parameter", width, "estimate",
+             "std. error", "95 % interval", "start");
+  for (std::size_t i = 0; i < e.names.size(); ++i) {
+    const auto k = static_cast<Eigen::Index>(i);
+    const bool determined = std::isfinite(e.standard_error[k]);
+    fmt::print("  {:<{}}  {:>12} {:>11}   {:<29} {:>12}{}\n", e.names[i], width,
+               number_text(e.value[k], 6), determined ? number_text(e.standard_error[k], 3) : "—",
+               determined ? fmt::format("[{}, {}]", number_text(e.lower95[k], 6),
+                                        number_text(e.upper95[k], 6))
+                          : "not determined",
+               number_text(e.start[k], 6), e.at_bound[i] ? "  (at its bound)" : "");
+  }
+  fmt::print("  ({})\n", e.noise_estimated
+                             ? fmt::format("Student's t with {} degrees of freedom: the noise was "
+                                           "estimated from the residuals",
+                                           e.degrees_of_freedom)
+                             : std::string("normal quantiles: every noise was given"));
+
+  fmt::print(
+      "\nidentifiability: singular values of the scaled sensitivities {} (condition number {})\n",
+      fmt::join(
+          [&] {
+            std::vector<std::string> v;
+            for (double x : e.singular_values) v.push_back(number_text(x, 3));
+            return v;
+          }(),
+          ", "),
+      number_text(e.condition_number, 3));
+  if (!e.identifiable) {
+    fmt::print("NOT IDENTIFIABLE from these experiments:\n");
+    for (const std::string& sentence : e.undetermined) fmt::print("  {}\n", sentence);
+    fmt::print("  → {}\n", kUndeterminedAdvice);
+  } else if (!e.least_determined.empty()) {
+    fmt::print("poorly determined (condition number above {}): least determined {}\n",
+               identify::kPoorlyDetermined, e.least_determined);
+  } else {
+    fmt::print("every parameter is determined by the data\n");
+  }
+
+  std::vector<std::string> strong;
+  for (Eigen::Index a = 0; a < e.correlation.rows(); ++a) {
+    for (Eigen::Index b = a + 1; b < e.correlation.cols(); ++b) {
+      if (std::abs(e.correlation(a, b)) > kStronglyCorrelated) {
+        strong.push_back(fmt::format("{} and {} ({})", e.names[std::size_t(a)],
+                                     e.names[std::size_t(b)], number_text(e.correlation(a, b), 3)));
+      }
+    }
+  }
+  fmt::print("strongly correlated (|ρ| > {}): {}\n", kStronglyCorrelated,
+             strong.empty() ? std::string("none") : fmt::format("{}", fmt::join(strong, "; ")));
+
+  fmt::print("\nresiduals per measured channel (Ljung–Box over min(20, N/5) lags):\n");
+  bool all_white = true;
+  for (const identify::FittedChannel& c : e.channels) {
+    const bool white = c.whiteness_p >= kWhiteResiduals;
+    all_white = all_white && white;
+    fmt::print("  {} {} → {}: σ {} {} ({}), RMS {} {}, p = {} {}\n", c.experiment, c.column,
+               c.channel, number_text(c.noise, 4), c.unit, c.noise_given ? "given" : "estimated",
+               number_text(c.rms, 4), c.unit, number_text(c.whiteness_p, 2),
+               white ? "white" : "CORRELATED");
+  }
+  if (!all_white) {
+    fmt::print(
+        "  correlated residuals: the model's structure misses something the data has (friction? "
+        "a flexible part? an input's delay?), or the noise itself is coloured\n");
+  }
+}
+
+// Writes the identified model and reads it back: a model file whose relative paths (parts,
+// meshes, tables) do not resolve from the new folder is named, not left broken.
+void write_identified_model(const GreyBoxRequest& request, const identify::GreyBoxProblem& problem,
+                            const identify::GreyBoxEstimate& e) {
+  const std::filesystem::path path = *request.output;
+  const std::filesystem::path temporary = path.string() + ".partial";
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    if (!out) throw FileError(fmt::format("{}: cannot be written", path.string()));
+    out << identify::identified_model_text(problem, e);
+    if (!out.flush()) throw FileError(fmt::format("{}: cannot be written", path.string()));
+  }
+  try {
+    (void)io::read_model_file(temporary);
+  } catch (const Error& error) {
+    std::filesystem::remove(temporary);
+    throw FileError(fmt::format(
+        "{}: the identified model does not read back from there ({}); write it beside {}, whose "
+        "relative paths it keeps",
+        path.string(), error.what(), problem.model.string()));
+  }
+  std::filesystem::rename(temporary, path);
+}
+
+}  // namespace
+
+void run_grey_box(const GreyBoxRequest& request) {
+  // Refused before any work: the user's files are never overwritten without --force.
+  for (const auto& file : {request.output, request.report}) {
+    if (file && std::filesystem::exists(*file) && !request.force) {
+      throw FileError(fmt::format("{}: the file exists; pass --force to overwrite it", *file));
+    }
+  }
+  const identify::GreyBoxProblem problem = identify::read_identification_file(request.file);
+  const identify::GreyBoxEstimate e = identify::fit_grey_box(problem);
+  if (request.output) write_identified_model(request, problem, e);
+  if (request.json) {
+    fmt::print("{}\n", json_text(estimate_json(problem, e)));
+  } else {
+    print_estimate(problem, e);
+  }
+  if (request.output) fmt::print(stderr, "wrote {}\n", *request.output);
+}
+
+}  // namespace momenta::cli

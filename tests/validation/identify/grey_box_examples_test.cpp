@@ -1,0 +1,64 @@
+// Grey-box fits of the examples' logs (examples/identification/make_grey_box_logs.py: SciPy on
+// the textbooks' equations, seeded noise): the parameters the logs were made with lie inside the
+// fits' 95 % intervals, the residuals are white and as large as the noise put in.
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "momenta/identify/grey_box.hpp"
+#include "momenta/identify/identification_file.hpp"
+
+namespace momenta::identify {
+namespace {
+
+const std::filesystem::path kExamples = "examples/identification";
+
+GreyBoxEstimate fit_example(const std::string& file) {
+  const GreyBoxProblem problem = read_identification_file(kExamples / file);
+  return fit_grey_box(problem);
+}
+
+// The truth lies inside the 95 % interval, which is tight (its half-width a small fraction of the
+// value): a fit that cannot fail by returning huge intervals.
+void expect_recovered(const GreyBoxEstimate& e, int i, double truth, double largest_relative_se) {
+  SCOPED_TRACE(e.names[std::size_t(i)]);
+  EXPECT_LE(e.lower95[i], truth);
+  EXPECT_GE(e.upper95[i], truth);
+  EXPECT_LT(e.standard_error[i] / std::abs(e.value[i]), largest_relative_se);
+  EXPECT_GT(e.standard_error[i], 0.0);
+}
+
+TEST(GreyBoxExamples, CruiseControlMassAndDragFromASpeedLogUnderAKnownForce) {
+  const GreyBoxEstimate e = fit_example("cruise_control_identify.yaml");
+  ASSERT_TRUE(e.converged) << e.termination;
+  EXPECT_TRUE(e.identifiable);
+  expect_recovered(e, 0, 1000.0, 0.02);  // m, kg
+  expect_recovered(e, 1, 50.0, 0.02);    // b, N·s/m
+  ASSERT_EQ(e.channels.size(), 1u);
+  // σ estimated from the residuals: the 0.05 m/s put in, to its sampling spread (241 samples:
+  // relative SD 1/√(2·239) ≈ 4.6 %, so ±15 % is over three of them).
+  EXPECT_NEAR(e.channels[0].noise, 0.05, 0.15 * 0.05);
+  EXPECT_GT(e.channels[0].whiteness_p, 0.01);
+}
+
+TEST(GreyBoxExamples, QuarterCarSpringAndDamperFromTheBodyResponseToAKerb) {
+  const GreyBoxEstimate e = fit_example("quarter_car_identify.yaml");
+  ASSERT_TRUE(e.converged) << e.termination;
+  EXPECT_TRUE(e.identifiable);
+  expect_recovered(e, 0, 130000.0, 0.02);  // ks, N/m
+  expect_recovered(e, 1, 9800.0, 0.02);    // b, N·s/m
+}
+
+TEST(GreyBoxExamples, PendulumDampingAndReleaseAngleFromAFreeDecay) {
+  const GreyBoxEstimate e = fit_example("damped_pendulum_identify.yaml");
+  ASSERT_TRUE(e.converged) << e.termination;
+  EXPECT_TRUE(e.identifiable);
+  expect_recovered(e, 0, 0.05, 0.02);  // c, N·m·s/rad
+  expect_recovered(e, 1, 28.5, 0.02);  // θ0, deg
+}
+
+}  // namespace
+}  // namespace momenta::identify
