@@ -75,6 +75,7 @@ from ._core import (
     find_rolling_steady_motions,
     find_steady_precession,
     free_body_diagram,
+    identify,
     impulse_momentum_diagram,
     impulse_response,
     inertial_parameters,

@@ -832,6 +832,10 @@ def free_body_diagram(model: Model, body: ArrayLike, *, q: object = None, v: obj
     """The body's free-body and kinetic diagrams at (t, q, v) — without q and v, the state the model's own run reaches at t (its initial state at t = 0) — as `momenta diagram` computes them: a dict with `loads` (each a dict: kind, name, description, point, force, couple in the world's axes, and the joint i"""
     ...
 
+def identify(file: str, output: Optional[str] = None, overwrite: bool = False) -> dict:
+    """Fits the numbers an identification file names to its experiments' logs, as `momenta identify FILE` does: a dict of `names`, `paths`, `estimate`, `standard_error`, `lower` and `upper` (95 %; ±inf where the data do not determine a parameter), `start`, `correlation`, the identifiability (`identifiable`"""
+    ...
+
 def impulse_momentum_diagram(model: Model, body: ArrayLike, impulses: list, *, q: object = None, v: object = None, t: float = 0.0) -> dict:
     """The body's impulse–momentum diagram for impulses applied at (t, q, v) — impulses = [(body, p_BoP_B, P_W), ...] (N·s), as `momenta diagram --at … --impulse …` draws it: a dict with the momenta linear_before (m v̄₁), angular_before (H_G1), linear_after, angular_after, the `impulses` on the body (each """
     ...

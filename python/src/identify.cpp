@@ -1,11 +1,20 @@
 // momenta.inertial_regressor, base_parameters, estimate_inertia: identification of a tree's
-// inertial parameters from measured motion and joint efforts (docs/identification.md), with the
-// same numbers as `momenta identify`.
+// inertial parameters from measured motion and joint efforts; momenta.identify: grey-box fits of
+// an identification file (docs/identification.md) — the same numbers as `momenta identify`.
 
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+
+#include <fmt/format.h>
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
 #include "model_handle.hpp"
+#include "momenta/common/error.hpp"
+#include "momenta/identify/grey_box.hpp"
+#include "momenta/identify/identification_file.hpp"
 #include "momenta/identify/inertia_data.hpp"
 #include "momenta/identify/inertial_regressor.hpp"
 
@@ -31,9 +40,85 @@ py::dict base_dict(const model::Model& model, const identify::BaseParameters& ba
   return d;
 }
 
+py::dict grey_box_dict(const identify::GreyBoxEstimate& e) {
+  py::dict d;
+  d["names"] = e.names;
+  d["paths"] = e.paths;
+  d["estimate"] = to_numpy(e.value);
+  d["standard_error"] = to_numpy(e.standard_error);
+  d["lower"] = to_numpy(e.lower95);
+  d["upper"] = to_numpy(e.upper95);
+  d["start"] = to_numpy(e.start);
+  d["log_scale"] = e.positive;
+  d["at_bound"] = e.at_bound;
+  d["correlation"] = to_numpy(e.correlation);
+  d["degrees_of_freedom"] = e.degrees_of_freedom;
+  d["identifiable"] = e.identifiable;
+  d["singular_values"] = to_numpy(e.singular_values);
+  d["condition_number"] = e.condition_number;
+  d["undetermined"] = e.undetermined;
+  d["least_determined"] = e.least_determined;
+  py::list channels;
+  for (const identify::FittedChannel& c : e.channels) {
+    py::dict channel;
+    channel["experiment"] = c.experiment;
+    channel["column"] = c.column;
+    channel["channel"] = c.channel;
+    channel["unit"] = c.unit;
+    channel["time"] = to_numpy(c.time);
+    channel["measured"] = to_numpy(c.measured);
+    channel["fitted"] = to_numpy(c.fitted);
+    channel["at_start"] = to_numpy(c.guessed);
+    channel["noise"] = c.noise;
+    channel["noise_given"] = c.noise_given;
+    channel["residual_rms"] = c.rms;
+    channel["whiteness_p"] = c.whiteness_p;
+    channels.append(channel);
+  }
+  d["channels"] = channels;
+  d["converged"] = e.converged;
+  d["termination"] = e.termination;
+  d["iterations"] = e.iterations;
+  d["simulations"] = e.simulations;
+  d["sensitivity_simulations"] = e.sensitivity_simulations;
+  d["evaluations"] = e.evaluations;
+  d["final_cost"] = e.final_cost;
+  return d;
+}
+
 }  // namespace
 
 void bind_identify(py::module_& m) {
+  m.def(
+      "identify",
+      [](const std::string& file, std::optional<std::string> output, bool overwrite) {
+        if (output && std::filesystem::exists(*output) && !overwrite) {
+          throw FileError(fmt::format("{}: the file exists; pass overwrite=True", *output));
+        }
+        const identify::GreyBoxProblem problem = identify::read_identification_file(file);
+        identify::GreyBoxEstimate e;
+        {
+          py::gil_scoped_release release;
+          e = identify::fit_grey_box(problem);
+        }
+        if (output) {
+          std::ofstream out(*output, std::ios::binary);
+          out << identify::identified_model_text(problem, e);
+          if (!out.flush()) throw FileError(fmt::format("{}: cannot be written", *output));
+        }
+        return grey_box_dict(e);
+      },
+      py::arg("file"), py::arg("output") = py::none(), py::arg("overwrite") = false,
+      "Fits the numbers an identification file names to its experiments' logs, as `momenta "
+      "identify FILE` does: a dict of `names`, `paths`, `estimate`, `standard_error`, `lower` "
+      "and `upper` (95 %; ±inf where the data do not determine a parameter), `start`, "
+      "`correlation`, the identifiability (`identifiable`, `singular_values`, "
+      "`condition_number`, `undetermined` in words, `least_determined`), per measured channel "
+      "its `time`, `measured`, `fitted` and `at_start` values, `noise`, `residual_rms` and "
+      "`whiteness_p`, and the optimizer's `converged`, `termination`, `iterations`, runs and "
+      "evaluations. With `output`, the identified model file is written there (an existing "
+      "file only with overwrite=True).");
+
   m.def(
       "inertial_parameters",
       [](const ModelHandle& h) {

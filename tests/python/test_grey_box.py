@@ -1,0 +1,63 @@
+"""momenta.identify (grey-box fits of an identification file) on logs made here by SciPy from the
+textbook's equation of a damped pendulum (solve_ivp, an independent route), with seeded noise:
+the truth inside the 95 % intervals, the noise found, the identified model written and read back,
+and the same numbers as `momenta identify --json`."""
+
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+import momenta
+
+from conftest import EXAMPLES, cli_json
+
+C_TRUE, THETA0_TRUE, SIGMA = 0.12, 40.0, 0.002  # N·m·s/rad, deg, rad
+
+
+@pytest.fixture
+def experiment(tmp_path):
+    # m L² θ̈ + c θ̇ + m g L sin θ = 0 with m = 1 kg, L = 1 m (damped_pendulum.yaml's rig).
+    t = np.linspace(0.0, 20.0, 401)
+    sol = solve_ivp(lambda s, z: [z[1], -9.81 * math.sin(z[0]) - C_TRUE * z[1]], (0.0, 20.0),
+                    [math.radians(THETA0_TRUE), 0.0], t_eval=t, method="DOP853", rtol=1e-12,
+                    atol=1e-14)
+    angle = sol.y[0] + np.random.default_rng(11).normal(0.0, SIGMA, t.size)
+    np.savetxt(tmp_path / "decay.csv", np.column_stack([t, angle]), delimiter=",",
+               header="time,angle", comments="", fmt="%.12g")
+    (tmp_path / "fit.yaml").write_text(
+        f"model: {EXAMPLES / 'identification' / 'damped_pendulum.yaml'}\n"
+        "parameters:\n"
+        "  - {name: c, path: joints.pivot.damping}\n"
+        "  - {name: theta0, path: joints.pivot.q0_deg, guess: 35, positive: false}\n"
+        "experiments:\n"
+        "  - {name: decay, data: decay.csv, outputs: [{column: angle, channel: theta}]}\n")
+    return tmp_path
+
+
+def test_the_truth_lies_in_the_intervals(experiment):
+    r = momenta.identify(str(experiment / "fit.yaml"))
+    assert r["converged"], r["termination"]
+    assert r["identifiable"] and r["undetermined"] == []
+    for i, truth in enumerate([C_TRUE, THETA0_TRUE]):
+        assert r["lower"][i] <= truth <= r["upper"][i], (r["names"][i], r["estimate"][i])
+        assert 0 < r["standard_error"][i] < 0.02 * abs(truth)
+    (channel,) = r["channels"]
+    assert channel["unit"] == "rad" and not channel["noise_given"]
+    # σ from 401 residuals: relative spread 1/√(2·399) ≈ 3.5 %; 15 % is over four of them.
+    assert abs(channel["noise"] - SIGMA) < 0.15 * SIGMA
+    assert channel["whiteness_p"] > 0.01
+    assert np.max(np.abs(channel["fitted"] - channel["measured"])) < 5 * SIGMA
+    assert channel["time"].shape == channel["measured"].shape == (401,)
+
+
+def test_the_identified_model_reads_back_and_matches_the_command_line(experiment):
+    out = experiment / "identified.yaml"
+    r = momenta.identify(str(experiment / "fit.yaml"), output=str(out))
+    model = momenta.load_model(out)
+    assert model.initial_q[0] == pytest.approx(math.radians(r["estimate"][1]), rel=1e-12)
+    with pytest.raises(Exception, match="overwrite=True"):
+        momenta.identify(str(experiment / "fit.yaml"), output=str(out))
+    j = cli_json("identify", str(experiment / "fit.yaml"))
+    assert [p["estimate"] for p in j["parameters"]] == list(r["estimate"])
