@@ -132,43 +132,97 @@ class RunResiduals final : public ceres::CostFunction {
     mutable_parameter_block_sizes()->push_back(static_cast<int>(scale.positive.size()));
   }
 
+  // Ceres asks for the residuals at a trial point and, once it accepts the step, for residuals
+  // and Jacobian there again. With sensitivities each trial runs them at once (a run costs
+  // little more with them than without) and keeps the result, so that an accepted step costs one
+  // run; with differences of runs the trial's residuals are kept as the differences' base.
   bool Evaluate(double const* const* parameters, double* residuals,
                 double** jacobians) const override {
-    const VecX p = scale_.values(parameters[0]);
+    const auto np = static_cast<Eigen::Index>(scale_.positive.size());
+    const auto rows = static_cast<Eigen::Index>(num_residuals());
     const bool with_jacobian = jacobians != nullptr && jacobians[0] != nullptr;
-    const auto np = p.size();
+    const bool by_sensitivities = settings_.jacobian == GreyBoxSettings::Jacobian::sensitivities;
+    const bool cached =
+        cache_valid_ && std::equal(parameters[0], parameters[0] + np, cached_theta_.begin());
     try {
-      for (PreparedExperiment& x : experiments_) {
-        const SampledOutputs s = sample_outputs(x.make_model, p, *x.channels, x.times,
-                                                with_jacobian, settings_.sensitivity);
-        (with_jacobian ? sensitivity_simulations : simulations) += 1;
-        evaluations += s.evaluations;
-        const Eigen::Index nc = x.measured.cols();
-        for (Eigen::Index k = 0; k < x.measured.rows(); ++k) {
-          for (Eigen::Index c = 0; c < nc; ++c) {
-            const Eigen::Index row = x.offset + k * nc + c;
-            residuals[row] = (s.values(k, c) - x.measured(k, c)) / x.noise[c];
-            if (!with_jacobian) continue;
-            for (Eigen::Index i = 0; i < np; ++i) {
-              const double chain = scale_.positive[std::size_t(i)] ? p[i] : 1.0;
-              jacobians[0][row * np + i] = s.sensitivities(k * nc + c, i) / x.noise[c] * chain;
-            }
-          }
-        }
+      if (!cached) {
+        cache_valid_ = false;
+        cached_theta_.assign(parameters[0], parameters[0] + np);
+        cached_residuals_.resize(static_cast<std::size_t>(rows));
+        cached_jacobian_.resize(by_sensitivities ? static_cast<std::size_t>(rows * np) : 0);
+        have_jacobian_ = by_sensitivities;
+        fill(scale_.values(parameters[0]), by_sensitivities, cached_residuals_.data(),
+             cached_jacobian_.data());
+        cache_valid_ = true;
+      }
+      if (with_jacobian && !have_jacobian_) {
+        cached_jacobian_.resize(static_cast<std::size_t>(rows * np));
+        differentiate_runs(scale_.values(parameters[0]), cached_residuals_.data(),
+                           cached_jacobian_.data());
+        have_jacobian_ = true;
       }
     } catch (const Error&) {
       ++failed_runs;  // values the model refuses or a run that blows up: a step to reject
       return false;
     }
+    std::copy(cached_residuals_.begin(), cached_residuals_.end(), residuals);
+    if (with_jacobian) std::copy(cached_jacobian_.begin(), cached_jacobian_.end(), jacobians[0]);
     return true;
   }
+
+  /// Drops what is kept of the last point (the weights changed).
+  void forget() const { cache_valid_ = false; }
 
   mutable long simulations = 0, sensitivity_simulations = 0, evaluations = 0, failed_runs = 0;
 
  private:
+  // The residuals at p (and, from the sensitivities, the Jacobian in θ when `jacobian`).
+  void fill(const VecX& p, bool sensitivities, double* residuals, double* jacobian) const {
+    const auto np = p.size();
+    for (PreparedExperiment& x : experiments_) {
+      const SampledOutputs s = sample_outputs(x.make_model, p, *x.channels, x.times, sensitivities,
+                                              settings_.sensitivity);
+      (sensitivities ? sensitivity_simulations : simulations) += 1;
+      evaluations += s.evaluations;
+      const Eigen::Index nc = x.measured.cols();
+      for (Eigen::Index k = 0; k < x.measured.rows(); ++k) {
+        for (Eigen::Index c = 0; c < nc; ++c) {
+          const Eigen::Index row = x.offset + k * nc + c;
+          residuals[row] = (s.values(k, c) - x.measured(k, c)) / x.noise[c];
+          if (!sensitivities) continue;
+          for (Eigen::Index i = 0; i < np; ++i) {
+            const double chain = scale_.positive[std::size_t(i)] ? p[i] : 1.0;
+            jacobian[row * np + i] = s.sensitivities(k * nc + c, i) / x.noise[c] * chain;
+          }
+        }
+      }
+    }
+  }
+
+  // The Jacobian in θ by forward differences of whole runs, steps √rtol in θ (relative in p on
+  // a log scale).
+  void differentiate_runs(const VecX& p, const double* residuals, double* jacobian) const {
+    const auto np = p.size();
+    const auto rows = static_cast<Eigen::Index>(num_residuals());
+    std::vector<double> shifted(static_cast<std::size_t>(rows));
+    const double relative = std::sqrt(settings_.sensitivity.tolerances.relative);
+    for (Eigen::Index i = 0; i < np; ++i) {
+      const bool positive = scale_.positive[std::size_t(i)];
+      const double h = positive ? relative : relative * std::max(std::abs(p[i]), 1e-3);
+      VecX moved = p;
+      moved[i] = positive ? p[i] * std::exp(h) : p[i] + h;
+      fill(moved, false, shifted.data(), nullptr);
+      for (Eigen::Index r = 0; r < rows; ++r)
+        jacobian[r * np + i] = (shifted[std::size_t(r)] - residuals[r]) / h;
+    }
+  }
+
   std::vector<PreparedExperiment>& experiments_;
   const Parameterization& scale_;
   const GreyBoxSettings& settings_;
+  // The last point evaluated (θ) and what is known there.
+  mutable bool cache_valid_ = false, have_jacobian_ = false;
+  mutable std::vector<double> cached_theta_, cached_residuals_, cached_jacobian_;
 };
 
 // Outputs at p for every experiment, with the weighted Jacobian ∂r/∂p (in p, not θ).
@@ -413,8 +467,13 @@ GreyBoxEstimate fit_grey_box(const GreyBoxProblem& problem) {
     const Evaluation first =
         evaluate(experiments, scale.values(theta.data()), problem.settings, total, false, cost);
     estimate_noise(experiments, first.residuals, total, np);
+    cost.forget();  // the weights changed
     solve();
   }
+  // What the fit took to reach its optimum (the statistics' run there not counted).
+  e.simulations = cost.simulations;
+  e.sensitivity_simulations = cost.sensitivity_simulations;
+  e.evaluations = cost.evaluations;
   e.converged = summary.termination_type == ceres::CONVERGENCE;
   e.termination = termination_text(summary, e.iterations, cost.failed_runs);
   e.value = scale.values(theta.data());
@@ -509,9 +568,6 @@ GreyBoxEstimate fit_grey_box(const GreyBoxProblem& problem) {
       e.channels.push_back(std::move(f));
     }
   }
-  e.simulations = cost.simulations;
-  e.sensitivity_simulations = cost.sensitivity_simulations;
-  e.evaluations = cost.evaluations;
   e.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return e;

@@ -71,13 +71,19 @@ struct Member {
 // (q, S_q,1, …), velocity (v, S_v,1, …).
 class SensitivitySystem final : public integrate::SecondOrderSystem {
  public:
+  // ∂a/∂p_i by central differences between plus and minus (steps h_i), or, where `forward` is
+  // not empty, forward differences to forward[i] (steps forward_steps[i]).
   SensitivitySystem(Member& nominal, std::vector<std::unique_ptr<Member>>& plus,
-                    std::vector<std::unique_ptr<Member>>& minus, const VecX& steps,
-                    const VecX& scales)
+                    std::vector<std::unique_ptr<Member>>& minus,
+                    std::vector<std::unique_ptr<Member>>& forward, const VecX& steps,
+                    const VecX& forward_steps, const VecX& scales)
       : nominal_(nominal),
         plus_(plus),
         minus_(minus),
+        forward_(forward),
         steps_(steps),
+        forward_steps_(forward_steps),
+        central_(forward.empty()),
         scales_(scales),
         derivatives_(nominal.model),
         n_(nominal.model.nv()),
@@ -97,6 +103,8 @@ class SensitivitySystem final : public integrate::SecondOrderSystem {
 
   int nq() const override { return n_ * (1 + np_); }
   int nv() const override { return n_ * (1 + np_); }
+  /// The state's own accuracy chooses the steps; the sensitivities follow them.
+  int error_controlled() const override { return n_; }
   long evaluations() const { return evaluations_; }
 
   void acceleration(double t, const VecX& q, const VecX& v, VecX& vdot) override {
@@ -107,16 +115,21 @@ class SensitivitySystem final : public integrate::SecondOrderSystem {
     vdot.head(n_) = a_;
     for (int i = 0; i < np_; ++i) {
       const auto k = static_cast<std::size_t>(i);
-      plus_[k]->system.acceleration(t, q_, v_, a_plus_);
-      minus_[k]->system.acceleration(t, q_, v_, a_minus_);
       const Eigen::Index at = n_ * (1 + i);
       auto out = vdot.segment(at, n_);
       out.noalias() = da_dq_ * q.segment(at, n_);
       out.noalias() += da_dv_ * v.segment(at, n_);
-      out += (a_plus_ - a_minus_) * (scales_[i] / (2.0 * steps_[i]));
+      if (central_) {
+        plus_[k]->system.acceleration(t, q_, v_, a_plus_);
+        minus_[k]->system.acceleration(t, q_, v_, a_minus_);
+        out += (a_plus_ - a_minus_) * (scales_[i] / (2.0 * steps_[i]));
+      } else {
+        forward_[k]->system.acceleration(t, q_, v_, a_plus_);
+        out += (a_plus_ - a_) * (scales_[i] / forward_steps_[i]);
+      }
       for (const int r : prescribed_) out[r] = 0.0;
     }
-    evaluations_ += 1 + 2L * np_;
+    evaluations_ += 1 + (central_ ? 2L : 1L) * np_;
   }
 
   void integrate(const VecX& q, const VecX& dq, VecX& q_out) const override { q_out = q + dq; }
@@ -125,6 +138,7 @@ class SensitivitySystem final : public integrate::SecondOrderSystem {
     double next = nominal_.system.next_discontinuity(t);
     for (const auto& m : plus_) next = std::min(next, m->system.next_discontinuity(t));
     for (const auto& m : minus_) next = std::min(next, m->system.next_discontinuity(t));
+    for (const auto& m : forward_) next = std::min(next, m->system.next_discontinuity(t));
     return next;
   }
 
@@ -132,6 +146,7 @@ class SensitivitySystem final : public integrate::SecondOrderSystem {
     nominal_.system.begin_step(t0, t1);
     for (const auto& m : plus_) m->system.begin_step(t0, t1);
     for (const auto& m : minus_) m->system.begin_step(t0, t1);
+    for (const auto& m : forward_) m->system.begin_step(t0, t1);
   }
 
   std::string coordinate_name(int i, bool velocity) const override {
@@ -146,7 +161,10 @@ class SensitivitySystem final : public integrate::SecondOrderSystem {
   Member& nominal_;
   std::vector<std::unique_ptr<Member>>& plus_;
   std::vector<std::unique_ptr<Member>>& minus_;
+  std::vector<std::unique_ptr<Member>>& forward_;
   const VecX& steps_;
+  const VecX& forward_steps_;
+  bool central_;
   const VecX& scales_;
   analysis::AccelerationDerivatives derivatives_;
   int n_, np_;
@@ -346,17 +364,22 @@ SampledOutputs sample_outputs(const ModelFactory& make_model, const VecX& p,
   SampledOutputs out;
   integrate::DormandPrince5 method(options.tolerances);
   const integrate::RunOptions run_options{.t_end = times[times.size() - 1], .h = spacing};
-  VecX steps(np), scales(np);
-  std::vector<std::unique_ptr<Member>> plus, minus;
+  VecX steps(np), forward_steps(np), scales(np);
+  std::vector<std::unique_ptr<Member>> plus, minus, forward;
   if (sensitivities) {
     for (int i = 0; i < np; ++i) {
       scales[i] = p[i] != 0.0 ? std::abs(p[i]) : 1.0;
       steps[i] = options.relative_step * scales[i];
+      forward_steps[i] = options.forward_step * scales[i];
       VecX shifted = p;
       shifted[i] = p[i] + steps[i];
       plus.push_back(std::make_unique<Member>(make_model(shifted), channels.outputs()));
       shifted[i] = p[i] - steps[i];
       minus.push_back(std::make_unique<Member>(make_model(shifted), channels.outputs()));
+      if (options.dynamics == SensitivityOptions::Differences::forward) {
+        shifted[i] = p[i] + forward_steps[i];
+        forward.push_back(std::make_unique<Member>(make_model(shifted), channels.outputs()));
+      }
     }
   }
   Sampler sampler(channels, *nominal, sensitivities ? &plus : nullptr,
@@ -370,7 +393,7 @@ SampledOutputs sample_outputs(const ModelFactory& make_model, const VecX& p,
     out.evaluations = summary.statistics.evaluations;
     out.steps = summary.statistics.steps;
   } else {
-    SensitivitySystem system(*nominal, plus, minus, steps, scales);
+    SensitivitySystem system(*nominal, plus, minus, forward, steps, forward_steps, scales);
     integrate::State state{times[0], VecX::Zero(n * (1 + np)), VecX::Zero(n * (1 + np))};
     VecX q0 = nominal->model.initial_q(), v0 = nominal->model.initial_v();
     nominal->system.apply_prescribed_motion(state.t, q0, v0);

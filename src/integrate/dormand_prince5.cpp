@@ -47,6 +47,7 @@ DormandPrince5::DormandPrince5(const Tolerances& tolerances) : tolerances_(toler
 void DormandPrince5::initialize(SecondOrderSystem& system, const State& state) {
   const int nq = system.nq();
   const int nv = system.nv();
+  controlled_ = std::clamp(system.error_controlled(), 0, nv);
   stages_.resize(nq, nv, 7);
   for (VecX* x :
        {&delta1_, &v1_, &error_delta_, &error_v_, &scale_q0_, &scale_q1_, &delta6_, &v6_}) {
@@ -73,15 +74,16 @@ void DormandPrince5::initialize(SecondOrderSystem& system, const State& state) {
 // about the tolerance, limited by a first-order look at the second derivative.
 double DormandPrince5::initial_step(SecondOrderSystem& system, const State& state) {
   const int nv = system.nv();
+  const int n = controlled_;
   system.configuration_scale(state.q, scale_q0_);
   const auto rms = [&](const VecX& dq, const VecX& dv) {
     double sum = 0.0;
-    for (int i = 0; i < nv; ++i) {
+    for (int i = 0; i < n; ++i) {
       const double sq = tolerances_.absolute + tolerances_.relative * scale_q0_[i];
       const double sv = tolerances_.absolute + tolerances_.relative * std::abs(state.v[i]);
       sum += (dq[i] / sq) * (dq[i] / sq) + (dv[i] / sv) * (dv[i] / sv);
     }
-    return nv == 0 ? 0.0 : std::sqrt(sum / (2 * nv));
+    return n == 0 ? 0.0 : std::sqrt(sum / (2 * n));
   };
   const VecX& a0 = stages_.kv[0];
   const double d0 = rms(VecX::Zero(nv), state.v) + rms(scale_q0_, VecX::Zero(nv));
@@ -119,7 +121,7 @@ std::string DormandPrince5::largest_error_coordinate(const SecondOrderSystem& sy
 }
 
 double DormandPrince5::error_norm(const State& start, const VecX& v1) const {
-  const int n = static_cast<int>(v1.size());
+  const int n = controlled_;
   if (n == 0) return 0.0;
   double sum = 0.0;
   for (int i = 0; i < n; ++i) {

@@ -76,6 +76,11 @@ struct GreyBoxExperiment {
 struct GreyBoxSettings {
   SensitivityOptions sensitivity;
   int max_iterations = 100;
+  /// Where the Jacobian comes from: the sensitivity equations (the default), or — the obvious
+  /// alternative, kept to measure against (bench/grey_box_bench.cpp) — forward differences of
+  /// whole runs, n_p + 1 runs per Jacobian with steps √rtol · |p_i|.
+  enum class Jacobian { sensitivities, run_differences };
+  Jacobian jacobian = Jacobian::sensitivities;
 };
 
 struct GreyBoxProblem {

@@ -8,11 +8,10 @@
 //     Ṡ_q,i = S_v,i,     Ṡ_v,i = ∂a/∂q S_q,i + ∂a/∂v S_v,i + ∂a/∂p_i,    S_i(t0) = ∂x0/∂p_i,
 //
 // with ∂a/∂q and ∂a/∂v analytic (analysis/acceleration_derivatives.hpp) and ∂a/∂p_i, ∂x0/∂p_i
-// and an output's own ∂y/∂p_i by central differences between models built at p_i ± h_i (at the
-// same state: differences of the dynamics, never of whole runs). Each sensitivity is carried
-// scaled by its parameter's size, p_i ∂x/∂p_i (lengths and angles like x itself), so that one
-// tolerance serves the state and the sensitivities. An output column of the model's `outputs:`
-// is y(t, q, v; p): its ∂y/∂x by central differences of the output at the state.
+// and an output's own ∂y/∂p_i by differences between models built at shifted p_i (at the same
+// state: differences of the dynamics, never of whole runs). Each sensitivity is carried scaled by
+// its parameter's size, p_i ∂x/∂p_i (lengths and angles like x itself). An output column of the
+// model's `outputs:` is y(t, q, v; p): its ∂y/∂x by central differences of the output at the state.
 //
 // Scope: models whose coordinates are vectors (no ball or free joint: nq = nv), without
 // constraints, contacts, stops or controllers; prescribed joints are inputs.
@@ -34,11 +33,19 @@ namespace momenta::identify {
 using ModelFactory = std::function<model::Model(const VecX& p)>;
 
 struct SensitivityOptions {
+  /// The run's tolerances. They weigh the state alone: the sensitivities follow the steps the
+  /// state's accuracy chooses (SecondOrderSystem::error_controlled), as CVODES does with them
+  /// left out of its error test.
   integrate::Tolerances tolerances{1e-9, 1e-12};
-  /// ∂/∂p_i by central differences with h_i = relative_step · |p_i| (relative_step where p_i = 0):
-  /// truncation O(h²) ~1e-8 relative where a is not linear in p_i, round-off ~1e-12 / h (a step too
-  /// small makes the sensitivity equations noisy and the adaptive steps tiny).
+  /// ∂x0/∂p_i and an output's own ∂y/∂p_i (once per sample): central differences with
+  /// h_i = relative_step · |p_i| (relative_step where p_i = 0), truncation O(h²) ~1e-8 relative.
   double relative_step = 1e-4;
+  /// ∂a/∂p_i at every evaluation of the dynamics: forward differences with h_i = forward_step ·
+  /// |p_i| — one evaluation of a shifted model per parameter, error ~1e-7 relative (truncation
+  /// h, round-off ε/h) — or central ones with relative_step, two evaluations, ~1e-8.
+  enum class Differences { forward, central };
+  Differences dynamics = Differences::forward;
+  double forward_step = 1e-7;
 };
 
 /// What one run gives.

@@ -86,6 +86,7 @@ class DormandPrince5 final : public Integrator {
   double previous_error_ = 1e-4;         // for the PI controller
   bool have_last_acceleration_ = false;  // first-same-as-last
   bool last_rejected_ = false;
+  int controlled_ = 0;  // SecondOrderSystem::error_controlled()
 };
 
 }  // namespace momenta::integrate

@@ -45,6 +45,13 @@ class SecondOrderSystem {
   /// when nq == nv), 1 rad on rotations.
   virtual void configuration_scale(const VecX& q, VecX& scale) const { scale = q.cwiseAbs(); }
 
+  /// How many leading tangent coordinates (of q's tangent and of v alike) the adaptive methods'
+  /// error control weighs: all by default. A system that carries derivatives of its state along
+  /// with it (identify/trajectory_sensitivities.hpp) controls the state's own, and its extra
+  /// coordinates follow the steps the state's accuracy chooses — as CVODES does with its
+  /// sensitivities left out of the error test.
+  virtual int error_controlled() const { return nv(); }
+
   /// The first time strictly after t where a(t, q, v) is not smooth in t — an input steps, a
   /// table has a corner. integrate::run ends a step there so that no step straddles it (a step
   /// across a jump would cut the method to first order). +infinity (the default): none.
