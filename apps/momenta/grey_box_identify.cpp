@@ -15,6 +15,7 @@
 #include "momenta/identify/grey_box.hpp"
 #include "momenta/identify/identification_file.hpp"
 #include "momenta/io/model_file.hpp"
+#include "momenta/report/report.hpp"
 #include "output_format.hpp"
 
 namespace momenta::cli {
@@ -166,6 +167,45 @@ void print_estimate(const identify::GreyBoxProblem& problem, const identify::Gre
   }
 }
 
+report::GreyBoxResults page_results(const identify::GreyBoxProblem& problem,
+                                    const identify::GreyBoxEstimate& e) {
+  const auto values = [](const VecX& x) {
+    return std::vector<double>(x.data(), x.data() + x.size());
+  };
+  report::GreyBoxResults r;
+  r.title = problem.name;
+  r.model_source = problem.model.string();
+  r.converged = e.converged;
+  r.termination = e.termination;
+  r.iterations = e.iterations;
+  r.degrees_of_freedom = e.degrees_of_freedom;
+  r.runs = e.simulations + e.sensitivity_simulations;
+  r.evaluations = e.evaluations;
+  r.seconds = e.wall_seconds;
+  r.noise_estimated = e.noise_estimated;
+  for (std::size_t i = 0; i < e.names.size(); ++i) {
+    const auto k = static_cast<Eigen::Index>(i);
+    r.parameters.push_back({e.names[i], e.paths[i], e.value[k], e.standard_error[k], e.lower95[k],
+                            e.upper95[k], e.start[k], bool(e.at_bound[i])});
+  }
+  for (Eigen::Index a = 0; a < e.correlation.rows(); ++a)
+    r.correlation.push_back(values(e.correlation.row(a)));
+  r.singular_values = values(e.singular_values);
+  r.condition_number = e.condition_number;
+  r.identifiable = e.identifiable;
+  r.undetermined = e.undetermined;
+  r.advice = kUndeterminedAdvice;
+  r.least_determined = e.least_determined;
+  r.poorly_determined = identify::kPoorlyDetermined;
+  for (const identify::FittedChannel& c : e.channels) {
+    r.channels.push_back({c.experiment, c.column, c.channel, c.unit, values(c.time),
+                          values(c.measured), values(c.fitted), values(c.guessed), c.noise, c.rms,
+                          c.whiteness_p, c.noise_given});
+  }
+  r.whiteness_level = kWhiteResiduals;
+  return r;
+}
+
 // Writes the identified model and reads it back: a model file whose relative paths (parts,
 // meshes, tables) do not resolve from the new folder is named, not left broken.
 void write_identified_model(const GreyBoxRequest& request, const identify::GreyBoxProblem& problem,
@@ -202,12 +242,17 @@ void run_grey_box(const GreyBoxRequest& request) {
   const identify::GreyBoxProblem problem = identify::read_identification_file(request.file);
   const identify::GreyBoxEstimate e = identify::fit_grey_box(problem);
   if (request.output) write_identified_model(request, problem, e);
+  if (request.report) {
+    report::write_report(*request.report, report::grey_box_report_html(page_results(problem, e)),
+                         request.force);
+  }
   if (request.json) {
     fmt::print("{}\n", json_text(estimate_json(problem, e)));
   } else {
     print_estimate(problem, e);
   }
   if (request.output) fmt::print(stderr, "wrote {}\n", *request.output);
+  if (request.report) fmt::print(stderr, "wrote {}\n", *request.report);
 }
 
 }  // namespace momenta::cli

@@ -285,9 +285,6 @@ void run(const IdentifyOptions& o) {
           "estimate and the experiments (docs/identification.md, \"Grey-box fits\")",
           o.model.file));
     }
-    if (o.report) {
-      throw InvalidArgument("--report: the grey-box fit's page is not written yet; use --json");
-    }
     run_grey_box({o.model.file, o.json, o.report, o.output, o.force});
     return;
   }
@@ -347,8 +344,9 @@ void add_identify_command(CLI::App& app) {
   command->add_flag("--json", options->json, "Print JSON instead of text");
   command
       ->add_option("--report", options->report,
-                   "Also write the identification's HTML page: measured and fitted efforts, "
-                   "residuals, estimates with intervals, the correlations as a heat map")
+                   "Also write the identification's HTML page: measured and fitted efforts (or "
+                   "responses), residuals, estimates with intervals, the correlations as a heat "
+                   "map, what the data cannot tell")
       ->check(not_a_folder());
   command
       ->add_option("-o,--output", options->output,

@@ -23,7 +23,8 @@ namespace {
 // An experiment ready to run: its log on an even grid, its model maker and channels.
 struct PreparedExperiment {
   const GreyBoxExperiment* spec = nullptr;
-  VecX times;     // the even grid the log's times round to
+  VecX times;         // the even grid the log's times round to
+  VecX logged_times;  // the log's own
   MatX measured;  // samples × channels
   std::vector<int> input_signals;
   std::vector<VecX> input_values;
@@ -58,6 +59,7 @@ PreparedExperiment prepare(const io::ModelTemplate& file, const GreyBoxProblem& 
   const VecX time = column_of(e.data, "time", "the sample times, s");
   const double spacing = even_spacing(time, e.data.source);
   x.times = VecX::LinSpaced(time.size(), time[0], time[0] + spacing * double(time.size() - 1));
+  x.logged_times = time;
 
   const io::ModelFile nominal = file.with(e.set);
   for (const MeasuredInput& input : e.inputs) {
@@ -556,7 +558,7 @@ GreyBoxEstimate fit_grey_box(const GreyBoxProblem& problem) {
       f.column = p.spec->outputs[std::size_t(c)].column;
       f.channel = p.spec->outputs[std::size_t(c)].channel;
       f.unit = p.channels->units()[std::size_t(c)];
-      f.time = p.times;
+      f.time = p.logged_times;
       f.measured = p.measured.col(c);
       f.fitted = best.runs[x].values.col(c);
       f.guessed = at_start.runs[x].values.col(c);

@@ -1,3 +1,5 @@
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "momenta/report/report.hpp"
@@ -51,6 +53,69 @@ std::string identification_report_html(const IdentificationResults& r) {
     bodies.push_back({{"name", b.name}, {"verdict", b.verdict}, {"consistent", b.consistent}});
   }
   data["bodies"] = std::move(bodies);
+  return detail::html_page(fmt::format("{} — momenta identify", r.title), data);
+}
+
+namespace {
+
+// A figure that may be infinite (an undetermined standard error or bound): null in the page.
+detail::json number_or_null(double x) {
+  return std::isfinite(x) ? detail::json(x) : detail::json(nullptr);
+}
+
+}  // namespace
+
+std::string grey_box_report_html(const GreyBoxResults& r) {
+  using detail::json;
+  json data;
+  data["kind"] = "grey-box";
+  data["title"] = r.title;
+  data["model_source"] = r.model_source;
+  data["converged"] = r.converged;
+  data["termination"] = r.termination;
+  data["iterations"] = r.iterations;
+  data["degrees_of_freedom"] = r.degrees_of_freedom;
+  data["runs"] = r.runs;
+  data["evaluations"] = r.evaluations;
+  data["seconds"] = r.seconds;
+  data["noise_estimated"] = r.noise_estimated;
+  json parameters = json::array();
+  for (const GreyBoxResults::Parameter& p : r.parameters) {
+    parameters.push_back({{"name", p.name},
+                          {"path", p.path},
+                          {"estimate", p.estimate},
+                          {"standard_error", number_or_null(p.standard_error)},
+                          {"lower", number_or_null(p.lower)},
+                          {"upper", number_or_null(p.upper)},
+                          {"start", p.start},
+                          {"at_bound", p.at_bound}});
+  }
+  data["estimates"] = std::move(parameters);
+  data["correlation"] = r.correlation;
+  data["identifiability"] = {{"singular_values", r.singular_values},
+                             {"condition_number", number_or_null(r.condition_number)},
+                             {"identifiable", r.identifiable},
+                             {"undetermined", r.undetermined},
+                             {"advice", r.advice},
+                             {"least_determined", r.least_determined},
+                             {"poor", r.poorly_determined}};
+  json channels = json::array();
+  for (const GreyBoxResults::Channel& c : r.channels) {
+    channels.push_back({{"experiment", c.experiment},
+                        {"column", c.column},
+                        {"channel", c.channel},
+                        {"unit", c.unit},
+                        {"time", detail::encode_f64(c.time)},
+                        {"measured", detail::encode_f64(c.measured)},
+                        {"fitted", detail::encode_f64(c.fitted)},
+                        {"at_start", detail::encode_f64(c.at_start)},
+                        {"noise", c.noise},
+                        {"noise_given", c.noise_given},
+                        {"residual_rms", c.residual_rms},
+                        {"whiteness_p", c.whiteness_p}});
+  }
+  data["channels"] = std::move(channels);
+  data["whiteness_level"] = r.whiteness_level;
   return detail::html_page(fmt::format("{} — momenta identify", r.title), data);
 }
 

@@ -824,4 +824,49 @@ test('identification page: measured and fitted efforts, residuals, estimates and
   await page.close();
 });
 
+test('grey-box page: the log, the fitted and the starting model, residuals, estimates and their correlations, the numbers of the command line', async () => {
+  const file = path.join(work, 'quarter_car_fit.html');
+  const identification = path.join(examples, 'identification', 'quarter_car_identify.yaml');
+  const log = path.join(examples, 'identification', 'quarter_car_log.csv');
+  const printed = JSON.parse(run('identify', identification, '--report', file, '--json'));
+  const data = csv(fs.readFileSync(log, 'utf8'));
+  const { page, problems } = await open(file);
+  assert.equal(await page.evaluate(() => window.momentaReport.kind), 'grey-box');
+  await page.evaluate(() => window.momentaReport.drawAllCharts());
+  const shown = await page.evaluate(() => ({
+    estimates: window.momentaReport.estimates(), rows: window.momentaReport.tableRows(),
+    body: window.momentaReport.plotted('kerb: body_travel'),
+    residual: window.momentaReport.plotted('kerb: body_travel residual'),
+    cells: window.momentaReport.heatMap(),
+    verdict: document.querySelector('#identifiability .verdict').textContent,
+    white: Array.from(document.querySelectorAll('#channel-noise tbody tr')).map((tr) => tr.lastChild.textContent),
+  }));
+  // The estimates are the command line's, bit for bit, named and placed by their paths.
+  assert.deepEqual(shown.estimates.map((e) => e.estimate), printed.parameters.map((p) => p.estimate));
+  assert.deepEqual(shown.rows.map((r) => r.slice(0, 2)), [['ks', 'forces.suspension.stiffness'], ['b', 'forces.suspension.damping']]);
+  // The measured series is the log's column against its time; the fitted model within 5σ of it
+  // (σ = 0.5 mm); the start visibly elsewhere; both axes say quantity and unit.
+  assert.deepEqual(shown.body.x, data.column('time'));
+  assert.deepEqual(shown.body.series[0].values, data.column('body_travel'));
+  assert.deepEqual(shown.body.series.map((s) => s.name), ['measured', 'fitted', 'at the start']);
+  assert.deepEqual(shown.body.axes, ['time (s)', 'body_y (m)']);
+  const gap = (k) => Math.max(...shown.body.series[k].values.map((f, i) => Math.abs(f - shown.body.series[0].values[i])));
+  assert.ok(gap(1) < 5 * 0.0005, `fitted ${gap(1)} m from measured`);
+  assert.ok(gap(2) > 10 * 0.0005, `the start only ${gap(2)} m from measured`);
+  assert.equal(shown.residual.series[1].values[0], 2 * printed.channels[0].noise);
+  assert.deepEqual(shown.residual.axes, ['time (s)', 'residual (m)']);
+  // 2 × 2 correlations, the diagonal full red, each number the matrix's.
+  assert.equal(shown.cells.length, 4);
+  for (const c of shown.cells) {
+    assert.equal(c.text, printed.correlation[c.row][c.column].toFixed(2));
+    if (c.row === c.column) assert.equal(c.fill, 'rgb(214,39,40)');
+  }
+  assert.equal(shown.verdict, 'every parameter is determined');
+  assert.deepEqual(shown.white.map((w) => w.endsWith(': white')), [true]);
+  await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+  await page.screenshot({ path: path.join(artifacts, 'grey-box-page.png'), fullPage: true });
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
 after(() => fs.writeFileSync(path.join(artifacts, 'measured.json'), JSON.stringify(measured, null, 2)));

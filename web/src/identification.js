@@ -77,13 +77,13 @@ function estimatesSection(data) {
 }
 
 // Blue −1, white 0, red +1.
-function correlationColour(rho) {
+export function correlationColour(rho) {
   const t = Math.max(-1, Math.min(1, rho));
   const mix = (a, b) => Math.round(255 + (b - 255) * Math.abs(t));
   return t >= 0 ? `rgb(${mix(255, 214)},${mix(255, 39)},${mix(255, 40)})` : `rgb(${mix(255, 31)},${mix(255, 119)},${mix(255, 180)})`;
 }
 
-function correlationSection(data) {
+export function correlationSection(data) {
   const section = element('section', { id: 'correlation' }, element('h2', {}, 'Correlations of the estimates'));
   const n = data.estimates.length;
   const cell = 56;

@@ -7,6 +7,7 @@ import { decode, element, readData } from './data.js';
 import { campbellSection } from './campbell.js';
 import { diagramsSection } from './diagrams.js';
 import { equationsSection } from './equations.js';
+import { greyBoxPage } from './grey_box.js';
 import { identificationPage } from './identification.js';
 import { inertiaPage } from './inertia.js';
 import { linearSection } from './linear.js';
@@ -100,7 +101,7 @@ function start() {
   const app = document.getElementById('app');
   const started = performance.now();
   const data = readData();
-  const pages = { inertia: inertiaPage, sweep: sweepPage, identification: identificationPage };
+  const pages = { inertia: inertiaPage, sweep: sweepPage, identification: identificationPage, 'grey-box': greyBoxPage };
   const hook = (pages[data.kind] ?? simulationPage)(app, data);
   hook.loadMilliseconds = performance.now() - started;
   hook.ready = true;

@@ -94,7 +94,9 @@ struct GreyBoxProblem {
 /// One measured channel of one experiment, fitted.
 struct FittedChannel {
   std::string experiment, column, channel, unit;
-  VecX time, measured, fitted, guessed;  ///< guessed: the model at the start values
+  /// The log's times (the model ran on the even grid they round to, within 1e-6 of a spacing);
+  /// guessed: the model at the start values.
+  VecX time, measured, fitted, guessed;
   double noise = 0.0;                    ///< σ used in the final fit
   bool noise_given = false;
   double rms = 0.0;          ///< of the residuals

@@ -154,6 +154,47 @@ struct IdentificationResults {
 /// correlation matrix as a heat map, what the data cannot tell and each body's consistency.
 std::string identification_report_html(const IdentificationResults& results);
 
+/// What a grey-box fit's page shows (`momenta identify FILE.yaml --report`): filled by the front
+/// end from identify::GreyBoxEstimate.
+struct GreyBoxResults {
+  std::string title;         ///< the identification file's name
+  std::string model_source;  ///< the model file
+  bool converged = false;
+  std::string termination;  ///< how the fit ended, in words
+  int iterations = 0, degrees_of_freedom = 0;
+  long runs = 0, evaluations = 0;
+  double seconds = 0;
+  bool noise_estimated = false;
+  struct Parameter {
+    std::string name, path;
+    double estimate = 0, standard_error = 0, lower = 0, upper = 0,
+           start = 0;  ///< ±inf: not determined
+    bool at_bound = false;
+  };
+  std::vector<Parameter> parameters;
+  std::vector<std::vector<double>> correlation;  ///< of the estimates, row by row
+  std::vector<double> singular_values;           ///< of the scaled sensitivities, descending
+  double condition_number = 0;
+  bool identifiable = true;
+  std::vector<std::string> undetermined;  ///< a sentence per undetermined direction
+  std::string advice;                     ///< what to do about them
+  std::string least_determined;           ///< when poorly determined
+  double poorly_determined = 1e3;         ///< above this condition number
+  struct Channel {
+    std::string experiment, column, channel, unit;
+    std::vector<double> time, measured, fitted, at_start;
+    double noise = 0, residual_rms = 0, whiteness_p = 1;
+    bool noise_given = false;
+  };
+  std::vector<Channel> channels;
+  double whiteness_level = 0.01;  ///< below it, a residual is called correlated
+};
+
+/// The grey-box fit's page: per measured channel the log, the fitted model's response and the
+/// start's, the residual with ±2σ; the estimates with their intervals; the correlations as a
+/// heat map; what the data cannot determine, in words.
+std::string grey_box_report_html(const GreyBoxResults& results);
+
 /// Writes `html` to `path`. An existing file is kept (FileError naming it and --force) unless
 /// `overwrite`; a failed write leaves no partial file (written to a temporary name, then renamed).
 void write_report(const std::filesystem::path& path, const std::string& html, bool overwrite);

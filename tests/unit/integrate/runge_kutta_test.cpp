@@ -1,6 +1,8 @@
 #include "momenta/integrate/runge_kutta.hpp"
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -92,6 +94,43 @@ TEST(DormandPrince5, GlobalErrorFollowsTheTolerance) {
     previous = error;
     EXPECT_GT(dopri.statistics().steps, 0);
   }
+}
+
+// An oscillator carrying a fast, large companion it does not control (as the sensitivities ride
+// along a run, SecondOrderSystem::error_controlled): the steps are the oscillator's alone, the
+// same as without the companion, bit for bit.
+class OscillatorWithPassenger final : public SecondOrderSystem {
+ public:
+  int nq() const override { return 2; }
+  int nv() const override { return 2; }
+  int error_controlled() const override { return 1; }
+  void acceleration(double, const VecX& q, const VecX&, VecX& vdot) override {
+    vdot[0] = -4.0 * q[0];
+    vdot[1] = -400.0 * q[1];  // ten times faster and a thousand times larger
+  }
+  void integrate(const VecX& q, const VecX& dq, VecX& q_out) const override { q_out = q + dq; }
+};
+
+TEST(DormandPrince5, WeighsOnlyTheCoordinatesTheSystemControls) {
+  const auto steps_of = [](SecondOrderSystem& system, State state) {
+    DormandPrince5 dopri(Tolerances{1e-8, 1e-10});
+    dopri.initialize(system, state);
+    std::vector<double> times;
+    while (state.t < 5.0) {
+      dopri.step(system, state, 5.0 - state.t);
+      times.push_back(state.t);
+    }
+    return std::pair{times, state.q[0]};
+  };
+  HarmonicOscillator alone(2.0);
+  OscillatorWithPassenger carrying;
+  const auto [times_alone, q_alone] =
+      steps_of(alone, State{0.0, VecX::Constant(1, 1.0), VecX::Zero(1)});
+  VecX q0(2);
+  q0 << 1.0, 1000.0;
+  const auto [times_carrying, q_carrying] = steps_of(carrying, State{0.0, q0, VecX::Zero(2)});
+  EXPECT_EQ(times_carrying, times_alone);
+  EXPECT_EQ(q_carrying, q_alone);
 }
 
 TEST(DormandPrince5, DenseOutputIsFourthOrderInsideAStep) {
