@@ -15,6 +15,7 @@
 #include "momenta/common/error.hpp"
 #include "momenta/common/number_text.hpp"
 #include "momenta/common/suggest.hpp"
+#include "parameter_directions.hpp"
 #include "residual_whiteness.hpp"
 
 namespace momenta::identify {
@@ -25,7 +26,7 @@ struct PreparedExperiment {
   const GreyBoxExperiment* spec = nullptr;
   VecX times;         // the even grid the log's times round to
   VecX logged_times;  // the log's own
-  MatX measured;  // samples × channels
+  MatX measured;      // samples × channels
   std::vector<int> input_signals;
   std::vector<VecX> input_values;
   std::unique_ptr<ChannelSet> channels;
@@ -277,60 +278,6 @@ void estimate_noise(std::vector<PreparedExperiment>& experiments, const VecX& re
   }
 }
 
-std::string join_names(const std::vector<std::string>& names) {
-  if (names.size() == 1) return names[0];
-  std::string text;
-  for (std::size_t i = 0; i + 1 < names.size(); ++i) text += (i ? ", " : "") + names[i];
-  return text + " and " + names.back();
-}
-
-// In words: a direction v of the scaled parameters (δ ln p, or δp / |p|) the outputs do not feel.
-std::string describe_direction(const VecX& v, const std::vector<std::string>& names) {
-  const double largest = v.cwiseAbs().maxCoeff();
-  std::vector<int> involved;
-  for (Eigen::Index i = 0; i < v.size(); ++i)
-    if (std::abs(v[i]) >= 0.1 * largest) involved.push_back(int(i));
-  std::vector<std::string> who;
-  for (const int i : involved) who.push_back(names[std::size_t(i)]);
-  bool equal = true, same_sign = true;
-  for (const int i : involved) {
-    equal = equal && std::abs(std::abs(v[i]) / largest - 1.0) < 0.1;
-    same_sign = same_sign && (v[i] > 0) == (v[involved[0]] > 0);
-  }
-  if (involved.size() == 1) {
-    return fmt::format("{} changes no output: the data do not determine it", who[0]);
-  }
-  if (equal && same_sign) {
-    std::vector<std::string> ratios;
-    for (std::size_t k = 1; k < who.size(); ++k) ratios.push_back(who[k] + "/" + who[0]);
-    return fmt::format(
-        "{} scaled by one factor together change no output: the data determine only {} {}",
-        join_names(who), ratios.size() == 1 ? "the ratio" : "the ratios", join_names(ratios));
-  }
-  if (equal && involved.size() == 2) {
-    return fmt::format(
-        "{} raised and {} lowered by one factor change no output: the data determine only the "
-        "product {}·{}",
-        who[0], who[1], who[0], who[1]);
-  }
-  std::vector<std::string> terms;
-  for (const int i : involved)
-    terms.push_back(fmt::format("{:+.2f} δln {}", v[i] / largest, names[std::size_t(i)]));
-  return fmt::format(
-      "{} change no output moved together as {}: the data do not determine that "
-      "combination",
-      join_names(who), fmt::join(terms, " "));
-}
-
-std::string combination(const VecX& v, const std::vector<std::string>& names) {
-  const double largest = v.cwiseAbs().maxCoeff();
-  std::vector<std::string> terms;
-  for (Eigen::Index i = 0; i < v.size(); ++i)
-    if (std::abs(v[i]) >= 0.1 * largest)
-      terms.push_back(fmt::format("{:+.2f} ln {}", v[i] / largest, names[std::size_t(i)]));
-  return fmt::format("{}", fmt::join(terms, " "));
-}
-
 std::string termination_text(const ceres::Solver::Summary& summary, int iterations,
                              long failed_runs) {
   std::string text;
@@ -501,7 +448,7 @@ GreyBoxEstimate fit_grey_box(const GreyBoxProblem& problem) {
     const VecX v = svd.matrixV().col(k);
     if (!(e.singular_values[k] > kUndetermined * largest)) {
       e.identifiable = false;
-      e.undetermined.push_back(describe_direction(v, e.names));
+      e.undetermined.push_back(detail::describe_direction(v, e.names));
       for (Eigen::Index i = 0; i < np; ++i)
         if (std::abs(v[i]) >= 1e-3) undetermined_parameter[std::size_t(i)] = true;
       continue;
@@ -509,7 +456,7 @@ GreyBoxEstimate fit_grey_box(const GreyBoxProblem& problem) {
     covariance_scaled += v * v.transpose() / (e.singular_values[k] * e.singular_values[k]);
   }
   if (e.identifiable && e.condition_number > kPoorlyDetermined)
-    e.least_determined = combination(svd.matrixV().col(np - 1), e.names);
+    e.least_determined = detail::combination(svd.matrixV().col(np - 1), e.names);
   const MatX covariance = s2 * sizes.asDiagonal() * covariance_scaled * sizes.asDiagonal();
 
   const double quantile =
@@ -573,26 +520,6 @@ GreyBoxEstimate fit_grey_box(const GreyBoxProblem& problem) {
   e.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return e;
-}
-
-std::string identified_model_text(const GreyBoxProblem& problem, const GreyBoxEstimate& estimate) {
-  const io::ModelTemplate file(problem.model);
-  std::vector<io::NumberOverride> overrides;
-  std::string header = fmt::format("# Identified by momenta from {}{}:\n",
-                                   problem.name.empty() ? "measured data" : problem.name,
-                                   estimate.converged ? "" : " (the fit did not converge)");
-  for (std::size_t i = 0; i < estimate.names.size(); ++i) {
-    const auto k = static_cast<Eigen::Index>(i);
-    overrides.push_back({estimate.paths[i], estimate.value[k]});
-    const std::optional<double> before = file.number_at(estimate.paths[i]);
-    header +=
-        fmt::format("#   {} = {} ± {} (95 %: {} … {}); {}\n", estimate.names[i],
-                    number_text(estimate.value[k], 6), number_text(estimate.standard_error[k], 3),
-                    number_text(estimate.lower95[k], 6), number_text(estimate.upper95[k], 6),
-                    before ? fmt::format("the file had {}", number_text(*before, 6))
-                           : std::string("not in the file before"));
-  }
-  return header + file.text_with(overrides);
 }
 
 }  // namespace momenta::identify
