@@ -29,7 +29,7 @@ AccelerationDerivatives::AccelerationDerivatives(const model::Model& model)
   dr_dq_ff_.resize(nf, nf);
   dr_dv_ff_.resize(nf, nf);
   da_ff_.resize(nf, nf);
-  llt_ = Eigen::LLT<MatX>(nf);
+  // llt_ sizes itself on the first compute() (Eigen's LLT(n) leaves its status unset).
 }
 
 void AccelerationDerivatives::compute(const system::MultibodySystem& system, MatX& da_dq,

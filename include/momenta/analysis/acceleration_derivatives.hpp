@@ -27,7 +27,7 @@ class AccelerationDerivatives {
   /// last evaluated (system.evaluate(t, q, v) first; the system built on the same model). Rows
   /// and columns of prescribed coordinates are zero: their motion is given, not a state. Throws
   /// NumericalError when the free coordinates' mass matrix is not positive definite. No
-  /// allocation once sized.
+  /// allocation after the first call.
   void compute(const system::MultibodySystem& system, MatX& da_dq, MatX& da_dv);
 
   /// Velocity indices of the free (not prescribed) coordinates, ascending.
