@@ -67,8 +67,12 @@ GreyBoxProblem cruise_problem(io::MeasuredTable log, std::optional<double> noise
 
 // 1000 realizations: the share of intervals holding the truth has a binomial spread of 0.7 %
 // about 95 %, so 93–97 % is nearly three of them on either side. The noise is estimated from
-// each realization's residuals (Student's t, 58 degrees of freedom).
+// each realization's residuals (Student's t, 58 degrees of freedom). 12 s in Release; skipped
+// under AddressSanitizer (265 s there), where the other fits go through the same code.
 TEST(GreyBoxFit, IntervalsHoldTheTruthNinetyFivePercentOfTheTime) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "1000 fits: Release only";
+#endif
   std::mt19937_64 rng(55);
   const int realizations = 1000;
   int held_m = 0, held_b = 0;
