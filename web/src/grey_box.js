@@ -4,7 +4,7 @@
 
 import { LazyCharts, chart } from './plots.js';
 import { decode, element, formatNumber, table } from './data.js';
-import { correlationSection } from './identification.js';
+import { correlationSection, fitPageHooks } from './identification.js';
 
 const MEASURED = '#bdbdbd';
 const FITTED = '#d62728';
@@ -115,16 +115,6 @@ export function greyBoxPage(app, data) {
     kind: 'grey-box',
     drawAllCharts: () => charts.drawAll(),
     estimates: () => data.estimates,
-    plotted: (name) => {
-      const plot = drawn[name];
-      if (!plot) return null;
-      return { title: plot.root.querySelector('.u-title')?.textContent,
-        series: plot.series.slice(1).map((s, i) => ({ name: s.label, values: Array.from(plot.data[i + 1]) })),
-        x: Array.from(plot.data[0]), axes: plot.axes.map((a) => a.label) };
-    },
-    heatMap: () => Array.from(document.querySelectorAll('#correlation rect.cell')).map((r) => ({
-      row: Number(r.dataset.row), column: Number(r.dataset.column), fill: r.getAttribute('fill'),
-      text: r.nextSibling.textContent })),
-    tableRows: () => Array.from(document.querySelectorAll('#estimates tbody tr')).map((tr) => Array.from(tr.children).map((td) => td.textContent)),
+    ...fitPageHooks(drawn),
   };
 }

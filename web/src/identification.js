@@ -140,6 +140,24 @@ function identifiabilitySection(data) {
   return section;
 }
 
+// What a test reads back from a fit's page (this one and grey_box.js's): a drawn chart's title,
+// each series' name and values and its axes; the heat map's cells; the estimates table's rows.
+export function fitPageHooks(drawn) {
+  return {
+    plotted: (name) => {
+      const plot = drawn[name];
+      if (!plot) return null;
+      return { title: plot.root.querySelector('.u-title')?.textContent,
+        series: plot.series.slice(1).map((s, i) => ({ name: s.label, values: Array.from(plot.data[i + 1]) })),
+        x: Array.from(plot.data[0]), axes: plot.axes.map((a) => a.label) };
+    },
+    heatMap: () => Array.from(document.querySelectorAll('#correlation rect.cell')).map((r) => ({
+      row: Number(r.dataset.row), column: Number(r.dataset.column), fill: r.getAttribute('fill'),
+      text: r.nextSibling.textContent })),
+    tableRows: () => Array.from(document.querySelectorAll('#estimates tbody tr')).map((tr) => Array.from(tr.children).map((td) => td.textContent)),
+  };
+}
+
 export function identificationPage(app, data) {
   const charts = new LazyCharts();
   const drawn = {};
@@ -152,17 +170,6 @@ export function identificationPage(app, data) {
     kind: 'identification',
     drawAllCharts: () => charts.drawAll(),
     estimates: () => data.estimates,
-    // What a drawn chart holds: its title and each series' name and values.
-    plotted: (name) => {
-      const plot = drawn[name];
-      if (!plot) return null;
-      return { title: plot.root.querySelector('.u-title')?.textContent,
-        series: plot.series.slice(1).map((s, i) => ({ name: s.label, values: Array.from(plot.data[i + 1]) })),
-        x: Array.from(plot.data[0]), axes: plot.axes.map((a) => a.label) };
-    },
-    heatMap: () => Array.from(document.querySelectorAll('#correlation rect.cell')).map((r) => ({
-      row: Number(r.dataset.row), column: Number(r.dataset.column), fill: r.getAttribute('fill'),
-      text: r.nextSibling.textContent })),
-    tableRows: () => Array.from(document.querySelectorAll('#estimates tbody tr')).map((tr) => Array.from(tr.children).map((td) => td.textContent)),
+    ...fitPageHooks(drawn),
   };
 }

@@ -97,7 +97,7 @@ struct FittedChannel {
   /// The log's times (the model ran on the even grid they round to, within 1e-6 of a spacing);
   /// guessed: the model at the start values.
   VecX time, measured, fitted, guessed;
-  double noise = 0.0;                    ///< σ used in the final fit
+  double noise = 0.0;  ///< σ used in the final fit
   bool noise_given = false;
   double rms = 0.0;          ///< of the residuals
   double whiteness_p = 1.0;  ///< Ljung–Box over min(20, N/5) lags
