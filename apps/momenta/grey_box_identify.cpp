@@ -49,6 +49,7 @@ json estimate_json(const identify::GreyBoxProblem& problem, const identify::Grey
     parameters.push_back(
         {{"name", e.names[i]},
          {"path", e.paths[i]},
+         {"experiment", e.experiments[i].empty() ? json(nullptr) : json(e.experiments[i])},
          {"estimate", e.value[k]},
          {"standard_error", number_or_null(e.standard_error[k])},
          {"interval_95", {number_or_null(e.lower95[k]), number_or_null(e.upper95[k])}},

@@ -10,6 +10,10 @@ momenta's dynamics), with Gaussian sensor noise from a seeded generator:
                            at 0.1 s, quintic rise over 10 ms); body travel y at 500 Hz, σ = 0.5 mm.
   damped_pendulum_log.csv  m L² θ̈ + c θ̇ + m g L sin θ = 0; m = 1 kg, L = 1 m, c = 0.05 N·m·s/rad,
                            released from rest at 28.5°; angle at 20 Hz, σ = 0.2°.
+  damped_pendulum_release_60.csv  the same pendulum released from rest at 61.2° (the operator
+                           aimed at 60°), 20 s at 20 Hz, σ = 0.2°: the second test of
+                           damped_pendulum_releases_identify.yaml, whose release angles are each
+                           estimated for their own test.
 
 The engine force is logged at the rate it was commanded, and between samples it moved linearly
 (what a table input between samples means: docs/identification.md).
@@ -67,14 +71,14 @@ def quarter_car(rng):
     write("quarter_car_log.csv", "time,body_travel", [t, y])
 
 
-def damped_pendulum(rng):
+def damped_pendulum(rng, name="damped_pendulum_log.csv", release_deg=28.5, duration=30.0):
     m, L, c, g = 1.0, 1.0, 0.05, 9.81
-    theta0 = math.radians(28.5)
-    t = np.linspace(0.0, 30.0, 601)
+    theta0 = math.radians(release_deg)
+    t = np.linspace(0.0, duration, int(round(duration * 20)) + 1)
     sol = solve_ivp(lambda s, z: [z[1], -(g / L) * math.sin(z[0]) - c / (m * L * L) * z[1]],
-                    (0.0, 30.0), [theta0, 0.0], t_eval=t, max_step=0.01, **SOLVER)
+                    (0.0, duration), [theta0, 0.0], t_eval=t, max_step=0.01, **SOLVER)
     angle = sol.y[0] + rng.normal(0.0, math.radians(0.2), t.size)
-    write("damped_pendulum_log.csv", "time,angle", [t, angle])
+    write(name, "time,angle", [t, angle])
 
 
 if __name__ == "__main__":
@@ -82,3 +86,4 @@ if __name__ == "__main__":
     cruise_control(rng)
     quarter_car(rng)
     damped_pendulum(rng)
+    damped_pendulum(rng, "damped_pendulum_release_60.csv", release_deg=61.2, duration=20.0)

@@ -44,6 +44,7 @@ py::dict grey_box_dict(const identify::GreyBoxEstimate& e) {
   py::dict d;
   d["names"] = e.names;
   d["paths"] = e.paths;
+  d["experiments"] = e.experiments;  // per parameter: the experiment it belongs to, "" if shared
   d["estimate"] = to_numpy(e.value);
   d["standard_error"] = to_numpy(e.standard_error);
   d["lower"] = to_numpy(e.lower95);

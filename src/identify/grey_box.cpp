@@ -30,9 +30,10 @@ struct PreparedExperiment {
   std::vector<int> input_signals;
   std::vector<VecX> input_values;
   std::unique_ptr<ChannelSet> channels;
-  ModelFactory make_model;
-  VecX noise;               // σ per channel in the current fit
-  Eigen::Index offset = 0;  // first residual
+  std::vector<Eigen::Index> parameters;  // of the problem's, those that apply to this experiment
+  ModelFactory make_model;               // of those parameters' values alone
+  VecX noise;                            // σ per channel in the current fit
+  Eigen::Index offset = 0;               // first residual
   Eigen::Index size() const { return measured.size(); }
 };
 
@@ -97,11 +98,15 @@ PreparedExperiment prepare(const io::ModelTemplate& file, const GreyBoxProblem& 
     throw InvalidArgument(fmt::format("{}: {}", label, error.what()));
   }
 
-  x.make_model = [&file, &problem, &e, grid = x.times, signals = x.input_signals,
-                  values = x.input_values](const VecX& p) {
+  for (std::size_t i = 0; i < problem.parameters.size(); ++i) {
+    const std::string& owner = problem.parameters[i].experiment;
+    if (owner.empty() || owner == e.name) x.parameters.push_back(Eigen::Index(i));
+  }
+  x.make_model = [&file, &problem, &e, own = x.parameters, grid = x.times,
+                  signals = x.input_signals, values = x.input_values](const VecX& p) {
     std::vector<io::NumberOverride> overrides = e.set;
-    for (std::size_t i = 0; i < problem.parameters.size(); ++i)
-      overrides.push_back({problem.parameters[i].path, p[Eigen::Index(i)]});
+    for (std::size_t k = 0; k < own.size(); ++k)
+      overrides.push_back({problem.parameters[std::size_t(own[k])].path, p[Eigen::Index(k)]});
     model::Model model = file.with(overrides).model;
     for (std::size_t k = 0; k < signals.size(); ++k) {
       model::TableSignal table{std::vector<double>(grid.begin(), grid.end()),
@@ -182,9 +187,10 @@ class RunResiduals final : public ceres::CostFunction {
   // The residuals at p (and, from the sensitivities, the Jacobian in θ when `jacobian`).
   void fill(const VecX& p, bool sensitivities, double* residuals, double* jacobian) const {
     const auto np = p.size();
+    std::fill(jacobian, jacobian + (sensitivities ? num_residuals() * np : 0), 0.0);
     for (PreparedExperiment& x : experiments_) {
-      const SampledOutputs s = sample_outputs(x.make_model, p, *x.channels, x.times, sensitivities,
-                                              settings_.sensitivity);
+      const SampledOutputs s = sample_outputs(x.make_model, p(x.parameters), *x.channels, x.times,
+                                              sensitivities, settings_.sensitivity);
       (sensitivities ? sensitivity_simulations : simulations) += 1;
       evaluations += s.evaluations;
       const Eigen::Index nc = x.measured.cols();
@@ -193,9 +199,11 @@ class RunResiduals final : public ceres::CostFunction {
           const Eigen::Index row = x.offset + k * nc + c;
           residuals[row] = (s.values(k, c) - x.measured(k, c)) / x.noise[c];
           if (!sensitivities) continue;
-          for (Eigen::Index i = 0; i < np; ++i) {
+          for (std::size_t j = 0; j < x.parameters.size(); ++j) {
+            const Eigen::Index i = x.parameters[j];
             const double chain = scale_.positive[std::size_t(i)] ? p[i] : 1.0;
-            jacobian[row * np + i] = s.sensitivities(k * nc + c, i) / x.noise[c] * chain;
+            jacobian[row * np + i] =
+                s.sensitivities(k * nc + c, Eigen::Index(j)) / x.noise[c] * chain;
           }
         }
       }
@@ -240,10 +248,10 @@ Evaluation evaluate(std::vector<PreparedExperiment>& experiments, const VecX& p,
                     RunResiduals& counters) {
   Evaluation out;
   out.residuals.resize(residuals);
-  if (sensitivities) out.jacobian.resize(residuals, p.size());
+  if (sensitivities) out.jacobian.setZero(residuals, p.size());
   for (PreparedExperiment& x : experiments) {
-    out.runs.push_back(
-        sample_outputs(x.make_model, p, *x.channels, x.times, sensitivities, settings.sensitivity));
+    out.runs.push_back(sample_outputs(x.make_model, p(x.parameters), *x.channels, x.times,
+                                      sensitivities, settings.sensitivity));
     (sensitivities ? counters.sensitivity_simulations : counters.simulations) += 1;
     counters.evaluations += out.runs.back().evaluations;
     const SampledOutputs& s = out.runs.back();
@@ -252,7 +260,10 @@ Evaluation evaluate(std::vector<PreparedExperiment>& experiments, const VecX& p,
       for (Eigen::Index c = 0; c < nc; ++c) {
         const Eigen::Index row = x.offset + k * nc + c;
         out.residuals[row] = (s.values(k, c) - x.measured(k, c)) / x.noise[c];
-        if (sensitivities) out.jacobian.row(row) = s.sensitivities.row(k * nc + c) / x.noise[c];
+        if (!sensitivities) continue;
+        for (std::size_t j = 0; j < x.parameters.size(); ++j)
+          out.jacobian(row, x.parameters[j]) =
+              s.sensitivities(k * nc + c, Eigen::Index(j)) / x.noise[c];
       }
     }
   }
@@ -341,8 +352,18 @@ GreyBoxEstimate fit_grey_box(const GreyBoxProblem& problem) {
           fmt::format("parameter '{}': the start {} is outside its bounds [{}, {}]", g.name, start,
                       g.lower, g.upper));
     }
+    const auto owner =
+        std::find_if(problem.experiments.begin(), problem.experiments.end(),
+                     [&](const GreyBoxExperiment& x) { return x.name == g.experiment; });
+    if (!g.experiment.empty() && owner == problem.experiments.end()) {
+      throw InvalidArgument(
+          fmt::format("parameter '{}' belongs to experiment '{}', which the "
+                      "problem does not have",
+                      g.name, g.experiment));
+    }
     e.names.push_back(g.name);
     e.paths.push_back(g.path);
+    e.experiments.push_back(g.experiment);
     e.start[i] = start;
     scale.positive.push_back(positive);
   }

@@ -1,11 +1,14 @@
 #include "momenta/identify/identification_file.hpp"
 
+#include <algorithm>
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "momenta/common/error.hpp"
+#include "momenta/common/suggest.hpp"
 #include "momenta/io/file_template.hpp"
 #include "momenta/io/measured_data.hpp"
 #include "momenta/io/yaml_reader.hpp"
@@ -15,10 +18,12 @@ namespace {
 
 GreyBoxParameter read_parameter(const io::YamlNode& node, const io::ModelTemplate& model) {
   GreyBoxParameter p;
-  node.expect_map("a parameter {name, path, guess, lower, upper, positive}");
-  node.check_keys({"name", "path", "guess", "lower", "upper", "positive"});
+  node.expect_map("a parameter {name, path, guess, lower, upper, positive, experiment}");
+  node.check_keys({"name", "path", "guess", "lower", "upper", "positive", "experiment"});
   p.path = node.at("path").as_string();
-  p.name = node.find_string("name").value_or(p.path);
+  p.experiment = node.find_string("experiment").value_or("");
+  p.name = node.find_string("name").value_or(
+      p.experiment.empty() ? p.path : fmt::format("{} ({})", p.path, p.experiment));
   p.line = node.line();
   p.column = node.column();
   p.guess = node.find_number("guess");
@@ -114,6 +119,38 @@ GreyBoxExperiment read_experiment(const io::YamlNode& node, const std::filesyste
   return e;
 }
 
+// A number is estimated once for every experiment it applies to: a path shared by all may not be
+// estimated again for one of them, and a parameter's experiment must be one the file names.
+void check_parameters_against_experiments(const GreyBoxProblem& problem,
+                                          const io::YamlNode& parameters) {
+  const auto items = parameters.elements();
+  std::vector<std::string_view> names;
+  for (const GreyBoxExperiment& e : problem.experiments) names.emplace_back(e.name);
+  for (std::size_t i = 0; i < problem.parameters.size(); ++i) {
+    const GreyBoxParameter& p = problem.parameters[i];
+    if (!p.experiment.empty() &&
+        std::find(names.begin(), names.end(), p.experiment) == names.end()) {
+      items[i]
+          .at("experiment")
+          .fail(fmt::format("no experiment is named '{}'{}; the file's: {}", p.experiment,
+                            did_you_mean(p.experiment, names), fmt::join(names, ", ")));
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      const GreyBoxParameter& q = problem.parameters[j];
+      const bool overlap =
+          p.experiment.empty() || q.experiment.empty() || p.experiment == q.experiment;
+      if (p.path == q.path && overlap) {
+        items[i].fail(fmt::format("{} is estimated twice for {} (also item {})", p.path,
+                                  p.experiment.empty() ? q.experiment.empty()
+                                                             ? std::string("every experiment")
+                                                             : fmt::format("'{}'", q.experiment)
+                                                       : fmt::format("'{}'", p.experiment),
+                                  j + 1));
+      }
+    }
+  }
+}
+
 }  // namespace
 
 GreyBoxProblem read_identification_file(const std::filesystem::path& path) {
@@ -130,20 +167,19 @@ GreyBoxProblem read_identification_file(const std::filesystem::path& path) {
   for (const io::YamlNode& item : parameters.elements())
     problem.parameters.push_back(read_parameter(item, model));
   if (problem.parameters.empty()) parameters.fail("no parameters to estimate");
-  for (std::size_t i = 0; i < problem.parameters.size(); ++i) {
-    for (std::size_t j = 0; j < i; ++j) {
-      if (problem.parameters[i].path == problem.parameters[j].path) {
-        parameters.elements()[i].fail(
-            fmt::format("{} is estimated twice (also item {})", problem.parameters[i].path, j + 1));
+  const io::YamlNode experiments = root.at("experiments");
+  const auto items = experiments.elements();
+  for (std::size_t k = 0; k < items.size(); ++k) {
+    problem.experiments.push_back(read_experiment(items[k], folder, model, k));
+    for (std::size_t j = 0; j < k; ++j) {
+      if (problem.experiments[j].name == problem.experiments[k].name) {
+        items[k].fail(fmt::format("two experiments are named '{}' (also item {}): name each apart",
+                                  problem.experiments[k].name, j + 1));
       }
     }
   }
-
-  const io::YamlNode experiments = root.at("experiments");
-  const auto items = experiments.elements();
-  for (std::size_t k = 0; k < items.size(); ++k)
-    problem.experiments.push_back(read_experiment(items[k], folder, model, k));
   if (problem.experiments.empty()) experiments.fail("no experiments: name at least one log");
+  check_parameters_against_experiments(problem, parameters);
 
   if (const auto fit = root.find("fit")) {
     fit->expect_map("fit settings {max_iterations, rtol, atol}");

@@ -49,6 +49,10 @@ struct GreyBoxParameter {
   /// Estimated as ln p: nothing means "when the start is > 0 and no lower bound below 0 is
   /// given" (a damping, a mass, a stiffness); false for a number of either sign (an angle).
   std::optional<bool> positive;
+  /// The name of the one experiment this number belongs to (an initial angle, a payload that
+  /// differs between tests): estimated for that experiment alone, as a parameter of its own, and
+  /// not written into the identified model. Empty: one value shared by every experiment.
+  std::string experiment;
   int line = 0, column = 0;  ///< where the identification file declares it
 };
 
@@ -105,6 +109,7 @@ struct FittedChannel {
 
 struct GreyBoxEstimate {
   std::vector<std::string> names, paths;
+  std::vector<std::string> experiments;  ///< per parameter: the one it belongs to, or empty
   VecX start, value, standard_error, lower95, upper95;  ///< SE infinite where not determined
   std::vector<bool> positive, at_bound;
   MatX correlation;  ///< NaN-free: undetermined pairs 0, the diagonal 1

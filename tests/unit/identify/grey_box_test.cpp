@@ -116,11 +116,11 @@ class FreeResponse : public test::ScratchDirTest {
            "  - {name: x, joint: slide, quantity: position}\n";
   }
 
-  io::MeasuredTable log() const {
-    const double m = 2.0, k = 50.0, b = 0.8, x0 = 0.1;
+  io::MeasuredTable log(double x0 = 0.1, std::uint64_t seed = 7) const {
+    const double m = 2.0, k = 50.0, b = 0.8;
     const double w = std::sqrt(k / m), zeta = b / (2.0 * std::sqrt(k * m));
     const double wd = w * std::sqrt(1.0 - zeta * zeta);
-    std::mt19937_64 rng(7);
+    std::mt19937_64 rng(seed);
     std::normal_distribution<double> noise(0.0, 1e-3);
     io::MeasuredTable t;
     t.source = "free.csv";
@@ -238,6 +238,60 @@ TEST_F(FreeResponse, ANumberTheFileDoesNotGiveIsAddedToItsMap) {
   EXPECT_THAT(text, HasSubstr("  - v0: 0.25\n    name: slide\n"));
 }
 
+// Two releases, from 0.1 m and from 0.04 m: k and b shared, each release's x0 its own. The
+// Jacobian's columns for one release's x0 are zero on the other's rows; the same optimum reached
+// with the Jacobian from differences of whole runs shows the columns land where they belong.
+TEST_F(FreeResponse, AnInitialStateIsEstimatedForEachExperimentApart) {
+  std::vector<GreyBoxParameter> parameters = {
+      parameter("forces.spring.stiffness", "k", 45.0), parameter("joints.slide.damping", "b", 0.6),
+      parameter("joints.slide.q0", "x0 far", 0.08), parameter("joints.slide.q0", "x0 near", 0.05)};
+  parameters[2].experiment = "far";
+  parameters[3].experiment = "near";
+  GreyBoxProblem p = problem(parameters);
+  p.experiments[0].name = "far";
+  p.experiments.push_back(p.experiments[0]);
+  p.experiments[1].name = "near";
+  p.experiments[1].data = log(0.04, 8);
+  const GreyBoxEstimate e = fit_grey_box(p);
+  ASSERT_TRUE(e.converged) << e.termination;
+  const double truth[] = {50.0, 0.8, 0.1, 0.04};
+  for (int i = 0; i < 4; ++i) {
+    SCOPED_TRACE(e.names[std::size_t(i)]);
+    EXPECT_LE(e.lower95[i], truth[i]);
+    EXPECT_GE(e.upper95[i], truth[i]);
+    EXPECT_LT(e.standard_error[i], 0.05 * truth[i]);
+  }
+  EXPECT_EQ(e.experiments, (std::vector<std::string>{"", "", "far", "near"}));
+
+  p.settings.jacobian = GreyBoxSettings::Jacobian::run_differences;
+  const GreyBoxEstimate by_runs = fit_grey_box(p);
+  for (int i = 0; i < 4; ++i) {
+    // Both optima to a small fraction of the standard error (the run differences' own error).
+    EXPECT_NEAR(by_runs.value[i], e.value[i], 0.01 * e.standard_error[i])
+        << e.names[std::size_t(i)];
+  }
+
+  // The identified model takes the shared numbers; each release's x0 stays that test's.
+  const std::string text = identified_model_text(p, e);
+  EXPECT_THAT(text, HasSubstr("experiment 'far' alone, not written below"));
+  EXPECT_THAT(text, HasSubstr("    q0: 0.1        # m\n"));
+}
+
+TEST_F(FreeResponse, AParameterOfAnExperimentTheProblemLacksIsRefused) {
+  std::vector<GreyBoxParameter> parameters = {parameter("joints.slide.q0", "x0", 0.08)};
+  parameters[0].experiment = "relase";
+  EXPECT_THROW(
+      {
+        try {
+          fit_grey_box(problem(parameters));
+        } catch (const InvalidArgument& error) {
+          EXPECT_THAT(error.what(), HasSubstr("belongs to experiment 'relase'"));
+          throw;
+        }
+      },
+      InvalidArgument);
+}
+
 class IdentificationFile : public test::ScratchDirTest {
  protected:
   std::string error_of(const std::string& text) {
@@ -280,6 +334,36 @@ TEST_F(IdentificationFile, AnUnknownKeyAMissingColumnAndBadBoundsAreNamed) {
       error_of(model() + "parameters: [{path: bodies.car.mass}]\n"
                          "experiments: [{data: log.csv, outputs: [{column: speed, noise: 0}]}]\n"),
       HasSubstr("fit.yaml:3:"));
+}
+
+TEST_F(IdentificationFile, AnExperimentsOwnParameterMustNameOneAndNotRepeatAShared) {
+  EXPECT_THAT(error_of(model() + "parameters:\n"
+                                 "  - {path: joints.road.v0, guess: 1, experiment: drve}\n"
+                                 "experiments: [{name: drive, data: log.csv, outputs: [speed]}]\n"),
+              HasSubstr("fit.yaml:3:"));
+  EXPECT_THAT(error_of(model() + "parameters:\n"
+                                 "  - {path: joints.road.v0, guess: 1, experiment: drve}\n"
+                                 "experiments: [{name: drive, data: log.csv, outputs: [speed]}]\n"),
+              HasSubstr("experiment: no experiment is named 'drve' (did you mean 'drive'?)"));
+  EXPECT_THAT(error_of(model() + "parameters:\n"
+                                 "  - {path: bodies.car.mass}\n"
+                                 "  - {path: bodies.car.mass, experiment: drive}\n"
+                                 "experiments: [{name: drive, data: log.csv, outputs: [speed]}]\n"),
+              HasSubstr("fit.yaml:4:5: parameters[1]: bodies.car.mass is estimated twice for "
+                        "'drive' (also item 1)"));
+  EXPECT_THAT(error_of(model() + "parameters: [{path: bodies.car.mass}]\n"
+                                 "experiments:\n"
+                                 "  - {name: drive, data: log.csv, outputs: [speed]}\n"
+                                 "  - {name: drive, data: log.csv, outputs: [speed]}\n"),
+              HasSubstr("fit.yaml:5:5: experiments[1]: two experiments are named 'drive'"));
+  // Two experiments each with their own: accepted.
+  EXPECT_EQ(error_of(model() + "parameters:\n"
+                               "  - {path: joints.road.v0, guess: 1, experiment: a}\n"
+                               "  - {path: joints.road.v0, guess: 1, experiment: b}\n"
+                               "experiments:\n"
+                               "  - {name: a, data: log.csv, outputs: [speed]}\n"
+                               "  - {name: b, data: log.csv, outputs: [speed]}\n"),
+            "no error");
 }
 
 TEST_F(IdentificationFile, NaNOrTimeGoingBackInTheLogIsNamedAtItsLine) {
