@@ -34,6 +34,9 @@ constexpr const char* kUndeterminedAdvice =
 
 std::vector<double> values_of(const VecX& x) { return {x.data(), x.data() + x.size()}; }
 
+// An interval's end: a number, or ±∞ where the data do not bound it.
+std::string end_text(double x) { return std::isinf(x) ? (x < 0 ? "−∞" : "∞") : number_text(x, 6); }
+
 // A number that may be infinite (an undetermined parameter's standard error or bound).
 json number_or_null(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 
@@ -53,11 +56,20 @@ json estimate_json(const identify::GreyBoxProblem& problem, const identify::Grey
          {"estimate", e.value[k]},
          {"standard_error", number_or_null(e.standard_error[k])},
          {"interval_95", {number_or_null(e.lower95[k]), number_or_null(e.upper95[k])}},
+         {"interval_from", e.profiled[i] ? "profile likelihood" : "Fisher information"},
+         {"bounded", {bool(e.lower_bounded[i]), bool(e.upper_bounded[i])}},
+         {"fisher_interval_95",
+          {number_or_null(e.fisher_lower95[k]), number_or_null(e.fisher_upper95[k])}},
+         {"not_quadratic", std::isnan(e.not_quadratic[k])   ? json(nullptr)
+                           : std::isinf(e.not_quadratic[k]) ? json("unbounded")
+                                                            : json(e.not_quadratic[k])},
          {"start", e.start[k]},
          {"log_scale", bool(e.positive[i])},
          {"at_bound", bool(e.at_bound[i])}});
   }
   j["parameters"] = std::move(parameters);
+  j["interval_notes"] = e.interval_notes;
+  j["profile_fits"] = e.profile_fits;
   j["correlation"] = matrix_json(e.correlation);
   j["identifiability"] = {{"identifiable", e.identifiable},
                           {"singular_values", values_of(e.singular_values)},
@@ -107,8 +119,8 @@ void print_estimate(const identify::GreyBoxProblem& problem, const identify::Gre
     const bool determined = std::isfinite(e.standard_error[k]);
     fmt::print("  {:<{}}  {:>12} {:>11}   {:<29} {:>12}{}\n", e.names[i], width,
                number_text(e.value[k], 6), determined ? number_text(e.standard_error[k], 3) : "—",
-               determined ? fmt::format("[{}, {}]", number_text(e.lower95[k], 6),
-                                        number_text(e.upper95[k], 6))
+               determined ? fmt::format("[{}, {}]{}", end_text(e.lower95[k]),
+                                        end_text(e.upper95[k]), e.profiled[i] ? " ᵖ" : "")
                           : "not determined",
                number_text(e.start[k], 6), e.at_bound[i] ? "  (at its bound)" : "");
   }
@@ -117,6 +129,7 @@ void print_estimate(const identify::GreyBoxProblem& problem, const identify::Gre
                                            "estimated from the residuals",
                                            e.degrees_of_freedom)
                              : std::string("normal quantiles: every noise was given"));
+  for (const std::string& note : e.interval_notes) fmt::print("  ᵖ {}\n", note);
 
   fmt::print(
       "\nidentifiability: singular values of the scaled sensitivities {} (condition number {})\n",
@@ -187,7 +200,8 @@ report::GreyBoxResults page_results(const identify::GreyBoxProblem& problem,
   for (std::size_t i = 0; i < e.names.size(); ++i) {
     const auto k = static_cast<Eigen::Index>(i);
     r.parameters.push_back({e.names[i], e.paths[i], e.value[k], e.standard_error[k], e.lower95[k],
-                            e.upper95[k], e.start[k], bool(e.at_bound[i])});
+                            e.upper95[k], e.start[k], bool(e.at_bound[i]), bool(e.profiled[i]),
+                            bool(e.lower_bounded[i]), bool(e.upper_bounded[i])});
   }
   for (Eigen::Index a = 0; a < e.correlation.rows(); ++a)
     r.correlation.push_back(values(e.correlation.row(a)));
@@ -197,6 +211,7 @@ report::GreyBoxResults page_results(const identify::GreyBoxProblem& problem,
   r.undetermined = e.undetermined;
   r.advice = kUndeterminedAdvice;
   r.least_determined = e.least_determined;
+  r.interval_notes = e.interval_notes;
   r.poorly_determined = identify::kPoorlyDetermined;
   for (const identify::FittedChannel& c : e.channels) {
     r.channels.push_back({c.experiment, c.column, c.channel, c.unit, values(c.time),

@@ -5,6 +5,9 @@ momenta's dynamics), with Gaussian sensor noise from a seeded generator:
 
   cruise_control_log.csv   Franklin ch. 2: m v̇ + b v = u; m = 1000 kg, b = 50 N·s/m; u = 500 N,
                            then 200 N from t = 60 s; logged at 2 Hz; speed noise σ = 0.05 m/s.
+  cruise_control_short_log.csv  the same car under a steady 500 N from rest: 16 samples over
+                           60 s from a speedometer with σ = 2.5 m/s — so little, so noisy, that
+                           the cost is far from quadratic in m and b (profile intervals).
   quarter_car_log.csv      Franklin eq. 2.12 with ks = 130 000 N/m, b = 9 800 N·s/m (m1 = 20 kg,
                            m2 = 375 kg, kw = 1e6 N/m) over ../quarter_car.yaml's road (a 5 cm step
                            at 0.1 s, quintic rise over 10 ms); body travel y at 500 Hz, σ = 0.5 mm.
@@ -50,6 +53,14 @@ def cruise_control(rng):
     write("cruise_control_log.csv", "time,force,speed", [t, force, speed])
 
 
+def cruise_control_short(rng):
+    m, b, u = 1000.0, 50.0, 500.0
+    t = np.linspace(0.0, 60.0, 16)
+    sol = solve_ivp(lambda s, v: [(u - b * v[0]) / m], (0.0, 60.0), [0.0], t_eval=t, **SOLVER)
+    speed = sol.y[0] + rng.normal(0.0, 2.5, t.size)
+    write("cruise_control_short_log.csv", "time,force,speed", [t, np.full(t.size, u), speed])
+
+
 def smooth_step(s, start=0.1, rise=0.01, final=0.05):
     x = min(max((s - start) / rise, 0.0), 1.0)
     return final * x ** 3 * (10.0 - 15.0 * x + 6.0 * x * x)
@@ -87,3 +98,4 @@ if __name__ == "__main__":
     quarter_car(rng)
     damped_pendulum(rng)
     damped_pendulum(rng, "damped_pendulum_release_60.csv", release_deg=61.2, duration=20.0)
+    cruise_control_short(rng)

@@ -49,6 +49,13 @@ py::dict grey_box_dict(const identify::GreyBoxEstimate& e) {
   d["standard_error"] = to_numpy(e.standard_error);
   d["lower"] = to_numpy(e.lower95);
   d["upper"] = to_numpy(e.upper95);
+  d["profiled"] = e.profiled;  // lower/upper from the profile likelihood, else Fisher's
+  d["lower_bounded"] = e.lower_bounded;
+  d["upper_bounded"] = e.upper_bounded;
+  d["fisher_lower"] = to_numpy(e.fisher_lower95);
+  d["fisher_upper"] = to_numpy(e.fisher_upper95);
+  d["not_quadratic"] = to_numpy(e.not_quadratic);
+  d["interval_notes"] = e.interval_notes;
   d["start"] = to_numpy(e.start);
   d["log_scale"] = e.positive;
   d["at_bound"] = e.at_bound;

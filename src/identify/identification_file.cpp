@@ -182,8 +182,24 @@ GreyBoxProblem read_identification_file(const std::filesystem::path& path) {
   check_parameters_against_experiments(problem, parameters);
 
   if (const auto fit = root.find("fit")) {
-    fit->expect_map("fit settings {max_iterations, rtol, atol}");
-    fit->check_keys({"max_iterations", "rtol", "atol"});
+    fit->expect_map("fit settings {max_iterations, rtol, atol, profile}");
+    fit->check_keys({"max_iterations", "rtol", "atol", "profile"});
+    if (fit->has("profile")) {
+      const io::YamlNode profile = fit->at("profile");
+      const std::string mode = profile.as_string();
+      using Profile = GreyBoxSettings::Profile;
+      if (mode == "auto")
+        problem.settings.profile = Profile::where_not_quadratic;
+      else if (mode == "always")
+        problem.settings.profile = Profile::always;
+      else if (mode == "never")
+        problem.settings.profile = Profile::never;
+      else
+        profile.fail(fmt::format(
+            "'{}' is not a choice: auto (the profile likelihood where the cost is not quadratic), "
+            "always or never",
+            mode));
+    }
     if (fit->has("max_iterations")) {
       const long long n = fit->at("max_iterations").as_integer();
       if (n < 1 || n > 10000) fit->at("max_iterations").fail("must be from 1 to 10000");

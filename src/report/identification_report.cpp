@@ -88,9 +88,13 @@ std::string grey_box_report_html(const GreyBoxResults& r) {
                           {"lower", number_or_null(p.lower)},
                           {"upper", number_or_null(p.upper)},
                           {"start", p.start},
-                          {"at_bound", p.at_bound}});
+                          {"at_bound", p.at_bound},
+                          {"profiled", p.profiled},
+                          {"lower_bounded", p.lower_bounded},
+                          {"upper_bounded", p.upper_bounded}});
   }
   data["estimates"] = std::move(parameters);
+  data["interval_notes"] = r.interval_notes;
   data["correlation"] = r.correlation;
   data["identifiability"] = {{"singular_values", r.singular_values},
                              {"condition_number", number_or_null(r.condition_number)},

@@ -869,4 +869,29 @@ test('grey-box page: the log, the fitted and the starting model, residuals, esti
   await page.close();
 });
 
+test('grey-box page: intervals from the profile likelihood are marked and explained as the command line words them', async () => {
+  const file = path.join(work, 'short_drive_fit.html');
+  const identification = path.join(examples, 'identification', 'cruise_control_short_identify.yaml');
+  const printed = JSON.parse(run('identify', identification, '--report', file, '--json'));
+  const { page, problems } = await open(file);
+  const shown = await page.evaluate(() => ({
+    rows: window.momentaReport.tableRows(),
+    notes: Array.from(document.querySelectorAll('#estimates .interval-notes li')).map((li) => li.textContent),
+    visible: document.querySelector('#estimates .interval-notes').getBoundingClientRect().height > 0,
+  }));
+  // The interval column holds the profile's ends, marked ᵖ; under the table, each note as printed.
+  const interval = (p) => shown.rows.find((r) => r[0] === p.name)[4];
+  for (const p of printed.parameters) {
+    assert.equal(p.interval_from, 'profile likelihood');
+    assert.ok(interval(p).endsWith(' \u1d56'), interval(p));
+    assert.ok(!interval(p).includes(String(p.fisher_interval_95[0])), 'Fisher\u2019s end shown as the interval');
+  }
+  assert.deepEqual(shown.notes, printed.interval_notes);
+  assert.ok(shown.visible);
+  await page.evaluate(() => document.querySelector('#estimates').scrollIntoView());
+  await page.screenshot({ path: path.join(artifacts, 'grey-box-profile.png') });
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
 after(() => fs.writeFileSync(path.join(artifacts, 'measured.json'), JSON.stringify(measured, null, 2)));

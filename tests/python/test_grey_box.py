@@ -61,3 +61,18 @@ def test_the_identified_model_reads_back_and_matches_the_command_line(experiment
         momenta.identify(str(experiment / "fit.yaml"), output=str(out))
     j = cli_json("identify", str(experiment / "fit.yaml"))
     assert [p["estimate"] for p in j["parameters"]] == list(r["estimate"])
+
+
+def test_profile_intervals_match_the_command_line():
+    # The short noisy drive: both intervals from the profile likelihood, as the CLI's JSON says.
+    fit = str(EXAMPLES / "identification" / "cruise_control_short_identify.yaml")
+    r = momenta.identify(fit)
+    j = cli_json("identify", fit)
+    assert r["profiled"] == [True, True]
+    for i, p in enumerate(j["parameters"]):
+        assert p["interval_from"] == "profile likelihood"
+        assert p["interval_95"] == [r["lower"][i], r["upper"][i]]
+        assert p["fisher_interval_95"] == [r["fisher_lower"][i], r["fisher_upper"][i]]
+        assert p["bounded"] == [True, True]
+        assert r["not_quadratic"][i] > 0.1
+    assert j["interval_notes"] == r["interval_notes"]

@@ -78,10 +78,18 @@ function estimatesSection(data) {
     'Each estimated number of the model file, by its path. The interval holds the true value 95 % of the time ',
     'if the model\u2019s structure is right and the noise is white',
     data.noise_estimated ? ` (Student\u2019s t, ${data.degrees_of_freedom} degrees of freedom: the noise was estimated).` : ' (every noise given).'));
+  const end = (x, sign) => (x === null ? (sign < 0 ? '\u2212\u221e' : '\u221e') : formatNumber(x));
   section.append(table(['parameter', 'path', 'estimate', 'std. error', '95 % interval', 'start'],
     data.estimates.map((e) => [e.name, e.path, formatNumber(e.estimate), shown(e.standard_error, 3),
-      e.lower === null ? 'not determined' : `[${formatNumber(e.lower)}, ${formatNumber(e.upper)}]`,
+      e.standard_error === null ? 'not determined'
+        : `[${end(e.lower, -1)}, ${end(e.upper, 1)}]` + (e.profiled ? ' \u1d56' : ''),
       formatNumber(e.start) + (e.at_bound ? ' (ended at its bound)' : '')])));
+  if (data.interval_notes.length > 0) {
+    section.append(element('p', { class: 'note' },
+      '\u1d56 From the profile likelihood: where the cost, the other parameters refitted, has risen by q\u00b2 from its minimum.'));
+    section.append(element('ul', { class: 'interval-notes' },
+      ...data.interval_notes.map((note) => element('li', {}, note))));
+  }
   return section;
 }
 

@@ -15,7 +15,10 @@
 // How sure. At the optimum, J = ∂r/∂p; the covariance is s² (JᵀJ)⁻¹ (s² = 1 with every noise
 // given, else χ²/(N − n_p)), from J's singular value decomposition so that a direction the data
 // do not determine gives an infinite standard error instead of a number. 95 % intervals with
-// Student's t (N − n_p) where noise was estimated, the normal quantile where it was given.
+// Student's t (N − n_p) where noise was estimated, the normal quantile where it was given. Where
+// the cost is clearly not quadratic over such an interval (kNotQuadratic) the interval is the
+// profile likelihood's instead: where the cost, the others refitted, has risen by q² s²
+// (src/identify/profile_likelihood.hpp).
 // Identifiability: the singular values of J with each column scaled by its parameter's size
 // (∂r/∂ln p), their condition number, and each direction whose singular value is below 10⁻⁶ of
 // the largest in words — which parameters move together without changing any output.
@@ -38,6 +41,10 @@ namespace momenta::identify {
 inline constexpr double kUndetermined = 1e-6;
 /// A condition number above this: some combination is poorly determined (named).
 inline constexpr double kPoorlyDetermined = 1e3;
+/// A Fisher interval whose ends are this far from where the cost has risen by q² — |z/q − 1| at
+/// either end, z the signed root of the rise along the line the other parameters follow — is
+/// the sign of a cost far from quadratic: the profile likelihood's interval is reported instead.
+inline constexpr double kNotQuadratic = 0.1;
 
 /// A number of the model file to estimate.
 struct GreyBoxParameter {
@@ -85,6 +92,10 @@ struct GreyBoxSettings {
   /// whole runs, n_p + 1 runs per Jacobian with steps √rtol · |p_i|.
   enum class Jacobian { sensitivities, run_differences };
   Jacobian jacobian = Jacobian::sensitivities;
+  /// Which intervals come from the profile likelihood: those whose cost is not quadratic over
+  /// the Fisher interval (kNotQuadratic), every determined parameter's, or none.
+  enum class Profile { where_not_quadratic, always, never };
+  Profile profile = Profile::where_not_quadratic;
 };
 
 struct GreyBoxProblem {
@@ -111,6 +122,21 @@ struct GreyBoxEstimate {
   std::vector<std::string> names, paths;
   std::vector<std::string> experiments;  ///< per parameter: the one it belongs to, or empty
   VecX start, value, standard_error, lower95, upper95;  ///< SE infinite where not determined
+  /// How far the cost is from quadratic over each Fisher interval: the larger |z/q − 1| of its
+  /// two ends (0 where quadratic; infinite where the line leaves a bound or a run fails; NaN for
+  /// an undetermined parameter). Above kNotQuadratic the interval is the profile's.
+  VecX not_quadratic;
+  /// Per parameter: lower95/upper95 are the profile likelihood's (else p ± q·SE, Fisher's).
+  std::vector<bool> profiled;
+  /// Per parameter, each end: false where the data do not bound it on that side (the profile
+  /// stays below q² up to a bound, to 0 for a positive parameter, or its fits fail) — the end
+  /// is then that bound, 0 or the last value reached.
+  std::vector<bool> lower_bounded, upper_bounded;
+  VecX fisher_lower95, fisher_upper95;  ///< p ± q·SE, beside a profile's
+  long profile_fits = 0;                ///< fits with one parameter held, for the profiles
+  /// A sentence per profiled parameter: why its interval is the profile's, and any end the data
+  /// do not bound.
+  std::vector<std::string> interval_notes;
   std::vector<bool> positive, at_bound;
   MatX correlation;  ///< NaN-free: undetermined pairs 0, the diagonal 1
   int degrees_of_freedom = 0;

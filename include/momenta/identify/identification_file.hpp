@@ -13,7 +13,7 @@
 //         inputs: [{column: force, signal: u}]
 //         outputs: [{column: speed, channel: speed, noise: 0.05}]
 //         set: {joints.road.v0: 0}
-//     fit: {max_iterations: 100, rtol: 1e-9, atol: 1e-12}
+//     fit: {max_iterations: 100, rtol: 1e-9, atol: 1e-12, profile: auto}
 
 #include <filesystem>
 

@@ -170,7 +170,10 @@ struct GreyBoxResults {
     double estimate = 0, standard_error = 0, lower = 0, upper = 0,
            start = 0;  ///< ±inf: not determined
     bool at_bound = false;
+    bool profiled = false;  ///< lower/upper from the profile likelihood, else Fisher's
+    bool lower_bounded = true, upper_bounded = true;  ///< false: the data leave that end open
   };
+  std::vector<std::string> interval_notes;  ///< why each profiled interval is, in words
   std::vector<Parameter> parameters;
   std::vector<std::vector<double>> correlation;  ///< of the estimates, row by row
   std::vector<double> singular_values;           ///< of the scaled sensitivities, descending

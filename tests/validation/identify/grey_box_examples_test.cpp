@@ -75,5 +75,25 @@ TEST(GreyBoxExamples, PendulumDampingFromTwoReleasesEachWithItsOwnAngle) {
   }
 }
 
+// Sixteen noisy samples: the cost is far from quadratic, both intervals are the profile
+// likelihood's, lopsided (b's longer below its estimate, as a 1/b-shaped cost's is), and they
+// hold the truth.
+TEST(GreyBoxExamples, ShortNoisyDriveGivesProfileIntervalsThatHoldTheTruth) {
+  const GreyBoxEstimate e = fit_example("cruise_control_short_identify.yaml");
+  ASSERT_TRUE(e.converged) << e.termination;
+  EXPECT_EQ(e.profiled, (std::vector<bool>{true, true}));
+  ASSERT_EQ(e.interval_notes.size(), 2u);
+  EXPECT_NE(e.interval_notes[1].find("b: ["), std::string::npos) << e.interval_notes[1];
+  const double truth[] = {1000.0, 50.0};
+  for (int i = 0; i < 2; ++i) {
+    SCOPED_TRACE(e.names[std::size_t(i)]);
+    EXPECT_GT(e.not_quadratic[i], kNotQuadratic);
+    EXPECT_LE(e.lower95[i], truth[i]);
+    EXPECT_GE(e.upper95[i], truth[i]);
+    EXPECT_TRUE(e.lower_bounded[std::size_t(i)] && e.upper_bounded[std::size_t(i)]);
+  }
+  EXPECT_GT(e.value[1] - e.lower95[1], 1.5 * (e.upper95[1] - e.value[1]));
+}
+
 }  // namespace
 }  // namespace momenta::identify

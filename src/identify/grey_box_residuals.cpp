@@ -1,0 +1,225 @@
+#include "grey_box_residuals.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "momenta/common/error.hpp"
+#include "momenta/common/suggest.hpp"
+
+namespace momenta::identify::detail {
+
+namespace {
+
+std::string experiment_label(const GreyBoxExperiment& e) {
+  return e.name.empty() ? e.data.source
+                        : fmt::format("experiment '{}' ({})", e.name, e.data.source);
+}
+
+VecX column_of(const io::MeasuredTable& data, const std::string& column, const std::string& what) {
+  const auto c = data.find(column);
+  if (!c) {
+    std::vector<std::string_view> names(data.columns.begin(), data.columns.end());
+    throw InvalidArgument(fmt::format("{}: no column '{}' ({}){}; its columns: {}", data.source,
+                                      column, what, did_you_mean(column, names),
+                                      fmt::join(data.columns, ", ")));
+  }
+  return data.values.col(*c);
+}
+
+}  // namespace
+
+PreparedExperiment prepare(const io::ModelTemplate& file, const GreyBoxProblem& problem,
+                           const GreyBoxExperiment& e) {
+  PreparedExperiment x;
+  x.spec = &e;
+  const std::string label = experiment_label(e);
+  const VecX time = column_of(e.data, "time", "the sample times, s");
+  const double spacing = even_spacing(time, e.data.source);
+  x.times = VecX::LinSpaced(time.size(), time[0], time[0] + spacing * double(time.size() - 1));
+  x.logged_times = time;
+
+  const io::ModelFile nominal = file.with(e.set);
+  for (const MeasuredInput& input : e.inputs) {
+    const auto s = nominal.model.find_signal(input.signal);
+    if (!s) {
+      std::vector<std::string_view> names;
+      for (const auto& signal : nominal.model.signals()) names.emplace_back(signal.name());
+      throw InvalidArgument(
+          fmt::format("{}: input column '{}' drives signal '{}', which the model "
+                      "does not have{}",
+                      label, input.column, input.signal, did_you_mean(input.signal, names)));
+    }
+    x.input_signals.push_back(*s);
+    x.input_values.push_back(column_of(e.data, input.column, "a measured input"));
+  }
+  if (e.outputs.empty()) {
+    throw InvalidArgument(fmt::format("{}: no measured outputs to fit", label));
+  }
+  std::vector<std::string> channel_names;
+  x.measured.resize(time.size(), static_cast<Eigen::Index>(e.outputs.size()));
+  x.noise.resize(static_cast<Eigen::Index>(e.outputs.size()));
+  for (std::size_t c = 0; c < e.outputs.size(); ++c) {
+    const MeasuredOutput& output = e.outputs[c];
+    channel_names.push_back(output.channel);
+    x.measured.col(Eigen::Index(c)) = column_of(e.data, output.column, "a measured output");
+    if (output.noise && !(*output.noise > 0.0 && std::isfinite(*output.noise))) {
+      throw InvalidArgument(fmt::format("{}: output '{}': noise must be > 0, got {}", label,
+                                        output.column, *output.noise));
+    }
+  }
+  try {
+    x.channels = std::make_unique<ChannelSet>(nominal.model, nominal.outputs, channel_names);
+  } catch (const InvalidArgument& error) {
+    throw InvalidArgument(fmt::format("{}: {}", label, error.what()));
+  }
+
+  for (std::size_t i = 0; i < problem.parameters.size(); ++i) {
+    const std::string& owner = problem.parameters[i].experiment;
+    if (owner.empty() || owner == e.name) x.parameters.push_back(Eigen::Index(i));
+  }
+  x.make_model = [&file, &problem, &e, own = x.parameters, grid = x.times,
+                  signals = x.input_signals, values = x.input_values](const VecX& p) {
+    std::vector<io::NumberOverride> overrides = e.set;
+    for (std::size_t k = 0; k < own.size(); ++k)
+      overrides.push_back({problem.parameters[std::size_t(own[k])].path, p[Eigen::Index(k)]});
+    model::Model model = file.with(overrides).model;
+    for (std::size_t k = 0; k < signals.size(); ++k) {
+      model::TableSignal table{std::vector<double>(grid.begin(), grid.end()),
+                               std::vector<double>(values[k].begin(), values[k].end())};
+      model = model.with_signal_shape(signals[k], std::move(table));
+    }
+    return model;
+  };
+  return x;
+}
+
+bool RunResiduals::Evaluate(double const* const* parameters, double* residuals,
+                            double** jacobians) const {
+  const auto np = static_cast<Eigen::Index>(scale_.positive.size());
+  const auto rows = static_cast<Eigen::Index>(num_residuals());
+  const bool with_jacobian = jacobians != nullptr && jacobians[0] != nullptr;
+  const bool by_sensitivities = settings_.jacobian == GreyBoxSettings::Jacobian::sensitivities;
+  const bool cached =
+      cache_valid_ && std::equal(parameters[0], parameters[0] + np, cached_theta_.begin());
+  try {
+    if (!cached) {
+      cache_valid_ = false;
+      cached_theta_.assign(parameters[0], parameters[0] + np);
+      cached_residuals_.resize(static_cast<std::size_t>(rows));
+      cached_jacobian_.resize(by_sensitivities ? static_cast<std::size_t>(rows * np) : 0);
+      have_jacobian_ = by_sensitivities;
+      fill(scale_.values(parameters[0]), by_sensitivities, cached_residuals_.data(),
+           cached_jacobian_.data());
+      cache_valid_ = true;
+    }
+    if (with_jacobian && !have_jacobian_) {
+      cached_jacobian_.resize(static_cast<std::size_t>(rows * np));
+      differentiate_runs(scale_.values(parameters[0]), cached_residuals_.data(),
+                         cached_jacobian_.data());
+      have_jacobian_ = true;
+    }
+  } catch (const Error&) {
+    ++failed_runs;  // values the model refuses or a run that blows up: a step to reject
+    return false;
+  }
+  std::copy(cached_residuals_.begin(), cached_residuals_.end(), residuals);
+  if (with_jacobian) std::copy(cached_jacobian_.begin(), cached_jacobian_.end(), jacobians[0]);
+  return true;
+}
+
+void RunResiduals::fill(const VecX& p, bool sensitivities, double* residuals,
+                        double* jacobian) const {
+  const auto np = p.size();
+  std::fill(jacobian, jacobian + (sensitivities ? num_residuals() * np : 0), 0.0);
+  for (PreparedExperiment& x : experiments_) {
+    const SampledOutputs s = sample_outputs(x.make_model, p(x.parameters), *x.channels, x.times,
+                                            sensitivities, settings_.sensitivity);
+    (sensitivities ? sensitivity_simulations : simulations) += 1;
+    evaluations += s.evaluations;
+    const Eigen::Index nc = x.measured.cols();
+    for (Eigen::Index k = 0; k < x.measured.rows(); ++k) {
+      for (Eigen::Index c = 0; c < nc; ++c) {
+        const Eigen::Index row = x.offset + k * nc + c;
+        residuals[row] = (s.values(k, c) - x.measured(k, c)) / x.noise[c];
+        if (!sensitivities) continue;
+        for (std::size_t j = 0; j < x.parameters.size(); ++j) {
+          const Eigen::Index i = x.parameters[j];
+          const double chain = scale_.positive[std::size_t(i)] ? p[i] : 1.0;
+          jacobian[row * np + i] =
+              s.sensitivities(k * nc + c, Eigen::Index(j)) / x.noise[c] * chain;
+        }
+      }
+    }
+  }
+}
+
+void RunResiduals::differentiate_runs(const VecX& p, const double* residuals,
+                                      double* jacobian) const {
+  const auto np = p.size();
+  const auto rows = static_cast<Eigen::Index>(num_residuals());
+  std::vector<double> shifted(static_cast<std::size_t>(rows));
+  const double relative = std::sqrt(settings_.sensitivity.tolerances.relative);
+  for (Eigen::Index i = 0; i < np; ++i) {
+    const bool positive = scale_.positive[std::size_t(i)];
+    const double h = positive ? relative : relative * std::max(std::abs(p[i]), 1e-3);
+    VecX moved = p;
+    moved[i] = positive ? p[i] * std::exp(h) : p[i] + h;
+    fill(moved, false, shifted.data(), nullptr);
+    for (Eigen::Index r = 0; r < rows; ++r)
+      jacobian[r * np + i] = (shifted[std::size_t(r)] - residuals[r]) / h;
+  }
+}
+
+Evaluation evaluate(std::vector<PreparedExperiment>& experiments, const VecX& p,
+                    const GreyBoxSettings& settings, Eigen::Index residuals, bool sensitivities,
+                    RunResiduals& counters) {
+  Evaluation out;
+  out.residuals.resize(residuals);
+  if (sensitivities) out.jacobian.setZero(residuals, p.size());
+  for (PreparedExperiment& x : experiments) {
+    out.runs.push_back(sample_outputs(x.make_model, p(x.parameters), *x.channels, x.times,
+                                      sensitivities, settings.sensitivity));
+    (sensitivities ? counters.sensitivity_simulations : counters.simulations) += 1;
+    counters.evaluations += out.runs.back().evaluations;
+    const SampledOutputs& s = out.runs.back();
+    const Eigen::Index nc = x.measured.cols();
+    for (Eigen::Index k = 0; k < x.measured.rows(); ++k) {
+      for (Eigen::Index c = 0; c < nc; ++c) {
+        const Eigen::Index row = x.offset + k * nc + c;
+        out.residuals[row] = (s.values(k, c) - x.measured(k, c)) / x.noise[c];
+        if (!sensitivities) continue;
+        for (std::size_t j = 0; j < x.parameters.size(); ++j)
+          out.jacobian(row, x.parameters[j]) =
+              s.sensitivities(k * nc + c, Eigen::Index(j)) / x.noise[c];
+      }
+    }
+  }
+  return out;
+}
+
+ceres::Solver::Options solver_options(int max_iterations) {
+  ceres::Solver::Options options;
+  options.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  options.linear_solver_type = ceres::DENSE_QR;
+  options.max_num_iterations = max_iterations;
+  options.function_tolerance = 1e-10;
+  options.parameter_tolerance = 1e-10;
+  options.gradient_tolerance = 1e-12;
+  options.logging_type = ceres::SILENT;
+  options.minimizer_progress_to_stdout = false;
+  return options;
+}
+
+void set_bounds(ceres::Problem& problem, double* theta, int index, const GreyBoxParameter& g,
+                const Parameterization& scale, std::size_t i) {
+  const bool positive = scale.positive[i];
+  if (std::isfinite(g.lower) && (!positive || g.lower > 0.0))
+    problem.SetParameterLowerBound(theta, index, scale.theta(i, g.lower));
+  if (std::isfinite(g.upper)) problem.SetParameterUpperBound(theta, index, scale.theta(i, g.upper));
+}
+
+}  // namespace momenta::identify::detail
