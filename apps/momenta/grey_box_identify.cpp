@@ -85,7 +85,8 @@ json estimate_json(const identify::GreyBoxProblem& problem, const identify::Grey
                         {"noise", c.noise},
                         {"noise_given", c.noise_given},
                         {"residual_rms", c.rms},
-                        {"whiteness_p", c.whiteness_p}});
+                        {"whiteness_p", c.whiteness_p},
+                        {"abscissa", c.abscissa}});
   }
   j["channels"] = std::move(channels);
   j["degrees_of_freedom"] = e.degrees_of_freedom;
@@ -93,6 +94,7 @@ json estimate_json(const identify::GreyBoxProblem& problem, const identify::Grey
   j["simulations"] = e.simulations;
   j["sensitivity_simulations"] = e.sensitivity_simulations;
   j["evaluations"] = e.evaluations;
+  j["linearizations"] = e.linearizations;
   j["initial_cost"] = e.initial_cost;
   j["final_cost"] = e.final_cost;
   j["seconds"] = e.wall_seconds;
@@ -106,9 +108,13 @@ void print_estimate(const identify::GreyBoxProblem& problem, const identify::Gre
              e.names.size(), problem.model.filename().string(), problem.experiments.size(),
              problem.experiments.size() == 1 ? "" : "s", samples);
   fmt::print("fit: {}\n", e.termination);
-  fmt::print("     {} runs, {} with sensitivities, {} evaluations of the dynamics, {} s\n\n",
-             e.simulations, e.sensitivity_simulations, e.evaluations,
-             number_text(e.wall_seconds, 3));
+  std::vector<std::string> work;
+  if (e.simulations + e.sensitivity_simulations > 0) {
+    work.push_back(fmt::format("{} runs, {} with sensitivities, {} evaluations of the dynamics",
+                               e.simulations, e.sensitivity_simulations, e.evaluations));
+  }
+  if (e.linearizations > 0) work.push_back(fmt::format("{} linearizations", e.linearizations));
+  fmt::print("     {}, {} s\n\n", fmt::join(work, "; "), number_text(e.wall_seconds, 3));
 
   std::size_t width = std::string_view("parameter").size();
   for (const std::string& name : e.names) width = std::max(width, name.size());
@@ -195,6 +201,7 @@ report::GreyBoxResults page_results(const identify::GreyBoxProblem& problem,
   r.degrees_of_freedom = e.degrees_of_freedom;
   r.runs = e.simulations + e.sensitivity_simulations;
   r.evaluations = e.evaluations;
+  r.linearizations = e.linearizations;
   r.seconds = e.wall_seconds;
   r.noise_estimated = e.noise_estimated;
   for (std::size_t i = 0; i < e.names.size(); ++i) {
@@ -216,7 +223,7 @@ report::GreyBoxResults page_results(const identify::GreyBoxProblem& problem,
   for (const identify::FittedChannel& c : e.channels) {
     r.channels.push_back({c.experiment, c.column, c.channel, c.unit, values(c.time),
                           values(c.measured), values(c.fitted), values(c.guessed), c.noise, c.rms,
-                          c.whiteness_p, c.noise_given});
+                          c.whiteness_p, c.noise_given, c.abscissa, c.abscissa_unit});
   }
   r.whiteness_level = kWhiteResiduals;
   return r;

@@ -18,6 +18,11 @@ momenta's dynamics), with Gaussian sensor noise from a seeded generator:
                            damped_pendulum_releases_identify.yaml, whose release angles are each
                            estimated for their own test.
 
+  quarter_car_shaker_bode.csv  a shaker-table test of the same quarter car: the body's travel
+                           against the road's at 40 frequencies from 0.5 to 30 Hz, from the
+                           transfer function of Franklin eq. 2.12 (closed form, not momenta's
+                           linearization), with 0.2 dB of magnitude and 1° of phase noise.
+
 The engine force is logged at the rate it was commanded, and between samples it moved linearly
 (what a table input between samples means: docs/identification.md).
 
@@ -61,6 +66,18 @@ def cruise_control_short(rng):
     write("cruise_control_short_log.csv", "time,force,speed", [t, np.full(t.size, u), speed])
 
 
+def quarter_car_shaker(rng):
+    m1, m2, ks, kw, b = 20.0, 375.0, 130000.0, 1.0e6, 9800.0
+    f = np.geomspace(0.5, 30.0, 40)
+    s = 2j * np.pi * f
+    # Y/R from Franklin eq. 2.12 with r the input: the wheel's and body's equations solved.
+    g = kw * (b * s + ks) / ((m1 * s**2 + b * s + ks + kw) * (m2 * s**2 + b * s + ks)
+                             - (b * s + ks) ** 2)
+    magnitude = np.abs(g) * 10.0 ** (rng.normal(0.0, 0.2, f.size) / 20.0)
+    phase = np.degrees(np.unwrap(np.angle(g))) + rng.normal(0.0, 1.0, f.size)
+    write("quarter_car_shaker_bode.csv", "frequency,magnitude,phase", [f, magnitude, phase])
+
+
 def smooth_step(s, start=0.1, rise=0.01, final=0.05):
     x = min(max((s - start) / rise, 0.0), 1.0)
     return final * x ** 3 * (10.0 - 15.0 * x + 6.0 * x * x)
@@ -99,3 +116,4 @@ if __name__ == "__main__":
     damped_pendulum(rng)
     damped_pendulum(rng, "damped_pendulum_release_60.csv", release_deg=61.2, duration=20.0)
     cruise_control_short(rng)
+    quarter_car_shaker(rng)

@@ -73,6 +73,7 @@ py::dict grey_box_dict(const identify::GreyBoxEstimate& e) {
     channel["column"] = c.column;
     channel["channel"] = c.channel;
     channel["unit"] = c.unit;
+    channel["abscissa"] = c.abscissa;  // "time" (s), or "frequency" (Hz) for a Bode test
     channel["time"] = to_numpy(c.time);
     channel["measured"] = to_numpy(c.measured);
     channel["fitted"] = to_numpy(c.fitted);
@@ -90,6 +91,7 @@ py::dict grey_box_dict(const identify::GreyBoxEstimate& e) {
   d["simulations"] = e.simulations;
   d["sensitivity_simulations"] = e.sensitivity_simulations;
   d["evaluations"] = e.evaluations;
+  d["linearizations"] = e.linearizations;
   d["final_cost"] = e.final_cost;
   return d;
 }

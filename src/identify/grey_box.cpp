@@ -260,6 +260,7 @@ GreyBoxEstimate fit_grey_box(const GreyBoxProblem& problem) {
   e.simulations = cost.simulations;
   e.sensitivity_simulations = cost.sensitivity_simulations;
   e.evaluations = cost.evaluations;
+  e.linearizations = cost.linearizations;
   e.converged = summary.termination_type == ceres::CONVERGENCE;
   e.termination = termination_text(summary, e.iterations, cost.failed_runs);
   e.value = scale.values(theta.data());
@@ -344,7 +345,11 @@ GreyBoxEstimate fit_grey_box(const GreyBoxProblem& problem) {
       f.experiment = p.spec->name;
       f.column = p.spec->outputs[std::size_t(c)].column;
       f.channel = p.spec->outputs[std::size_t(c)].channel;
-      f.unit = p.channels->units()[std::size_t(c)];
+      f.unit = p.units[std::size_t(c)];
+      if (p.spec->frequency_response) {
+        f.abscissa = "frequency";
+        f.abscissa_unit = "Hz";
+      }
       f.time = p.logged_times;
       f.measured = p.measured.col(c);
       f.fitted = best.runs[x].values.col(c);

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "momenta/analysis/linearize.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/suggest.hpp"
 
@@ -30,12 +31,92 @@ VecX column_of(const io::MeasuredTable& data, const std::string& column, const s
   return data.values.col(*c);
 }
 
+// The model at an experiment's own parameters' values, with its `set` numbers.
+model::Model model_at(const io::ModelTemplate& file, const GreyBoxProblem& problem,
+                      const GreyBoxExperiment& e, const std::vector<Eigen::Index>& own,
+                      const VecX& p) {
+  std::vector<io::NumberOverride> overrides = e.set;
+  for (std::size_t k = 0; k < own.size(); ++k)
+    overrides.push_back({problem.parameters[std::size_t(own[k])].path, p[Eigen::Index(k)]});
+  return file.with(overrides).model;
+}
+
+// A Bode test: its frequencies, magnitude (dB) and phase (degrees) as two channels; the input
+// and output names checked as the linearization resolves them.
+void prepare_frequency_response(const io::ModelTemplate& file, const GreyBoxProblem& problem,
+                                const GreyBoxExperiment& e, PreparedExperiment& x) {
+  const FrequencyExperiment& test = *e.frequency_response;
+  const std::string label = e.name.empty()
+                                ? test.data.source
+                                : fmt::format("experiment '{}' ({})", e.name, test.data.source);
+  if (e.outputs.size() != 2) {
+    throw InvalidArgument(
+        fmt::format("{}: a Bode test has two channels, magnitude and phase", label));
+  }
+  x.times = x.logged_times = test.data.frequency;
+  x.measured.resize(test.data.frequency.size(), 2);
+  x.measured.col(0) = test.data.magnitude_db;
+  x.measured.col(1) = test.data.phase_deg;
+  x.noise.resize(2);
+  x.units = {"dB", "deg"};
+  const io::ModelFile nominal = file.with(e.set);
+  x.output_specs = nominal.outputs;
+  analysis::LinearizationOptions names;
+  names.inputs = {test.input};
+  names.outputs = {test.output};
+  names.output_specs = nominal.outputs;
+  try {
+    analysis::check_linearization_names(nominal.model, names);
+  } catch (const InvalidArgument& error) {
+    throw InvalidArgument(fmt::format("{}: {}", label, error.what()));
+  }
+  x.make_model = [&file, &problem, &e, own = x.parameters](const VecX& p) {
+    return model_at(file, problem, e, own, p);
+  };
+}
+
+// What an experiment's outputs cost: a run (with sensitivities or without), or a Bode test's
+// linearizations (one, and two per parameter for the sensitivities).
+void count(const PreparedExperiment& x, bool sensitivities, const SampledOutputs& s,
+           const RunResiduals& counters) {
+  if (x.spec->frequency_response) {
+    counters.linearizations += sensitivities ? 1 + 2 * long(x.parameters.size()) : 1;
+    return;
+  }
+  (sensitivities ? counters.sensitivity_simulations : counters.simulations) += 1;
+  counters.evaluations += s.evaluations;
+}
+
 }  // namespace
+
+SampledOutputs run(const PreparedExperiment& x, const VecX& p, bool sensitivities,
+                   const GreyBoxSettings& settings) {
+  if (!x.spec->frequency_response) {
+    return sample_outputs(x.make_model, p, *x.channels, x.times, sensitivities,
+                          settings.sensitivity);
+  }
+  const FrequencyExperiment& test = *x.spec->frequency_response;
+  SampledFrequencyResponse response = sample_frequency_response(
+      x.make_model, p, test.input, test.output, x.output_specs, x.times, x.measured.col(1),
+      sensitivities, settings.sensitivity.relative_step);
+  SampledOutputs out;
+  out.values = std::move(response.values);
+  out.sensitivities = std::move(response.sensitivities);
+  return out;
+}
 
 PreparedExperiment prepare(const io::ModelTemplate& file, const GreyBoxProblem& problem,
                            const GreyBoxExperiment& e) {
   PreparedExperiment x;
   x.spec = &e;
+  for (std::size_t i = 0; i < problem.parameters.size(); ++i) {
+    const std::string& owner = problem.parameters[i].experiment;
+    if (owner.empty() || owner == e.name) x.parameters.push_back(Eigen::Index(i));
+  }
+  if (e.frequency_response) {
+    prepare_frequency_response(file, problem, e, x);
+    return x;
+  }
   const std::string label = experiment_label(e);
   const VecX time = column_of(e.data, "time", "the sample times, s");
   const double spacing = even_spacing(time, e.data.source);
@@ -77,16 +158,10 @@ PreparedExperiment prepare(const io::ModelTemplate& file, const GreyBoxProblem& 
     throw InvalidArgument(fmt::format("{}: {}", label, error.what()));
   }
 
-  for (std::size_t i = 0; i < problem.parameters.size(); ++i) {
-    const std::string& owner = problem.parameters[i].experiment;
-    if (owner.empty() || owner == e.name) x.parameters.push_back(Eigen::Index(i));
-  }
+  x.units = x.channels->units();
   x.make_model = [&file, &problem, &e, own = x.parameters, grid = x.times,
                   signals = x.input_signals, values = x.input_values](const VecX& p) {
-    std::vector<io::NumberOverride> overrides = e.set;
-    for (std::size_t k = 0; k < own.size(); ++k)
-      overrides.push_back({problem.parameters[std::size_t(own[k])].path, p[Eigen::Index(k)]});
-    model::Model model = file.with(overrides).model;
+    model::Model model = model_at(file, problem, e, own, p);
     for (std::size_t k = 0; k < signals.size(); ++k) {
       model::TableSignal table{std::vector<double>(grid.begin(), grid.end()),
                                std::vector<double>(values[k].begin(), values[k].end())};
@@ -136,10 +211,8 @@ void RunResiduals::fill(const VecX& p, bool sensitivities, double* residuals,
   const auto np = p.size();
   std::fill(jacobian, jacobian + (sensitivities ? num_residuals() * np : 0), 0.0);
   for (PreparedExperiment& x : experiments_) {
-    const SampledOutputs s = sample_outputs(x.make_model, p(x.parameters), *x.channels, x.times,
-                                            sensitivities, settings_.sensitivity);
-    (sensitivities ? sensitivity_simulations : simulations) += 1;
-    evaluations += s.evaluations;
+    const SampledOutputs s = run(x, p(x.parameters), sensitivities, settings_);
+    count(x, sensitivities, s, *this);
     const Eigen::Index nc = x.measured.cols();
     for (Eigen::Index k = 0; k < x.measured.rows(); ++k) {
       for (Eigen::Index c = 0; c < nc; ++c) {
@@ -181,10 +254,8 @@ Evaluation evaluate(std::vector<PreparedExperiment>& experiments, const VecX& p,
   out.residuals.resize(residuals);
   if (sensitivities) out.jacobian.setZero(residuals, p.size());
   for (PreparedExperiment& x : experiments) {
-    out.runs.push_back(sample_outputs(x.make_model, p(x.parameters), *x.channels, x.times,
-                                      sensitivities, settings.sensitivity));
-    (sensitivities ? counters.sensitivity_simulations : counters.simulations) += 1;
-    counters.evaluations += out.runs.back().evaluations;
+    out.runs.push_back(run(x, p(x.parameters), sensitivities, settings));
+    count(x, sensitivities, out.runs.back(), counters);
     const SampledOutputs& s = out.runs.back();
     const Eigen::Index nc = x.measured.cols();
     for (Eigen::Index k = 0; k < x.measured.rows(); ++k) {

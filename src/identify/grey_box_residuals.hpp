@@ -26,7 +26,9 @@ struct PreparedExperiment {
   MatX measured;      // samples × channels
   std::vector<int> input_signals;
   std::vector<VecX> input_values;
-  std::unique_ptr<ChannelSet> channels;
+  std::unique_ptr<ChannelSet> channels;         // a time log's
+  std::vector<model::OutputSpec> output_specs;  // a Bode test's: the model file's outputs
+  std::vector<std::string> units;               // per channel
   std::vector<Eigen::Index> parameters;  // of the problem's, those that apply to this experiment
   ModelFactory make_model;               // of those parameters' values alone
   VecX noise;                            // σ per channel in the current fit
@@ -71,7 +73,8 @@ class RunResiduals final : public ceres::CostFunction {
   /// Drops what is kept of the last point (the weights changed).
   void forget() const { cache_valid_ = false; }
 
-  mutable long simulations = 0, sensitivity_simulations = 0, evaluations = 0, failed_runs = 0;
+  mutable long simulations = 0, sensitivity_simulations = 0, evaluations = 0, failed_runs = 0,
+               linearizations = 0;
 
  private:
   // The residuals at p (and, from the sensitivities, the Jacobian in θ when `jacobian`).
@@ -99,6 +102,11 @@ struct Evaluation {
 Evaluation evaluate(std::vector<PreparedExperiment>& experiments, const VecX& p,
                     const GreyBoxSettings& settings, Eigen::Index residuals, bool sensitivities,
                     RunResiduals& counters);
+
+/// The experiment's outputs at its own parameters' values p: a run (with the sensitivity
+/// equations when asked), or a Bode test's linearizations.
+SampledOutputs run(const PreparedExperiment& x, const VecX& p, bool sensitivities,
+                   const GreyBoxSettings& settings);
 
 /// The solver's settings, one place for the fit and the profile's fits.
 ceres::Solver::Options solver_options(int max_iterations);

@@ -76,12 +76,58 @@ MeasuredOutput read_output(const io::YamlNode& node) {
   return o;
 }
 
+void read_set(const io::YamlNode& node, const io::ModelTemplate& model, GreyBoxExperiment& e) {
+  const auto set = node.find("set");
+  if (!set) return;
+  set->expect_map("a map of model-file paths to numbers");
+  for (const std::string& path : set->keys()) {
+    try {
+      (void)model.number_at(path);
+    } catch (const InvalidArgument& error) {
+      set->at(path).fail(error.what());
+    }
+    e.set.push_back({path, set->number(path)});
+  }
+}
+
+// A Bode test: its CSV, the input–output pair, the noise of each channel.
+void read_frequency_response(const io::YamlNode& node, const std::filesystem::path& folder,
+                             GreyBoxExperiment& e) {
+  const io::YamlNode file = node.at("frequency_response");
+  FrequencyExperiment test;
+  try {
+    test.data = frequency_response_data(io::read_measured_csv(folder / file.as_string()));
+  } catch (const InvalidArgument& error) {
+    file.fail(error.what());
+  }
+  test.input = node.at("input").as_string();
+  test.output = node.at("output").as_string();
+  MeasuredOutput magnitude{"magnitude_db", "magnitude", std::nullopt};
+  MeasuredOutput phase{"phase", "phase", std::nullopt};
+  if (const auto noise = node.find("noise")) {
+    noise->expect_map("the noise of each channel {magnitude_db: σ in dB, phase_deg: σ in degrees}");
+    noise->check_keys({"magnitude_db", "phase_deg"});
+    magnitude.noise = noise->find_number("magnitude_db", io::Bound::kPositive);
+    phase.noise = noise->find_number("phase_deg", io::Bound::kPositive);
+  }
+  e.outputs = {magnitude, phase};
+  e.frequency_response = std::move(test);
+}
+
 GreyBoxExperiment read_experiment(const io::YamlNode& node, const std::filesystem::path& folder,
                                   const io::ModelTemplate& model, std::size_t index) {
-  node.expect_map("an experiment {name, data, inputs, outputs, set}");
-  node.check_keys({"name", "data", "inputs", "outputs", "set"});
+  node.expect_map(
+      "an experiment {name, data, inputs, outputs, set}, or a Bode test {name, "
+      "frequency_response, input, output, noise, set}");
   GreyBoxExperiment e;
   e.name = node.find_string("name").value_or(fmt::format("experiment {}", index + 1));
+  if (node.has("frequency_response")) {
+    node.check_keys({"name", "frequency_response", "input", "output", "noise", "set"});
+    read_frequency_response(node, folder, e);
+    read_set(node, model, e);
+    return e;
+  }
+  node.check_keys({"name", "data", "inputs", "outputs", "set", "frequency_response"});
   e.data = io::read_measured_csv(folder / node.at("data").as_string());
   if (!e.data.find("time")) {
     node.at("data").fail(fmt::format("{} has no `time` column (its columns: {})", e.data.source,
@@ -105,17 +151,7 @@ GreyBoxExperiment read_experiment(const io::YamlNode& node, const std::filesyste
   }
   const auto items = outputs.elements();
   for (std::size_t k = 0; k < items.size(); ++k) check_column(e.outputs[k].column, items[k]);
-  if (const auto set = node.find("set")) {
-    set->expect_map("a map of model-file paths to numbers");
-    for (const std::string& path : set->keys()) {
-      try {
-        (void)model.number_at(path);
-      } catch (const InvalidArgument& error) {
-        set->at(path).fail(error.what());
-      }
-      e.set.push_back({path, set->number(path)});
-    }
-  }
+  read_set(node, model, e);
   return e;
 }
 

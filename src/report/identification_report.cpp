@@ -79,6 +79,7 @@ std::string grey_box_report_html(const GreyBoxResults& r) {
   data["evaluations"] = r.evaluations;
   data["seconds"] = r.seconds;
   data["noise_estimated"] = r.noise_estimated;
+  data["linearizations"] = r.linearizations;
   json parameters = json::array();
   for (const GreyBoxResults::Parameter& p : r.parameters) {
     parameters.push_back({{"name", p.name},
@@ -116,7 +117,9 @@ std::string grey_box_report_html(const GreyBoxResults& r) {
                         {"noise", c.noise},
                         {"noise_given", c.noise_given},
                         {"residual_rms", c.residual_rms},
-                        {"whiteness_p", c.whiteness_p}});
+                        {"whiteness_p", c.whiteness_p},
+                        {"abscissa", c.abscissa},
+                        {"abscissa_unit", c.abscissa_unit}});
   }
   data["channels"] = std::move(channels);
   data["whiteness_level"] = r.whiteness_level;

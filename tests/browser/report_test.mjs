@@ -869,6 +869,38 @@ test('grey-box page: the log, the fitted and the starting model, residuals, esti
   await page.close();
 });
 
+test('grey-box page: a Bode test drawn against frequency on a log scale, magnitude in dB and phase in degrees', async () => {
+  const file = path.join(work, 'shaker_fit.html');
+  const identification = path.join(examples, 'identification', 'quarter_car_shaker_identify.yaml');
+  const bode = csv(fs.readFileSync(path.join(examples, 'identification', 'quarter_car_shaker_bode.csv'), 'utf8'));
+  const printed = JSON.parse(run('identify', identification, '--report', file, '--json'));
+  const { page, problems } = await open(file);
+  await page.evaluate(() => window.momentaReport.drawAllCharts());
+  const shown = await page.evaluate(() => ({
+    magnitude: window.momentaReport.plotted('shaker: magnitude_db'),
+    phase: window.momentaReport.plotted('shaker: phase'),
+    residual: window.momentaReport.plotted('shaker: phase residual'),
+    cost: Array.from(document.querySelectorAll('#grey-box-summary dd')).map((d) => d.textContent)[3],
+  }));
+  assert.deepEqual(shown.magnitude.x, bode.column('frequency'));
+  assert.deepEqual(shown.magnitude.axes, ['frequency (Hz)', 'magnitude (dB)']);
+  assert.deepEqual(shown.phase.axes, ['frequency (Hz)', 'phase (deg)']);
+  assert.deepEqual(shown.residual.axes, ['frequency (Hz)', 'residual (deg)']);
+  assert.ok(shown.magnitude.logX && shown.phase.logX && shown.residual.logX);
+  assert.deepEqual(shown.phase.series[0].values, bode.column('phase'));
+  // The measured magnitude is the log's |G| in dB; the fit within 5σ (0.2 dB, 1°) of the data.
+  bode.column('magnitude').forEach((m, i) => assert.ok(Math.abs(shown.magnitude.series[0].values[i] - 20 * Math.log10(m)) < 1e-12));
+  const gap = (plot) => Math.max(...plot.series[1].values.map((f, i) => Math.abs(f - plot.series[0].values[i])));
+  assert.ok(gap(shown.magnitude) < 5 * 0.2, `magnitude ${gap(shown.magnitude)} dB off`);
+  assert.ok(gap(shown.phase) < 5 * 1.0, `phase ${gap(shown.phase)}° off`);
+  assert.ok(shown.cost.startsWith(`${printed.linearizations} linearizations`), shown.cost);
+  await page.evaluate(() => document.querySelector('#channels').scrollIntoView());
+  await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
+  await page.screenshot({ path: path.join(artifacts, 'grey-box-bode.png') });
+  assert.deepEqual(problems, []);
+  await page.close();
+});
+
 test('grey-box page: intervals from the profile likelihood are marked and explained as the command line words them', async () => {
   const file = path.join(work, 'short_drive_fit.html');
   const identification = path.join(examples, 'identification', 'cruise_control_short_identify.yaml');

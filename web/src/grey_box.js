@@ -2,7 +2,7 @@
 // the fitted model's response and the start's, the residuals beside the noise, the estimates with
 // their intervals, their correlations as a heat map, and what the data cannot determine.
 
-import { LazyCharts, chart } from './plots.js';
+import { LazyCharts, chart, niceCeiling } from './plots.js';
 import { decode, element, formatNumber, table } from './data.js';
 import { correlationSection, fitPageHooks } from './identification.js';
 
@@ -18,7 +18,9 @@ function summarySection(data) {
     ['model', data.model_source],
     ['experiments', experiments.join(', ')],
     ['fit', data.termination],
-    ['cost', `${data.runs} runs, ${data.evaluations} evaluations of the dynamics, ${formatNumber(data.seconds, 3)} s`],
+    ['cost', [data.runs > 0 ? `${data.runs} runs, ${data.evaluations} evaluations of the dynamics` : null,
+      data.linearizations > 0 ? `${data.linearizations} linearizations` : null,
+      `${formatNumber(data.seconds, 3)} s`].filter((x) => x !== null).join(', ')],
   ];
   return element('section', { id: 'grey-box-summary' },
     element('h1', {}, `${data.title}: model numbers fitted to measured responses`),
@@ -27,7 +29,8 @@ function summarySection(data) {
     element('dl', { class: 'facts' }, ...facts.flatMap(([k, v]) => [element('dt', {}, k), element('dd', {}, v)])));
 }
 
-// Per channel: measured, fitted and at the start against time; then the residual with ±2σ.
+// Per channel: measured, fitted and at the start against time (a Bode test's against frequency,
+// on a log scale); then the residual with ±2σ.
 function channelsSection(data, charts, drawn) {
   const section = element('section', { id: 'channels' }, element('h2', {}, 'Measured and fitted responses'));
   section.append(element('p', { class: 'note' },
@@ -43,14 +46,20 @@ function channelsSection(data, charts, drawn) {
     const start = Array.from(decode(c.at_start));
     const residual = measured.map((m, i) => m - fitted[i]);
     const band = 2 * c.noise;
+    const xLabel = `${c.abscissa} (${c.abscissa_unit})`;
+    const logX = c.abscissa === 'frequency';  // a Bode test's, as Bode plots are drawn
+    const xRange = logX ? [x[0], x[x.length - 1]] : null;  // the test's frequencies, not decades
+    // The residual's axis symmetric about 0 out to a round number past the band and every
+    // residual, so that it is labelled at both ends whatever its size.
+    const reach = niceCeiling(Math.max(1.1 * band, ...residual.map(Math.abs)) || 1);
     const top = element('div', { class: 'plot channel-plot', 'data-channel': name });
     const bottom = element('div', { class: 'plot residual-plot', 'data-channel': name });
     grid.append(element('div', {}, top, bottom));
-    charts.add(top, () => (drawn[name] = chart(top, { title: name, xLabel: 'time (s)', yLabel: `${c.channel} (${c.unit})`, x,
+    charts.add(top, () => (drawn[name] = chart(top, { title: name, xLabel, logX, xRange, yLabel: `${c.channel} (${c.unit})`, x,
       series: [{ name: 'measured', data: measured, color: MEASURED, width: 4 },
         { name: 'fitted', data: fitted, color: FITTED, width: 1.5 },
         { name: 'at the start', data: start, color: START, width: 1, dash: [6, 4] }], shown: Infinity })));
-    charts.add(bottom, () => (drawn[`${name} residual`] = chart(bottom, { title: `${name}: residual`, xLabel: 'time (s)',
+    charts.add(bottom, () => (drawn[`${name} residual`] = chart(bottom, { title: `${name}: residual`, xLabel, logX, xRange, yRange: [-reach, reach],
       yLabel: `residual (${c.unit})`, x, height: 200,
       series: [{ name: 'measured − fitted', data: residual, color: '#4e79a7', width: 1 },
         { name: '+2σ', data: x.map(() => band), color: '#000', width: 1, dash: [5, 4] },

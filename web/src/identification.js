@@ -149,7 +149,7 @@ export function fitPageHooks(drawn) {
       if (!plot) return null;
       return { title: plot.root.querySelector('.u-title')?.textContent,
         series: plot.series.slice(1).map((s, i) => ({ name: s.label, values: Array.from(plot.data[i + 1]) })),
-        x: Array.from(plot.data[0]), axes: plot.axes.map((a) => a.label) };
+        x: Array.from(plot.data[0]), axes: plot.axes.map((a) => a.label), logX: plot.scales.x.distr === 3 };
     },
     heatMap: () => Array.from(document.querySelectorAll('#correlation rect.cell')).map((r) => ({
       row: Number(r.dataset.row), column: Number(r.dataset.column), fill: r.getAttribute('fill'),

@@ -115,11 +115,20 @@ function linearLabels(u, splits, axis, space, increment) {
   return splits.map((v) => (v === null ? '' : uPlot.fmtNum(v)));
 }
 
+// A number's nice ceiling: the smallest of 1, 2, 2.5, 5 × 10ⁿ at or above it (x > 0).
+export function niceCeiling(x) {
+  const decade = 10 ** Math.floor(Math.log10(x));
+  return [1, 2, 2.5, 5, 10].map((m) => m * decade).find((v) => v >= x * (1 - 1e-12));
+}
+
+// xRange / yRange: [min, max] fixed (a log axis otherwise rounds out to whole decades).
 export function chart(container, { title, xLabel, yLabel, x, series, logX = false, logY = false,
-  timeline = null, sync = null, width = 560, height = 220, shown = SHOWN_AT_FIRST, marks = [] }) {
+  timeline = null, sync = null, width = 560, height = 220, shown = SHOWN_AT_FIRST, marks = [],
+  xRange = null, yRange = null }) {
+  const fixed = (range) => (range ? { range: () => range } : {});
   const options = {
     title, width, height,
-    scales: { x: { time: false, distr: logX ? 3 : 1 }, y: { distr: logY ? 3 : 1 } },
+    scales: { x: { time: false, distr: logX ? 3 : 1, ...fixed(xRange) }, y: { distr: logY ? 3 : 1, ...fixed(yRange) } },
     axes: [{ label: xLabel, ...(logX ? logAxis : { values: linearLabels }) },
       { label: yLabel, size: 82, ...(logY ? logAxis : { values: linearLabels }) }],
     series: [{ label: xLabel }, ...series.map((s, i) => ({ label: s.name, stroke: s.color ?? COLORS[i % COLORS.length],

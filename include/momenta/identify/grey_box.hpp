@@ -29,6 +29,7 @@
 #include <string>
 #include <vector>
 
+#include "momenta/identify/frequency_response_data.hpp"
 #include "momenta/identify/trajectory_sensitivities.hpp"
 #include "momenta/io/file_template.hpp"
 #include "momenta/io/measured_data.hpp"
@@ -76,11 +77,23 @@ struct MeasuredOutput {
   std::optional<double> noise;  ///< σ, the channel's unit; nothing: estimated
 };
 
+/// A Bode test of one input–output pair (identify/frequency_response_data.hpp), fitted by the
+/// model's linearization about its initial state.
+struct FrequencyExperiment {
+  MeasuredFrequencyResponse data;
+  std::string input;   ///< a signal or a prescribed coordinate
+  std::string output;  ///< an output column or a coordinate
+};
+
 struct GreyBoxExperiment {
   std::string name;
-  io::MeasuredTable data;  ///< with a `time` column
+  io::MeasuredTable data;  ///< with a `time` column (a time log)
   std::vector<MeasuredInput> inputs;
+  /// A time log's measured columns; a Bode test's two channels, `magnitude` (dB) and `phase`
+  /// (degrees), with their noise.
   std::vector<MeasuredOutput> outputs;
+  /// Set: the experiment is this Bode test, and `data` and `inputs` are not used.
+  std::optional<FrequencyExperiment> frequency_response;
   std::vector<io::NumberOverride> set;  ///< the model's numbers for this experiment alone
 };
 
@@ -109,8 +122,10 @@ struct GreyBoxProblem {
 /// One measured channel of one experiment, fitted.
 struct FittedChannel {
   std::string experiment, column, channel, unit;
-  /// The log's times (the model ran on the even grid they round to, within 1e-6 of a spacing);
-  /// guessed: the model at the start values.
+  /// What the samples are taken over: "time" (s), or "frequency" (Hz) for a Bode test.
+  std::string abscissa = "time", abscissa_unit = "s";
+  /// The log's times (a Bode test's frequencies) (the model ran on the even grid they round to,
+  /// within 1e-6 of a spacing); guessed: the model at the start values.
   VecX time, measured, fitted, guessed;
   double noise = 0.0;  ///< σ used in the final fit
   bool noise_given = false;
@@ -158,6 +173,7 @@ struct GreyBoxEstimate {
   long simulations = 0;                         ///< runs without sensitivities
   long sensitivity_simulations = 0;             ///< runs with them
   long evaluations = 0;                         ///< calls of a model's dynamics, all runs
+  long linearizations = 0;                      ///< of Bode tests' models (p and p ± h)
   double initial_cost = 0.0, final_cost = 0.0;  ///< ½ Σ r²
   double wall_seconds = 0.0;
 };

@@ -162,7 +162,7 @@ struct GreyBoxResults {
   bool converged = false;
   std::string termination;  ///< how the fit ended, in words
   int iterations = 0, degrees_of_freedom = 0;
-  long runs = 0, evaluations = 0;
+  long runs = 0, evaluations = 0, linearizations = 0;  ///< linearizations: of Bode tests
   double seconds = 0;
   bool noise_estimated = false;
   struct Parameter {
@@ -188,6 +188,8 @@ struct GreyBoxResults {
     std::vector<double> time, measured, fitted, at_start;
     double noise = 0, residual_rms = 0, whiteness_p = 1;
     bool noise_given = false;
+    /// The samples' axis: "time" (s), or "frequency" (Hz, drawn on a log scale) for a Bode test.
+    std::string abscissa = "time", abscissa_unit = "s";
   };
   std::vector<Channel> channels;
   double whiteness_level = 0.01;  ///< below it, a residual is called correlated

@@ -72,8 +72,8 @@ GreyBoxProblem cruise_problem(io::MeasuredTable log, std::optional<double> noise
 // 1000 realizations: the share of intervals holding the truth has a binomial spread of 0.7 %
 // about 95 %, so 93–97 % is nearly three of them on either side. The noise is estimated from
 // each realization's residuals (Student's t, 58 degrees of freedom); none is far enough from
-// quadratic for a profile (kNotQuadratic), so these are Fisher's intervals. 17 s in Release; skipped
-// under AddressSanitizer (265 s there), where the other fits go through the same code.
+// quadratic for a profile (kNotQuadratic), so these are Fisher's intervals. 17 s in Release;
+// skipped under AddressSanitizer (265 s there), where the other fits go through the same code.
 TEST(GreyBoxFit, IntervalsHoldTheTruthNinetyFivePercentOfTheTime) {
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "1000 fits: Release only";
@@ -465,6 +465,37 @@ TEST_F(IdentificationFile, AnExperimentsOwnParameterMustNameOneAndNotRepeatAShar
                                "experiments:\n"
                                "  - {name: a, data: log.csv, outputs: [speed]}\n"
                                "  - {name: b, data: log.csv, outputs: [speed]}\n"),
+            "no error");
+}
+
+// A Bode test: its CSV's errors at their lines (under the identification file's), an unknown
+// input named with its experiment and a did-you-mean, an unknown noise key.
+TEST_F(IdentificationFile, ABodeTestsErrorsAreNamed) {
+  const std::string model =
+      "model: " + std::filesystem::absolute("examples/quarter_car.yaml").string() + "\n";
+  const auto fit = [&](const std::string& bode, const std::string& experiment) -> std::string {
+    std::ofstream(dir_ / "bode.csv") << bode;
+    std::ofstream(dir_ / "fit.yaml")
+        << model << "parameters: [{path: forces.suspension.stiffness}]\n"
+        << "experiments:\n  - {name: shaker, frequency_response: bode.csv, " << experiment << "}\n";
+    try {
+      fit_grey_box(read_identification_file(dir_ / "fit.yaml"));
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  const std::string good = "frequency,magnitude,phase\n1,1,-1\n2,1.1,-3\n3,1.3,-8\n";
+  EXPECT_THAT(fit("frequency,magnitude,phase\n1,1,-1\n1,1,-1\n", "input: road, output: body_y"),
+              HasSubstr("bode.csv:3: frequency 1 Hz does not increase"));
+  EXPECT_THAT(fit("frequency,magnitude,phase\n1,1,-1\n1,1,-1\n", "input: road, output: body_y"),
+              HasSubstr("fit.yaml:4:"));
+  EXPECT_THAT(fit(good, "input: rod, output: body_y"),
+              HasSubstr("experiment 'shaker' (" + (dir_ / "bode.csv").string() + "): "));
+  EXPECT_THAT(fit(good, "input: rod, output: body_y"), HasSubstr("did you mean 'road'"));
+  EXPECT_THAT(fit(good, "input: road, output: body_y, noise: {magnitude: 0.1}"),
+              HasSubstr("did you mean 'magnitude_db'"));
+  EXPECT_EQ(fit(good, "input: road, output: body_y, noise: {magnitude_db: 0.1, phase_deg: 1}"),
             "no error");
 }
 

@@ -95,5 +95,27 @@ TEST(GreyBoxExamples, ShortNoisyDriveGivesProfileIntervalsThatHoldTheTruth) {
   EXPECT_GT(e.value[1] - e.lower95[1], 1.5 * (e.upper95[1] - e.value[1]));
 }
 
+// A shaker-table Bode test (magnitude and phase from Franklin's transfer function, with 0.2 dB
+// and 1° of noise) fitted by the linearization: ks, b and the body's mass within their intervals,
+// the residuals as large as the noise and white.
+TEST(GreyBoxExamples, QuarterCarSpringDamperAndBodyFromAShakerTableBodeTest) {
+  const GreyBoxEstimate e = fit_example("quarter_car_shaker_identify.yaml");
+  ASSERT_TRUE(e.converged) << e.termination;
+  EXPECT_TRUE(e.identifiable);
+  expect_recovered(e, 0, 130000.0, 0.02);  // ks, N/m
+  expect_recovered(e, 1, 9800.0, 0.02);    // b, N·s/m
+  expect_recovered(e, 2, 375.0, 0.02);     // m2, kg
+  ASSERT_EQ(e.channels.size(), 2u);
+  EXPECT_EQ(e.channels[0].abscissa, "frequency");
+  EXPECT_EQ(e.channels[0].unit, "dB");
+  EXPECT_EQ(e.channels[1].unit, "deg");
+  // 40 frequencies: the RMS of N(0, σ) samples spreads by σ/√80 ≈ 11 %; within 30 %.
+  EXPECT_NEAR(e.channels[0].rms, 0.2, 0.3 * 0.2);
+  EXPECT_NEAR(e.channels[1].rms, 1.0, 0.3 * 1.0);
+  for (const FittedChannel& c : e.channels) EXPECT_GT(c.whiteness_p, 0.01) << c.channel;
+  EXPECT_EQ(e.evaluations, 0);  // no runs: linearizations alone
+  EXPECT_GT(e.linearizations, 0);
+}
+
 }  // namespace
 }  // namespace momenta::identify
