@@ -17,7 +17,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 MOMENTA_WITH_FUZZ=1 scripts/bootstrap.sh
-harnesses=(model_file part_file stl obj state_file sweep_file urdf mjcf measured_data)
+harnesses=(model_file part_file stl obj state_file sweep_file urdf mjcf measured_data
+  identification_file)
 # The harnesses and the libraries they link (io and below), not the analysis, report or sweep
 # layers: those are the sanitizer build's to test.
 MOMENTA_TARGET="${harnesses[*]/%/_fuzz}" CXX=clang++ scripts/build.sh build-fuzz \
@@ -44,6 +45,7 @@ declare -A corpora=(
   [urdf]="$(seed urdf tests/data/models/urdf/*.urdf)"
   [mjcf]="$(seed mjcf tests/data/models/mjcf/*.xml)"
   [measured_data]="$(seed measured_data examples/identification/*.csv)"
+  [identification_file]="$(seed identification_file examples/identification/*_identify.yaml)"
 )
 # One harness per core at a time (MOMENTA_FUZZ_JOBS to change): each still fuzzes for SECONDS,
 # the whole run takes SECONDS × harnesses / cores. Their reports are printed in order at the end.

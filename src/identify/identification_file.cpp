@@ -187,15 +187,12 @@ void check_parameters_against_experiments(const GreyBoxProblem& problem,
   }
 }
 
-}  // namespace
-
-GreyBoxProblem read_identification_file(const std::filesystem::path& path) {
-  const io::YamlNode root = io::YamlNode::load_file(path);
+GreyBoxProblem read_problem(const io::YamlNode& root, const std::filesystem::path& folder,
+                            const std::string& default_name) {
   root.expect_map();
   root.check_keys({"name", "description", "model", "parameters", "experiments", "fit"});
-  const std::filesystem::path folder = path.parent_path();
   GreyBoxProblem problem;
-  problem.name = root.find_string("name").value_or(path.stem().string());
+  problem.name = root.find_string("name").value_or(default_name);
   problem.model = (folder / root.at("model").as_string()).lexically_normal();
   const io::ModelTemplate model(problem.model);
 
@@ -248,6 +245,18 @@ GreyBoxProblem read_identification_file(const std::filesystem::path& path) {
         fit->find_number("atol", io::Bound::kPositive).value_or(tolerances.absolute);
   }
   return problem;
+}
+
+}  // namespace
+
+GreyBoxProblem read_identification_file(const std::filesystem::path& path) {
+  return read_problem(io::YamlNode::load_file(path), path.parent_path(), path.stem().string());
+}
+
+GreyBoxProblem parse_identification_file(const std::string& text, const std::string& source,
+                                         const std::filesystem::path& folder) {
+  return read_problem(io::YamlNode::load_string(text, source), folder,
+                      std::filesystem::path(source).stem().string());
 }
 
 bool is_identification_file(const std::filesystem::path& path) {

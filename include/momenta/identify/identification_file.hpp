@@ -16,6 +16,7 @@
 //     fit: {max_iterations: 100, rtol: 1e-9, atol: 1e-12, profile: auto}
 
 #include <filesystem>
+#include <string>
 
 #include "momenta/identify/grey_box.hpp"
 
@@ -28,6 +29,11 @@ namespace momenta::identify {
 /// a did-you-mean), bounds the wrong way round, a noise ≤ 0, a data file with a missing column,
 /// NaN or times that do not increase (its own file:line).
 GreyBoxProblem read_identification_file(const std::filesystem::path& path);
+
+/// The same from the file's text: `source` names it in messages, `folder` is where its relative
+/// paths start.
+GreyBoxProblem parse_identification_file(const std::string& text, const std::string& source,
+                                         const std::filesystem::path& folder);
 
 /// True when the YAML file at `path` reads as an identification file (it has `experiments:`),
 /// not a model file: how `momenta identify FILE` tells the two routes apart.

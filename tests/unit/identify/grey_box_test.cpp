@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <iterator>
 #include <random>
 #include <utility>
 #include <vector>
@@ -470,6 +471,29 @@ TEST_F(IdentificationFile, AnExperimentsOwnParameterMustNameOneAndNotRepeatAShar
 
 // A Bode test: its CSV's errors at their lines (under the identification file's), an unknown
 // input named with its experiment and a did-you-mean, an unknown noise key.
+// From text (what the fuzz harness reads): the same problem as from the file, errors under the
+// name given.
+TEST_F(IdentificationFile, TextReadsAsTheFileDoes) {
+  const std::filesystem::path folder = "examples/identification";
+  std::ifstream in(folder / "quarter_car_shaker_identify.yaml");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const GreyBoxProblem from_text = parse_identification_file(text, "shaker.yaml", folder);
+  const GreyBoxProblem from_file =
+      read_identification_file(folder / "quarter_car_shaker_identify.yaml");
+  EXPECT_EQ(from_text.model, from_file.model);
+  ASSERT_EQ(from_text.parameters.size(), 3u);
+  EXPECT_EQ(from_text.parameters[2].path, "bodies.body.mass");
+  ASSERT_TRUE(from_text.experiments[0].frequency_response.has_value());
+  EXPECT_EQ(from_text.experiments[0].frequency_response->data.frequency,
+            from_file.experiments[0].frequency_response->data.frequency);
+  try {
+    parse_identification_file("model: nothere.yaml\n", "typed.yaml", folder);
+    FAIL() << "a missing model was accepted";
+  } catch (const Error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("nothere.yaml"));
+  }
+}
+
 TEST_F(IdentificationFile, ABodeTestsErrorsAreNamed) {
   const std::string model =
       "model: " + std::filesystem::absolute("examples/quarter_car.yaml").string() + "\n";
