@@ -76,3 +76,24 @@ def test_profile_intervals_match_the_command_line():
         assert p["bounded"] == [True, True]
         assert r["not_quadratic"][i] > 0.1
     assert j["interval_notes"] == r["interval_notes"]
+
+
+def test_a_bode_test_and_each_experiments_own_numbers_match_the_command_line():
+    for name in ("quarter_car_shaker_identify.yaml", "damped_pendulum_releases_identify.yaml"):
+        fit = str(EXAMPLES / "identification" / name)
+        r = momenta.identify(fit)
+        j = cli_json("identify", fit)
+        assert r["converged"], r["termination"]
+        assert [p["estimate"] for p in j["parameters"]] == list(r["estimate"])
+        assert [p["experiment"] or "" for p in j["parameters"]] == r["experiments"]
+        assert [c["abscissa"] for c in j["channels"]] == [c["abscissa"] for c in r["channels"]]
+    shaker = momenta.identify(str(EXAMPLES / "identification" / "quarter_car_shaker_identify.yaml"))
+    assert [c["abscissa"] for c in shaker["channels"]] == ["frequency", "frequency"]
+    assert [c["unit"] for c in shaker["channels"]] == ["dB", "deg"]
+    assert shaker["linearizations"] > 0 and shaker["evaluations"] == 0
+    # The measured magnitude is the CSV's |G| in dB, against its frequencies.
+    data = np.loadtxt(EXAMPLES / "identification" / "quarter_car_shaker_bode.csv", delimiter=",",
+                      skiprows=1)
+    np.testing.assert_array_equal(shaker["channels"][0]["time"], data[:, 0])
+    np.testing.assert_allclose(shaker["channels"][0]["measured"], 20 * np.log10(data[:, 1]),
+                               rtol=0, atol=1e-12)
