@@ -80,7 +80,8 @@ std::string termination_text(const ceres::Solver::Summary& summary, int iteratio
 std::string end_text(double x) { return std::isinf(x) ? (x < 0 ? "−∞" : "∞") : number_text(x, 6); }
 
 // Why parameter i's interval is the profile's, and what the data leave open.
-std::string interval_note(const GreyBoxEstimate& e, Eigen::Index i, GreyBoxSettings::Profile mode) {
+std::string interval_note(const GreyBoxEstimate& e, Eigen::Index i, GreyBoxSettings::Profile mode,
+                          const detail::ProfileInterval& interval) {
   const auto ii = std::size_t(i);
   const std::string fisher = fmt::format("[{}, {}]", number_text(e.fisher_lower95[i], 6),
                                          number_text(e.fisher_upper95[i], 6));
@@ -98,11 +99,16 @@ std::string interval_note(const GreyBoxEstimate& e, Eigen::Index i, GreyBoxSetti
         " — Fisher's interval {} crosses a bound or reaches values where a run fails", fisher);
   }
   for (const bool below : {true, false}) {
-    if (below ? e.lower_bounded[ii] : e.upper_bounded[ii]) continue;
-    const double end = below ? e.lower95[i] : e.upper95[i];
-    note += fmt::format("; the data do not bound it {}: its profile stays under q² {} {}",
-                        below ? "below" : "above", below ? "down to" : "up to",
-                        std::isinf(end) ? "as far as the fits reach" : end_text(end));
+    const detail::ProfileEnd& end = below ? interval.lower : interval.upper;
+    if (end.bounded) continue;
+    note += end.fits_failed
+                ? fmt::format(
+                      "; not bounded {}: the fits fail beyond {} (values the model refuses, or "
+                      "runs that blow up), where the profile is still under q²",
+                      below ? "below" : "above", end_text(end.value))
+                : fmt::format("; the data do not bound it {}: its profile stays under q² {} {}",
+                              below ? "below" : "above", below ? "down to" : "up to",
+                              end_text(end.value));
   }
   return note;
 }
@@ -145,7 +151,7 @@ void profile_intervals(const GreyBoxProblem& problem, RunResiduals& cost,
     e.upper95[i] = interval.upper.value;
     e.lower_bounded[ii] = interval.lower.bounded;
     e.upper_bounded[ii] = interval.upper.bounded;
-    e.interval_notes.push_back(interval_note(e, i, mode));
+    e.interval_notes.push_back(interval_note(e, i, mode, interval));
   }
   e.profile_fits = profile.fits();
 }

@@ -95,6 +95,7 @@ double ProfileLikelihood::linear_root(Eigen::Index i, double delta, const MatX& 
     theta[j] = scale_.theta(j, x);
   }
   const double s = sum_of_squares(cost_, theta);
+  if (!std::isfinite(s)) return kNaN;  // a run failed there (std::max would hide the NaN)
   return std::copysign(std::sqrt(std::max(0.0, s - best_) / s2_), delta);
 }
 
@@ -104,6 +105,7 @@ double ProfileLikelihood::profile_root(Eigen::Index i, double value, std::vector
   const double sign = value >= theta_[std::size_t(i)] ? 1.0 : -1.0;
   if (theta_.size() == 1) {
     const double s = sum_of_squares(cost_, start);
+    if (!std::isfinite(s)) return kNaN;  // a run failed there (std::max would hide the NaN)
     return sign * std::sqrt(std::max(0.0, s - best_) / s2_);
   }
   std::vector<double> others;
@@ -143,34 +145,49 @@ ProfileEnd ProfileLikelihood::side(Eigen::Index i, double sign, double q, double
                                                                : -kInf)
                                      : (std::isfinite(g.upper) ? g.upper : kInf);
 
-  // Secant steps on |z|(δ) = q, kept inside the bracket once one is known.
-  double below = 0.0, z_below = 0.0;  // |z| < q here
-  double above = kInf, z_above = kInf;
+  // Secant steps on |z|(δ) = q: extrapolated through the last two points below q (at most
+  // fourfold) until one above brackets it, then kept inside the bracket; halfway back towards
+  // the last good point where the fits fail.
+  double previous = 0.0, z_previous = 0.0;  // the optimum: z = 0
+  double below = 0.0, z_below = 0.0;        // the farthest δ known with |z| < q
+  double above = kInf, z_above = kInf;      // the nearest δ known with |z| > q
+  double failed = kInf;                     // the nearest δ where the fits fail
   double delta = std::min(q * se_theta, limit);
   std::vector<double> start = theta_;
-  for (int step = 0; step < 40; ++step) {
+  for (int step = 0; step < 60; ++step) {
     for (std::size_t j = 0; j < start.size(); ++j)
       start[j] = theta_[j] + sign * delta * follow_theta[Eigen::Index(j)];
     const double z = std::abs(profile_root(i, centre + sign * delta, start));
-    if (!std::isfinite(z)) return {value_at(below), false};  // the fits fail beyond here
+    if (!std::isfinite(z)) {
+      failed = delta;
+      if (failed - below <= 1e-6 * se_theta) return {value_at(below), false, true};
+      delta = 0.5 * (below + failed);
+      continue;
+    }
     if (std::abs(z - q) <= 1e-6 * q) return {value_at(delta), true};
     if (z < q) {
       // Reached the bound, or far out and the profile flat: the data do not bound it here.
       const bool flat = delta > 8.0 * q * se_theta && z - z_below < 1e-3 * q;
       if (delta >= limit || flat) return {open_end, false};
+      previous = below;
+      z_previous = z_below;
       below = delta;
       z_below = z;
     } else {
       above = delta;
       z_above = z;
     }
-    // The secant through the bracket's ends (or the last two points before one is known).
-    double next =
-        std::isfinite(above)
-            ? below + (q - z_below) * (above - below) / (z_above - z_below)
-            : (z > z_below ? delta + (q - z) * (delta - below) / (z - z_below) : 4.0 * delta);
-    if (!std::isfinite(above)) next = std::min(next, 4.0 * delta);
-    if (std::isfinite(above) && !(next > below && next < above)) next = 0.5 * (below + above);
+    double next;
+    if (std::isfinite(above)) {
+      next = below + (q - z_below) * (above - below) / (z_above - z_below);
+      if (!(next > below && next < above)) next = 0.5 * (below + above);
+    } else {
+      next = z_below > z_previous
+                 ? below + (q - z_below) * (below - previous) / (z_below - z_previous)
+                 : 4.0 * below;
+      next = std::min(next, 4.0 * below);
+    }
+    if (next >= failed) next = 0.5 * (below + failed);
     if (!(next > 0.0)) return {open_end, false};  // (a NaN step too)
     delta = std::min(next, limit);
   }

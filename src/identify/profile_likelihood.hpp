@@ -21,6 +21,9 @@ namespace momenta::identify::detail {
 struct ProfileEnd {
   double value = 0.0;
   bool bounded = true;
+  /// Not bounded because the fits failed beyond `value` (values the model refuses, runs that
+  /// blow up): the profile could not be followed further.
+  bool fits_failed = false;
 };
 
 struct ProfileInterval {

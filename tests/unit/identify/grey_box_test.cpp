@@ -191,6 +191,20 @@ TEST(GreyBoxFit, AProfileTheDataDoNotBoundSaysSo) {
   EXPECT_LT(e.fisher_lower95[0], 0.0);  // Fisher's interval crosses into impossible values
   EXPECT_LE(e.lower95[0], 50.0);
   EXPECT_GE(e.upper95[0], 50.0);
+  ASSERT_EQ(e.interval_notes.size(), 1u);
+  EXPECT_THAT(e.interval_notes[0],
+              HasSubstr("; the data do not bound it below: its profile stays under q² down to 0"));
+
+  // Estimated on either sign, b's profile runs into values the model refuses (a negative
+  // damping): said so, the end the last value the fits reached.
+  problem.parameters[0].positive = false;
+  const GreyBoxEstimate signed_b = fit_grey_box(problem);
+  ASSERT_TRUE(signed_b.profiled[0]);
+  EXPECT_FALSE(signed_b.lower_bounded[0]);
+  EXPECT_GE(signed_b.lower95[0], 0.0);
+  EXPECT_LT(signed_b.lower95[0], 50.0);
+  ASSERT_EQ(signed_b.interval_notes.size(), 1u);
+  EXPECT_THAT(signed_b.interval_notes[0], HasSubstr("; not bounded below: the fits fail beyond"));
 }
 
 // A mass on a spring and a damper, released from x0 = 0.1 m: its free response depends on k/m
