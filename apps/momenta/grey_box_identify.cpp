@@ -34,9 +34,6 @@ constexpr const char* kUndeterminedAdvice =
 
 std::vector<double> values_of(const VecX& x) { return {x.data(), x.data() + x.size()}; }
 
-// An interval's end: a number, or ±∞ where the data do not bound it.
-std::string end_text(double x) { return std::isinf(x) ? (x < 0 ? "−∞" : "∞") : number_text(x, 6); }
-
 // A number that may be infinite (an undetermined parameter's standard error or bound).
 json number_or_null(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 
@@ -125,8 +122,9 @@ void print_estimate(const identify::GreyBoxProblem& problem, const identify::Gre
     const bool determined = std::isfinite(e.standard_error[k]);
     fmt::print("  {:<{}}  {:>12} {:>11}   {:<29} {:>12}{}\n", e.names[i], width,
                number_text(e.value[k], 6), determined ? number_text(e.standard_error[k], 3) : "—",
-               determined ? fmt::format("[{}, {}]{}", end_text(e.lower95[k]),
-                                        end_text(e.upper95[k]), e.profiled[i] ? " ᵖ" : "")
+               determined ? fmt::format("[{}, {}]{}", identify::interval_end_text(e.lower95[k]),
+                                        identify::interval_end_text(e.upper95[k]),
+                                        e.profiled[i] ? " ᵖ" : "")
                           : "not determined",
                number_text(e.start[k], 6), e.at_bound[i] ? "  (at its bound)" : "");
   }

@@ -77,8 +77,6 @@ std::string termination_text(const ceres::Solver::Summary& summary, int iteratio
   return text;
 }
 
-std::string end_text(double x) { return std::isinf(x) ? (x < 0 ? "−∞" : "∞") : number_text(x, 6); }
-
 // Why parameter i's interval is the profile's, and what the data leave open.
 std::string interval_note(const GreyBoxEstimate& e, Eigen::Index i, GreyBoxSettings::Profile mode,
                           const detail::ProfileInterval& interval) {
@@ -86,7 +84,7 @@ std::string interval_note(const GreyBoxEstimate& e, Eigen::Index i, GreyBoxSetti
   const std::string fisher = fmt::format("[{}, {}]", number_text(e.fisher_lower95[i], 6),
                                          number_text(e.fisher_upper95[i], 6));
   std::string note = fmt::format("{}: [{}, {}] from the profile likelihood", e.names[ii],
-                                 end_text(e.lower95[i]), end_text(e.upper95[i]));
+                                 interval_end_text(e.lower95[i]), interval_end_text(e.upper95[i]));
   if (mode == GreyBoxSettings::Profile::always) {
     note += fmt::format(" (asked for); Fisher's interval {}", fisher);
   } else if (std::isfinite(e.not_quadratic[i])) {
@@ -105,10 +103,10 @@ std::string interval_note(const GreyBoxEstimate& e, Eigen::Index i, GreyBoxSetti
                 ? fmt::format(
                       "; not bounded {}: the fits fail beyond {} (values the model refuses, or "
                       "runs that blow up), where the profile is still under q²",
-                      below ? "below" : "above", end_text(end.value))
+                      below ? "below" : "above", interval_end_text(end.value))
                 : fmt::format("; the data do not bound it {}: its profile stays under q² {} {}",
                               below ? "below" : "above", below ? "down to" : "up to",
-                              end_text(end.value));
+                              interval_end_text(end.value));
   }
   return note;
 }
@@ -157,6 +155,10 @@ void profile_intervals(const GreyBoxProblem& problem, RunResiduals& cost,
 }
 
 }  // namespace
+
+std::string interval_end_text(double x) {
+  return std::isinf(x) ? (x < 0 ? "−∞" : "∞") : number_text(x, 6);
+}
 
 GreyBoxEstimate fit_grey_box(const GreyBoxProblem& problem) {
   const auto started = std::chrono::steady_clock::now();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 
 #include <fmt/format.h>
@@ -15,9 +16,11 @@ namespace momenta::identify::detail {
 
 namespace {
 
+// The experiment as errors name it: its name and its file (a Bode test's, or the log's).
 std::string experiment_label(const GreyBoxExperiment& e) {
-  return e.name.empty() ? e.data.source
-                        : fmt::format("experiment '{}' ({})", e.name, e.data.source);
+  const std::string& source =
+      e.frequency_response ? e.frequency_response->data.source : e.data.source;
+  return e.name.empty() ? source : fmt::format("experiment '{}' ({})", e.name, source);
 }
 
 VecX column_of(const io::MeasuredTable& data, const std::string& column, const std::string& what) {
@@ -46,9 +49,7 @@ model::Model model_at(const io::ModelTemplate& file, const GreyBoxProblem& probl
 void prepare_frequency_response(const io::ModelTemplate& file, const GreyBoxProblem& problem,
                                 const GreyBoxExperiment& e, PreparedExperiment& x) {
   const FrequencyExperiment& test = *e.frequency_response;
-  const std::string label = e.name.empty()
-                                ? test.data.source
-                                : fmt::format("experiment '{}' ({})", e.name, test.data.source);
+  const std::string label = experiment_label(e);
   if (e.outputs.size() != 2) {
     throw InvalidArgument(
         fmt::format("{}: a Bode test has two channels, magnitude and phase", label));
@@ -285,12 +286,18 @@ ceres::Solver::Options solver_options(int max_iterations) {
   return options;
 }
 
+std::pair<double, double> Parameterization::bounds(std::size_t i, const GreyBoxParameter& g) const {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const double lower =
+      std::isfinite(g.lower) && (!positive[i] || g.lower > 0.0) ? theta(i, g.lower) : -inf;
+  return {lower, std::isfinite(g.upper) ? theta(i, g.upper) : inf};
+}
+
 void set_bounds(ceres::Problem& problem, double* theta, int index, const GreyBoxParameter& g,
                 const Parameterization& scale, std::size_t i) {
-  const bool positive = scale.positive[i];
-  if (std::isfinite(g.lower) && (!positive || g.lower > 0.0))
-    problem.SetParameterLowerBound(theta, index, scale.theta(i, g.lower));
-  if (std::isfinite(g.upper)) problem.SetParameterUpperBound(theta, index, scale.theta(i, g.upper));
+  const auto [lower, upper] = scale.bounds(i, g);
+  if (std::isfinite(lower)) problem.SetParameterLowerBound(theta, index, lower);
+  if (std::isfinite(upper)) problem.SetParameterUpperBound(theta, index, upper);
 }
 
 }  // namespace momenta::identify::detail

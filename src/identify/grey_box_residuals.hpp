@@ -7,6 +7,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <ceres/ceres.h>
@@ -51,6 +52,9 @@ struct Parameterization {
     return p;
   }
   double theta(std::size_t i, double p) const { return positive[i] ? std::log(p) : p; }
+  /// Parameter i's bounds in θ, ±∞ where it has none (a positive parameter's lower bound ≤ 0
+  /// is none: ln p has no floor there).
+  std::pair<double, double> bounds(std::size_t i, const GreyBoxParameter& g) const;
 };
 
 // Every experiment's weighted residuals, and their Jacobian from the sensitivities.

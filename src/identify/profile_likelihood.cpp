@@ -60,16 +60,6 @@ double sum_of_squares(const RunResiduals& cost, const std::vector<double>& theta
   return s;
 }
 
-// θ bounds of parameter i.
-std::pair<double, double> theta_bounds(const GreyBoxParameter& g, const Parameterization& scale,
-                                       std::size_t i) {
-  const bool positive = scale.positive[i];
-  const double lower =
-      std::isfinite(g.lower) && (!positive || g.lower > 0.0) ? scale.theta(i, g.lower) : -kInf;
-  const double upper = std::isfinite(g.upper) ? scale.theta(i, g.upper) : kInf;
-  return {lower, upper};
-}
-
 }  // namespace
 
 ProfileLikelihood::ProfileLikelihood(RunResiduals& cost, const Parameterization& scale,
@@ -133,7 +123,7 @@ ProfileEnd ProfileLikelihood::side(Eigen::Index i, double sign, double q, double
                                    const VecX& follow_theta) {
   const auto ii = std::size_t(i);
   const double centre = theta_[ii];
-  const auto [lower, upper] = theta_bounds(parameters_[ii], scale_, ii);
+  const auto [lower, upper] = scale_.bounds(ii, parameters_[ii]);
   const double limit = sign > 0.0 ? upper - centre : centre - lower;  // how far δ may go
   const auto value_at = [&](double delta) {
     return scale_.positive[ii] ? std::exp(centre + sign * delta) : centre + sign * delta;

@@ -178,6 +178,10 @@ struct GreyBoxEstimate {
   double wall_seconds = 0.0;
 };
 
+/// An interval's end as the text and the page print it: the number, or −∞ / ∞ where the data
+/// leave that end open.
+std::string interval_end_text(double x);
+
 /// Fits `problem`. Throws InvalidArgument naming the parameter path (with a did-you-mean), the
 /// column, signal or channel, and the experiment, for anything that does not fit the model; what
 /// the model file's reader throws for values it refuses at the start.
