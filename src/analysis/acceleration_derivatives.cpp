@@ -29,6 +29,7 @@ AccelerationDerivatives::AccelerationDerivatives(const model::Model& model)
   dr_dq_ff_.resize(nf, nf);
   dr_dv_ff_.resize(nf, nf);
   da_ff_.resize(nf, nf);
+  r_ff_.resize(nf);
   // llt_ sizes itself on the first compute() (Eigen's LLT(n) leaves its status unset).
 }
 
@@ -71,6 +72,14 @@ void AccelerationDerivatives::compute(const system::MultibodySystem& system, Mat
       da_dv(free_[static_cast<std::size_t>(a)], free_[static_cast<std::size_t>(b)]) = -da_ff_(a, b);
     }
   }
+}
+
+void AccelerationDerivatives::acceleration_change(const VecX& r, VecX& da) {
+  const auto nf = static_cast<Eigen::Index>(free_.size());
+  for (Eigen::Index a = 0; a < nf; ++a) r_ff_[a] = r[free_[static_cast<std::size_t>(a)]];
+  llt_.solveInPlace(r_ff_);
+  da.setZero();
+  for (Eigen::Index a = 0; a < nf; ++a) da[free_[static_cast<std::size_t>(a)]] = -r_ff_[a];
 }
 
 }  // namespace momenta::analysis

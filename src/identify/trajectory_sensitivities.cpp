@@ -71,8 +71,8 @@ struct Member {
 // (q, S_q,1, …), velocity (v, S_v,1, …).
 class SensitivitySystem final : public integrate::SecondOrderSystem {
  public:
-  // ∂a/∂p_i by central differences between plus and minus (steps h_i), or, where `forward` is
-  // not empty, forward differences to forward[i] (steps forward_steps[i]).
+  // ∂r/∂p_i by central differences between plus and minus (steps h_i), or, where `forward` is
+  // not empty, forward differences to forward[i] (steps forward_steps[i]; the nominal's r is 0).
   SensitivitySystem(Member& nominal, std::vector<std::unique_ptr<Member>>& plus,
                     std::vector<std::unique_ptr<Member>>& minus,
                     std::vector<std::unique_ptr<Member>>& forward, const VecX& steps,
@@ -91,8 +91,8 @@ class SensitivitySystem final : public integrate::SecondOrderSystem {
     q_.resize(n_);
     v_.resize(n_);
     a_.resize(n_);
-    a_plus_.resize(n_);
-    a_minus_.resize(n_);
+    r_.resize(n_);
+    da_dp_.resize(n_);
     da_dq_.resize(n_, n_);
     da_dv_.resize(n_, n_);
     for (int i = 0; i < n_; ++i) {
@@ -107,6 +107,9 @@ class SensitivitySystem final : public integrate::SecondOrderSystem {
   int error_controlled() const override { return n_; }
   long evaluations() const { return evaluations_; }
 
+  // ∂a/∂p_i: a shifted model's accelerations differ from the nominal a by −M_ff⁻¹ r_i to first
+  // order, r_i the generalized force its dynamics leave unbalanced at a (an inverse dynamics, not
+  // a forward one: MultibodySystem::residual), M_ff factored once for ∂a/∂x.
   void acceleration(double t, const VecX& q, const VecX& v, VecX& vdot) override {
     q_ = q.head(n_);
     v_ = v.head(n_);
@@ -120,13 +123,15 @@ class SensitivitySystem final : public integrate::SecondOrderSystem {
       out.noalias() = da_dq_ * q.segment(at, n_);
       out.noalias() += da_dv_ * v.segment(at, n_);
       if (central_) {
-        plus_[k]->system.acceleration(t, q_, v_, a_plus_);
-        minus_[k]->system.acceleration(t, q_, v_, a_minus_);
-        out += (a_plus_ - a_minus_) * (scales_[i] / (2.0 * steps_[i]));
+        r_ = plus_[k]->system.residual(t, q_, v_, a_);
+        r_ -= minus_[k]->system.residual(t, q_, v_, a_);
+        r_ *= scales_[i] / (2.0 * steps_[i]);
       } else {
-        forward_[k]->system.acceleration(t, q_, v_, a_plus_);
-        out += (a_plus_ - a_) * (scales_[i] / forward_steps_[i]);
+        r_ = forward_[k]->system.residual(t, q_, v_, a_);
+        r_ *= scales_[i] / forward_steps_[i];
       }
+      derivatives_.acceleration_change(r_, da_dp_);
+      out += da_dp_;
       for (const int r : prescribed_) out[r] = 0.0;
     }
     evaluations_ += 1 + (central_ ? 2L : 1L) * np_;
@@ -169,7 +174,7 @@ class SensitivitySystem final : public integrate::SecondOrderSystem {
   analysis::AccelerationDerivatives derivatives_;
   int n_, np_;
   std::vector<int> prescribed_;
-  VecX q_, v_, a_, a_plus_, a_minus_;
+  VecX q_, v_, a_, r_, da_dp_;
   MatX da_dq_, da_dv_;
   long evaluations_ = 0;
 };

@@ -55,6 +55,7 @@ MultibodySystem::MultibodySystem(const model::Model& model)
       tau_elements_(VecX::Zero(model.nv())),
       constraint_tau_(VecX::Zero(model.nv())),
       vdot_prescribed_(VecX::Zero(model.nv())),
+      residual_(VecX::Zero(model.nv())),
       f_ext_(model.num_bodies(), Vec6::Zero()),
       samples_(model.signals().size(), model::SignalSample{0.0, 0.0, 0.0}),
       signal_values_(model.signals().size(), 0.0),
@@ -216,8 +217,8 @@ const VecX& MultibodySystem::solve(double t, const VecX& q, const VecX& v, model
   return data_.vdot;
 }
 
-void MultibodySystem::free_dynamics(double t, const VecX& q, const VecX& v, model::Limit limit,
-                                    bool factors_only) {
+std::span<const Vec6> MultibodySystem::apply_loads(double t, const VecX& q, const VecX& v,
+                                                   model::Limit limit) {
   // Every signal once at t (offsets added), from the side `limit` says at a breakpoint.
   const auto& signals = model_.signals();
   for (std::size_t i = 0; i < signals.size(); ++i) {
@@ -235,7 +236,6 @@ void MultibodySystem::free_dynamics(double t, const VecX& q, const VecX& v, mode
   // The state with the prescribed coordinates taken from their signals; their accelerations too.
   q_ = q;
   v_ = v;
-  const bool prescribed = model_.has_prescribed_joints() || holding_ > 0;
   if (model_.has_prescribed_joints()) {
     write_prescribed(model_, samples_, q_, v_, &vdot_prescribed_);
   }
@@ -255,8 +255,13 @@ void MultibodySystem::free_dynamics(double t, const VecX& q, const VecX& v, mode
   if (loads) dynamics::forward_kinematics(model_, data_, q_, v_);
   dynamics::force_element_forces(model_, data_, signal_values_, q_, v_, tau_elements_, f_ext_);
   add_sliding_friction();
-  const std::span<const Vec6> f_ext =
-      loads ? std::span<const Vec6>(f_ext_) : std::span<const Vec6>();
+  return loads ? std::span<const Vec6>(f_ext_) : std::span<const Vec6>();
+}
+
+void MultibodySystem::free_dynamics(double t, const VecX& q, const VecX& v, model::Limit limit,
+                                    bool factors_only) {
+  const std::span<const Vec6> f_ext = apply_loads(t, q, v, limit);
+  const bool prescribed = model_.has_prescribed_joints() || holding_ > 0;
 
   // Forward dynamics; hybrid where joints are prescribed (it also fills data_.tau with the
   // generalized forces the prescription needs).
@@ -338,6 +343,28 @@ const VecX& MultibodySystem::evaluate(double t, const VecX& q, const VecX& v) {
   compute(t, q, v, model::Limit::right);
   dynamics::forward_kinematics(model_, data_, q_, v_, data_.vdot);
   return data_.vdot;
+}
+
+const VecX& MultibodySystem::residual(double t, const VecX& q, const VecX& v, const VecX& vdot) {
+  if (constraints_) {
+    throw InvalidArgument(
+        "the unbalanced generalized force of a model with constraints: their forces are not "
+        "known without its accelerations");
+  }
+  const std::span<const Vec6> f_ext =
+      apply_loads(t, q, v, t >= step_end_ ? model::Limit::left : model::Limit::right);
+  residual_ = vdot;
+  for (int i = 0; i < model_.nv(); ++i) {
+    if (hybrid_mask_[static_cast<std::size_t>(model_.joint_of_v(i))]) {
+      residual_[i] = vdot_prescribed_[i];
+    }
+  }
+  residual_ = dynamics::rnea(model_, data_, q_, v_, residual_, f_ext);
+  residual_ -= tau_elements_;
+  for (int i = 0; i < model_.nv(); ++i) {
+    if (hybrid_mask_[static_cast<std::size_t>(model_.joint_of_v(i))]) residual_[i] = 0.0;
+  }
+  return residual_;
 }
 
 void MultibodySystem::acceleration(double t, const VecX& q, const VecX& v, VecX& vdot) {

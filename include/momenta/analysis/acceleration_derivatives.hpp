@@ -30,6 +30,12 @@ class AccelerationDerivatives {
   /// allocation after the first call.
   void compute(const system::MultibodySystem& system, MatX& da_dq, MatX& da_dv);
 
+  /// After compute(): da = −M_ff⁻¹ r on the free coordinates, zero on the prescribed ones — how
+  /// the accelerations move when a generalized force r is left unbalanced at this state
+  /// (MultibodySystem::residual of a second model at the first's accelerations, to first order
+  /// in r). Sizes r and da nv. No allocation.
+  void acceleration_change(const VecX& r, VecX& da);
+
   /// Velocity indices of the free (not prescribed) coordinates, ascending.
   const std::vector<int>& free() const { return free_; }
 
@@ -39,6 +45,7 @@ class AccelerationDerivatives {
   std::vector<int> free_;
   std::vector<double> signal_values_;
   MatX mass_ff_, dr_dq_ff_, dr_dv_ff_, da_ff_;
+  VecX r_ff_;
   Eigen::LLT<MatX> llt_;
 };
 

@@ -9,7 +9,10 @@
 //
 // with ∂a/∂q and ∂a/∂v analytic (analysis/acceleration_derivatives.hpp) and ∂a/∂p_i, ∂x0/∂p_i
 // and an output's own ∂y/∂p_i by differences between models built at shifted p_i (at the same
-// state: differences of the dynamics, never of whole runs). Each sensitivity is carried scaled by
+// state: differences of the dynamics, never of whole runs). ∂a/∂p_i = −M_ff⁻¹ ∂r/∂p_i, r the
+// generalized force a model's dynamics leave unbalanced at the nominal accelerations
+// (MultibodySystem::residual: an inverse dynamics of the shifted model, not a forward one), M_ff
+// the factor ∂a/∂x already holds. Each sensitivity is carried scaled by
 // its parameter's size, p_i ∂x/∂p_i (lengths and angles like x itself). An output column of the
 // model's `outputs:` is y(t, q, v; p): its ∂y/∂x by central differences of the output at the state.
 //
@@ -40,9 +43,10 @@ struct SensitivityOptions {
   /// ∂x0/∂p_i and an output's own ∂y/∂p_i (once per sample): central differences with
   /// h_i = relative_step · |p_i| (relative_step where p_i = 0), truncation O(h²) ~1e-8 relative.
   double relative_step = 1e-4;
-  /// ∂a/∂p_i at every evaluation of the dynamics: forward differences with h_i = forward_step ·
-  /// |p_i| — one evaluation of a shifted model per parameter, error ~1e-7 relative (truncation
-  /// h, round-off ε/h) — or central ones with relative_step, two evaluations, ~1e-8.
+  /// ∂r/∂p_i at every evaluation of the dynamics (∂a/∂p_i = −M_ff⁻¹ ∂r/∂p_i): forward differences
+  /// with h_i = forward_step · |p_i| — one inverse dynamics of a shifted model per parameter
+  /// (r = 0 for the nominal), error ~1e-7 relative (truncation h, round-off ε/h) — or central
+  /// ones with relative_step, two, ~1e-8.
   enum class Differences { forward, central };
   Differences dynamics = Differences::forward;
   double forward_step = 1e-7;

@@ -74,6 +74,16 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   /// updated (world poses only when some element acts on bodies; no body accelerations), so
   /// read quantities after evaluate(). No allocation.
   void acceleration(double t, const VecX& q, const VecX& v, VecX& vdot) override;
+  /// The generalized force that accelerations `vdot` leave unbalanced at (t, q, v):
+  /// r = ID(q̄, v̄, v̇̄, f_ext) − Q(q̄, v̄), where q̄, v̄ are the state with the prescribed (and held)
+  /// coordinates applied, v̇̄ is `vdot` but their prescription's accelerations, and Q, f_ext are
+  /// the force elements' loads at t (the signals sampled as acceleration() samples them); zero on
+  /// prescribed and held coordinates. The accelerations acceleration() returns leave r = 0, and
+  /// on the free rows r = M_ff (vdot − a): a second model's r at the first's accelerations
+  /// measures how its accelerations differ for the price of one inverse dynamics (RNEA, no
+  /// articulated inertias) — what identify's sensitivities take ∂a/∂p from. Throws
+  /// InvalidArgument for a model with constraints. Overwrites data(); no allocation.
+  const VecX& residual(double t, const VecX& q, const VecX& v, const VecX& vdot);
   void integrate(const VecX& q, const VecX& dq, VecX& q_out) const override;
   void difference(const VecX& q0, const VecX& q1, VecX& dq) const override;
   void local_coordinate_rate(const VecX& delta, const VecX& v, VecX& delta_rate) const override;
@@ -212,6 +222,10 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   // compute() up to the constraints: signals, the prescribed state, force elements and the
   // unconstrained forward dynamics into data_ — only aba_articulate's passes where `factors_only`
   // (the constraint solver finishes aba with the constraint forces).
+  // Samples the signals at t, applies the prescribed and held coordinates to q_, v_ (their
+  // accelerations to vdot_prescribed_) and evaluates the force elements into tau_elements_ and
+  // f_ext_. Returns the wrenches the dynamics should take: none when no element acts on bodies.
+  std::span<const Vec6> apply_loads(double t, const VecX& q, const VecX& v, model::Limit limit);
   void free_dynamics(double t, const VecX& q, const VecX& v, model::Limit limit,
                      bool factors_only = false);
   // At a singular configuration (the constraint rows lose rank: a dead point or a bifurcation
@@ -227,6 +241,7 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   VecX tau_elements_;     // force elements on the joints
   VecX constraint_tau_;   // couplers' forces on the joints (the last evaluation's)
   VecX vdot_prescribed_;  // signals' accelerations at the prescribed coordinates
+  VecX residual_;         // residual()'s
   std::vector<Vec6> f_ext_;
   std::vector<model::SignalSample> samples_;  // every signal at the current instant
   std::vector<double> signal_values_;         // samples_[i].value, for force_element_forces
