@@ -260,7 +260,54 @@ test('heavy top: reports its spin, a rigid body drawn as its cone, nutating abou
   }
   assert.ok(new Set(frames).size > 1, 'the nutation mode did not move the cone');
   await (await r.page.$('#motion')).screenshot({ path: path.join(artifacts, 'heavy_top-nutation.png') });
+
+  // Its turning plotted as the notes' Euler angles (ZXZ): in the slow steady precession θ stays
+  // 20° and φ grows at Ω, the root of A cos θ Ω² − C ω3 Ω + m g l = 0 (the example's closed
+  // form), ψ at ω3 − Ω cos θ (ω3 = φ̇ cos θ + ψ̇) — straight lines, not sawtooths. RK4 at 0.1 ms
+  // (h ω3 = 0.03) drifts from them by 1.1e-6 rad in φ and ψ over the 5 s (a rate 2e-7 rad/s off:
+  // its phase error), θ by 9e-9 rad (measured from the CSV); 1e-5 and 1e-7 rad allowed, while
+  // a lost turn is 2π and a wrong sequence or axis leaves no straight line at all. The
+  // quaternion's components start hidden: a tick in the chooser shows them.
+  const groups = await r.page.evaluate(() => window.momentaReport.plotGroups());
+  assert.equal(groups[0].title, 'top\'s precession φ and nutation θ (ZXZ Euler angles, rad)');
+  assert.deepEqual(groups[0].series, ['tip.precession φ', 'tip.nutation θ']);
+  assert.equal(groups[1].title, 'top\'s spin ψ (ZXZ Euler angle, rad)');
+  assert.deepEqual(groups[1].series, ['tip.spin ψ']);
+  assert.ok(groups[0].shown && groups[1].shown);
+  const quaternion = groups.findIndex((g) => g.series.includes('tip.qw'));
+  assert.equal(groups[quaternion].shown, false, 'the quaternion components start hidden');
+  const [A, C, mgl, w3, th] = [6.375e-3, 7.5e-4, 9.81 * 0.075, 300, (20 * Math.PI) / 180];
+  const omega = (C * w3 - Math.sqrt((C * w3) ** 2 - 4 * A * Math.cos(th) * mgl)) / (2 * A * Math.cos(th));
+  const euler = await r.page.evaluate(() => ({ t: window.momentaReport.plotTime(),
+    phi: window.momentaReport.seriesValues('tip.precession φ'), theta: window.momentaReport.seriesValues('tip.nutation θ'),
+    psi: window.momentaReport.seriesValues('tip.spin ψ') }));
+  assert.ok(euler.t.at(-1) >= 4.999, `plotted to ${euler.t.at(-1)} s`);
+  euler.t.forEach((t, k) => {
+    assert.ok(Math.abs(euler.theta[k] - th) <= 1e-7, `θ(${t}) = ${euler.theta[k]}`);
+    assert.ok(Math.abs(euler.phi[k] - euler.phi[0] - omega * t) <= 1e-5, `φ(${t}) = ${euler.phi[k]}`);
+    assert.ok(Math.abs(euler.psi[k] - euler.psi[0] - (w3 - omega * Math.cos(th)) * t) <= 1e-5, `ψ(${t}) = ${euler.psi[k]}`);
+  });
+  await r.page.click(`#plots .plot-chooser label:nth-of-type(${quaternion + 1}) input`);
+  const after = await r.page.evaluate(() => window.momentaReport.plotGroups());
+  assert.equal(after[quaternion].shown, true, 'ticking its box shows the quaternion plot');
+  await r.page.evaluate(() => window.momentaReport.drawAllCharts());
+  await (await r.page.$('#plots')).screenshot({ path: path.join(artifacts, 'heavy_top-euler-plots.png') });
   await r.page.close();
+
+  // Asleep (upright, spinning at 300 rad/s about its axis): θ = 0, where only φ + ψ has a value;
+  // ψ is held and φ carries the turn, 300 t — no jumps between the two.
+  const sleeping = path.join(work, 'sleeping_top.html');
+  run('report', path.join(examples, 'sleeping_top.yaml'), '-o', sleeping, '-q');
+  const asleep = await open(sleeping);
+  const upright = await asleep.page.evaluate(() => ({ t: window.momentaReport.plotTime(),
+    phi: window.momentaReport.seriesValues('tip.precession φ'), theta: window.momentaReport.seriesValues('tip.nutation θ'),
+    psi: window.momentaReport.seriesValues('tip.spin ψ') }));
+  upright.t.forEach((t, k) => {
+    assert.ok(Math.abs(upright.phi[k] - 300 * t) <= 1e-6 && upright.theta[k] === 0 && upright.psi[k] === 0,
+      `at ${t} s: φ ${upright.phi[k]}, θ ${upright.theta[k]}, ψ ${upright.psi[k]}`);
+  });
+  assert.deepEqual(asleep.problems, []);
+  await asleep.page.close();
 });
 
 // The bouncing ball (a joint's stop, e = 0.8): every impact a tick on the time axis of every time

@@ -91,9 +91,13 @@ function simulationPage(app, data) {
         blocks: svg.querySelectorAll('rect.block').length, junctions: svg.querySelectorAll('circle.junction').length,
         width: box.width, height: box.height };
     }),
-    // Each plot's title as drawn (after drawAllCharts), with its data's series and unit.
-    plotGroups: () => data.plots.groups.map((g, i) => ({ title: document.querySelectorAll('#plots .plot')[i]?.querySelector('.u-title')?.textContent,
-      unit: g.unit, series: g.series.map((s) => s.name) })),
+    // Each plot's title as drawn (after drawAllCharts), with its data's series and unit, and
+    // whether the reader sees it (its box in the chooser ticked).
+    plotGroups: () => data.plots.groups.map((g, i) => {
+      const holder = document.querySelectorAll('#plots .plot')[i];
+      return { title: holder?.querySelector('.u-title')?.textContent, unit: g.unit, series: g.series.map((s) => s.name),
+        shown: Boolean(holder) && !holder.hidden && getComputedStyle(holder).display !== 'none' };
+    }),
   };
 }
 

@@ -179,6 +179,19 @@ export class Motion {
       }
       return { joint, child, parent: this.bodies.findIndex((b) => b.name === joint.parent) };
     });
+    // A ball joint turns about no one axis: a dashed vertical through its point instead (along
+    // the view's up, against gravity), the line a top's nutation θ is measured from.
+    // Drawn through the bodies (no depth test): a top's own cone would hide it.
+    const dashes = new THREE.LineDashedMaterial({ color: 0x333333, dashSize: 0.05 * this.length, gapSize: 0.03 * this.length,
+      depthTest: false, transparent: true, opacity: 0.8 });
+    this.verticals = this.jointArrows.filter((j) => j.joint.type === 'spherical').map((j) => {
+      const top = this.viewer.up.clone().multiplyScalar(1.5 * this.length);
+      const line = new THREE.Line(new THREE.BufferGeometry().setFromPoints([new THREE.Vector3(), top]), dashes);
+      line.computeLineDistances();
+      line.renderOrder = 1;
+      this.viewer.scene.add(line);
+      return { line, joint: j };
+    });
     const material = new THREE.LineBasicMaterial({ color: 0x555555 });
     this.links = [];
     for (const body of this.bodies.keys()) {
@@ -314,6 +327,10 @@ export class Motion {
       }
       attribute.needsUpdate = true;
     });
+    for (const v of this.verticals) {
+      v.line.position.set(...world(v.joint.child, v.joint.joint.origin));
+      v.line.visible = this.toggles.axes;
+    }
     for (const s of this.springs) {
       const a = world(s.a, s.e.pa);
       const b = world(s.b, s.e.pb);

@@ -3,7 +3,9 @@
 // with the 3-D view's time: clicking a plot moves the time there; playing moves a marker.
 // A chart is drawn when it comes near the window (a software-rendered browser pays for every
 // line of every canvas), and a group of many columns starts with its first few shown: the
-// others are a click on their legend entry away.
+// others are a click on their legend entry away. The reader chooses the plots shown (a box per
+// group above them); a group the report marks hidden (a ball joint's quaternion components, its
+// Euler angles plotted instead) starts unticked.
 
 import uPlot from 'uplot';
 import { decode, element, shownValue } from './data.js';
@@ -187,8 +189,9 @@ export function plotsSection(data, timeline) {
     ? ` Ticks on the time axis mark the stops' and contacts' impacts, rests and releases (orange, grey, blue), where friction sticks or slips (purple, brown) and the events (green): hover over one to read it.`
     : '';
   section.append(element('p', { class: 'note' }, note, ' Drag to zoom, double-click to reset, click to move the 3-D view to that time.', marked));
+  const chooser = element('fieldset', { class: 'plot-chooser' }, element('legend', {}, 'Plots shown'));
   const grid = element('div', { class: 'plot-grid' });
-  section.append(grid);
+  section.append(chooser, grid);
   const time = decode(data.plots.time);
   const charts = new LazyCharts();
   const registry = {};
@@ -197,6 +200,10 @@ export function plotsSection(data, timeline) {
   for (const group of data.plots.groups) {
     const holder = element('div', { class: 'plot' });
     grid.append(holder);
+    holder.hidden = Boolean(group.hidden);
+    const box = element('input', { type: 'checkbox', onchange: () => { holder.hidden = !box.checked; } });
+    box.checked = !group.hidden;
+    chooser.append(element('label', {}, box, ` ${group.title}`));
     const series = group.series.map((s) => {
       let values = decode(s.data);
       if (group.log) values = Array.from(values, (v) => (Math.abs(v) > 1e-17 ? Math.abs(v) : 1e-17));
