@@ -66,6 +66,7 @@ json estimate_json(const identify::GreyBoxProblem& problem, const identify::Grey
   }
   j["parameters"] = std::move(parameters);
   j["interval_notes"] = e.interval_notes;
+  j["warnings"] = e.warnings;
   j["profile_fits"] = e.profile_fits;
   j["correlation"] = matrix_json(e.correlation);
   j["identifiability"] = {{"identifiable", e.identifiable},
@@ -111,7 +112,9 @@ void print_estimate(const identify::GreyBoxProblem& problem, const identify::Gre
                                e.simulations, e.sensitivity_simulations, e.evaluations));
   }
   if (e.linearizations > 0) work.push_back(fmt::format("{} linearizations", e.linearizations));
-  fmt::print("     {}, {} s\n\n", fmt::join(work, "; "), number_text(e.wall_seconds, 3));
+  fmt::print("     {}, {} s\n", fmt::join(work, "; "), number_text(e.wall_seconds, 3));
+  for (const std::string& warning : e.warnings) fmt::print("warning: {}\n", warning);
+  fmt::print("\n");
 
   std::size_t width = std::string_view("parameter").size();
   for (const std::string& name : e.names) width = std::max(width, name.size());
@@ -217,6 +220,7 @@ report::GreyBoxResults page_results(const identify::GreyBoxProblem& problem,
   r.advice = kUndeterminedAdvice;
   r.least_determined = e.least_determined;
   r.interval_notes = e.interval_notes;
+  r.warnings = e.warnings;
   r.poorly_determined = identify::kPoorlyDetermined;
   for (const identify::FittedChannel& c : e.channels) {
     r.channels.push_back({c.experiment, c.column, c.channel, c.unit, values(c.time),

@@ -56,6 +56,7 @@ py::dict grey_box_dict(const identify::GreyBoxEstimate& e) {
   d["fisher_upper"] = to_numpy(e.fisher_upper95);
   d["not_quadratic"] = to_numpy(e.not_quadratic);
   d["interval_notes"] = e.interval_notes;
+  d["warnings"] = e.warnings;
   d["start"] = to_numpy(e.start);
   d["log_scale"] = e.positive;
   d["at_bound"] = e.at_bound;

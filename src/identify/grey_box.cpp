@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <complex>
 #include <cstddef>
 #include <utility>
 
@@ -13,6 +14,8 @@
 #include <boost/math/distributions/students_t.hpp>
 
 #include "grey_box_residuals.hpp"
+#include "momenta/analysis/linearize.hpp"
+#include "momenta/analysis/modes.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/common/number_text.hpp"
 #include "momenta/common/suggest.hpp"
@@ -27,6 +30,13 @@ using detail::Evaluation;
 using detail::Parameterization;
 using detail::PreparedExperiment;
 using detail::RunResiduals;
+
+// A run of the fit may take this many times the steps of the longest run at the start, and at
+// least kLeastStepBudget: a trial or a profile's fit at values that make the model stiff then
+// fails (a rejected step, a profile side that ends there) instead of crawling for hours — 4 s of
+// the cruise car with m and b both free sent a profile to b ~ 10⁸ N·s/m, millions of steps a run.
+constexpr long kStepBudget = 100;
+constexpr long kLeastStepBudget = 5000;
 // σ_c from a channel's residuals (in its unit), N_c − n_p N_c / N degrees of freedom.
 void estimate_noise(std::vector<PreparedExperiment>& experiments, const VecX& residuals,
                     Eigen::Index total, Eigen::Index np) {
@@ -154,6 +164,48 @@ void profile_intervals(const GreyBoxProblem& problem, RunResiduals& cost,
   e.profile_fits = profile.fits();
 }
 
+// A time log shorter than the model's slowest time scale — 1/|λ| of the slowest mode that is
+// not a rigid-body one (λ = 0: a coordinate free to drift), a time constant or 1/ωn — hardly
+// feels that mode, so the numbers it carries are poorly determined: a sentence per such log,
+// from the linearization about each experiment's initial state at the estimates. Not a refusal:
+// a short log can still pin a faster mode's numbers, and the intervals say how well. Models the
+// linearization does not cover are not checked.
+std::vector<std::string> short_log_warnings(const std::vector<PreparedExperiment>& experiments,
+                                            const VecX& p) {
+  std::vector<std::string> warnings;
+  for (const PreparedExperiment& x : experiments) {
+    if (x.spec->frequency_response) continue;
+    analysis::Modes modes;
+    try {
+      const model::Model model = x.make_model(p(x.parameters));
+      modes = analysis::modes(
+          analysis::linearize(model, analysis::initial_operating_point(model)).system);
+    } catch (const Error&) {
+      continue;
+    }
+    double fastest = 0.0;
+    for (const analysis::Mode& m : modes.modes) fastest = std::max(fastest, m.natural_frequency);
+    const auto slowest = std::find_if(modes.modes.begin(), modes.modes.end(), [&](const auto& m) {
+      return m.natural_frequency > 1e-9 * fastest;
+    });
+    if (slowest == modes.modes.end()) continue;
+    const double scale = 1.0 / slowest->natural_frequency;
+    const double lasts = x.logged_times[x.logged_times.size() - 1] - x.logged_times[0];
+    if (lasts >= scale) continue;
+    const std::complex<double> lambda = slowest->eigenvalue;
+    warnings.push_back(fmt::format(
+        "{}: the log lasts {} s, shorter than the model's slowest time scale 1/|λ| = {} s (λ = {}"
+        "{} 1/s, at the estimates): the numbers that mode carries are poorly determined by it — "
+        "log for {} s or more",
+        detail::experiment_label(*x.spec), number_text(lasts, 4), number_text(scale, 4),
+        number_text(lambda.real(), 4),
+        lambda.imag() != 0.0 ? fmt::format(" ± {}i", number_text(std::abs(lambda.imag()), 4))
+                             : std::string(),
+        number_text(scale, 3)));
+  }
+  return warnings;
+}
+
 }  // namespace
 
 std::string interval_end_text(double x) {
@@ -233,9 +285,15 @@ GreyBoxEstimate fit_grey_box(const GreyBoxProblem& problem) {
     }
   }
 
-  RunResiduals cost(experiments, scale, problem.settings, total);
-  const Evaluation at_start =
-      detail::evaluate(experiments, e.start, problem.settings, total, false, cost);
+  // The runs' settings: the problem's, with a budget of steps set from the runs at the start.
+  GreyBoxSettings settings = problem.settings;
+  RunResiduals cost(experiments, scale, settings, total);
+  const Evaluation at_start = detail::evaluate(experiments, e.start, settings, total, false, cost);
+  if (settings.sensitivity.max_steps == 0) {
+    long longest = 0;
+    for (const SampledOutputs& run : at_start.runs) longest = std::max(longest, run.steps);
+    settings.sensitivity.max_steps = std::max(kLeastStepBudget, kStepBudget * longest);
+  }
 
   std::vector<double> theta(static_cast<std::size_t>(np));
   for (Eigen::Index i = 0; i < np; ++i)
@@ -258,8 +316,8 @@ GreyBoxEstimate fit_grey_box(const GreyBoxProblem& problem) {
   };
   solve();
   if (e.noise_estimated && summary.termination_type == ceres::CONVERGENCE) {
-    const Evaluation first = detail::evaluate(experiments, scale.values(theta.data()),
-                                              problem.settings, total, false, cost);
+    const Evaluation first =
+        detail::evaluate(experiments, scale.values(theta.data()), settings, total, false, cost);
     estimate_noise(experiments, first.residuals, total, np);
     cost.forget();  // the weights changed
     solve();
@@ -274,8 +332,7 @@ GreyBoxEstimate fit_grey_box(const GreyBoxProblem& problem) {
   e.value = scale.values(theta.data());
 
   // The optimum: residuals, Jacobian, the noise the residuals show.
-  const Evaluation best =
-      detail::evaluate(experiments, e.value, problem.settings, total, true, cost);
+  const Evaluation best = detail::evaluate(experiments, e.value, settings, total, true, cost);
   e.final_cost = 0.5 * best.residuals.squaredNorm();
   e.degrees_of_freedom = static_cast<int>(total - np);
   const double s2 = e.noise_estimated ? best.residuals.squaredNorm() / double(total - np) : 1.0;
@@ -370,6 +427,7 @@ GreyBoxEstimate fit_grey_box(const GreyBoxProblem& problem) {
       e.channels.push_back(std::move(f));
     }
   }
+  e.warnings = short_log_warnings(experiments, e.value);
   e.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   return e;

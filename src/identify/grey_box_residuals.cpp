@@ -14,14 +14,13 @@
 
 namespace momenta::identify::detail {
 
-namespace {
-
-// The experiment as errors name it: its name and its file (a Bode test's, or the log's).
 std::string experiment_label(const GreyBoxExperiment& e) {
   const std::string& source =
       e.frequency_response ? e.frequency_response->data.source : e.data.source;
   return e.name.empty() ? source : fmt::format("experiment '{}' ({})", e.name, source);
 }
+
+namespace {
 
 VecX column_of(const io::MeasuredTable& data, const std::string& column, const std::string& what) {
   const auto c = data.find(column);

@@ -37,6 +37,9 @@ struct PreparedExperiment {
   Eigen::Index size() const { return measured.size(); }
 };
 
+/// The experiment as messages name it: its name and its file (a Bode test's, or the log's).
+std::string experiment_label(const GreyBoxExperiment& e);
+
 /// The experiment ready to run: its log on the even grid, its channels, the parameters that
 /// apply to it. Throws InvalidArgument naming the experiment and the column, signal or channel.
 PreparedExperiment prepare(const io::ModelTemplate& file, const GreyBoxProblem& problem,

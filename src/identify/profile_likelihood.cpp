@@ -101,6 +101,8 @@ double ProfileLikelihood::profile_root(Eigen::Index i, double value, std::vector
   std::vector<double> others;
   for (std::size_t j = 0; j < start.size(); ++j)
     if (Eigen::Index(j) != i) others.push_back(start[j]);
+  // Where the run fails at the start, so would Ceres' first evaluation (and log it).
+  if (!std::isfinite(sum_of_squares(cost_, start))) return kNaN;
   WithOneHeld held(cost_, i, value);
   ceres::Problem::Options options;
   options.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;

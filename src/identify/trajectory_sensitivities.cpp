@@ -389,12 +389,23 @@ SampledOutputs sample_outputs(const ModelFactory& make_model, const VecX& p,
   }
   Sampler sampler(channels, *nominal, sensitivities ? &plus : nullptr,
                   sensitivities ? &minus : nullptr, steps, scales, times, spacing, out);
+  // Called at the start and after every step: past the budget the run stops, named.
+  long calls = 0;
+  const auto observe = [&](const integrate::State& state) {
+    if (options.max_steps > 0 && ++calls > options.max_steps + 1) {
+      throw NumericalError(fmt::format(
+          "the run took more than {} steps by t = {:.6g} s of {:.6g} s: the model is far "
+          "stiffer or faster at these values than where the fit started",
+          options.max_steps, state.t, run_options.t_end));
+    }
+    sampler(state);
+  };
 
   if (!sensitivities) {
     integrate::State state{times[0], nominal->model.initial_q(), nominal->model.initial_v()};
     nominal->system.apply_prescribed_motion(state.t, state.q, state.v);
     const integrate::RunSummary summary =
-        integrate::run(nominal->system, method, state, run_options, std::ref(sampler));
+        integrate::run(nominal->system, method, state, run_options, observe);
     out.evaluations = summary.statistics.evaluations;
     out.steps = summary.statistics.steps;
   } else {
@@ -417,7 +428,7 @@ SampledOutputs sample_outputs(const ModelFactory& make_model, const VecX& p,
       }
     }
     const integrate::RunSummary summary =
-        integrate::run(system, method, state, run_options, std::ref(sampler));
+        integrate::run(system, method, state, run_options, observe);
     out.evaluations = system.evaluations();
     out.steps = summary.statistics.steps;
   }

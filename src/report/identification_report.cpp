@@ -96,6 +96,7 @@ std::string grey_box_report_html(const GreyBoxResults& r) {
   }
   data["estimates"] = std::move(parameters);
   data["interval_notes"] = r.interval_notes;
+  data["warnings"] = r.warnings;
   data["correlation"] = r.correlation;
   data["identifiability"] = {{"singular_values", r.singular_values},
                              {"condition_number", number_or_null(r.condition_number)},

@@ -916,6 +916,36 @@ test('grey-box page: the log, the fitted and the starting model, residuals, esti
   await page.close();
 });
 
+// A log shorter than its model's slowest time scale: the bundled drive's first 4 s (its time
+// constant m/b is tens of seconds) with m and b free. The page warns of it at the top, in the
+// command line's words; the full log's page warns of nothing.
+test('grey-box page: a log shorter than the model\'s time scale is warned of as the command line words it', async () => {
+  const rows = fs.readFileSync(path.join(examples, 'identification', 'cruise_control_log.csv'), 'utf8').split('\n');
+  fs.writeFileSync(path.join(work, 'short_drive.csv'), `${rows.slice(0, 10).join('\n')}\n`);
+  const fit = path.join(work, 'short_drive_identify.yaml');
+  fs.writeFileSync(fit, `model: ${path.join(examples, 'cruise_control.yaml')}
+parameters:
+  - {name: m, path: bodies.car.mass, guess: 1500, lower: 100}
+  - {name: b, path: joints.road.damping, guess: 20}
+experiments:
+  - {name: drive, data: short_drive.csv, inputs: [{column: force, signal: u}], outputs: [{column: speed, channel: speed}]}
+`);
+  const file = path.join(work, 'short_drive.html');
+  const printed = JSON.parse(run('identify', fit, '--report', file, '--json'));
+  assert.equal(printed.warnings.length, 1);
+  assert.match(printed.warnings[0], /^experiment 'drive' \(.*short_drive\.csv\): the log lasts 4 s, shorter than the model's slowest time scale/);
+  const { page, problems } = await open(file);
+  assert.deepEqual(await page.evaluate(() => window.momentaReport.warnings()), [`Warning: ${printed.warnings[0]}`]);
+  await (await page.$('#grey-box-summary')).screenshot({ path: path.join(artifacts, 'grey-box-short-log.png') });
+  assert.deepEqual(problems, []);
+  await page.close();
+  const full = path.join(work, 'cruise_fit.html');
+  run('identify', path.join(examples, 'identification', 'cruise_control_identify.yaml'), '--report', full);
+  const other = await open(full);
+  assert.deepEqual(await other.page.evaluate(() => window.momentaReport.warnings()), []);
+  await other.page.close();
+});
+
 test('grey-box page: a Bode test drawn against frequency on a log scale, magnitude in dB and phase in degrees', async () => {
   const file = path.join(work, 'shaker_fit.html');
   const identification = path.join(examples, 'identification', 'quarter_car_shaker_identify.yaml');

@@ -76,6 +76,7 @@ def test_profile_intervals_match_the_command_line():
         assert p["bounded"] == [True, True]
         assert r["not_quadratic"][i] > 0.1
     assert j["interval_notes"] == r["interval_notes"]
+    assert j["warnings"] == r["warnings"]
 
 
 def test_a_bode_test_and_each_experiments_own_numbers_match_the_command_line():

@@ -26,7 +26,9 @@ function summarySection(data) {
     element('h1', {}, `${data.title}: model numbers fitted to measured responses`),
     element('p', {}, element('span', { class: data.converged ? 'verdict pass' : 'verdict warn' },
       data.converged ? 'converged' : 'did not converge')),
-    element('dl', { class: 'facts' }, ...facts.flatMap(([k, v]) => [element('dt', {}, k), element('dd', {}, v)])));
+    element('dl', { class: 'facts' }, ...facts.flatMap(([k, v]) => [element('dt', {}, k), element('dd', {}, v)])),
+    // Logs shorter than the model's slowest time scale, as the command line warns of them.
+    ...(data.warnings ?? []).map((w) => element('p', { class: 'warning' }, element('strong', {}, 'Warning: '), w)));
 }
 
 // Per channel: measured, fitted and at the start against time (a Bode test's against frequency,
@@ -132,6 +134,7 @@ export function greyBoxPage(app, data) {
     kind: 'grey-box',
     drawAllCharts: () => charts.drawAll(),
     estimates: () => data.estimates,
+    warnings: () => Array.from(document.querySelectorAll('#grey-box-summary .warning'), (p) => p.textContent),
     ...fitPageHooks(drawn),
   };
 }

@@ -165,6 +165,10 @@ struct GreyBoxEstimate {
   std::string least_determined;           ///< the weakest combination, when poorly determined
 
   std::vector<FittedChannel> channels;
+  /// A sentence per time log shorter than its model's slowest time scale (1/|λ| of its slowest
+  /// mode that is not a rigid-body one, about its initial state at the estimates): the numbers
+  /// that mode carries are poorly determined by it.
+  std::vector<std::string> warnings;
 
   // The optimizer.
   bool converged = false;

@@ -50,6 +50,11 @@ struct SensitivityOptions {
   enum class Differences { forward, central };
   Differences dynamics = Differences::forward;
   double forward_step = 1e-7;
+  /// A run that takes more integration steps than this stops with a NumericalError naming the
+  /// time it reached (0: no budget but integrate::kMaxRunSteps): a fit's trial at values that
+  /// make the model stiff — a damper of 10⁸ N·s/m on a car — fails at once instead of crawling
+  /// (the grey-box fit sets it from its first runs).
+  long max_steps = 0;
 };
 
 /// What one run gives.

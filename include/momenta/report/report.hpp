@@ -174,6 +174,8 @@ struct GreyBoxResults {
     bool lower_bounded = true, upper_bounded = true;  ///< false: the data leave that end open
   };
   std::vector<std::string> interval_notes;  ///< why each profiled interval is, in words
+  /// Time logs shorter than their model's slowest time scale (identify::GreyBoxEstimate).
+  std::vector<std::string> warnings;
   std::vector<Parameter> parameters;
   std::vector<std::vector<double>> correlation;  ///< of the estimates, row by row
   std::vector<double> singular_values;           ///< of the scaled sensitivities, descending

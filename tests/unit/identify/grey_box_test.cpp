@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include "momenta/common/error.hpp"
+#include "momenta/common/number_text.hpp"
 #include "momenta/identify/grey_box.hpp"
 #include "momenta/identify/identification_file.hpp"
 #include "momenta/io/file_template.hpp"
@@ -164,6 +165,7 @@ TEST(GreyBoxFit, WhereTheCostIsQuadraticTheProfileIsTheFisherInterval) {
   GreyBoxProblem problem = cruise_problem(cruise_log(1000.0, 50.0, 60, 60.0, 0.05, rng), 0.05);
   const GreyBoxEstimate fisher = fit_grey_box(problem);
   EXPECT_EQ(fisher.profiled, (std::vector<bool>{false, false}));
+  EXPECT_TRUE(fisher.warnings.empty()) << fisher.warnings[0];  // 60 s, three time constants
   EXPECT_LT(fisher.not_quadratic.maxCoeff(), 0.01);
   EXPECT_EQ(fisher.profile_fits, 0);
   problem.settings.profile = GreyBoxSettings::Profile::always;
@@ -194,6 +196,13 @@ TEST(GreyBoxFit, AProfileTheDataDoNotBoundSaysSo) {
   ASSERT_EQ(e.interval_notes.size(), 1u);
   EXPECT_THAT(e.interval_notes[0],
               HasSubstr("; the data do not bound it below: its profile stays under q² down to 0"));
+  // Why: the log lasts 4 s of a car whose only time scale is m/b = 1000/b̂ s (its speed's mode;
+  // its position's λ = 0 drifts and is no time scale): warned of, at the estimate.
+  ASSERT_EQ(e.warnings.size(), 1u);
+  EXPECT_THAT(e.warnings[0], HasSubstr(": the log lasts 4 s, shorter than the model's slowest "
+                                       "time scale 1/|λ| = "));
+  EXPECT_THAT(e.warnings[0],
+              HasSubstr(fmt::format("λ = {} 1/s", number_text(-e.value[0] / 1000.0, 4))));
 
   // Estimated on either sign, b's profile runs into values the model refuses (a negative
   // damping): said so, the end the last value the fits reached.
@@ -585,6 +594,35 @@ TEST(GreyBoxFit, AnUnknownSignalOrChannelIsNamedWithItsExperiment) {
         }
       },
       InvalidArgument);
+}
+
+// The bundled drive's first 4 s (examples/identification/cruise_control_log.csv, 9 rows) with
+// both m and b free and the noise estimated: b's profile runs to values where the car's time
+// constant m/b is microseconds. Those runs stop at the budget of steps the fit sets from its
+// first run, and their profile fits count as failed (before the budget, one such run took
+// millions of steps and the fit hours); the fit ends, b not bounded above, the short log warned of.
+TEST_F(IdentificationFile, RunsAtValuesThatMakeTheModelStiffStopAtTheirBudget) {
+  std::ifstream full("examples/identification/cruise_control_log.csv");
+  std::ofstream head(dir_ / "log.csv");
+  std::string line;
+  for (int i = 0; i < 10 && std::getline(full, line); ++i) head << line << "\n";
+  head.close();
+  std::ofstream(dir_ / "fit.yaml")
+      << model() +
+             "parameters:\n"
+             "  - {name: m, path: bodies.car.mass, guess: 1500, lower: 100}\n"
+             "  - {name: b, path: joints.road.damping, guess: 20}\n"
+             "experiments:\n"
+             "  - name: drive\n"
+             "    data: log.csv\n"
+             "    inputs: [{column: force, signal: u}]\n"
+             "    outputs: [{column: speed, channel: speed}]\n";
+  const GreyBoxEstimate e = fit_grey_box(read_identification_file(dir_ / "fit.yaml"));
+  EXPECT_TRUE(e.converged) << e.termination;
+  EXPECT_TRUE(e.profiled[1] && !e.upper_bounded[1]);
+  ASSERT_EQ(e.warnings.size(), 1u);
+  EXPECT_THAT(e.warnings[0], HasSubstr("experiment 'drive' ("));
+  EXPECT_THAT(e.warnings[0], HasSubstr("): the log lasts 4 s, shorter than"));
 }
 
 }  // namespace

@@ -155,6 +155,32 @@ TEST(TrajectorySensitivities, RefuseModelsOutsideTheirScope) {
   EXPECT_THROW(ChannelSet(four_bar.model, four_bar.outputs, {}), InvalidArgument);
 }
 
+// A run past its budget of steps stops, named: the cruise car with a damper of 10⁸ N·s/m has a
+// time constant of 10 µs, which dopri5 (explicit) resolves with ~10⁵ steps a second of it — the
+// budget of 500 stops it within the first 5 ms of the minute, with or without sensitivities. At
+// the file's 50 N·s/m the same budget is plenty (the minute takes 143 steps).
+TEST(TrajectorySensitivities, ARunPastItsBudgetOfStepsStops) {
+  const FileFamily family{io::ModelTemplate("examples/cruise_control.yaml"),
+                          {"bodies.car.mass", "joints.road.damping"}};
+  const ChannelSet channels(family.file.nominal().model, family.file.nominal().outputs, {"speed"});
+  const VecX times = VecX::LinSpaced(121, 0.0, 60.0);
+  SensitivityOptions options;
+  options.max_steps = 500;
+  VecX p(2);
+  p << 1000.0, 50.0;
+  EXPECT_LT(sample_outputs(std::cref(family), p, channels, times, true, options).steps, 200);
+  p[1] = 1e8;
+  for (const bool sensitivities : {false, true}) {
+    try {
+      sample_outputs(std::cref(family), p, channels, times, sensitivities, options);
+      FAIL() << "a run of 10⁸ N·s/m finished within 500 steps";
+    } catch (const NumericalError& e) {
+      EXPECT_THAT(e.what(), HasSubstr("the run took more than 500 steps by t = "));
+      EXPECT_THAT(e.what(), HasSubstr(" s of 60 s: the model is far stiffer or faster"));
+    }
+  }
+}
+
 TEST(TrajectorySensitivities, SampleTimesMustBeEvenlySpaced) {
   VecX times(4);
   times << 0.0, 0.1, 0.25, 0.3;
