@@ -95,10 +95,6 @@ class SensitivitySystem final : public integrate::SecondOrderSystem {
     da_dp_.resize(n_);
     da_dq_.resize(n_, n_);
     da_dv_.resize(n_, n_);
-    for (int i = 0; i < n_; ++i) {
-      if (!nominal.model.joint(nominal.model.joint_of_v(i)).is_prescribed()) continue;
-      prescribed_.push_back(i);
-    }
   }
 
   int nq() const override { return n_ * (1 + np_); }
@@ -131,8 +127,7 @@ class SensitivitySystem final : public integrate::SecondOrderSystem {
         r_ *= scales_[i] / forward_steps_[i];
       }
       derivatives_.acceleration_change(r_, da_dp_);
-      out += da_dp_;
-      for (const int r : prescribed_) out[r] = 0.0;
+      out += da_dp_;  // zero on prescribed coordinates, as da_dq_'s and da_dv_'s rows
     }
     evaluations_ += 1 + (central_ ? 2L : 1L) * np_;
   }
@@ -173,7 +168,6 @@ class SensitivitySystem final : public integrate::SecondOrderSystem {
   const VecX& scales_;
   analysis::AccelerationDerivatives derivatives_;
   int n_, np_;
-  std::vector<int> prescribed_;
   VecX q_, v_, a_, r_, da_dp_;
   MatX da_dq_, da_dv_;
   long evaluations_ = 0;

@@ -30,6 +30,7 @@ struct Group {
 
 // A column the run did not record: derived from its rows for the plots alone.
 struct DerivedColumn {
+  const model::Joint* joint = nullptr;  // whose turning it is
   std::string name;
   std::vector<double> values;  // one per row
 };
@@ -71,8 +72,8 @@ std::vector<DerivedColumn> euler_angle_columns(const model::Model& model,
     if (at < 0) continue;
     const std::size_t qw = 1 + j.q_index + at;         // its qw's column (column 0 is time)
     const std::size_t w = 1 + model.nq() + j.v_index;  // its ω_JJ'_J' (rotation first)
-    DerivedColumn phi{j.name + ".precession φ", {}}, theta{j.name + ".nutation θ", {}},
-        psi{j.name + ".spin ψ", {}};
+    DerivedColumn phi{&j, j.name + ".precession φ", {}}, theta{&j, j.name + ".nutation θ", {}},
+        psi{&j, j.name + ".spin ψ", {}};
     Vec3 last_rates = Vec3::Zero();
     for (std::size_t r = 0; r < rows.size(); ++r) {
       const std::vector<double>& row = rows[r];
@@ -225,16 +226,14 @@ json plots_json(const SimulationRun& run) {
   // The Euler angles first, two plots per joint; the quaternions' components then hidden.
   std::vector<Group> plotted;
   for (std::size_t k = 0; k < derived.size(); k += 3) {
-    const model::Joint& j = *std::find_if(
-        model.joints().begin(), model.joints().end(),
-        [&](const model::Joint& joint) { return derived[k].name.starts_with(joint.name + "."); });
+    const std::string& body = derived[k].joint->child;
     const int c = recorded + static_cast<int>(k);
     // The spin apart: a top's ψ runs to thousands of radians beside a precession of tens.
-    plotted.push_back({j.child + "'s precession φ and nutation θ (ZXZ Euler angles, rad)",
+    plotted.push_back({body + "'s precession φ and nutation θ (ZXZ Euler angles, rad)",
                        "rad",
                        false,
                        {c, c + 1}});
-    plotted.push_back({j.child + "'s spin ψ (ZXZ Euler angle, rad)", "rad", false, {c + 2}});
+    plotted.push_back({body + "'s spin ψ (ZXZ Euler angle, rad)", "rad", false, {c + 2}});
   }
   for (Group& g : group_columns(*run.file, run.columns, run.units)) {
     g.hidden = g.title.starts_with("Quaternion components");

@@ -351,8 +351,7 @@ const VecX& MultibodySystem::residual(double t, const VecX& q, const VecX& v, co
         "the unbalanced generalized force of a model with constraints: their forces are not "
         "known without its accelerations");
   }
-  const std::span<const Vec6> f_ext =
-      apply_loads(t, q, v, t >= step_end_ ? model::Limit::left : model::Limit::right);
+  const std::span<const Vec6> f_ext = apply_loads(t, q, v, limit_at(t));
   residual_ = vdot;
   for (int i = 0; i < model_.nv(); ++i) {
     if (hybrid_mask_[static_cast<std::size_t>(model_.joint_of_v(i))]) {
@@ -370,7 +369,7 @@ const VecX& MultibodySystem::residual(double t, const VecX& q, const VecX& v, co
 void MultibodySystem::acceleration(double t, const VecX& q, const VecX& v, VecX& vdot) {
   // At the end of the announced step the inputs are taken from the left: the step integrated
   // them over the interval that ends there (see begin_step).
-  vdot = compute(t, q, v, t >= step_end_ ? model::Limit::left : model::Limit::right);
+  vdot = compute(t, q, v, limit_at(t));
 }
 
 double MultibodySystem::next_discontinuity(double t) const {

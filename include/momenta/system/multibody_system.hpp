@@ -219,13 +219,18 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   const VecX& solve(double t, const VecX& q, const VecX& v, model::Limit limit);
   // Adds each sliding contact's friction −μk N ŝ to f_ext_ (needs data_'s poses and velocities).
   void add_sliding_friction();
-  // compute() up to the constraints: signals, the prescribed state, force elements and the
-  // unconstrained forward dynamics into data_ — only aba_articulate's passes where `factors_only`
-  // (the constraint solver finishes aba with the constraint forces).
+  // The side of a breakpoint the signals are sampled from at t: the left at the end of the
+  // announced step (see begin_step), else the right.
+  model::Limit limit_at(double t) const {
+    return t >= step_end_ ? model::Limit::left : model::Limit::right;
+  }
   // Samples the signals at t, applies the prescribed and held coordinates to q_, v_ (their
   // accelerations to vdot_prescribed_) and evaluates the force elements into tau_elements_ and
   // f_ext_. Returns the wrenches the dynamics should take: none when no element acts on bodies.
   std::span<const Vec6> apply_loads(double t, const VecX& q, const VecX& v, model::Limit limit);
+  // compute() up to the constraints: apply_loads, then the unconstrained forward dynamics into
+  // data_ — only aba_articulate's passes where `factors_only` (the constraint solver finishes aba
+  // with the constraint forces).
   void free_dynamics(double t, const VecX& q, const VecX& v, model::Limit limit,
                      bool factors_only = false);
   // At a singular configuration (the constraint rows lose rank: a dead point or a bifurcation

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Cholesky>
 #include <gtest/gtest.h>
+#include <Eigen/Cholesky>
 
 #include "momenta/common/error.hpp"
 #include "momenta/dynamics/crba.hpp"
