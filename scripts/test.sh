@@ -18,6 +18,6 @@ if [[ "${1:-}" == "--sanitize" ]]; then
     -DMOMENTA_BUILD_BENCHMARKS=OFF -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-Og -g1 -DNDEBUG"
   ctest --test-dir build-sanitize --output-on-failure --parallel "$(nproc)"
 else
-  scripts/build.sh build -DMOMENTA_WARNINGS_AS_ERRORS=ON -DMOMENTA_BUILD_PYTHON=ON
+  scripts/build.sh build -DMOMENTA_WARNINGS_AS_ERRORS=ON -DMOMENTA_BUILD_PYTHON=ON -DMOMENTA_WASM_ENGINE=ON
   ctest --test-dir build --output-on-failure --parallel "$(nproc)"
 fi

@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "momenta/common/chars_to_double.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/io/yaml_reader.hpp"
 #include "momenta/model/event_spec.hpp"
@@ -21,7 +22,7 @@ namespace {
 std::optional<double> parse_double(const std::string& text) {
   double value = 0.0;
   const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  const auto [ptr, ec] = chars_to_double(text.data(), end, value);
   if (ptr != end || text.empty()) return std::nullopt;
   if (ec == std::errc::result_out_of_range) return std::numeric_limits<double>::infinity();
   if (ec != std::errc()) return std::nullopt;

@@ -6,6 +6,7 @@
 
 #include "momenta/common/error.hpp"
 #include "momenta/integrate/runge_kutta.hpp"
+#include "momenta/math/portable_pow.hpp"
 
 namespace momenta::integrate {
 
@@ -98,7 +99,8 @@ double DormandPrince5::initial_step(SecondOrderSystem& system, const State& stat
   ++statistics_.evaluations;
   const double d2 = rms(v_euler - state.v, a1 - a0) / h0;
   const double dmax = std::max(d1, d2);
-  const double h1 = dmax <= 1e-15 ? std::max(1e-6, h0 * 1e-3) : std::pow(0.01 / dmax, 1.0 / 5.0);
+  const double h1 =
+      dmax <= 1e-15 ? std::max(1e-6, h0 * 1e-3) : math::portable_pow(0.01 / dmax, 1.0 / 5.0);
   const double h = std::min(100.0 * h0, h1);
   // Scales that overflow (a state of 1e200) leave no estimate: start small and let the error
   // control grow the step.
@@ -181,7 +183,7 @@ double DormandPrince5::step(SecondOrderSystem& system, State& state, double h_ma
     }
     system.configuration_scale(stages_.q, scale_q1_);
     const double error = error_norm(state, v1_);
-    const double factor11 = std::pow(error, kExponent);
+    const double factor11 = math::portable_pow(error, kExponent);
     if (!std::isfinite(error)) {
       // A non-finite stage: retry much smaller; the caller sees the failure if it persists.
       h_ = h * kMinFactor;
@@ -228,7 +230,7 @@ double DormandPrince5::step(SecondOrderSystem& system, State& state, double h_ma
       have_last_acceleration_ = false;
     }
     // PI control of the next step; no growth right after a rejection.
-    double factor = factor11 / std::pow(previous_error_, kBeta);
+    double factor = factor11 / math::portable_pow(previous_error_, kBeta);
     factor = std::clamp(factor / kSafety, 1.0 / kMaxFactor, 1.0 / kMinFactor);
     double h_next = h / factor;
     if (last_rejected_) h_next = std::min(h_next, h);

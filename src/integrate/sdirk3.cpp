@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "momenta/common/error.hpp"
+#include "momenta/math/portable_pow.hpp"
 
 namespace momenta::integrate {
 
@@ -153,7 +154,7 @@ double Sdirk3::step(SecondOrderSystem& system, State& state, double h) {
   slowest_contraction_ = 0.0;
   if (factored_h_ != h) factor(h);
   // The first iteration of a step trusts the last contraction rate, never more than √ that.
-  eta_ = std::pow(std::max(eta_, std::numeric_limits<double>::epsilon()), 0.8);
+  eta_ = math::portable_pow(std::max(eta_, std::numeric_limits<double>::epsilon()), 0.8);
   non_finite_at_ = std::numeric_limits<double>::quiet_NaN();
   if (!solve_stages(system, state, h)) {
     // A stale Jacobian, or a step too large: retry once with a fresh one.

@@ -1,4 +1,5 @@
 #include "momenta/model/event_spec.hpp"
+#include "momenta/common/chars_to_double.hpp"
 
 #include <charconv>
 #include <cmath>
@@ -28,7 +29,7 @@ std::optional<double> parse_number(std::string_view text) {
   if (text.starts_with('+')) text.remove_prefix(1);
   double value = 0.0;
   const char* end = text.data() + text.size();
-  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  const auto [stop, error] = chars_to_double(text.data(), end, value);
   if (text.empty() || error != std::errc() || stop != end) return std::nullopt;
   return value;
 }

@@ -14,29 +14,6 @@
 namespace momenta::report {
 namespace detail {
 
-std::string escape_html(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      default:
-        out += c;
-    }
-  }
-  return out;
-}
-
 // Defined in the generated report_bundle.cpp.
 extern const char* const kReportScript;
 extern const char* const kReportStyle;

@@ -41,6 +41,29 @@ static_assert(std::endian::native == std::endian::little, "the page reads little
 
 }  // namespace
 
+std::string escape_html(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
 std::string encode_f64(std::span<const double> values) {
   return "f64:" +
          base64(reinterpret_cast<const unsigned char*>(values.data()), values.size_bytes());

@@ -19,6 +19,12 @@ inline constexpr int kMaxBodyPoses = 12000;
 /// first and last time and each column's minimum and maximum (the envelope a plot shows).
 inline constexpr int kPlotBuckets = 1000;
 
+/// A simulation report's whole data, as the page embeds it: {kind: "simulation", summary, scene,
+/// frames, plots, linear, equations, campbell, diagrams, loops}. Throws InvalidArgument for a run
+/// with no file, no rows, or units that do not match its columns, and for `linear` as
+/// simulation_report_html says.
+json simulation_data(const SimulationRun& run, const LinearSettings& linear);
+
 /// Free-body diagrams: at this many instants of the run (evenly spread rows, the first and last
 /// among them), for the first kMaxDiagramBodies bodies (each picture is some 10 kB).
 inline constexpr int kDiagramInstants = 5;

@@ -1,4 +1,5 @@
 #include "momenta/sweep/results_file.hpp"
+#include "momenta/common/chars_to_double.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -310,7 +311,7 @@ ResultsColumns read_result_columns(const std::filesystem::path& path,
     for (std::size_t c = 0; c < indices.size(); ++c) {
       const std::string& cell = fields[indices[c]];
       double value = std::numeric_limits<double>::quiet_NaN();
-      std::from_chars(cell.data(), cell.data() + cell.size(), value);
+      chars_to_double(cell.data(), cell.data() + cell.size(), value);
       result.values[c].push_back(value);
     }
   }

@@ -56,7 +56,7 @@ long count_runs(const SweepSpec& spec) {
       long runs = 1;
       for (const Parameter& p : spec.parameters) {
         const auto n = static_cast<long>(grid_of(p).size());
-        if (runs > (1L << 40) / n) {
+        if (runs > (1LL << 40) / n) {
           throw InvalidArgument("the factorial design has more than 2^40 runs");
         }
         runs *= n;

@@ -10,9 +10,9 @@
 // the C library's over 10⁶ angles and at the multiples of π/2). Angles beyond 2²⁰ π/2 (1.6e6
 // rad), and non-finite ones, go to the C library.
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <utility>
 
 namespace momenta::math {
@@ -42,13 +42,24 @@ inline double kernel_cos(double x, double y) {
   return one_minus_hz + (((1.0 - one_minus_hz) - hz) + (z * r - x * y));
 }
 
-inline int exponent_of(double x) {
-  return static_cast<int>((std::bit_cast<std::uint64_t>(x) >> 52) & 0x7ff);
+// The bits of a double and back, by memcpy (compiled to a move): std::bit_cast is missing from
+// the libc++ of emscripten 3.1.6, which compiles the report's in-page engine (wasm/).
+inline std::uint64_t bits_of(double x) {
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  return bits;
 }
 
+inline double double_of(std::uint64_t bits) {
+  double x;
+  std::memcpy(&x, &bits, sizeof x);
+  return x;
+}
+
+inline int exponent_of(double x) { return static_cast<int>((bits_of(x) >> 52) & 0x7ff); }
+
 inline double with_sign_flipped_if(bool flip, double x) {
-  return std::bit_cast<double>(std::bit_cast<std::uint64_t>(x) ^
-                               (static_cast<std::uint64_t>(flip) << 63));
+  return double_of(bits_of(x) ^ (static_cast<std::uint64_t>(flip) << 63));
 }
 
 }  // namespace detail

@@ -74,6 +74,10 @@ SimulationRun simulate_for_report(const io::ModelFile& file, simulate::Simulatio
 /// rows.
 std::string simulation_report_html(const SimulationRun& run, const LinearSettings& linear = {});
 
+/// The data simulation_report_html embeds in its page, as JSON text: what the report's in-page
+/// engine (wasm/) computes again for a changed model, and what its tests compare with the page's.
+std::string simulation_report_json(const SimulationRun& run, const LinearSettings& linear = {});
+
 /// The report page of a part: the composite with its centre of mass, principal axes and
 /// equivalent inertia ellipsoid drawn over its parts (holes shown as holes), the table of parts,
 /// and the inertia tensor about the centre of mass and, when given, about the point `about`

@@ -1,6 +1,6 @@
 #pragma once
 // The fields of a CSV line as momenta's readers take them (private to src/io): trimmed of
-// blanks, numbers finite and whole (from_chars: no trailing text, no locale).
+// blanks, numbers finite and whole (chars_to_double: no trailing text, no locale).
 
 #include <algorithm>
 #include <charconv>
@@ -8,6 +8,8 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "momenta/common/chars_to_double.hpp"
 
 namespace momenta::io::csv {
 
@@ -21,7 +23,7 @@ inline std::string trim(std::string_view s) {
 /// True, with `value`, where `text` is one finite number and nothing else.
 inline bool parse_number(const std::string& text, double& value) {
   const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  const auto [ptr, ec] = chars_to_double(text.data(), end, value);
   return ec == std::errc() && ptr == end && std::isfinite(value);
 }
 

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "momenta/common/chars_to_double.hpp"
 #include "momenta/common/error.hpp"
 
 namespace momenta::io::detail {
@@ -58,9 +59,9 @@ class Tokens {
   double number(std::string_view token) const {
     double value = 0.0;
     const char* first = token.data();
-    if (!token.empty() && token.front() == '+') ++first;  // from_chars takes no '+'
+    if (!token.empty() && token.front() == '+') ++first;  // chars_to_double takes no '+'
     const char* last = token.data() + token.size();
-    const auto [ptr, ec] = std::from_chars(first, last, value);
+    const auto [ptr, ec] = chars_to_double(first, last, value);
     if (token.empty() || ptr != last || ec == std::errc::invalid_argument) {
       fail(fmt::format("expected a number, got '{}'", token));
     }

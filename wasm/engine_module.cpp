@@ -1,0 +1,159 @@
+// The report's in-page engine: momenta's model-file reader, dynamics, integrators and
+// simulation compiled to WebAssembly (emscripten, embind), for a page that re-simulates when a
+// reader moves a slider (docs/report.md, "The live report"). A front end like the command line
+// and the Python module: it reads a model file as they do (the same ModelTemplate a sweep uses
+// for its numbers by path) and runs it as `momenta simulate` does; nothing here is mechanics.
+//
+// From JavaScript (the module built as one file, the wasm inlined: wasm/CMakeLists.txt):
+//
+//     const engine = await createMomentaEngine();
+//     const run = engine.simulate(modelText, "double_pendulum.yaml",
+//                                 [{path: "bodies.upper.mass", value: 1.5}]);
+//     run.columns        // ["time", "shoulder.angle", ...], as the CSV's header
+//     run.rows           // Float64Array, row after row (columns.length values each)
+//     run.summary        // the text `momenta simulate` prints on stderr
+//     JSON.parse(engine.reportData(modelText, "double_pendulum.yaml", overrides))
+//                        // the data `momenta report` embeds in its page (less its equations)
+//     engine.numberAt(modelText, "double_pendulum.yaml", "bodies.upper.mass")   // 1 (or null)
+//     engine.textWith(modelText, "double_pendulum.yaml", overrides)  // the file, numbers changed
+//
+// Errors are thrown as JavaScript Errors carrying momenta's message ("double_pendulum.yaml:12:5:
+// bodies[0].mass: must be ≥ 0, got -1").
+
+#include <emscripten/bind.h>
+#include <emscripten/val.h>
+
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "momenta/common/error.hpp"
+#include "momenta/frontend/model_loading.hpp"
+#include "momenta/io/file_template.hpp"
+#include "momenta/report/report.hpp"
+#include "momenta/simulate/run_request.hpp"
+#include "momenta/simulate/simulation.hpp"
+
+namespace {
+
+using emscripten::val;
+using namespace momenta;
+
+// The page's model file, written to emscripten's in-memory file system under its own name, in
+// the working folder, so that the reader's messages name it as the command line does.
+std::filesystem::path written_model(const std::string& text, const std::string& file_name) {
+  const std::filesystem::path directory = "/model";
+  std::filesystem::create_directories(directory);
+  std::filesystem::current_path(directory);
+  const std::filesystem::path path = std::filesystem::path(file_name).filename();
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
+  return path;
+}
+
+std::vector<io::NumberOverride> overrides_of(const val& list) {
+  std::vector<io::NumberOverride> overrides;
+  const auto count = list["length"].as<unsigned>();
+  for (unsigned i = 0; i < count; ++i) {
+    const val item = list[i];
+    overrides.push_back({item["path"].as<std::string>(), item["value"].as<double>()});
+  }
+  return overrides;
+}
+
+// A C++ exception as a JavaScript Error with its message.
+[[noreturn]] void throw_to_javascript(const std::exception& e) {
+  val::global("Error").new_(std::string(e.what())).throw_();
+}
+
+val simulate_model(const std::string& text, const std::string& file_name, const val& overrides) {
+  try {
+    const io::ModelTemplate model_template(written_model(text, file_name));
+    const io::ModelFile file = model_template.with(overrides_of(overrides));
+    frontend::accept_model(file);
+    const simulate::ResolvedRun run = simulate::resolve_run({}, file.simulation);
+    simulate::Simulation simulation(file.model, file.outputs, run.options);
+    simulate::TableSink table;
+    const simulate::SimulationSummary summary = simulation.run(table);
+
+    std::vector<double> flat;
+    flat.reserve(table.rows.size() * table.columns.size());
+    for (const std::vector<double>& row : table.rows)
+      flat.insert(flat.end(), row.begin(), row.end());
+    val result = val::object();
+    val columns = val::array();
+    for (const std::string& name : table.columns) columns.call<void>("push", name);
+    result.set("columns", columns);
+    // A copy the page keeps: the view over the module's memory would move as it grows.
+    result.set("rows", val::global("Float64Array")
+                           .new_(emscripten::typed_memory_view(flat.size(), flat.data()))
+                           .call<val>("slice"));
+    result.set("integrator", summary.integrator);
+    result.set("relativeTolerance", run.options.tolerances.relative);
+    result.set("absoluteTolerance", run.options.tolerances.absolute);
+    result.set("tEnd", summary.t_end);
+    result.set("summary", simulate::format_summary(summary));
+    if (!run.thinning_note.empty()) result.set("thinningNote", run.thinning_note);
+    return result;
+  } catch (const std::exception& e) {
+    throw_to_javascript(e);
+  }
+}
+
+// The data of the report `momenta report FILE` writes, as JSON text, for the file with the
+// overrides: the page redraws every panel from it (the equations stay the native page's).
+std::string report_data(const std::string& text, const std::string& file_name,
+                        const val& overrides) {
+  try {
+    const io::ModelTemplate model_template(written_model(text, file_name));
+    const io::ModelFile file = model_template.with(overrides_of(overrides));
+    frontend::accept_model(file);
+    simulate::RunRequest request;
+    request.reactions = true;
+    const simulate::ResolvedRun run = simulate::resolve_run(request, file.simulation);
+    simulate::Simulation simulation(file.model, file.outputs, run.options);
+    simulate::TableSink table;
+    std::string stop_reason;
+    simulate::SimulationSummary summary;
+    try {
+      summary = simulation.run(table);
+    } catch (const NumericalError& e) {
+      stop_reason = e.what();  // the rows up to the failure, the reason at the top
+    }
+    const report::SimulationRun report_run =
+        report::make_run(file, simulation, std::move(table), summary, stop_reason);
+    if (report_run.rows.empty()) throw NumericalError(stop_reason);
+    return report::simulation_report_json(report_run);
+  } catch (const std::exception& e) {
+    throw_to_javascript(e);
+  }
+}
+
+val number_at(const std::string& text, const std::string& file_name, const std::string& path) {
+  try {
+    const io::ModelTemplate model_template(written_model(text, file_name));
+    const std::optional<double> number = model_template.number_at(path);
+    return number ? val(*number) : val::null();
+  } catch (const std::exception& e) {
+    throw_to_javascript(e);
+  }
+}
+
+std::string text_with(const std::string& text, const std::string& file_name, const val& overrides) {
+  try {
+    const io::ModelTemplate model_template(written_model(text, file_name));
+    return model_template.text_with(overrides_of(overrides));
+  } catch (const std::exception& e) {
+    throw_to_javascript(e);
+  }
+}
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(momenta_engine) {
+  emscripten::function("simulate", &simulate_model);
+  emscripten::function("reportData", &report_data);
+  emscripten::function("numberAt", &number_at);
+  emscripten::function("textWith", &text_with);
+}
