@@ -17,6 +17,10 @@ namespace detail {
 // Defined in the generated report_bundle.cpp.
 extern const char* const kReportScript;
 extern const char* const kReportStyle;
+// Defined in the generated engine_bundle.cpp, or empty (engine_absent.cpp): the module's script,
+// and its wasm gzipped, in base64.
+extern const char* const kEngineScript;
+extern const char* const kEngineWasm;
 
 namespace {
 
@@ -56,16 +60,25 @@ constexpr std::string_view kEmbeddedLibrariesNotice =
 
 }  // namespace
 
-std::string html_page(const std::string& title, const json& data) {
+bool engine_embedded() { return kEngineScript[0] != '\0'; }
+
+std::string html_page(const std::string& title, const json& data, bool with_engine) {
+  const std::string engine =
+      with_engine && engine_embedded()
+          ? fmt::format(
+                "<script type=\"application/gzip;base64\" id=\"momenta-engine\">{}</script>\n"
+                "<script>{}</script>\n",
+                kEngineWasm, script_safe(kEngineScript, "</script"))
+          : std::string();
   return fmt::format(
       "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<!--\n{}\n-->\n"
       "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
       "<meta name=\"generator\" content=\"momenta\">\n<title>{}</title>\n<style>{}</style>\n"
       "</head>\n<body>\n<div id=\"app\"></div>\n"
       "<script type=\"application/json\" id=\"momenta-data\">{}</script>\n"
-      "<script>{}</script>\n</body>\n</html>\n",
+      "{}<script>{}</script>\n</body>\n</html>\n",
       kEmbeddedLibrariesNotice, escape_html(title), kReportStyle,
-      script_safe(data.dump(-1, ' ', false, json::error_handler_t::replace), "</"),
+      script_safe(data.dump(-1, ' ', false, json::error_handler_t::replace), "</"), engine,
       script_safe(kReportScript, "</script"));
 }
 

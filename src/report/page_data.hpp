@@ -45,6 +45,10 @@ std::vector<Vec3> part_outline_points(const io::PartSummary& part);
 std::string escape_html(const std::string& text);
 
 /// The HTML page: `data` (kind "simulation" or "inertia") with the embedded front-end.
-std::string html_page(const std::string& title, const json& data);
+std::string html_page(const std::string& title, const json& data, bool with_engine = false);
+
+/// Whether this build embeds the in-page engine (MOMENTA_WASM_ENGINE): html_page's `with_engine`
+/// then inlines it before the page's script, which finds it as window.createMomentaEngine.
+bool engine_embedded();
 
 }  // namespace momenta::report::detail

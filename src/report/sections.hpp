@@ -25,6 +25,15 @@ inline constexpr int kPlotBuckets = 1000;
 /// simulation_report_html says.
 json simulation_data(const SimulationRun& run, const LinearSettings& linear);
 
+/// The live report's controls at most (the first in the file's order).
+inline constexpr std::size_t kMaxLiveParameters = 24;
+
+/// What the live report needs beside a run's data (live_section.cpp): {file (its name), text
+/// (the model file as written), parameters: [{path, value, line, unit, min, max, scale ("log" or
+/// "linear")}]} — the masses and body dimensions, the springs' and dampers' constants, the
+/// joints' initial coordinates and rates and the run's duration, as the file writes them.
+json live_json(const io::ModelFile& file);
+
 /// Free-body diagrams: at this many instants of the run (evenly spread rows, the first and last
 /// among them), for the first kMaxDiagramBodies bodies (each picture is some 10 kB).
 inline constexpr int kDiagramInstants = 5;

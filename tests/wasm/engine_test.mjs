@@ -35,8 +35,11 @@ import path from 'node:path';
 const require = createRequire(import.meta.url);
 const source = process.env.MOMENTA_SOURCE_DIR;
 const cli = process.env.MOMENTA_CLI;
+// The module's script and its wasm beside it (the page inlines both; Node.js is handed the wasm).
 const createMomentaEngine = require(process.env.MOMENTA_WASM_ENGINE);
-const engine = await createMomentaEngine();
+const engine = await createMomentaEngine({
+  wasmBinary: readFileSync(process.env.MOMENTA_WASM_ENGINE.replace(/\.js$/, '.wasm')),
+});
 const scratch = mkdtempSync(path.join(tmpdir(), 'momenta-wasm-'));
 
 const kBitIdentical = new Set([
@@ -227,6 +230,7 @@ function withoutRunSpecifics(data) {
   delete copy.summary.wall_seconds;
   delete copy.summary.file;
   delete copy.equations;
+  delete copy.live;  // the page's controls (the native page's alone)
   return copy;
 }
 

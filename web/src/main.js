@@ -11,6 +11,7 @@ import { greyBoxPage } from './grey_box.js';
 import { identificationPage } from './identification.js';
 import { inertiaPage } from './inertia.js';
 import { linearSection } from './linear.js';
+import { liveSection, loadEngine, overridesFromHash } from './live.js';
 import { loopsSection } from './loops.js';
 import { Motion } from './motion.js';
 import { plotsSection } from './plots.js';
@@ -38,8 +39,10 @@ function simulationPage(app, data) {
   app.append(diagrams.section);
   // Every animation frame advances the clock; the view is drawn only when what it shows changed.
   let frames = 0;
+  let disposed = false;
   const draw = (now) => { if (motion.render(now)) frames++; };
   const loop = (now) => {
+    if (disposed) return;
     timeline.tick(now);
     draw(now);
     requestAnimationFrame(loop);
@@ -47,6 +50,12 @@ function simulationPage(app, data) {
   requestAnimationFrame(loop);
   return {
     kind: 'simulation',
+    // Stops the clock and lets the view's WebGL context go (the live page draws a new one).
+    dispose: () => {
+      disposed = true;
+      motion.viewer.renderer?.dispose();
+      motion.viewer.renderer?.forceContextLoss();
+    },
     setTime: (t) => { motion.playMode(null); timeline.set(t); draw(performance.now()); },
     time: () => timeline.time,
     frameTimes: () => Array.from(motion.time),
@@ -101,12 +110,78 @@ function simulationPage(app, data) {
   };
 }
 
+// A simulation page with its engine (docs/report.md, "The live report"): the live panel on top,
+// the run's panels below it, drawn again from the engine's data after each change. The hook the
+// tests use is the current run's, with `live` besides.
+function livePage(app, data) {
+  const engine = loadEngine();
+  const run = element('div', { id: 'run' });
+  let current = null;
+  const show = (pageData) => {
+    current?.dispose();
+    run.replaceChildren();
+    current = simulationPage(run, pageData);
+  };
+  const { text, file } = data.live;
+  let lastMilliseconds = null;
+  const rerun = async (overrides) => {
+    const started = performance.now();
+    const list = Object.entries(overrides).map(([path, value]) => ({ path, value }));
+    const next = JSON.parse((await engine).reportData(text, file, list));
+    next.equations = data.equations;  // the native page's (the engine has no symbolic layer)
+    next.live = data.live;
+    show(next);
+    lastMilliseconds = performance.now() - started;
+    const s = next.summary;
+    return `${list.length ? `${list.length} number${list.length > 1 ? 's' : ''} changed` : 'the file as written'}: `
+      + `re-simulated ${s.t_end} s with ${s.integrator} in ${Math.round(lastMilliseconds)} ms in this page.`;
+  };
+  const download = async (overrides) => {
+    const list = Object.entries(overrides).map(([path, value]) => ({ path, value }));
+    const changed = (await engine).textWith(text, file, list);
+    const link = element('a', { href: URL.createObjectURL(new Blob([changed], { type: 'text/yaml' })), download: file });
+    link.click();
+    URL.revokeObjectURL(link.href);
+  };
+  const live = liveSection(data.live, rerun, download);
+  app.append(live.section, run);
+  show(data);
+  const fromHash = data.live.available ? overridesFromHash(location.hash, data.live.parameters) : {};
+  const ready = Object.keys(fromHash).length ? live.set(fromHash) : engine;
+  const liveHook = {
+    parameters: () => data.live.parameters ?? [],
+    overrides: () => live.overrides(),
+    set: (values) => live.set(values),
+    status: () => live.status(),
+    lastMilliseconds: () => lastMilliseconds,
+    ready: () => ready.then(() => true),
+    textWith: async (values) => (await engine).textWith(text, file,
+      Object.entries(values).map(([path, value]) => ({ path, value }))),
+    // The engine's run alone, without the report's data or the redraw (the benchmark's figure).
+    simulateMilliseconds: async (values) => {
+      const ready = await engine;
+      const started = performance.now();
+      ready.simulate(text, file, Object.entries(values).map(([path, value]) => ({ path, value })));
+      return performance.now() - started;
+    },
+  };
+  // What start() sets (ready, loadMilliseconds) is the page's own; everything else the current
+  // run's hook.
+  const hook = new Proxy({}, {
+    get: (own, key) => (key === 'live' ? liveHook : key in own ? own[key] : current[key]),
+    set: (own, key, value) => { own[key] = value; return true; },
+  });
+  return hook;
+}
+
 function start() {
   const app = document.getElementById('app');
   const started = performance.now();
   const data = readData();
   const pages = { inertia: inertiaPage, sweep: sweepPage, identification: identificationPage, 'grey-box': greyBoxPage };
-  const hook = (pages[data.kind] ?? simulationPage)(app, data);
+  const live = data.kind === 'simulation' && data.live && typeof window.createMomentaEngine === 'function'
+    && document.getElementById('momenta-engine') !== null;
+  const hook = live ? livePage(app, data) : (pages[data.kind] ?? simulationPage)(app, data);
   hook.loadMilliseconds = performance.now() - started;
   hook.ready = true;
   window.momentaReport = hook;

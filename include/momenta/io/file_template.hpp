@@ -38,6 +38,13 @@ struct NumberOverride {
   double value = 0.0;
 };
 
+/// One number written in a file: its path (as above), its value and its line (1-based).
+struct FileNumber {
+  std::string path;
+  double value = 0.0;
+  int line = 0;
+};
+
 /// A model file read once, from which models with numbers changed are made as often as needed,
 /// from any number of threads at once.
 class ModelTemplate {
@@ -48,6 +55,13 @@ class ModelTemplate {
   /// The file as it is.
   const ModelFile& nominal() const { return nominal_; }
   const std::filesystem::path& path() const { return path_; }
+  /// The file's text as read.
+  const std::string& text() const { return text_; }
+
+  /// Every number written in the file, in the file's order, each with the path that names it
+  /// (an item of a list by its `name` where it has one, else by its index; a vector's entries
+  /// by index: `bodies.body.position.2`).
+  std::vector<FileNumber> numbers() const;
 
   /// The number at `path` in the file, or nothing when the path's last key is absent (it would
   /// be created). Throws InvalidArgument for a path that leads nowhere — naming the segment, what

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <fstream>
 #include <mutex>
 #include <sstream>
@@ -119,6 +120,32 @@ std::optional<double> number_in(const YamlNode& document, const std::string& pat
   return target.node.as<double>();
 }
 
+// Appends every number under `node` (reached by `path`) to `out`, in the file's order.
+void collect_numbers(const YAML::Node& node, const std::string& path,
+                     std::vector<FileNumber>& out) {
+  const auto joined = [&](const std::string& segment) {
+    return path.empty() ? segment : path + "." + segment;
+  };
+  if (node.IsScalar()) {
+    double value = 0.0;
+    if (!path.empty() && YAML::convert<double>::decode(node, value) && std::isfinite(value)) {
+      out.push_back({path, value, node.Mark().line + 1});
+    }
+  } else if (node.IsMap()) {
+    for (const auto& item : node) collect_numbers(item.second, joined(item.first.Scalar()), out);
+  } else if (node.IsSequence()) {
+    std::size_t index = 0;
+    for (const YAML::Node& item : node) {
+      const YAML::Node name = item.IsMap() ? item["name"] : YAML::Node();
+      // By name where the name reads back as one (no dot; not taken for an index).
+      const bool named = name.IsDefined() && name.IsScalar() && !name.Scalar().empty() &&
+                         name.Scalar().find('.') == std::string::npos && !index_of(name.Scalar());
+      collect_numbers(item, joined(named ? name.Scalar() : std::to_string(index)), out);
+      ++index;
+    }
+  }
+}
+
 }  // namespace
 
 // Parsed copies of a file's text, lent to one caller at a time: a caller sets its numbers, reads
@@ -202,6 +229,12 @@ ModelTemplate::ModelTemplate(const std::filesystem::path& path)
 
 std::optional<double> ModelTemplate::number_at(const std::string& path) const {
   return number_in(document_, path);
+}
+
+std::vector<FileNumber> ModelTemplate::numbers() const {
+  std::vector<FileNumber> numbers;
+  collect_numbers(detail::YamlAccess::yaml(document_), "", numbers);
+  return numbers;
 }
 
 ModelFile ModelTemplate::with(std::span<const NumberOverride> overrides) const {

@@ -4,6 +4,9 @@
 
 #include "momenta/io/file_template.hpp"
 
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <variant>
@@ -42,6 +45,48 @@ TEST(FileTemplate, ValuesLandWhereTheirPathsSay) {
   EXPECT_EQ(changed.name, plain.name);
   // No change: the same model.
   EXPECT_EQ(suspension_stiffness(read_model_file_with(kQuarterCar, {})), 130000.0);
+}
+
+// Every number of every bundled model file, listed with its path: the path leads back to it
+// (number_at), and a change at that path changes that line of the text and no other.
+TEST(FileTemplate, ListsEveryNumberByAPathThatLeadsBackToIt) {
+  std::size_t listed = 0;
+  for (const char* folder : {"examples", "examples/constraints"}) {
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+      if (entry.path().extension() != ".yaml") continue;
+      SCOPED_TRACE(entry.path().string());
+      const ModelTemplate file(entry.path());
+      const std::vector<FileNumber> numbers = file.numbers();
+      ASSERT_FALSE(numbers.empty());
+      for (const FileNumber& n : numbers) {
+        EXPECT_EQ(file.number_at(n.path), n.value) << n.path;
+      }
+      // The last number changed: its line differs, every other line is kept.
+      const FileNumber& last = numbers.back();
+      const std::string changed =
+          file.text_with(std::vector<NumberOverride>{{last.path, last.value + 1.5}});
+      std::istringstream before(file.text()), after(changed);
+      std::string a, b;
+      for (int line = 1; std::getline(before, a) && std::getline(after, b); ++line) {
+        EXPECT_EQ(a == b, line != last.line) << last.path << " at line " << line;
+      }
+      listed += numbers.size();
+    }
+  }
+  EXPECT_GT(listed, 500u);
+}
+
+TEST(FileTemplate, NamesItemsByNameAndVectorsByIndex) {
+  const ModelTemplate file(kQuarterCar);
+  const std::vector<FileNumber> numbers = file.numbers();
+  const auto has = [&](const std::string& path, double value) {
+    return std::any_of(numbers.begin(), numbers.end(),
+                       [&](const FileNumber& n) { return n.path == path && n.value == value; });
+  };
+  EXPECT_TRUE(has("bodies.body.mass", 375.0));
+  EXPECT_TRUE(has("forces.suspension.stiffness", 130000.0));
+  EXPECT_TRUE(has("gravity.2", 0.0));
+  EXPECT_TRUE(has("simulation.duration", 2.0));
 }
 
 TEST(FileTemplate, PathsThatLeadNowhereAreRefused) {
