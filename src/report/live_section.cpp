@@ -86,11 +86,20 @@ std::optional<Control> joint_control(const model::Model& model, const std::vecto
   if (j < 0) return std::nullopt;
   const model::Joint& joint = model.joint(j);
   const std::string& key = at[2];
-  const int k = at.size() > 3 && is_index(at[3]) ? std::stoi(at[3]) : 0;
+  // A rotation given by its Euler angles (`q0: {euler: {sequence, angles_deg: [...]}}`).
+  if (key == "q0" && at.size() == 6 && is_index(at[5])) {
+    if (at[4] == "angles_deg") return about(value, 180.0, "deg");
+    if (at[4] == "angles") return about(value, std::numbers::pi, "rad");
+    return std::nullopt;
+  }
+  // Otherwise the number itself, or an entry of a list of them.
+  if (!(at.size() == 3 || (at.size() == 4 && is_index(at[3])))) return std::nullopt;
+  const int k = at.size() == 4 ? std::stoi(at[3]) : 0;
   if (key == "q0_deg") return about(value, 180.0, "deg");
   if (key == "v0_deg") return about(value, std::max(360.0, 2.0 * std::abs(value)), "deg/s");
   if (key == "q0" && joint.nq() > k) {
     const std::string unit = model::q_unit(model, joint.q_index + k);
+    if (unit == "1") return std::nullopt;  // a quaternion's component: no number to slide alone
     return about(value, unit == "rad" ? std::numbers::pi : std::max(1.0, 2.0 * std::abs(value)),
                  unit);
   }

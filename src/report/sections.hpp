@@ -31,7 +31,8 @@ inline constexpr std::size_t kMaxLiveParameters = 24;
 /// What the live report needs beside a run's data (live_section.cpp): {file (its name), text
 /// (the model file as written), parameters: [{path, value, line, unit, min, max, scale ("log" or
 /// "linear")}]} — the masses and body dimensions, the springs' and dampers' constants, the
-/// joints' initial coordinates and rates and the run's duration, as the file writes them.
+/// joints' initial coordinates (a rotation's Euler angles among them) and rates and the run's
+/// duration, as the file writes them.
 json live_json(const io::ModelFile& file);
 
 /// Free-body diagrams: at this many instants of the run (evenly spread rows, the first and last

@@ -249,3 +249,28 @@ for (const name of ['double_pendulum', 'quarter_car', 'cart_pendulum_lqr', 'slee
     assert.equal(page.plots.time, native.plots.time);
   });
 }
+
+// What the live page offers (src/report/live_section.cpp), read from the page the command line
+// writes: the heavy top's tilt by its Euler angles in degrees over ±180°, its spin in rad/s,
+// its mass on a logarithmic slider; and each path leads back to the file's number.
+test('the live page offers the heavy top\'s tilt in degrees and its spin in rad/s', () => {
+  const modelPath = path.join(source, 'examples', 'heavy_top.yaml');
+  const live = nativeReportData(modelPath).live;
+  assert.equal(live.available, true);
+  const byPath = Object.fromEntries(live.parameters.map((p) => [p.path, p]));
+  const tilt = byPath['joints.tip.q0.euler.angles_deg.1'];
+  assert.deepEqual([tilt.value, tilt.unit, tilt.min, tilt.max], [20, 'deg', -160, 200]);
+  assert.deepEqual([byPath['joints.tip.v0.2'].value, byPath['joints.tip.v0.2'].unit], [300, 'rad/s']);
+  assert.deepEqual([byPath['bodies.top.mass'].unit, byPath['bodies.top.mass'].scale], ['kg', 'log']);
+  const text = readFileSync(modelPath, 'utf8');
+  for (const p of live.parameters) assert.equal(engine.numberAt(text, 'heavy_top.yaml', p.path), p.value, p.path);
+  assert.equal(live.text, text);
+});
+
+test('the live page offers no quaternion component and every number with its unit', () => {
+  const live = nativeReportData(path.join(source, 'examples', 'skidding_ball.yaml')).live;
+  const paths = live.parameters.map((p) => p.path);
+  assert.ok(paths.includes('joints.free.q0.2') && paths.includes('joints.free.v0.3'));
+  assert.ok(!paths.includes('joints.free.q0.3'), 'a free joint\'s quaternion qw offered');
+  for (const p of live.parameters) assert.ok(p.unit && p.unit !== '1', `${p.path}: unit '${p.unit}'`);
+});
