@@ -1036,8 +1036,10 @@ test('live quarter car: a changed spring re-simulates in the page, as the CLI ru
   await (await page.$('#live')).screenshot({ path: path.join(artifacts, 'live-quarter_car-controls.png') });
   await screenshots(page, 'live-quarter_car-before');
   const posesBefore = await page.evaluate(() => window.momentaReport.bodyPoint('body', [0, 0, 0], 0.5));
+  await page.evaluate(() => window.momentaReport.setTime(0.75));
 
   await page.evaluate(() => window.momentaReport.live.set({ 'forces.suspension.stiffness': 90000 }));
+  assert.equal(await page.evaluate(() => window.momentaReport.time()), 0.75, 'the redraw keeps the time shown');
   const status = await page.evaluate(() => window.momentaReport.live.status());
   assert.equal(status.error, false, status.text);
   assert.match(status.text, /1 number changed: re-simulated 2 s with dopri5 in \d+ ms in this page/);

@@ -117,10 +117,16 @@ function livePage(app, data) {
   const engine = loadEngine();
   const run = element('div', { id: 'run' });
   let current = null;
+  // A redraw keeps the reader's place: the time shown (where the new run reaches it) and the
+  // window's scroll (the new panels are as tall as the old).
   const show = (pageData) => {
+    const time = current?.time();
+    const scroll = window.scrollY;
     current?.dispose();
     run.replaceChildren();
     current = simulationPage(run, pageData);
+    if (time !== undefined && time <= pageData.summary.t_end) current.setTime(time);
+    window.scrollTo(0, scroll);
   };
   const { text, file } = data.live;
   let lastMilliseconds = null;
