@@ -1095,3 +1095,52 @@ test('live quarter car: a changed spring re-simulates in the page, as the CLI ru
   assert.deepEqual(problems, []);
   await page.close();
 });
+
+// The live heavy top: its spin doubled (ω3 = 600 rad/s) with its transverse rate set to the slow
+// root of the steady-precession condition A cos θ Ω² − C ω3 Ω + m g l = 0 (Goldstein §5.7; the
+// example's header), as a reader would with two fields. The page's 3-D view then shows the
+// symmetry axis at θ = 20° from the vertical throughout and precessing at that Ω: read back from
+// the axis' direction at every frame (ZXZ: axis = (sin φ sin θ, −cos φ sin θ, cos θ)).
+test('live heavy top: doubling the spin halves the precession, as the steady-precession formula says', async (t) => {
+  const file = path.join(work, 'heavy_top-live.html');
+  run('report', path.join(examples, 'heavy_top.yaml'), '-o', file, '-q', '--force');
+  const { page, problems } = await open(file);
+  if (!(await page.evaluate(() => typeof window.createMomentaEngine === 'function'))) {
+    await page.close();
+    t.skip('this build has no in-page engine');
+    return;
+  }
+  await page.evaluate(() => window.momentaReport.live.ready());
+  const [m, g, r, h] = [1, 9.81, 0.05, 0.1];
+  const [A, C, l] = [0.6 * m * h * h + 0.15 * m * r * r, 0.3 * m * r * r, 0.75 * h];
+  const theta = 20 * Math.PI / 180;
+  const slowRoot = (w3) => (C * w3 - Math.sqrt((C * w3) ** 2 - 4 * A * Math.cos(theta) * m * g * l)) / (2 * A * Math.cos(theta));
+  const precession = async () => page.evaluate((tilt) => {
+    const hook = window.momentaReport;
+    const times = hook.frameTimes().filter((_, i) => i % 10 === 0);
+    let phi = 0, previous = null, worstTilt = 0;
+    for (const time of times) {
+      const [x, y, z] = hook.bodyPoint('top', [0, 0, 1], time).map((v, k) => v - hook.bodyPoint('top', [0, 0, 0], time)[k]);
+      worstTilt = Math.max(worstTilt, Math.abs(Math.acos(z / Math.hypot(x, y, z)) - tilt));
+      const angle = Math.atan2(x, -y);
+      if (previous !== null) phi += Math.atan2(Math.sin(angle - previous), Math.cos(angle - previous));
+      previous = angle;
+    }
+    return { rate: phi / (times.at(-1) - times[0]), worstTilt };
+  }, theta);
+  const before = await precession();
+  assert.ok(Math.abs(before.rate - slowRoot(300)) <= 1e-6 * slowRoot(300), `Ω ${before.rate} against ${slowRoot(300)}`);
+  const w3 = 600;
+  await page.evaluate((values) => window.momentaReport.live.set(values),
+    { 'joints.tip.v0.1': slowRoot(w3) * Math.sin(theta), 'joints.tip.v0.2': w3 });
+  const status = await page.evaluate(() => window.momentaReport.live.status());
+  assert.equal(status.error, false, status.text);
+  const after = await precession();
+  assert.ok(Math.abs(after.rate - slowRoot(w3)) <= 1e-6 * slowRoot(w3), `Ω ${after.rate} against ${slowRoot(w3)}`);
+  assert.ok(after.worstTilt <= 1e-6, `θ strays ${after.worstTilt} rad from 20°`);
+  assert.ok(Math.abs(after.rate / before.rate - 0.5) < 0.05, 'about half: the gyroscopic approximation m g l/(C ω3)');
+  await firstFrame(page);
+  await (await page.$('#motion')).screenshot({ path: path.join(artifacts, 'live-heavy_top-spin600.png') });
+  assert.deepEqual(problems, []);
+  await page.close();
+});
