@@ -62,6 +62,15 @@ std::vector<io::NumberOverride> overrides_of(const val& list) {
   return overrides;
 }
 
+// The page's model file with the overrides, read and accepted as the command line reads it.
+io::ModelFile accepted_model(const std::string& text, const std::string& file_name,
+                             const val& overrides) {
+  io::ModelFile file =
+      io::ModelTemplate(written_model(text, file_name)).with(overrides_of(overrides));
+  frontend::accept_model(file);
+  return file;
+}
+
 // A C++ exception as a JavaScript Error with its message.
 [[noreturn]] void throw_to_javascript(const std::exception& e) {
   val::global("Error").new_(std::string(e.what())).throw_();
@@ -69,9 +78,7 @@ std::vector<io::NumberOverride> overrides_of(const val& list) {
 
 val simulate_model(const std::string& text, const std::string& file_name, const val& overrides) {
   try {
-    const io::ModelTemplate model_template(written_model(text, file_name));
-    const io::ModelFile file = model_template.with(overrides_of(overrides));
-    frontend::accept_model(file);
+    const io::ModelFile file = accepted_model(text, file_name, overrides);
     const simulate::ResolvedRun run = simulate::resolve_run({}, file.simulation);
     simulate::Simulation simulation(file.model, file.outputs, run.options);
     simulate::TableSink table;
@@ -106,25 +113,13 @@ val simulate_model(const std::string& text, const std::string& file_name, const 
 std::string report_data(const std::string& text, const std::string& file_name,
                         const val& overrides) {
   try {
-    const io::ModelTemplate model_template(written_model(text, file_name));
-    const io::ModelFile file = model_template.with(overrides_of(overrides));
-    frontend::accept_model(file);
-    simulate::RunRequest request;
-    request.reactions = true;
-    const simulate::ResolvedRun run = simulate::resolve_run(request, file.simulation);
-    simulate::Simulation simulation(file.model, file.outputs, run.options);
-    simulate::TableSink table;
-    std::string stop_reason;
-    simulate::SimulationSummary summary;
-    try {
-      summary = simulation.run(table);
-    } catch (const NumericalError& e) {
-      stop_reason = e.what();  // the rows up to the failure, the reason at the top
-    }
-    const report::SimulationRun report_run =
-        report::make_run(file, simulation, std::move(table), summary, stop_reason);
-    if (report_run.rows.empty()) throw NumericalError(stop_reason);
-    return report::simulation_report_json(report_run);
+    const io::ModelFile file = accepted_model(text, file_name, overrides);
+    // As `momenta report` runs it: the file's settings, reactions recorded; a run stopped by a
+    // non-finite state keeps its rows and says why.
+    const report::SimulationRun run =
+        report::simulate_for_report(file, simulate::resolve_run({}, file.simulation).options);
+    if (run.rows.empty()) throw NumericalError(run.stop_reason);
+    return report::simulation_report_json(run);
   } catch (const std::exception& e) {
     throw_to_javascript(e);
   }

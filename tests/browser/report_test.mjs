@@ -1011,6 +1011,19 @@ test('grey-box page: intervals from the profile likelihood are marked and explai
 
 after(() => fs.writeFileSync(path.join(artifacts, 'measured.json'), JSON.stringify(measured, null, 2)));
 
+// A live page opened with its engine ready, or null — the test skipped — where the build has no
+// in-page engine (MOMENTA_WASM_ENGINE off).
+async function openLive(t, file) {
+  const opened = await open(file);
+  if (!(await opened.page.evaluate(() => typeof window.createMomentaEngine === 'function'))) {
+    await opened.page.close();
+    t.skip('this build has no in-page engine');
+    return null;
+  }
+  await opened.page.evaluate(() => window.momentaReport.live.ready());
+  return opened;
+}
+
 // The live report (docs/report.md, "The live report"): on the quarter car, the suspension spring
 // changed by script as a reader moves its slider. The page runs the changed model in its engine
 // and redraws; what it shows then is checked against the command line on the file the page
@@ -1022,13 +1035,9 @@ test('live quarter car: a changed spring re-simulates in the page, as the CLI ru
   const model = path.join(examples, 'quarter_car.yaml');
   const file = path.join(work, 'quarter_car-live.html');
   run('report', model, '-o', file, '-q', '--force');
-  const { page, problems } = await open(file);
-  if (!(await page.evaluate(() => typeof window.createMomentaEngine === 'function'))) {
-    await page.close();
-    t.skip('this build has no in-page engine');
-    return;
-  }
-  await page.evaluate(() => window.momentaReport.live.ready());
+  const live = await openLive(t, file);
+  if (!live) return;
+  const { page, problems } = live;
   const parameters = await page.evaluate(() => window.momentaReport.live.parameters());
   const ks = parameters.find((p) => p.path === 'forces.suspension.stiffness');
   assert.deepEqual([ks.value, ks.unit, ks.scale], [130000, 'N/m', 'log']);
@@ -1104,13 +1113,9 @@ test('live quarter car: a changed spring re-simulates in the page, as the CLI ru
 test('live heavy top: doubling the spin halves the precession, as the steady-precession formula says', async (t) => {
   const file = path.join(work, 'heavy_top-live.html');
   run('report', path.join(examples, 'heavy_top.yaml'), '-o', file, '-q', '--force');
-  const { page, problems } = await open(file);
-  if (!(await page.evaluate(() => typeof window.createMomentaEngine === 'function'))) {
-    await page.close();
-    t.skip('this build has no in-page engine');
-    return;
-  }
-  await page.evaluate(() => window.momentaReport.live.ready());
+  const live = await openLive(t, file);
+  if (!live) return;
+  const { page, problems } = live;
   const [m, g, r, h] = [1, 9.81, 0.05, 0.1];
   const [A, C, l] = [0.6 * m * h * h + 0.15 * m * r * r, 0.3 * m * r * r, 0.75 * h];
   const theta = 20 * Math.PI / 180;

@@ -129,10 +129,12 @@ function livePage(app, data) {
     window.scrollTo(0, scroll);
   };
   const { text, file } = data.live;
+  // {path: value} as the engine takes overrides: [{path, value}].
+  const listOf = (values) => Object.entries(values).map(([path, value]) => ({ path, value }));
   let lastMilliseconds = null;
   const rerun = async (overrides) => {
     const started = performance.now();
-    const list = Object.entries(overrides).map(([path, value]) => ({ path, value }));
+    const list = listOf(overrides);
     const next = JSON.parse((await engine).reportData(text, file, list));
     next.equations = data.equations;  // the native page's (the engine has no symbolic layer)
     next.live = data.live;
@@ -143,7 +145,7 @@ function livePage(app, data) {
       + `re-simulated ${s.t_end} s with ${s.integrator} in ${Math.round(lastMilliseconds)} ms in this page.`;
   };
   const download = async (overrides) => {
-    const list = Object.entries(overrides).map(([path, value]) => ({ path, value }));
+    const list = listOf(overrides);
     const changed = (await engine).textWith(text, file, list);
     const link = element('a', { href: URL.createObjectURL(new Blob([changed], { type: 'text/yaml' })), download: file });
     link.click();
@@ -161,13 +163,12 @@ function livePage(app, data) {
     status: () => live.status(),
     lastMilliseconds: () => lastMilliseconds,
     ready: () => ready.then(() => true),
-    textWith: async (values) => (await engine).textWith(text, file,
-      Object.entries(values).map(([path, value]) => ({ path, value }))),
+    textWith: async (values) => (await engine).textWith(text, file, listOf(values)),
     // The engine's run alone, without the report's data or the redraw (the benchmark's figure).
     simulateMilliseconds: async (values) => {
       const ready = await engine;
       const started = performance.now();
-      ready.simulate(text, file, Object.entries(values).map(([path, value]) => ({ path, value })));
+      ready.simulate(text, file, listOf(values));
       return performance.now() - started;
     },
   };
