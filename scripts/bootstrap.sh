@@ -31,10 +31,8 @@ if [[ "${MOMENTA_WITHOUT_PYTHON:-0}" != 1 ]]; then
   packages+=(chromium firefox-esr xvfb xauth fonts-dejavu-core)
 fi
 # emscripten (clang for WebAssembly, 3.1.6): the report's in-page engine (wasm/), built beside
-# the tests' native build (MOMENTA_WASM_ENGINE) and compared with it; not for run-example.
-if [[ "${MOMENTA_WITHOUT_PYTHON:-0}" != 1 ]]; then
-  packages+=(emscripten)
-fi
+# the native build (MOMENTA_WASM_ENGINE) — run-example's live page, and the tests' comparison.
+packages+=(emscripten)
 # MuJoCo: the MJCF reader's side-by-side tests (tests/validation/io, built where it is installed)
 # and the benchmarks against it (MOMENTA_BENCH_MUJOCO=ON); left out by run-example.
 if [[ "${MOMENTA_WITHOUT_PYTHON:-0}" != 1 || "${MOMENTA_WITH_MUJOCO:-0}" == 1 ]]; then

@@ -7,7 +7,9 @@
 #      principal moments and axes;
 #   2. a system of the notes, the quarter car (Franklin, Feedback Control, ch. 2;
 #      examples/quarter_car.yaml): its equations of motion in symbols, its modes, the body's
-#      response to the model's 5 cm kerb, and its HTML report, written to a file it names.
+#      response to the model's 5 cm kerb, and its HTML report, written to a file it names — a
+#      live page: momenta's engine (WebAssembly, built beside the tool with emscripten) runs in
+#      it, so its sliders re-simulate the car and redraw every panel, offline.
 #
 # Usage: scripts/run-example.sh [options of `momenta inertia`]
 #   e.g. scripts/run-example.sh --json       (the shaft alone, as JSON)
@@ -18,7 +20,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=${MOMENTA_BUILD_DIR:-build}
 MOMENTA_WITHOUT_PYTHON=1 scripts/bootstrap.sh
-MOMENTA_TARGET=momenta_cli scripts/build.sh "$build_dir" -DMOMENTA_BUILD_PYTHON=OFF
+MOMENTA_TARGET=momenta_cli scripts/build.sh "$build_dir" -DMOMENTA_BUILD_PYTHON=OFF \
+  -DMOMENTA_WASM_ENGINE=ON
 momenta="$build_dir/apps/momenta/momenta"
 echo "momenta: built $momenta; scripts/install.sh puts it on PATH" >&2
 show() {  # show ARGS...: the command as a user types it, then its output
@@ -36,5 +39,6 @@ show modes examples/quarter_car.yaml
 show response examples/quarter_car.yaml --input road --output body_y --step --amplitude 0.05
 report="$build_dir/quarter_car_report.html"
 show report examples/quarter_car.yaml -o "$report" --force
-echo "momenta: the quarter car's report, its motion, plots, modes and audit in one page:" \
+echo "momenta: the quarter car's live report — its motion, plots, modes and audit in one page," \
+  "with sliders for its masses, springs, dampers and kerb that re-run it in the page (offline):" \
   "$(cd "$(dirname "$report")" && pwd)/$(basename "$report")"

@@ -639,7 +639,8 @@ one value). Checked when build() runs.)doc")
             for (const Controller& c : b.controllers)
               model = model.with_controller(with_measured_outputs(c, outputs));
             io::ModelFile file{
-                b.name, "", std::move(model), std::move(outputs), {}, "", {}, {}, {}, {}, {}, {}};
+                b.name, "", std::move(model), std::move(outputs), {}, "", {}, {}, {}, {}, {},
+                {},     {}};
             frontend::accept_model(file);
             return ModelHandle{std::make_shared<const io::ModelFile>(std::move(file))};
           },

@@ -1,7 +1,10 @@
 #include "momenta/model/units.hpp"
 
 #include <cmath>
+#include <string_view>
+#include <utility>
 #include <variant>
+#include <vector>
 
 namespace momenta::model {
 namespace {
@@ -16,7 +19,72 @@ const Joint* joint_of(const Model& model, int i, bool velocity) {
   return nullptr;
 }
 
+// A unit's factors with their exponents, in the order written: "N·m/rad" → N 1, m 1, rad −1;
+// "kg·m²" → kg 1, m 2; "N/(m·s)" → N 1, m −1, s −1.
+using Factors = std::vector<std::pair<std::string, int>>;
+
+void add_factor(Factors& factors, std::string_view name, int exponent) {
+  for (auto& [factor, power] : factors) {
+    if (factor == name) {
+      power += exponent;
+      return;
+    }
+  }
+  factors.emplace_back(std::string(name), exponent);
+}
+
+Factors factors_of(std::string_view unit, int sign = 1) {
+  Factors factors;
+  if (unit.empty() || unit == "1") return factors;
+  int side = sign;  // the numerator's sign until the first '/'
+  std::string name;
+  const auto flush = [&] {
+    int exponent = 1;
+    for (const auto& [mark, power] : {std::pair<std::string_view, int>{"²", 2}, {"³", 3}}) {
+      if (name.size() > mark.size() && name.ends_with(mark)) {
+        name.resize(name.size() - mark.size());
+        exponent = power;
+      }
+    }
+    if (!name.empty() && name != "1") add_factor(factors, name, side * exponent);
+    name.clear();
+  };
+  for (std::size_t k = 0; k < unit.size(); ++k) {
+    if (unit.substr(k).starts_with("·")) {
+      flush();
+      k += std::string_view("·").size() - 1;
+    } else if (unit[k] == '/') {
+      flush();
+      side = -sign;
+    } else if (unit[k] != '(' && unit[k] != ')') {
+      name += unit[k];
+    }
+  }
+  flush();
+  return factors;
+}
+
+std::string written(const Factors& factors, int sign) {
+  std::vector<std::string> parts;
+  for (const auto& [name, power] : factors) {
+    const int p = sign * power;
+    if (p <= 0) continue;
+    parts.push_back(name + (p == 2 ? "²" : p == 3 ? "³" : p == 1 ? "" : "^" + std::to_string(p)));
+  }
+  std::string text;
+  for (const std::string& part : parts) text += (text.empty() ? "" : "·") + part;
+  return parts.size() > 1 && sign < 0 ? "(" + text + ")" : text;
+}
+
 }  // namespace
+
+std::string unit_ratio(const std::string& numerator, const std::string& denominator) {
+  Factors factors = factors_of(numerator);
+  for (const auto& [name, power] : factors_of(denominator, -1)) add_factor(factors, name, power);
+  const std::string above = written(factors, 1), below = written(factors, -1);
+  if (below.empty()) return above.empty() ? "1" : above;
+  return (above.empty() ? "1" : above) + "/" + below;
+}
 
 std::string q_unit(const Model& model, int i) {
   const Joint* j = joint_of(model, i, false);

@@ -274,3 +274,47 @@ test('the live page offers no quaternion component and every number with its uni
   assert.ok(!paths.includes('joints.free.q0.3'), 'a free joint\'s quaternion qw offered');
   for (const p of live.parameters) assert.ok(p.unit && p.unit !== '1', `${p.path}: unit '${p.unit}'`);
 });
+
+// A file's `live:` section chooses the numbers, their order and their sliders' ranges; without
+// it the page offers every number it has a rule for — here the quarter car's kerb height in m
+// (the unit of the joint its signal prescribes), and not the mass of the road, which moves only
+// as its prescribed joint moves it.
+test('the quarter car\'s live section chooses its controls; without it the page offers the kerb and no road mass', () => {
+  const modelPath = path.join(source, 'examples', 'quarter_car.yaml');
+  const listed = nativeReportData(modelPath).live.parameters;
+  assert.deepEqual(listed.map((p) => [p.path, p.unit, p.min, p.max, p.scale]), [
+    ['forces.suspension.stiffness', 'N/m', 10000, 1000000, 'log'],
+    ['forces.suspension.damping', 'N·s/m', 500, 50000, 'log'],
+    ['forces.tyre.stiffness', 'N/m', 100000, 10000000, 'log'],
+    ['bodies.body.mass', 'kg', 37.5, 3750, 'log'],
+    ['bodies.wheel.mass', 'kg', 2, 200, 'log'],
+    ['inputs.road.final', 'm', 0.01, 0.2, 'log'],
+    ['simulation.duration', 's', 0.2, 20, 'log'],
+  ]);
+  const text = readFileSync(modelPath, 'utf8');
+  const unlisted = path.join(scratch, 'quarter_car.yaml');
+  writeFileSync(unlisted, text.slice(0, text.indexOf('\n# What the report\'s live page offers')));
+  const chosen = Object.fromEntries(nativeReportData(unlisted).live.parameters.map((p) => [p.path, p]));
+  assert.deepEqual([chosen['inputs.road.final'].unit, chosen['inputs.road.start'].unit], ['m', 's']);
+  assert.equal(chosen['bodies.road_surface.mass'], undefined, 'the prescribed road\'s mass offered');
+  assert.equal(chosen['bodies.body.mass'].unit, 'kg');
+});
+
+// A PID's gains in the unit of what it drives per what it measures: the cruise control's kp in
+// N per m/s and ki in N per m (its file's comments), the satellite's kp in N·m/rad and kd in
+// N·m·s/rad, its constant reference in rad; every bundled example's controls with a unit.
+test('the live page offers controller gains in their units, and every example\'s numbers with theirs', () => {
+  const units = (name) => Object.fromEntries(nativeReportData(path.join(source, 'examples', `${name}.yaml`))
+    .live.parameters.map((p) => [p.path, p.unit]));
+  const cruise = units('cruise_control_pi');
+  assert.deepEqual([cruise['controllers.cruise.kp'], cruise['controllers.cruise.ki']], ['N·s/m', 'N/m']);
+  const satellite = units('satellite_attitude_pd');
+  assert.deepEqual([satellite['controllers.attitude_pd.kp'], satellite['controllers.attitude_pd.kd'],
+    satellite['controllers.attitude_pd.reference'], satellite['bodies.satellite.inertia.2']],
+  ['N·m/rad', 'N·m·s/rad', 'rad', 'kg·m²']);
+  for (const file of readdirSync(path.join(source, 'examples')).filter((f) => f.endsWith('.yaml'))) {
+    const live = nativeReportData(path.join(source, 'examples', file)).live;
+    if (!live || !live.available) continue;
+    for (const p of live.parameters) assert.ok(p.unit && p.unit !== '1', `${file}: ${p.path}: unit '${p.unit}'`);
+  }
+});

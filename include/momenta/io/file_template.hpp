@@ -20,6 +20,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "momenta/io/model_file.hpp"
@@ -31,6 +32,12 @@ namespace momenta::io {
 namespace detail {
 class DocumentPool;  // parsed copies of the file, lent to with() (file_template.cpp)
 }  // namespace detail
+
+/// A dotted path's segments ("joints.pivot.q0.1" → joints, pivot, q0, 1). Throws
+/// InvalidArgument for an empty segment.
+std::vector<std::string> path_segments(std::string_view path);
+/// The index a segment names ("1" → 1), or nothing for a name.
+std::optional<std::size_t> path_index(std::string_view segment);
 
 /// One number of a file set to a value.
 struct NumberOverride {

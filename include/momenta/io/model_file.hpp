@@ -71,6 +71,17 @@ struct ModelFile {
   std::vector<std::string> warnings;
   /// The file's named states (MJCF keyframes), in file order; empty for other formats.
   std::vector<Keyframe> keyframes;
+  /// The `live:` section (docs/report.md, "The live report"): the numbers the report's live page
+  /// offers to change, in the file's order, each by its dotted path (io/file_template.hpp), with
+  /// the slider's range where the entry gives one. Empty: the page chooses (masses, lengths,
+  /// constants, initial values, inputs, gains). Each path is checked to lead to a number the
+  /// file writes, and a range to hold it.
+  struct LiveNumber {
+    std::string path;
+    std::optional<double> min, max;
+    int line = 0, column = 0;
+  };
+  std::vector<LiveNumber> live_numbers;
   /// The keyframe of that name. Throws InvalidArgument naming the file and the keys it has (with
   /// a did-you-mean), or saying it has none.
   const Keyframe& keyframe(std::string_view name) const;

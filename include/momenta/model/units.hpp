@@ -30,6 +30,12 @@ std::string joint_armature_unit(const Model& model, const Joint& joint);
 /// follows it as its reference; "" when its use does not fix one.
 std::string signal_unit(const Model& model, int signal_index);
 
+/// The unit of a quotient, numerator / denominator, its factors cancelled and written as the
+/// rest of this file writes units: "N·m" / "rad" → "N·m/rad", "N" / "m·s" → "N/(m·s)",
+/// "rad/s²" / "rad" → "1/s²", "N·s" / "m" → "N·s/m"; "1" when everything cancels. Each factor a
+/// name with an optional exponent ² or ³; a unit "" or "1" is a pure number.
+std::string unit_ratio(const std::string& numerator, const std::string& denominator);
+
 /// A fixed tendon's units: its length is in its first joint's coordinate unit (its coefficients
 /// convert the others' to it), its tension is the effort conjugate to that length.
 struct TendonUnits {

@@ -669,7 +669,8 @@ ModelFile MjcfReader::read() {
                    {},
                    std::move(notes),
                    {},
-                   std::move(keyframes)};
+                   std::move(keyframes),
+                   {}};
 }
 
 }  // namespace detail

@@ -19,9 +19,8 @@
 #include "yaml/yaml_access.hpp"
 
 namespace momenta::io {
-namespace {
 
-std::vector<std::string> segments_of(const std::string& path) {
+std::vector<std::string> path_segments(std::string_view path) {
   std::vector<std::string> segments;
   std::string_view rest = path;
   while (true) {
@@ -36,12 +35,14 @@ std::vector<std::string> segments_of(const std::string& path) {
   return segments;
 }
 
-std::optional<std::size_t> index_of(const std::string& segment) {
+std::optional<std::size_t> path_index(std::string_view segment) {
   std::size_t index = 0;
   const auto [end, ec] = std::from_chars(segment.data(), segment.data() + segment.size(), index);
   if (ec != std::errc() || end != segment.data() + segment.size()) return std::nullopt;
   return index;
 }
+
+namespace {
 
 std::string names_with_suggestion(const std::string& segment,
                                   const std::vector<std::string>& names) {
@@ -54,7 +55,7 @@ std::string names_with_suggestion(const std::string& segment,
 YAML::Node child(const YAML::Node& node, const std::string& segment, const std::string& path,
                  bool last) {
   if (node.IsSequence()) {
-    if (const auto index = index_of(segment)) {
+    if (const auto index = path_index(segment)) {
       if (*index < node.size()) return node[*index];
       throw InvalidArgument(fmt::format("parameter path '{}': '{}' is past the end of a list of {}",
                                         path, segment, node.size()));
@@ -89,7 +90,7 @@ struct PathTarget {
 };
 
 PathTarget find_target(const YAML::Node& root, const std::string& path) {
-  const std::vector<std::string> segments = segments_of(path);
+  const std::vector<std::string> segments = path_segments(path);
   // Nodes are handles whose assignment writes through; each step's node is a new element.
   std::vector<YAML::Node> trail{root};
   for (std::size_t k = 0; k < segments.size(); ++k) {
@@ -114,12 +115,6 @@ std::string read_text(const std::filesystem::path& path) {
   return text.str();
 }
 
-std::optional<double> number_in(const YamlNode& document, const std::string& path) {
-  const PathTarget target = find_target(detail::YamlAccess::yaml(document), path);
-  if (!target.node.IsDefined() || target.node.IsNull()) return std::nullopt;
-  return target.node.as<double>();
-}
-
 // Appends every number under `node` (reached by `path`) to `out`, in the file's order.
 void collect_numbers(const YAML::Node& node, const std::string& path,
                      std::vector<FileNumber>& out) {
@@ -139,7 +134,7 @@ void collect_numbers(const YAML::Node& node, const std::string& path,
       const YAML::Node name = item.IsMap() ? item["name"] : YAML::Node();
       // By name where the name reads back as one (no dot; not taken for an index).
       const bool named = name.IsDefined() && name.IsScalar() && !name.Scalar().empty() &&
-                         name.Scalar().find('.') == std::string::npos && !index_of(name.Scalar());
+                         name.Scalar().find('.') == std::string::npos && !path_index(name.Scalar());
       collect_numbers(item, joined(named ? name.Scalar() : std::to_string(index)), out);
       ++index;
     }
@@ -147,6 +142,12 @@ void collect_numbers(const YAML::Node& node, const std::string& path,
 }
 
 }  // namespace
+
+std::optional<double> detail::number_in(const YamlNode& document, const std::string& path) {
+  const PathTarget target = find_target(detail::YamlAccess::yaml(document), path);
+  if (!target.node.IsDefined() || target.node.IsNull()) return std::nullopt;
+  return target.node.as<double>();
+}
 
 // Parsed copies of a file's text, lent to one caller at a time: a caller sets its numbers, reads
 // the document, and the numbers are put back before the copy is lent again. Parsing is most of
@@ -228,7 +229,7 @@ ModelTemplate::ModelTemplate(const std::filesystem::path& path)
       nominal_(detail::compose_model_file(document_, path.parent_path())) {}
 
 std::optional<double> ModelTemplate::number_at(const std::string& path) const {
-  return number_in(document_, path);
+  return detail::number_in(document_, path);
 }
 
 std::vector<FileNumber> ModelTemplate::numbers() const {
@@ -284,7 +285,7 @@ PartTemplate::PartTemplate(const std::filesystem::path& path, PartFileOptions op
       nominal_(detail::compose_part_file(document_, path.parent_path(), options_)) {}
 
 std::optional<double> PartTemplate::number_at(const std::string& path) const {
-  return number_in(document_, path);
+  return detail::number_in(document_, path);
 }
 
 CompositePart PartTemplate::with(std::span<const NumberOverride> overrides) const {

@@ -116,9 +116,9 @@ namespace {
 
 using detail::Context;
 
-constexpr std::array<std::string_view, 12> kModelFileKeys = {
-    "name",        "description", "gravity",     "bodies",  "joints",     "forces",
-    "constraints", "inputs",      "controllers", "outputs", "simulation", "symbols"};
+constexpr std::array<std::string_view, 13> kModelFileKeys = {
+    "name",   "description", "gravity", "bodies",     "joints",  "forces", "constraints",
+    "inputs", "controllers", "outputs", "simulation", "symbols", "live"};
 
 // The `symbols:` section: each key (momenta's name) to an identifier (checked by the equations,
 // which know the names) — letters, digits and '_', starting with a letter.
@@ -144,6 +144,52 @@ std::map<std::string, ModelFile::SymbolName> read_symbol_names(const YamlNode& r
     names[key] = {name, value.line(), value.column()};
   }
   return names;
+}
+
+// The `live:` section: each entry a path, or {path, min, max}; each path a number the file
+// writes (the page changes numbers, it does not add keys). The range is the slider's: a sweep
+// or the page's own field may go past it, so the value is not held to it here.
+std::vector<ModelFile::LiveNumber> read_live_numbers(const YamlNode& root) {
+  std::vector<ModelFile::LiveNumber> numbers;
+  const auto section = root.find("live");
+  if (!section || section->is_null()) return numbers;
+  if (!section->is_sequence()) {
+    section->fail(
+        "a list of the numbers the live report offers to change: each a path "
+        "(forces.suspension.stiffness) or {path, min, max}");
+  }
+  for (const YamlNode& entry : section->elements()) {
+    ModelFile::LiveNumber number{{}, std::nullopt, std::nullopt, entry.line(), entry.column()};
+    const YamlNode path = entry.is_map() ? entry.at("path") : entry;
+    if (entry.is_map()) {
+      entry.check_keys({"path", "min", "max"});
+      number.min = entry.find_number("min");
+      number.max = entry.find_number("max");
+    }
+    number.path = path.as_string();
+    std::optional<double> value;
+    try {
+      value = detail::number_in(root, number.path);
+    } catch (const InvalidArgument& error) {
+      path.fail(detail::one_line(error.what()));
+    }
+    if (!value) {
+      path.fail(
+          fmt::format("'{}' names no number this file writes: the live page changes the "
+                      "file's numbers (write the key, with its value, to offer it)",
+                      number.path));
+    }
+    for (const ModelFile::LiveNumber& earlier : numbers) {
+      if (earlier.path == number.path) {
+        path.fail(fmt::format("'{}' is listed twice (line {})", number.path, earlier.line));
+      }
+    }
+    if (number.min && number.max && !(*number.min < *number.max)) {
+      entry.fail(fmt::format("min {} must be less than max {}", *number.min, *number.max));
+    }
+    numbers.push_back(std::move(number));
+  }
+  return numbers;
 }
 
 // The declarations of one kind of item.
@@ -319,7 +365,8 @@ ModelFile detail::compose_model_file(const YamlNode& root, const std::filesystem
                  read_symbol_names(root),
                  {},
                  std::move(ctx.warnings),
-                 {}};
+                 {},
+                 read_live_numbers(root)};
   return file;
 }
 

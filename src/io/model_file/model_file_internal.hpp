@@ -22,6 +22,10 @@ namespace momenta::io::detail {
 /// after the parsing); paths inside it are relative to `base_dir`.
 ModelFile compose_model_file(const YamlNode& root, const std::filesystem::path& base_dir);
 
+// The number at a dotted path in a document (io/file_template.hpp), or nothing where the path's
+// last key is absent. Throws InvalidArgument for a path that leads nowhere or to no number.
+std::optional<double> number_in(const YamlNode& document, const std::string& path);
+
 /// The `simulation:` section of `root` (a model file's, or a sweep file's), checked.
 model::SimulationSettings read_simulation(const YamlNode& root);
 

@@ -427,6 +427,7 @@ ModelFile UrdfReader::read() {
       {},
       std::move(notes),
       {},
+      {},
       {}};
 }
 

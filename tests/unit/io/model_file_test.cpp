@@ -405,6 +405,45 @@ TEST(ModelFileOutputs, EulerAnglesTakeASequenceAndNumberedComponents) {
       "m.yaml:13:", "component 3 of the Euler angles must be 0, 1 or 2");
 }
 
+// --- the live page's numbers ------------------------------------------------------------------
+
+TEST(ModelFileLive, ListsPathsInOrderWithTheirRanges) {
+  const ModelFile file = parse(kPendulum + R"(    damping: 0.2
+live:
+  - joints.pivot.damping
+  - {path: bodies.bob.mass, min: 0.5, max: 4}
+  - {path: bodies.0.com.2, max: 0}
+)");
+  ASSERT_EQ(file.live_numbers.size(), 3u);
+  EXPECT_EQ(file.live_numbers[0].path, "joints.pivot.damping");
+  EXPECT_FALSE(file.live_numbers[0].min || file.live_numbers[0].max);
+  EXPECT_EQ(file.live_numbers[0].line, 14);
+  EXPECT_EQ(file.live_numbers[1].path, "bodies.bob.mass");
+  EXPECT_EQ(file.live_numbers[1].min, 0.5);
+  EXPECT_EQ(file.live_numbers[1].max, 4.0);
+  EXPECT_EQ(file.live_numbers[2].path, "bodies.0.com.2");
+  EXPECT_FALSE(file.live_numbers[2].min);
+  EXPECT_EQ(file.live_numbers[2].max, 0.0);
+  EXPECT_TRUE(parse(kPendulum).live_numbers.empty());
+}
+
+TEST(ModelFileErrors, LiveNumbersThatAreNoNumbersOfTheFile) {
+  EXPECT_ERROR_AT(error_of(kPendulum + "live:\n  - bodies.bobb.mass\n"),
+                  "m.yaml:13:5:", "did you mean 'bob'?");
+  EXPECT_ERROR_AT(error_of(kPendulum + "live:\n  - joints.pivot.damping\n"),
+                  "m.yaml:13:5:", "names no number this file writes");
+  EXPECT_ERROR_AT(error_of(kPendulum + "live:\n  - joints.pivot.type\n"),
+                  "m.yaml:13:5:", "something other than a number");
+  EXPECT_ERROR_AT(error_of(kPendulum + "live:\n  - {path: bodies.bob.mass, min: 2, max: 1}\n"),
+                  "m.yaml:13:5:", "min 2 must be less than max 1");
+  EXPECT_ERROR_AT(error_of(kPendulum + "live:\n  - bodies.bob.mass\n  - bodies.bob.mass\n"),
+                  "m.yaml:14:5:", "listed twice (line 13)");
+  EXPECT_ERROR_AT(error_of(kPendulum + "live:\n  - {path: bodies.bob.mass, mn: 2}\n"),
+                  "m.yaml:13:", "did you mean 'min'?");
+  EXPECT_ERROR_AT(error_of(kPendulum + "live: bodies.bob.mass\n"),
+                  "m.yaml:12:7:", "a list of the numbers the live report offers to change");
+}
+
 // --- errors: every class at its file:line ----------------------------------------------------
 
 TEST(ModelFileErrors, MalformedYaml) {
