@@ -51,11 +51,11 @@ std::optional<Control> signed_size(double value, std::string unit) {
   return std::nullopt;
 }
 
-// A time of a signal or the run (a start, a rise time, a width): a tenth to ten times, or zero
-// to a second where it is zero.
+// A time of a signal (a start, a rise time, a width): a tenth to ten times a positive one, else
+// a second about it (a ramp may start before the run: the four-bar's crank at −1 s).
 Control time_control(double value) {
   return value > 0.0 ? Control{"s", value / 10.0, value * 10.0, true}
-                     : Control{"s", 0.0, 1.0, false};
+                     : about(value, std::max(1.0, std::abs(value)), "s");
 }
 
 // Whether body b moves only as prescribed joints move it (every joint from it to the world

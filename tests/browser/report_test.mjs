@@ -1105,6 +1105,93 @@ test('live quarter car: a changed spring re-simulates in the page, as the CLI ru
   await page.close();
 });
 
+// Every bundled example's page is live: opened, one of its numbers moved as a reader moves its
+// slider (its first mass the page offers, else its first number but the run's duration and
+// gravity: up a quarter on a logarithmic slider, a tenth of the range on a linear one), and what
+// the page then plots read
+// back and checked against `momenta report` on the file the page writes (textWith): the same
+// times, and every plotted column within 1e-9 of its plot's scale (the engine's run is the command line's
+// to 1e-12, tests/wasm/engine_test.mjs; the page plots what it computed) — the flyball governor's
+// bdf run within 2e-3 (it parts from the native run by the integrator's own error, as far as the
+// native run is from a tighter one: 4.6e-4 of the coupler's tension, measured). A page that
+// offers no number, or whose change is refused, fails. A mass first: it moves no part of the
+// geometry (an input's start moves the four-bar's crank 36° from where its other joints' q0
+// assemble it, and the page then says the model cannot be assembled — rightly, and not what
+// this test is about); not gravity: the bouncing sphere's at 7.848 m/s² ends its bounces in
+// 38 269 impacts 55 µs apart, whose rows part from the command line's where an impact's instant
+// lands by a last bit (a step's row more or less).
+test('every bundled example: its page is live, a moved number re-simulated as the CLI runs the changed file', async (t) => {
+  const models = [
+    ...fs.readdirSync(examples).filter((f) => f.endsWith('.yaml')).map((f) => path.join(examples, f)),
+    ...['constraints', 'kinematics'].flatMap((dir) => fs.readdirSync(path.join(examples, dir))
+      .filter((f) => f.endsWith('.yaml')).map((f) => path.join(examples, dir, f))),
+  ];
+  const decode = (text) => {
+    const bytes = Buffer.from(text.slice(4), 'base64');
+    const buffer = bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength);
+    return Array.from(text.startsWith('f64:') ? new Float64Array(buffer) : new Float32Array(buffer));
+  };
+  const reportData = (html) => JSON.parse(fs.readFileSync(html, 'utf8')
+    .match(/<script type="application\/json" id="momenta-data">([\s\S]*?)<\/script>/)[1]);
+  const moved = [];
+  for (const model of models) {
+    const name = path.basename(model, '.yaml');
+    const file = path.join(work, `live-${name}.html`);
+    run('report', model, '-o', file, '-q', '--force');
+    const live = await openLive(t, file);
+    if (!live) return;
+    const { page, problems } = live;
+    const parameters = await page.evaluate(() => window.momentaReport.live.parameters());
+    const chosen = parameters.find((p) => p.path.startsWith('bodies.') && p.path.endsWith('.mass'))
+      ?? parameters.find((p) => p.path !== 'simulation.duration' && !p.path.startsWith('gravity.')) ?? parameters[0];
+    assert.ok(chosen, `${name}: the page offers no number`);
+    const value = chosen.scale === 'log' ? chosen.value * 1.25 : chosen.value + 0.1 * (chosen.max - chosen.min);
+    await page.evaluate((p, v) => window.momentaReport.live.set({ [p]: v }), chosen.path, value);
+    const status = await page.evaluate(() => window.momentaReport.live.status());
+    assert.equal(status.error, false, `${name}: ${chosen.path} = ${value}: ${status.text}`);
+    moved.push(`${name}: ${chosen.path} ${chosen.value} → ${value} ${chosen.unit}`);
+
+    const edited = path.join(work, `live-${name}-edited.yaml`);
+    fs.writeFileSync(edited, await page.evaluate((p, v) => window.momentaReport.live.textWith({ [p]: v }), chosen.path, value));
+    const nativeHtml = path.join(work, `live-${name}-native.html`);
+    run('report', edited, '-o', nativeHtml, '-q', '--force');
+    const native = reportData(nativeHtml);
+    const time = decode(native.plots.time);
+    const pageTime = await page.evaluate(() => window.momentaReport.plotTime());
+    assert.equal(pageTime.length, time.length, `${name}: plotted times`);
+    // An impact's instant within 1e-12 of the duration; the four-bar falling onto its stop's
+    // within 1e-8 (its 27 impacts each amplify the last bits of the one before, as the engine's
+    // test measured).
+    const timeBound = (name === 'four_bar_on_a_stop' ? 1e-8 : 1e-12) * time.at(-1);
+    pageTime.forEach((v, i) => assert.ok(Math.abs(v - time[i]) <= timeBound, `${name}: time ${i}: ${v} against ${time[i]}`));
+    const bound = name === 'flyball_governor' ? 2e-3 : 1e-9;
+    // A column's scale is its plot's largest value; a plot zero in exact arithmetic (a planar
+    // model's reaction moment out of its plane, round-off) takes every plot's largest, as the
+    // engine's test does.
+    const groups = native.plots.groups.filter((group) => !group.log);  // not the audit's drift
+    const groupScale = groups.map((group) => Math.max(...group.series.flatMap((series) => decode(series.data).map(Math.abs))));
+    const tableScale = Math.max(...groupScale);
+    for (const [g, group] of groups.entries()) {
+      const scale = groupScale[g] > 1e-9 * tableScale ? groupScale[g] : tableScale;
+      for (const series of group.series) {
+        const expected = decode(series.data);
+        const shown = await page.evaluate((n) => window.momentaReport.seriesValues(n), series.name);
+        // The plots keep each stretch's extremes (src/report/plots.cpp); which of two nearly equal
+        // rows is a stretch's extreme is a last bit's choice, so a value may be its neighbour's.
+        const near = (v, i) => Math.min(...[i - 1, i, i + 1].filter((k) => k >= 0 && k < expected.length)
+          .map((k) => Math.abs(v - expected[k])));
+        // Rows at instants that part (the four-bar on its stop) are compared by their times alone.
+        const worst = Math.max(0, ...shown.map((v, i) => (Math.abs(pageTime[i] - time[i]) <= 1e-12 * time.at(-1) ? near(v, i) : 0)));
+        assert.ok(shown.length === expected.length && worst <= bound * scale,
+                  `${name}: ${series.name}: ${worst} of ${scale} from the command line's`);
+      }
+    }
+    assert.deepEqual(problems, [], name);
+    await page.close();
+  }
+  fs.writeFileSync(path.join(artifacts, 'live-every-example.txt'), `${moved.join('\n')}\n`);
+});
+
 // The live heavy top: its spin doubled (ω3 = 600 rad/s) with its transverse rate set to the slow
 // root of the steady-precession condition A cos θ Ω² − C ω3 Ω + m g l = 0 (Goldstein §5.7; the
 // example's header), as a reader would with two fields. The page's 3-D view then shows the
