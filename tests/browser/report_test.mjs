@@ -1053,6 +1053,9 @@ test('live quarter car: a changed spring re-simulates in the page, as the CLI ru
   assert.equal(status.error, false, status.text);
   assert.match(status.text, /1 number changed: re-simulated 2 s with dopri5 in \d+ ms in this page/);
   assert.match(await page.evaluate(() => location.hash), /live=forces.suspension.stiffness%3D90000/);
+  // The equations' symbols keep the file's values (not yet substituted), and the page says so.
+  assert.match(await page.evaluate(() => document.querySelector('#equations .stale')?.textContent ?? ''),
+               /the page's changes \(forces\.suspension\.stiffness = 90000 N\/m\) are not substituted here/);
   await firstFrame(page);
   await screenshots(page, 'live-quarter_car-after');
   const posesAfter = await page.evaluate(() => window.momentaReport.bodyPoint('body', [0, 0, 0], 0.5));

@@ -82,7 +82,13 @@ export function equationsSection(equations) {
     const rows = equations.parameters.map((p) => [inlineMath(p.latex), formatNumber(p.value, 8), p.unit || '—']);
     const values = table(['symbol', 'value', 'unit'], rows);
     values.classList.add('symbols');
-    section.append(element('h3', {}, 'Symbols'), values);
+    section.append(element('h3', {}, 'Symbols'));
+    // On a live page after a change: the equations hold for any values, these are the file's.
+    if (equations.changed?.length) {
+      section.append(element('p', { class: 'note stale' },
+        `The values as the file gives them: the page's changes (${equations.changed.join(', ')}) are not substituted here; the equations above hold for any values.`));
+    }
+    section.append(values);
   }
   return { section };
 }

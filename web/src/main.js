@@ -136,7 +136,12 @@ function livePage(app, data) {
     const started = performance.now();
     const list = listOf(overrides);
     const next = JSON.parse((await engine).reportData(text, file, list));
-    next.equations = data.equations;  // the native page's (the engine has no symbolic layer)
+    // The native page's equations (the engine has no symbolic layer), told which numbers the
+    // page has changed: their symbols' values below are still the file's.
+    next.equations = data.equations && { ...data.equations, changed: list.map(({ path, value }) => {
+      const unit = data.live.parameters.find((p) => p.path === path)?.unit;
+      return `${path} = ${value}${unit ? ` ${unit}` : ''}`;
+    }) };
     next.live = data.live;
     show(next);
     lastMilliseconds = performance.now() - started;
