@@ -83,13 +83,6 @@ std::optional<Control> body_control(const model::Model& model, const std::vector
   return std::nullopt;
 }
 
-// The units of a spring's constants on a joint: per radian on an angle, per metre on a length.
-std::string joint_quantity_unit(const model::Model& model, int joint, std::string_view rotary,
-                                std::string_view linear) {
-  const bool angle = model::q_unit(model, model.joint(joint).q_index) == "rad";
-  return std::string(angle ? rotary : linear);
-}
-
 std::optional<Control> force_control(const model::Model& model, const std::vector<std::string>& at,
                                      double value) {
   const std::string& element = at[1];
@@ -105,7 +98,7 @@ std::optional<Control> force_control(const model::Model& model, const std::vecto
     }
     if (const auto* t = std::get_if<model::TorsionalSpringDamper>(&e)) {
       const bool on_length =
-          t->joint_index >= 0 && joint_quantity_unit(model, t->joint_index, "rad", "m") == "m";
+          t->joint_index >= 0 && model::q_unit(model, model.joint(t->joint_index).q_index) == "m";
       if (key == "stiffness") return scaled(value, on_length ? "N/m" : "N·m/rad");
       if (key == "damping") return scaled(value, on_length ? "N·s/m" : "N·m·s/rad");
       if (key == "rest_angle")
