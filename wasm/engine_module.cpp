@@ -14,6 +14,9 @@
 //     run.summary        // the text `momenta simulate` prints on stderr
 //     JSON.parse(engine.reportData(modelText, "double_pendulum.yaml", overrides))
 //                        // the data `momenta report` embeds in its page (less its equations)
+//     engine.equationNumbers(modelText, "double_pendulum.yaml", overrides,
+//                            data.equations.parameters, data.equations.form)
+//                        // {values, formChanges}: the symbols' values in the changed model
 //     engine.numberAt(modelText, "double_pendulum.yaml", "bodies.upper.mass")   // 1 (or null)
 //     engine.textWith(modelText, "double_pendulum.yaml", overrides)  // the file, numbers changed
 //
@@ -32,6 +35,7 @@
 #include "momenta/common/error.hpp"
 #include "momenta/frontend/model_loading.hpp"
 #include "momenta/io/file_template.hpp"
+#include "momenta/model/parameter_source.hpp"
 #include "momenta/report/report.hpp"
 #include "momenta/simulate/run_request.hpp"
 #include "momenta/simulate/simulation.hpp"
@@ -125,6 +129,59 @@ std::string report_data(const std::string& text, const std::string& file_name,
   }
 }
 
+// A parameter source as the report's data writes it (report::detail::source_json).
+model::ParameterSource source_of(const val& item) {
+  const std::string kind = item["kind"].as<std::string>();
+  const auto parsed = model::parameter_source_kind(kind);
+  if (!parsed) throw InvalidArgument("equations: no parameter source '" + kind + "'");
+  const auto number = [&](const char* key, int otherwise) {
+    return item[key].isUndefined() ? otherwise : item[key].as<int>();
+  };
+  model::ParameterSource source;
+  source.kind = *parsed;
+  source.index = number("index", 0);
+  source.row = number("row", 0);
+  source.column = number("column", 0);
+  source.magnitude = !item["magnitude"].isUndefined() && item["magnitude"].as<bool>();
+  source.sign = number("sign", 1);
+  return source;
+}
+
+// The report's equations' symbols given the values of the file with the overrides, and whether
+// they keep their form (report::equation_numbers): `parameters` and `form` as the report's data
+// holds them; {values, formChanges}.
+val equation_numbers(const std::string& text, const std::string& file_name, const val& overrides,
+                     const val& parameters, const val& form) {
+  try {
+    std::vector<report::EquationSymbolSources> symbols;
+    for (unsigned i = 0; i < parameters["length"].as<unsigned>(); ++i) {
+      const val p = parameters[i];
+      report::EquationSymbolSources symbol{p["name"].as<std::string>(), {}};
+      for (unsigned k = 0; k < p["sources"]["length"].as<unsigned>(); ++k)
+        symbol.sources.push_back(source_of(p["sources"][k]));
+      symbols.push_back(std::move(symbol));
+    }
+    std::vector<report::EquationFormNumber> numbers;
+    for (unsigned i = 0; i < form["length"].as<unsigned>(); ++i) {
+      const val n = form[i];
+      numbers.push_back(
+          {n["name"].as<std::string>(), source_of(n["source"]), n["value"].as<double>()});
+    }
+    const report::EquationNumbers result = report::equation_numbers(
+        accepted_model(text, file_name, overrides).model, symbols, numbers);
+    val out = val::object();
+    val values = val::array();
+    for (double v : result.values) values.call<void>("push", v);
+    val changes = val::array();
+    for (const std::string& c : result.form_changes) changes.call<void>("push", c);
+    out.set("values", values);
+    out.set("formChanges", changes);
+    return out;
+  } catch (const std::exception& e) {
+    throw_to_javascript(e);
+  }
+}
+
 val number_at(const std::string& text, const std::string& file_name, const std::string& path) {
   try {
     const io::ModelTemplate model_template(written_model(text, file_name));
@@ -149,6 +206,7 @@ std::string text_with(const std::string& text, const std::string& file_name, con
 EMSCRIPTEN_BINDINGS(momenta_engine) {
   emscripten::function("simulate", &simulate_model);
   emscripten::function("reportData", &report_data);
+  emscripten::function("equationNumbers", &equation_numbers);
   emscripten::function("numberAt", &number_at);
   emscripten::function("textWith", &text_with);
 }

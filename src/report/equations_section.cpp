@@ -7,6 +7,7 @@
 #include <cctype>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "sections.hpp"
 
@@ -64,6 +65,36 @@ json constraints_json(const symbolic::Equations& e, std::string& shown) {
   return constraints;
 }
 
+// An equation with more terms than this is not written again with numbers: a free body's 94
+// (a quaternion's products) would be a page of figures no one reads, and its data 100 kB.
+constexpr std::size_t kMaxNumberTerms = 40;
+
+// Equation `row`'s terms (symbolic::EquationTerm) for the page to give numbers: [{latex, right,
+// c: [[factor, [parameter, exponent, …]], …]}], parameters numbered by `listed` (their place in
+// the panel's list, −1 for one not listed); null where a parameter is inside a function or the
+// terms are more than kMaxNumberTerms.
+json terms_json(const symbolic::Equations& e, int row, const std::vector<int>& listed) {
+  const auto terms = e.equation_terms(row);
+  if (!terms || terms->size() > kMaxNumberTerms) return nullptr;
+  json out = json::array();
+  for (const symbolic::EquationTerm& term : *terms) {
+    json coefficient = json::array();
+    for (const symbolic::EquationTerm::Monomial& m : term.coefficient) {
+      json powers = json::array();
+      for (const auto& [index, exponent] : m.powers) {
+        if (listed[static_cast<std::size_t>(index)] < 0) return nullptr;
+        powers.push_back(listed[static_cast<std::size_t>(index)]);
+        powers.push_back(exponent);
+      }
+      coefficient.push_back({m.factor, std::move(powers)});
+    }
+    json item = {{"latex", term.latex}, {"c", std::move(coefficient)}};
+    if (term.right) item["right"] = true;
+    out.push_back(std::move(item));
+  }
+  return out;
+}
+
 }  // namespace
 
 json equations_json(const io::ModelFile& file) {
@@ -88,16 +119,31 @@ json equations_json(const io::ModelFile& file) {
     // The symbols the equations use (a planar body's I_xx is a parameter, not in them).
     const std::set<std::string> used = identifiers_in(shown);
     json parameters = json::array();
+    std::vector<int> listed;
     for (const symbolic::Parameter& p : e.parameters()) {
+      listed.push_back(used.count(p.name) == 0 ? -1 : static_cast<int>(parameters.size()));
       if (used.count(p.name) == 0) continue;
-      parameters.push_back(
-          {{"name", p.name}, {"latex", p.latex}, {"value", p.value}, {"unit", p.unit}});
+      json sources = json::array();
+      for (const model::ParameterSource& source : p.sources) sources.push_back(source_json(source));
+      parameters.push_back({{"name", p.name},
+                            {"latex", p.latex},
+                            {"value", p.value},
+                            {"unit", p.unit},
+                            {"sources", std::move(sources)}});
     }
+    // The numbers the form depends on (the page's engine checks them after a change).
+    json form = json::array();
+    for (const symbolic::FormNumber& number : e.form_numbers())
+      form.push_back(
+          {{"name", number.name}, {"source", source_json(number.source)}, {"value", number.value}});
+    for (int r = 0; r < static_cast<int>(equations.size()); ++r)
+      equations[static_cast<std::size_t>(r)]["terms"] = terms_json(e, r, listed);
     return {{"available", true},
             {"equations", std::move(equations)},
             {"constraints", std::move(constraints)},
             {"multipliers", e.multiplier_names()},
-            {"parameters", std::move(parameters)}};
+            {"parameters", std::move(parameters)},
+            {"form", std::move(form)}};
   } catch (const InvalidArgument& error) {
     return unavailable(error.what());
   }

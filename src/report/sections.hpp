@@ -6,6 +6,7 @@
 
 #include "momenta/analysis/linearize.hpp"
 #include "momenta/dynamics/data.hpp"
+#include "momenta/model/parameter_source.hpp"
 #include "momenta/report/report.hpp"
 #include "page_data.hpp"
 
@@ -62,6 +63,10 @@ json linear_json(const io::ModelFile& file, const LinearSettings& settings, doub
 /// file's names), the constraints' rows and the symbols' values; or {available: false, reason}
 /// (too many free speeds, too large to print, or a build without the symbolic layer).
 json equations_json(const io::ModelFile& file);
+
+/// A parameter's source as the equations' data write it: {kind, index, row, column, magnitude,
+/// sign}, the last four where not 0, 0, false, 1 (equation_numbers.cpp reads it back).
+json source_json(const model::ParameterSource& source);
 
 /// The model's feedback loops, one per controller: {name, kind, sample_time, svg}, the svg its
 /// block diagram (reference, junction, law, hold, actuator, mechanism, sensor); [] without.

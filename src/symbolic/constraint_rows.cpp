@@ -10,6 +10,7 @@
 namespace momenta::symbolic::detail {
 namespace {
 
+using SourceKind = model::ParameterSource::Kind;
 using model::DistanceLink;
 using model::JointCoupler;
 using model::KnifeEdge;
@@ -33,6 +34,7 @@ class RowWriter {
 
   std::vector<SymbolicRow> run() {
     for (const model::Constraint& constraint : model_.constraints()) {
+      ++index_;
       name_ = model::constraint_name(constraint);
       labels_ = model::constraint_row_labels(constraint);
       label_ = 0;
@@ -48,10 +50,13 @@ class RowWriter {
 
  private:
   // The frame, its origin's position a parameter p_<constraint>_<which>_x … in the body.
-  WorldFrame frame(const model::BodyFrame& f, const std::string& which) {
-    const V3 p_BF{{parameter_(fmt::format("p_{}_{}_x", name_, which), f.X_BF.p.x()),
-                   parameter_(fmt::format("p_{}_{}_y", name_, which), f.X_BF.p.y()),
-                   parameter_(fmt::format("p_{}_{}_z", name_, which), f.X_BF.p.z())}};
+  // `column`: which of the constraint's frames it is (0 a, or its one frame; 1 b).
+  WorldFrame frame(const model::BodyFrame& f, const std::string& which, int column) {
+    const auto origin = [&](int k) {
+      return parameter_(fmt::format("p_{}_{}_{}", name_, which, "xyz"[k]),
+                        {SourceKind::constraint_frame_origin, index_, k, column});
+    };
+    const V3 p_BF{{origin(0), origin(1), origin(2)}};
     const auto b = static_cast<std::size_t>(f.body_index);
     return {R_WB_[b] * to_m3(f.X_BF.R), p_WB_[b] + R_WB_[b] * p_BF};
   }
@@ -73,7 +78,7 @@ class RowWriter {
   }
 
   void loop(const LoopClosure& c) {
-    const WorldFrame A = frame(c.a, "a"), B = frame(c.b, "b");
+    const WorldFrame A = frame(c.a, "a", 0), B = frame(c.b, "b", 1);
     const V3 d = B.p - A.p;
     const int a = c.a.body_index, b = c.b.body_index;
     const int translations = c.type == LoopType::slider ? 2 : 3;
@@ -94,18 +99,18 @@ class RowWriter {
   }
 
   void distance(const DistanceLink& c) {
-    const WorldFrame A = frame(c.a, "a"), B = frame(c.b, "b");
+    const WorldFrame A = frame(c.a, "a", 0), B = frame(c.b, "b", 1);
     const V3 d = B.p - A.p;
     const ex length = GiNaC::sqrt(dot(d, d));
-    const ex L = parameter_("L_" + name_, c.length);
+    const ex L = parameter_("L_" + name_, {SourceKind::constraint_length, index_});
     force_row(length - L, true, c.a.body_index, c.b.body_index, B.p, (1 / length) * d);
   }
 
   // Unit vectors as numbers: the plane's normal n, its point, a sphere's fixed tangent.
   void rolling(const RollingContact& c) {
-    const WorldFrame F = frame(c.frame, "centre");
+    const WorldFrame F = frame(c.frame, "centre", 0);
     const V3 n = to_v3(c.plane_normal);
-    const ex r = parameter_("r_" + name_, c.radius);
+    const ex r = parameter_("r_" + name_, {SourceKind::constraint_radius, index_});
     V3 u = ex(-1) * n, forward;
     if (c.shape == RollingShape::disk) {
       const V3 axis = F.axis(2);
@@ -127,7 +132,7 @@ class RowWriter {
   }
 
   void knife_edge(const KnifeEdge& c) {
-    const WorldFrame F = frame(c.frame, "point");
+    const WorldFrame F = frame(c.frame, "point", 0);
     const V3 n = to_v3(c.plane_normal), blade = F.axis(0);
     const ex n_blade = dot(n, blade);
     const V3 side = (1 / GiNaC::sqrt(1 - n_blade * n_blade)) * cross(n, blade);
@@ -137,8 +142,8 @@ class RowWriter {
   void coupler(const JointCoupler& c) {
     const model::Joint& ja = model_.joint(c.joint_a_index);
     const model::Joint& jb = model_.joint(c.joint_b_index);
-    const ex ratio = parameter_("n_" + name_, c.ratio);
-    const ex offset = parameter_("q0_" + name_, c.offset);
+    const ex ratio = parameter_("n_" + name_, {SourceKind::constraint_ratio, index_});
+    const ex offset = parameter_("q0_" + name_, {SourceKind::constraint_offset, index_});
     SymbolicRow row;
     row.name = fmt::format("{}.{}", name_, labels_.front());
     row.holonomic = true;
@@ -153,6 +158,7 @@ class RowWriter {
   const std::vector<V3>& p_WB_;
   const std::vector<ex>& q_;
   const ParameterFn& parameter_;
+  int index_ = -1;  // the constraint's index in the model's (its parameters' sources)
   std::string name_;
   std::vector<std::string_view> labels_;
   int label_ = 0;

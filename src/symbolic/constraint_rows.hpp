@@ -10,11 +10,13 @@
 
 #include "expression_algebra.hpp"
 #include "momenta/model/model.hpp"
+#include "momenta/model/parameter_source.hpp"
 
 namespace momenta::symbolic::detail {
 
 /// A parameter of the model by its name and value: a symbol or the number (equations.cpp).
-using ParameterFn = std::function<ex(const std::string& name, double value)>;
+using ParameterFn =
+    std::function<ex(const std::string& name, const model::ParameterSource& source)>;
 
 /// One constraint row. A wrench row acts on body b with w = [moment; force] in W about Wo (and
 /// with −w on body a); a coupler's row is a row of G in joint space instead.

@@ -23,6 +23,16 @@
 #include "momenta/model/units.hpp"
 
 namespace momenta::symbolic::detail {
+namespace {
+
+using SourceKind = model::ParameterSource::Kind;
+
+// A joint's number as a parameter's source (joint j carries body j + 1).
+model::ParameterSource joint_source(SourceKind kind, const model::Joint& j) {
+  return {kind, j.child_index - 1};
+}
+
+}  // namespace
 
 JointMotion joint_motion(const model::Joint& j, const std::vector<ex>& q, int qi) {
   const V3 a = to_v3(j.axis), a2 = to_v3(j.axis2), zero;
@@ -102,6 +112,7 @@ Equations::Impl Derivation::run() {
   if (newton_euler_) newton_euler_form();
   impl_.parameter_symbols = params_.symbols_;
   impl_.parameters = params_.values_;
+  impl_.form_numbers = params_.form_numbers_;
   return std::move(impl_);
 }
 
@@ -298,8 +309,11 @@ void Derivation::kinematics() {
     const int i = j.child_index, p = j.parent_index;
     const JointMotion jm = joint_motion(j, impl_.q, j.q_index);
     const M3 R_PJ = to_m3(j.X_PJ.R), R_CJ = to_m3(j.X_CJ.R);
-    const V3 p_PJ = params_.vector("l_" + j.name, j.X_PJ.p, "L_" + j.name);
-    const V3 p_CJ = params_.vector("l_" + j.name + "_child", j.X_CJ.p, "L_" + j.name + "_child");
+    const V3 p_PJ = params_.vector("l_" + j.name, joint_source(SourceKind::joint_parent_offset, j),
+                                   "L_" + j.name);
+    const V3 p_CJ =
+        params_.vector("l_" + j.name + "_child", joint_source(SourceKind::joint_child_offset, j),
+                       "L_" + j.name + "_child");
     p_CJ_[i] = p_CJ;
     R_PC_[i] = R_PJ * jm.R * transpose(R_CJ);
     p_PC_[i] = p_PJ + R_PJ * jm.p - R_PC_[i] * p_CJ;
@@ -314,8 +328,12 @@ void Derivation::kinematics() {
   }
   const Vec3 gravity = model_.gravity();
   const double g_size = gravity.norm();
-  const ex g = params_("g", g_size, "m/s²");
-  if (g_size > 0) base_acceleration_ = (-g) * to_v3(gravity / g_size);
+  const ex g = params_("g", {SourceKind::gravity}, "m/s²");
+  if (g_size > 0) {
+    base_acceleration_ = (-g) * to_v3(gravity / g_size);
+    for (int k = 0; k < 3; ++k)
+      params_.form_number("gravity's direction", {SourceKind::gravity_direction, 0, k});
+  }
 }
 
 // One Newton–Euler pass: τ for the speeds `v` and accelerations `vdot` (expressions per model
@@ -387,18 +405,12 @@ void Derivation::project_down(std::vector<Force>& f, std::vector<ex>& out) const
 Inertia Derivation::inertia(int b) {
   const model::Body& body = model_.body(b);
   const inertia::MassProperties& mp = body.mass_properties;
-  const ex m = params_("m_" + body.name, mp.mass(), "kg");
+  const ex m = params_("m_" + body.name, {SourceKind::body_mass, b}, "kg");
   // Round-off in the mass properties (a composed part's products of inertia of 1e-20 against
   // moments of 1e-2) is 0, as the command line shows it (common/number_text.hpp): not a
-  // coefficient, nor with --all-symbols a parameter, of the equations.
-  const Mat3& Ic = mp.inertia_about_com();
-  const double length =
-      std::max(mp.center_of_mass().norm(), std::sqrt(Ic.trace() / (2 * mp.mass())));
-  const V3 c = params_.vector("c_" + body.name, mp.center_of_mass().unaryExpr([&](double x) {
-    return shown_value(x, length);
-  }),
-                              "L_" + body.name);
-  const double moment = Ic.cwiseAbs().maxCoeff();
+  // coefficient, nor with --all-symbols a parameter, of the equations (model::parameter_value).
+  const V3 c =
+      params_.vector("c_" + body.name, {SourceKind::body_center_of_mass, b}, "L_" + body.name);
   const char* axes = "xyz";
   const auto moment_name = [&](int r, int col) {
     return fmt::format("I_{}_{}{}", body.name, axes[r], axes[col]);
@@ -411,11 +423,11 @@ Inertia Derivation::inertia(int b) {
   // tensor per unit mass when its mass is a symbol (a rod's I_G = m L²/12), and in its
   // dimensions when those are symbols too (shape_inertia).
   M3 I;
-  const std::optional<M3> in_dimensions = shape_inertia(body, m, moments_asked);
+  const std::optional<M3> in_dimensions = shape_inertia(b, m, moments_asked);
   for (int r = 0; r < 3; ++r) {
     for (int col = r; col < 3; ++col) {
       const std::string name = moment_name(r, col);
-      const double value = shown_value(Ic(r, col), moment);
+      const model::ParameterSource source{SourceKind::body_inertia, b, r, col};
       ex e;
       if (in_dimensions) {
         params_.known(name);
@@ -423,9 +435,9 @@ Inertia Derivation::inertia(int b) {
       } else if (!moments_asked && body.inertia_scales_with_mass &&
                  !GiNaC::is_a<GiNaC::numeric>(m)) {
         params_.known(name);
-        e = m * exact_number(value / mp.mass());
+        e = m * exact_number(model::parameter_value(model_, source) / mp.mass());
       } else {
-        e = params_(name, value, "kg·m²");
+        e = params_(name, source, "kg·m²");
       }
       I(r, col) = e;
       I(col, r) = e;
@@ -448,8 +460,8 @@ Inertia Derivation::inertia(int b) {
 // R_BS (m × its unit moments in those dimensions) R_BSᵀ. Its other dimensions are numbers.
 // Nothing when no dimension is asked for, or its moments are (every parameter is, with
 // --all-symbols, which keeps the body's moments as the symbols I_*).
-std::optional<M3> Derivation::shape_inertia(const model::Body& body, const ex& m,
-                                            bool moments_asked) {
+std::optional<M3> Derivation::shape_inertia(int b, const ex& m, bool moments_asked) {
+  const model::Body& body = model_.body(b);
   if (!body.shape) return std::nullopt;
   const inertia::PrimitiveShape& shape = *body.shape;
   const auto size_name = [&](const std::string& key) { return key + "_" + body.name; };
@@ -460,8 +472,11 @@ std::optional<M3> Derivation::shape_inertia(const model::Body& body, const ex& m
   }
   if (!asked || moments_asked) return std::nullopt;
   const auto size = [&](std::string_view key) -> ex {
-    for (const auto& [k, value] : shape.sizes) {
-      if (k == key) return params_(size_name(k), value, "m");
+    for (std::size_t k = 0; k < shape.sizes.size(); ++k) {
+      if (shape.sizes[k].first == key) {
+        return params_(size_name(shape.sizes[k].first),
+                       {SourceKind::body_shape_size, b, static_cast<int>(k)}, "m");
+      }
     }
     throw InvalidArgument(
         fmt::format("equations: body '{}' ({}) has no size '{}'", body.name, shape.kind, key));
@@ -501,47 +516,52 @@ void Derivation::element_forces() {
   };
   armature_.assign(model_.nv(), 0);
   for (const model::Joint& j : model_.joints()) {
-    const ex c = params_("c_" + j.name, j.damping, model::joint_damping_unit(model_, j));
+    const ex c = params_("c_" + j.name, joint_source(SourceKind::joint_damping, j),
+                         model::joint_damping_unit(model_, j));
     for (int k = 0; k < j.nv(); ++k) Q_[j.v_index + k] -= c * impl_.v[j.v_index + k];
     if (j.armature == 0.0) continue;
     // A rotor's reflected inertia.
-    const ex armature = params_("Ia_" + j.name, j.armature, model::joint_armature_unit(model_, j));
+    const ex armature = params_("Ia_" + j.name, joint_source(SourceKind::joint_armature, j),
+                                model::joint_armature_unit(model_, j));
     for (int k = 0; k < j.nv(); ++k) armature_[j.v_index + k] = armature;
   }
+  int e = -1;  // the element's index (its parameters' sources)
   for (const model::ForceElement& element : model_.force_elements()) {
+    ++e;
     const std::string name = model::force_element_name(element);
     if (const auto* s = std::get_if<model::LinearSpringDamper>(&element)) {
-      const ex k = params_("k_" + name, s->stiffness, "N/m"),
-               c = params_("c_" + name, s->damping, "N·s/m");
+      const ex k = params_("k_" + name, {SourceKind::element_stiffness, e}, "N/m"),
+               c = params_("c_" + name, {SourceKind::element_damping, e}, "N·s/m");
       const int a = s->a.body_index, b = s->b.body_index;
       const V3 pa = to_v3(s->a.p_BoP_B), pb = to_v3(s->b.p_BoP_B);
       const V3 d = world_point(b, pb) - world_point(a, pa);
-      bool along_a_line = false;
-      const ex length = line_length(d, &along_a_line);
+      Line line;
+      const ex length = line_length(d, &line);
       const ex length_rate = dot(d, world_velocity(b, pb) - world_velocity(a, pa)) / length;
-      const ex T = k * stretch(name, s->free_length, length, along_a_line) + c * length_rate;
+      const ex T = k * stretch(name, e, length, line) + c * length_rate;
       push(b, pb, (-T / length) * d);
       push(a, pa, (T / length) * d);
     } else if (const auto* t = std::get_if<model::TorsionalSpringDamper>(&element);
                t && t->joint_index < 0) {
-      add_two_body_torsion(*t, f);
+      add_two_body_torsion(*t, e, f);
     } else if (t) {
       const model::Joint& j = model_.joint(t->joint_index);
-      const ex k = params_("k_" + name, t->stiffness, "N·m/rad"),
-               c = params_("c_" + name, t->damping, "N·m·s/rad"),
-               rest = params_("rest_" + name, t->rest_angle, "rad");
+      const ex k = params_("k_" + name, {SourceKind::element_stiffness, e}, "N·m/rad"),
+               c = params_("c_" + name, {SourceKind::element_damping, e}, "N·m·s/rad"),
+               rest = params_("rest_" + name, {SourceKind::element_rest, e}, "rad");
       Q_[j.v_index] -= k * (impl_.q[j.q_index] - rest) + c * impl_.v[j.v_index];
     } else if (const auto* tendon = std::get_if<model::FixedTendon>(&element)) {
-      add_tendon(*tendon);
+      add_tendon(*tendon, e);
     } else if (const auto* fr = std::get_if<model::JointFriction>(&element)) {
       const model::Joint& j = model_.joint(fr->joint_index);
-      const ex c = params_("c_" + name, fr->viscous, model::joint_damping_unit(model_, j));
+      const ex c = params_("c_" + name, {SourceKind::element_viscous, e},
+                           model::joint_damping_unit(model_, j));
       for (int k = 0; k < j.nv(); ++k) Q_[j.v_index + k] -= c * impl_.v[j.v_index + k];
     } else if (const auto* F = std::get_if<model::AppliedForce>(&element)) {
-      const V3 F_W = load(name, F->vector, F->signal_index, F->frame, F->at.body_index, "N");
+      const V3 F_W = load(name, e, F->vector, F->signal_index, F->frame, F->at.body_index, "N");
       push(F->at.body_index, to_v3(F->at.p_BoP_B), F_W);
     } else if (const auto* T = std::get_if<model::AppliedTorque>(&element)) {
-      const V3 M_W = load(name, T->vector, T->signal_index, T->frame, T->body_index, "N·m");
+      const V3 M_W = load(name, e, T->vector, T->signal_index, T->frame, T->body_index, "N·m");
       if (T->body_index > 0) {
         f[T->body_index] = f[T->body_index] + Force{transpose(R_WB_[T->body_index]) * M_W, V3{}};
       }
@@ -553,18 +573,20 @@ void Derivation::element_forces() {
 }
 
 // A fixed tendon: L = offset + Σ nᵢ qᵢ, T = k (L − rest) + c L̇, τᵢ = −nᵢ T on its joints.
-void Derivation::add_tendon(const model::FixedTendon& tendon) {
+void Derivation::add_tendon(const model::FixedTendon& tendon, int e) {
   const std::string& name = tendon.name;
   const model::TendonUnits units = model::tendon_units(model_, tendon);
-  const ex k = params_("k_" + name, tendon.stiffness, units.stiffness),
-           c = params_("c_" + name, tendon.damping, units.damping),
-           rest = params_("rest_" + name, tendon.rest_length, units.length),
-           offset = params_("offset_" + name, tendon.offset, units.length);
+  const ex k = params_("k_" + name, {SourceKind::element_stiffness, e}, units.stiffness),
+           c = params_("c_" + name, {SourceKind::element_damping, e}, units.damping),
+           rest = params_("rest_" + name, {SourceKind::element_rest, e}, units.length),
+           offset = params_("offset_" + name, {SourceKind::element_offset, e}, units.length);
   std::vector<ex> n;
   ex length = offset, rate = 0;
+  int term_index = 0;
   for (const model::TendonTerm& term : tendon.terms) {
     const model::Joint& j = model_.joint(term.joint_index);
-    n.push_back(params_("n_" + name + "_" + j.name, term.coefficient));
+    n.push_back(
+        params_("n_" + name + "_" + j.name, {SourceKind::element_coefficient, e, term_index++}));
     length += n.back() * impl_.q[j.q_index];
     rate += n.back() * impl_.v[j.v_index];
   }
@@ -579,7 +601,7 @@ void Derivation::add_tendon(const model::FixedTendon& tendon) {
 // turn (fixed, prismatic). Its angle from the rest orientation is φ = Σ ±(q_j − q_j0) (+ on the
 // way down to b, − down to a) and it puts the moment −(k φ + c φ̇) n on b and the opposite on
 // a, n being fixed in both. Other paths (a ball joint between them, two axes) are refused.
-void Derivation::add_two_body_torsion(const model::TorsionalSpringDamper& t,
+void Derivation::add_two_body_torsion(const model::TorsionalSpringDamper& t, int e,
                                       std::vector<Force>& f) {
   const std::string& name = t.name;
   // Every body's orientation at the initial configuration, numerically.
@@ -633,8 +655,8 @@ void Derivation::add_two_body_torsion(const model::TorsionalSpringDamper& t,
   walk(from_b, +1);
   walk(from_a, -1);
   if (!axis) return;  // nothing turns between them: the spring stays relaxed
-  const ex k = params_("k_" + name, t.stiffness, "N·m/rad"),
-           c = params_("c_" + name, t.damping, "N·m·s/rad");
+  const ex k = params_("k_" + name, {SourceKind::element_stiffness, e}, "N·m/rad"),
+           c = params_("c_" + name, {SourceKind::element_damping, e}, "N·m·s/rad");
   const ex moment = k * phi + c * phi_rate;
   const auto push_moment = [&](int body, double sign) {
     if (body == 0) return;
@@ -650,24 +672,23 @@ void Derivation::add_two_body_torsion(const model::TorsionalSpringDamper& t,
 // textbook writes the spring relaxed there, k (x − y): where l0 is that value, offsets and free
 // length cancel and are left out; where not, their difference, the stretch at q = 0, is the
 // parameter d0_<spring> (m). Off a line, √(d·d) − l0 as it is.
-ex Derivation::stretch(const std::string& name, double free_length, const ex& length,
-                       bool along_a_line) {
-  if (!along_a_line) return length - params_("l0_" + name, free_length, "m");
+ex Derivation::stretch(const std::string& name, int element, const ex& length, const Line& line) {
+  if (line.axis < 0)
+    return length - params_("l0_" + name, {SourceKind::element_free_length, element}, "m");
   GiNaC::exmap zero;
   for (const ex& q : impl_.q) zero[q] = 0;
   const ex at_zero = GiNaC::expand(length.subs(zero));
-  const double offsets = initial_value(at_zero);
   params_.known("l0_" + name);
-  double d0 = offsets - free_length;
-  if (std::abs(d0) <= 1e-12 * std::max({1.0, std::abs(offsets), std::abs(free_length)})) d0 = 0;
+  const model::ParameterSource d0{
+      SourceKind::element_stretch_at_zero, element, line.axis, 0, false, line.sign};
   return GiNaC::expand(length - at_zero) + params_("d0_" + name, d0, "m");
 }
 
 // |d|. Where the line keeps one direction (d has one nonzero component, as a suspension's
 // vertical spring) it is ±d_k with the sign d_k has at the initial configuration — a spring
 // that does not pass through zero length, as a textbook writes k (x_b − x_a) — else √(d·d).
-// `along_a_line`, when given, says which.
-ex Derivation::line_length(const V3& d, bool* along_a_line) {
+// `line`, when given, says which.
+ex Derivation::line_length(const V3& d, Line* line) {
   int nonzero = -1, count = 0;
   for (int k = 0; k < 3; ++k) {
     if (!GiNaC::expand(d[k]).is_zero()) {
@@ -679,7 +700,7 @@ ex Derivation::line_length(const V3& d, bool* along_a_line) {
   const ex component = GiNaC::expand(d[nonzero]);
   const double at_start = initial_value(component);
   if (at_start == 0.0) return GiNaC::sqrt(dot(d, d));
-  if (along_a_line != nullptr) *along_a_line = true;
+  if (line != nullptr) *line = {nonzero, at_start > 0 ? 1 : -1};
   return at_start > 0 ? component : -component;
 }
 
@@ -707,12 +728,20 @@ double Derivation::initial_value(const ex& e) const {
 }
 
 // An applied load's vector in W: size (a parameter F_<name>) × direction × signal.
-V3 Derivation::load(const std::string& name, const Vec3& vector, int signal, model::LoadFrame frame,
-                    int body, std::string_view unit) {
+V3 Derivation::load(const std::string& name, int e, const Vec3& vector, int signal,
+                    model::LoadFrame frame, int body, std::string_view unit) {
   const double size = vector.norm();
   // A signal's unit direction (N per unit of u, of length 1) is no parameter of the physics:
   // the force is u along it. A gain of another size, or a constant load, is one.
-  const ex magnitude = signal >= 0 && size == 1.0 ? ex(1) : params_("F_" + name, size, unit);
+  ex magnitude = 1;
+  if (signal >= 0 && size == 1.0) {
+    params_.form_number("F_" + name, {SourceKind::element_load, e});
+  } else {
+    magnitude = params_("F_" + name, {SourceKind::element_load, e}, unit);
+  }
+  if (size > 0)
+    for (int k = 0; k < 3; ++k)
+      params_.form_number(name + "'s direction", {SourceKind::element_load_direction, e, k});
   V3 v = size > 0 ? magnitude * to_v3(vector / size) : V3{};
   if (signal >= 0) v = input_of_signal_[static_cast<std::size_t>(signal)] * v;
   if (frame == model::LoadFrame::body) v = R_WB_[body] * v;
@@ -724,12 +753,14 @@ V3 Derivation::load(const std::string& name, const Vec3& vector, int signal, mod
 // Newton–Euler form's loads (add_row_loads).
 void Derivation::constraint_equations() {
   const auto rows =
-      constraint_rows(model_, R_WB_, p_WB_, impl_.q, [this](const std::string& name, double value) {
-        // Frame origins, lengths and radii are lengths; a coupler's ratio and offset are not.
-        const bool length =
-            name.rfind("p_", 0) == 0 || name.rfind("L_", 0) == 0 || name.rfind("r_", 0) == 0;
-        return params_(name, value, length ? "m" : "");
-      });
+      constraint_rows(model_, R_WB_, p_WB_, impl_.q,
+                      [this](const std::string& name, const model::ParameterSource& source) {
+                        // Frame origins, lengths and radii are lengths; a coupler's ratio and
+                        // offset are not.
+                        const bool length = name.rfind("p_", 0) == 0 || name.rfind("L_", 0) == 0 ||
+                                            name.rfind("r_", 0) == 0;
+                        return params_(name, source, length ? "m" : "");
+                      });
   const std::vector<Motion> S_W = world_subspaces();
   constraint_loads_.assign(model_.num_bodies(), Force{});
   constraint_joint_forces_.assign(static_cast<std::size_t>(model_.nv()), 0);

@@ -5,6 +5,7 @@
 // equations in, body by body (newton_euler_form.cpp). equations.cpp runs it.
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <optional>
 #include <set>
@@ -36,33 +37,55 @@ std::string coordinate_latex(const std::string& name, std::string_view accent);
 // name, and parameters given one name share one symbol (their values must agree).
 class Parameters {
  public:
-  explicit Parameters(const EquationOptions& options)
-      : all_(options.all_symbols),
+  Parameters(const model::Model& model, const EquationOptions& options)
+      : model_(model),
+        all_(options.all_symbols),
         asked_(options.symbols.begin(), options.symbols.end()),
         given_(options.names) {}
 
-  ex operator()(const std::string& raw_name, double value, std::string_view unit = {}) {
-    return named(raw_name, value, {}, unit);
+  // The parameter momenta calls `raw_name`, its value the model's number at `source`.
+  ex operator()(const std::string& raw_name, const model::ParameterSource& source,
+                std::string_view unit = {}) {
+    return named(raw_name, source, {}, unit);
   }
 
-  // A position in a frame: where it lies along one axis, a positive length `length_name` times
-  // the axis's sign (asked for by that name or the component's); otherwise its components.
-  V3 vector(const std::string& stem, const Vec3& value, const std::string& length_name = {}) {
+  // A position in a frame, its components the model's numbers at `source` with row 0, 1, 2:
+  // where it lies along one axis, a positive length `length_name` times the axis's sign (asked
+  // for by that name or the component's); otherwise its components.
+  V3 vector(const std::string& stem, model::ParameterSource source,
+            const std::string& length_name = {}) {
     static const char* const axes[] = {"_x", "_y", "_z"};
+    std::array<model::ParameterSource, 3> component{source, source, source};
+    Vec3 value;
+    for (int k = 0; k < 3; ++k) {
+      component[static_cast<std::size_t>(k)].row = k;
+      value[k] = model::parameter_value(model_, component[static_cast<std::size_t>(k)]);
+    }
     const int nonzero = static_cast<int>((value.array() != 0.0).count());
     if (!length_name.empty() && nonzero == 1) {
       int k = 0;
       while (value[k] == 0.0) ++k;
-      const ex L = named(length_name, std::abs(value[k]), identifier(stem + axes[k]), "m");
+      model::ParameterSource length = component[static_cast<std::size_t>(k)];
+      length.magnitude = true;
+      length.sign = value[k] < 0 ? -1 : 1;
+      const ex L = named(length_name, length, identifier(stem + axes[k]), "m");
       V3 r;
       r[k] = value[k] < 0 ? -L : L;
       for (int other = 0; other < 3; ++other) {
-        if (other != k) names_.push_back(identifier(stem + axes[other]));
+        if (other == k) continue;
+        names_.push_back(identifier(stem + axes[other]));
+        form_numbers_.push_back(
+            {identifier(stem + axes[other]), component[static_cast<std::size_t>(other)], 0.0});
       }
       return r;
     }
-    return {{(*this)(stem + axes[0], value.x(), "m"), (*this)(stem + axes[1], value.y(), "m"),
-             (*this)(stem + axes[2], value.z(), "m")}};
+    return {{(*this)(stem + axes[0], component[0], "m"), (*this)(stem + axes[1], component[1], "m"),
+             (*this)(stem + axes[2], component[2], "m")}};
+  }
+
+  // A number the form depends on that no symbol stands for (FormNumber).
+  void form_number(const std::string& name, const model::ParameterSource& source) {
+    form_numbers_.push_back({name, source, model::parameter_value(model_, source)});
   }
 
   // Whether `raw_name` is to be a symbol (every one, or asked for by it or its given name).
@@ -114,21 +137,30 @@ class Parameters {
   }
   std::vector<symbol> symbols_;
   std::vector<Parameter> values_;
+  std::vector<FormNumber> form_numbers_;
 
  private:
-  // The parameter momenta calls `raw_name` (also known as `alias`).
-  ex named(const std::string& raw_name, double value, const std::string& alias,
-           std::string_view unit) {
+  // The parameter momenta calls `raw_name` (also known as `alias`), its value the model's number
+  // at `source`: 0, or a number where no symbol is asked for — both FormNumbers — else a symbol.
+  ex named(const std::string& raw_name, const model::ParameterSource& source,
+           const std::string& alias, std::string_view unit) {
+    const double value = model::parameter_value(model_, source);
     const std::string name = identifier(raw_name);
     names_.push_back(name);
     if (!alias.empty()) names_.push_back(alias);
-    if (value == 0.0) return 0;
+    if (value == 0.0) {
+      form_numbers_.push_back({name, source, value});
+      return 0;
+    }
     listed_.push_back(name);
     std::string shown = given(name);
     if (shown == name && !alias.empty()) shown = given(alias) == alias ? name : given(alias);
     const bool asked = all_ || asked_.count(name) != 0 || asked_.count(shown) != 0 ||
                        (!alias.empty() && asked_.count(alias) != 0);
-    if (!asked) return exact_number(value);
+    if (!asked) {
+      form_numbers_.push_back({name, source, value});
+      return exact_number(value);
+    }
     for (std::size_t k = 0; k < symbols_.size(); ++k) {
       if (symbols_[k].get_name() != shown) continue;
       const double other = values_[k].value;
@@ -140,14 +172,16 @@ class Parameters {
         error.about_symbol(shown);
         throw error;
       }
+      values_[k].sources.push_back(source);
       return symbols_[k];
     }
     const symbol s(shown, latex_name(shown));
     symbols_.push_back(s);
-    values_.push_back({shown, value, latex_name(shown), std::string(unit)});
+    values_.push_back({shown, value, latex_name(shown), std::string(unit), {source}});
     return s;
   }
 
+  const model::Model& model_;
   bool all_;
   std::set<std::string> asked_;
   std::map<std::string, std::string> given_;
@@ -165,11 +199,17 @@ struct JointMotion {
 
 JointMotion joint_motion(const model::Joint& j, const std::vector<ex>& q, int qi);
 
+// The one axis of W a spring's line keeps (its length ±d_axis), or axis −1 (√(d·d)).
+struct Line {
+  int axis = -1;
+  int sign = 1;
+};
+
 class Derivation {
  public:
   Derivation(const model::Model& model, const EquationOptions& options)
       : model_(model),
-        params_(options),
+        params_(model, options),
         greek_(options.greek),
         newton_euler_(options.newton_euler),
         principal_axes_(options.principal_axes),
@@ -219,7 +259,7 @@ class Derivation {
   // R_BS (m × its unit moments in those dimensions) R_BSᵀ. Its other dimensions are numbers.
   // Nothing when no dimension is asked for, or its moments are (every parameter is, with
   // --all-symbols, which keeps the body's moments as the symbols I_*).
-  std::optional<M3> shape_inertia(const model::Body& body, const ex& m, bool moments_asked);
+  std::optional<M3> shape_inertia(int b, const ex& m, bool moments_asked);
 
   // Q: the elements' wrenches projected on the speeds, and the joint-space terms.
   void element_forces();
@@ -229,29 +269,32 @@ class Derivation {
   // turn (fixed, prismatic). Its angle from the rest orientation is φ = Σ ±(q_j − q_j0) (+ on the
   // way down to b, − down to a) and it puts the moment −(k φ + c φ̇) n on b and the opposite on
   // a, n being fixed in both. Other paths (a ball joint between them, two axes) are refused.
-  void add_two_body_torsion(const model::TorsionalSpringDamper& t, std::vector<Force>& f);
+  // `element`: its index in the model's force elements (its parameters' sources).
+  void add_two_body_torsion(const model::TorsionalSpringDamper& t, int element,
+                            std::vector<Force>& f);
   // A fixed tendon's generalized forces −nᵢ (k (L − rest) + c L̇) on its joints, into Q_.
-  void add_tendon(const model::FixedTendon& tendon);
+  void add_tendon(const model::FixedTendon& tendon, int element);
 
   // A spring's stretch, length − l0. Along a line (line_length) the length is the joints'
   // offsets plus the coordinates; its value at q = 0 (inputs at 0 too) is the offsets' part. A
   // textbook writes the spring relaxed there, k (x − y): where l0 is that value, offsets and free
   // length cancel and are left out; where not, their difference, the stretch at q = 0, is the
-  // parameter d0_<spring> (m). Off a line, √(d·d) − l0 as it is.
-  ex stretch(const std::string& name, double free_length, const ex& length, bool along_a_line);
+  // parameter d0_<spring> (m). Off a line, √(d·d) − l0 as it is. `element`: the spring's index.
+  ex stretch(const std::string& name, int element, const ex& length, const Line& line);
 
   // |d|. Where the line keeps one direction (d has one nonzero component, as a suspension's
   // vertical spring) it is ±d_k with the sign d_k has at the initial configuration — a spring
   // that does not pass through zero length, as a textbook writes k (x_b − x_a) — else √(d·d).
-  // `along_a_line`, when given, says which.
-  ex line_length(const V3& d, bool* along_a_line = nullptr);
+  // `line`, when given, says which: the axis of W it keeps and the sign, or axis −1.
+  ex line_length(const V3& d, Line* line = nullptr);
 
   // An expression's value at the model's initial configuration, parameters at their values.
   double initial_value(const ex& e) const;
 
   // An applied load's vector in W: size (a parameter F_<name>) × direction × signal.
-  V3 load(const std::string& name, const Vec3& vector, int signal, model::LoadFrame frame, int body,
-          std::string_view unit);
+  // `element`: the load's index in the model's force elements.
+  V3 load(const std::string& name, int element, const Vec3& vector, int signal,
+          model::LoadFrame frame, int body, std::string_view unit);
 
   // The constraints' rows (constraint_rows.hpp): φ(q) on holonomic rows, G (jacobian_row),
   // k = Ġ v as the rate of G v at v̇ = 0, and a multiplier λ per row, whose forces join the

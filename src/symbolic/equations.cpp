@@ -36,6 +36,7 @@ const std::vector<std::string>& Equations::acceleration_names() const { return i
 const std::vector<int>& Equations::free_speeds() const { return impl_->free; }
 const std::vector<std::string>& Equations::input_names() const { return impl_->input_names; }
 const std::vector<Parameter>& Equations::parameters() const { return impl_->parameters; }
+const std::vector<FormNumber>& Equations::form_numbers() const { return impl_->form_numbers; }
 
 Equations derive_equations(const model::Model& model, const EquationOptions& options) {
   Derivation derivation(model, options);

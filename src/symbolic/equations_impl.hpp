@@ -69,6 +69,7 @@ struct Equations::Impl {
   std::vector<std::string> input_names;
   std::vector<GiNaC::symbol> parameter_symbols;
   std::vector<Parameter> parameters;
+  std::vector<FormNumber> form_numbers;
   // The equations: for each free speed k, Σ_j M(k, j) v̇_j + rest[k] + g[k] = Q[k].
   GiNaC::matrix M;
   std::vector<GiNaC::ex> rest, g, Q;

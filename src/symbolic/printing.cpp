@@ -1,10 +1,13 @@
 // Printing the equations (text, LaTeX, C++, Python), evaluating them at a state, and generating
 // code (equations.hpp).
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
+#include <tuple>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -167,52 +170,193 @@ std::string Equations::generalized_force(int row, Format format) const {
   return print_in(*impl_, impl_->Q[static_cast<std::size_t>(row)], format);
 }
 
-std::string Equations::equation(int row, Format format) const {
-  check_row(*impl_, row, "equation");
+namespace {
+
+// Equation `row`'s sides as a textbook writes them: on the left M v̇ + C v + g less the
+// generalized forces without an input (collected by acceleration and by each spring's and
+// damper's constant), on the right those with one and Gᵀλ; both negated where the row's own
+// acceleration's term would lead with a minus.
+struct Sides {
+  ex left, right, constraint_force;
+  std::string left_text;  // in the format asked
+};
+
+Sides sides_of(const Equations::Impl& impl, int row, Format format) {
   const auto r = static_cast<std::size_t>(row);
-  const auto [right, moved] = split_inputs(impl_->Q[r], impl_->inputs);
-  ex left = impl_->rest[r] + impl_->g[r] - moved;
+  const auto [right, moved] = split_inputs(impl.Q[r], impl.inputs);
+  ex left = impl.rest[r] + impl.g[r] - moved;
   GiNaC::lst accelerations;
-  for (std::size_t c = 0; c < impl_->free.size(); ++c) {
-    left += impl_->M(static_cast<unsigned>(row), static_cast<unsigned>(c)) *
-            impl_->vdot[static_cast<std::size_t>(impl_->free[c])];
-    accelerations.append(impl_->vdot[static_cast<std::size_t>(impl_->free[c])]);
+  for (std::size_t c = 0; c < impl.free.size(); ++c) {
+    left += impl.M(static_cast<unsigned>(row), static_cast<unsigned>(c)) *
+            impl.vdot[static_cast<std::size_t>(impl.free[c])];
+    accelerations.append(impl.vdot[static_cast<std::size_t>(impl.free[c])]);
   }
   detail::check_printable(left);  // before expanding: that is what takes the time
   // Each spring's and damper's terms over its constant, as the notes write them: k_s (x − y),
   // b (ẋ − ẏ) — the stiffnesses and dampings are the parameters in those units.
   GiNaC::lst grouped = accelerations;
-  for (std::size_t k = 0; k < impl_->parameters.size(); ++k) {
-    const std::string& unit = impl_->parameters[k].unit;
+  for (std::size_t k = 0; k < impl.parameters.size(); ++k) {
+    const std::string& unit = impl.parameters[k].unit;
     if (unit == "N/m" || unit == "N·s/m" || unit == "N·m/rad" || unit == "N·m·s/rad") {
-      grouped.append(impl_->parameter_symbols[k]);
+      grouped.append(impl.parameter_symbols[k]);
     }
   }
   left = GiNaC::collect(GiNaC::expand(left), grouped);
   // The constraint forces' generalized forces Gᵀλ on the right, each λ once.
   ex constraint_force = 0;
-  for (const auto& c : impl_->constraints)
-    constraint_force += c.G[static_cast<std::size_t>(impl_->free[r])] * c.multiplier;
-  // As a textbook writes equation k: its own acceleration's term first, and positive (both
-  // sides negated where the leading term is not).
-  const int own = impl_->free[r];
-  std::string left_text = print_in(*impl_, left, format, own);
+  for (const auto& c : impl.constraints)
+    constraint_force += c.G[static_cast<std::size_t>(impl.free[r])] * c.multiplier;
+  // As a textbook writes equation k: its own acceleration's term first, and positive.
+  const int own = impl.free[r];
+  std::string left_text = print_in(impl, left, format, own);
   const bool negated = left_text.starts_with("-");
-  if (negated) left_text = print_in(*impl_, -left, format, own);
+  if (negated) left_text = print_in(impl, -left, format, own);
   const ex sign = negated ? -1 : 1;
-  std::string right_text = print_in(*impl_, sign * right, format);
-  if (!constraint_force.is_zero()) {
+  return {sign * left, sign * right, sign * constraint_force, std::move(left_text)};
+}
+
+// Whether `factor` is a parameter or a power of one.
+bool parameter_factor(const Equations::Impl& impl, const ex& factor, int& index, int& exponent) {
+  ex base = factor;
+  exponent = 1;
+  if (GiNaC::is_a<GiNaC::power>(factor)) {
+    const ex e = factor.op(1);
+    if (!GiNaC::is_a<GiNaC::numeric>(e) || !GiNaC::ex_to<GiNaC::numeric>(e).is_integer())
+      return false;
+    base = factor.op(0);
+    exponent = GiNaC::ex_to<GiNaC::numeric>(e).to_int();
+  }
+  if (!GiNaC::is_a<symbol>(base)) return false;
+  for (std::size_t k = 0; k < impl.parameter_symbols.size(); ++k) {
+    if (base.is_equal(impl.parameter_symbols[k])) {
+      index = static_cast<int>(k);
+      return true;
+    }
+  }
+  return false;
+}
+
+bool has_parameter(const Equations::Impl& impl, const ex& e) {
+  for (const symbol& p : impl.parameter_symbols)
+    if (e.has(p)) return true;
+  return false;
+}
+
+// The terms of `e` (expanded) grouped by what multiplies their parameters, appended to `terms`;
+// false where a parameter is inside another factor (a function's argument, a sum's power).
+bool add_terms(const Equations::Impl& impl, const ex& e, bool right, int own,
+               std::vector<EquationTerm>& terms) {
+  const ex expanded = GiNaC::expand(e);
+  std::vector<ex> sums;
+  if (GiNaC::is_a<GiNaC::add>(expanded)) {
+    for (const ex& term : expanded) sums.push_back(term);
+  } else if (!expanded.is_zero()) {
+    sums.push_back(expanded);
+  }
+  std::map<ex, std::size_t, GiNaC::ex_is_less> group_of;
+  std::vector<ex> rests;
+  const std::size_t first = terms.size();
+  for (const ex& term : sums) {
+    std::vector<ex> factors;
+    if (GiNaC::is_a<GiNaC::mul>(term)) {
+      for (const ex& f : term) factors.push_back(f);
+    } else {
+      factors.push_back(term);
+    }
+    EquationTerm::Monomial monomial{1.0, {}};
+    ex rest = 1;
+    for (const ex& f : factors) {
+      int index = 0, exponent = 0;
+      if (GiNaC::is_a<GiNaC::numeric>(f)) {
+        monomial.factor *= GiNaC::ex_to<GiNaC::numeric>(f).to_double();
+      } else if (parameter_factor(impl, f, index, exponent)) {
+        monomial.powers.emplace_back(index, exponent);
+      } else {
+        rest *= f;
+      }
+    }
+    if (has_parameter(impl, rest)) return false;
+    auto [it, added] = group_of.try_emplace(rest, terms.size());
+    if (added) {
+      terms.push_back({{}, print_in(impl, rest, Format::latex, own), right});
+      rests.push_back(rest);
+    }
+    terms[it->second].coefficient.push_back(std::move(monomial));
+  }
+  // As a textbook orders them: the terms with the row's own acceleration, with the other
+  // accelerations, with its own rate, with another free rate, with its own coordinate (where
+  // coordinates and speeds are numbered alike: no quaternion), then the rest (other coordinates,
+  // prescribed motions, inputs, constants).
+  const auto o = static_cast<std::size_t>(own);
+  const auto rank = [&](const ex& rest) {
+    if (rest.has(impl.vdot[o])) return 0;
+    for (int f : impl.free)
+      if (rest.has(impl.vdot[static_cast<std::size_t>(f)])) return 1;
+    if (rest.has(impl.v[o])) return 2;
+    for (int f : impl.free)
+      if (rest.has(impl.v[static_cast<std::size_t>(f)])) return 3;
+    if (impl.nq == impl.nv && rest.has(impl.q[o])) return 4;
+    return 5;
+  };
+  std::vector<std::size_t> order(rests.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  // Within a rank the shorter first (q̈ before cos(q) q̈), then by their LaTeX: GiNaC's order of a
+  // sum's terms follows its symbols' serial numbers, which differ from process to process (the
+  // Python module's page must be the CLI's).
+  std::vector<int> ranks(rests.size());
+  for (std::size_t k = 0; k < rests.size(); ++k) ranks[k] = rank(rests[k]);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    if (ranks[a] != ranks[b]) return ranks[a] < ranks[b];
+    const std::string& la = terms[first + a].latex;
+    const std::string& lb = terms[first + b].latex;
+    return la.size() != lb.size() ? la.size() < lb.size() : la < lb;
+  });
+  // Each coefficient's monomials in one order too: their sum's last bit depends on it.
+  for (std::size_t k = first; k < terms.size(); ++k) {
+    auto& monomials = terms[k].coefficient;
+    for (auto& m : monomials) std::sort(m.powers.begin(), m.powers.end());
+    std::sort(monomials.begin(), monomials.end(), [](const auto& a, const auto& b) {
+      return std::tie(a.powers, a.factor) < std::tie(b.powers, b.factor);
+    });
+  }
+  std::vector<EquationTerm> sorted;
+  for (std::size_t k : order) sorted.push_back(std::move(terms[first + k]));
+  terms.resize(first);
+  for (EquationTerm& t : sorted) terms.push_back(std::move(t));
+  return true;
+}
+
+}  // namespace
+
+std::string Equations::equation(int row, Format format) const {
+  check_row(*impl_, row, "equation");
+  const Sides sides = sides_of(*impl_, row, format);
+  std::string right_text = print_in(*impl_, sides.right, format);
+  if (!sides.constraint_force.is_zero()) {
     GiNaC::lst multipliers;
     for (const auto& c : impl_->constraints) multipliers.append(c.multiplier);
     const std::string forces =
-        print_in(*impl_, GiNaC::collect(sign * constraint_force, multipliers), format);
-    if (right.is_zero()) {
+        print_in(*impl_, GiNaC::collect(sides.constraint_force, multipliers), format);
+    if (sides.right.is_zero()) {
       right_text = forces;
     } else {
       right_text += forces.starts_with("-") ? " - " + forces.substr(1) : " + " + forces;
     }
   }
-  return left_text + " = " + right_text;
+  return sides.left_text + " = " + right_text;
+}
+
+std::optional<std::vector<EquationTerm>> Equations::equation_terms(int row) const {
+  check_row(*impl_, row, "equation_terms");
+  const Sides sides = sides_of(*impl_, row, Format::text);
+  const int own = impl_->free[static_cast<std::size_t>(row)];
+  std::vector<EquationTerm> terms;
+  if (!add_terms(*impl_, sides.left, false, own, terms) ||
+      !add_terms(*impl_, sides.right, true, own, terms) ||
+      !add_terms(*impl_, sides.constraint_force, true, own, terms)) {
+    return std::nullopt;
+  }
+  return terms;
 }
 
 int Equations::constraint_rows() const { return static_cast<int>(impl_->constraints.size()); }

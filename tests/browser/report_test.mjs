@@ -200,7 +200,14 @@ test('equations panel: the CLI\'s equations set as mathematics, broken to fit, w
       assert.deepEqual(units.L_lower, [1, 'm']);
       assert.deepEqual(units.g, [9.81, 'm/s²']);
     }
+    // Also with the numbers: one line per equation with a term list (the double pendulum's and
+    // the sleigh's have them all), its coefficients the symbols' values put in.
+    assert.equal(seen.withNumbers.length, seen.data.equations.filter((e) => e.terms).length, name);
+    assert.equal(seen.withNumbers.length, count, `${name}: every equation written with its numbers`);
+    // The panel in view first: charts drawn as they come near the window move what is below them.
     const handle = await page.$('#equations');
+    await handle.evaluate((e) => e.scrollIntoView());
+    await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done))));
     await handle.screenshot({ path: path.join(artifacts, `equations-${path.basename(name)}.png`) });
     assert.deepEqual(problems, [], name);
     await page.close();
@@ -1044,6 +1051,8 @@ test('live quarter car: a changed spring re-simulates in the page, as the CLI ru
   assert.ok(parameters.some((p) => p.path === 'bodies.body.mass' && p.unit === 'kg'));
   await (await page.$('#live')).screenshot({ path: path.join(artifacts, 'live-quarter_car-controls.png') });
   await screenshots(page, 'live-quarter_car-before');
+  const numbersBefore = (await page.evaluate(() => window.momentaReport.equations())).withNumbers[0].replace(/\s+/g, '');
+  for (const figure of ['1.13×106', '1.3×105']) assert.ok(numbersBefore.includes(figure), `${figure} in ${numbersBefore}`);
   const posesBefore = await page.evaluate(() => window.momentaReport.bodyPoint('body', [0, 0, 0], 0.5));
   await page.evaluate(() => window.momentaReport.setTime(0.75));
 
@@ -1053,9 +1062,20 @@ test('live quarter car: a changed spring re-simulates in the page, as the CLI ru
   assert.equal(status.error, false, status.text);
   assert.match(status.text, /1 number changed: re-simulated 2 s with dopri5 in \d+ ms in this page/);
   assert.match(await page.evaluate(() => location.hash), /live=forces.suspension.stiffness%3D90000/);
-  // The equations' symbols keep the file's values (not yet substituted), and the page says so.
-  assert.match(await page.evaluate(() => document.querySelector('#equations .stale')?.textContent ?? ''),
-               /the page's changes \(forces\.suspension\.stiffness = 90000 N\/m\) are not substituted here/);
+  // The equations keep their form; their symbols' values and the equations with the numbers are
+  // the changed model's: the wheel's row of Franklin's eq. 2.12, m1 ẍ + b (ẋ − ẏ) + ks (x − y) +
+  // kw (x − r) = 0, expanded — 20 ẍ + 9800 ẋ − 9800 ẏ + (ks + kw) x − ks y − kw r, with ks + kw
+  // = 1.09×10⁶ and ks = 90000 now (1.13×10⁶ and 1.3×10⁵ before).
+  const equations = await page.evaluate(() => window.momentaReport.equations());
+  const ksRow = equations.symbols.find((r) => r.cells[0].startsWith('ksuspension'));  // then its TeX annotation
+  assert.deepEqual([ksRow?.cells[1], ksRow?.changed], ['90000 (file: 130000)', true], JSON.stringify(equations.symbols));
+  assert.ok(equations.symbols.filter((r) => r.changed).length === 1, 'one value changed');
+  const wheel = equations.withNumbers[0].replace(/\s+/g, '');
+  for (const figure of ['20', '9800', '1.09×106', '90000', '106']) assert.ok(wheel.includes(figure), `${figure} in ${wheel}`);
+  assert.ok(!wheel.includes('1.13×106') && !wheel.includes('1.3×105'), wheel);
+  assert.ok(equations.notes.some((n) => n.includes("The values with the page's changes (forces.suspension.stiffness = 90000 N/m): the equations keep their form.")),
+    equations.notes.join(' | '));
+  assert.equal(await page.evaluate(() => document.querySelectorAll('#equations .stale').length), 0);
   await firstFrame(page);
   await screenshots(page, 'live-quarter_car-after');
   const posesAfter = await page.evaluate(() => window.momentaReport.bodyPoint('body', [0, 0, 0], 0.5));
@@ -1104,6 +1124,17 @@ test('live quarter car: a changed spring re-simulates in the page, as the CLI ru
   assert.match(refused.text, /^quarter_car\.yaml:\d+:\d+: bodies\[\d\]\.mass: must not be negative, got -5$/);
   assert.deepEqual(sorted(await page.evaluate(() => window.momentaReport.linear().poles)), sorted(linear.poles));
   await (await page.$('#live')).screenshot({ path: path.join(artifacts, 'live-quarter_car-refused.png') });
+  // The damper taken out: its symbol would leave the equations, another form — the panel keeps
+  // the file's equations and values and says why.
+  await page.evaluate(() => window.momentaReport.live.set({ 'bodies.body.mass': 375, 'forces.suspension.damping': 0 }));
+  const undampedStatus = await page.evaluate(() => window.momentaReport.live.status());
+  assert.equal(undampedStatus.error, false, undampedStatus.text);
+  const undamped = await page.evaluate(() => window.momentaReport.equations());
+  assert.ok(undamped.notes.some((n) => n.includes("change the equations' form (c_suspension is 0: the terms it multiplies leave the equations)")),
+    undamped.notes.join(' | '));
+  assert.ok(undamped.notes.some((n) => n.startsWith("The equations above with the symbols' values the file gives")), undamped.notes.join(' | '));
+  assert.equal(undamped.symbols.filter((r) => r.changed).length, 0);
+  await (await page.$('#equations')).screenshot({ path: path.join(artifacts, 'live-quarter_car-undamped-equations.png') });
   assert.deepEqual(problems, []);
   await page.close();
 });

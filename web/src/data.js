@@ -30,7 +30,7 @@ export function formatNumber(x, digits = 6) {
   if (x === 0) return '0';
   const magnitude = Math.abs(x);
   if (magnitude >= 1e-3 && magnitude < 1e6) return Number(x.toPrecision(digits)).toString();
-  return x.toExponential(digits - 1);
+  return Number(x.toPrecision(digits)).toExponential();  // 1e+6, not 1.0000000e+6
 }
 
 export function element(tag, attributes = {}, ...children) {

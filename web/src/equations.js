@@ -61,6 +61,46 @@ function inlineMath(latex) {
   return holder;
 }
 
+// A coefficient as LaTeX: four significant figures, powers of ten beyond 1e5 and below 1e-3.
+export function numberLatex(x) {
+  const magnitude = Math.abs(x);
+  if (magnitude >= 1e-3 && magnitude < 1e5) return Number(x.toPrecision(4)).toString();
+  const [mantissa, exponent] = x.toExponential(3).split('e');
+  const shown = Number(mantissa).toString();
+  return `${shown === '1' ? '' : `${shown} \\times `}10^{${Number(exponent)}}`;
+}
+
+// A term's coefficient at the parameters' `values`: Σ factor × Π value[p]^e.
+export function coefficientAt(c, values) {
+  let sum = 0;
+  for (const [factor, powers] of c) {
+    let product = factor;
+    for (let k = 0; k < powers.length; k += 2) product *= values[powers[k]] ** powers[k + 1];
+    sum += product;
+  }
+  return sum;
+}
+
+// One side of an equation with numbers: its terms' coefficients at `values`, a term whose
+// coefficient is 0 left out, a coefficient ±1 not written, a constant as its number; "0" when
+// nothing is left.
+function sideLatex(terms, values) {
+  let text = '';
+  for (const term of terms) {
+    const c = coefficientAt(term.c, values);
+    if (c === 0) continue;
+    const size = numberLatex(Math.abs(c));
+    const body = term.latex === '1' ? size : size === '1' ? term.latex : `${size}\\,${term.latex}`;
+    text += text === '' ? (c < 0 ? `-${body}` : body) : (c < 0 ? ` - ${body}` : ` + ${body}`);
+  }
+  return text || '0';
+}
+
+// An equation with its parameters' `values` put in (EquationTerm: equations_section.cpp).
+export function equationWithNumbers(terms, values) {
+  return `${sideLatex(terms.filter((t) => !t.right), values)} = ${sideLatex(terms.filter((t) => t.right), values)}`;
+}
+
 export function equationsSection(equations) {
   const section = element('section', { id: 'equations' }, element('h2', {}, 'Equations of motion'));
   if (!equations || !equations.available) {
@@ -72,6 +112,25 @@ export function equationsSection(equations) {
     'one equation per free coordinate, led by its own acceleration',
     equations.constraints.length ? ', with the constraint forces Gᵀλ on the right, then the constraints' : '', '.'));
   for (const e of equations.equations) section.append(math(e.latex));
+  // The page's numbers where its changes keep the equations' form, else the file's.
+  const numbers = equations.numbers;
+  const pageValues = numbers?.formChanges.length === 0;
+  // A value within 1e-12 of the file's is the file's (the engine's libm differs from the
+  // native build's in the last bit of sin and cos: a rotated part's inertia).
+  const values = equations.parameters.map((p, k) => {
+    const v = pageValues ? numbers.values[k] : p.value;
+    return Math.abs(v - p.value) <= 1e-12 * Math.abs(p.value) ? p.value : v;
+  });
+  if (equations.equations.some((e) => e.terms)) {
+    section.append(element('h3', {}, 'With the numbers'));
+    section.append(element('p', { class: 'note' },
+      `The equations above with the symbols' values ${pageValues ? 'the page\'s changes give' : 'the file gives'} (four figures, SI units)`,
+      equations.equations.some((e) => !e.terms)
+        ? '; an equation with a parameter inside a function (√(L² + …), sin(q − rest)) or of more than 40 terms is not written again.' : '.'));
+    const holder = element('div', { class: 'with-numbers' });
+    for (const e of equations.equations) if (e.terms) holder.append(math(equationWithNumbers(e.terms, values)));
+    section.append(holder);
+  }
   if (equations.constraints.length) {
     section.append(element('h3', {}, 'Constraints'));
     for (const c of equations.constraints) {
@@ -79,16 +138,27 @@ export function equationsSection(equations) {
     }
   }
   if (equations.parameters.length) {
-    const rows = equations.parameters.map((p) => [inlineMath(p.latex), formatNumber(p.value, 8), p.unit || '—']);
-    const values = table(['symbol', 'value', 'unit'], rows);
-    values.classList.add('symbols');
+    const rows = equations.parameters.map((p, k) => [inlineMath(p.latex),
+      formatNumber(values[k], 8) + (values[k] !== p.value ? ` (file: ${formatNumber(p.value, 8)})` : ''),
+      p.unit || '—']);
+    const symbols = table(['symbol', 'value', 'unit'], rows);
+    symbols.classList.add('symbols');
+    equations.parameters.forEach((p, k) => {
+      if (values[k] !== p.value) symbols.tBodies[0].rows[k].classList.add('changed');
+    });
     section.append(element('h3', {}, 'Symbols'));
-    // On a live page after a change: the equations hold for any values, these are the file's.
-    if (equations.changed?.length) {
+    // On a live page after a change: the changed model's values, where the equations keep their
+    // form; where they do not, the file's, and why.
+    if (equations.changed?.length && pageValues) {
+      section.append(element('p', { class: 'note' },
+        `The values with the page's changes (${equations.changed.join(', ')}): the equations keep their form.`));
+    } else if (equations.changed?.length) {
       section.append(element('p', { class: 'note stale' },
-        `The values as the file gives them: the page's changes (${equations.changed.join(', ')}) are not substituted here; the equations above hold for any values.`));
+        `The values as the file gives them: the page's changes (${equations.changed.join(', ')}) change the equations' form`,
+        numbers ? ` (${numbers.formChanges.join('; ')})` : '',
+        '. The equations above are the file\'s; momenta equations on the downloaded file derives the new ones.'));
     }
-    section.append(values);
+    section.append(symbols);
   }
   return { section };
 }

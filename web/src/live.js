@@ -62,7 +62,8 @@ export function liveSection(live, rerun, download) {
   }
   section.append(element('p', { class: 'note' },
     `Change a number of ${live.file}: the page runs the model again in its own engine and redraws `
-    + 'every panel. The equations keep the file\'s symbols; their values are the file\'s.'));
+    + 'every panel. The equations keep their symbols; their values, and the equations with the '
+    + 'numbers, follow where the change keeps the equations\' form.'));
   const overrides = {};
   const status = element('p', { class: 'live-status', role: 'status' }, '');
   const rows = new Map();

@@ -68,14 +68,20 @@ function simulationPage(app, data) {
     drawAllCharts: () => plots.charts.drawAll() + (linear.charts?.drawAll() ?? 0) + (campbell?.charts?.drawAll() ?? 0),
     campbell: () => data.campbell,
     linear: () => data.linear,
-    // What the equations panel shows: each set equation's text as the browser lays it out.
+    // What the equations panel shows: each set equation's text as the browser lays it out (in
+    // symbols, and with the numbers), the symbols' table as it reads.
     equations: () => ({
       data: data.equations,
-      shown: Array.from(document.querySelectorAll('#equations .equation')).map((e) => {
+      shown: Array.from(document.querySelectorAll('#equations > .equation')).map((e) => {
         const lines = Array.from(e.querySelectorAll('math'));
         return { text: lines.map((m) => m.textContent).join(' '), lines: lines.length,
           width: Math.max(...lines.map((m) => m.getBoundingClientRect().width)) };
       }),
+      withNumbers: Array.from(document.querySelectorAll('#equations .with-numbers .equation'))
+        .map((e) => Array.from(e.querySelectorAll('math')).map((m) => m.textContent).join(' ')),
+      symbols: Array.from(document.querySelectorAll('#equations table.symbols tbody tr')).map((r) => ({
+        cells: Array.from(r.cells).map((c) => c.textContent), changed: r.classList.contains('changed') })),
+      notes: Array.from(document.querySelectorAll('#equations .note')).map((n) => n.textContent),
       errors: document.querySelectorAll('#equations .katex-error, #equations merror').length,
       panelWidth: document.querySelector('#equations')?.getBoundingClientRect().width ?? 0,
     }),
@@ -137,11 +143,16 @@ function livePage(app, data) {
     const list = listOf(overrides);
     const next = JSON.parse((await engine).reportData(text, file, list));
     // The native page's equations (the engine has no symbolic layer), told which numbers the
-    // page has changed: their symbols' values below are still the file's.
+    // page has changed and, where the engine finds that they keep their form, their symbols'
+    // values in the changed model (report::equation_numbers).
     next.equations = data.equations && { ...data.equations, changed: list.map(({ path, value }) => {
       const unit = data.live.parameters.find((p) => p.path === path)?.unit;
       return `${path} = ${value}${unit ? ` ${unit}` : ''}`;
     }) };
+    if (data.equations?.available) {
+      next.equations.numbers = (await engine).equationNumbers(text, file, list,
+        data.equations.parameters, data.equations.form);
+    }
     next.live = data.live;
     show(next);
     lastMilliseconds = performance.now() - started;

@@ -14,6 +14,7 @@
 #include "momenta/io/model_file.hpp"
 #include "momenta/io/part_file.hpp"
 #include "momenta/math/types.hpp"
+#include "momenta/model/parameter_source.hpp"
 #include "momenta/simulate/simulation.hpp"
 
 namespace momenta::report {
@@ -77,6 +78,30 @@ std::string simulation_report_html(const SimulationRun& run, const LinearSetting
 /// The data simulation_report_html embeds in its page, as JSON text: what the report's in-page
 /// engine (wasm/) computes again for a changed model, and what its tests compare with the page's.
 std::string simulation_report_json(const SimulationRun& run, const LinearSettings& linear = {});
+
+/// The equations a report embeds, as its page's engine gives their symbols the values of a model
+/// its reader changed: each symbol by name with its sources (model/parameter_source.hpp), and the
+/// numbers the form depends on that no symbol stands for (symbolic::FormNumber).
+struct EquationSymbolSources {
+  std::string name;
+  std::vector<model::ParameterSource> sources;
+};
+struct EquationFormNumber {
+  std::string name;
+  model::ParameterSource source;
+  double value = 0.0;
+};
+/// Each symbol's value in the changed model, and why the equations change form ([] when they
+/// keep it): a symbol's value 0 or its sign turned (a length along an axis), symbols one name
+/// stands for no longer equal, or a form number changed. Where the form changes the equations
+/// hold for the file alone, whatever the values.
+struct EquationNumbers {
+  std::vector<double> values;
+  std::vector<std::string> form_changes;
+};
+EquationNumbers equation_numbers(const model::Model& model,
+                                 const std::vector<EquationSymbolSources>& symbols,
+                                 const std::vector<EquationFormNumber>& form);
 
 /// The report page of a part: the composite with its centre of mass, principal axes and
 /// equivalent inertia ellipsoid drawn over its parts (holes shown as holes), the table of parts,

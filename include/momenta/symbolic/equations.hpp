@@ -45,11 +45,14 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "momenta/math/types.hpp"
 #include "momenta/model/model.hpp"
+#include "momenta/model/parameter_source.hpp"
 
 namespace momenta::symbolic {
 
@@ -87,6 +90,33 @@ struct Parameter {
   double value = 0.0;
   std::string latex;
   std::string unit;
+  /// Where the value comes from (model/parameter_source.hpp): the model's numbers the symbol
+  /// stands for — one, or several the `names` give one symbol (their values agree).
+  std::vector<model::ParameterSource> sources;
+};
+
+/// A number of the model the equations' form depends on though no symbol stands for it: a
+/// parameter that is 0 (the terms it would multiply are left out), a parameter kept as a number,
+/// the size of a load along a signal's direction where it is 1 (the load is u along it), a
+/// component of gravity's direction. With another value the equations are another form.
+struct FormNumber {
+  std::string name;  ///< momenta's name of it (m_cart, c_bob_x, "gravity's direction")
+  model::ParameterSource source;
+  double value = 0.0;
+};
+
+/// A term of an equation with its parameters as numbers: a coefficient, the polynomial in the
+/// parameters Σ factor × Π pᵢ^eᵢ over `coefficient` (i indexes Equations::parameters()), times
+/// `latex`, the rest of the term (accelerations, rates, coordinates, their functions, inputs,
+/// multipliers; "1" for a constant), on the equation's left or right side.
+struct EquationTerm {
+  struct Monomial {
+    double factor = 1.0;
+    std::vector<std::pair<int, int>> powers;  ///< (parameter index, exponent)
+  };
+  std::vector<Monomial> coefficient;
+  std::string latex;
+  bool right = false;
 };
 
 /// A model's equations of motion in symbols (see the file comment). Holds GiNaC expressions
@@ -109,6 +139,8 @@ class Equations {
   const std::vector<std::string>& input_names() const;
   /// The parameters kept as symbols, with the model's values.
   const std::vector<Parameter>& parameters() const;
+  /// The numbers the form depends on that no symbol stands for (FormNumber).
+  const std::vector<FormNumber>& form_numbers() const;
 
   /// Entries as text in `format`: M (free × free), C v, g, Q (each of size free), and the
   /// equation of each free speed, "M v̇ + C v + g = Q" written out and collected by acceleration.
@@ -117,6 +149,12 @@ class Equations {
   std::string gravity(int row, Format format) const;
   std::string generalized_force(int row, Format format) const;
   std::string equation(int row, Format format) const;
+  /// The equation of free speed `row` as its terms with their coefficients in the parameters
+  /// (EquationTerm): the sides `equation` prints, expanded, each term's parameters taken out and
+  /// the terms that share the rest added — the row's own acceleration first, then the other
+  /// accelerations. Nothing where a parameter is not a factor of its term (inside a function,
+  /// as √(L² + …) or sin(q − rest)). A page evaluates the coefficients at other values.
+  std::optional<std::vector<EquationTerm>> equation_terms(int row) const;
 
   /// The Newton–Euler form (--form newton-euler): for each body, Newton's and Euler's equations
   /// in the body's own axes, ΣF = m a_G and ΣM_G = Ī α + ω × Ī ω (Euler's equations; the body's
