@@ -16,7 +16,7 @@
 //                        // the data `momenta report` embeds in its page (less its equations)
 //     engine.equationNumbers(modelText, "double_pendulum.yaml", overrides,
 //                            data.equations.parameters, data.equations.form)
-//                        // {values, formChanges}: the symbols' values in the changed model
+//                        // {values, zeroed, formChanges}: the symbols' values in the changed model
 //     engine.numberAt(modelText, "double_pendulum.yaml", "bodies.upper.mass")   // 1 (or null)
 //     engine.textWith(modelText, "double_pendulum.yaml", overrides)  // the file, numbers changed
 //
@@ -149,7 +149,7 @@ model::ParameterSource source_of(const val& item) {
 
 // The report's equations' symbols given the values of the file with the overrides, and whether
 // they keep their form (report::equation_numbers): `parameters` and `form` as the report's data
-// holds them; {values, formChanges}.
+// holds them; {values, zeroed, formChanges}.
 val equation_numbers(const std::string& text, const std::string& file_name, const val& overrides,
                      const val& parameters, const val& form) {
   try {
@@ -172,10 +172,14 @@ val equation_numbers(const std::string& text, const std::string& file_name, cons
     val out = val::object();
     val values = val::array();
     for (double v : result.values) values.call<void>("push", v);
-    val changes = val::array();
-    for (const std::string& c : result.form_changes) changes.call<void>("push", c);
+    const auto strings = [](const std::vector<std::string>& list) {
+      val array = val::array();
+      for (const std::string& item : list) array.call<void>("push", item);
+      return array;
+    };
     out.set("values", values);
-    out.set("formChanges", changes);
+    out.set("zeroed", strings(result.zeroed));
+    out.set("formChanges", strings(result.form_changes));
     return out;
   } catch (const std::exception& e) {
     throw_to_javascript(e);

@@ -47,8 +47,7 @@ EquationNumbers equation_numbers(const model::Model& model,
     const double value = model::parameter_value(model, first);
     out.values.push_back(value);
     if (value == 0.0) {
-      out.form_changes.push_back(
-          fmt::format("{} is 0: the terms it multiplies leave the equations", symbol.name));
+      out.zeroed.push_back(symbol.name);
     } else if (first.magnitude && model::parameter_signed_value(model, first) * first.sign < 0) {
       out.form_changes.push_back(
           fmt::format("{} lies the other way along its axis: the signs change", symbol.name));

@@ -1124,16 +1124,20 @@ test('live quarter car: a changed spring re-simulates in the page, as the CLI ru
   assert.match(refused.text, /^quarter_car\.yaml:\d+:\d+: bodies\[\d\]\.mass: must not be negative, got -5$/);
   assert.deepEqual(sorted(await page.evaluate(() => window.momentaReport.linear().poles)), sorted(linear.poles));
   await (await page.$('#live')).screenshot({ path: path.join(artifacts, 'live-quarter_car-refused.png') });
-  // The damper taken out: its symbol would leave the equations, another form — the panel keeps
-  // the file's equations and values and says why.
+  // The damper taken out: its symbol is 0, its terms leave the equations with the numbers (they
+  // still hold: the terms above are 0), and the panel says so.
   await page.evaluate(() => window.momentaReport.live.set({ 'bodies.body.mass': 375, 'forces.suspension.damping': 0 }));
   const undampedStatus = await page.evaluate(() => window.momentaReport.live.status());
   assert.equal(undampedStatus.error, false, undampedStatus.text);
   const undamped = await page.evaluate(() => window.momentaReport.equations());
-  assert.ok(undamped.notes.some((n) => n.includes("change the equations' form (c_suspension is 0: the terms it multiplies leave the equations)")),
+  assert.ok(undamped.notes.some((n) => n.includes('c_suspension is 0 — the terms above that hold it are 0, and the equations with the numbers leave them out.')),
     undamped.notes.join(' | '));
-  assert.ok(undamped.notes.some((n) => n.startsWith("The equations above with the symbols' values the file gives")), undamped.notes.join(' | '));
-  assert.equal(undamped.symbols.filter((r) => r.changed).length, 0);
+  assert.ok(undamped.notes.some((n) => n.startsWith("The equations above with the symbols' values the page's changes give")), undamped.notes.join(' | '));
+  assert.equal(undamped.symbols.filter((r) => r.changed).length, 2, 'ks and c changed');
+  const undampedWheel = undamped.withNumbers[0].replace(/\s+/g, '');
+  assert.ok(!undampedWheel.includes('9800') && undampedWheel.includes('1.09×106'), undampedWheel);
+  await page.evaluate(() => window.momentaReport.drawAllCharts());  // the layout settled above it
+  await page.evaluate(() => new Promise((done) => requestAnimationFrame(() => done())));
   await (await page.$('#equations')).screenshot({ path: path.join(artifacts, 'live-quarter_car-undamped-equations.png') });
   assert.deepEqual(problems, []);
   await page.close();

@@ -149,7 +149,12 @@ export function equationsSection(equations) {
     section.append(element('h3', {}, 'Symbols'));
     // On a live page after a change: the changed model's values, where the equations keep their
     // form; where they do not, the file's, and why.
-    if (equations.changed?.length && pageValues) {
+    if (equations.changed?.length && pageValues && numbers.zeroed.length) {
+      section.append(element('p', { class: 'note' },
+        `The values with the page's changes (${equations.changed.join(', ')}): ${numbers.zeroed.join(', ')} `
+        + `${numbers.zeroed.length > 1 ? 'are' : 'is'} 0 — the terms above that hold ${numbers.zeroed.length > 1 ? 'them' : 'it'} `
+        + 'are 0, and the equations with the numbers leave them out.'));
+    } else if (equations.changed?.length && pageValues) {
       section.append(element('p', { class: 'note' },
         `The values with the page's changes (${equations.changed.join(', ')}): the equations keep their form.`));
     } else if (equations.changed?.length) {

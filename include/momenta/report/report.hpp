@@ -91,12 +91,14 @@ struct EquationFormNumber {
   model::ParameterSource source;
   double value = 0.0;
 };
-/// Each symbol's value in the changed model, and why the equations change form ([] when they
-/// keep it): a symbol's value 0 or its sign turned (a length along an axis), symbols one name
+/// Each symbol's value in the changed model; the symbols that are 0 there (their terms leave the
+/// equations, which hold with the 0 put in: `zeroed`); and why the equations change form
+/// otherwise ([] when they keep it): a length's sign turned along its axis, symbols one name
 /// stands for no longer equal, or a form number changed. Where the form changes the equations
 /// hold for the file alone, whatever the values.
 struct EquationNumbers {
   std::vector<double> values;
+  std::vector<std::string> zeroed;
   std::vector<std::string> form_changes;
 };
 EquationNumbers equation_numbers(const model::Model& model,
