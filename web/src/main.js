@@ -150,8 +150,13 @@ function livePage(app, data) {
       return `${path} = ${value}${unit ? ` ${unit}` : ''}`;
     }) };
     if (data.equations?.available) {
-      next.equations.numbers = (await engine).equationNumbers(text, file, list,
-        data.equations.parameters, data.equations.form);
+      try {
+        next.equations.numbers = (await engine).equationNumbers(text, file, list,
+          data.equations.parameters, data.equations.form);
+      } catch (error) {
+        // The run stands; the equations keep the file's values and say why.
+        next.equations.numbers = { values: [], zeroed: [], formChanges: [`the page could not give the symbols values: ${error.message}`] };
+      }
     }
     next.live = data.live;
     show(next);
