@@ -121,8 +121,9 @@ json equations_json(const io::ModelFile& file) {
     json parameters = json::array();
     std::vector<int> listed;
     for (const symbolic::Parameter& p : e.parameters()) {
-      listed.push_back(used.count(p.name) == 0 ? -1 : static_cast<int>(parameters.size()));
-      if (used.count(p.name) == 0) continue;
+      const bool shown_here = used.count(p.name) != 0;
+      listed.push_back(shown_here ? static_cast<int>(parameters.size()) : -1);
+      if (!shown_here) continue;
       json sources = json::array();
       for (const model::ParameterSource& source : p.sources) sources.push_back(source_json(source));
       parameters.push_back({{"name", p.name},

@@ -18,7 +18,6 @@
 #include "equations_impl.hpp"
 #include "expression_algebra.hpp"
 #include "momenta/common/error.hpp"
-#include "momenta/common/number_text.hpp"
 #include "momenta/inertia/unit_moments.hpp"
 #include "momenta/model/units.hpp"
 
