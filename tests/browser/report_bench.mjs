@@ -7,11 +7,20 @@
 //
 // Targets (issue 10): interactive within 2 s; ≥ 30 frames/s for 20 bodies; the 10 s double
 // pendulum ≤ 3 MB. Issue 29: the MJCF humanoid interactive within 2 s. Prints a table and writes it as JSON to MOMENTA_BENCH_OUT when set.
+//
+// The live pages (issue 57; a build with the in-page engine): for each, the median over
+// `MOMENTA_OPENS` changes of its first number (a tenth up, then back, in turn) of the engine's
+// run alone (`live.simulateMilliseconds`) and of the whole change — the page's run, its report
+// data, the equations' numbers and every panel redrawn, to the next frame — beside the native
+// run's wall time (`momenta simulate`'s summary, median of as many runs). Aims: the double
+// pendulum's 10 s at rtol 1e-10 ≤ 150 ms in the page; a change to the redrawn page ≤ 100 ms up
+// to 10 degrees of freedom.
 
 import fs from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import { chainModel, examples, framesPerSecond, launchBrowser, openReport, run } from './pages.mjs';
+import { spawnSync } from 'node:child_process';
+import { chainModel, examples, framesPerSecond, launchBrowser, momenta, openReport, run } from './pages.mjs';
 
 const opens = Number(process.env.MOMENTA_OPENS || 7);
 const work = fs.mkdtempSync(path.join(os.tmpdir(), 'momenta-report-bench-'));
@@ -24,10 +33,37 @@ const pages = [
   ['MJCF humanoid, 2 s', path.join(examples, '..', 'tests', 'data', 'models', 'mjcf', 'humanoid.xml'), ['--duration', '2']],
 ];
 
+// The live pages: the double pendulum as the aim states it (10 s, dopri5 at rtol 1e-10), and
+// three bundled examples as they are.
+function doublePendulumAtTolerance(directory) {
+  const text = fs.readFileSync(path.join(examples, 'double_pendulum.yaml'), 'utf8')
+    .replace(/^simulation:\n(?:[ \t].*(?:\n|$))*/m,
+      'simulation:\n  duration: 10.0\n  integrator: dopri5\n  rtol: 1.0e-10\n  atol: 1.0e-12\n');
+  if (!text.includes('rtol: 1.0e-10')) throw new Error('double_pendulum.yaml: no simulation section to change');
+  const model = path.join(directory, 'double_pendulum.yaml');
+  fs.writeFileSync(model, text);
+  return model;
+}
+const livePages = [
+  ['double pendulum, rtol 1e-10', doublePendulumAtTolerance(work)],
+  ['quarter car', path.join(examples, 'quarter_car.yaml')],
+  ['heavy top', path.join(examples, 'heavy_top.yaml')],
+  ['tennis racket (free body)', path.join(examples, 'free_body_tennis_racket.yaml')],
+];
+
 const median = (values) => { const s = [...values].sort((a, b) => a - b); return s[Math.floor(s.length / 2)]; };
+
+// The native run's wall time, as `momenta simulate` prints it in its summary (stderr), in ms.
+function nativeMilliseconds(model) {
+  const result = spawnSync(momenta, ['simulate', model, '-o', path.join(work, 'native.csv'), '--force'], { encoding: 'utf8' });
+  const wall = /wall time\s+([0-9.e+-]+) s/.exec(result.stderr);
+  if (result.status !== 0 || !wall) throw new Error(`momenta simulate ${model}: ${result.stderr}`);
+  return 1000 * Number(wall[1]);
+}
 
 const browser = await launchBrowser();
 const results = [];
+const liveResults = [];
 try {
   // The browser's own start (its processes, the software GL's first programs) is not a page's.
   const warm = path.join(work, 'warm.html');
@@ -48,6 +84,38 @@ try {
     results.push({ page: name, bytes: fs.statSync(file).size, interactive_ms_median: median(times),
       interactive_ms_min: Math.min(...times), interactive_ms_max: Math.max(...times), frames_per_second: fps });
   }
+  for (const [name, model] of livePages) {
+    if (!fs.existsSync(model)) continue;
+    const file = path.join(work, `live_${name.replace(/\W+/g, '_')}.html`);
+    run('report', model, '-o', file, '-q');
+    const { page, problems } = await openReport(browser, file);
+    if (problems.length) throw new Error(`${name}: ${problems.join('; ')}`);
+    const live = await page.evaluate(async () => {
+      const hook = window.momentaReport.live;
+      await hook.ready();
+      return hook.parameters().length ? hook.parameters()[0] : null;
+    });
+    if (!live) { await page.close(); continue; }
+    const simulate = [], change = [];
+    for (let k = 0; k < opens; k++) {
+      const value = k % 2 === 0 ? live.value * 1.1 : live.value;
+      const values = { [live.path]: value };
+      simulate.push(await page.evaluate((v) => window.momentaReport.live.simulateMilliseconds(v), values));
+      change.push(await page.evaluate(async (v) => {
+        const started = performance.now();
+        await window.momentaReport.live.set(v);
+        await new Promise((done) => requestAnimationFrame(() => setTimeout(done, 0)));
+        return performance.now() - started;
+      }, values));
+      if ((await page.evaluate(() => window.momentaReport.live.status())).error) throw new Error(`${name}: the change failed`);
+    }
+    const dof = await page.evaluate(() => window.momentaReport.summary().dof);
+    await page.close();
+    const native = [];
+    for (let k = 0; k < opens; k++) native.push(nativeMilliseconds(model));
+    liveResults.push({ page: name, dof, bytes: fs.statSync(file).size, simulate_ms_median: median(simulate), change_ms_median: median(change),
+      change_ms_min: Math.min(...change), change_ms_max: Math.max(...change), native_ms_median: median(native) });
+  }
 } finally {
   await browser.close();
   fs.rmSync(work, { recursive: true, force: true });
@@ -59,4 +127,12 @@ for (const r of results) {
   console.log(`${r.page.padEnd(24)}  ${(r.bytes / 1048576).toFixed(2).padStart(9)}   ${String(r.interactive_ms_median).padStart(10)} (${r.interactive_ms_min}–${r.interactive_ms_max})`.padEnd(70)
     + `${r.frames_per_second.toFixed(1).padStart(8)}`);
 }
-if (process.env.MOMENTA_BENCH_OUT) fs.writeFileSync(process.env.MOMENTA_BENCH_OUT, JSON.stringify(results, null, 2));
+if (liveResults.length) {
+  console.log(`\nlive pages: medians of ${opens} changes of the first number (a tenth up, then back)`);
+  console.log('page                          size (MB)   engine run ms   change to redrawn page: median (min–max) ms   native run ms   engine/native');
+  for (const r of liveResults) {
+    console.log(`${`${r.page}, ${r.dof} dof`.padEnd(28)}  ${(r.bytes / 1048576).toFixed(2).padStart(9)}   ${r.simulate_ms_median.toFixed(1).padStart(13)}   ${r.change_ms_median.toFixed(0).padStart(10)} (${r.change_ms_min.toFixed(0)}–${r.change_ms_max.toFixed(0)})`.padEnd(94)
+      + `${r.native_ms_median.toFixed(1).padStart(13)}   ${(r.simulate_ms_median / r.native_ms_median).toFixed(2).padStart(13)}`);
+  }
+}
+if (process.env.MOMENTA_BENCH_OUT) fs.writeFileSync(process.env.MOMENTA_BENCH_OUT, JSON.stringify({ pages: results, live: liveResults }, null, 2));

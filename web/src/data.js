@@ -9,12 +9,46 @@ export function readData() {
 export function decode(text) {
   if (typeof text !== 'string') return text;
   const kind = text.slice(0, 4);
-  const binary = atob(text.slice(4));
-  const bytes = new Uint8Array(binary.length);
-  for (let i = 0; i < binary.length; i++) bytes[i] = binary.charCodeAt(i);
+  const bytes = base64Bytes(text, 4);
   if (kind === 'f64:') return new Float64Array(bytes.buffer);
   if (kind === 'f32:') return new Float32Array(bytes.buffer);
   throw new Error(`unknown array encoding ${kind}`);
+}
+
+// Base64 (RFC 4648, padded) from `start` of `text` to bytes, by table: atob and a byte-by-byte
+// copy of its string took a live page's change 50 ms for the quarter car's 1.7 MB of arrays.
+const kBase64Digit = (() => {
+  const table = new Int8Array(128).fill(-1);
+  const digits = 'ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/';
+  for (let i = 0; i < digits.length; i++) table[digits.charCodeAt(i)] = i;
+  return table;
+})();
+function base64Bytes(text, start) {
+  const length = text.length - start;
+  if (length % 4 !== 0) throw new Error('base64: the length is not a multiple of 4');
+  const padding = length === 0 ? 0 : (text[text.length - 1] === '=') + (text[text.length - 2] === '=');
+  const bytes = new Uint8Array((length / 4) * 3 - padding);
+  const digit = (i) => {
+    const code = text.charCodeAt(i);
+    const value = code < 128 ? kBase64Digit[code] : -1;
+    if (value < 0) throw new Error(`base64: '${text[i]}' at ${i - start} is not a digit`);
+    return value;
+  };
+  let out = 0;
+  const whole = padding ? length - 4 : length;
+  for (let i = start; i < start + whole; i += 4) {
+    const v = (digit(i) << 18) | (digit(i + 1) << 12) | (digit(i + 2) << 6) | digit(i + 3);
+    bytes[out++] = v >> 16;
+    bytes[out++] = (v >> 8) & 255;
+    bytes[out++] = v & 255;
+  }
+  if (padding) {
+    const i = start + whole;
+    const v = (digit(i) << 18) | (digit(i + 1) << 12) | (padding === 1 ? digit(i + 2) << 6 : 0);
+    bytes[out++] = v >> 16;
+    if (padding === 1) bytes[out++] = (v >> 8) & 255;
+  }
+  return bytes;
 }
 
 // x as text shows it: 0 where |x| ≤ 1e-12 of `scale`, the scale of the computation it comes from

@@ -50,11 +50,10 @@ function simulationPage(app, data) {
   requestAnimationFrame(loop);
   return {
     kind: 'simulation',
-    // Stops the clock and lets the view's WebGL context go (the live page draws a new one).
+    // Stops the clock and lets the view go (its renderer serves the live page's next one).
     dispose: () => {
       disposed = true;
-      motion.viewer.renderer?.dispose();
-      motion.viewer.renderer?.forceContextLoss();
+      motion.viewer.release();
     },
     setTime: (t) => { motion.playMode(null); timeline.set(t); draw(performance.now()); },
     time: () => timeline.time,

@@ -18,6 +18,30 @@ function makeRenderer() {
   return renderer;
 }
 
+// What a scene holds on the graphics card: its geometries, materials and their textures.
+function disposeScene(scene) {
+  scene.traverse((object) => {
+    object.geometry?.dispose();
+    for (const material of [object.material ?? []].flat()) {
+      for (const value of Object.values(material)) if (value?.isTexture) value.dispose();
+      material.dispose();
+    }
+  });
+}
+
+// One renderer for the page's life. The live page redraws by building its panels anew; a new
+// WebGL context each time, its shaders compiled again, cost a change 200–250 ms of a software
+// rasterizer's time (losing the old context alone 150 ms). A released view hands its renderer
+// on with its scene, which the next view frees once it has drawn with the same shaders (freed
+// first, the shaders would go with the materials that use them).
+let spare = null;
+function takeRenderer() {
+  if (!spare) return { renderer: makeRenderer(), leftover: null };
+  const taken = spare;
+  spare = null;
+  return taken;
+}
+
 // The eight corners of a THREE.Box3, as [x, y, z] arrays.
 export function boxCorners(box) {
   return [0, 1].flatMap((i) => [0, 1].flatMap((j) => [0, 1].map((k) => [
@@ -32,7 +56,9 @@ export class Viewer {
     this.camera = new THREE.PerspectiveCamera(40, 1, length * 1e-3, length * 1e3);
     this.camera.up.set(...up);
     this.container = container;
-    this.renderer = makeRenderer();
+    const { renderer, leftover } = takeRenderer();
+    this.renderer = renderer;
+    this.leftover = leftover;
     // Without WebGL (a locked-down browser, a remote desktop) the view says so and everything
     // else on the page — the plots, the linear analysis, the numbers — works as before.
     const surface = this.renderer ? this.renderer.domElement
@@ -58,7 +84,29 @@ export class Viewer {
     this.scene.add(this.grid);
     this.scene.add(new THREE.AxesHelper(length * 0.3));
     this.resize();
-    new ResizeObserver(() => this.resize()).observe(container);
+    this.resizeObserver = new ResizeObserver(() => this.resize());
+    this.resizeObserver.observe(container);
+  }
+
+  // Lets the view go: its canvas leaves the page and its renderer waits for the next view (the
+  // live page's redraw); its scene is freed when that view has drawn. The view draws no more.
+  release() {
+    this.resizeObserver.disconnect();
+    this.controls.dispose();
+    if (this.leftover) disposeScene(this.leftover);
+    if (this.renderer) {
+      this.renderer.domElement.remove();
+      if (spare) {  // a renderer no view took: let it go whole
+        disposeScene(spare.leftover);
+        spare.renderer.dispose();
+        spare.renderer.forceContextLoss();
+      }
+      spare = { renderer: this.renderer, leftover: this.scene };
+    } else {
+      disposeScene(this.scene);
+    }
+    this.renderer = null;
+    this.leftover = null;
   }
 
   // Looks at the box around the points so that its bounding sphere fills the view with a margin:
@@ -182,6 +230,10 @@ export class Viewer {
     if (!this.stale || !this.renderer) return false;
     this.renderer.render(this.scene, this.camera);
     this.stale = false;
+    if (this.leftover) {
+      disposeScene(this.leftover);
+      this.leftover = null;
+    }
     return true;
   }
 }
