@@ -39,7 +39,30 @@ std::string base64(const unsigned char* bytes, std::size_t size) {
 
 static_assert(std::endian::native == std::endian::little, "the page reads little-endian bytes");
 
+thread_local ArraysApart* arrays_apart = nullptr;
+
 }  // namespace
+
+ArraysApart::ArraysApart(std::string marker) : marker_(std::move(marker)), outer_(arrays_apart) {
+  if (marker_.empty()) throw InvalidArgument("report data: an empty marker for its arrays");
+  for (const char c : marker_) {
+    if (c == '"' || c == '\\' || static_cast<unsigned char>(c) < 0x20) {
+      throw InvalidArgument("report data: its arrays' marker holds a character JSON escapes");
+    }
+  }
+  arrays_apart = this;
+}
+
+ArraysApart::~ArraysApart() { arrays_apart = outer_; }
+
+std::string ArraysApart::put(std::span<const double> values, bool single) {
+  ReportArray array{{values.begin(), values.end()}, single};
+  if (single) {
+    for (double& v : array.values) v = static_cast<float>(v);
+  }
+  arrays_.push_back(std::move(array));
+  return marker_ + std::to_string(arrays_.size() - 1);
+}
 
 std::string escape_html(const std::string& text) {
   std::string out;
@@ -65,11 +88,13 @@ std::string escape_html(const std::string& text) {
 }
 
 std::string encode_f64(std::span<const double> values) {
+  if (arrays_apart != nullptr) return arrays_apart->put(values, false);
   return "f64:" +
          base64(reinterpret_cast<const unsigned char*>(values.data()), values.size_bytes());
 }
 
 std::string encode_f32(std::span<const double> values) {
+  if (arrays_apart != nullptr) return arrays_apart->put(values, true);
   std::vector<float> narrow(values.begin(), values.end());
   return "f32:" + base64(reinterpret_cast<const unsigned char*>(narrow.data()),
                          narrow.size() * sizeof(float));

@@ -13,6 +13,7 @@
 #include "momenta/io/part_file.hpp"
 #include "momenta/math/types.hpp"
 #include "momenta/model/model.hpp"
+#include "momenta/report/report.hpp"
 
 namespace momenta::report::detail {
 
@@ -22,6 +23,26 @@ using json = nlohmann::ordered_json;
 std::string encode_f64(std::span<const double> values);
 /// "f32:<base64>" of the values rounded to float32 (for what is only drawn).
 std::string encode_f32(std::span<const double> values);
+
+/// While one lives on this thread, encode_f64 and encode_f32 set the arrays apart instead of
+/// writing them as text: each becomes `marker` followed by its index in arrays() (report::
+/// simulation_report_parts; the in-page engine hands them over as typed arrays). Scoped, and
+/// nested ones restore the outer one.
+class ArraysApart {
+ public:
+  explicit ArraysApart(std::string marker);
+  ~ArraysApart();
+  ArraysApart(const ArraysApart&) = delete;
+  ArraysApart& operator=(const ArraysApart&) = delete;
+
+  std::string put(std::span<const double> values, bool single);
+  std::vector<ReportArray> take() { return std::move(arrays_); }
+
+ private:
+  std::string marker_;
+  std::vector<ReportArray> arrays_;
+  ArraysApart* outer_;
+};
 
 json vec_json(const Vec3& v);
 /// A 3 × 3 matrix as 9 numbers, row by row.

@@ -195,4 +195,11 @@ std::string simulation_report_json(const SimulationRun& run, const LinearSetting
       .dump(-1, ' ', false, detail::json::error_handler_t::replace);
 }
 
+ReportDataParts simulation_report_parts(const SimulationRun& run, const std::string& marker,
+                                        const LinearSettings& linear) {
+  detail::ArraysApart apart(marker);
+  std::string text = simulation_report_json(run, linear);
+  return {std::move(text), apart.take()};
+}
+
 }  // namespace momenta::report

@@ -14,7 +14,7 @@
 // data, the equations' numbers and every panel redrawn, to the next frame — beside the native
 // run's wall time (`momenta simulate`'s summary, median of as many runs). Aims: the double
 // pendulum's 10 s at rtol 1e-10 ≤ 150 ms in the page; a change to the redrawn page ≤ 100 ms up
-// to 10 degrees of freedom.
+// to 10 degrees of freedom. MOMENTA_BENCH_LIVE_ONLY=1 measures the live pages alone.
 
 import fs from 'node:fs';
 import os from 'node:os';
@@ -69,7 +69,7 @@ try {
   const warm = path.join(work, 'warm.html');
   run('report', path.join(examples, 'pendulum.yaml'), '--duration', '1', '-o', warm, '-q');
   (await openReport(browser, warm)).page.close();
-  for (const [name, model, extra] of pages) {
+  for (const [name, model, extra] of process.env.MOMENTA_BENCH_LIVE_ONLY ? [] : pages) {
     const file = path.join(work, `${name.replace(/\W+/g, '_')}.html`);
     run('report', model, '-o', file, '-q', ...extra);
     const times = [];

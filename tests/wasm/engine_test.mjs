@@ -38,6 +38,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
+import { dataWithArrays } from '../../web/src/data.js';
 
 const require = createRequire(import.meta.url);
 const source = process.env.MOMENTA_SOURCE_DIR;
@@ -292,6 +293,46 @@ for (const name of ['double_pendulum', 'quarter_car', 'cart_pendulum_lqr', 'slee
     assert.equal(page.plots.time, native.plots.time);
   });
 }
+
+// The live page takes the report data with its long arrays apart (reportDataParts): revived as
+// the page revives it (web/src/data.js), it is reportData's data, each base64 array the same
+// bytes as the typed array standing in its place (float32 ones rounded alike), all else equal.
+test('the report data with its arrays apart is reportData\'s, bit for bit', () => {
+  const marker = '@array-test-';
+  const same = (whole, apart, where) => {
+    if (typeof whole === 'string' && /^f(32|64):/.test(whole)) {
+      assert.ok(ArrayBuffer.isView(apart), `${where}: a typed array`);
+      assert.equal(apart instanceof Float32Array ? 'f32:' : 'f64:', whole.slice(0, 4), where);
+      assert.equal(Buffer.from(apart.buffer, apart.byteOffset, apart.byteLength).toString('base64'),
+                   whole.slice(4), where);
+      return 1;
+    }
+    if (whole && typeof whole === 'object') {
+      assert.deepEqual(Object.keys(apart), Object.keys(whole), where);
+      return Object.keys(whole).reduce((n, key) => n + same(whole[key], apart[key], `${where}.${key}`), 0);
+    }
+    assert.equal(apart, whole, where);
+    return 0;
+  };
+  for (const name of ['quarter_car', 'heavy_top', 'cart_pendulum_lqr', 'constraints/four_bar_on_a_stop']) {
+    const modelPath = path.join(source, 'examples', `${name}.yaml`);
+    const text = readFileSync(modelPath, 'utf8');
+    const file = path.basename(modelPath);
+    const whole = JSON.parse(engine.reportData(text, file, []));
+    const parts = engine.reportDataParts(text, file, [], marker);
+    const apart = dataWithArrays(parts.json, parts.arrays, marker);
+    delete whole.summary.wall_seconds;
+    delete apart.summary.wall_seconds;
+    const arrays = same(whole, apart, name);
+    assert.equal(arrays, parts.arrays.length, `${name}: every array set apart stands in the data once`);
+    assert.ok(arrays >= 5, `${name}: ${arrays} arrays`);
+    assert.ok(!/"f(32|64):/.test(parts.json), `${name}: no base64 left in the text`);
+  }
+  const text = readFileSync(path.join(source, 'examples', 'pendulum.yaml'), 'utf8');
+  assert.throws(() => engine.reportDataParts(text, 'pendulum.yaml', [], ''), /an empty marker/);
+  assert.throws(() => engine.reportDataParts(text, 'pendulum.yaml', [], 'a"b'), /a character JSON escapes/);
+  assert.throws(() => dataWithArrays('{"x": "@array-test-3"}', [], marker), /no array 3 of 0/);
+});
 
 // What the live page offers (src/report/live_section.cpp), read from the page the command line
 // writes: the heavy top's tilt by its Euler angles in degrees over ±180°, its spin in rad/s,

@@ -43,13 +43,26 @@ export function equationLines(latex) {
   return lines;
 }
 
+// KaTeX's MathML for a LaTeX text, kept: the live page builds this panel again at each change,
+// where the equations in symbols stay as they were (a free body's took 50 ms to set each time).
+const renderedMath = new Map();
+function mathml(latex) {
+  let html = renderedMath.get(latex);
+  if (html === undefined) {
+    html = katex.renderToString(latex, { output: 'mathml', throwOnError: false });
+    if (renderedMath.size >= 5000) renderedMath.clear();
+    renderedMath.set(latex, html);
+  }
+  return html;
+}
+
 // One equation, its continuation lines indented (the browser's MathML sets each line; it does
 // not align the columns of a multi-line block).
 function math(latex) {
   const holder = element('div', { class: 'equation' });
   for (const [k, line] of equationLines(latex).entries()) {
     const row = element('div', { class: k === 0 ? 'line' : 'line continued' });
-    row.innerHTML = katex.renderToString(line, { output: 'mathml', throwOnError: false });
+    row.innerHTML = mathml(line);
     holder.append(row);
   }
   return holder;
@@ -57,7 +70,7 @@ function math(latex) {
 
 function inlineMath(latex) {
   const holder = element('span', {});
-  holder.innerHTML = katex.renderToString(latex, { output: 'mathml', throwOnError: false });
+  holder.innerHTML = mathml(latex);
   return holder;
 }
 

@@ -3,7 +3,7 @@
 
 import 'uplot/dist/uPlot.min.css';
 import './style.css';
-import { decode, element, readData } from './data.js';
+import { dataWithArrays, decode, element, readData } from './data.js';
 import { campbellSection } from './campbell.js';
 import { diagramsSection } from './diagrams.js';
 import { equationsSection } from './equations.js';
@@ -137,10 +137,14 @@ function livePage(app, data) {
   // {path: value} as the engine takes overrides: [{path, value}].
   const listOf = (values) => Object.entries(values).map(([path, value]) => ({ path, value }));
   let lastMilliseconds = null;
+  // What stands for an array in the engine's data: random, so that no name or text of the
+  // model's file can be taken for one.
+  const arrayMarker = `@array-${Array.from(crypto.getRandomValues(new Uint32Array(2)), (x) => x.toString(16)).join('')}-`;
   const rerun = async (overrides) => {
     const started = performance.now();
     const list = listOf(overrides);
-    const next = JSON.parse((await engine).reportData(text, file, list));
+    const parts = (await engine).reportDataParts(text, file, list, arrayMarker);
+    const next = dataWithArrays(parts.json, parts.arrays, arrayMarker);
     // The native page's equations (the engine has no symbolic layer), told which numbers the
     // page has changed and, where the engine finds that they keep their form, their symbols'
     // values in the changed model (report::equation_numbers).

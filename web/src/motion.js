@@ -246,7 +246,7 @@ export class Motion {
     // H of each body about its centre of mass: R I_Bcm Rᵀ ω, in W.
     let hmax = 0;
     for (let k = 0; k < this.time.length; k++) {
-      for (let b = 0; b < this.nb; b++) hmax = Math.max(hmax, Math.hypot(...this.momentumAt(k, b)));
+      for (let b = 0; b < this.nb; b++) hmax = Math.max(hmax, this.momentumLengthAt(k, b));
     }
     const inertia = Math.max(0, ...this.bodies.map((b) => (b.inertia[0] + b.inertia[4] + b.inertia[8]) / 3));
     this.hShown = hmax * span > 1e-9 * inertia;
@@ -270,6 +270,24 @@ export class Motion {
     this.trace.visible = false;
     this.viewer.scene.add(this.trace);
     this.toggles = { frames: true, axes: true, omega: false, H: false, loads: false, reactions: false, trace: -1 };
+  }
+
+  // |H| of body b at frame k, without building H (buildVectors scans every frame; the live page
+  // does it at each change): a rotation keeps lengths, so |H| = |I_Bcm ω_B|, ω_B = Rᵀ ω.
+  momentumLengthAt(k, b) {
+    const i = k * this.nb + b;
+    const q = this.quaternion;
+    const x = -q[4 * i], y = -q[4 * i + 1], z = -q[4 * i + 2], w = q[4 * i + 3];
+    const v0 = this.omega[3 * i], v1 = this.omega[3 * i + 1], v2 = this.omega[3 * i + 2];
+    const tx = 2 * (y * v2 - z * v1), ty = 2 * (z * v0 - x * v2), tz = 2 * (x * v1 - y * v0);
+    const b0 = v0 + w * tx + (y * tz - z * ty);
+    const b1 = v1 + w * ty + (z * tx - x * tz);
+    const b2 = v2 + w * tz + (x * ty - y * tx);
+    const I = this.bodies[b].inertia;
+    const h0 = I[0] * b0 + I[1] * b1 + I[2] * b2;
+    const h1 = I[3] * b0 + I[4] * b1 + I[5] * b2;
+    const h2 = I[6] * b0 + I[7] * b1 + I[8] * b2;
+    return Math.sqrt(h0 * h0 + h1 * h1 + h2 * h2);
   }
 
   momentumAt(k, b) {

@@ -79,6 +79,25 @@ std::string simulation_report_html(const SimulationRun& run, const LinearSetting
 /// engine (wasm/) computes again for a changed model, and what its tests compare with the page's.
 std::string simulation_report_json(const SimulationRun& run, const LinearSettings& linear = {});
 
+/// One of the long arrays of a report's data (frames, plot columns, responses), set apart from
+/// its JSON text: float64 values, or, `single`, values the page keeps in float32 (what it only
+/// draws), already rounded to float32 as the page's base64 "f32:" text would hold them.
+struct ReportArray {
+  std::vector<double> values;
+  bool single = false;
+};
+/// simulation_report_json's data with its long arrays apart, for a consumer that takes them as
+/// typed arrays (the in-page engine): the JSON text writes `marker` followed by k where the page
+/// embeds the k-th array as base64 text. The marker is the caller's and should be a string no
+/// model's name or text can hold (the engine's page gives a random one each run); it must not be
+/// empty or hold a character JSON escapes.
+struct ReportDataParts {
+  std::string json;
+  std::vector<ReportArray> arrays;
+};
+ReportDataParts simulation_report_parts(const SimulationRun& run, const std::string& marker,
+                                        const LinearSettings& linear = {});
+
 /// The equations a report embeds, as its page's engine gives their symbols the values of a model
 /// its reader changed: each symbol by name with its sources (model/parameter_source.hpp), and the
 /// numbers the form depends on that no symbol stands for (symbolic::FormNumber).
