@@ -1055,6 +1055,11 @@ test('live quarter car: a changed spring re-simulates in the page, as the CLI ru
   for (const figure of ['1.13×106', '1.3×105']) assert.ok(numbersBefore.includes(figure), `${figure} in ${numbersBefore}`);
   const posesBefore = await page.evaluate(() => window.momentaReport.bodyPoint('body', [0, 0, 0], 0.5));
   await page.evaluate(() => window.momentaReport.setTime(0.75));
+  const panels = () => page.evaluate(() => [...document.querySelector('#run').children].map((c) => c.id).join(','));
+  const panelsBefore = await panels();
+  // The equations in symbols are the file's whatever the page changes: the redraw keeps their
+  // nodes in the page (not laid out anew), and gives the section the new values below them.
+  await page.evaluate(() => { window.equationBefore = document.querySelector('#equations > .equation'); });
 
   await page.evaluate(() => window.momentaReport.live.set({ 'forces.suspension.stiffness': 90000 }));
   assert.equal(await page.evaluate(() => window.momentaReport.time()), 0.75, 'the redraw keeps the time shown');
@@ -1076,6 +1081,11 @@ test('live quarter car: a changed spring re-simulates in the page, as the CLI ru
   assert.ok(equations.notes.some((n) => n.includes("The values with the page's changes (forces.suspension.stiffness = 90000 N/m): the equations keep their form.")),
     equations.notes.join(' | '));
   assert.equal(await page.evaluate(() => document.querySelectorAll('#equations .stale').length), 0);
+  assert.equal(await panels(), panelsBefore, 'the panels in their order, one of each');
+  assert.ok(await page.evaluate(() => window.equationBefore === document.querySelector('#equations > .equation')),
+    'the equations in symbols are the same nodes');
+  assert.deepEqual(await page.evaluate(() => [...document.querySelectorAll('#equations h3')].map((h) => h.textContent)),
+    ['With the numbers', 'Symbols']);
   await firstFrame(page);
   await screenshots(page, 'live-quarter_car-after');
   const posesAfter = await page.evaluate(() => window.momentaReport.bodyPoint('body', [0, 0, 0], 0.5));

@@ -120,11 +120,19 @@ export function equationsSection(equations) {
     section.append(element('p', { class: 'unavailable' }, `Not shown: ${equations ? equations.reason : 'not in this report'}`));
     return { section };
   }
-  section.append(element('p', { class: 'note' },
+  // The head, in symbols (class in-symbols): the same whatever a live page changes, which keeps
+  // it across a redraw (main.js, keptEquations); `symbolsOf` says which equations it shows.
+  section.symbolsOf = equations.equations;
+  section.firstElementChild.classList.add('in-symbols');
+  section.append(element('p', { class: 'note in-symbols' },
     'M(q) q̈ + C(q, q̇) q̇ + g(q) = Q, derived in symbols from the model (momenta equations MODEL --all-symbols): ',
     'one equation per free coordinate, led by its own acceleration',
     equations.constraints.length ? ', with the constraint forces Gᵀλ on the right, then the constraints' : '', '.'));
-  for (const e of equations.equations) section.append(math(e.latex));
+  for (const e of equations.equations) {
+    const shown = math(e.latex);
+    shown.classList.add('in-symbols');
+    section.append(shown);
+  }
   // The page's numbers where its changes keep the equations' form, else the file's.
   const numbers = equations.numbers;
   const pageValues = numbers?.formChanges.length === 0;

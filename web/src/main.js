@@ -115,6 +115,32 @@ function simulationPage(app, data) {
   };
 }
 
+// The live page's equations in symbols are the file's whatever the reader changes (the engine
+// has no symbolic layer), so their section's head — its title, note and equations — stays in the
+// page across a redraw instead of being laid out anew (a free body's 13 700 MathML nodes took
+// 270 ms of each change). The section `run` shows, when it holds these equations.
+function keptEquations(run, equations) {
+  const section = [...run.children].find((c) => c.id === 'equations');
+  return equations?.available && section?.symbolsOf === equations.equations ? section : null;
+}
+
+// Puts the new page's sections that come before its equations in front of `kept`, gives `kept`
+// what `fresh` (the new equations section) holds after its head — the values, the equations with
+// the numbers — and lets `fresh` go. Nothing of `kept`'s head leaves the page.
+function adoptEquations(kept, fresh) {
+  const before = [];
+  for (let e = kept.nextElementSibling; e && e !== fresh; e = e.nextElementSibling) before.push(e);
+  kept.before(...before);
+  const head = (section) => {
+    const children = [...section.children];
+    const end = children.findIndex((c) => !c.classList.contains('in-symbols'));
+    return end < 0 ? children.length : end;
+  };
+  for (const child of [...kept.children].slice(head(kept))) child.remove();
+  kept.append(...[...fresh.children].slice(head(fresh)));
+  fresh.remove();
+}
+
 // A simulation page with its engine (docs/report.md, "The live report"): the live panel on top,
 // the run's panels below it, drawn again from the engine's data after each change. The hook the
 // tests use is the current run's, with `live` besides.
@@ -128,8 +154,10 @@ function livePage(app, data) {
     const time = current?.time();
     const scroll = window.scrollY;
     current?.dispose();
-    run.replaceChildren();
+    const kept = keptEquations(run, pageData.equations);
+    for (const child of [...run.children]) if (child !== kept) child.remove();
     current = simulationPage(run, pageData);
+    if (kept) adoptEquations(kept, [...run.children].find((c) => c.id === 'equations' && c !== kept));
     if (time !== undefined && time <= pageData.summary.t_end) current.setTime(time);
     window.scrollTo(0, scroll);
   };
