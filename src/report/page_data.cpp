@@ -56,11 +56,7 @@ ArraysApart::ArraysApart(std::string marker) : marker_(std::move(marker)), outer
 ArraysApart::~ArraysApart() { arrays_apart = outer_; }
 
 std::string ArraysApart::put(std::span<const double> values, bool single) {
-  ReportArray array{{values.begin(), values.end()}, single};
-  if (single) {
-    for (double& v : array.values) v = static_cast<float>(v);
-  }
-  arrays_.push_back(std::move(array));
+  arrays_.push_back({{values.begin(), values.end()}, single});
   return marker_ + std::to_string(arrays_.size() - 1);
 }
 

@@ -43,17 +43,8 @@ export function equationLines(latex) {
   return lines;
 }
 
-// KaTeX's MathML for a LaTeX text, kept: the live page builds this panel again at each change,
-// where the equations in symbols stay as they were (a free body's took 50 ms to set each time).
-const renderedMath = new Map();
 function mathml(latex) {
-  let html = renderedMath.get(latex);
-  if (html === undefined) {
-    html = katex.renderToString(latex, { output: 'mathml', throwOnError: false });
-    if (renderedMath.size >= 5000) renderedMath.clear();
-    renderedMath.set(latex, html);
-  }
-  return html;
+  return katex.renderToString(latex, { output: 'mathml', throwOnError: false });
 }
 
 // One equation, its continuation lines indented (the browser's MathML sets each line; it does
@@ -114,7 +105,9 @@ export function equationWithNumbers(terms, values) {
   return `${sideLatex(terms.filter((t) => !t.right), values)} = ${sideLatex(terms.filter((t) => t.right), values)}`;
 }
 
-export function equationsSection(equations) {
+// `head` false: the section without its head in symbols (title, note, equations), for a live
+// page that keeps the one it shows (main.js, keptEquations).
+export function equationsSection(equations, { head = true } = {}) {
   const section = element('section', { id: 'equations' }, element('h2', {}, 'Equations of motion'));
   if (!equations || !equations.available) {
     section.append(element('p', { class: 'unavailable' }, `Not shown: ${equations ? equations.reason : 'not in this report'}`));
@@ -122,16 +115,20 @@ export function equationsSection(equations) {
   }
   // The head, in symbols (class in-symbols): the same whatever a live page changes, which keeps
   // it across a redraw (main.js, keptEquations); `symbolsOf` says which equations it shows.
-  section.symbolsOf = equations.equations;
-  section.firstElementChild.classList.add('in-symbols');
-  section.append(element('p', { class: 'note in-symbols' },
-    'M(q) q̈ + C(q, q̇) q̇ + g(q) = Q, derived in symbols from the model (momenta equations MODEL --all-symbols): ',
-    'one equation per free coordinate, led by its own acceleration',
-    equations.constraints.length ? ', with the constraint forces Gᵀλ on the right, then the constraints' : '', '.'));
-  for (const e of equations.equations) {
-    const shown = math(e.latex);
-    shown.classList.add('in-symbols');
-    section.append(shown);
+  if (head) {
+    section.symbolsOf = equations.equations;
+    section.firstElementChild.classList.add('in-symbols');
+    section.append(element('p', { class: 'note in-symbols' },
+      'M(q) q̈ + C(q, q̇) q̇ + g(q) = Q, derived in symbols from the model (momenta equations MODEL --all-symbols): ',
+      'one equation per free coordinate, led by its own acceleration',
+      equations.constraints.length ? ', with the constraint forces Gᵀλ on the right, then the constraints' : '', '.'));
+    for (const e of equations.equations) {
+      const shown = math(e.latex);
+      shown.classList.add('in-symbols');
+      section.append(shown);
+    }
+  } else {
+    section.firstElementChild.remove();
   }
   // The page's numbers where its changes keep the equations' form, else the file's.
   const numbers = equations.numbers;

@@ -19,7 +19,8 @@ import { summarySection } from './summary.js';
 import { sweepPage } from './sweep.js';
 import { Timeline } from './timeline.js';
 
-function simulationPage(app, data) {
+// `keptEquations`: the live page keeps the equations' head it shows; the page builds the rest.
+function simulationPage(app, data, { keptEquations = false } = {}) {
   app.append(summarySection(data));
   const time = decode(data.frames.time);
   const timeline = new Timeline(time[0], time[time.length - 1]);
@@ -30,7 +31,7 @@ function simulationPage(app, data) {
   if (data.loops?.length) app.append(loopsSection(data.loops));
   const plots = plotsSection(data, timeline);
   app.append(plots.section);
-  app.append(equationsSection(data.equations).section);
+  app.append(equationsSection(data.equations, { head: !keptEquations }).section);
   const linear = linearSection(data, motion);
   app.append(linear.section);
   const campbell = data.campbell ? campbellSection(data.campbell) : null;
@@ -125,19 +126,15 @@ function keptEquations(run, equations) {
 }
 
 // Puts the new page's sections that come before its equations in front of `kept`, gives `kept`
-// what `fresh` (the new equations section) holds after its head — the values, the equations with
-// the numbers — and lets `fresh` go. Nothing of `kept`'s head leaves the page.
+// in place of what follows its head what `fresh` (the new equations section, built without a
+// head) holds — the values, the equations with the numbers — and lets `fresh` go. Nothing of
+// `kept`'s head leaves the page.
 function adoptEquations(kept, fresh) {
   const before = [];
   for (let e = kept.nextElementSibling; e && e !== fresh; e = e.nextElementSibling) before.push(e);
   kept.before(...before);
-  const head = (section) => {
-    const children = [...section.children];
-    const end = children.findIndex((c) => !c.classList.contains('in-symbols'));
-    return end < 0 ? children.length : end;
-  };
-  for (const child of [...kept.children].slice(head(kept))) child.remove();
-  kept.append(...[...fresh.children].slice(head(fresh)));
+  for (const child of [...kept.children]) if (!child.classList.contains('in-symbols')) child.remove();
+  kept.append(...fresh.children);
   fresh.remove();
 }
 
@@ -156,7 +153,7 @@ function livePage(app, data) {
     current?.dispose();
     const kept = keptEquations(run, pageData.equations);
     for (const child of [...run.children]) if (child !== kept) child.remove();
-    current = simulationPage(run, pageData);
+    current = simulationPage(run, pageData, { keptEquations: Boolean(kept) });
     if (kept) adoptEquations(kept, [...run.children].find((c) => c.id === 'equations' && c !== kept));
     if (time !== undefined && time <= pageData.summary.t_end) current.setTime(time);
     window.scrollTo(0, scroll);

@@ -80,8 +80,8 @@ std::string simulation_report_html(const SimulationRun& run, const LinearSetting
 std::string simulation_report_json(const SimulationRun& run, const LinearSettings& linear = {});
 
 /// One of the long arrays of a report's data (frames, plot columns, responses), set apart from
-/// its JSON text: float64 values, or, `single`, values the page keeps in float32 (what it only
-/// draws), already rounded to float32 as the page's base64 "f32:" text would hold them.
+/// its JSON text: its values, and whether the page keeps them in float32 (`single`: what it only
+/// draws, as the page's base64 "f32:" text holds them) or float64.
 struct ReportArray {
   std::vector<double> values;
   bool single = false;
