@@ -14,8 +14,9 @@
 //     run.summary        // the text `momenta simulate` prints on stderr
 //     JSON.parse(engine.reportData(modelText, "double_pendulum.yaml", overrides))
 //                        // the data `momenta report` embeds in its page (less its equations)
-//     engine.reportDataParts(modelText, "double_pendulum.yaml", overrides, marker)
+//     engine.reportDataParts(modelText, "double_pendulum.yaml", overrides, marker, "all")
 //                        // {json, arrays}: the same, its long arrays as typed arrays apart
+//                        // ("motion", then "analysis": the same data in two, one run)
 //     engine.equationNumbers(modelText, "double_pendulum.yaml", overrides,
 //                            data.equations.parameters, data.equations.form)
 //                        // {values, zeroed, formChanges}: the symbols' values in the changed model
@@ -28,9 +29,12 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include <algorithm>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -68,13 +72,78 @@ std::vector<io::NumberOverride> overrides_of(const val& list) {
   return overrides;
 }
 
-// The page's model file with the overrides, read and accepted as the command line reads it.
-io::ModelFile accepted_model(const std::string& text, const std::string& file_name,
-                             const val& overrides) {
-  io::ModelFile file =
-      io::ModelTemplate(written_model(text, file_name)).with(overrides_of(overrides));
-  frontend::accept_model(file);
-  return file;
+// The page's model file, kept between calls. A page hands the engine one file's text each time
+// and changes some of its numbers: the file is read (parsed, its model read and checked) once,
+// not at every change, and the changed file last read and accepted is kept for the next call
+// with the same numbers, with its report run (a live page's change asks for two steps of report
+// data and the equations' values: 12 of the quarter car's 80 ms in the engine went to reading
+// the file twice per call, Chromium's profiler).
+class PageFile {
+ public:
+  const io::ModelTemplate& file_template(const std::string& text, const std::string& file_name) {
+    if (!template_ || text != text_ || file_name != file_name_) {
+      template_.reset();
+      report_run_.reset();
+      accepted_.reset();
+      template_.emplace(written_model(text, file_name));
+      text_ = text;
+      file_name_ = file_name;
+    }
+    return *template_;
+  }
+
+  // The file with the overrides, read and accepted as the command line reads it.
+  const io::ModelFile& accepted(const std::string& text, const std::string& file_name,
+                                const val& overrides) {
+    const io::ModelTemplate& file = file_template(text, file_name);
+    std::vector<io::NumberOverride> changes = overrides_of(overrides);
+    if (!accepted_ || !same(changes, overrides_)) {
+      report_run_.reset();
+      accepted_.reset();
+      io::ModelFile changed = file.with(changes);
+      frontend::accept_model(changed);
+      accepted_.emplace(std::move(changed));
+      overrides_ = std::move(changes);
+    }
+    return *accepted_;
+  }
+
+  // The file with the overrides run as `momenta report` runs it — the file's settings, reactions
+  // recorded; a run stopped by a non-finite state keeps its rows and says why —, kept for the
+  // next panels' data of the same numbers.
+  const report::SimulationRun& report_run(const std::string& text, const std::string& file_name,
+                                          const val& overrides) {
+    const io::ModelFile& file = accepted(text, file_name, overrides);
+    if (!report_run_) {
+      report_run_.emplace(
+          report::simulate_for_report(file, simulate::resolve_run({}, file.simulation).options));
+    }
+    if (report_run_->rows.empty()) throw NumericalError(report_run_->stop_reason);
+    return *report_run_;
+  }
+
+ private:
+  static bool same(const std::vector<io::NumberOverride>& a,
+                   const std::vector<io::NumberOverride>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const auto& x, const auto& y) {
+      // The same bits: -0 and 0 are different numbers written in the file.
+      return x.path == y.path && std::memcmp(&x.value, &y.value, sizeof(double)) == 0;
+    });
+  }
+
+  std::string text_;
+  std::string file_name_;
+  std::optional<io::ModelTemplate> template_;
+  std::vector<io::NumberOverride> overrides_;
+  std::optional<io::ModelFile> accepted_;
+  std::optional<report::SimulationRun> report_run_;  // of accepted_
+};
+
+PageFile page_file;
+
+const io::ModelFile& accepted_model(const std::string& text, const std::string& file_name,
+                                    const val& overrides) {
+  return page_file.accepted(text, file_name, overrides);
 }
 
 // A C++ exception as a JavaScript Error with its message.
@@ -93,7 +162,7 @@ val typed_array(const char* type, const std::vector<T>& values) {
 
 val simulate_model(const std::string& text, const std::string& file_name, const val& overrides) {
   try {
-    const io::ModelFile file = accepted_model(text, file_name, overrides);
+    const io::ModelFile& file = accepted_model(text, file_name, overrides);
     const simulate::ResolvedRun run = simulate::resolve_run({}, file.simulation);
     simulate::Simulation simulation(file.model, file.outputs, run.options);
     simulate::TableSink table;
@@ -130,25 +199,19 @@ val javascript_string(const std::string& text) {
       .call<val>("decode", val(emscripten::typed_memory_view(text.size(), bytes)));
 }
 
-// The file with the overrides run as `momenta report` runs it — the file's settings, reactions
-// recorded; a run stopped by a non-finite state keeps its rows and says why — handed to `write`.
-template <class Write>
-auto with_report_run(const std::string& text, const std::string& file_name, const val& overrides,
-                     Write write) {
-  const io::ModelFile file = accepted_model(text, file_name, overrides);
-  const report::SimulationRun run =
-      report::simulate_for_report(file, simulate::resolve_run({}, file.simulation).options);
-  if (run.rows.empty()) throw NumericalError(run.stop_reason);
-  return write(run);
+report::ReportPanels panels_of(const std::string& name) {
+  if (name == "all") return report::ReportPanels::all;
+  if (name == "motion") return report::ReportPanels::motion;
+  if (name == "analysis") return report::ReportPanels::analysis;
+  throw InvalidArgument("reportDataParts: panels '" + name + "': expected all, motion or analysis");
 }
 
 // The data of the report `momenta report FILE` writes, as JSON text, for the file with the
 // overrides: the page redraws every panel from it (the equations stay the native page's).
 val report_data(const std::string& text, const std::string& file_name, const val& overrides) {
   try {
-    return javascript_string(with_report_run(text, file_name, overrides, [](const auto& run) {
-      return report::simulation_report_json(run);
-    }));
+    return javascript_string(
+        report::simulation_report_json(page_file.report_run(text, file_name, overrides)));
   } catch (const std::exception& e) {
     throw_to_javascript(e);
   }
@@ -157,13 +220,14 @@ val report_data(const std::string& text, const std::string& file_name, const val
 // The same data with its long arrays apart (report::simulation_report_parts), as the live page
 // takes it: {json, arrays}, the JSON text writing `marker` + k where the page's file has the k-th
 // array as base64 text, each array a Float64Array or (drawn only) a Float32Array. Of the quarter
-// car's 1.9 MB, 1.7 MB never become text: no base64 written, decoded or parsed.
+// car's 1.9 MB, 1.7 MB never become text: no base64 written, decoded or parsed. `panels`: "all",
+// or "motion" then "analysis" (report::ReportPanels) — the page redraws the 3-D view and the
+// plots before the analysis is made; the run is made once for both.
 val report_data_parts(const std::string& text, const std::string& file_name, const val& overrides,
-                      const std::string& marker) {
+                      const std::string& marker, const std::string& panels) {
   try {
-    const report::ReportDataParts parts = with_report_run(
-        text, file_name, overrides,
-        [&](const auto& run) { return report::simulation_report_parts(run, marker); });
+    const report::ReportDataParts parts = report::simulation_report_parts(
+        page_file.report_run(text, file_name, overrides), marker, {}, panels_of(panels));
     val arrays = val::array();
     for (const report::ReportArray& array : parts.arrays) {
       arrays.call<void>("push", array.single ? typed_array("Float32Array",
@@ -239,8 +303,7 @@ val equation_numbers(const std::string& text, const std::string& file_name, cons
 
 val number_at(const std::string& text, const std::string& file_name, const std::string& path) {
   try {
-    const io::ModelTemplate model_template(written_model(text, file_name));
-    const std::optional<double> number = model_template.number_at(path);
+    const std::optional<double> number = page_file.file_template(text, file_name).number_at(path);
     return number ? val(*number) : val::null();
   } catch (const std::exception& e) {
     throw_to_javascript(e);
@@ -249,8 +312,7 @@ val number_at(const std::string& text, const std::string& file_name, const std::
 
 std::string text_with(const std::string& text, const std::string& file_name, const val& overrides) {
   try {
-    const io::ModelTemplate model_template(written_model(text, file_name));
-    return model_template.text_with(overrides_of(overrides));
+    return page_file.file_template(text, file_name).text_with(overrides_of(overrides));
   } catch (const std::exception& e) {
     throw_to_javascript(e);
   }

@@ -108,13 +108,10 @@ std::pair<double, double> bode_band(const analysis::Modes& modes) {
 
 json vector_json(const VecX& x) { return std::vector<double>(x.data(), x.data() + x.size()); }
 
-json analysis_json(const io::ModelFile& file, const analysis::LinearAnalysis& chosen,
-                   const std::string& about, double& fastest_rate) {
-  const model::Model& model = file.model;
-  const analysis::LinearModel& linear = chosen.linear;
-  const analysis::StateSpace& sys = linear.system;
+// The linearization's modes, the round-off of a zero eigenvalue (a rigid-body mode, a
+// symmetry) shown as 0, as in `modes`.
+analysis::Modes rounded_modes(const analysis::StateSpace& sys) {
   analysis::Modes modes = analysis::modes(sys);
-  // Round-off of a zero eigenvalue (a rigid-body mode, a symmetry) shows as 0, as in `modes`.
   double largest = 0.0;
   for (const analysis::Mode& m : modes.modes) largest = std::max(largest, std::abs(m.eigenvalue));
   for (analysis::Mode& m : modes.modes) {
@@ -125,11 +122,25 @@ json analysis_json(const io::ModelFile& file, const analysis::LinearAnalysis& ch
       m.damping_ratio = std::numeric_limits<double>::quiet_NaN();
     }
   }
+  return modes;
+}
+
+double fastest_rate_of(const analysis::Modes& modes) {
+  double fastest = 0.0;
+  for (const analysis::Mode& m : modes.modes) fastest = std::max(fastest, m.natural_frequency);
+  return fastest;
+}
+
+json analysis_json(const io::ModelFile& file, const analysis::LinearAnalysis& chosen,
+                   const std::string& about, double& fastest_rate) {
+  const model::Model& model = file.model;
+  const analysis::LinearModel& linear = chosen.linear;
+  const analysis::StateSpace& sys = linear.system;
+  const analysis::Modes modes = rounded_modes(sys);
   json poles = json::array(), mode_list = json::array();
-  fastest_rate = 0.0;
+  fastest_rate = fastest_rate_of(modes);
   for (const analysis::Mode& m : modes.modes) {
     poles.push_back(complex_json(m.eigenvalue));
-    fastest_rate = std::max(fastest_rate, m.natural_frequency);
     if (m.eigenvalue.imag() >= 0.0 && static_cast<int>(mode_list.size()) < kMaxModes) {
       mode_list.push_back(mode_json(model, chosen, m));
     }
@@ -180,37 +191,58 @@ json analysis_json(const io::ModelFile& file, const analysis::LinearAnalysis& ch
           {"steps", steps}};
 }
 
+// The point the panel linearizes about, as `settings` names it. Throws InvalidArgument for a
+// name no choice has: a caller's mistake, not the model's (no page).
+analysis::OperatingPointChoice operating_point(const LinearSettings& settings) {
+  const std::optional<analysis::OperatingPointChoice> choice =
+      analysis::operating_point_choice(settings.about);
+  if (!choice) {
+    throw InvalidArgument(
+        fmt::format("about '{}': expected auto, initial, equilibrium or steady", settings.about));
+  }
+  return *choice;
+}
+
+// The linearization the panel shows, about `choice` with the inputs and outputs `settings` name.
+// Throws momenta's Error where the model cannot be linearized there (the panel says why).
+analysis::LinearAnalysis chosen_analysis(const io::ModelFile& file, const LinearSettings& settings,
+                                         analysis::OperatingPointChoice choice) {
+  analysis::LinearizationOptions options;
+  options.inputs = settings.inputs;
+  options.outputs = settings.outputs;
+  options.output_specs = file.outputs;
+  analysis::LinearAnalysis chosen = analysis::linear_analysis_about(file.model, choice, options);
+  // The initial state asked for, not at rest: its poles describe that instant only.
+  if (choice == analysis::OperatingPointChoice::initial &&
+      chosen.largest_acceleration > analysis::kAtRestAcceleration) {
+    chosen.about += fmt::format(
+        ", which is not an equilibrium (largest acceleration {}): the poles describe the "
+        "motion linearized at that instant only; the static equilibrium is a state at rest",
+        number_text(chosen.largest_acceleration, 4));
+  }
+  return chosen;
+}
+
 }  // namespace
 
 json linear_json(const io::ModelFile& file, const LinearSettings& settings, double& fastest_rate) {
   fastest_rate = 0.0;
-  const std::optional<analysis::OperatingPointChoice> choice =
-      analysis::operating_point_choice(settings.about);
-  if (!choice) {
-    // A caller's mistake, not the model's: no page.
-    throw InvalidArgument(
-        fmt::format("about '{}': expected auto, initial, equilibrium or steady", settings.about));
-  }
+  const analysis::OperatingPointChoice choice = operating_point(settings);
   try {
-    analysis::LinearizationOptions options;
-    options.inputs = settings.inputs;
-    options.outputs = settings.outputs;
-    options.output_specs = file.outputs;
-    const analysis::LinearAnalysis chosen =
-        analysis::linear_analysis_about(file.model, *choice, options);
-    std::string about = chosen.about;
-    // The initial state asked for, not at rest: its poles describe that instant only.
-    if (*choice == analysis::OperatingPointChoice::initial &&
-        chosen.largest_acceleration > analysis::kAtRestAcceleration) {
-      about += fmt::format(
-          ", which is not an equilibrium (largest acceleration {}): the poles describe the "
-          "motion linearized at that instant only; the static equilibrium is a state at rest",
-          number_text(chosen.largest_acceleration, 4));
-    }
-    return analysis_json(file, chosen, about, fastest_rate);
+    const analysis::LinearAnalysis chosen = chosen_analysis(file, settings, choice);
+    return analysis_json(file, chosen, chosen.about, fastest_rate);
   } catch (const Error& e) {
     // The report still stands; the panel says why it is empty.
     return {{"available", false}, {"reason", e.what()}};
+  }
+}
+
+double linear_fastest_rate(const io::ModelFile& file, const LinearSettings& settings) {
+  const analysis::OperatingPointChoice choice = operating_point(settings);
+  try {
+    return fastest_rate_of(rounded_modes(chosen_analysis(file, settings, choice).linear.system));
+  } catch (const Error&) {
+    return 0.0;
   }
 }
 

@@ -24,7 +24,8 @@ inline constexpr int kPlotBuckets = 1000;
 /// frames, plots, linear, equations, campbell, diagrams, loops}. Throws InvalidArgument for a run
 /// with no file, no rows, or units that do not match its columns, and for `linear` as
 /// simulation_report_html says.
-json simulation_data(const SimulationRun& run, const LinearSettings& linear);
+json simulation_data(const SimulationRun& run, const LinearSettings& linear,
+                     ReportPanels panels = ReportPanels::all);
 
 /// The live report's controls at most (the first in the file's order).
 inline constexpr std::size_t kMaxLiveParameters = 24;
@@ -58,6 +59,10 @@ json plots_json(const SimulationRun& run);
 /// The linear analysis about the point `settings` names, or {available: false, reason}.
 /// `fastest_rate` receives the largest |λ| (1/s) when the model was linearized.
 json linear_json(const io::ModelFile& file, const LinearSettings& settings, double& fastest_rate);
+
+/// The `fastest_rate` linear_json gives, without the panel (its Bode figures, steps and mode
+/// shapes): 0 where the model is not linearized.
+double linear_fastest_rate(const io::ModelFile& file, const LinearSettings& settings);
 
 /// The equations of motion in symbols (LaTeX and text, every nonzero parameter a symbol, the
 /// file's names), the constraints' rows and the symbols' values; or {available: false, reason}

@@ -167,7 +167,8 @@ SimulationRun simulate_for_report(const io::ModelFile& file, simulate::Simulatio
   }
 }
 
-detail::json detail::simulation_data(const SimulationRun& run, const LinearSettings& linear) {
+detail::json detail::simulation_data(const SimulationRun& run, const LinearSettings& linear,
+                                     ReportPanels panels) {
   if (run.file == nullptr) throw InvalidArgument("simulation report: the run names no model file");
   if (run.rows.empty() || run.columns.empty()) {
     throw InvalidArgument("simulation report: the run recorded no rows");
@@ -176,18 +177,35 @@ detail::json detail::simulation_data(const SimulationRun& run, const LinearSetti
     throw InvalidArgument(fmt::format("simulation report: {} units for {} columns",
                                       run.units.size(), run.columns.size()));
   }
+  const io::ModelFile& file = *run.file;
+  if (panels == ReportPanels::motion) {
+    // The audit's allowance scales with the linearization's fastest rate; the panel itself waits.
+    return {{"kind", "simulation"},
+            {"summary", detail::summary_json(run, detail::linear_fastest_rate(file, linear))},
+            {"scene", detail::scene_json(file)},
+            {"frames", detail::frames_json(run)},
+            {"plots", detail::plots_json(run)},
+            {"loops", detail::loops_json(file)}};
+  }
   double fastest_rate = 0.0;
-  detail::json linear_section = detail::linear_json(*run.file, linear, fastest_rate);
+  detail::json linear_section = detail::linear_json(file, linear, fastest_rate);
+  if (panels == ReportPanels::analysis) {
+    return {{"kind", "simulation"},
+            {"linear", std::move(linear_section)},
+            {"equations", detail::equations_json(file)},
+            {"campbell", detail::campbell_json(file, linear)},
+            {"diagrams", detail::diagrams_json(run)}};
+  }
   return {{"kind", "simulation"},
           {"summary", detail::summary_json(run, fastest_rate)},
-          {"scene", detail::scene_json(*run.file)},
+          {"scene", detail::scene_json(file)},
           {"frames", detail::frames_json(run)},
           {"plots", detail::plots_json(run)},
           {"linear", std::move(linear_section)},
-          {"equations", detail::equations_json(*run.file)},
-          {"campbell", detail::campbell_json(*run.file, linear)},
+          {"equations", detail::equations_json(file)},
+          {"campbell", detail::campbell_json(file, linear)},
           {"diagrams", detail::diagrams_json(run)},
-          {"loops", detail::loops_json(*run.file)}};
+          {"loops", detail::loops_json(file)}};
 }
 
 std::string simulation_report_json(const SimulationRun& run, const LinearSettings& linear) {
@@ -196,9 +214,10 @@ std::string simulation_report_json(const SimulationRun& run, const LinearSetting
 }
 
 ReportDataParts simulation_report_parts(const SimulationRun& run, const std::string& marker,
-                                        const LinearSettings& linear) {
+                                        const LinearSettings& linear, ReportPanels panels) {
   detail::ArraysApart apart(marker);
-  std::string text = simulation_report_json(run, linear);
+  std::string text = detail::simulation_data(run, linear, panels)
+                         .dump(-1, ' ', false, detail::json::error_handler_t::replace);
   return {std::move(text), apart.take()};
 }
 

@@ -1061,11 +1061,27 @@ test('live quarter car: a changed spring re-simulates in the page, as the CLI ru
   // nodes in the page (not laid out anew), and gives the section the new values below them.
   await page.evaluate(() => { window.equationBefore = document.querySelector('#equations > .equation'); });
 
-  await page.evaluate(() => window.momentaReport.live.set({ 'forces.suspension.stiffness': 90000 }));
+  // The change redraws the run's panels first, the analysis' after them: between the two, the
+  // analysis panels are dimmed and inert (read back as the page marks them: which are stale).
+  const staleSeen = await page.evaluate(async () => {
+    const seen = new Set();
+    const record = () => seen.add([...document.querySelectorAll('#run > section')]
+      .filter((s) => s.classList.contains('stale') && s.inert).map((s) => s.id).join(','));
+    const observer = new MutationObserver(record);
+    observer.observe(document.querySelector('#run'), { subtree: true, childList: true, attributes: true, attributeFilter: ['class'] });
+    await window.momentaReport.live.set({ 'forces.suspension.stiffness': 90000 });
+    observer.disconnect();
+    record();
+    return [...seen];
+  });
+  assert.ok(staleSeen.includes('equations,linear,diagrams'), `stale between the redraws: ${JSON.stringify(staleSeen)}`);
+  assert.equal(staleSeen.at(-1), '', 'nothing stale once the change is drawn');
+  const [first, last] = await page.evaluate(() => [window.momentaReport.live.firstMilliseconds(), window.momentaReport.live.lastMilliseconds()]);
+  assert.ok(first > 0 && first <= last, `first redraw ${first} ms, whole change ${last} ms`);
   assert.equal(await page.evaluate(() => window.momentaReport.time()), 0.75, 'the redraw keeps the time shown');
   const status = await page.evaluate(() => window.momentaReport.live.status());
   assert.equal(status.error, false, status.text);
-  assert.match(status.text, /1 number changed: re-simulated 2 s with dopri5 in \d+ ms in this page/);
+  assert.match(status.text, /1 number changed: re-simulated 2 s with dopri5; the run's panels redrawn in \d+ ms, the analysis in \d+ ms, in this page/);
   assert.match(await page.evaluate(() => location.hash), /live=forces.suspension.stiffness%3D90000/);
   // The equations keep their form; their symbols' values and the equations with the numbers are
   // the changed model's: the wheel's row of Franklin's eq. 2.12, m1 ẍ + b (ẋ − ẏ) + ks (x − y) +

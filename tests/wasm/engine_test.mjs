@@ -319,7 +319,7 @@ test('the report data with its arrays apart is reportData\'s, bit for bit', () =
     const text = readFileSync(modelPath, 'utf8');
     const file = path.basename(modelPath);
     const whole = JSON.parse(engine.reportData(text, file, []));
-    const parts = engine.reportDataParts(text, file, [], marker);
+    const parts = engine.reportDataParts(text, file, [], marker, 'all');
     const apart = dataWithArrays(parts.json, parts.arrays, marker);
     delete whole.summary.wall_seconds;
     delete apart.summary.wall_seconds;
@@ -327,10 +327,23 @@ test('the report data with its arrays apart is reportData\'s, bit for bit', () =
     assert.equal(arrays, parts.arrays.length, `${name}: every array set apart stands in the data once`);
     assert.ok(arrays >= 5, `${name}: ${arrays} arrays`);
     assert.ok(!/"f(32|64):/.test(parts.json), `${name}: no base64 left in the text`);
+    // The live page's two redraws: the run's panels, then the analysis', from one run; together
+    // the same data, bit for bit (the summary's audit allowance included: its fastest rate is
+    // the linear panel's).
+    const motionParts = engine.reportDataParts(text, file, [], marker, 'motion');
+    const analysisParts = engine.reportDataParts(text, file, [], marker, 'analysis');
+    const motion = dataWithArrays(motionParts.json, motionParts.arrays, marker);
+    const analysis = dataWithArrays(analysisParts.json, analysisParts.arrays, marker);
+    assert.deepEqual(Object.keys(motion), ['kind', 'summary', 'scene', 'frames', 'plots', 'loops'], name);
+    assert.deepEqual(Object.keys(analysis), ['kind', 'linear', 'equations', 'campbell', 'diagrams'], name);
+    const together = Object.fromEntries(Object.keys(whole).map((key) => [key, key in motion ? motion[key] : analysis[key]]));
+    delete together.summary.wall_seconds;
+    assert.equal(same(whole, together, `${name} in two`), arrays, `${name}: the two hold every array`);
   }
   const text = readFileSync(path.join(source, 'examples', 'pendulum.yaml'), 'utf8');
-  assert.throws(() => engine.reportDataParts(text, 'pendulum.yaml', [], ''), /an empty marker/);
-  assert.throws(() => engine.reportDataParts(text, 'pendulum.yaml', [], 'a"b'), /a character JSON escapes/);
+  assert.throws(() => engine.reportDataParts(text, 'pendulum.yaml', [], '', 'all'), /an empty marker/);
+  assert.throws(() => engine.reportDataParts(text, 'pendulum.yaml', [], 'a"b', 'all'), /a character JSON escapes/);
+  assert.throws(() => engine.reportDataParts(text, 'pendulum.yaml', [], marker, 'plots'), /panels 'plots': expected all, motion or analysis/);
   assert.throws(() => dataWithArrays('{"x": "@array-test-3"}', [], marker), /no array 3 of 0/);
 });
 

@@ -19,43 +19,105 @@ import { summarySection } from './summary.js';
 import { sweepPage } from './sweep.js';
 import { Timeline } from './timeline.js';
 
-// `keptEquations`: the live page keeps the equations' head it shows; the page builds the rest.
-function simulationPage(app, data, { keptEquations = false } = {}) {
-  app.append(summarySection(data));
+// The panels of a simulation page, in the page's order. A live page redraws the run's own
+// (kMotionPanels) from the engine's first data and the analysis' from its second.
+const kPanels = ['summary', 'motion', 'loops', 'plots', 'equations', 'linear', 'campbell', 'diagrams'];
+const kMotionPanels = ['summary', 'motion', 'loops', 'plots'];
+const kAnalysisPanels = kPanels.filter((name) => !kMotionPanels.includes(name));
+
+// The 3-D view with its clock: every animation frame advances the clock, and the view is drawn
+// only when what it shows changed. `dispose` stops the clock and lets the view go (its renderer
+// serves the live page's next one).
+function motionPanel(data, place) {
   const time = decode(data.frames.time);
   const timeline = new Timeline(time[0], time[time.length - 1]);
   const view = element('div', { id: 'view', class: 'view' });
-  app.append(element('section', { id: 'motion' }, element('h2', {}, 'Motion'), view, timeline.controls()));
+  const section = place(element('section', { id: 'motion' }, element('h2', {}, 'Motion'), view, timeline.controls()));
   const motion = new Motion(view, data, timeline);
-  app.querySelector('#motion').append(motion.controls());
-  if (data.loops?.length) app.append(loopsSection(data.loops));
-  const plots = plotsSection(data, timeline);
-  app.append(plots.section);
-  app.append(equationsSection(data.equations, { head: !keptEquations }).section);
-  const linear = linearSection(data, motion);
-  app.append(linear.section);
-  const campbell = data.campbell ? campbellSection(data.campbell) : null;
-  if (campbell) app.append(campbell.section);
-  const diagrams = diagramsSection(data.diagrams, timeline);
-  app.append(diagrams.section);
-  // Every animation frame advances the clock; the view is drawn only when what it shows changed.
-  let frames = 0;
-  let disposed = false;
-  const draw = (now) => { if (motion.render(now)) frames++; };
+  section.append(motion.controls());
+  const panel = { section, motion, timeline, frames: 0, disposed: false };
+  panel.draw = (now) => { if (motion.render(now)) panel.frames++; };
   const loop = (now) => {
-    if (disposed) return;
+    if (panel.disposed) return;
     timeline.tick(now);
-    draw(now);
+    panel.draw(now);
     requestAnimationFrame(loop);
   };
   requestAnimationFrame(loop);
+  panel.dispose = () => {
+    panel.disposed = true;
+    motion.viewer.release();
+  };
+  return panel;
+}
+
+// The equations. A live page's equations in symbols are the file's whatever the reader changes
+// (the engine has no symbolic layer), so the head of their section — its title, note and
+// equations, class `in-symbols` — stays in the page across a redraw instead of being laid out
+// anew (a free body's 13 700 MathML nodes took 270 ms of each change): `old`'s section keeps its
+// head and takes the new values and equations with the numbers below it.
+function equationsPanel(data, place, old) {
+  const kept = old?.section;
+  if (!(data.equations?.available && kept?.symbolsOf === data.equations.equations)) {
+    return { section: place(equationsSection(data.equations).section) };
+  }
+  const fresh = equationsSection(data.equations, { head: false }).section;
+  for (const child of [...kept.children]) if (!child.classList.contains('in-symbols')) child.remove();
+  kept.append(...fresh.children);
+  return { section: place(kept) };
+}
+
+// Builds the panel `name` from the data and puts its section in the page (`place`): {section,
+// what the page's hook reads}. `built` holds the panels before it (the clock and the 3-D view
+// those after it follow); `old`, the panel it replaces.
+function buildPanel(name, data, built, place, old) {
+  const placed = (panel) => { place(panel.section); return panel; };
+  switch (name) {
+    case 'summary': return { section: place(summarySection(data)) };
+    case 'motion': return motionPanel(data, place);
+    case 'loops': return data.loops?.length ? { section: place(loopsSection(data.loops)) } : {};
+    case 'plots': return placed(plotsSection(data, built.motion.timeline));
+    case 'equations': return equationsPanel(data, place, old);
+    case 'linear': return placed(linearSection(data, built.motion.motion));
+    case 'campbell': return data.campbell ? placed(campbellSection(data.campbell)) : {};
+    case 'diagrams': return placed(diagramsSection(data.diagrams, built.motion.timeline));
+    default: throw new Error(`no panel '${name}'`);
+  }
+}
+
+// A simulation page in `app`, or — given the page it replaces (`from`) — the same page with the
+// panels `keep` names kept as they are and the others built again from `data` in their place.
+function simulationPage(app, data, { from = null, keep = [] } = {}) {
+  const panels = {};
+  let last = null;
+  // Puts a section after the one before it (a section already there stays: moving it would lay
+  // it out again).
+  const place = (section) => {
+    if ((last ? last.nextElementSibling : app.firstElementChild) !== section) {
+      if (last) last.after(section); else app.prepend(section);
+    }
+    last = section;
+    return section;
+  };
+  for (const name of kPanels) {
+    const old = from?.panels[name];
+    if (keep.includes(name)) {
+      panels[name] = old;
+      if (old.section) last = old.section;
+      continue;
+    }
+    // The old panel goes first (its renderer is the new view's), less a head the new one keeps.
+    old?.dispose?.();
+    if (name !== 'equations') old?.section?.remove();
+    panels[name] = buildPanel(name, data, panels, place, old);
+    if (old?.section && old.section !== panels[name].section) old.section.remove();
+  }
+  const { motion: { motion, timeline }, plots, linear, campbell, diagrams } = panels;
+  const draw = (now) => panels.motion.draw(now);
   return {
     kind: 'simulation',
-    // Stops the clock and lets the view go (its renderer serves the live page's next one).
-    dispose: () => {
-      disposed = true;
-      motion.viewer.release();
-    },
+    data,
+    panels,
     setTime: (t) => { motion.playMode(null); timeline.set(t); draw(performance.now()); },
     time: () => timeline.time,
     frameTimes: () => Array.from(motion.time),
@@ -65,7 +127,7 @@ function simulationPage(app, data, { keptEquations = false } = {}) {
     seriesValues: (name) => Array.from(plots.registry[name] || []),
     plottedValues: (name) => Array.from(plots.drawnRegistry[name] || []),
     plotTime: () => Array.from(plots.time),
-    drawAllCharts: () => plots.charts.drawAll() + (linear.charts?.drawAll() ?? 0) + (campbell?.charts?.drawAll() ?? 0),
+    drawAllCharts: () => plots.charts.drawAll() + (linear.charts?.drawAll() ?? 0) + (campbell.charts?.drawAll() ?? 0),
     campbell: () => data.campbell,
     linear: () => data.linear,
     // What the equations panel shows: each set equation's text as the browser lays it out (in
@@ -87,7 +149,7 @@ function simulationPage(app, data, { keptEquations = false } = {}) {
     }),
     play: (on) => { timeline.playing = on; },
     playMode: (i) => motion.playMode(data.linear.modes[i]),
-    framesDrawn: () => frames,
+    framesDrawn: () => panels.motion.frames,
     // The canvas fraction the box of every body over the run covers, as the camera frames it.
     framing: () => motion.viewer.coverage(motion.viewer.framed.box),
     gridHeight: () => motion.viewer.grid.position.dot(motion.viewer.up),
@@ -116,28 +178,6 @@ function simulationPage(app, data, { keptEquations = false } = {}) {
   };
 }
 
-// The live page's equations in symbols are the file's whatever the reader changes (the engine
-// has no symbolic layer), so their section's head — its title, note and equations — stays in the
-// page across a redraw instead of being laid out anew (a free body's 13 700 MathML nodes took
-// 270 ms of each change). The section `run` shows, when it holds these equations.
-function keptEquations(run, equations) {
-  const section = [...run.children].find((c) => c.id === 'equations');
-  return equations?.available && section?.symbolsOf === equations.equations ? section : null;
-}
-
-// Puts the new page's sections that come before its equations in front of `kept`, gives `kept`
-// in place of what follows its head what `fresh` (the new equations section, built without a
-// head) holds — the values, the equations with the numbers — and lets `fresh` go. Nothing of
-// `kept`'s head leaves the page.
-function adoptEquations(kept, fresh) {
-  const before = [];
-  for (let e = kept.nextElementSibling; e && e !== fresh; e = e.nextElementSibling) before.push(e);
-  kept.before(...before);
-  for (const child of [...kept.children]) if (!child.classList.contains('in-symbols')) child.remove();
-  kept.append(...fresh.children);
-  fresh.remove();
-}
-
 // A simulation page with its engine (docs/report.md, "The live report"): the live panel on top,
 // the run's panels below it, drawn again from the engine's data after each change. The hook the
 // tests use is the current run's, with `live` besides.
@@ -146,15 +186,20 @@ function livePage(app, data) {
   const run = element('div', { id: 'run' });
   let current = null;
   // A redraw keeps the reader's place: the time shown (where the new run reaches it) and the
-  // window's scroll (the new panels are as tall as the old).
-  const show = (pageData) => {
+  // window's scroll (the new panels are as tall as the old). `keep`: the panels left as they are
+  // (a first redraw's, marked stale until the next redraws them).
+  const show = (pageData, { keep = [], stale = false } = {}) => {
     const time = current?.time();
     const scroll = window.scrollY;
-    current?.dispose();
-    const kept = keptEquations(run, pageData.equations);
-    for (const child of [...run.children]) if (child !== kept) child.remove();
-    current = simulationPage(run, pageData, { keptEquations: Boolean(kept) });
-    if (kept) adoptEquations(kept, [...run.children].find((c) => c.id === 'equations' && c !== kept));
+    current = simulationPage(run, pageData, { from: current, keep });
+    for (const name of kPanels) {
+      const section = current.panels[name].section;
+      if (!section) continue;
+      const old = stale && keep.includes(name);
+      section.classList.toggle('stale', old);
+      section.inert = old;
+      if (old) section.setAttribute('aria-busy', 'true'); else section.removeAttribute('aria-busy');
+    }
     if (time !== undefined && time <= pageData.summary.t_end) current.setTime(time);
     window.scrollTo(0, scroll);
   };
@@ -162,14 +207,28 @@ function livePage(app, data) {
   // {path: value} as the engine takes overrides: [{path, value}].
   const listOf = (values) => Object.entries(values).map(([path, value]) => ({ path, value }));
   let lastMilliseconds = null;
+  let firstMilliseconds = null;
   // What stands for an array in the engine's data: random, so that no name or text of the
   // model's file can be taken for one.
   const arrayMarker = `@array-${Array.from(crypto.getRandomValues(new Uint32Array(2)), (x) => x.toString(16)).join('')}-`;
+  const nextFrame = () => new Promise((done) => requestAnimationFrame(() => setTimeout(done, 0)));
+  // A change runs the model once and redraws in two steps: first the run's own panels — the
+  // summary and its audit, the 3-D view, the loops, the plots — (the engine's "motion" data),
+  // then, once the browser has shown them, the analysis — the equations' values, the linear
+  // analysis, the Campbell and free-body diagrams — (its "analysis" data, from the same run).
   const rerun = async (overrides) => {
     const started = performance.now();
     const list = listOf(overrides);
-    const parts = (await engine).reportDataParts(text, file, list, arrayMarker);
-    const next = dataWithArrays(parts.json, parts.arrays, arrayMarker);
+    const ready = await engine;
+    const panelData = (panels) => {
+      const parts = ready.reportDataParts(text, file, list, arrayMarker, panels);
+      return dataWithArrays(parts.json, parts.arrays, arrayMarker);
+    };
+    const motion = panelData('motion');
+    show({ ...current.data, ...motion }, { keep: kAnalysisPanels, stale: true });
+    await nextFrame();
+    firstMilliseconds = performance.now() - started;
+    const next = { ...motion, ...panelData('analysis') };
     // The native page's equations (the engine has no symbolic layer), told which numbers the
     // page has changed and, where the engine finds that they keep their form, their symbols'
     // values in the changed model (report::equation_numbers).
@@ -179,7 +238,7 @@ function livePage(app, data) {
     }) };
     if (data.equations?.available) {
       try {
-        next.equations.numbers = (await engine).equationNumbers(text, file, list,
+        next.equations.numbers = ready.equationNumbers(text, file, list,
           data.equations.parameters, data.equations.form);
       } catch (error) {
         // The run stands; the equations keep the file's values and say why.
@@ -187,11 +246,12 @@ function livePage(app, data) {
       }
     }
     next.live = data.live;
-    show(next);
+    show(next, { keep: kMotionPanels });
     lastMilliseconds = performance.now() - started;
     const s = next.summary;
     return `${list.length ? `${list.length} number${list.length > 1 ? 's' : ''} changed` : 'the file as written'}: `
-      + `re-simulated ${s.t_end} s with ${s.integrator} in ${Math.round(lastMilliseconds)} ms in this page.`;
+      + `re-simulated ${s.t_end} s with ${s.integrator}; the run's panels redrawn in ${Math.round(firstMilliseconds)} ms, `
+      + `the analysis in ${Math.round(lastMilliseconds)} ms, in this page.`;
   };
   const download = async (overrides) => {
     const list = listOf(overrides);
@@ -211,6 +271,8 @@ function livePage(app, data) {
     set: (values) => live.set(values),
     status: () => live.status(),
     lastMilliseconds: () => lastMilliseconds,
+    // From the change to the frame after the run's own panels were redrawn (the analysis after).
+    firstMilliseconds: () => firstMilliseconds,
     ready: () => ready.then(() => true),
     textWith: async (values) => (await engine).textWith(text, file, listOf(values)),
     // The engine's run alone, without the report's data or the redraw (the benchmark's figure).

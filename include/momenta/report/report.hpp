@@ -95,8 +95,15 @@ struct ReportDataParts {
   std::string json;
   std::vector<ReportArray> arrays;
 };
+/// Which panels' data: every panel's; the motion's — the summary and its audit, the 3-D view's
+/// scene and frames, the plots and the control loops, which a live page redraws first — or the
+/// analysis' — the linear analysis, the equations, the Campbell and the free-body diagrams, which
+/// it redraws next. The two together hold what `all` holds (each with `kind`).
+enum class ReportPanels { all, motion, analysis };
+
 ReportDataParts simulation_report_parts(const SimulationRun& run, const std::string& marker,
-                                        const LinearSettings& linear = {});
+                                        const LinearSettings& linear = {},
+                                        ReportPanels panels = ReportPanels::all);
 
 /// The equations a report embeds, as its page's engine gives their symbols the values of a model
 /// its reader changed: each symbol by name with its sources (model/parameter_source.hpp), and the
