@@ -1061,6 +1061,17 @@ test('live quarter car: a changed spring re-simulates in the page, as the CLI ru
   // nodes in the page (not laid out anew), and gives the section the new values below them.
   await page.evaluate(() => { window.equationBefore = document.querySelector('#equations > .equation'); });
 
+  // The reader turns the camera (a drag on the 3-D view): the redrawn view keeps it.
+  const framed = await page.evaluate(() => window.momentaReport.camera());
+  await page.$eval('#view', (view) => view.scrollIntoView({ block: 'center' }));
+  const canvas = await (await page.$('#view canvas')).boundingBox();
+  await page.mouse.move(canvas.x + canvas.width / 2, canvas.y + canvas.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(canvas.x + canvas.width / 2 + 120, canvas.y + canvas.height / 2 + 40, { steps: 5 });
+  await page.mouse.up();
+  const turned = await page.evaluate(() => window.momentaReport.camera());
+  assert.ok(Math.hypot(...turned.position.map((x, i) => x - framed.position[i])) > 0.05 * Math.hypot(...framed.position.map((x, i) => x - framed.target[i])),
+    `the drag turned the camera: ${JSON.stringify([framed, turned])}`);
   // The change redraws the run's panels first, the analysis' after them: between the two, the
   // analysis panels are dimmed and inert (read back as the page marks them: which are stale).
   const staleSeen = await page.evaluate(async () => {
@@ -1079,6 +1090,13 @@ test('live quarter car: a changed spring re-simulates in the page, as the CLI ru
   const [first, last] = await page.evaluate(() => [window.momentaReport.live.firstMilliseconds(), window.momentaReport.live.lastMilliseconds()]);
   assert.ok(first > 0 && first <= last, `first redraw ${first} ms, whole change ${last} ms`);
   assert.equal(await page.evaluate(() => window.momentaReport.time()), 0.75, 'the redraw keeps the time shown');
+  // (OrbitControls.update() places the camera again from its spherical coordinates: the last bits.)
+  const kept = await page.evaluate(() => window.momentaReport.camera());
+  const reach = Math.hypot(...turned.position.map((x, i) => x - turned.target[i]));
+  for (const key of ['position', 'target']) {
+    kept[key].forEach((x, i) => assert.ok(Math.abs(x - turned[key][i]) <= 1e-12 * reach,
+      `the redraw keeps the reader's camera: ${key} ${JSON.stringify(kept[key])} against ${JSON.stringify(turned[key])}`));
+  }
   const status = await page.evaluate(() => window.momentaReport.live.status());
   assert.equal(status.error, false, status.text);
   assert.match(status.text, /1 number changed: re-simulated 2 s with dopri5; the run's panels redrawn in \d+ ms, the analysis in \d+ ms, in this page/);

@@ -152,6 +152,7 @@ function simulationPage(app, data, { from = null, keep = [] } = {}) {
     framesDrawn: () => panels.motion.frames,
     // The canvas fraction the box of every body over the run covers, as the camera frames it.
     framing: () => motion.viewer.coverage(motion.viewer.framed.box),
+    camera: () => ({ position: motion.viewer.camera.position.toArray(), target: motion.viewer.controls.target.toArray() }),
     gridHeight: () => motion.viewer.grid.position.dot(motion.viewer.up),
     sweptLowest: () => Math.min(...motion.sweptPoints.map((p) => p[0] * motion.viewer.up.x + p[1] * motion.viewer.up.y + p[2] * motion.viewer.up.z)),
     showReactions: (on) => motion.setToggle('reactions', on),

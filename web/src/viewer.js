@@ -34,9 +34,11 @@ function disposeScene(scene) {
 // rasterizer's time (losing the old context alone 150 ms). A released view hands its renderer
 // on with its scene, which the next view frees once it has drawn with the same shaders (freed
 // first, the shaders would go with the materials that use them).
+// The reader's own view goes with it: where they turned, panned or zoomed the camera, the next
+// view looks from there (`view`; null when the camera is still where the page framed it).
 let spare = null;
 function takeRenderer() {
-  if (!spare) return { renderer: makeRenderer(), leftover: null };
+  if (!spare) return { renderer: makeRenderer(), leftover: null, view: null };
   const taken = spare;
   spare = null;
   return taken;
@@ -56,9 +58,10 @@ export class Viewer {
     this.camera = new THREE.PerspectiveCamera(40, 1, length * 1e-3, length * 1e3);
     this.camera.up.set(...up);
     this.container = container;
-    const { renderer, leftover } = takeRenderer();
+    const { renderer, leftover, view } = takeRenderer();
     this.renderer = renderer;
     this.leftover = leftover;
+    this.keptView = view;
     // Without WebGL (a locked-down browser, a remote desktop) the view says so and everything
     // else on the page — the plots, the linear analysis, the numbers — works as before.
     const surface = this.renderer ? this.renderer.domElement
@@ -72,6 +75,9 @@ export class Viewer {
     // no core busy (a software rasterizer's frame at 1280 × 900 costs tens of milliseconds).
     this.stale = true;
     this.controls.addEventListener('change', () => this.invalidate());
+    // The reader moved the camera (a drag or the wheel): the live page's next view keeps it.
+    this.moved = false;
+    this.controls.addEventListener('start', () => { this.moved = true; });
     this.scene.add(new THREE.HemisphereLight(0xffffff, 0x888888, 1.6));
     const sun = new THREE.DirectionalLight(0xffffff, 1.4);
     sun.position.set(3, -2, 5);
@@ -101,7 +107,8 @@ export class Viewer {
         spare.renderer.dispose();
         spare.renderer.forceContextLoss();
       }
-      spare = { renderer: this.renderer, leftover: this.scene };
+      spare = { renderer: this.renderer, leftover: this.scene,
+        view: this.moved ? { position: this.camera.position.clone(), target: this.controls.target.clone() } : null };
     } else {
       disposeScene(this.scene);
     }
@@ -168,6 +175,17 @@ export class Viewer {
       if (!(filled > 0)) break;
       distance = Math.max(distance * (filled / 0.75), 1.2 * radius);
       place();
+    }
+    if (this.keptView) {
+      // The reader's camera from the view this one replaces, its depth range fitted to this box.
+      this.camera.position.copy(this.keptView.position);
+      this.controls.target.copy(this.keptView.target);
+      distance = this.camera.position.distanceTo(center);
+      this.camera.near = Math.max(distance - 1.5 * radius, distance * 1e-3);
+      this.camera.far = distance + 20 * radius;
+      this.camera.updateProjectionMatrix();
+      this.keptView = null;
+      this.moved = true;
     }
     this.controls.update();
     this.placeGrid(box, radius);
