@@ -141,11 +141,6 @@ class PageFile {
 
 PageFile page_file;
 
-const io::ModelFile& accepted_model(const std::string& text, const std::string& file_name,
-                                    const val& overrides) {
-  return page_file.accepted(text, file_name, overrides);
-}
-
 // A C++ exception as a JavaScript Error with its message.
 [[noreturn]] void throw_to_javascript(const std::exception& e) {
   val::global("Error").new_(std::string(e.what())).throw_();
@@ -162,7 +157,7 @@ val typed_array(const char* type, const std::vector<T>& values) {
 
 val simulate_model(const std::string& text, const std::string& file_name, const val& overrides) {
   try {
-    const io::ModelFile& file = accepted_model(text, file_name, overrides);
+    const io::ModelFile& file = page_file.accepted(text, file_name, overrides);
     const simulate::ResolvedRun run = simulate::resolve_run({}, file.simulation);
     simulate::Simulation simulation(file.model, file.outputs, run.options);
     simulate::TableSink table;
@@ -283,7 +278,7 @@ val equation_numbers(const std::string& text, const std::string& file_name, cons
           {n["name"].as<std::string>(), source_of(n["source"]), n["value"].as<double>()});
     }
     const report::EquationNumbers result = report::equation_numbers(
-        accepted_model(text, file_name, overrides).model, symbols, numbers);
+        page_file.accepted(text, file_name, overrides).model, symbols, numbers);
     val out = val::object();
     val values = val::array();
     for (double v : result.values) values.call<void>("push", v);

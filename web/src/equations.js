@@ -106,7 +106,7 @@ export function equationWithNumbers(terms, values) {
 }
 
 // `head` false: the section without its head in symbols (title, note, equations), for a live
-// page that keeps the one it shows (main.js, keptEquations).
+// page that keeps the one it shows (main.js, equationsPanel).
 export function equationsSection(equations, { head = true } = {}) {
   const section = element('section', { id: 'equations' }, element('h2', {}, 'Equations of motion'));
   if (!equations || !equations.available) {
@@ -114,7 +114,7 @@ export function equationsSection(equations, { head = true } = {}) {
     return { section };
   }
   // The head, in symbols (class in-symbols): the same whatever a live page changes, which keeps
-  // it across a redraw (main.js, keptEquations); `symbolsOf` says which equations it shows.
+  // it across a redraw (main.js, equationsPanel); `symbolsOf` says which equations it shows.
   if (head) {
     section.symbolsOf = equations.equations;
     section.firstElementChild.classList.add('in-symbols');

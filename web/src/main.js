@@ -106,11 +106,11 @@ function simulationPage(app, data, { from = null, keep = [] } = {}) {
       if (old.section) last = old.section;
       continue;
     }
-    // The old panel goes first (its renderer is the new view's), less a head the new one keeps.
+    // The old panel lets go first (its renderer is the new view's); its section leaves once the
+    // new one is in place, unless the new one is it (the equations' kept head).
     old?.dispose?.();
-    if (name !== 'equations') old?.section?.remove();
     panels[name] = buildPanel(name, data, panels, place, old);
-    if (old?.section && old.section !== panels[name].section) old.section.remove();
+    if (old?.section !== panels[name].section) old?.section?.remove();
   }
   const { motion: { motion, timeline }, plots, linear, campbell, diagrams } = panels;
   const draw = (now) => panels.motion.draw(now);

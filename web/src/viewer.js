@@ -118,9 +118,10 @@ export class Viewer {
 
   // Looks at the box around the points so that its bounding sphere fills the view with a margin:
   // face on to the plane of motion when the box is flat (a planar mechanism: its thinnest
-  // direction is under a fifth of its largest), from a three-quarter view otherwise. The ground
-  // grid goes under the box (at the world's origin when the box is above it), a few times its
-  // size, in 1-2-5 steps.
+  // direction is under a fifth of its largest), from a three-quarter view otherwise — or, where
+  // the reader moved the camera of the view this one replaces, from where they left it. The
+  // ground grid goes under the box (at the world's origin when the box is above it), a few times
+  // its size, in 1-2-5 steps.
   // `skeleton`: the points that say whether the motion is planar (centres of mass and joint
   // points, without the bodies' sizes); `points` besides: everything to keep in view.
   frame(points, skeleton = points) {
@@ -132,7 +133,32 @@ export class Viewer {
     const box = boxOf(points);
     const center = box.getCenter(new THREE.Vector3());
     const radius = Math.max(0.5 * box.getSize(new THREE.Vector3()).length(), 1e-3 * this.length);
-    const flat = boxOf(skeleton).getSize(new THREE.Vector3());
+    if (this.keptView) {
+      this.camera.position.copy(this.keptView.position);
+      this.controls.target.copy(this.keptView.target);
+      this.fitDepth(this.camera.position.distanceTo(center), radius);
+      this.keptView = null;
+      this.moved = true;
+    } else {
+      this.placeCamera(box, center, radius, boxOf(skeleton));
+    }
+    this.controls.update();
+    this.placeGrid(box, radius);
+    this.framed = { box, radius };
+    this.invalidate();
+  }
+
+  // The camera's depth range for a sphere of `radius` whose centre is `distance` away.
+  fitDepth(distance, radius) {
+    this.camera.near = Math.max(distance - 1.5 * radius, distance * 1e-3);
+    this.camera.far = distance + 20 * radius;
+    this.camera.updateProjectionMatrix();
+  }
+
+  // The page's own framing of `box` (frame(), above); `skeleton`, the box of the points that say
+  // whether the motion is planar.
+  placeCamera(box, center, radius, skeleton) {
+    const flat = skeleton.getSize(new THREE.Vector3());
     // Of the thin directions, the thinnest; where the motion runs along a line (two thin
     // directions: a wheel rolling, a block sliding) the one across `up`, so that it is seen from
     // the side as the textbook draws it, not from above (which of the two is thinner is then
@@ -163,9 +189,7 @@ export class Viewer {
     const place = () => {
       this.camera.position.copy(center).addScaledVector(direction, distance);
       this.camera.lookAt(center);
-      this.camera.near = Math.max(distance - 1.5 * radius, distance * 1e-3);
-      this.camera.far = distance + 20 * radius;
-      this.camera.updateProjectionMatrix();
+      this.fitDepth(distance, radius);
     };
     this.controls.target.copy(center);
     place();
@@ -176,21 +200,6 @@ export class Viewer {
       distance = Math.max(distance * (filled / 0.75), 1.2 * radius);
       place();
     }
-    if (this.keptView) {
-      // The reader's camera from the view this one replaces, its depth range fitted to this box.
-      this.camera.position.copy(this.keptView.position);
-      this.controls.target.copy(this.keptView.target);
-      distance = this.camera.position.distanceTo(center);
-      this.camera.near = Math.max(distance - 1.5 * radius, distance * 1e-3);
-      this.camera.far = distance + 20 * radius;
-      this.camera.updateProjectionMatrix();
-      this.keptView = null;
-      this.moved = true;
-    }
-    this.controls.update();
-    this.placeGrid(box, radius);
-    this.framed = { box, radius };
-    this.invalidate();
   }
 
   // From the front right and a little above, whichever way is up: (0.6, −1, 0.45) with z up.
