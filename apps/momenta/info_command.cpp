@@ -101,10 +101,12 @@ std::string constraint_text(const model::Constraint& constraint) {
       c->has_friction()
           ? fmt::format("friction μs {:.6g}, μk {:.6g}", c->static_friction, c->kinetic_friction)
           : std::string("frictionless");
+  // On a plane a disk touches by its rim; a sphere may meet its face or its rim.
   const std::string body =
       c->shape == model::ContactShape::disk
-          ? fmt::format("{}'s disk rim (radius {:.6g} m, centre {} m, axis {})", c->frame.body,
-                        c->radius, vec_text(c->frame.X_BF.p), vec_text(c->frame.X_BF.R.col(2)))
+          ? fmt::format("{}'s disk {}(radius {:.6g} m, centre {} m, axis {})", c->frame.body,
+                        c->on_plane() ? "rim " : "", c->radius, vec_text(c->frame.X_BF.p),
+                        vec_text(c->frame.X_BF.R.col(2)))
           : shape(c->frame.body, c->frame.X_BF.p, c->radius);
   return fmt::format("contact, {} on {}, restitution {:.6g}, {}", body, other, c->restitution,
                      friction);

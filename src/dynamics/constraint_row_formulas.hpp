@@ -241,14 +241,90 @@ SurfaceOffsetOf<S> surface_offset(const model::Contact& c, const FrameMotionOf<S
   return {-c.radius * u, -c.radius * unit_rate<S>(u, w_rate, s)};
 }
 
+// Body b touching body a's sphere (ma: its centre s, radius r_a): the gap, the unit normal from
+// a towards b and its rate, and the contact point s + r_a n on a's surface and its rate — where
+// the force acts, along n on b and −n on a.
+template <class S>
+struct SphereTouchOf {
+  S gap;
+  Vec3Of<S> normal, normal_rate, contact, contact_rate;
+};
+
+template <class S>
+SphereTouchOf<S> touching_sphere(const model::Contact& c, const FrameMotionOf<S>& ma, const S& gap,
+                                 const Vec3Of<S>& normal, const Vec3Of<S>& normal_rate) {
+  const Vec3Of<S> s_rate = ma.point_velocity(ma.p);
+  return {gap, normal, normal_rate, Vec3Of<S>(ma.p + c.other_radius * normal),
+          Vec3Of<S>(s_rate + c.other_radius * normal_rate)};
+}
+
+// Two spheres: the line of centres e = (c_b − c_a) / |c_b − c_a|, the gap |c_b − c_a| − r_a − r_b.
+template <class S>
+SphereTouchOf<S> sphere_against_sphere(const model::Contact& c, const FrameMotionOf<S>& ma,
+                                       const FrameMotionOf<S>& mb) {
+  const Vec3Of<S> d = mb.p - ma.p;
+  const S length = d.norm();
+  if (!(value_of(length) > kDegenerate)) {
+    degenerate(c.name, "the spheres' centres coincide: no line of centres to push along");
+  }
+  const Vec3Of<S> e = d / length;
+  const Vec3Of<S> e_rate =
+      unit_rate<S>(e, Vec3Of<S>(mb.point_velocity(mb.p) - ma.point_velocity(ma.p)), length);
+  return touching_sphere<S>(c, ma, S(length - (c.radius + c.other_radius)), e, e_rate);
+}
+
+// Body b's disk (mb: its centre c, its axis a the frame's z, radius r) against body a's sphere:
+// the point of the disk, face or rim, nearest the sphere's centre s. With d = s − c, α = d · a
+// and w = d − α a (d's part in the disk's plane):
+//   face, |w| ≤ r: the point c + w under s; n = −sign(α) a; gap |α| − r_a;
+//   rim,  |w| > r: the rim point p = c + r w / |w|; n = (p − s) / |p − s|; gap |p − s| − r_a.
+// The two meet where |w| = r (there p − s = −α a). In either the gap's rate is n · (the material
+// points' relative velocity) at the nearest point: the point's travel over the face or round
+// the rim is across n.
+template <class S>
+SphereTouchOf<S> disk_against_sphere(const model::Contact& c, const FrameMotionOf<S>& ma,
+                                     const FrameMotionOf<S>& mb) {
+  const Vec3Of<S> axis = mb.R.col(2);
+  const Vec3Of<S> axis_rate = mb.w().cross(axis);
+  const Vec3Of<S> centre_rate = mb.point_velocity(mb.p);
+  const Vec3Of<S> s_rate = ma.point_velocity(ma.p);
+  const Vec3Of<S> d = ma.p - mb.p;
+  const Vec3Of<S> d_rate = s_rate - centre_rate;
+  const S along = d.dot(axis);
+  const S along_rate = d_rate.dot(axis) + d.dot(axis_rate);
+  const Vec3Of<S> w = d - along * axis;
+  const S in_plane = w.norm();
+  if (!(value_of(in_plane) > c.radius)) {  // over the face
+    if (!(std::abs(value_of(along)) > kDegenerate)) {
+      degenerate(c.name,
+                 "the sphere's centre is in the disk's face: no side of the disk to push it to");
+    }
+    const double side = value_of(along) > 0.0 ? 1.0 : -1.0;  // the side of the face s is on
+    return touching_sphere<S>(c, ma, S(side * along - c.other_radius), Vec3Of<S>(-side * axis),
+                              Vec3Of<S>(-side * axis_rate));
+  }
+  const Vec3Of<S> w_rate = d_rate - along_rate * axis - along * axis_rate;
+  const Vec3Of<S> u = w / in_plane;
+  const Vec3Of<S> rim = mb.p + c.radius * u;
+  const Vec3Of<S> rim_rate = centre_rate + c.radius * unit_rate<S>(u, w_rate, in_plane);
+  const Vec3Of<S> e = rim - ma.p;
+  const S length = e.norm();
+  if (!(value_of(length) > kDegenerate)) {
+    degenerate(c.name, "the sphere's centre is on the disk's rim: no line to push along");
+  }
+  const Vec3Of<S> n = e / length;
+  return touching_sphere<S>(c, ma, S(length - c.other_radius), n,
+                            unit_rate<S>(n, Vec3Of<S>(rim_rate - s_rate), length));
+}
+
 // A contact of the body of mb with the ground plane: the gap n · (contact − plane point) at the
 // point of its sphere or disk rim nearest the plane (surface_offset; the point itself for radius
 // 0), its force along n there; with friction, no slip along the plane's tangents t₁, t₂ there
 // (dynamics/contact_geometry.hpp). On body a's plane the same, with the plane's normal and
-// tangents turning with a. With another body's sphere (ma its centre): the gap
-// |c_b − c_a| − r_a − r_b, its force along the line of centres e at the contact point c_a + r_a e
-// (on b; −e on a), whose rate along e is that of the centres' distance — the spheres' spins move
-// their material points there across e only.
+// tangents turning with a. With another body's sphere (ma its centre): a sphere's gap
+// |c_b − c_a| − r_a − r_b along the line of centres, a disk's to its point nearest the sphere's
+// centre (disk_against_sphere), its force along the normal n at the contact point c_a + r_a n
+// (on b; −n on a), the friction's tangents turning with n.
 //
 // The contact point's rate is that of the geometric point (the centre's velocity plus the
 // offset's rate), what the wrench's rate needs; the gap's rate is still n · (the material
@@ -291,26 +367,19 @@ void contact_rows(const model::Contact& c, const FrameMotionOf<S>& ma, const Fra
     }
     return;
   }
-  const Vec3Of<S> d = mb.p - ma.p;
-  const S length = d.norm();
-  if (!(value_of(length) > kDegenerate)) {
-    degenerate(c.name, "the spheres' centres coincide: no line of centres to push along");
-  }
-  const Vec3Of<S> e = d / length;
-  const Vec3Of<S> ca_rate = ma.point_velocity(ma.p);
-  const Vec3Of<S> e_rate = unit_rate<S>(e, mb.point_velocity(mb.p) - ca_rate, length);
-  const Vec3Of<S> contact = ma.p + c.other_radius * e;
-  const Vec3Of<S> contact_rate = ca_rate + c.other_radius * e_rate;
-  row(length - (c.radius + c.other_radius), true, force_at<S>(contact, e),
-      force_rate<S>(contact, contact_rate, e, e_rate));
+  const SphereTouchOf<S> touch = c.shape == model::ContactShape::disk
+                                     ? disk_against_sphere<S>(c, ma, mb)
+                                     : sphere_against_sphere<S>(c, ma, mb);
+  row(touch.gap, true, force_at<S>(touch.contact, touch.normal),
+      force_rate<S>(touch.contact, touch.contact_rate, touch.normal, touch.normal_rate));
   if (!c.has_friction()) return;
-  // Friction: no slip of the material points at the contact along the tangents across the line
-  // of centres, which turn with it.
-  const TangentsOf<S> t = turning_tangents<S>(e, e_rate);
-  row(S(0.0), false, force_at<S>(contact, t.t1),
-      force_rate<S>(contact, contact_rate, t.t1, t.t1_rate));
-  row(S(0.0), false, force_at<S>(contact, t.t2),
-      force_rate<S>(contact, contact_rate, t.t2, t.t2_rate));
+  // Friction: no slip of the material points at the contact along the tangents across the
+  // normal, which turn with it.
+  const TangentsOf<S> t = turning_tangents<S>(touch.normal, touch.normal_rate);
+  row(S(0.0), false, force_at<S>(touch.contact, t.t1),
+      force_rate<S>(touch.contact, touch.contact_rate, t.t1, t.t1_rate));
+  row(S(0.0), false, force_at<S>(touch.contact, t.t2),
+      force_rate<S>(touch.contact, touch.contact_rate, t.t2, t.t2_rate));
 }
 
 // Knife edge on the body of mb: no velocity of the point across the blade, s = n × x_B / |…|.

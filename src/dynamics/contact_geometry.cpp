@@ -78,17 +78,18 @@ ContactGeometry contact_geometry(const model::Contact& contact, const Data& data
     g.gap = plane_gap(contact, g, centre_b, X_WF.p);
     return g;
   }
-  const Vec3 centre_a = data.X_WB[contact.other.body_index].apply(contact.other.X_BF.p);
-  const Vec3 d = centre_b - centre_a;
-  const double length = d.norm();
-  if (!(length > 0.0)) {
-    throw NumericalError(
-        fmt::format("contact '{}': the spheres' centres coincide: no line of centres to push along",
-                    contact.name));
-  }
-  g.normal_W = d / length;
-  g.gap = length - contact.radius - contact.other_radius;
-  g.point_W = centre_a + contact.other_radius * g.normal_W;
+  // Another body's sphere: the line of centres, or the disk's point nearest the sphere's centre.
+  const detail::FrameMotionOf<double> ma =
+      frame_motion(data, contact.other.body_index, contact.other.X_BF, false);
+  const detail::FrameMotionOf<double> mb =
+      frame_motion(data, contact.frame.body_index, contact.frame.X_BF, false);
+  const detail::SphereTouchOf<double> touch =
+      contact.shape == model::ContactShape::disk
+          ? detail::disk_against_sphere<double>(contact, ma, mb)
+          : detail::sphere_against_sphere<double>(contact, ma, mb);
+  g.normal_W = touch.normal;
+  g.gap = touch.gap;
+  g.point_W = touch.contact;
   return with_tangents(g);
 }
 
@@ -110,7 +111,7 @@ double contact_gap_acceleration(const model::Contact& contact, const Data& data)
 }
 
 bool disk_lies_flat(const model::Contact& contact, const Data& data, double tolerance) {
-  if (contact.shape != model::ContactShape::disk) return false;
+  if (contact.shape != model::ContactShape::disk || !contact.on_plane()) return false;
   const Vec3 axis_W = (data.X_WB[contact.frame.body_index] * contact.frame.X_BF).R.col(2);
   return axis_W.cross(contact_geometry(contact, data).normal_W).norm() < tolerance;
 }

@@ -677,10 +677,6 @@ class ModelAssembler {
     if (c.shape == model::ContactShape::disk) {
       MOMENTA_REQUIRE(c.radius > 0.0, "{}: a disk's radius must be positive, got {} m", who,
                       c.radius);
-      require(c.on_plane(),
-              who +
-                  ": a disk's rim touches a plane, the ground's or a body's; a disk against "
-                  "another body's sphere is not modelled (docs/contacts.md)");
     }
     if (c.on_plane()) {
       check_plane_normal(c.plane_normal, who);
@@ -699,9 +695,11 @@ class ModelAssembler {
                       who, c.frame.body);
     } else {
       resolve_frame(c.other, who);
-      MOMENTA_REQUIRE(c.other.body_index != c.frame.body_index,
-                      "{}: both spheres are on body '{}'; a contact is between two bodies", who,
-                      c.frame.body);
+      MOMENTA_REQUIRE(
+          c.other.body_index != c.frame.body_index,
+          "{}: both {} on body '{}'; a contact is between two bodies", who,
+          c.shape == model::ContactShape::disk ? "the disk and the sphere are" : "spheres are",
+          c.frame.body);
       MOMENTA_REQUIRE(c.other_radius >= 0.0 && std::isfinite(c.other_radius),
                       "{}: other_radius must be zero or positive and finite, got {} m", who,
                       c.other_radius);

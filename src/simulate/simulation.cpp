@@ -594,7 +594,7 @@ std::string format_stop_events(const std::vector<StopEvent>& events) {
                            e.friction == FrictionState::none
                                ? ""
                                : fmt::format(", {}", friction_state_name(e.friction)),
-                           rate, e.rate_before, e.energy_lost);
+                           rate, e.rate_before + 0.0, e.energy_lost);  // −0 (n · 0) as 0
       case StopEventKind::release:
         return fmt::format("{} lets {} go at t = {:.12g} s (it would pull)", stop, held, e.time);
       case StopEventKind::stick:

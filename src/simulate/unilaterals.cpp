@@ -120,7 +120,8 @@ double Unilaterals::rate(const Entry& e, const integrate::State& state) {
   const model::Contact& c = contact_of(e);
   dynamics::forward_kinematics(model_, data_, state.q.head(model_.nq()), state.v.head(model_.nv()));
   const dynamics::ContactGeometry g = dynamics::contact_geometry(c, data_);
-  if (c.on_plane()) {  // the bodies' material points at the contact, along the normal
+  if (c.on_plane() || c.shape == model::ContactShape::disk) {
+    // The bodies' material points at the contact, along the normal.
     return g.normal_W.dot(dynamics::contact_point_velocity(c, data_, g.point_W));
   }
   // Two spheres: the rate of the centres' distance.

@@ -310,3 +310,28 @@ def test_a_wheel_built_in_python_touches_with_its_rim():
         bad.add_joint("j", "free", parent="world", child="b")
         bad.add_contact("floor", body="b", shape="disk")
         bad.build()
+
+
+def test_a_coin_built_in_python_falls_flat_on_a_ball():
+    # A 1 kg coin of radius 0.1 m falls flat from 0.2 m onto a fixed ball (r = 0.05 m), its centre
+    # ρ = 0.05 m off the ball's top, e = 0.5: struck on its face, P = (1 + e) m v / (1 + 4 ρ² / R²)
+    # and it turns about its diameter at ρ P / (m R² / 4) (docs/contacts.md, a disk against a
+    # sphere).
+    b = momenta.ModelBuilder("coin on a ball")
+    b.set_gravity([0, 0, -9.81])
+    b.add_body("coin", momenta.inertia.thin_disk(0.1, mass=1.0))
+    b.add_body("post", momenta.inertia.solid_sphere(0.05, mass=1.0))
+    b.add_joint("free", "free", parent="world", child="coin", q0=[0.05, 0, 0.25, 1, 0, 0, 0])
+    b.add_joint("mount", "fixed", parent="world", child="post")
+    b.add_contact("hit", body="coin", shape="disk", axis=[0, 0, 1], radius=0.1,
+                  other_body="post", other_radius=0.05, restitution=0.5)
+    t_hit = (2 * 0.2 / 9.81) ** 0.5
+    run = momenta.simulate(b.build(), duration=t_hit + 0.005, dt=1e-3, integrator="dopri5",
+                           rtol=1e-12, atol=1e-14)
+    stops = run.summary["stops"]
+    assert [s["kind"] for s in stops] == ["impact"]
+    v = (2 * 9.81 * 0.2) ** 0.5
+    P = 1.5 * v / 2
+    assert abs(stops[0]["time"] - t_hit) < 1e-12 * t_hit
+    assert abs(stops[0]["impulse"] - P) < 1e-12 * P
+    assert abs(run["free.wy"][-1] - 0.05 * P / 0.0025) < 1e-12 * v / 0.1

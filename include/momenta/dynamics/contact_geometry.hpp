@@ -7,6 +7,9 @@
 //   disk rim on a plane: point c_b − r_b w / |w|, w = n − (n · a) a (a the disk's axis);
 //             gap = n · (point − plane_point)
 //   sphere:   n = (c_b − c_a) / |c_b − c_a|; gap = |c_b − c_a| − r_a − r_b; point c_a + r_a n
+//   disk on a sphere: the disk's point q nearest the sphere's centre c_a — over the face, under
+//             c_a (n = ∓ the axis, the side c_a is on); else on the rim —; n = (q − c_a) / |q −
+//             c_a|; gap = |q − c_a| − r_a; point c_a + r_a n
 //
 // c_b (c_a) the centre of body b's (a's) sphere, or b's point. The normal points from a (or the
 // plane) towards b: the contact's force on b is N n, N ≥ 0. On another body's plane, n and the
@@ -27,7 +30,8 @@ struct ContactGeometry {
 };
 
 /// The geometry of `contact` at data's poses (data.X_WB, set by forward_kinematics). Throws
-/// NumericalError where two spheres' centres coincide (no line of centres). No allocation.
+/// NumericalError where two spheres' centres coincide (no line of centres), or a sphere's centre
+/// lies in a disk's face or on its rim (no side to push it to). No allocation.
 ContactGeometry contact_geometry(const model::Contact& contact, const Data& data);
 
 /// The velocity (W) of body b's material point at `point_W` relative to body a's (or the
@@ -42,7 +46,8 @@ Vec3 contact_point_velocity(const model::Contact& contact, const Data& data, con
 double contact_gap_acceleration(const model::Contact& contact, const Data& data);
 
 /// Whether a disk contact's axis is within `tolerance` rad of its plane's normal at data's
-/// poses: the disk lies flat, touching with its face (not modelled). False for a sphere.
+/// poses: the disk lies flat, touching with its face (not modelled). False for a sphere, and for a
+/// disk against a sphere (whose face is modelled).
 bool disk_lies_flat(const model::Contact& contact, const Data& data, double tolerance);
 
 }  // namespace momenta::dynamics

@@ -140,6 +140,8 @@ enum class ContactShape {
 ///   plane:    gap = n · (p_centre − plane_point) − radius  (n, plane_point in W)
 ///   sphere:   gap = |p_centre − p_other| − radius − other_radius,  n = (p_centre − p_other) / |…|
 ///   disk rim on a plane: gap = n · (p_centre − plane_point) − radius |n − (n · a) a|, a the axis
+///   disk on a sphere: gap = |q − p_other| − other_radius, q the disk's point (face or rim)
+///             nearest p_other, n = (q − p_other) / |…| (dynamics/contact_geometry.hpp)
 ///
 /// p_centre = frame.p (radius 0 for a point). A disk touches at the rim point nearest the plane,
 /// p_centre − radius w / |w| with w = n − (n · a) a; a disk lying flat (|w| below 1e-9) touches
@@ -153,7 +155,7 @@ enum class ContactShape {
 /// Coulomb friction (docs/contacts.md): with static_friction μs > 0 the contact has two more rows,
 /// tangent_1 and tangent_2 (the plane's tangents t₁, the world's — or body a's — x axis, or y
 /// where n is near x, projected on the plane, and t₂ = n × t₁; between two spheres the world's x
-/// or y projected across the line of centres), which hold the body's
+/// or y projected across the normal), which hold the body's
 /// material point at the contact still while the friction they need stays in the cone
 /// |F_t| ≤ μs N (sticking). Beyond it the contact slides: those rows are off and the kinetic
 /// friction μk N acts against the slip. Their forces (N, on body b along t₁ and t₂) are the

@@ -238,11 +238,6 @@ model::Constraint read_constraint(const YamlNode& e, std::string_view type, cons
       }
     }
     if (e.has("friction")) read_friction(e.at("friction"), c);
-    if (c.shape == model::ContactShape::disk && !c.on_plane()) {
-      e.at("shape").fail(
-          "a disk's rim touches a plane (the ground's, or a body's: give normal and plane_point); "
-          "a disk against another body's sphere is not modelled (docs/contacts.md)");
-    }
     return c;
   }
   if (type == "knife_edge") {

@@ -191,13 +191,25 @@ TEST(ConstraintRows, ContactRowsSwitchedOnAreTheRatesOfTheirGapsAndSlips) {
   disk_on_body.other = frame("b3", {});
   disk_on_body.shape = model::ContactShape::disk;
   disk_on_body.radius = 0.1;
-  const std::vector<model::Contact> contacts{ground, on_body, spheres, disk_on_ground,
-                                             disk_on_body};
+  // A disk against a ball: one so wide that the ball is always over its face, one so narrow
+  // that it is always beside its rim.
+  model::Contact disk_face_ball = spheres;
+  disk_face_ball.name = "disk_face_ball";
+  disk_face_ball.frame = frame("b2", X);
+  disk_face_ball.shape = model::ContactShape::disk;
+  disk_face_ball.radius = 10.0;
+  disk_face_ball.other = frame("b5", X.inverse());
+  model::Contact disk_rim_ball = disk_face_ball;
+  disk_rim_ball.name = "disk_rim_ball";
+  disk_rim_ball.radius = 0.01;
+  disk_rim_ball.other = frame("b3", X);
+  const std::vector<model::Contact> contacts{
+      ground, on_body, spheres, disk_on_ground, disk_on_body, disk_face_ball, disk_rim_ball};
   for (const model::Contact& c : contacts) b.add_constraint(c);
   const model::Model model = b.build();
   dynamics::Data data(model);
   dynamics::ConstraintRows rows(model);
-  ASSERT_EQ(rows.count, 3 + 3 + 3 + 3 + 3);
+  ASSERT_EQ(rows.count, 3 * 7);
   EXPECT_EQ(rows.names[4], "on_body.tangent_1");
   std::fill(rows.enabled.begin(), rows.enabled.end(), 1);
   const auto rows_at = [&](const VecX& q, const VecX& v) {

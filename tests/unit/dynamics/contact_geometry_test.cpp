@@ -1,6 +1,7 @@
 // dynamics::contact_geometry against the geometry worked by hand: a ball above a tilted plane,
-// two balls on rotated bodies, a ball on a turned body's plane and a tilted disk on the ground —
-// gap, normal, contact point and tangents — and the error where two centres coincide.
+// two balls on rotated bodies, a ball on a turned body's plane, a tilted disk on the ground and a
+// disk against a ball over its face and by its rim — gap, normal, contact point and tangents —
+// and the errors where two centres coincide or a ball's centre is in a disk's face.
 
 #include "momenta/dynamics/contact_geometry.hpp"
 
@@ -110,6 +111,59 @@ TEST(ContactGeometry, ADiskTouchesAtItsRimPointNearestThePlane) {
   EXPECT_NEAR(flat.gap, 1.0, 1e-15);
   EXPECT_LT((flat.point_W - Vec3(0.1, 0, 1)).norm(), 1e-15);
   EXPECT_TRUE(disk_lies_flat(floor, data, 1e-6));
+}
+
+// A coin (R = 0.1 m) at the origin, turned 90° about x — its axis a = (0, −1, 0) —, against a
+// ball (r = 0.05 m) whose centre s is moved about. Over the face (s = (0.03, −0.2, 0.04): d · a =
+// 0.2 > 0, w = (0.03, 0, 0.04), |w| = 0.05 < R) the nearest point is (0.03, 0, 0.04), n = −a, the
+// gap 0.2 − r. Beside the rim (s = (0.3, −0.3, 0.4): w = (0.3, 0, 0.4), |w| = 0.5 > R) it is
+// p = R (0.6, 0, 0.8) = (0.06, 0, 0.08), s − p = (0.24, −0.3, 0.32), |s − p| = 0.5, the gap
+// 0.5 − r, n = (p − s) / 0.5.
+TEST(ContactGeometry, ADiskMeetsABallWithItsFaceOrItsRim) {
+  const model::Model model =
+      io::parse_model_file(
+          "bodies: [{name: coin, shape: thin_disk, mass: 1, radius: 0.1},\n"
+          "         {name: ball, shape: sphere, mass: 1, radius: 0.05}]\n"
+          "joints: [{name: f, type: free, parent: world, child: coin},\n"
+          "         {name: g, type: free, parent: world, child: ball}]\n"
+          "constraints: [{name: c, type: contact, shape: disk, body: coin, radius: 0.1,\n"
+          "               other_body: ball, other_radius: 0.05, friction: 0.3}]\n",
+          "disk_ball.yaml", ".")
+          .model;
+  const auto& c = std::get<model::Contact>(model.constraints()[0]);
+  const double h = std::sqrt(0.5);
+  VecX q = model.initial_q();
+  q.segment<7>(0) << 0, 0, 0, h, h, 0, 0;  // 90° about x: the coin's z along −y
+  Data data(model);
+  const auto at = [&](const Vec3& s) {
+    q.segment<3>(7) = s;
+    forward_kinematics(model, data, q);
+    return contact_geometry(c, data);
+  };
+  const ContactGeometry face = at(Vec3(0.03, -0.2, 0.04));
+  EXPECT_NEAR(face.gap, 0.2 - 0.05, 1e-15);
+  EXPECT_LT((face.normal_W - Vec3(0, 1, 0)).norm(), 1e-15);
+  EXPECT_LT((face.point_W - Vec3(0.03, -0.15, 0.04)).norm(), 1e-15);  // s + r n
+  // The tangents turn with n as between two balls: the world's x across it, and n × t₁.
+  EXPECT_LT((face.tangent_1_W - Vec3::UnitX()).norm(), 1e-15);
+  EXPECT_LT((face.tangent_2_W - Vec3(0, 1, 0).cross(Vec3::UnitX())).norm(), 1e-15);
+  EXPECT_FALSE(disk_lies_flat(c, data, 1e-6));  // a face against a ball is modelled
+
+  const ContactGeometry rim = at(Vec3(0.3, -0.3, 0.4));
+  const Vec3 n = Vec3(-0.24, 0.3, -0.32) / 0.5;
+  EXPECT_NEAR(rim.gap, 0.5 - 0.05, 1e-15);
+  EXPECT_LT((rim.normal_W - n).norm(), 1e-15);
+  EXPECT_LT((rim.point_W - (Vec3(0.3, -0.3, 0.4) + 0.05 * n)).norm(), 1e-15);
+
+  // The face's and the rim's formulas meet at the face's edge: just inside and just outside.
+  const ContactGeometry inside = at(Vec3(0.06, -0.2, 0.08 - 1e-12));
+  const ContactGeometry outside = at(Vec3(0.06, -0.2, 0.08 + 1e-12));
+  EXPECT_NEAR(inside.gap, outside.gap, 1e-15);
+  EXPECT_LT((inside.normal_W - outside.normal_W).norm(), 1e-10);
+
+  // The ball's centre in the face, or on the rim: no side of the disk to push it to.
+  EXPECT_THROW(at(Vec3(0.03, 0, 0.04)), NumericalError);
+  EXPECT_THROW(at(Vec3(0.06, 0, 0.08)), NumericalError);
 }
 
 }  // namespace
