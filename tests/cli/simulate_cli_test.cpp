@@ -378,6 +378,18 @@ TEST_F(SimulateCli, ContactsAreListedAndTheirImpactsSaid) {
       json::parse(momenta("info " + quoted(example("newtons_cradle.yaml")) + " --json").out);
   EXPECT_EQ(cradle.at("constraints")[0].at("other_body"), "ball1");
   EXPECT_EQ(cradle.at("constraints")[0].at("other_radius"), 0.025);
+  // A disk against a sphere: the disk (face and rim), not its rim alone; its resting contact's
+  // normal speed 0, not −0.
+  const std::string turntable = quoted(example("ball_on_turntable.yaml"));
+  EXPECT_NE(momenta("info " + turntable)
+                .out.find("face  contact, table's disk (radius 0.3 m, centre [0, 0, 0] m, axis "
+                          "[0, 0, 1]) on ball's sphere (radius 0.03 m, centre [0, 0, 0] m), "
+                          "restitution 0, friction μs 0.5, μk 0.4\n"),
+            std::string::npos);
+  EXPECT_NE(momenta("simulate " + turntable + " --duration 0.01")
+                .err.find("contact face holds the body from t = 0 s, sticking (normal speed 0 -> "
+                          "0, 0 J lost)"),
+            std::string::npos);
 
   const CliRun run = momenta("simulate " + sphere + " --reactions");
   ASSERT_EQ(run.code, 0) << run.err;
