@@ -138,10 +138,12 @@ py::dict summary_of(const simulate::SimulationSummary& s) {
     stop["energy_lost"] = e.energy_lost;
     stop["rest_time"] = e.rest_time;
     // A contact with friction: "sticking" or "sliding" after a rest, stick or slip ("" else), and
-    // at a stick or slip the friction sticking needs and the cone's μs N (N).
+    // at a stick or slip the friction sticking needs and the cone's μs N (N) — for a slip in
+    // another's impact ("in_impact") the friction impulse and μs P_n (N·s).
     stop["friction"] = std::string(simulate::friction_state_name(e.friction));
     stop["friction_needed"] = e.friction_needed;
     stop["friction_limit"] = e.friction_limit;
+    stop["in_impact"] = e.in_impact;
     stops.append(stop);
   }
   d["stops"] = stops;

@@ -59,6 +59,28 @@ std::vector<int> free_coordinates(const Model& model, std::span<const char> held
   return free;
 }
 
+// The pair ±P: P on B's point, −P on A's (none on the world).
+std::vector<PointImpulse> impulse_pair(const PointContact& c, const Vec3& P) {
+  std::vector<PointImpulse> pair;
+  pair.push_back({c.body_b, c.p_BoPb_B, P});
+  if (c.body_a != 0) pair.push_back({c.body_a, c.p_AoPa_A, -P});
+  return pair;
+}
+
+// The Jacobian (3 × nv, world-aligned) of a contact's relative point velocity v_Pb − v_Pa at
+// data's poses.
+MatX pair_jacobian(const Model& model, Data& data, const PointContact& c) {
+  MatX J = MatX::Zero(6, model.nv());
+  frame_jacobian(model, data, c.body_b, c.p_BoPb_B, J);
+  MatX pair = J.bottomRows<3>();
+  if (c.body_a != 0) {
+    J.setZero();
+    frame_jacobian(model, data, c.body_a, c.p_AoPa_A, J);
+    pair -= J.bottomRows<3>();
+  }
+  return pair;
+}
+
 // Each impulse's point Jacobian (3 × nv, world-aligned) at q.
 std::vector<MatX> point_jacobians(const Model& model, Data& data, VecRef q,
                                   std::span<const PointImpulse> impulses) {
@@ -81,7 +103,8 @@ namespace {
 // zero size for none).
 ImpulsiveMotion respond(const Model& model, VecRef q, VecRef v,
                         std::span<const PointImpulse> impulses, const VecX& generalized,
-                        std::span<const char> enabled_rows, std::span<const char> held_joints) {
+                        std::span<const char> enabled_rows, std::span<const char> held_joints,
+                        std::span<const SlidingContact> sliding) {
   check_arguments(model, q, v, impulses);
   if (!held_joints.empty() && static_cast<int>(held_joints.size()) != model.num_joints()) {
     throw InvalidArgument(fmt::format("impulsive_motion: {} held-joint flags for {} joints",
@@ -124,15 +147,31 @@ ImpulsiveMotion respond(const Model& model, VecRef q, VecRef v,
     rows.enabled.assign(enabled_rows.begin(), enabled_rows.end());
   }
   if (rows.count > 0) constraint_equations(model, data, q, rows, RowTerms::jacobian);
-  MatX G_f(rows.count, nf);
-  for (int i = 0; i < nf; ++i) G_f.col(i) = rows.G.col(free[i]);
+  // The directions the rows' impulses act along, Ĝ: G's, but a sliding contact's normal row
+  // carries its friction too, n + μk d̂ at its points (ĝ = g + μk d̂ᵀ (J_Pb − J_Pa)).
+  MatX G_hat = rows.G;
+  std::vector<Vec3> friction_per_normal;  // μk d̂ per unit normal impulse, per sliding contact
+  std::vector<MatX> sliding_J;
+  for (const SlidingContact& s : sliding) {
+    const bool on = s.normal_row >= 0 && s.normal_row < rows.count &&
+                    rows.enabled[static_cast<std::size_t>(s.normal_row)];
+    friction_per_normal.push_back(on ? Vec3(s.kinetic_friction * s.friction_W) : Vec3::Zero());
+    sliding_J.push_back(on ? pair_jacobian(model, data, s.contact) : MatX::Zero(3, nv));
+    if (on) G_hat.row(s.normal_row) += friction_per_normal.back().transpose() * sliding_J.back();
+  }
+  MatX G_f(rows.count, nf), G_hat_f(rows.count, nf);
+  for (int i = 0; i < nf; ++i) {
+    G_f.col(i) = rows.G.col(free[i]);
+    G_hat_f.col(i) = G_hat.col(free[i]);
+  }
 
-  // Δv_f = M_ff⁻¹ (b_f + G_fᵀ Λ), with G_f M_ff⁻¹ G_fᵀ Λ = −G v⁻ − G_f M_ff⁻¹ b_f: the rows'
-  // impulses by a rank-revealing solve (least-norm where rows are redundant).
+  // Δv_f = M_ff⁻¹ (b_f + Ĝ_fᵀ Λ), with G_f M_ff⁻¹ Ĝ_fᵀ Λ = −G v⁻ − G_f M_ff⁻¹ b_f: the rows'
+  // impulses by a rank-revealing solve (least-norm where rows are redundant; the matrix is
+  // symmetric unless a contact slides).
   VecX dv_f = M_solve.solve(b_f);
   r.constraint_impulses = VecX::Zero(rows.count);
   if (rows.count > 0) {
-    const MatX M_inv_Gt = M_solve.solve(G_f.transpose());
+    const MatX M_inv_Gt = M_solve.solve(G_hat_f.transpose());
     const MatX A = G_f * M_inv_Gt;
     Eigen::CompleteOrthogonalDecomposition<MatX> A_solve(A);
     A_solve.setThreshold(1e-10);
@@ -149,7 +188,15 @@ ImpulsiveMotion respond(const Model& model, VecRef q, VecRef v,
   // The drives' and holding stops' impulses: what the generalized momentum balance leaves at the
   // coordinates that keep their speed.
   VecX constraint_tau = VecX::Zero(nv);
-  if (rows.count > 0) constraint_tau = rows.G.transpose() * r.constraint_impulses;
+  if (rows.count > 0) constraint_tau = G_hat.transpose() * r.constraint_impulses;
+  // The sliding contacts' friction impulses, μk Λ_n d̂ on b's point (−, on a's).
+  std::vector<PointImpulse> friction;
+  for (std::size_t k = 0; k < sliding.size(); ++k) {
+    if (friction_per_normal[k].isZero()) continue;
+    const Vec3 F = r.constraint_impulses[sliding[k].normal_row] * friction_per_normal[k];
+    for (const PointImpulse& p : impulse_pair(sliding[k].contact, F)) friction.push_back(p);
+    r.impulse_work += 0.5 * F.dot(sliding_J[k] * (v + v + dv));
+  }
   r.drive_impulses = VecX::Zero(nv);
   const VecX balance = M * dv - applied - constraint_tau;
   for (const model::Joint& j : model.joints()) {
@@ -161,6 +208,11 @@ ImpulsiveMotion respond(const Model& model, VecRef q, VecRef v,
   // impulses as wrenches, less the same at rest alone (gravity, which gives no impulse).
   std::vector<Vec6> f_ext(static_cast<std::size_t>(model.num_bodies()), Vec6::Zero());
   forward_kinematics(model, data, q);
+  for (const PointImpulse& p : friction) {
+    const Vec3 P_B = data.X_WB[p.body].R.transpose() * p.impulse_W;
+    f_ext[p.body].head<3>() += p.p_BoP_B.cross(P_B);
+    f_ext[p.body].tail<3>() += P_B;
+  }
   for (const PointImpulse& p : impulses) {
     const Vec3 P_B = data.X_WB[p.body].R.transpose() * p.impulse_W;
     f_ext[p.body].head<3>() += p.p_BoP_B.cross(P_B);
@@ -199,8 +251,9 @@ ImpulsiveMotion respond(const Model& model, VecRef q, VecRef v,
 ImpulsiveMotion impulsive_motion(const Model& model, VecRef q, VecRef v,
                                  std::span<const PointImpulse> impulses,
                                  std::span<const char> enabled_rows,
-                                 std::span<const char> held_joints) {
-  return respond(model, q, v, impulses, VecX(), enabled_rows, held_joints);
+                                 std::span<const char> held_joints,
+                                 std::span<const SlidingContact> sliding) {
+  return respond(model, q, v, impulses, VecX(), enabled_rows, held_joints, sliding);
 }
 
 namespace {
@@ -223,14 +276,6 @@ double normal_speed(const Model& model, Data& data, VecRef q, VecRef v, const Po
   return c.normal_W.dot(relative_velocity(model, data, q, v, c));
 }
 
-// The pair ±P: P on B's point, −P on A's (none on the world).
-std::vector<PointImpulse> impulse_pair(const PointContact& c, const Vec3& P) {
-  std::vector<PointImpulse> pair;
-  pair.push_back({c.body_b, c.p_BoPb_B, P});
-  if (c.body_a != 0) pair.push_back({c.body_a, c.p_AoPa_A, -P});
-  return pair;
-}
-
 }  // namespace
 
 const char* slip_course_name(SlipCourse course) {
@@ -249,7 +294,8 @@ const char* slip_course_name(SlipCourse course) {
 
 Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointContact& contact,
                           double restitution, std::span<const char> enabled_rows,
-                          std::span<const char> held_joints) {
+                          std::span<const char> held_joints,
+                          std::span<const SlidingContact> sliding) {
   if (!(restitution >= 0.0 && restitution <= 1.0)) {
     throw InvalidArgument(fmt::format(
         "restitution_impact: the coefficient of restitution {} is outside [0, 1] (0: plastic, 1: "
@@ -285,7 +331,7 @@ Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointCon
   const VecX at_rest = VecX::Zero(model.nv());
   const std::vector<PointImpulse> unit = impulse_pair(contact, contact.normal_W);
   const ImpulsiveMotion response =
-      impulsive_motion(model, q, at_rest, unit, enabled_rows, held_joints);
+      impulsive_motion(model, q, at_rest, unit, enabled_rows, held_joints, sliding);
   const double w = normal_speed(model, data, q, response.v_after, contact);
   const double scale = std::max(1.0, w);
   if (!(w > 1e-12 * scale)) {
@@ -297,7 +343,7 @@ Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointCon
   impact.separation_speed = -restitution * impact.approach_speed;
   impact.motion =
       impulsive_motion(model, q, v, impulse_pair(contact, impact.normal_impulse * contact.normal_W),
-                       enabled_rows, held_joints);
+                       enabled_rows, held_joints, sliding);
   return impact;
 }
 
@@ -305,7 +351,8 @@ FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
                                    const PointContact& contact, double restitution,
                                    double static_friction, double kinetic_friction,
                                    std::span<const char> enabled_rows,
-                                   std::span<const char> held_joints) {
+                                   std::span<const char> held_joints,
+                                   std::span<const SlidingContact> sliding) {
   if (!(static_friction >= 0.0 && std::isfinite(static_friction) && kinetic_friction >= 0.0 &&
         kinetic_friction <= static_friction)) {
     throw InvalidArgument(fmt::format(
@@ -314,7 +361,7 @@ FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
   }
   // The frictionless impact checks the arguments and the approach, and gives the normal response.
   const Impact frictionless =
-      restitution_impact(model, q, v, contact, restitution, enabled_rows, held_joints);
+      restitution_impact(model, q, v, contact, restitution, enabled_rows, held_joints, sliding);
   const Vec3 n = contact.normal_W;
   Data data(model);
   FrictionalImpact impact;
@@ -334,8 +381,9 @@ FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
   Mat3 W;
   const VecX at_rest = VecX::Zero(model.nv());
   for (int k = 0; k < 3; ++k) {
-    const ImpulsiveMotion unit = impulsive_motion(
-        model, q, at_rest, impulse_pair(contact, Vec3::Unit(k)), enabled_rows, held_joints);
+    const ImpulsiveMotion unit =
+        impulsive_motion(model, q, at_rest, impulse_pair(contact, Vec3::Unit(k)), enabled_rows,
+                         held_joints, sliding);
     W.col(k) = relative_velocity(model, data, q, unit.v_after, contact);
   }
   // The course in the contact's basis [t₁ t₂ n].
@@ -353,7 +401,7 @@ FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
   impact.course = course.course;
   impact.sticking = course.course == SlipCourse::sticks || course.course == SlipCourse::stops;
   impact.motion =
-      impulsive_motion(model, q, v, impulse_pair(contact, P), enabled_rows, held_joints);
+      impulsive_motion(model, q, v, impulse_pair(contact, P), enabled_rows, held_joints, sliding);
   const Vec3 u_after = relative_velocity(model, data, q, impact.motion.v_after, contact);
   impact.separation_speed = n.dot(u_after);
   impact.slip_after_W = u_after - n * impact.separation_speed;
@@ -369,7 +417,8 @@ FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
 }
 
 StopImpact stop_impact(const Model& model, VecRef q, VecRef v, int coordinate, double restitution,
-                       std::span<const char> enabled_rows, std::span<const char> held_joints) {
+                       std::span<const char> enabled_rows, std::span<const char> held_joints,
+                       std::span<const SlidingContact> sliding) {
   if (coordinate < 0 || coordinate >= model.nv()) {
     throw InvalidArgument(fmt::format("stop_impact: no velocity coordinate {}; the model has {}",
                                       coordinate, model.nv()));
@@ -397,7 +446,7 @@ StopImpact stop_impact(const Model& model, VecRef q, VecRef v, int coordinate, d
   VecX unit = VecX::Zero(model.nv());
   unit[coordinate] = 1.0;
   const double w =
-      respond(model, q, at_rest, {}, unit, enabled_rows, held_joints).v_after[coordinate];
+      respond(model, q, at_rest, {}, unit, enabled_rows, held_joints, sliding).v_after[coordinate];
   if (!(w > 0.0)) {
     throw InvalidArgument(fmt::format(
         "stop_impact: the mechanism cannot move {} (its constraints hold it): no stop strikes it",
@@ -409,7 +458,7 @@ StopImpact stop_impact(const Model& model, VecRef q, VecRef v, int coordinate, d
   impact.impulse = (impact.rate_after - impact.rate_before) / w;
   VecX generalized = VecX::Zero(model.nv());
   generalized[coordinate] = impact.impulse;
-  impact.motion = respond(model, q, v, {}, generalized, enabled_rows, held_joints);
+  impact.motion = respond(model, q, v, {}, generalized, enabled_rows, held_joints, sliding);
   impact.motion.v_after[coordinate] = impact.rate_after;  // exact, not to round-off
   return impact;
 }

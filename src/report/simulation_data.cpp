@@ -106,7 +106,8 @@ json summary_json(const SimulationRun& run, double fastest_rate) {
                      {"rest_time", e.rest_time},
                      {"friction", simulate::friction_state_name(e.friction)},
                      {"friction_needed", e.friction_needed},
-                     {"friction_limit", e.friction_limit}});
+                     {"friction_limit", e.friction_limit},
+                     {"in_impact", e.in_impact}});
   }
   return {{"model", file.name},
           {"description", file.description},

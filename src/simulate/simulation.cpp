@@ -453,6 +453,9 @@ SimulationSummary Simulation::run(RowSink& sink) {
       state = before_stop;  // the run's own state, which `s` refers to
       stops_->act(recorder.system(), advanced(), state, stop_event);
       summary.stop_events.push_back(stop_event);
+      for (StopEvent& slip : stops_->take_impact_slips()) {
+        summary.stop_events.push_back(std::move(slip));
+      }
       restarted = true;
       --step;
     }
@@ -603,6 +606,12 @@ std::string format_stop_events(const std::vector<StopEvent>& events) {
             "μs N = {:.6g} N)",
             stop, e.time, e.rate_before, e.friction_needed, e.friction_limit);
       case StopEventKind::slip:
+        if (e.in_impact) {
+          return fmt::format(
+              "{} slips at t = {:.12g} s, in the impact (sticking would need a friction impulse "
+              "of {:.6g} N·s, beyond μs P_n = {:.6g} N·s)",
+              stop, e.time, e.friction_needed, e.friction_limit);
+        }
         // Where the friction sticking needs reached the cone (located there), or was beyond it
         // where a slip stopped (it slides on the other way).
         if (e.friction_needed <= e.friction_limit * (1.0 + 1e-9)) {

@@ -316,11 +316,9 @@ void Unilaterals::set_slip_references(system::MultibodySystem& system,
   }
 }
 
-double Unilaterals::contact_impact(system::MultibodySystem& system, const Entry& e,
-                                   integrate::State& at) {
+dynamics::PointContact Unilaterals::touch_of(const Entry& e, const integrate::State& at) {
   const model::Contact& c = contact_of(e);
-  const int nq = model_.nq(), nv = model_.nv();
-  dynamics::forward_kinematics(model_, data_, at.q.head(nq));
+  dynamics::forward_kinematics(model_, data_, at.q.head(model_.nq()));
   // The contact point: the sphere's point nearest the plane, or on the line of centres.
   const dynamics::ContactGeometry geometry = dynamics::contact_geometry(c, data_);
   const Vec3& point = geometry.point_W;
@@ -334,14 +332,24 @@ double Unilaterals::contact_impact(system::MultibodySystem& system, const Entry&
   touch.p_BoPb_B = in_body(touch.body_b);
   touch.body_a = c.other.body_index;
   touch.p_AoPa_A = touch.body_a == 0 ? point : in_body(touch.body_a);
+  return touch;
+}
+
+double Unilaterals::contact_impact(system::MultibodySystem& system, const Entry& e,
+                                   integrate::State& at) {
+  const model::Contact& c = contact_of(e);
+  const int nq = model_.nq(), nv = model_.nv();
+  const dynamics::PointContact touch = touch_of(e, at);
   // The contacts closed now and the stops holding take their impulses as constraints; one that
-  // would pull lets go, and the impact is solved again without it.
+  // would pull lets go, one whose cone cannot hold it slides, and the impact is solved again.
+  begin_impact(system, at);
   for (;;) {
     // Newton's restitution and Coulomb's law at impact (none without friction).
     const dynamics::FrictionalImpact impact = dynamics::frictional_impact(
         model_, at.q.head(nq), at.v.head(nv), touch, e.restitution, c.static_friction,
-        c.kinetic_friction, enabled_rows(system), system.held_joints());
-    if (!let_go_one_that_pulls(system, impact.motion, at)) {
+        c.kinetic_friction, enabled_rows(system), system.held_joints(), sliding_at_impact_);
+    if (!let_go_one_that_pulls(system, impact.motion, at) &&
+        !slide_one_beyond_its_cone(system, impact.motion, at)) {
       at.v.head(nv) = impact.motion.v_after;
       return impact.normal_impulse;
     }
@@ -351,11 +359,13 @@ double Unilaterals::contact_impact(system::MultibodySystem& system, const Entry&
 double Unilaterals::stop_strike(system::MultibodySystem& system, const Entry& e,
                                 integrate::State& at) {
   const int nq = model_.nq(), nv = model_.nv();
-  for (;;) {  // as contact_impact: what holds takes its impulse, unless it would pull
+  begin_impact(system, at);
+  for (;;) {  // as contact_impact: what holds takes its impulse, unless it pulls or slides
     const dynamics::StopImpact impact =
         dynamics::stop_impact(model_, at.q.head(nq), at.v.head(nv), e.v, e.restitution,
-                              enabled_rows(system), system.held_joints());
-    if (!let_go_one_that_pulls(system, impact.motion, at)) {
+                              enabled_rows(system), system.held_joints(), sliding_at_impact_);
+    if (!let_go_one_that_pulls(system, impact.motion, at) &&
+        !slide_one_beyond_its_cone(system, impact.motion, at)) {
       at.v.head(nv) = impact.motion.v_after;
       return impact.impulse;
     }
@@ -387,6 +397,67 @@ bool Unilaterals::let_go_one_that_pulls(system::MultibodySystem& system,
   if (pulling == nullptr) return false;
   open(system, *pulling, at);
   return true;
+}
+
+bool Unilaterals::slide_one_beyond_its_cone(system::MultibodySystem& system,
+                                            const dynamics::ImpulsiveMotion& motion,
+                                            integrate::State& at) {
+  if (system.constraints() == nullptr) return false;
+  const VecX& impulses = motion.constraint_impulses;
+  const std::vector<int>& first_row = system.constraints()->rows().first_row;
+  // The friction impulse its tangent rows carry (W, on body b) and μs times its normal impulse;
+  // round-off of a zero friction impulse slides nothing.
+  const Entry* beyond = nullptr;
+  double most = impulses.size() > 0 ? 1e-12 * impulses.cwiseAbs().maxCoeff() : 0.0;
+  Vec3 needed = Vec3::Zero();
+  dynamics::forward_kinematics(model_, data_, at.q.head(model_.nq()));
+  for (const Entry& e : entries_) {
+    if (!e.contact || hold_[slot(e)] != Hold::closed || !(e.static_friction > 0.0)) continue;
+    const int first = first_row[static_cast<std::size_t>(e.index)];
+    const dynamics::ContactGeometry g = dynamics::contact_geometry(contact_of(e), data_);
+    const Vec3 friction = impulses[first + 1] * g.tangent_1_W + impulses[first + 2] * g.tangent_2_W;
+    const double excess = friction.norm() - e.static_friction * impulses[first];
+    if (excess > most) {
+      most = excess;
+      beyond = &e;
+      needed = friction;
+    }
+  }
+  if (beyond == nullptr) return false;
+  const int first = first_row[static_cast<std::size_t>(beyond->index)];
+  StopEvent slip = event_at(*beyond, at.t, StopEventKind::slip);
+  slip.in_impact = true;
+  slip.friction = FrictionState::sliding;
+  slip.friction_needed = needed.norm();
+  slip.friction_limit = beyond->static_friction * impulses[first];
+  impact_slips_.push_back(slip);
+  // It slides the way the friction sticking needed held it from, through the impact and after.
+  hold_contact(system, *beyond, at, Hold::sliding, -needed);
+  sliding_at_impact_.push_back({first, touch_of(*beyond, at), Vec3(needed / needed.norm()),
+                                contact_of(*beyond).kinetic_friction});
+  return true;
+}
+
+void Unilaterals::begin_impact(const system::MultibodySystem& system, const integrate::State& at) {
+  sliding_at_impact_.clear();
+  if (system.constraints() == nullptr) return;
+  const std::vector<int>& first_row = system.constraints()->rows().first_row;
+  for (const Entry& e : entries_) {
+    if (!e.contact || hold_[slot(e)] != Hold::sliding) continue;
+    const model::Contact& c = contact_of(e);
+    if (!(c.kinetic_friction > 0.0)) continue;
+    // Against its slip (its reference direction where it is too slow to say).
+    const Vec3 slip = slip_velocity(e, at);
+    const Vec3 along = slip.norm() > kSlipAtRest ? slip : slip_reference_[slot(e)];
+    sliding_at_impact_.push_back({first_row[static_cast<std::size_t>(e.index)], touch_of(e, at),
+                                  Vec3(-along / along.norm()), c.kinetic_friction});
+  }
+}
+
+std::vector<StopEvent> Unilaterals::take_impact_slips() {
+  std::vector<StopEvent> slips;
+  slips.swap(impact_slips_);
+  return slips;
 }
 
 void Unilaterals::strike(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
@@ -464,6 +535,7 @@ std::vector<StopEvent> Unilaterals::start(system::MultibodySystem& system,
     strike(system, advanced, e, state, event);
     if (leaving > 0.0) event.rest_time = event.time;  // resting from the start: no bounces
     if (event.kind == StopEventKind::rest || event.impulse != 0.0) events.push_back(event);
+    for (StopEvent& slip : take_impact_slips()) events.push_back(std::move(slip));
   }
   return events;
 }

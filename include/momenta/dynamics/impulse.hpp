@@ -33,6 +33,30 @@ struct PointImpulse {
   Vec3 impulse_W = Vec3::Zero();
 };
 
+/// Two bodies meeting at a point: A's point p_AoPa_A and B's point p_BoPb_B, which touch, and the
+/// contact normal n (unit, in W) along which B is pushed away from A. A may be the world (0).
+struct PointContact {
+  int body_a = 0;
+  Vec3 p_AoPa_A = Vec3::Zero();
+  int body_b = 0;
+  Vec3 p_BoPb_B = Vec3::Zero();
+  Vec3 normal_W = Vec3::UnitZ();
+};
+
+/// A contact that slides through an impact: a closed contact with friction whose cone cannot
+/// hold the friction impulse sticking would need in the impact (its tangent rows then off). Its
+/// normal row keeps the points from approaching, and its impulse Λ_n there brings the friction
+/// impulse μk Λ_n along `friction_W` (unit, on body b at its point; the opposite on a) — Coulomb's
+/// law at impact with the slip's direction taken as the one sticking held it from: the impulse
+/// the row carries acts along n + μk friction_W (docs/contacts.md, "A sticking contact in
+/// another's impact").
+struct SlidingContact {
+  int normal_row = 0;  ///< its normal row (the layout of ConstraintRows)
+  PointContact contact;
+  Vec3 friction_W = Vec3::UnitX();
+  double kinetic_friction = 0.0;  ///< μk
+};
+
 /// The state just after the impulses, and every impulse the mechanism carries.
 struct ImpulsiveMotion {
   VecX v_before, v_after;  ///< v⁻, v⁺
@@ -60,21 +84,15 @@ struct ImpulsiveMotion {
 /// ConstraintRows::enabled) says which rows hold; empty, the model's own (its contacts open):
 /// a run passes the contacts it has closed, which then take their impulses too. `held_joints`
 /// (one flag per joint; empty, none) marks the joints a stop holds: they keep their speed like a
-/// prescribed joint's, and the stop's impulse is their entry of drive_impulses.
+/// prescribed joint's, and the stop's impulse is their entry of drive_impulses. `sliding`: the
+/// closed contacts that slide through the impact (SlidingContact; their normal rows enabled,
+/// their tangent rows not): each one's friction impulse is μk times its normal row's impulse
+/// (constraint_impulses), counted in the joints' impulses and in impulse_work.
 ImpulsiveMotion impulsive_motion(const Model& model, VecRef q, VecRef v,
                                  std::span<const PointImpulse> impulses,
                                  std::span<const char> enabled_rows = {},
-                                 std::span<const char> held_joints = {});
-
-/// Two bodies meeting at a point: A's point p_AoPa_A and B's point p_BoPb_B, which touch, and the
-/// contact normal n (unit, in W) along which B is pushed away from A. A may be the world (0).
-struct PointContact {
-  int body_a = 0;
-  Vec3 p_AoPa_A = Vec3::Zero();
-  int body_b = 0;
-  Vec3 p_BoPb_B = Vec3::Zero();
-  Vec3 normal_W = Vec3::UnitZ();
-};
+                                 std::span<const char> held_joints = {},
+                                 std::span<const SlidingContact> sliding = {});
 
 /// A frictionless impact at a contact by Newton's law of restitution (Beer & Johnston ch. 17,
 /// eccentric impact; Stronge, Impact Mechanics, ch. 2): the normal impulse P n on B (−P n on A)
@@ -92,10 +110,11 @@ struct Impact {
 /// so P = −(1 + e) v_n⁻ / w. Throws InvalidArgument where the points do not approach (v_n⁻ ≥ 0:
 /// no impact), e is outside [0, 1], the normal is not a unit vector, both points are on one body,
 /// or the mechanism cannot move them apart (w = 0: a contact the constraints hold still).
-/// `enabled_rows` and `held_joints` as impulsive_motion's.
+/// `enabled_rows`, `held_joints` and `sliding` as impulsive_motion's.
 Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointContact& contact,
                           double restitution, std::span<const char> enabled_rows = {},
-                          std::span<const char> held_joints = {});
+                          std::span<const char> held_joints = {},
+                          std::span<const SlidingContact> sliding = {});
 
 /// What the slip at a contact did within an impact with friction.
 enum class SlipCourse {
@@ -138,14 +157,15 @@ struct FrictionalImpact {
 };
 
 /// The impact at `contact` with restitution e, static and kinetic friction μs ≥ μk ≥ 0 at
-/// (q, v); arguments checked as restitution_impact's. `enabled_rows` and `held_joints` as
-/// impulsive_motion's. With μs = 0 it is restitution_impact's (its slips left zero, not computed,
-/// its course `slides`).
+/// (q, v); arguments checked as restitution_impact's. `enabled_rows`, `held_joints` and
+/// `sliding` as impulsive_motion's. With μs = 0 it is restitution_impact's (its slips left zero,
+/// not computed, its course `slides`).
 FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
                                    const PointContact& contact, double restitution,
                                    double static_friction, double kinetic_friction,
                                    std::span<const char> enabled_rows = {},
-                                   std::span<const char> held_joints = {});
+                                   std::span<const char> held_joints = {},
+                                   std::span<const SlidingContact> sliding = {});
 
 /// A stop striking a joint's coordinate (a revolute or prismatic joint at its limit,
 /// model::JointLimits): the generalized impulse P on coordinate i alone, M Δv = e_i P (+ the
@@ -163,9 +183,10 @@ struct StopImpact {
 /// The stop's impact on velocity coordinate `coordinate` with restitution e ∈ [0, 1] at (q, v).
 /// Whatever the sign of v_i⁻ (the caller knows which stop it meets). Throws InvalidArgument for a
 /// coordinate out of range, prescribed or held, e outside [0, 1], or one the constraints hold
-/// still. `enabled_rows` and `held_joints` as impulsive_motion's.
+/// still. `enabled_rows`, `held_joints` and `sliding` as impulsive_motion's.
 StopImpact stop_impact(const Model& model, VecRef q, VecRef v, int coordinate, double restitution,
                        std::span<const char> enabled_rows = {},
-                       std::span<const char> held_joints = {});
+                       std::span<const char> held_joints = {},
+                       std::span<const SlidingContact> sliding = {});
 
 }  // namespace momenta::dynamics

@@ -105,8 +105,11 @@ struct StopEvent {
   /// A contact with friction, after a rest, stick or slip: whether it sticks or slides.
   FrictionState friction = FrictionState::none;
   /// A stick or slip: the friction force sticking needs there, |F_t|, and what the cone gives,
-  /// μs N (N).
+  /// μs N (N); for a slip within an impact (in_impact) the impulses, |P_t| and μs P_n (N·s).
   double friction_needed = 0.0, friction_limit = 0.0;
+  /// A slip within another's impact: a sticking contact whose cone could not hold the friction
+  /// impulse sticking needed there; it slides through the impact and after it.
+  bool in_impact = false;
 };
 
 /// The stops and contacts a run starting at `state` holds (Unilaterals::start, `system` advancing
@@ -151,6 +154,10 @@ class Unilaterals {
   /// The caller restarts the integrator from it.
   void act(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
            integrate::State& state, StopEvent& event);
+
+  /// The sticking contacts that slid through the last act()'s impact (StopEvent::in_impact
+  /// slips, in the order they began to), taken: the list is empty after.
+  std::vector<StopEvent> take_impact_slips();
 
  private:
   // How an entry holds: open; closed (a stop holds its joint, a contact's rows are on — it
@@ -206,6 +213,16 @@ class Unilaterals {
   // pulls most, if one does, and says whether one did.
   bool let_go_one_that_pulls(system::MultibodySystem& system,
                              const dynamics::ImpulsiveMotion& motion, const integrate::State& at);
+  // After an impact's impulses `motion` that no closed contact pulls in: the sticking contact
+  // whose friction impulse leaves its cone most (|P_t| > μs P_n) slides through the impact —
+  // sliding_at_impact_ gains it, its tangent rows go off — if one does; says whether one did.
+  bool slide_one_beyond_its_cone(system::MultibodySystem& system,
+                                 const dynamics::ImpulsiveMotion& motion, integrate::State& at);
+  // Before an impact's solves: the contacts sliding now slide through it (sliding_at_impact_),
+  // their friction impulse μk P_n against their slip (Coulomb's law at impact).
+  void begin_impact(const system::MultibodySystem& system, const integrate::State& at);
+  // A contact's points at `at`: b's and a's at the contact point, and its normal.
+  dynamics::PointContact touch_of(const Entry& e, const integrate::State& at);
   // Closes e at `at`: a stop holds; a contact holds its body on the plane, sliding where its
   // contact point slips (faster than kSlipAtRest) or friction cannot hold it, sticking otherwise.
   void close(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
@@ -250,6 +267,9 @@ class Unilaterals {
   integrate::State trial_;
   VecX vdot_, q_, v_;
   dynamics::Data data_;  // a contact's kinematics
+  // The contacts sliding through the impact being solved, and the slips they began.
+  std::vector<dynamics::SlidingContact> sliding_at_impact_;
+  std::vector<StopEvent> impact_slips_;
 };
 
 }  // namespace momenta::simulate
