@@ -410,8 +410,9 @@ FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
   if (impact.motion.kinetic_after > kinetic_before + 1e-12 * std::max(1.0, kinetic_before)) {
     throw NumericalError(fmt::format(
         "frictional_impact: with e = {} and μk = {} this impact would create energy ({:.6g} J "
-        "→ {:.6g} J)",
-        restitution, kinetic_friction, kinetic_before, impact.motion.kinetic_after));
+        "→ {:.6g} J, {:.3g} J more)",
+        restitution, kinetic_friction, kinetic_before, impact.motion.kinetic_after,
+        impact.motion.kinetic_after - kinetic_before));
   }
   return impact;
 }

@@ -34,6 +34,10 @@ constexpr double kContactSlack = 1e-12;
 // flat: its face, not a rim point, would touch — not modelled (model::Contact).
 constexpr double kFlatDisk = 1e-6;
 
+// A contact or stop reached approaching slower than this (m/s or rad/s) touches without an
+// impact: its rate is round-off (the impulse's own measure of it may have the other sign).
+constexpr double kGrazingSpeed = 1e-14;
+
 // A contact that closes with its contact point slipping slower than this (m/s) is taken as not
 // slipping: it sticks if friction can hold it (projecting that slip away is no visible jump).
 constexpr double kSlipAtRest = 1e-10;
@@ -470,7 +474,7 @@ void Unilaterals::strike(system::MultibodySystem& system, integrate::SecondOrder
   event.rate_before = reported_rate();
   const double approach = rate(e, at);
   const double kinetic_before = system.energy(at.q.head(nq), at.v.head(nv)).kinetic;
-  if (approach < 0.0) {  // approaching: it strikes
+  if (approach < -kGrazingSpeed) {  // approaching: it strikes
     if (e.contact) {
       event.impulse = contact_impact(system, e, at);
     } else {
@@ -612,7 +616,11 @@ bool Unilaterals::check(system::MultibodySystem& system, integrate::SecondOrderS
     set_slip_references(system, end);
     return false;
   }
-  interpolant_.evaluate(advanced, first, before);
+  if (first == start.t) {
+    before = start;  // one that acts at once (found without the dense output)
+  } else {
+    interpolant_.evaluate(advanced, first, before);
+  }
   // The dense output between two projected states leaves the constraints by its interpolation
   // error (1e-9 in a rate at dopri5's 10 ms steps): the state it acts on is put back on them — a
   // stop's coordinate exactly on the stop, held there while the others take up the residual.

@@ -81,6 +81,13 @@ class MjcfWriter {
     for (std::string& mesh : detail::meshes_not_written(file_)) lost.push_back(std::move(mesh));
     for (std::string& bounce : detail::restitution_not_written(model_, "MuJoCo's limits are soft"))
       lost.push_back(std::move(bounce));
+    for (const model::Constraint& c : model_.constraints()) {
+      if (!model::is_unilateral(c)) continue;
+      lost.push_back(
+          fmt::format("contact '{}' (MuJoCo's contacts are soft, between geoms; the "
+                      "bodies' geoms are written without collisions)",
+                      model::constraint_name(c)));
+    }
     const std::string tendon_text = tendons(lost);
     for (const std::string& l : lost) out += fmt::format("<!-- Not written: {}. -->\n", l);
     out += fmt::format("<mujoco model=\"{}\">\n", file_.name);
@@ -131,13 +138,7 @@ class MjcfWriter {
             }
           },
           c);
-      if (model::is_unilateral(c)) {
-        throw InvalidArgument(fmt::format(
-            "contact '{}': momenta does not write contacts to MJCF yet (MuJoCo's are between "
-            "geoms, and soft); remove it to export the rest",
-            model::constraint_name(c)));
-      }
-      if (!kept) {
+      if (!kept && !model::is_unilateral(c)) {
         throw InvalidArgument(fmt::format(
             "constraint '{}' ({}): MJCF has no equality that keeps it (it keeps point, hinge and "
             "weld loops and couplers)",

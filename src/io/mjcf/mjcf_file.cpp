@@ -232,6 +232,10 @@ void MjcfReader::read_option(const XMLElement* xml) {
         gravity != nullptr && std::string_view(gravity) == "disable") {
       builder.set_gravity(Vec3::Zero());
     }
+    if (const char* contact = c->Attribute("contact");
+        contact != nullptr && std::string_view(contact) == "disable") {
+      contacts_on = false;
+    }
   }
 }
 
@@ -286,7 +290,26 @@ void MjcfReader::read_world_element(const XMLElement* c) {
   const std::string label =
       name != nullptr ? fmt::format("<{} name=\"{}\">", kind, name) : fmt::format("<{}>", kind);
   if (kind == "geom") {
-    note(c, fmt::format("{} in the world: contacts are not modelled", label));
+    const MjcfElement e{c, "geom", class_of(c, "main")};
+    const std::string type = keyword(
+        e, "type",
+        {"sphere", "capsule", "cylinder", "ellipsoid", "box", "mesh", "plane", "hfield", "sdf"},
+        "sphere");
+    if (type == "plane") {
+      world_planes.push_back(
+          MjcfGeom{e,
+                   fmt::format("plane {}", label),
+                   name != nullptr ? name : fmt::format("world_geom{}", world_geom_count),
+                   std::string(model::kWorldBodyName),
+                   type,
+                   pose(e),
+                   {}});
+    } else {
+      note(c, fmt::format("{} in the world ({}): contacts are with the world's planes only; "
+                          "not drawn",
+                          label, shape_with_article(type)));
+    }
+    ++world_geom_count;
   } else if (kind == "joint" || kind == "freejoint" || kind == "inertial") {
     fail(c, fmt::format("the world cannot have a <{}>", kind));
   } else {
@@ -340,6 +363,9 @@ void MjcfReader::read_body(const XMLElement* xml, const std::string& parent, con
       body_mass_properties(xml, name, child_class, parts);
   bodies.emplace(name, MjcfBody{name, xml, X_WB});
   const std::vector<std::string> chain = body_joints(xml, name, parent, X_PB, X_WB, child_class);
+  const bool has_joint =
+      xml->FirstChildElement("joint") != nullptr || xml->FirstChildElement("freejoint") != nullptr;
+  if (has_joint || moving_bodies.count(parent) != 0) moving_bodies.insert(name);
   for (std::size_t k = 0; k + 1 < chain.size(); ++k) {
     builder.add_body(chain[k], inertia::MassProperties());  // massless links of a joint chain
   }
@@ -627,6 +653,8 @@ ModelFile MjcfReader::read() {
       read_equality(c);
     } else if (kind == "actuator") {
       read_actuators(c);
+    } else if (kind == "contact") {
+      read_contact_section(c);
     } else if (kind != "compiler" && kind != "option" && kind != "default" && kind != "worldbody" &&
                kind != "asset" && kind != "keyframe" && kind != "tendon") {
       int count = 0;
@@ -638,6 +666,7 @@ ModelFile MjcfReader::read() {
     }
   }
 
+  add_contacts();
   model::Model model = build_at_lines(builder, items, file);
   std::vector<Keyframe> keyframes;
   for (const XMLElement* c = root->FirstChildElement("keyframe"); c != nullptr;

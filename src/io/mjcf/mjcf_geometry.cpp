@@ -245,8 +245,9 @@ inertia::MassProperties MjcfReader::body_mass_properties(const XMLElement* body,
 
   // Every geom: its mass properties in B (drawn, and summed when the geoms give the mass).
   inertia::MassProperties from_geom_sum;
+  int geom_index = 0;
   for (const XMLElement* g = body->FirstChildElement("geom"); g != nullptr;
-       g = g->NextSiblingElement("geom")) {
+       g = g->NextSiblingElement("geom"), ++geom_index) {
     check_attributes(
         g,
         {"name",      "class",      "type",      "contype",  "conaffinity", "condim",  "group",
@@ -262,6 +263,15 @@ inertia::MassProperties MjcfReader::body_mass_properties(const XMLElement* body,
         e, "type",
         {"sphere", "capsule", "cylinder", "ellipsoid", "box", "mesh", "plane", "hfield", "sdf"},
         "sphere");
+    // For the contacts: every geom, its frame and sizes where it is a shape momenta poses.
+    MjcfGeom& geom = body_geoms.emplace_back(
+        MjcfGeom{e,
+                 label,
+                 given != nullptr ? given : fmt::format("{}_geom{}", name, geom_index),
+                 name,
+                 type,
+                 Transform::identity(),
+                 {}});
     if (type == "mesh") {
       if (std::optional<PartSummary> part = mesh_geom(e, label, name, parts.size(), from_geoms)) {
         if (from_geoms) from_geom_sum += part->mass_properties;
@@ -318,6 +328,8 @@ inertia::MassProperties MjcfReader::body_mass_properties(const XMLElement* body,
     }
     if (along_fromto && (type == "box" || type == "ellipsoid")) size.resize(2);
     if (along_fromto) size.push_back(length / 2.0);  // the half-length along the axis
+    geom.X_BG = X_BG;
+    geom.size = size;
     const auto [material, amount] = geom_amount(e, label);
     inertia::MassProperties in_G;
     try {

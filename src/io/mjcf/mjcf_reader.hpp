@@ -2,13 +2,15 @@
 // The MJCF reader's parts (mjcf_*.cpp): one MjcfReader reads one document — its compiler settings,
 // default classes and the body tree (mjcf_file.cpp), the frames and geoms' mass properties
 // (mjcf_geometry.cpp), the equality constraints and actuators (mjcf_loads.cpp), the tendons
-// (mjcf_tendons.cpp) and keyframes (mjcf_keyframes.cpp).
+// (mjcf_tendons.cpp), keyframes (mjcf_keyframes.cpp) and the contacts of the bodies' geoms with
+// the world's planes (mjcf_contacts.cpp).
 
 #include <array>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -51,6 +53,17 @@ struct MjcfJoint {
   model::Joint joint;
   double ref = 0.0;  ///< rad or m: MuJoCo's qpos at momenta's q = 0 (a hinge's or slide's `ref`)
   double springref = 0.0;  ///< rad or m: MuJoCo's qpos where its spring relaxes (`springref`)
+};
+
+/// A geom as read, for the contacts (mjcf_contacts.cpp): a body's shape, or a plane of the world.
+struct MjcfGeom {
+  MjcfElement element;
+  std::string label;         ///< for messages: "geom 'name'" or "a geom of body 'b'"
+  std::string name;          ///< for contact names: the geom's name, or <body>_geom<i>
+  std::string body;          ///< momenta's body (kWorldBodyName for the world's)
+  std::string type;          ///< sphere, capsule, cylinder, box, ellipsoid, mesh, plane, ...
+  Transform X_BG;            ///< the geom's frame in the body (in the world for the world's)
+  std::vector<double> size;  ///< MuJoCo's sizes (a capsule's or cylinder's radius, half-length)
 };
 
 class MjcfReader {
@@ -111,6 +124,15 @@ class MjcfReader {
   /// at its length, or two tendons of one joint each, linearly); otherwise noted, and none.
   std::optional<model::JointCoupler> tendon_coupler(const XMLElement* xml, const MjcfElement& e,
                                                     const std::string& name);
+
+  // --- contacts (mjcf_contacts.cpp) ----------------------------------------------------------
+  /// The <contact> section: the bodies excluded from the world's geoms (<exclude> with the
+  /// world); the rest noted.
+  void read_contact_section(const XMLElement* section);
+  /// A unilateral contact for each shape of a moving body's geom that MuJoCo would collide with
+  /// each plane of the world (contype/conaffinity), with MuJoCo's friction, plastic; the shapes
+  /// momenta cannot pose noted.
+  void add_contacts();
 
   // --- keyframes (mjcf_keyframes.cpp) ---------------------------------------------------------
   /// The <key>s of a <keyframe> section as states of the built `model`: MuJoCo's qpos and qvel
@@ -183,6 +205,12 @@ class MjcfReader {
   std::map<std::string, std::vector<PartSummary>> body_parts;  // momenta body → geoms
   int body_count = 0, joint_count = 0;  // bodies and joints read so far: MuJoCo's numbers
   int tendon_count = 0;
+  int world_geom_count = 0;  // the world's geoms read so far (an unnamed one is world_geom<i>)
+  bool contacts_on = true;   // <option><flag contact="disable">: false
+  std::vector<MjcfGeom> body_geoms;                  // every body's geoms, in the file's order
+  std::vector<MjcfGeom> world_planes;                // the world's plane geoms
+  std::set<std::string, std::less<>> moving_bodies;  // bodies some joint moves (file's names)
+  std::set<std::string, std::less<>> excluded_from_world;  // <contact><exclude> with the world
 
  private:
   struct MeshAsset {
@@ -196,6 +224,9 @@ class MjcfReader {
   bool mesh_inertia_noted_ = false;
   std::vector<std::pair<int, std::string>> notes_;  // line, text
 };
+
+/// "a box", "an ellipsoid": a geom's type for messages.
+std::string shape_with_article(std::string_view type);
 
 /// Where an item is declared (field by field: GCC 12 misreports a braced one's strings).
 ItemLocation located_at(ModelItemRef::Kind kind, const std::string& name, int line, int column);

@@ -7,6 +7,7 @@
 
 #include "momenta/io/mjcf_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -166,8 +167,11 @@ TEST(MjcfFile, ArmDefaultsMassesJointsMotorsAndNotes) {
   // What is not used, at its line.
   const std::vector<std::string> expected_notes = {
       "arm7.xml:8: <option> timestep and integrator",
-      "arm7.xml:19: <geom name=\"floor\"> in the world: contacts are not modelled",
       "arm7.xml:20: <light name=\"sun\">: not used by momenta",
+      "arm7.xml:26: the bodies' geoms touch the world's planes; against each other they pass "
+      "through",
+      "arm7.xml:43: a geom of body 'link6' (an ellipsoid) passes through plane <geom "
+      "name=\"floor\">",
       "arm7.xml:48: <site name=\"flange\"> of body 'link7': not used by momenta",
       "arm7.xml:59: the control and force ranges of actuator 'm1' are not enforced",
       "arm7.xml:67: <sensor> (1 element): not used by momenta"};
@@ -488,6 +492,109 @@ TEST(MjcfFile, KeyframesAreNamedStatesInMomentasLayout) {
         }
       },
       InvalidArgument);
+}
+
+// The contacts MuJoCo would find against the world's planes, as momenta's rigid ones: a sphere
+// as itself, a capsule as its end spheres, a cylinder as its faces' rims, a box as its corners, on
+// a tilted plane through a point; MuJoCo's contype/conaffinity filter, its friction (the larger,
+// or the higher priority's; condim 1 frictionless); a body welded to the world and one excluded
+// from it have none; the shapes momenta cannot pose, and condim 6's extra friction, noted.
+TEST(MjcfFile, GeomsTouchTheWorldsPlanes) {
+  const std::string text = R"(<mujoco>
+<compiler angle="radian"/>
+<worldbody>
+<geom name="slope" type="plane" size="1 1 0.1" pos="0 0 -1" euler="0.3 0 0" friction="0.5"/>
+<geom name="post" type="box" size="0.1 0.1 0.1" pos="3 0 0"/>
+<body name="base"><geom name="plinth" type="sphere" size="0.2"/>
+<body name="arm" pos="0 0 1"><joint name="j1" axis="0 1 0"/>
+<geom name="ball" type="sphere" size="0.1" pos="0.5 0 0" friction="0.7"/>
+<geom name="rod" type="capsule" fromto="0 0 0 0 0 -0.4" size="0.05" condim="1" priority="2"/>
+<geom name="drum" type="cylinder" size="0.2 0.1" pos="0 1 0" priority="1" friction="0.2"/>
+<geom name="brick" type="box" size="0.1 0.2 0.3" pos="1 0 0" euler="0 0 0.5" condim="6"/>
+<geom name="egg" type="ellipsoid" size="0.1 0.2 0.3"/>
+<geom name="ghost" type="sphere" size="0.1" contype="0" conaffinity="0"/>
+<geom name="other" type="sphere" size="0.1" contype="2" conaffinity="2"/>
+</body>
+<body name="tail" pos="0 0 2"><joint name="j2"/><geom type="sphere" size="0.1"/></body>
+</body>
+</worldbody>
+<contact><exclude body1="world" body2="tail"/><pair geom1="ball" geom2="rod"/></contact>
+</mujoco>)";
+  const ModelFile f = parse_mjcf(text, "m.xml");
+  std::vector<std::string> names;
+  for (const model::Constraint& c : f.model.constraints())
+    names.push_back(model::constraint_name(c));
+  EXPECT_EQ(names, (std::vector<std::string>{
+                       "ball_slope", "rod_end1_slope", "rod_end2_slope", "drum_rim1_slope",
+                       "drum_rim2_slope", "brick_corner1_slope", "brick_corner2_slope",
+                       "brick_corner3_slope", "brick_corner4_slope", "brick_corner5_slope",
+                       "brick_corner6_slope", "brick_corner7_slope", "brick_corner8_slope"}));
+  const auto contact = [&](std::size_t k) -> const model::Contact& {
+    return std::get<model::Contact>(f.model.constraints()[k]);
+  };
+  // The plane: its frame's z through its pos, the geom's euler (x by 0.3 rad).
+  const Vec3 n(0.0, -std::sin(0.3), std::cos(0.3));
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    EXPECT_MATRIX_NEAR(contact(k).plane_normal, n, 1e-16);
+    EXPECT_MATRIX_NEAR(contact(k).plane_point, Vec3(0, 0, -1), 0.0);
+    EXPECT_TRUE(contact(k).on_ground());
+    EXPECT_EQ(contact(k).restitution, 0.0);
+    EXPECT_EQ(contact(k).frame.body, "arm");
+  }
+  EXPECT_EQ(contact(0).shape, model::ContactShape::sphere);
+  EXPECT_EQ(contact(0).radius, 0.1);
+  EXPECT_MATRIX_NEAR(contact(0).frame.X_BF.p, Vec3(0.5, 0, 0), 0.0);
+  EXPECT_EQ(contact(0).static_friction, 0.7);  // the larger of 0.7 and the plane's 0.5
+  EXPECT_EQ(contact(0).kinetic_friction, 0.7);
+  // The capsule's ends, from and to; condim 1 (its priority's): frictionless.
+  EXPECT_EQ(contact(1).radius, 0.05);
+  EXPECT_MATRIX_NEAR(contact(1).frame.X_BF.p, Vec3(0, 0, 0), 1e-16);
+  EXPECT_MATRIX_NEAR(contact(2).frame.X_BF.p, Vec3(0, 0, -0.4), 1e-16);
+  EXPECT_EQ(contact(1).static_friction, 0.0);
+  // The cylinder's rims about its axis (z), at ±its half-length; its priority gives 0.2.
+  EXPECT_EQ(contact(3).shape, model::ContactShape::disk);
+  EXPECT_EQ(contact(3).radius, 0.2);
+  EXPECT_MATRIX_NEAR(contact(3).frame.X_BF.p, Vec3(0, 1, -0.1), 1e-16);
+  EXPECT_MATRIX_NEAR(contact(4).frame.X_BF.p, Vec3(0, 1, 0.1), 1e-16);
+  EXPECT_MATRIX_NEAR(Vec3(contact(4).frame.X_BF.R.col(2)), Vec3::UnitZ(), 1e-16);
+  EXPECT_EQ(contact(3).static_friction, 0.2);
+  // The box's corners, turned 0.5 rad about z: points, corner k at (±a, ±b, ±c) by k's bits.
+  const Mat3 R = Eigen::AngleAxisd(0.5, Vec3::UnitZ()).toRotationMatrix();
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 corner((k & 1) ? 0.1 : -0.1, (k & 2) ? 0.2 : -0.2, (k & 4) ? 0.3 : -0.3);
+    const model::Contact& c = contact(5 + std::size_t(k));
+    EXPECT_EQ(c.radius, 0.0);
+    EXPECT_MATRIX_NEAR(c.frame.X_BF.p, Vec3(Vec3(1, 0, 0) + R * corner), 1e-15) << k;
+    EXPECT_EQ(c.static_friction, 1.0);  // MuJoCo's default 1, larger than the plane's 0.5
+  }
+  // What is not posed, at its line; the <contact> elements.
+  const std::vector<std::string> expected_notes = {
+      "m.xml:5: <geom name=\"post\"> in the world (a box): contacts are with the world's planes "
+      "only",
+      "m.xml:11: geom 'brick' on plane <geom name=\"slope\">: condim 6 — its torsional and "
+      "rolling friction is not modelled",
+      "m.xml:12: geom 'egg' (an ellipsoid) passes through plane <geom name=\"slope\">",
+      "m.xml:19: <pair> of <contact>: not used"};
+  for (const std::string& expected : expected_notes) {
+    EXPECT_TRUE(std::any_of(f.notes.begin(), f.notes.end(), [&](const std::string& note) {
+      return note.find(expected) != std::string::npos;
+    })) << expected;
+  }
+  // Contacts disabled: none, and a note says so.
+  std::string disabled = text;
+  disabled.replace(disabled.find("<worldbody>"), 11,
+                   "<option><flag contact=\"disable\"/></option><worldbody>");
+  const ModelFile off = parse_mjcf(disabled, "m.xml");
+  EXPECT_TRUE(off.model.constraints().empty());
+  EXPECT_TRUE(std::any_of(off.notes.begin(), off.notes.end(), [](const std::string& note) {
+    return note.find("contacts are disabled") != std::string::npos;
+  }));
+  // An exclude naming an unknown body is an error at its line.
+  std::string unknown = text;
+  unknown.replace(unknown.find("body2=\"tail\""), 12, "body2=\"tale\"");
+  const std::string error = error_of(unknown);
+  EXPECT_NE(error.find("m.xml:19:"), std::string::npos) << error;
+  EXPECT_NE(error.find("unknown body 'tale'"), std::string::npos) << error;
 }
 
 // Mesh geoms: each mesh in its file's coordinates, placed by the geom and weighed as the solid it
