@@ -95,6 +95,16 @@ std::vector<MatX> point_jacobians(const Model& model, Data& data, VecRef q,
   return out;
 }
 
+// Adds each point impulse to its body's wrench (body axes, about its origin) at data's poses.
+void add_point_impulses(const Data& data, std::span<const PointImpulse> impulses,
+                        std::vector<Vec6>& f_ext) {
+  for (const PointImpulse& p : impulses) {
+    const Vec3 P_B = data.X_WB[p.body].R.transpose() * p.impulse_W;
+    f_ext[p.body].head<3>() += p.p_BoP_B.cross(P_B);
+    f_ext[p.body].tail<3>() += P_B;
+  }
+}
+
 }  // namespace
 
 namespace {
@@ -208,16 +218,8 @@ ImpulsiveMotion respond(const Model& model, VecRef q, VecRef v,
   // impulses as wrenches, less the same at rest alone (gravity, which gives no impulse).
   std::vector<Vec6> f_ext(static_cast<std::size_t>(model.num_bodies()), Vec6::Zero());
   forward_kinematics(model, data, q);
-  for (const PointImpulse& p : friction) {
-    const Vec3 P_B = data.X_WB[p.body].R.transpose() * p.impulse_W;
-    f_ext[p.body].head<3>() += p.p_BoP_B.cross(P_B);
-    f_ext[p.body].tail<3>() += P_B;
-  }
-  for (const PointImpulse& p : impulses) {
-    const Vec3 P_B = data.X_WB[p.body].R.transpose() * p.impulse_W;
-    f_ext[p.body].head<3>() += p.p_BoP_B.cross(P_B);
-    f_ext[p.body].tail<3>() += P_B;
-  }
+  add_point_impulses(data, friction, f_ext);
+  add_point_impulses(data, impulses, f_ext);
   VecX coupler_tau = VecX::Zero(nv);
   if (rows.count > 0) {
     add_constraint_forces(model, data, rows, r.constraint_impulses, f_ext, coupler_tau);

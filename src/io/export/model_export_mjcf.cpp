@@ -81,19 +81,13 @@ class MjcfWriter {
     for (std::string& mesh : detail::meshes_not_written(file_)) lost.push_back(std::move(mesh));
     for (std::string& bounce : detail::restitution_not_written(model_, "MuJoCo's limits are soft"))
       lost.push_back(std::move(bounce));
-    for (const model::Constraint& c : model_.constraints()) {
-      if (!model::is_unilateral(c)) continue;
-      lost.push_back(
-          fmt::format("contact '{}' (MuJoCo's contacts are soft, between geoms; the "
-                      "bodies' geoms are written without collisions)",
-                      model::constraint_name(c)));
-    }
+    for (std::string& contact : contacts_not_written()) lost.push_back(std::move(contact));
     const std::string tendon_text = tendons(lost);
     for (const std::string& l : lost) out += fmt::format("<!-- Not written: {}. -->\n", l);
     out += fmt::format("<mujoco model=\"{}\">\n", file_.name);
     out += "  <compiler angle=\"radian\" autolimits=\"true\"/>\n";
     out += fmt::format("  <option gravity=\"{}\"/>\n", vector_text(model_.gravity()));
-    out += "  <worldbody>\n" + body_text + "  </worldbody>\n";
+    out += "  <worldbody>\n" + ground_planes() + body_text + "  </worldbody>\n";
     out += tendon_text;
     out += equality();
     if (!qvel_.isZero(0.0)) {
@@ -243,6 +237,7 @@ class MjcfWriter {
                        number_text(I(0, 0)), number_text(I(1, 1)), number_text(I(2, 2)),
                        number_text(I(0, 1)), number_text(I(0, 2)), number_text(I(1, 2)));
     out += geoms(joint.child_index, inner);
+    out += contact_geoms(joint.child_index, inner);
     for (int child : children[static_cast<std::size_t>(joint.child_index)]) {
       out += body(child, children, indent + 2);
     }
@@ -281,6 +276,96 @@ class MjcfWriter {
           pad, part.name, type, size, vector_text(part.p_BoSo_B), quaternion_text(part.R_BS));
     }
     return out;
+  }
+
+  // --- contacts -------------------------------------------------------------------------------
+  // A sphere on a ground plane is written as MuJoCo poses it: a sphere geom on the body against a
+  // plane geom of the world, plane k's pairs alone colliding (the geom's contype and the plane's
+  // conaffinity the bit 1 << k; the plane's friction 0 and condim 1, so that MuJoCo's mixing —
+  // the larger of each — gives the geom's). momenta's MJCF reader reads them back as contacts
+  // `<name>_ground<k>`. MuJoCo's contacts are soft: a restitution, or a kinetic friction below
+  // the static one, is not written.
+
+  static bool written(const model::Contact& c) {
+    return c.on_ground() && c.shape == model::ContactShape::sphere && c.radius > 0.0;
+  }
+
+  // The distinct ground planes of the contacts written, as (normal, point), in first use.
+  std::vector<std::pair<Vec3, Vec3>> planes() const {
+    std::vector<std::pair<Vec3, Vec3>> out;
+    for (const model::Constraint& constraint : model_.constraints()) {
+      const auto* c = std::get_if<model::Contact>(&constraint);
+      if (c == nullptr || !written(*c)) continue;
+      const std::pair<Vec3, Vec3> plane(c->plane_normal.normalized(), c->plane_point);
+      if (std::find(out.begin(), out.end(), plane) == out.end()) out.push_back(plane);
+    }
+    return out;
+  }
+
+  std::string ground_planes() const {
+    std::string out;
+    const std::vector<std::pair<Vec3, Vec3>> all = planes();
+    for (std::size_t k = 0; k < all.size(); ++k) {
+      out += fmt::format(
+          "    <geom name=\"ground{}\" type=\"plane\" size=\"0 0 1\" pos=\"{}\" zaxis=\"{}\" "
+          "friction=\"0\" condim=\"1\" contype=\"0\" conaffinity=\"{}\"/>\n",
+          k, vector_text(all[k].second), vector_text(all[k].first), 1u << k);
+    }
+    return out;
+  }
+
+  std::string contact_geoms(int body, const std::string& pad) const {
+    std::string out;
+    const std::vector<std::pair<Vec3, Vec3>> all = planes();
+    for (const model::Constraint& constraint : model_.constraints()) {
+      const auto* c = std::get_if<model::Contact>(&constraint);
+      if (c == nullptr || !written(*c) || c->frame.body_index != body) continue;
+      const std::pair<Vec3, Vec3> plane(c->plane_normal.normalized(), c->plane_point);
+      const auto k =
+          static_cast<std::size_t>(std::find(all.begin(), all.end(), plane) - all.begin());
+      out += fmt::format(
+          "{}<geom name=\"{}\" type=\"sphere\" size=\"{}\" pos=\"{}\" mass=\"0\" "
+          "friction=\"{}\" condim=\"{}\" contype=\"{}\" conaffinity=\"0\"/>\n",
+          pad, c->name, number_text(c->radius), vector_text(c->frame.X_BF.p),
+          number_text(c->static_friction), c->has_friction() ? 3 : 1, 1u << k);
+    }
+    return out;
+  }
+
+  std::vector<std::string> contacts_not_written() const {
+    if (planes().size() > 31) {
+      throw InvalidArgument(
+          "MJCF export: contacts on more than 31 ground planes (MuJoCo's contype has 31 bits)");
+    }
+    std::vector<std::string> lost;
+    for (const model::Constraint& constraint : model_.constraints()) {
+      const auto* c = std::get_if<model::Contact>(&constraint);
+      if (c == nullptr) continue;
+      if (!written(*c)) {
+        const char* what = c->shape == model::ContactShape::disk ? "a disk's"
+                           : c->radius == 0.0                    ? "a point's"
+                           : c->other_plane ? "a sphere's, with another body's plane"
+                                            : "a sphere's, with another body's sphere";
+        lost.push_back(
+            fmt::format("contact '{}' (momenta writes a sphere's contact with a ground "
+                        "plane; this one is {})",
+                        c->name, what));
+        continue;
+      }
+      if (c->restitution != 0.0) {
+        lost.push_back(
+            fmt::format("the restitution {} of contact '{}' (MuJoCo's contacts are "
+                        "soft: read back, it is plastic)",
+                        c->restitution, c->name));
+      }
+      if (c->kinetic_friction != c->static_friction) {
+        lost.push_back(
+            fmt::format("the kinetic friction {} of contact '{}' (MuJoCo has one "
+                        "coefficient: the static {} is written)",
+                        c->kinetic_friction, c->name, c->static_friction));
+      }
+    }
+    return lost;
   }
 
   // The fixed tendons. MuJoCo's length Σ cᵢ qposᵢ has no offset (qpos is momenta's q here):

@@ -139,6 +139,33 @@ TEST(ModelExport, EveryExampleThroughMjcfAndBack) {
     const double mass_matrix = relative(MatX(P.transpose() * M_back * P), M);
     EXPECT_LT(mass_matrix, 1e-15);
     worst_mass_matrix = std::max(worst_mass_matrix, mass_matrix);
+    // Its spheres' contacts with the ground, written as MuJoCo's geoms, read back as contacts
+    // (named after their plane) on the same body, of the same radius, centre, plane and friction.
+    int spheres_on_ground = 0;
+    for (const model::Constraint& constraint : original.model.constraints()) {
+      const auto* c = std::get_if<model::Contact>(&constraint);
+      if (c == nullptr || !c->on_ground() || c->shape != model::ContactShape::sphere ||
+          c->radius == 0.0) {
+        continue;
+      }
+      ++spheres_on_ground;
+      const auto read = std::find_if(
+          back.model.constraints().begin(), back.model.constraints().end(), [&](const auto& other) {
+            return model::constraint_name(other).rfind(c->name + "_ground", 0) == 0;
+          });
+      ASSERT_NE(read, back.model.constraints().end()) << c->name;
+      const auto& r = std::get<model::Contact>(*read);
+      EXPECT_EQ(r.frame.body, c->frame.body);
+      EXPECT_EQ(r.radius, c->radius);
+      EXPECT_MATRIX_NEAR(r.frame.X_BF.p, c->frame.X_BF.p, 1e-15);
+      EXPECT_MATRIX_NEAR(r.plane_normal, c->plane_normal.normalized(), 1e-15);
+      EXPECT_MATRIX_NEAR(r.plane_point, c->plane_point, 1e-15);
+      EXPECT_EQ(r.static_friction, c->static_friction);
+    }
+    // No other contact comes back (each written geom meets its own plane only).
+    EXPECT_EQ(std::count_if(back.model.constraints().begin(), back.model.constraints().end(),
+                            [](const auto& other) { return model::is_unilateral(other); }),
+              spheres_on_ground);
     // The loads MJCF does not keep are said.
     EXPECT_EQ(written.text.find("Not written") != std::string::npos, !written.not_written.empty());
   }

@@ -20,13 +20,17 @@
 #include <iterator>
 #include <random>
 #include <string>
+#include <variant>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 
 #include "momenta/common/error.hpp"
 #include "momenta/dynamics/aba.hpp"
+#include "momenta/dynamics/contact_geometry.hpp"
 #include "momenta/dynamics/crba.hpp"
 #include "momenta/dynamics/force_elements.hpp"
 #include "momenta/dynamics/kinematics.hpp"
@@ -41,12 +45,13 @@
 namespace momenta {
 namespace {
 
+// A file loaded by MuJoCo, its contacts and constraint solver off unless `with_contacts`.
 struct MuJoCoModel {
-  explicit MuJoCoModel(const std::string& path) {
+  explicit MuJoCoModel(const std::string& path, bool with_contacts = false) {
     char error[1000] = "";
     m = mj_loadXML(path.c_str(), nullptr, error, sizeof(error));
     if (m != nullptr) {
-      m->opt.disableflags |= mjDSBL_CONTACT | mjDSBL_CONSTRAINT;
+      if (!with_contacts) m->opt.disableflags |= mjDSBL_CONTACT | mjDSBL_CONSTRAINT;
       d = mj_makeData(m);
     }
     message = error;
@@ -550,6 +555,119 @@ TEST(MjcfMuJoCo, KeyframesAreMuJoCosStates) {
               std::string::npos)
         << e.what();
   }
+}
+
+}  // namespace
+}  // namespace momenta
+
+namespace momenta {
+namespace {
+
+// The contacts momenta reads from an MJCF file are the ones MuJoCo finds: a sphere, a capsule, a
+// cylinder lying on their sides and a box lying flat, each sunk 1e-9 m into a tilted floor, give
+// MuJoCo 1 + 2 + 2 + 4 contacts — each at a point where one of momenta's contacts of that geom
+// touches, to the depth (MuJoCo's point is halfway into the overlap) —, with its friction and
+// condim; momenta's other contacts there (the box's upper corners, ...) are apart.
+TEST(MjcfMuJoCo, GeomsOnAPlaneTouchWhereMuJoCosDo) {
+  const double sunk = 1e-9;
+  // Each body placed on the slope (turned 0.2 rad about x) at (x, y) of it, `height` above it.
+  const Mat3 slope = Eigen::AngleAxisd(0.2, Vec3::UnitX()).toRotationMatrix();
+  const auto at = [&](double x, double y, double height) {
+    const Vec3 p = slope * Vec3(x, y, height);
+    return fmt::format("{:.17g} {:.17g} {:.17g}", p.x(), p.y(), p.z());
+  };
+  const std::string text = fmt::format(
+      R"(<mujoco>
+<compiler angle="radian"/>
+<option gravity="0 0 -9.81"/>
+<worldbody>
+<geom name="floor" type="plane" size="3 3 0.1" euler="0.2 0 0" friction="0.6"/>
+<body name="ball" pos="{}" euler="0.2 0 0"><freejoint/><geom name="ball" type="sphere" size="0.1"/></body>
+<body name="rod" pos="{}" euler="0.2 0 0"><freejoint/>
+<geom name="rod" type="capsule" fromto="0 -0.2 0 0 0.2 0" size="0.1" friction="0.9"/></body>
+<body name="drum" pos="{}" euler="0.2 0 0"><freejoint/>
+<geom name="drum" type="cylinder" size="0.1 0.2" euler="1.5707963267948966 0 0" condim="1" priority="1"/></body>
+<body name="brick" pos="{}" euler="0.2 0 0.4"><freejoint/>
+<geom name="brick" type="box" size="0.2 0.1 0.05"/></body>
+</worldbody>
+</mujoco>)",
+      at(0, 0, 0.1 - sunk), at(1, 0, 0.1 - sunk), at(-1, 0, 0.1 - sunk), at(0, 1, 0.05 - sunk));
+  const std::filesystem::path dir = test::make_scratch_dir("mjcf_mujoco_contacts");
+  const std::string path = (dir / "on_a_slope.xml").string();
+  std::ofstream(path) << text;
+  MuJoCoModel mj(path, true);
+  ASSERT_NE(mj.m, nullptr) << mj.message;
+  mj_forward(mj.m, mj.d);
+  ASSERT_EQ(mj.d->ncon, 9);
+
+  const io::ModelFile momenta_file = io::read_mjcf_file(path);
+  const model::Model& model = momenta_file.model;
+  dynamics::Data data(model);
+  dynamics::forward_kinematics(model, data, model.initial_q());
+  std::vector<dynamics::ContactGeometry> touching;
+  std::vector<const model::Contact*> which;
+  for (const model::Constraint& constraint : model.constraints()) {
+    const auto& c = std::get<model::Contact>(constraint);
+    const dynamics::ContactGeometry g = dynamics::contact_geometry(c, data);
+    if (g.gap < 0.0) {
+      EXPECT_NEAR(g.gap, -sunk, 1e-15) << c.name;
+      touching.push_back(g);
+      which.push_back(&c);
+    } else {
+      EXPECT_GT(g.gap, 1e-3) << c.name;
+    }
+  }
+  ASSERT_EQ(touching.size(), 9u);
+  for (int k = 0; k < mj.d->ncon; ++k) {
+    const mjContact& con = mj.d->contact[k];
+    const int geom = con.geom1 == 0 ? con.geom2 : con.geom1;
+    const std::string name = mj_id2name(mj.m, mjOBJ_GEOM, geom);
+    const Vec3 p_mj(con.pos[0], con.pos[1], con.pos[2]);
+    std::size_t nearest = 0;
+    for (std::size_t i = 1; i < touching.size(); ++i) {
+      if ((touching[i].point_W - p_mj).norm() < (touching[nearest].point_W - p_mj).norm())
+        nearest = i;
+    }
+    SCOPED_TRACE(name);
+    EXPECT_EQ(which[nearest]->name.rfind(name, 0), 0u) << which[nearest]->name;
+    // MuJoCo's point is halfway into the overlap: sunk / 2 from momenta's surface point.
+    EXPECT_LT((touching[nearest].point_W - p_mj).norm(), sunk);
+    EXPECT_NEAR(con.dist, -sunk, 1e-15);
+    const double mu = which[nearest]->static_friction;
+    EXPECT_EQ(con.dim, mu > 0.0 ? 3 : 1);
+    if (mu > 0.0) {
+      EXPECT_EQ(con.friction[0], mu);
+    }
+  }
+}
+
+// momenta's own contacts written as MJCF: the skidding ball's sphere on its lane, loaded by MuJoCo
+// with contacts on, touches the plane once with the friction written, and reads back as the
+// contact it was.
+TEST(MjcfMuJoCo, ContactsWrittenAreMuJoCosContacts) {
+  const io::ModelFile yaml =
+      io::read_model_file(test::source_dir() + "/examples/skidding_ball.yaml");
+  const io::ExportedModel written = io::write_mjcf(yaml, yaml.model.initial_q());
+  const std::filesystem::path dir = test::make_scratch_dir("mjcf_mujoco_contacts_written");
+  const std::string path = (dir / "skidding_ball.xml").string();
+  std::ofstream(path) << written.text;
+  MuJoCoModel mj(path, true);
+  ASSERT_NE(mj.m, nullptr) << mj.message;
+  mj_forward(mj.m, mj.d);
+  ASSERT_EQ(mj.d->ncon, 1);
+  const auto& lane = std::get<model::Contact>(yaml.model.constraints()[0]);
+  EXPECT_NEAR(mj.d->contact[0].dist, 0.0, 1e-15);
+  EXPECT_EQ(mj.d->contact[0].dim, 3);
+  EXPECT_EQ(mj.d->contact[0].friction[0], lane.static_friction);
+  const io::ModelFile back = io::read_mjcf_file(path);
+  ASSERT_EQ(back.model.constraints().size(), 1u);
+  const auto& read = std::get<model::Contact>(back.model.constraints()[0]);
+  EXPECT_EQ(read.name, "lane_ground0");
+  EXPECT_EQ(read.radius, lane.radius);
+  EXPECT_EQ(read.static_friction, lane.static_friction);
+  EXPECT_EQ(read.kinetic_friction, lane.static_friction);  // MuJoCo's one coefficient
+  EXPECT_EQ(read.plane_normal, lane.plane_normal);
+  EXPECT_EQ(read.plane_point, lane.plane_point);
 }
 
 }  // namespace
