@@ -107,9 +107,11 @@ class Course {
       const auto close = [](double a, double b) {
         return std::abs(a - b) <= 1e-15 * std::max(std::abs(a), std::abs(b));
       };
-      const auto [lo, hi] = boost::math::tools::toms748_solve(excess, low, high, excess(low),
-                                                              excess(high), close, iterations);
-      lambda = 0.5 * (lo + hi);
+      if (low < high) {  // else no bracket: already beyond at `high` (round-off)
+        const auto [lo, hi] = boost::math::tools::toms748_solve(excess, low, high, excess(low),
+                                                                excess(high), close, iterations);
+        lambda = 0.5 * (lo + hi);
+      }
     }
     const Vec2 s = along(lambda);
     resume_direction_ = s / s.norm();
@@ -237,7 +239,7 @@ class Course {
         };
         const double start = event_value(y);
         double at = h;
-        if (start < 0.0) {
+        if (start < 0.0 && h > 0.0) {
           const auto [lo, hi] = boost::math::tools::toms748_solve(
               value, 0.0, h, start, event_value(next), close, iterations);
           at = value(lo) >= 0.0 ? lo : hi;

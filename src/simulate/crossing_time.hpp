@@ -12,10 +12,10 @@ namespace momenta::simulate::detail {
 
 /// The first time in [a, b] where f ≤ 0, given f(a) = fa ≥ 0 > fb = f(b): Alefeld–Potra–Shi's
 /// TOMS 748 to a bracket of 1e-14 relative in time, and the bracket's end where f ≤ 0 (a itself
-/// where fa = 0).
+/// where fa = 0, or where the step has no length: b = a).
 template <class F>
 double crossing_time(F&& f, double a, double b, double fa, double fb) {
-  if (fa == 0.0) return a;
+  if (fa == 0.0 || !(b > a)) return a;  // a step of no length (an instant acted on twice)
   const auto close_enough = [](double x, double y) {
     return std::abs(y - x) <= 1e-14 * std::max(std::abs(x), std::abs(y));
   };
