@@ -331,7 +331,7 @@ TEST_F(FirstHourCli, MjcfFilesAreModelFiles) {
   CliRun r = momenta("info " + arm + " --json");
   ASSERT_EQ(r.code, 0) << r.err;
   const auto info = nlohmann::json::parse(r.out);
-  EXPECT_EQ(info.at("not_used").size(), 8u) << r.out;
+  EXPECT_EQ(info.at("not_used").size(), 6u) << r.out;
   r = momenta("info " + arm);
   ASSERT_EQ(r.code, 0) << r.err;
   // Its ranges are stops (range="-170 170" in degrees).
