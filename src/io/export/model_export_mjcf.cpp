@@ -66,7 +66,8 @@ Transform factor_motion(const Factor& f, double value) {
 
 class MjcfWriter {
  public:
-  MjcfWriter(const ModelFile& file, const VecX& q) : file_(file), model_(file.model), q_(q) {}
+  MjcfWriter(const ModelFile& file, const VecX& q)
+      : file_(file), model_(file.model), q_(q), planes_(ground_planes_of(file.model)) {}
 
   ExportedModel write() {
     check_representable();
@@ -291,9 +292,9 @@ class MjcfWriter {
   }
 
   // The distinct ground planes of the contacts written, as (normal, point), in first use.
-  std::vector<std::pair<Vec3, Vec3>> planes() const {
+  static std::vector<std::pair<Vec3, Vec3>> ground_planes_of(const model::Model& model) {
     std::vector<std::pair<Vec3, Vec3>> out;
-    for (const model::Constraint& constraint : model_.constraints()) {
+    for (const model::Constraint& constraint : model.constraints()) {
       const auto* c = std::get_if<model::Contact>(&constraint);
       if (c == nullptr || !written(*c)) continue;
       const std::pair<Vec3, Vec3> plane(c->plane_normal.normalized(), c->plane_point);
@@ -304,25 +305,23 @@ class MjcfWriter {
 
   std::string ground_planes() const {
     std::string out;
-    const std::vector<std::pair<Vec3, Vec3>> all = planes();
-    for (std::size_t k = 0; k < all.size(); ++k) {
+    for (std::size_t k = 0; k < planes_.size(); ++k) {
       out += fmt::format(
           "    <geom name=\"ground{}\" type=\"plane\" size=\"0 0 1\" pos=\"{}\" zaxis=\"{}\" "
           "friction=\"0\" condim=\"1\" contype=\"0\" conaffinity=\"{}\"/>\n",
-          k, vector_text(all[k].second), vector_text(all[k].first), 1u << k);
+          k, vector_text(planes_[k].second), vector_text(planes_[k].first), 1u << k);
     }
     return out;
   }
 
   std::string contact_geoms(int body, const std::string& pad) const {
     std::string out;
-    const std::vector<std::pair<Vec3, Vec3>> all = planes();
     for (const model::Constraint& constraint : model_.constraints()) {
       const auto* c = std::get_if<model::Contact>(&constraint);
       if (c == nullptr || !written(*c) || c->frame.body_index != body) continue;
       const std::pair<Vec3, Vec3> plane(c->plane_normal.normalized(), c->plane_point);
-      const auto k =
-          static_cast<std::size_t>(std::find(all.begin(), all.end(), plane) - all.begin());
+      const auto k = static_cast<std::size_t>(std::find(planes_.begin(), planes_.end(), plane) -
+                                              planes_.begin());
       out += fmt::format(
           "{}<geom name=\"{}\" type=\"sphere\" size=\"{}\" pos=\"{}\" mass=\"0\" "
           "friction=\"{}\" condim=\"{}\" contype=\"{}\" conaffinity=\"0\"/>\n",
@@ -333,7 +332,7 @@ class MjcfWriter {
   }
 
   std::vector<std::string> contacts_not_written() const {
-    if (planes().size() > 31) {
+    if (planes_.size() > 31) {
       throw InvalidArgument(
           "MJCF export: contacts on more than 31 ground planes (MuJoCo's contype has 31 bits)");
     }
@@ -458,6 +457,7 @@ class MjcfWriter {
   const model::Model& model_;
   const VecX& q_;
   VecX qvel_;  // the initial velocities in MuJoCo's order (the file's, depth first)
+  std::vector<std::pair<Vec3, Vec3>> planes_;  // the ground planes of the contacts written
 };
 
 }  // namespace

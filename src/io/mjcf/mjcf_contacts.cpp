@@ -8,7 +8,6 @@
 // penetration, friction that sticks, impacts where a geom lands.
 
 #include <algorithm>
-#include <array>
 #include <vector>
 
 #include <fmt/format.h>
@@ -141,14 +140,17 @@ void MjcfReader::add_contacts() {
     return;
   }
   bool between_bodies_noted = false;
+  std::vector<Surface> geom_surfaces;  // each body geom's, read once for every plane
+  for (const MjcfGeom& geom : body_geoms) geom_surfaces.push_back(surface_of(*this, geom));
   for (const MjcfGeom& plane : world_planes) {
     const Surface plane_surface = surface_of(*this, plane);
     const Vec3 n_W = plane.X_BG.R.col(2);
-    for (const MjcfGeom& geom : body_geoms) {
+    for (std::size_t g = 0; g < body_geoms.size(); ++g) {
+      const MjcfGeom& geom = body_geoms[g];
       if (moving_bodies.count(geom.body) == 0 || excluded_from_world.count(geom.body) != 0) {
         continue;
       }
-      const Surface geom_surface = surface_of(*this, geom);
+      const Surface& geom_surface = geom_surfaces[g];
       if (!collide(plane_surface, geom_surface)) continue;
       const std::vector<Feature> features = features_of(geom);
       if (features.empty()) {
