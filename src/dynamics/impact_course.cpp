@@ -6,6 +6,7 @@
 #include <limits>
 
 #include <fmt/format.h>
+#include <Eigen/LU>
 #include <Eigen/QR>
 #include <boost/math/tools/toms748_solve.hpp>
 #include <boost/numeric/odeint/stepper/controlled_runge_kutta.hpp>
@@ -34,6 +35,12 @@ constexpr double kSlipAtRest = 1e-13;
 // Past this normal impulse (in p₀) the impact is taken not to end.
 constexpr double kJammed = 1e6;
 constexpr int kMostSteps = 100000;
+// A slip this slow (in |u⁻|) approaching rest lands on it straight, turning or not: halving a
+// turning approach's steps there only chases the integration's round-off (the turn over the last
+// piece moves the impulse by ~speed², below it).
+constexpr double kLandingSpeed = 1e-9;
+// A tangential response this small (in W_nn) is round-off: the slip is held still.
+constexpr double kHeldStill = 1e-12;
 
 // The state's rate per unit normal impulse for the friction impulse f_t per unit normal impulse.
 void advance_rate(const Mat3& W, const Vec2& f_t, const State& y, State& dy) {
@@ -64,12 +71,16 @@ struct Sliding {
 class Course {
  public:
   Course(const Mat3& W, double e, double mu_s, double mu_k)
-      : W_(W),
-        e_(e),
-        mu_s_(mu_s),
-        mu_k_(mu_k),
-        hold_(-W.topLeftCorner<2, 2>().completeOrthogonalDecomposition().solve(
-            Vec2(W.topRightCorner<2, 1>()))) {}
+      : W_(W), e_(e), mu_s_(mu_s), mu_k_(mu_k), hold_(sticking_friction(W)) {}
+
+  // f* = −W_tt⁺ W_tn; zero where the mechanism's other constraints hold the slip still (W_tt and
+  // W_tn round-off of W_nn = 1: a contact struck while another beside it sticks).
+  static Vec2 sticking_friction(const Mat3& W) {
+    const Eigen::Matrix2d W_tt = W.topLeftCorner<2, 2>();
+    const Vec2 W_tn = W.topRightCorner<2, 1>();
+    if (W_tt.norm() <= kHeldStill && W_tn.norm() <= kHeldStill) return Vec2::Zero();
+    return -W_tt.completeOrthogonalDecomposition().solve(W_tn);
+  }
 
   ImpactCourse run(const Vec3& u_before) {
     State y{};
@@ -79,6 +90,7 @@ class Course {
       y[0] = y[1] = 0.0;
       if (holds()) return stick(y, SlipCourse::sticks);
       resume(SlipCourse::slides_again);
+      return slide_straight(y);
     }
     return slide(y);
   }
@@ -95,7 +107,9 @@ class Course {
     const Vec2 W_tn = W_.topRightCorner<2, 1>();
     const Eigen::Matrix2d W_tt = W_.topLeftCorner<2, 2>();
     const auto along = [&](double lambda) {
-      return Vec2((lambda * Eigen::Matrix2d::Identity() + mu_k_ * W_tt).ldlt().solve(W_tn));
+      // W_tt is not symmetric where other contacts slide through the impact (their friction
+      // rides on their normal rows): a general solve.
+      return Vec2((lambda * Eigen::Matrix2d::Identity() + mu_k_ * W_tt).partialPivLu().solve(W_tn));
     };
     const double high = W_tn.norm();
     double lambda = high;
@@ -121,18 +135,38 @@ class Course {
   // (the Schur complement of W_tt): closed form to the end of compression and of restitution.
   ImpactCourse stick(State y, SlipCourse course) {
     course_.course = course;
-    const Vec3 f(hold_.x(), hold_.y(), 1.0);
-    const double k = (W_ * f).z();
+    return straight(y, Vec3(hold_.x(), hold_.y(), 1.0), false);
+  }
+
+  // A slip resumed from rest along ŝ stays along it to the end: its rate W_tn − μk W_tt ŝ is λ ŝ
+  // (resume), so the friction −μk ŝ, and every rate, are constant.
+  ImpactCourse slide_straight(State y) {
+    return straight(y, Vec3(-mu_k_ * resume_direction_.x(), -mu_k_ * resume_direction_.y(), 1.0),
+                    true);
+  }
+
+  // With a constant friction f per unit normal impulse the state moves along a = W (f_t, 1): u_n
+  // grows at k = a_n (≥ 0 while sticking: the Schur complement of W_tt), the slip at a_t where it
+  // `slips` (sticking, it stays zero): closed form to the end of compression and of restitution.
+  ImpactCourse straight(State y, const Vec3& f, bool slips) {
+    const Vec3 a = W_ * f;
+    const double k = a.z();
     const auto advance = [&](double dp) {
       const double u_n = y[2];
       y[kWork] += u_n * dp + 0.5 * k * dp * dp;
       y[2] += k * dp;
+      if (slips) {
+        y[0] += a.x() * dp;
+        y[1] += a.y() * dp;
+      }
       for (int j = 0; j < 3; ++j) y[3 + j] += f[j] * dp;
     };
     if (!compressed_) {
       if (k > 1e-14 && y[2] < 0.0) {
         advance(-y[2] / k);
         y[2] = 0.0;  // compression's end
+      } else if (slips && y[2] < 0.0) {
+        jammed(0.0);
       }
       y[2] = std::max(y[2], 0.0);  // where k = 0 it is held still: the impact ends, u = 0
       end_compression(y);
@@ -141,8 +175,15 @@ class Course {
     if (remaining > 0.0 && k > 1e-14) {  // u_n s + k s² / 2 = remaining, s > 0
       advance(2.0 * remaining / (y[2] + std::sqrt(y[2] * y[2] + 2.0 * k * remaining)));
     }
-    y[0] = y[1] = 0.0;
+    if (!slips) y[0] = y[1] = 0.0;
     return finish(y);
+  }
+
+  [[noreturn]] void jammed(double p) const {
+    throw NumericalError(fmt::format(
+        "the impact does not end: friction (μk = {}) keeps the contact from separating (the "
+        "normal impulse has passed {:g} times the frictionless one's; Painlevé's jam)",
+        mu_k_, p));
   }
 
   // From the end of compression the work is counted afresh, towards e² of compression's (so the
@@ -195,8 +236,8 @@ class Course {
       if (speed <= kSlipAtRest) {  // the slip has come to rest
         y[0] = y[1] = 0.0;
         if (course_.course == SlipCourse::slides && holds()) return stick(y, SlipCourse::stops);
-        if (course_.course == SlipCourse::slides) resume(SlipCourse::slides_again);
-        rate.at_rest = resume_direction_;
+        resume(SlipCourse::slides_again);
+        return slide_straight(y);
       }
       // Never past the slip's rest: a straight approach lands on it, a turning one halves it.
       State dy;
@@ -208,7 +249,7 @@ class Course {
         const Vec2 s = slip / speed;
         const double to_rest = speed / -s.dot(d_t);
         const double across = std::abs(s.x() * d_t.y() - s.y() * d_t.x());
-        if (across <= 1e-12 * d_t.norm()) {
+        if (across <= 1e-12 * d_t.norm() || speed <= kLandingSpeed) {
           if (to_rest <= h) {
             h = to_rest;
             lands = true;
@@ -257,10 +298,7 @@ class Course {
         dp = h_next;
       }
     }
-    throw NumericalError(fmt::format(
-        "the impact does not end: friction (μk = {}) keeps the contact from separating (the "
-        "normal impulse has passed {:g} times the frictionless one's; Painlevé's jam)",
-        mu_k_, p));
+    jammed(p);
   }
 
   Mat3 W_;

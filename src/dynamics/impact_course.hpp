@@ -20,7 +20,8 @@ struct ImpactCourse {
   SlipCourse course = SlipCourse::slides;
 };
 
-/// The course from u⁻ (u_n⁻ < 0) with W (symmetric, positive semi-definite, W_nn > 0), the
+/// The course from u⁻ (u_n⁻ < 0) with W (W_nn > 0; its symmetric part positive semi-definite,
+/// W itself not symmetric where other contacts slide through the impact), the
 /// restitution e ∈ [0, 1] and μs ≥ μk ≥ 0, μs > 0. Where W n has no tangential part and the slip
 /// keeps its direction (a ball, a point mass) it is the closed form: separation speed −e u_n⁻,
 /// friction μk P_n against the slip or the impulse that stops it. Throws NumericalError where the

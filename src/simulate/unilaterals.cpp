@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -12,6 +13,7 @@
 #include "momenta/dynamics/contact_geometry.hpp"
 #include "momenta/dynamics/impulse.hpp"
 #include "momenta/dynamics/kinematics.hpp"
+#include "momenta/dynamics/simultaneous_impact.hpp"
 #include "momenta/system/multibody_system.hpp"
 
 namespace momenta::simulate {
@@ -41,6 +43,10 @@ constexpr double kGrazingSpeed = 1e-14;
 // A contact that closes with its contact point slipping slower than this (m/s) is taken as not
 // slipping: it sticks if friction can hold it (projecting that slip away is no visible jump).
 constexpr double kSlipAtRest = 1e-10;
+
+// A contact held at the start whose sticking friction is within this fraction of the largest
+// constraint force of its cone's edge is at the edge: round-off decides neither way; it sticks.
+constexpr double kConeRoundOff = 1e-12;
 
 }  // namespace
 
@@ -309,6 +315,11 @@ double Unilaterals::cone_margin(system::MultibodySystem& system,
          sticking_friction(system, e, state).norm();
 }
 
+double Unilaterals::cone_round_off(const system::MultibodySystem& system) {
+  const VecX& lambda = system.constraints()->multipliers();
+  return lambda.size() > 0 ? kConeRoundOff * lambda.cwiseAbs().maxCoeff() : 0.0;
+}
+
 void Unilaterals::set_slip_references(system::MultibodySystem& system,
                                       const integrate::State& state) {
   for (const Entry& e : entries_) {
@@ -358,6 +369,91 @@ double Unilaterals::contact_impact(system::MultibodySystem& system, const Entry&
       return impact.normal_impulse;
     }
   }
+}
+
+std::vector<const Unilaterals::Entry*> Unilaterals::struck_with(const Entry& first,
+                                                                const integrate::State& at) {
+  std::vector<const Entry*> group{&first};
+  if (!first.contact) return group;
+  for (const Entry& e : entries_) {
+    if (&e == &first || !e.contact || hold_[slot(e)] != Hold::open) continue;
+    if (gap(e, at) <= e.slack && rate(e, at) < -kGrazingSpeed) group.push_back(&e);
+  }
+  return group;
+}
+
+bool Unilaterals::strike_together(system::MultibodySystem& system,
+                                  integrate::SecondOrderSystem& advanced,
+                                  std::vector<const Entry*> group, integrate::State& at,
+                                  StopEvent& event) {
+  const int nq = model_.nq(), nv = model_.nv();
+  const std::vector<int>& first_row = system.constraints()->rows().first_row;
+  begin_impact(system, at);
+  std::optional<dynamics::SimultaneousImpact> impact;
+  std::vector<dynamics::GroupContact> contacts;
+  for (;;) {
+    contacts.clear();
+    for (const Entry* e : group) {
+      const model::Contact& c = contact_of(*e);
+      contacts.push_back({touch_of(*e, at), first_row[static_cast<std::size_t>(e->index)],
+                          c.restitution, c.static_friction});
+    }
+    impact = dynamics::simultaneous_impact(model_, at.q.head(nq), at.v.head(nv), contacts,
+                                           enabled_rows(system), system.held_joints(),
+                                           sliding_at_impact_);
+    if (!impact) return false;
+    if (impact->pulling >= 0) {  // not struck after all: the others' impact carries it off
+      group.erase(group.begin() + impact->pulling);
+      if (group.size() < 2) return false;
+      continue;
+    }
+    if (!let_go_one_that_pulls(system, impact->motion, at) &&
+        !slide_one_beyond_its_cone(system, impact->motion, at)) {
+      break;
+    }
+  }
+  std::vector<StopEvent> struck;
+  for (std::size_t k = 0; k < group.size(); ++k) {
+    StopEvent s = event_at(*group[k], at.t, StopEventKind::impact);
+    s.rate_before = rate(*group[k], at);
+    s.impulse = impact->normal_impulses[k];
+    struck.push_back(s);
+  }
+  at.v.head(nv) = impact->motion.v_after;
+  // The group's energy lost is said once, with the first (the contacts' shares of it are not
+  // apart: each one's impulse works against the others' too).
+  struck.front().energy_lost = impact->motion.kinetic_before - impact->motion.kinetic_after;
+  // Those whose rebound flight the step cannot resolve rest, held together as at the start.
+  std::vector<double> rest_tails(group.size(), -1.0);
+  for (std::size_t k = 0; k < group.size(); ++k) {
+    const double rebound = rate(*group[k], at);
+    const double into = acceleration_into(advanced, *group[k], at);
+    if (!(into > 0.0 && 2.0 * rebound / into < rest_flight_)) continue;
+    const double e = contact_of(*group[k]).restitution;
+    rest_tails[k] = rebound > 0.0 && e < 1.0 ? 2.0 * rebound / (into * (1.0 - e)) : 0.0;
+  }
+  for (std::size_t k = 0; k < group.size(); ++k) {
+    if (rest_tails[k] >= 0.0) hold_at_rest(system, advanced, *group[k], at);
+  }
+  settle(system, advanced, at);
+  for (std::size_t k = 0; k < group.size(); ++k) {
+    const Entry& e = *group[k];
+    StopEvent& s = struck[k];
+    s.rate_after = rate(e, at);
+    if (hold_[slot(e)] == Hold::open) continue;
+    s.kind = StopEventKind::rest;
+    s.rest_time += std::max(rest_tails[k], 0.0);
+    if (e.static_friction > 0.0) {
+      s.friction =
+          hold_[slot(e)] == Hold::sliding ? FrictionState::sliding : FrictionState::sticking;
+    }
+  }
+  event = struck.front();
+  std::vector<StopEvent> slips;
+  slips.swap(impact_slips_);
+  impact_slips_.assign(struck.begin() + 1, struck.end());
+  for (StopEvent& slip : slips) impact_slips_.push_back(std::move(slip));
+  return true;
 }
 
 double Unilaterals::stop_strike(system::MultibodySystem& system, const Entry& e,
@@ -525,23 +621,100 @@ std::vector<StopEvent> Unilaterals::start(system::MultibodySystem& system,
   interpolant_.resize(static_cast<int>(state.q.size()), static_cast<int>(state.v.size()));
   trial_ = state;
   open_all(system, state);
-  std::vector<StopEvent> events;
+  // Those touching at rest close together, and then those that pull or need more friction than
+  // their cones hold are let go or slide: closed one at a time, each would decide as if the
+  // others were open (a box's first corner alone would tip it over). Then those approaching
+  // strike, against the others held.
+  std::vector<const Entry*> approaching, resting;
   for (const Entry& e : entries_) {
     if (gap(e, state) > e.slack) continue;
+    const double rate_now = rate(e, state);
+    if (rate_now < -kGrazingSpeed) {
+      approaching.push_back(&e);
+      continue;
+    }
     // Touching and leaving it so slowly that the flight is below what a step resolves (the
     // round-off of a state given as resting on it: a rolling coin's rim point) is resting on it,
     // as strike() holds such a rebound.
-    const double leaving = rate(e, state);
-    if (leaving > 0.0 && !(2.0 * leaving < rest_flight_ * acceleration_into(advanced, e, state))) {
+    if (rate_now > 0.0 &&
+        !(2.0 * rate_now < rest_flight_ * acceleration_into(advanced, e, state))) {
       continue;
     }
+    // Pressed onto it, as all are free (a ball hung touching another is not).
+    if (acceleration_into(advanced, e, state) > 0.0) resting.push_back(&e);
+  }
+  for (const Entry* e : resting) hold_at_rest(system, advanced, *e, state);
+  settle(system, advanced, state);
+  std::vector<StopEvent> events;
+  for (const Entry& e : entries_) {
+    if (hold_[slot(e)] == Hold::open) continue;
+    StopEvent event = event_at(e, state.t, StopEventKind::rest);
+    event.rate_before = event.rate_after = e.contact ? rate(e, state) : state.v[e.v];
+    if (e.contact && e.static_friction > 0.0) {
+      event.friction =
+          hold_[slot(e)] == Hold::sliding ? FrictionState::sliding : FrictionState::sticking;
+    }
+    events.push_back(event);
+  }
+  for (const Entry* e : approaching) {
     StopEvent event;
-    strike(system, advanced, e, state, event);
-    if (leaving > 0.0) event.rest_time = event.time;  // resting from the start: no bounces
+    strike(system, advanced, *e, state, event);
     if (event.kind == StopEventKind::rest || event.impulse != 0.0) events.push_back(event);
     for (StopEvent& slip : take_impact_slips()) events.push_back(std::move(slip));
   }
   return events;
+}
+
+void Unilaterals::hold_at_rest(system::MultibodySystem& system,
+                               integrate::SecondOrderSystem& advanced, const Entry& e,
+                               integrate::State& at) {
+  if (!e.contact) {
+    close(system, advanced, e, at);
+    return;
+  }
+  refuse_flat_disk(e, at);
+  const Vec3 slip = slip_velocity(e, at);
+  if (e.static_friction > 0.0 && slip.norm() > kSlipAtRest) {
+    hold_contact(system, e, at, Hold::sliding, slip);
+  } else {
+    hold_contact(system, e, at, Hold::closed);
+  }
+}
+
+void Unilaterals::settle(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+                         integrate::State& at) {
+  // Each pass lets one go (the one that pulls most; one that pushes neither way is not resting on
+  // it either) or makes one slide (the one furthest beyond its cone), so it ends: a held one
+  // slides or opens, a sliding one opens, none closes again.
+  for (;;) {
+    const Entry* pulling = nullptr;
+    const Entry* beyond = nullptr;
+    double least = 0.0, most = 0.0;
+    for (const Entry& e : entries_) {
+      if (hold_[slot(e)] == Hold::open) continue;
+      const double force = push(system, advanced, e, at);
+      if (force < least || (pulling == nullptr && !(force > 0.0))) {
+        least = force;
+        pulling = &e;
+      }
+      if (e.contact && hold_[slot(e)] == Hold::closed && e.static_friction > 0.0) {
+        const double excess = sticking_friction(system, e, at).norm() - e.static_friction * force -
+                              cone_round_off(system);
+        if (excess > most) {
+          most = excess;
+          beyond = &e;
+        }
+      }
+    }
+    if (pulling != nullptr) {
+      open(system, *pulling, at);
+    } else if (beyond != nullptr) {
+      push(system, advanced, *beyond, at);
+      hold_contact(system, *beyond, at, Hold::sliding, -sticking_friction(system, *beyond, at));
+    } else {
+      return;
+    }
+  }
 }
 
 bool Unilaterals::check(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
@@ -659,9 +832,14 @@ void Unilaterals::act(system::MultibodySystem& system, integrate::SecondOrderSys
         state.t, what, kActsAtOneInstant, gap(e, state), rate(e, state)));
   }
   switch (pending_action_) {
-    case Pending::reach:
+    case Pending::reach: {
+      std::vector<const Entry*> group = struck_with(e, state);
+      if (group.size() > 1 && strike_together(system, advanced, std::move(group), state, event)) {
+        return;
+      }
       strike(system, advanced, e, state, event);
       return;
+    }
     case Pending::release:
       open(system, e, state);
       if (!e.contact) {

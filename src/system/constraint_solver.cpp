@@ -54,6 +54,18 @@ ConstraintSolver::ConstraintSolver(const model::Model& model)
   zero_ = VecX::Zero(model.nv());
   if (m > 0) iterate_data_ = std::make_unique<dynamics::Data>(model);
   all_rows_.assign(m, 1);
+  // The contacts' rows: where they are redundant (a box's four corners on a plane) their forces
+  // are the least-norm share (the other rows' redundancy keeps the ordered one: the later of two
+  // dependent rows carries no force).
+  contact_rows_.assign(m, 0);
+  active_contact_rows_.assign(m, 0);
+  for (std::size_t k = 0; k < model.constraints().size(); ++k) {
+    if (!model::is_unilateral(model.constraints()[k])) continue;
+    has_contacts_ = true;
+    const int first = rows_.first_row[k];
+    const int count = model::constraint_rows(model.constraints()[k]);
+    for (int r = first; r < first + count; ++r) contact_rows_[static_cast<std::size_t>(r)] = 1;
+  }
   rows_on_ = static_cast<int>(std::count(rows_.enabled.begin(), rows_.enabled.end(), 1));
   position_rows_.assign(rows_.holonomic.begin(), rows_.holonomic.end());
   if (m > 0) {
@@ -185,6 +197,7 @@ bool ConstraintSolver::correct_accelerations(dynamics::Data& data, VecRef q, Vec
   }
   if (cholesky_->rank() < reference_rank_) return false;
   cholesky_->solve_in_place(rhs_);
+  if (has_contacts_) cholesky_->least_norm_in_place(rhs_, contact_rows_);
   lambda_ = rhs_;
   if (method_ == AccelerationMethod::articulated) {
     vdot.noalias() += Y_ * lambda_;
@@ -217,6 +230,10 @@ bool ConstraintSolver::accelerations_with_row_forces(dynamics::Data& data, VecRe
   if (cholesky_->rank() < reference_rank_) return false;
   rows_.bias = rhs_;
   cholesky_->solve_in_place(b);
+  if (has_contacts_) {
+    for (int i = 0; i < active; ++i) active_contact_rows_[i] = contact_rows_[active_[i]];
+    cholesky_->least_norm_in_place(b, std::span<const char>(active_contact_rows_).first(active));
+  }
   lambda_.setZero();
   du_.setZero();
   for (int i = 0; i < active; ++i) {

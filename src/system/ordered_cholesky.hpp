@@ -17,7 +17,13 @@ class OrderedCholesky {
  public:
   /// Sizes the workspace for m × m matrices.
   explicit OrderedCholesky(int m)
-      : L_(MatX::Zero(m, m)), inverse_pivot_(VecX::Zero(m)), skipped_(m, 0), dependent_(m, 0) {}
+      : L_(MatX::Zero(m, m)),
+        inverse_pivot_(VecX::Zero(m)),
+        skipped_(m, 0),
+        dependent_(m, 0),
+        Z_(MatX::Zero(m, m)),
+        ZtZ_(MatX::Zero(m, m)),
+        alpha_(VecX::Zero(m)) {}
 
   /// Factorizes A = L Lᵀ over the rows that are independent of the rows before them. Row j is
   /// dependent when its remaining pivot is at most `tolerance` times A_jj (the squared sine of
@@ -59,6 +65,61 @@ class OrderedCholesky {
     }
   }
 
+  /// Makes x, a solution solve_in_place gave, the one of least norm among those that leave the
+  /// rows in `minimized` (a flag per row factorized) free to share what they carry: adds the
+  /// combination of null vectors — one per dependent row j in `minimized`, e_j − c_j, c_j the
+  /// earlier independent rows' share of row j (L_IIᵀ c_j = L_jIᵀ) — that takes most from ‖x‖.
+  /// A x is unchanged where the rows are exactly dependent (to round-off). A row that exerts no
+  /// force (no share) keeps its 0. No allocation.
+  void least_norm_in_place(Eigen::Ref<VecX> x, std::span<const char> minimized) {
+    const int m = static_cast<int>(x.size());
+    int d = 0;
+    for (int j = 0; j < m; ++j) {
+      if (!skipped_[j] || !minimized[j]) continue;
+      auto z = Z_.col(d);
+      z.head(m).setZero();
+      bool shared = false;
+      for (int i = j - 1; i >= 0; --i) {  // back substitution: z_I = −c_j
+        if (skipped_[i]) continue;
+        double s = L_(j, i);
+        for (int k = i + 1; k < j; ++k) s += L_(k, i) * z[k];
+        z[i] = -s * inverse_pivot_[i];
+        shared = shared || z[i] != 0.0;
+      }
+      if (!shared) continue;
+      z[j] = 1.0;
+      ++d;
+    }
+    if (d == 0) return;
+    // (Zᵀ Z) α = −Zᵀ x by Cholesky in place (Zᵀ Z is positive definite: each z_j has its own
+    // e_j), then x += Z α.
+    for (int a = 0; a < d; ++a) {
+      alpha_[a] = -Z_.col(a).head(m).dot(x);
+      for (int b = 0; b <= a; ++b) ZtZ_(a, b) = Z_.col(a).head(m).dot(Z_.col(b).head(m));
+    }
+    for (int a = 0; a < d; ++a) {
+      for (int k = 0; k < a; ++k) {
+        double s = ZtZ_(a, k);
+        for (int l = 0; l < k; ++l) s -= ZtZ_(a, l) * ZtZ_(k, l);
+        ZtZ_(a, k) = s / ZtZ_(k, k);
+      }
+      double diagonal = ZtZ_(a, a);
+      for (int l = 0; l < a; ++l) diagonal -= ZtZ_(a, l) * ZtZ_(a, l);
+      ZtZ_(a, a) = std::sqrt(diagonal);
+    }
+    for (int a = 0; a < d; ++a) {
+      double s = alpha_[a];
+      for (int k = 0; k < a; ++k) s -= ZtZ_(a, k) * alpha_[k];
+      alpha_[a] = s / ZtZ_(a, a);
+    }
+    for (int a = d - 1; a >= 0; --a) {
+      double s = alpha_[a];
+      for (int k = a + 1; k < d; ++k) s -= ZtZ_(k, a) * alpha_[k];
+      alpha_[a] = s / ZtZ_(a, a);
+    }
+    for (int a = 0; a < d; ++a) x += alpha_[a] * Z_.col(a).head(m);
+  }
+
   int rank() const { return rank_; }
   /// Whether row `row` of the whole system depends on the rows before it.
   bool dependent(int row) const { return dependent_[row] != 0; }
@@ -93,6 +154,9 @@ class OrderedCholesky {
   std::vector<char> skipped_;    // dependent, by the rows factorized
   std::vector<char> dependent_;  // dependent, by the rows of the whole system
   int rank_ = 0;
+  MatX Z_;      // least_norm_in_place: the null vectors, a column each
+  MatX ZtZ_;    // their Gram matrix, then its Cholesky factor (lower)
+  VecX alpha_;  // −Zᵀ x, then the combination
 };
 
 }  // namespace momenta::system::detail

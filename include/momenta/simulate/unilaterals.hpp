@@ -14,15 +14,20 @@
 // normal impulse at its point (the contacts already closed take their impulses as constraints,
 // and one that would pull is opened and the impact solved again). Either way the whole mechanism
 // takes part and the normal rate after is −e times the rate before (Newton's restitution).
+// Contacts reached at one instant with it (touching and approaching) strike with it as one impact
+// (dynamics::simultaneous_impact: Poisson's law over the group), where that law holds them; else
+// one after another.
 //
 // Closed: a stop holds its joint (MultibodySystem::hold: prescribed at the stop, zero rate), a
 // contact holds its body on the plane (MultibodySystem::close_contact: its row switched on, the
 // state projected onto it), when the mechanism meets it with nothing to carry it away — after an
 // impact whose rebound flight 2 |v⁺| / |a| (a the acceleration into it, free of it) would be
 // shorter than the rest threshold, a millionth of the run's step (the Zeno rule below), or at the
-// start, on it, at rest or moving into it, and pushed into it. It holds while its force pushes
-// (a lower stop's along +q, a contact's along the plane's normal); where that force would pull,
-// the time it passes zero is located as an impact's is and it is let go there, with no impulse.
+// start, on it, at rest or moving into it, and pushed into it (those at rest close together, and
+// are then let go or slide one at a time until all push within their cones). It holds while its
+// force pushes (a lower stop's along +q, a contact's along the plane's normal); where that force
+// would pull, the time it passes zero is located as an impact's is and it is let go there, with no
+// impulse.
 //
 // Zeno. A bouncing sequence with e < 1 has flights shrinking by e each bounce and ends at a finite
 // time; the rule above ends it in resting contact after finitely many bounces. The bounces the rule
@@ -155,8 +160,9 @@ class Unilaterals {
   void act(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
            integrate::State& state, StopEvent& event);
 
-  /// The sticking contacts that slid through the last act()'s impact (StopEvent::in_impact
-  /// slips, in the order they began to), taken: the list is empty after.
+  /// The events of the last act() after its own, taken (the list is empty after): the sticking
+  /// contacts that slid through its impact (StopEvent::in_impact slips, in the order they began
+  /// to), and the other contacts of a simultaneous impact (their impacts, then their rests).
   std::vector<StopEvent> take_impact_slips();
 
  private:
@@ -200,6 +206,14 @@ class Unilaterals {
   // Strikes (or closes) e at the state `at` (on it), filling `event`.
   void strike(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
               const Entry& e, integrate::State& at, StopEvent& event);
+  // The open contacts the mechanism meets at `at` together with `first` (touching, to their
+  // slack, and approaching), `first` leading.
+  std::vector<const Entry*> struck_with(const Entry& first, const integrate::State& at);
+  // Strikes the group as one impact (dynamics::simultaneous_impact) and holds those whose
+  // rebound the step cannot resolve, filling `event` for the first and the impact slips' list
+  // for the others; false, having changed nothing of theirs, where that law cannot hold them.
+  bool strike_together(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+                       std::vector<const Entry*> group, integrate::State& at, StopEvent& event);
   // A contact's impact: the state just after, its normal impulse returned; closed contacts that
   // would pull are opened.
   double contact_impact(system::MultibodySystem& system, const Entry& e, integrate::State& at);
@@ -245,6 +259,14 @@ class Unilaterals {
   Vec3 sticking_friction(const system::MultibodySystem& system, const Entry& e,
                          const integrate::State& state);
   // μs N − |F_t| of a sticking contact at `state` (evaluates `advanced`): < 0 outside the cone.
+  // Round-off in a cone's margin: kConeRoundOff times the largest constraint force just solved.
+  static double cone_round_off(const system::MultibodySystem& system);
+  // start(): holds one touching at rest (sticking, or sliding where it slips), and lets go of
+  // or slides those held until every one pushes and sticks within its cone.
+  void hold_at_rest(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+                    const Entry& e, integrate::State& at);
+  void settle(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+              integrate::State& at);
   double cone_margin(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
                      const Entry& e, const integrate::State& state);
   // Sets each sliding contact's reference slip direction from `state` (see

@@ -225,6 +225,10 @@ class ConstraintSolver {
   std::vector<char> held_;  // per joint: prescribed, or held by a stop
   bool holding_ = false;    // some joint is held
   std::vector<char> all_rows_, position_rows_;
+  // The unilateral contacts' rows (their redundant forces shared by least norm), and the same
+  // flags over the active rows of accelerations_with_row_forces.
+  std::vector<char> contact_rows_, active_contact_rows_;
+  bool has_contacts_ = false;
   MatX M_ff_, G_f_, W_, A_;  // W = L⁻¹ G_fᵀ with M_ff = L Lᵀ; A = Wᵀ W
   MatX Y_;                   // nv × rows: M⁻¹ Gᵀ (articulated; 0 on prescribed coordinates),
                              // or L Gᵀ where finishes_forward_dynamics()

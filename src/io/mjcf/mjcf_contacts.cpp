@@ -1,9 +1,7 @@
 // MJCF's contacts as momenta's unilateral contacts (docs/model-formats.md, docs/contacts.md): each
 // geom of a moving body against each plane of the world that MuJoCo would collide it with — a
 // sphere as itself, a capsule as the spheres at its two ends, a cylinder as the rims of its two
-// faces —, with MuJoCo's sliding friction and no rebound. A box is not posed: its corners on a
-// face are redundant contacts, whose share of the load momenta's solver leaves to the order of
-// its rows (resting or landing flat, such a box can stop the run). MuJoCo's
+// faces, a box as its eight corners —, with MuJoCo's sliding friction and no rebound. MuJoCo's
 // contacts are soft (a spring and damper set by solref and solimp); momenta's are rigid: no
 // penetration, friction that sticks, impacts where a geom lands.
 
@@ -92,6 +90,17 @@ std::vector<Feature> features_of(const MjcfGeom& geom) {
     return {{"_rim1", along_axis(-h), model::ContactShape::disk, r},
             {"_rim2", along_axis(h), model::ContactShape::disk, r}};
   }
+  if (geom.type == "box") {  // its eight corners, points (size: the half lengths)
+    std::vector<Feature> corners;
+    for (int k = 0; k < 8; ++k) {
+      const Vec3 p_GC((k & 1) ? geom.size[0] : -geom.size[0],
+                      (k & 2) ? geom.size[1] : -geom.size[1],
+                      (k & 4) ? geom.size[2] : -geom.size[2]);
+      corners.push_back({fmt::format("_corner{}", k + 1), geom.X_BG * Transform::translation(p_GC),
+                         model::ContactShape::sphere, 0.0});
+    }
+    return corners;
+  }
   return {};
 }
 
@@ -155,12 +164,9 @@ void MjcfReader::add_contacts() {
       const std::vector<Feature> features = features_of(geom);
       if (features.empty()) {
         note(geom.element.xml,
-             fmt::format("{} ({}) passes through {}: momenta poses spheres, capsules and "
-                         "cylinders on planes{}",
-                         geom.label, shape_with_article(geom.type), plane.label,
-                         geom.type == "box" ? " (a box's corners on a face are redundant "
-                                              "contacts, not yet shared robustly)"
-                                            : ""));
+             fmt::format("{} ({}) passes through {}: momenta poses spheres, capsules, "
+                         "cylinders and boxes on planes",
+                         geom.label, shape_with_article(geom.type), plane.label));
         continue;
       }
       const Surface s = mixed(plane_surface, geom_surface);

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "dynamics/impact_course.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/dynamics/impulse.hpp"
 #include "momenta/dynamics/kinematics.hpp"
@@ -229,6 +230,51 @@ TEST(ImpactCourse, ASlipThatTurnsKeepsItsSymmetryAndTakesEnergy) {
     EXPECT_NEAR(near.normal_impulse, planar.normal_impulse, 1e-7 * impulse);
     EXPECT_NEAR(near.impulse_W.x(), planar.impulse_W.x(), 1e-7 * impulse);
   }
+}
+
+// The course itself (detail::follow_impact) at two W's a box's corner met in a run (MJCF boxes
+// dropped tilted, with μ = 1), each of which ran the course out of steps before.
+//
+// A contact struck beside one that sticks: the mechanism cannot move its slip (W_tt, W_tn round-off
+// of W_nn): it sticks, and the impact stops its normal speed (e = 0) with the normal impulse alone.
+TEST(ImpactCourse, AContactWhoseSlipTheOthersHoldSticks) {
+  Mat3 W;
+  W << -3.5527140715964842e-16, -6.8502552054212496e-17, -4.1078251911130792e-14,
+      7.0704368677926855e-17, -3.330665239131346e-17, -2.0317081350640251e-14,
+      -4.0786158729439894e-14, -2.0376635444426946e-14, 1.846153846153846;
+  const Vec3 u(3.4472424914611111e-14, 1.7236212457305461e-14, -1.5523903796068681);
+  const detail::ImpactCourse course = detail::follow_impact(W, u, 0.0, 1.0, 1.0);
+  EXPECT_EQ(course.course, SlipCourse::sticks);
+  EXPECT_LT(course.u_after.norm(), 1e-13 * u.norm());
+  EXPECT_NEAR(course.impulse.z(), -u.z() / W(2, 2), 1e-15 * u.norm());
+  EXPECT_EQ(course.impulse.head<2>(), Vec2::Zero());
+}
+
+// W not symmetric (another contact slides through the impact, its friction riding on its normal
+// row): the slip stops before compression ends, the cone cannot hold it (|f*| = 1.017 > μs = 1),
+// and it slides again along the ŝ whose rate W_tn − μk W_tt ŝ is along ŝ itself — so straight on
+// to the end. The LDLᵀ solve that found ŝ read W_tt as symmetric: the slip, sent the wrong way,
+// came back to rest again and again.
+TEST(ImpactCourse, ASlipResumedFromRestRunsStraightAlongItsOwnRate) {
+  Mat3 W;
+  W << 2.1798188273355636, -0.3509585819833102, 0.52568671023406877, -0.40839520989048855,
+      0.726081423299336, 0.52128069011208866, 0.71478482005212385, 0.39155757760386789,
+      2.9033943855114499;
+  const Vec3 u(0.040429517266060533, -0.26478169587965428, -0.66749620838389101);
+  const double mu = 1.0;
+  const detail::ImpactCourse course = detail::follow_impact(W, u, 0.0, mu, mu);
+  EXPECT_EQ(course.course, SlipCourse::slides_again);
+  const Vec2 slip = course.u_after.head<2>();
+  ASSERT_GT(slip.norm(), 0.0);
+  const Vec2 s = slip / slip.norm();
+  const Vec2 rate = W.topRightCorner<2, 1>() - mu * W.topLeftCorner<2, 2>() * s;
+  // Along ŝ to 1e-11 rad: ŝ(λ) is found to 1e-15 in λ, and here λ = |rate| is small (1.5 % of
+  // |W_tn|), which magnifies its error in the direction.
+  EXPECT_LT(std::abs(rate.x() * s.y() - rate.y() * s.x()), 1e-11 * rate.norm());
+  EXPECT_GT(rate.dot(s), 0.0);
+  EXPECT_NEAR(course.u_after.z(), 0.0, 1e-15);  // e = 0: compression's end is the impact's
+  // u⁺ = u⁻ + W P, whatever the course.
+  EXPECT_LT((course.u_after - (u + W * course.impulse)).norm(), 1e-14 * u.norm());
 }
 
 }  // namespace

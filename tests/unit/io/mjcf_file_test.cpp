@@ -493,10 +493,11 @@ TEST(MjcfFile, KeyframesAreNamedStatesInMomentasLayout) {
 }
 
 // The contacts MuJoCo would find against the world's planes, as momenta's rigid ones: a sphere
-// as itself, a capsule as its end spheres, a cylinder as its faces' rims, on a tilted plane
+// as itself, a capsule as its end spheres, a cylinder as its faces' rims, a box as its eight
+// corners (points), on a tilted plane
 // through a point; MuJoCo's contype/conaffinity filter, its friction (the larger,
 // or the higher priority's; condim 1 frictionless); a body welded to the world and one excluded
-// from it have none; the shapes momenta does not pose (a box, an ellipsoid) and condim 6's extra
+// from it have none; the shapes momenta does not pose (an ellipsoid) and condim 6's extra
 // friction noted.
 TEST(MjcfFile, GeomsTouchTheWorldsPlanes) {
   const std::string text = R"(<mujoco>
@@ -523,8 +524,10 @@ TEST(MjcfFile, GeomsTouchTheWorldsPlanes) {
   std::vector<std::string> names;
   for (const model::Constraint& c : f.model.constraints())
     names.push_back(model::constraint_name(c));
-  EXPECT_EQ(names, (std::vector<std::string>{"ball_slope", "rod_end1_slope", "rod_end2_slope",
-                                             "drum_rim1_slope", "drum_rim2_slope"}));
+  std::vector<std::string> expected_names{"ball_slope", "rod_end1_slope", "rod_end2_slope",
+                                          "drum_rim1_slope", "drum_rim2_slope"};
+  for (int k = 1; k <= 8; ++k) expected_names.push_back(fmt::format("brick_corner{}_slope", k));
+  EXPECT_EQ(names, expected_names);
   const auto contact = [&](std::size_t k) -> const model::Contact& {
     return std::get<model::Contact>(f.model.constraints()[k]);
   };
@@ -554,12 +557,21 @@ TEST(MjcfFile, GeomsTouchTheWorldsPlanes) {
   EXPECT_MATRIX_NEAR(contact(4).frame.X_BF.p, Vec3(0, 1, 0.1), 1e-16);
   EXPECT_MATRIX_NEAR(Vec3(contact(4).frame.X_BF.R.col(2)), Vec3::UnitZ(), 1e-16);
   EXPECT_EQ(contact(3).static_friction, 0.2);
+  // The box's corners: (±0.1, ±0.2, ±0.3) turned 0.5 rad about z, at (1, 0, 0) — x's sign first,
+  // then y's, then z's; points (radius 0), with MuJoCo's default friction 1 (the larger).
+  const Mat3 R = Eigen::AngleAxisd(0.5, Vec3::UnitZ()).toRotationMatrix();
+  for (int k = 0; k < 8; ++k) {
+    const model::Contact& corner = contact(5 + static_cast<std::size_t>(k));
+    const Vec3 p_GC((k & 1) ? 0.1 : -0.1, (k & 2) ? 0.2 : -0.2, (k & 4) ? 0.3 : -0.3);
+    EXPECT_MATRIX_NEAR(corner.frame.X_BF.p, Vec3(Vec3(1, 0, 0) + R * p_GC), 1e-15) << k;
+    EXPECT_EQ(corner.shape, model::ContactShape::sphere);
+    EXPECT_EQ(corner.radius, 0.0);
+    EXPECT_EQ(corner.static_friction, 1.0);
+  }
   // What is not posed, at its line; the <contact> elements.
   const std::vector<std::string> expected_notes = {
       "m.xml:5: <geom name=\"post\"> in the world (a box): contacts are with the world's planes "
       "only",
-      "m.xml:11: geom 'brick' (a box) passes through plane <geom name=\"slope\">: momenta poses "
-      "spheres, capsules and cylinders on planes (a box's corners on a face are redundant",
       "m.xml:8: geom 'ball' on plane <geom name=\"slope\">: condim 6 — its torsional and rolling "
       "friction is not modelled",
       "m.xml:12: geom 'egg' (an ellipsoid) passes through plane <geom name=\"slope\">",

@@ -86,5 +86,41 @@ TEST(OrderedCholesky, ItsSolutionSolvesTheIndependentRows) {
   EXPECT_LT(residual.head(2).norm(), 1e-13 * dependent.active.norm() * x.norm());
 }
 
+// A box's four corner contacts on a plane: their normal rows over its z, roll and pitch (rank 3;
+// the fourth depends on the other three), and a load they carry consistently. Ordered, the
+// dependent row carries nothing; least_norm_in_place over those rows gives the least-norm
+// solution of all — Eigen's complete orthogonal decomposition's — still solving the system.
+TEST(OrderedCholesky, LeastNormSharesWhatRedundantRowsCarry) {
+  const double a = 0.2, b = 0.1;  // half length and width
+  MatX G(4, 3);                   // rows: corners (∓a, ∓b); columns: z, roll, pitch
+  for (int k = 0; k < 4; ++k) {
+    const double x = (k & 1) ? a : -a, y = (k & 2) ? b : -b;
+    G.row(k) << 1.0, y, -x;
+  }
+  const Mat3 M_inv = Vec3(1.0 / 2.0, 1.0 / 0.0083, 1.0 / 0.0283).asDiagonal();
+  const MatX A = G * M_inv * G.transpose();
+  const VecX rhs = A * (VecX(4) << 4.0, 5.5, 4.5, 5.0).finished();  // consistent
+  OrderedCholesky cholesky(4);
+  cholesky.factorize(A, kTolerance);
+  ASSERT_EQ(cholesky.rank(), 3);
+  ASSERT_TRUE(cholesky.dependent(3));
+  VecX x = rhs;
+  cholesky.solve_in_place(x);
+  EXPECT_EQ(x[3], 0.0);
+  const std::array<char, 4> all{1, 1, 1, 1};
+  cholesky.least_norm_in_place(x, all);
+  const VecX least = A.completeOrthogonalDecomposition().solve(rhs);
+  EXPECT_LT((x - least).norm(), 1e-12 * least.norm())
+      << x.transpose() << " against " << least.transpose();
+  EXPECT_LT((A * x - rhs).norm(), 1e-13 * A.norm() * x.norm());
+  // Rows left out keep the ordered solution.
+  VecX ordered = rhs;
+  cholesky.solve_in_place(ordered);
+  VecX kept = ordered;
+  const std::array<char, 4> none{1, 1, 1, 0};
+  cholesky.least_norm_in_place(kept, none);
+  EXPECT_EQ(kept, ordered);
+}
+
 }  // namespace
 }  // namespace momenta::system::detail

@@ -1,0 +1,142 @@
+// dynamics::simultaneous_impact: contacts struck at one instant, by Poisson's hypothesis over the
+// group. Against closed forms: a box landing flat on four corner contacts (each a quarter of
+// m (1 + e) V, the box leaving level at e V); one frictionless contact is Newton's impact
+// (restitution_impact); a group whose compression would pull one contact names it; one whose
+// sticking needs more than the cone holds is refused.
+
+#include "momenta/dynamics/simultaneous_impact.hpp"
+
+#include <string>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "momenta/dynamics/constraints.hpp"
+#include "momenta/io/model_file.hpp"
+
+namespace momenta::dynamics::simultaneous_impact_test {
+namespace {
+
+constexpr double kMass = 2.0, kHalfLength = 0.2, kHalfWidth = 0.1, kHalfHeight = 0.05;
+
+// A free box (0.4 × 0.2 × 0.1 m) with contacts at `points` (in the box) on the ground plane.
+Model box_with_contacts(const std::vector<Vec3>& points) {
+  std::string text = fmt::format(
+      "bodies: [{{name: block, shape: box, mass: {}, size: [{}, {}, {}]}}]\n"
+      "joints: [{{name: free, type: free, parent: world, child: block}}]\n"
+      "constraints:\n",
+      kMass, 2 * kHalfLength, 2 * kHalfWidth, 2 * kHalfHeight);
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    text += fmt::format(
+        "  - {{name: c{}, type: contact, body: block, point: [{}, {}, {}], friction: {{static: "
+        "1, kinetic: 1}}}}\n",
+        k, points[k].x(), points[k].y(), points[k].z());
+  }
+  return io::parse_model_file(text, "box.yaml", ".").model;
+}
+
+std::vector<Vec3> corners() {
+  std::vector<Vec3> points;
+  for (int k = 0; k < 4; ++k) {
+    points.emplace_back((k & 1) ? kHalfLength : -kHalfLength, (k & 2) ? kHalfWidth : -kHalfWidth,
+                        -kHalfHeight);
+  }
+  return points;
+}
+
+// The group: every contact of the model, on the ground (body 0) at its point, normal +z.
+std::vector<GroupContact> ground_group(const Model& model, const std::vector<Vec3>& points,
+                                       double e, double mu) {
+  const ConstraintRows rows(model);
+  std::vector<GroupContact> group;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    PointContact touch{0, Vec3(points[k].x(), points[k].y(), 0.0), 1, points[k], Vec3::UnitZ()};
+    group.push_back({touch, rows.first_row[k], e, mu});
+  }
+  return group;
+}
+
+// Every row off: the contacts open, as a run has them before it strikes.
+std::vector<char> no_rows(const Model& model) {
+  return std::vector<char>(static_cast<std::size_t>(ConstraintRows(model).count), 0);
+}
+
+// At rest on the ground (centre kHalfHeight up), v = (ω; v) rotation first.
+VecX resting_q(const Model& model) {
+  VecX q = VecX::Zero(model.nq());
+  q[2] = kHalfHeight;  // position x, y, z, then the quaternion w, x, y, z
+  q[3] = 1.0;
+  return q;
+}
+
+TEST(SimultaneousImpact, ABoxLandingFlatOnItsFourCornersLeavesLevelAtEV) {
+  const std::vector<Vec3> points = corners();
+  const Model model = box_with_contacts(points);
+  const double V = 2.0;
+  const VecX q = resting_q(model), v = (VecX(6) << 0, 0, 0, 0, 0, -V).finished();
+  for (const double e : {0.0, 0.5, 1.0}) {
+    SCOPED_TRACE(e);
+    const auto impact =
+        simultaneous_impact(model, q, v, ground_group(model, points, e, 1.0), no_rows(model));
+    ASSERT_TRUE(impact.has_value());
+    EXPECT_EQ(impact->pulling, -1);
+    ASSERT_EQ(impact->normal_impulses.size(), 4u);
+    // Products and sums of O(1) numbers through two solves: round-off ~1e-15.
+    for (const double P : impact->normal_impulses) {
+      EXPECT_NEAR(P, kMass * (1.0 + e) * V / 4.0, 1e-14);
+    }
+    const VecX expected = (VecX(6) << 0, 0, 0, 0, 0, e * V).finished();
+    EXPECT_LT((impact->motion.v_after - expected).norm(), 1e-14);
+    EXPECT_NEAR(impact->motion.kinetic_before - impact->motion.kinetic_after,
+                0.5 * kMass * V * V * (1.0 - e * e), 1e-14);
+  }
+}
+
+// One frictionless contact, the box struck by a corner while it spins: Poisson's and Newton's
+// laws agree (for one contact and no friction they are one law).
+TEST(SimultaneousImpact, OneFrictionlessContactIsNewtonsImpact) {
+  const std::vector<Vec3> points{corners()[0]};
+  const Model model = box_with_contacts(points);
+  const VecX q = resting_q(model), v = (VecX(6) << 0.3, -1.1, 0.7, 0.4, -0.2, -1.5).finished();
+  const double e = 0.6;
+  const auto impact =
+      simultaneous_impact(model, q, v, ground_group(model, points, e, 0.0), no_rows(model));
+  ASSERT_TRUE(impact.has_value());
+  const std::vector<GroupContact> group = ground_group(model, points, e, 0.0);
+  const Impact newton = restitution_impact(model, q, v, group[0].touch, e, no_rows(model));
+  EXPECT_LT((impact->motion.v_after - newton.motion.v_after).norm(),
+            1e-13 * newton.motion.v_after.norm());
+  EXPECT_NEAR(impact->normal_impulses[0], newton.normal_impulse, 1e-13 * newton.normal_impulse);
+}
+
+// A corner (x = −a) and the bottom's centre, the box falling at V and pitching at ω_y: the
+// corner approaches at v_z + a ω_y = −0.6 m/s (v_z = −1, ω_y = 2). Holding both still, the corner's
+// impulse must take out the pitch: a P_A = −I ω_y < 0 — it would pull, and is named.
+TEST(SimultaneousImpact, AContactItsCompressionWouldPullIsNamed) {
+  const std::vector<Vec3> points{corners()[0], Vec3(0.0, 0.0, -kHalfHeight)};
+  const Model model = box_with_contacts(points);
+  const VecX q = resting_q(model), v = (VecX(6) << 0, 2.0, 0, 0, 0, -1.0).finished();
+  const auto impact =
+      simultaneous_impact(model, q, v, ground_group(model, points, 0.5, 1.0), no_rows(model));
+  ASSERT_TRUE(impact.has_value());
+  EXPECT_EQ(impact->pulling, 0);
+}
+
+// Landing flat while sliding at u along x: sticking at once needs a friction impulse m u / 4 at
+// each corner against μ m V / 4 of normal impulse in compression — beyond the cone where u > μ V.
+TEST(SimultaneousImpact, WhereStickingNeedsMoreThanTheConeItIsRefused) {
+  const std::vector<Vec3> points = corners();
+  const Model model = box_with_contacts(points);
+  const VecX q = resting_q(model);
+  const double V = 1.0, mu = 0.2;
+  for (const double u : {0.1, 0.5}) {
+    SCOPED_TRACE(u);
+    const VecX v = (VecX(6) << 0, 0, 0, u, 0, -V).finished();
+    const auto impact =
+        simultaneous_impact(model, q, v, ground_group(model, points, 0.0, mu), no_rows(model));
+    EXPECT_EQ(impact.has_value(), u < mu * V);
+  }
+}
+
+}  // namespace
+}  // namespace momenta::dynamics::simultaneous_impact_test
