@@ -13,9 +13,15 @@
 #include "momenta/dynamics/kinematics.hpp"
 #include "momenta/dynamics/point_kinematics.hpp"
 
+#include "contact_impulse.hpp"
 #include "impact_course.hpp"
 
 namespace momenta::dynamics {
+
+using detail::impulse_pair;
+using detail::normal_speed;
+using detail::relative_velocity;
+
 namespace {
 
 void check_arguments(const Model& model, VecRef q, VecRef v,
@@ -57,14 +63,6 @@ std::vector<int> free_coordinates(const Model& model, std::span<const char> held
     for (int k = 0; k < j.nv(); ++k) free.push_back(j.v_index + k);
   }
   return free;
-}
-
-// The pair ±P: P on B's point, −P on A's (none on the world).
-std::vector<PointImpulse> impulse_pair(const PointContact& c, const Vec3& P) {
-  std::vector<PointImpulse> pair;
-  pair.push_back({c.body_b, c.p_BoPb_B, P});
-  if (c.body_a != 0) pair.push_back({c.body_a, c.p_AoPa_A, -P});
-  return pair;
 }
 
 // The Jacobian (3 × nv, world-aligned) of a contact's relative point velocity v_Pb − v_Pa at
@@ -258,9 +256,15 @@ ImpulsiveMotion impulsive_motion(const Model& model, VecRef q, VecRef v,
   return respond(model, q, v, impulses, VecX(), enabled_rows, held_joints, sliding);
 }
 
-namespace {
+namespace detail {
 
-// v_Pb − v_Pa at (q, v), in W.
+std::vector<PointImpulse> impulse_pair(const PointContact& c, const Vec3& P) {
+  std::vector<PointImpulse> pair;
+  pair.push_back({c.body_b, c.p_BoPb_B, P});
+  if (c.body_a != 0) pair.push_back({c.body_a, c.p_AoPa_A, -P});
+  return pair;
+}
+
 Vec3 relative_velocity(const Model& model, Data& data, VecRef q, VecRef v, const PointContact& c) {
   forward_kinematics(model, data, q, v);
   MatX J(6, model.nv());
@@ -273,12 +277,11 @@ Vec3 relative_velocity(const Model& model, Data& data, VecRef q, VecRef v, const
   return point_velocity(c.body_b, c.p_BoPb_B) - point_velocity(c.body_a, c.p_AoPa_A);
 }
 
-// n · (v_Pb − v_Pa) at (q, v).
 double normal_speed(const Model& model, Data& data, VecRef q, VecRef v, const PointContact& c) {
   return c.normal_W.dot(relative_velocity(model, data, q, v, c));
 }
 
-}  // namespace
+}  // namespace detail
 
 const char* slip_course_name(SlipCourse course) {
   switch (course) {

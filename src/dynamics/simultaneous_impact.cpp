@@ -3,9 +3,9 @@
 #include "momenta/dynamics/simultaneous_impact.hpp"
 
 #include <algorithm>
+#include <cmath>
 
-#include "momenta/dynamics/kinematics.hpp"
-#include "momenta/dynamics/point_kinematics.hpp"
+#include "contact_impulse.hpp"
 
 namespace momenta::dynamics {
 namespace {
@@ -13,29 +13,9 @@ namespace {
 // The kinetic energy may grow by this fraction of itself in round-off, no more.
 constexpr double kEnergyRoundOff = 1e-12;
 
-// A contact's impulse P (on B, in W) as the point impulses on its two bodies.
-void add_impulse_pair(const PointContact& c, const Vec3& P, std::vector<PointImpulse>& impulses) {
-  impulses.push_back({c.body_b, c.p_BoPb_B, P});
-  if (c.body_a != 0) impulses.push_back({c.body_a, c.p_AoPa_A, Vec3(-P)});
-}
-
 // The friction impulse a contact's two tangent rows carry, as a magnitude.
 double tangent_impulse(const VecX& impulses, const GroupContact& c) {
   return std::hypot(impulses[c.first_row + 1], impulses[c.first_row + 2]);
-}
-
-// n · (v_Pb − v_Pa) at (q, v).
-double normal_speed(const Model& model, Data& data, VecRef q, VecRef v, const PointContact& c,
-                    MatX& J) {
-  forward_kinematics(model, data, q);
-  const auto point_velocity = [&](int body, const Vec3& p) -> Vec3 {
-    if (body == 0) return Vec3::Zero();
-    J.setZero();
-    frame_jacobian(model, data, body, p, J);
-    return J.bottomRows<3>() * v;
-  };
-  return c.normal_W.dot(point_velocity(c.body_b, c.p_BoPb_B) -
-                        point_velocity(c.body_a, c.p_AoPa_A));
 }
 
 }  // namespace
@@ -71,7 +51,10 @@ std::optional<SimultaneousImpact> simultaneous_impact(const Model& model, VecRef
   for (const GroupContact& c : group) {
     rows[static_cast<std::size_t>(c.first_row)] = 0;
     const double P = compression.constraint_impulses[c.first_row];
-    add_impulse_pair(c.touch, c.restitution * P * c.touch.normal_W, restitution_impulses);
+    for (const PointImpulse& p :
+         detail::impulse_pair(c.touch, c.restitution * P * c.touch.normal_W)) {
+      restitution_impulses.push_back(p);
+    }
   }
   const ImpulsiveMotion restitution = impulsive_motion(
       model, q, compression.v_after, restitution_impulses, rows, held_joints, sliding);
@@ -90,7 +73,6 @@ std::optional<SimultaneousImpact> simultaneous_impact(const Model& model, VecRef
     motion.joint_impulses[j].moment += compression.joint_impulses[j].moment;
   }
   Data data(model);
-  MatX J(6, model.nv());
   for (const GroupContact& c : group) {
     const double P_c = compression.constraint_impulses[c.first_row];
     const double P = (1.0 + c.restitution) * P_c;
@@ -102,8 +84,8 @@ std::optional<SimultaneousImpact> simultaneous_impact(const Model& model, VecRef
       return std::nullopt;
     }
     // Each separates or stays (the restitution impulses of the others may not drive it back in).
-    const double after = normal_speed(model, data, q, motion.v_after, c.touch, J);
-    const double before = normal_speed(model, data, q, v, c.touch, J);
+    const double after = detail::normal_speed(model, data, q, motion.v_after, c.touch);
+    const double before = detail::normal_speed(model, data, q, v, c.touch);
     if (after < kEnergyRoundOff * before) return std::nullopt;
   }
   if (motion.kinetic_after > motion.kinetic_before * (1.0 + kEnergyRoundOff)) return std::nullopt;

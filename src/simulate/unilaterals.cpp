@@ -142,8 +142,17 @@ double Unilaterals::rate(const Entry& e, const integrate::State& state) {
 
 double Unilaterals::push(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
                          const Entry& e, const integrate::State& state) {
+  solve_forces(advanced, state);
+  return held_force(system, e);
+}
+
+void Unilaterals::solve_forces(integrate::SecondOrderSystem& advanced,
+                               const integrate::State& state) {
   vdot_.resize(state.v.size());
   advanced.acceleration(state.t, state.q, state.v, vdot_);
+}
+
+double Unilaterals::held_force(const system::MultibodySystem& system, const Entry& e) const {
   return e.contact ? system.contact_force(e.index) : e.outward * system.stop_force(e.index);
 }
 
@@ -240,28 +249,14 @@ void Unilaterals::project(system::MultibodySystem& system, integrate::State& at)
 
 void Unilaterals::close(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
                         const Entry& e, integrate::State& at) {
-  if (!e.contact) {
-    hold_[slot(e)] = Hold::closed;
-    at.q[e.q] = e.value;
-    at.v[e.v] = 0.0;
-    system.hold(e.index, e.value);
-    // On a constrained model the other rates follow the held one's zero (a rebound too short to
-    // resolve leaves them the constraints' share of its small rate).
-    project(system, at);
-    return;
-  }
-  refuse_flat_disk(e, at);
-  if (e.static_friction > 0.0) {
-    const Vec3 slip = slip_velocity(e, at);
-    if (slip.norm() > kSlipAtRest) {
-      hold_contact(system, e, at, Hold::sliding, slip);
-      return;
-    }
+  // A contact with friction that does not slip sticks if its cone holds it.
+  if (e.contact && e.static_friction > 0.0 && !(slip_velocity(e, at).norm() > kSlipAtRest)) {
+    refuse_flat_disk(e, at);
     StopEvent ignored;
     stick_or_slip(system, advanced, e, at, ignored);
     return;
   }
-  hold_contact(system, e, at, Hold::closed);
+  hold_at_rest(system, e, at);
 }
 
 void Unilaterals::stick_or_slip(system::MultibodySystem& system,
@@ -433,7 +428,7 @@ bool Unilaterals::strike_together(system::MultibodySystem& system,
     rest_tails[k] = rebound > 0.0 && e < 1.0 ? 2.0 * rebound / (into * (1.0 - e)) : 0.0;
   }
   for (std::size_t k = 0; k < group.size(); ++k) {
-    if (rest_tails[k] >= 0.0) hold_at_rest(system, advanced, *group[k], at);
+    if (rest_tails[k] >= 0.0) hold_at_rest(system, *group[k], at);
   }
   settle(system, advanced, at);
   for (std::size_t k = 0; k < group.size(); ++k) {
@@ -643,7 +638,7 @@ std::vector<StopEvent> Unilaterals::start(system::MultibodySystem& system,
     // Pressed onto it, as all are free (a ball hung touching another is not).
     if (acceleration_into(advanced, e, state) > 0.0) resting.push_back(&e);
   }
-  for (const Entry* e : resting) hold_at_rest(system, advanced, *e, state);
+  for (const Entry* e : resting) hold_at_rest(system, *e, state);
   settle(system, advanced, state);
   std::vector<StopEvent> events;
   for (const Entry& e : entries_) {
@@ -665,11 +660,16 @@ std::vector<StopEvent> Unilaterals::start(system::MultibodySystem& system,
   return events;
 }
 
-void Unilaterals::hold_at_rest(system::MultibodySystem& system,
-                               integrate::SecondOrderSystem& advanced, const Entry& e,
+void Unilaterals::hold_at_rest(system::MultibodySystem& system, const Entry& e,
                                integrate::State& at) {
   if (!e.contact) {
-    close(system, advanced, e, at);
+    hold_[slot(e)] = Hold::closed;
+    at.q[e.q] = e.value;
+    at.v[e.v] = 0.0;
+    system.hold(e.index, e.value);
+    // On a constrained model the other rates follow the held one's zero (a rebound too short to
+    // resolve leaves them the constraints' share of its small rate).
+    project(system, at);
     return;
   }
   refuse_flat_disk(e, at);
@@ -690,9 +690,10 @@ void Unilaterals::settle(system::MultibodySystem& system, integrate::SecondOrder
     const Entry* pulling = nullptr;
     const Entry* beyond = nullptr;
     double least = 0.0, most = 0.0;
+    solve_forces(advanced, at);  // every held one's force, and the multipliers, at once
     for (const Entry& e : entries_) {
       if (hold_[slot(e)] == Hold::open) continue;
-      const double force = push(system, advanced, e, at);
+      const double force = held_force(system, e);
       if (force < least || (pulling == nullptr && !(force > 0.0))) {
         least = force;
         pulling = &e;
@@ -709,7 +710,6 @@ void Unilaterals::settle(system::MultibodySystem& system, integrate::SecondOrder
     if (pulling != nullptr) {
       open(system, *pulling, at);
     } else if (beyond != nullptr) {
-      push(system, advanced, *beyond, at);
       hold_contact(system, *beyond, at, Hold::sliding, -sticking_friction(system, *beyond, at));
     } else {
       return;

@@ -191,6 +191,9 @@ class Unilaterals {
   // The force a closed one exerts along its outward direction at `state` (evaluates `advanced`).
   double push(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
               const Entry& e, const integrate::State& state);
+  // push() in two parts: the forces of every closed one solved at `state`, then one's read.
+  void solve_forces(integrate::SecondOrderSystem& advanced, const integrate::State& state);
+  double held_force(const system::MultibodySystem& system, const Entry& e) const;
   // Its acceleration into the constraint (> 0 towards it) at `state`, free of it (evaluates
   // `advanced`).
   double acceleration_into(integrate::SecondOrderSystem& advanced, const Entry& e,
@@ -261,10 +264,11 @@ class Unilaterals {
   // μs N − |F_t| of a sticking contact at `state` (evaluates `advanced`): < 0 outside the cone.
   // Round-off in a cone's margin: kConeRoundOff times the largest constraint force just solved.
   static double cone_round_off(const system::MultibodySystem& system);
-  // start(): holds one touching at rest (sticking, or sliding where it slips), and lets go of
-  // or slides those held until every one pushes and sticks within its cone.
-  void hold_at_rest(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
-                    const Entry& e, integrate::State& at);
+  // Holds one touching, its friction undecided: a stop on its value, a contact sliding where it
+  // slips, else held on all its rows (close() then decides; start() and a group's rest settle).
+  void hold_at_rest(system::MultibodySystem& system, const Entry& e, integrate::State& at);
+  // Lets go of or slides those held, one at a time, until every one pushes and sticks within its
+  // cone.
   void settle(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
               integrate::State& at);
   double cone_margin(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
