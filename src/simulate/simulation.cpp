@@ -601,6 +601,12 @@ std::string format_stop_events(const std::vector<StopEvent>& events) {
       case StopEventKind::release:
         return fmt::format("{} lets {} go at t = {:.12g} s (it would pull)", stop, held, e.time);
       case StopEventKind::stick:
+        if (e.in_impact) {
+          return fmt::format(
+              "{} sticks at t = {:.12g} s, in the impact (its slip of {:.3g} m/s would have "
+              "turned to run with its friction)",
+              stop, e.time, e.rate_before);
+        }
         return fmt::format(
             "{} sticks at t = {:.12g} s (slip speed {:.3g} -> 0; friction {:.6g} N within "
             "μs N = {:.6g} N)",

@@ -28,6 +28,13 @@ constexpr int kSamples = 16;
 // strikes, closes or lets go there once or twice in a real sequence.
 constexpr int kActsAtOneInstant = 64;
 
+// A run whose unilaterals act this often within kCrowdedSpan (s) of the first of them makes no
+// progress either: a contact that slips and stops slipping at once, again and again (its friction
+// agrees with no slip direction near its cone's edge), would crawl on for ever. No bouncing
+// sequence comes near it (one cut short rests instead).
+constexpr int kActsInSpan = 10000;
+constexpr double kCrowdedSpan = 1e-4;
+
 // A contact's gap below zero by this much (m, times its radius where that is above 1 m) is
 // round-off: above the constraint projection's 1e-14, far below any motion a run resolves.
 constexpr double kContactSlack = 1e-12;
@@ -266,7 +273,7 @@ void Unilaterals::stick_or_slip(system::MultibodySystem& system,
   event.friction_limit = e.static_friction * push(system, advanced, e, at);
   const Vec3 friction = sticking_friction(system, e, at);
   event.friction_needed = friction.norm();
-  if (event.friction_needed <= event.friction_limit) {
+  if (event.friction_needed <= event.friction_limit + cone_round_off(system)) {
     event.friction = FrictionState::sticking;
     return;
   }
@@ -353,13 +360,26 @@ double Unilaterals::contact_impact(system::MultibodySystem& system, const Entry&
   // The contacts closed now and the stops holding take their impulses as constraints; one that
   // would pull lets go, one whose cone cannot hold it slides, and the impact is solved again.
   begin_impact(system, at);
+  bool all_stuck = false;
   for (;;) {
     // Newton's restitution and Coulomb's law at impact (none without friction).
-    const dynamics::FrictionalImpact impact = dynamics::frictional_impact(
-        model_, at.q.head(nq), at.v.head(nv), touch, e.restitution, c.static_friction,
-        c.kinetic_friction, enabled_rows(system), system.held_joints(), sliding_at_impact_);
+    dynamics::FrictionalImpact impact;
+    try {
+      impact = dynamics::frictional_impact(
+          model_, at.q.head(nq), at.v.head(nv), touch, e.restitution, c.static_friction,
+          c.kinetic_friction, enabled_rows(system), system.held_joints(), sliding_at_impact_);
+    } catch (const NumericalError&) {
+      // Energy created, or a jam, with contacts sliding through the impact against directions
+      // held from before it: those contacts stick for the impact instead (constraints with no
+      // rebound take energy only), once; a failure then stands.
+      if (all_stuck || sliding_at_impact_.empty()) throw;
+      stick_all_sliding(system, at);
+      all_stuck = true;
+      continue;
+    }
     if (!let_go_one_that_pulls(system, impact.motion, at) &&
-        !slide_one_beyond_its_cone(system, impact.motion, at)) {
+        !slide_one_beyond_its_cone(system, impact.motion, at) &&
+        !stick_one_whose_slip_turns(system, impact.motion, at)) {
       at.v.head(nv) = impact.motion.v_after;
       return impact.normal_impulse;
     }
@@ -460,7 +480,8 @@ double Unilaterals::stop_strike(system::MultibodySystem& system, const Entry& e,
         dynamics::stop_impact(model_, at.q.head(nq), at.v.head(nv), e.v, e.restitution,
                               enabled_rows(system), system.held_joints(), sliding_at_impact_);
     if (!let_go_one_that_pulls(system, impact.motion, at) &&
-        !slide_one_beyond_its_cone(system, impact.motion, at)) {
+        !slide_one_beyond_its_cone(system, impact.motion, at) &&
+        !stick_one_whose_slip_turns(system, impact.motion, at)) {
       at.v.head(nv) = impact.motion.v_after;
       return impact.impulse;
     }
@@ -533,8 +554,60 @@ bool Unilaterals::slide_one_beyond_its_cone(system::MultibodySystem& system,
   return true;
 }
 
+bool Unilaterals::stick_one_whose_slip_turns(system::MultibodySystem& system,
+                                             const dynamics::ImpulsiveMotion& motion,
+                                             integrate::State& at) {
+  if (sliding_at_impact_.empty()) return false;
+  trial_ = at;
+  trial_.v.head(model_.nv()) = motion.v_after;
+  for (std::size_t k = 0; k < sliding_at_impact_.size(); ++k) {
+    const Entry& e = sliding_entry(system, sliding_at_impact_[k]);
+    // The slip after, along the friction: positive where the friction would push it on. One
+    // stuck once in this impact and slid again (its cone could not hold it) slides on.
+    if (!(slip_velocity(e, trial_).dot(sliding_at_impact_[k].friction_W) > kSlipAtRest)) continue;
+    if (std::find(stuck_in_impact_.begin(), stuck_in_impact_.end(), &e) != stuck_in_impact_.end()) {
+      continue;
+    }
+    sliding_at_impact_.erase(sliding_at_impact_.begin() + static_cast<std::ptrdiff_t>(k));
+    stick_for_impact(system, e, at);
+    return true;
+  }
+  return false;
+}
+
+void Unilaterals::stick_all_sliding(system::MultibodySystem& system, integrate::State& at) {
+  std::vector<dynamics::SlidingContact> sliding;
+  sliding.swap(sliding_at_impact_);
+  for (const dynamics::SlidingContact& s : sliding)
+    stick_for_impact(system, sliding_entry(system, s), at);
+}
+
+const Unilaterals::Entry& Unilaterals::sliding_entry(const system::MultibodySystem& system,
+                                                     const dynamics::SlidingContact& s) const {
+  const std::vector<int>& first_row = system.constraints()->rows().first_row;
+  return *std::find_if(entries_.begin(), entries_.end(), [&](const Entry& x) {
+    return x.contact && first_row[static_cast<std::size_t>(x.index)] == s.normal_row;
+  });
+}
+
+void Unilaterals::stick_for_impact(system::MultibodySystem& system, const Entry& e,
+                                   const integrate::State& at) {
+  // Its tangent rows on, the state as it is: the impact's impulses stop its slip (projecting
+  // the state first would stop it outside the impact's law and its energy count).
+  StopEvent stick = event_at(e, at.t, StopEventKind::stick);
+  stick.in_impact = true;
+  stick.friction = FrictionState::sticking;
+  stick.rate_before = slip_velocity(e, at).norm();
+  impact_slips_.push_back(stick);
+  stuck_in_impact_.push_back(&e);
+  hold_[slot(e)] = Hold::closed;
+  q_ = at.q.head(model_.nq());
+  system.hold_contact(e.index, q_, system::ContactHold::sticking);
+}
+
 void Unilaterals::begin_impact(const system::MultibodySystem& system, const integrate::State& at) {
   sliding_at_impact_.clear();
+  stuck_in_impact_.clear();
   if (system.constraints() == nullptr) return;
   const std::vector<int>& first_row = system.constraints()->rows().first_row;
   for (const Entry& e : entries_) {
@@ -769,9 +842,11 @@ bool Unilaterals::check(system::MultibodySystem& system, integrate::SecondOrderS
     }
     if (hold_[k] == Hold::closed && e.static_friction > 0.0) {
       // Sticking, from the evaluation push() just made at the end.
+      // Beyond it by more than the forces' round-off (one carrying round-off alone would slip
+      // and stick again at every step).
       const double margin_end =
           e.static_friction * push_end - sticking_friction(system, e, end).norm();
-      if (!(margin_end < 0.0)) continue;
+      if (!(margin_end < -cone_round_off(system))) continue;
       const auto margin = [&](const integrate::State& x) {
         return cone_margin(system, advanced, e, x);
       };
@@ -818,18 +893,31 @@ void Unilaterals::act(system::MultibodySystem& system, integrate::SecondOrderSys
   pending_ = -1;
   acts_at_last_ = state.t == last_act_ ? acts_at_last_ + 1 : 1;
   last_act_ = state.t;
+  if (!(state.t - span_start_ < kCrowdedSpan)) {
+    span_start_ = state.t;
+    acts_in_span_ = 0;
+  }
+  const auto what = [&] {
+    return e.contact ? fmt::format("contact '{}'", contact_of(e).name)
+                     : fmt::format("joint '{}''s {} stop",
+                                   model_.joints()[static_cast<std::size_t>(e.index)].name,
+                                   e.outward > 0.0 ? "lower" : "upper");
+  };
   if (acts_at_last_ > kActsAtOneInstant) {
-    const std::string what =
-        e.contact ? fmt::format("contact '{}'", contact_of(e).name)
-                  : fmt::format("joint '{}''s {} stop",
-                                model_.joints()[static_cast<std::size_t>(e.index)].name,
-                                e.outward > 0.0 ? "lower" : "upper");
     throw NumericalError(fmt::format(
         "the unilaterals make no progress at t = {:.12g} s: {} has acted {} times there (its gap "
         "{:.17g}, rate {:.3g}) without the run moving on — it is pushed neither onto its "
         "constraint nor off it to within round-off. Move the limit or the plane, or give the "
         "mechanism a little damping or load",
-        state.t, what, kActsAtOneInstant, gap(e, state), rate(e, state)));
+        state.t, what(), kActsAtOneInstant, gap(e, state), rate(e, state)));
+  }
+  if (++acts_in_span_ > kActsInSpan) {
+    throw NumericalError(fmt::format(
+        "the unilaterals make no progress at t = {:.12g} s: they acted {} times since t = {:.12g} "
+        "s, the last {} — a contact whose friction agrees with no slip direction at its cone's "
+        "edge slips and stops slipping again at once (docs/contacts.md). A smaller friction, or "
+        "a little damping, is the way through for now",
+        state.t, kActsInSpan, span_start_, what()));
   }
   switch (pending_action_) {
     case Pending::reach: {

@@ -43,6 +43,9 @@ function stopText(s) {
   const head = `${s.contact ? `contact ${s.contact}` : `${s.joint} ${s.stop} stop`}: ${what}`
     + `${s.kind === 'rest' && s.friction ? `, ${s.friction}` : ''} at t = ${s.time.toPrecision(6)} s`;
   if (s.kind === 'release') return head;
+  if (s.kind === 'stick' && s.in_impact) {
+    return `${head}, in the impact: its slip of ${s.rate_before.toPrecision(4)} m/s would have turned to run with its friction`;
+  }
   if (s.kind === 'slip' && s.in_impact) {
     return `${head}, in the impact: a friction impulse of ${s.friction_needed.toPrecision(4)} N·s needed, beyond μs P_n = ${s.friction_limit.toPrecision(4)} N·s`;
   }

@@ -38,6 +38,9 @@ export function summarySection(data) {
 // A stop's or contact's entry in words: a rest with when its bounces end and how friction holds,
 // a stick or slip with the friction it needed against the cone's μs N.
 function stopWhat(e) {
+  if (e.kind === 'stick' && e.in_impact) {
+    return `stick in the impact (its slip of ${formatNumber(e.rate_before, 4)} m/s would have turned to run with its friction)`;
+  }
   if (e.kind === 'slip' && e.in_impact) {
     return `slip in the impact (friction impulse ${formatNumber(e.friction_needed, 4)} N·s > μs P_n = ${formatNumber(e.friction_limit, 4)} N·s)`;
   }

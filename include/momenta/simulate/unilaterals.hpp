@@ -113,7 +113,10 @@ struct StopEvent {
   /// μs N (N); for a slip within an impact (in_impact) the impulses, |P_t| and μs P_n (N·s).
   double friction_needed = 0.0, friction_limit = 0.0;
   /// A slip within another's impact: a sticking contact whose cone could not hold the friction
-  /// impulse sticking needed there; it slides through the impact and after it.
+  /// impulse sticking needed there; it slides through the impact and after it. A stick within
+  /// one: a sliding contact whose slip the impulses would turn to run with its friction (the
+  /// slip passed zero within the impact); it sticks through the impact (rate_before its slip
+  /// speed before it).
   bool in_impact = false;
 };
 
@@ -161,7 +164,7 @@ class Unilaterals {
            integrate::State& state, StopEvent& event);
 
   /// The events of the last act() after its own, taken (the list is empty after): the sticking
-  /// contacts that slid through its impact (StopEvent::in_impact slips, in the order they began
+  /// contacts that slid or stuck through its impact (StopEvent::in_impact, in the order they began
   /// to), and the other contacts of a simultaneous impact (their impacts, then their rests).
   std::vector<StopEvent> take_impact_slips();
 
@@ -235,6 +238,22 @@ class Unilaterals {
   // sliding_at_impact_ gains it, its tangent rows go off — if one does; says whether one did.
   bool slide_one_beyond_its_cone(system::MultibodySystem& system,
                                  const dynamics::ImpulsiveMotion& motion, integrate::State& at);
+  // After an impact's impulses `motion` that no closed contact pulls in and whose cones hold: the
+  // contact sliding through the impact whose slip the impulses would turn to run with its
+  // friction (the slip passed zero within the impact: held against its old direction, the
+  // friction would push) sticks for the impact instead — it leaves sliding_at_impact_, its
+  // tangent rows go on — if one does; says whether one did.
+  bool stick_one_whose_slip_turns(system::MultibodySystem& system,
+                                  const dynamics::ImpulsiveMotion& motion, integrate::State& at);
+  // Every contact sliding through the impact sticks for it instead (its tangent rows go on).
+  void stick_all_sliding(system::MultibodySystem& system, integrate::State& at);
+  // A contact sliding through the impact sticks for it: its tangent rows on, `at` as it is (the
+  // impulses stop its slip); a stick event in the impact (in_impact) for take_impact_slips().
+  void stick_for_impact(system::MultibodySystem& system, const Entry& e,
+                        const integrate::State& at);
+  // The entry of a contact sliding through the impact.
+  const Entry& sliding_entry(const system::MultibodySystem& system,
+                             const dynamics::SlidingContact& s) const;
   // Before an impact's solves: the contacts sliding now slide through it (sliding_at_impact_),
   // their friction impulse μk P_n against their slip (Coulomb's law at impact).
   void begin_impact(const system::MultibodySystem& system, const integrate::State& at);
@@ -287,14 +306,18 @@ class Unilaterals {
   int pending_ = -1;                  // the one check() found acting
   Pending pending_action_ = Pending::reach;
   double last_act_ = -std::numeric_limits<double>::infinity();  // when act() last acted
-  int acts_at_last_ = 0;     // how often it acted then: a run that makes no progress stops
+  int acts_at_last_ = 0;  // how often it acted then: a run that makes no progress stops
+  double span_start_ = -std::numeric_limits<double>::infinity();  // the first act of a span
+  int acts_in_span_ = 0;     // acts within kCrowdedSpan of span_start_
   double start_rate_ = 0.0;  // first_contact: the rate at the step's start
   integrate::StepInterpolant interpolant_;
   integrate::State trial_;
   VecX vdot_, q_, v_;
   dynamics::Data data_;  // a contact's kinematics
-  // The contacts sliding through the impact being solved, and the slips they began.
+  // The contacts sliding through the impact being solved, those stuck for it (each once), and
+  // the slips and sticks they began.
   std::vector<dynamics::SlidingContact> sliding_at_impact_;
+  std::vector<const Entry*> stuck_in_impact_;
   std::vector<StopEvent> impact_slips_;
 };
 
