@@ -578,8 +578,9 @@ bool Unilaterals::stick_one_whose_slip_turns(system::MultibodySystem& system,
 void Unilaterals::stick_all_sliding(system::MultibodySystem& system, integrate::State& at) {
   std::vector<dynamics::SlidingContact> sliding;
   sliding.swap(sliding_at_impact_);
-  for (const dynamics::SlidingContact& s : sliding)
+  for (const dynamics::SlidingContact& s : sliding) {
     stick_for_impact(system, sliding_entry(system, s), at);
+  }
 }
 
 const Unilaterals::Entry& Unilaterals::sliding_entry(const system::MultibodySystem& system,
@@ -841,9 +842,8 @@ bool Unilaterals::check(system::MultibodySystem& system, integrate::SecondOrderS
       consider(e, zero_of(pushes, push_end), Pending::release);
     }
     if (hold_[k] == Hold::closed && e.static_friction > 0.0) {
-      // Sticking, from the evaluation push() just made at the end.
-      // Beyond it by more than the forces' round-off (one carrying round-off alone would slip
-      // and stick again at every step).
+      // Sticking, from the evaluation push() just made at the end; beyond its cone by more than
+      // the forces' round-off (one carrying round-off alone would slip and stick at every step).
       const double margin_end =
           e.static_friction * push_end - sticking_friction(system, e, end).norm();
       if (!(margin_end < -cone_round_off(system))) continue;
