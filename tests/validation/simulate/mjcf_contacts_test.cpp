@@ -128,7 +128,7 @@ TEST(MjcfContacts, ACrateDroppedTumblingComesToRestOnItsFace) {
   // It lands at 0.23 s and its last corner settles by 0.30 s; after that a corner carrying
   // round-off alone may be let go (the box then rests on two corners of a diagonal, the other two
   // touching: rigid bodies leave the split open), but none slips or sticks.
-  EXPECT_LT(events.size(), 40u);
+  EXPECT_LT(events.size(), 100u);  // 37 (26 impacts); slipping and sticking at rest made 1 469
   EXPECT_TRUE(std::any_of(events.begin(), events.end(), [](const StopEvent& e) {
     return e.kind == StopEventKind::stick && e.in_impact;
   }));  // a corner whose slip an impact turned
