@@ -233,6 +233,14 @@ double Unilaterals::first_contact(const Entry& e, integrate::SecondOrderSystem& 
 
 void Unilaterals::hold_contact(system::MultibodySystem& system, const Entry& e,
                                integrate::State& at, Hold how, const Vec3& slip_W) {
+  set_contact_hold(system, e, at, how, slip_W);
+  if (how == Hold::open) return;
+  // On the plane with no normal speed (and no slip where it sticks).
+  project(system, at);
+}
+
+void Unilaterals::set_contact_hold(system::MultibodySystem& system, const Entry& e,
+                                   const integrate::State& at, Hold how, const Vec3& slip_W) {
   hold_[slot(e)] = how;
   q_ = at.q.head(model_.nq());
   const system::ContactHold hold = how == Hold::open      ? system::ContactHold::open
@@ -240,9 +248,6 @@ void Unilaterals::hold_contact(system::MultibodySystem& system, const Entry& e,
                                                           : system::ContactHold::sticking;
   system.hold_contact(e.index, q_, hold, slip_W);
   if (how == Hold::sliding) slip_reference_[slot(e)] = slip_W;
-  if (how == Hold::open) return;
-  // On the plane with no normal speed (and no slip where it sticks).
-  project(system, at);
 }
 
 void Unilaterals::project(system::MultibodySystem& system, integrate::State& at) {
@@ -556,7 +561,7 @@ bool Unilaterals::slide_one_beyond_its_cone(system::MultibodySystem& system,
 
 bool Unilaterals::stick_one_whose_slip_turns(system::MultibodySystem& system,
                                              const dynamics::ImpulsiveMotion& motion,
-                                             integrate::State& at) {
+                                             const integrate::State& at) {
   if (sliding_at_impact_.empty()) return false;
   trial_ = at;
   trial_.v.head(model_.nv()) = motion.v_after;
@@ -575,7 +580,7 @@ bool Unilaterals::stick_one_whose_slip_turns(system::MultibodySystem& system,
   return false;
 }
 
-void Unilaterals::stick_all_sliding(system::MultibodySystem& system, integrate::State& at) {
+void Unilaterals::stick_all_sliding(system::MultibodySystem& system, const integrate::State& at) {
   std::vector<dynamics::SlidingContact> sliding;
   sliding.swap(sliding_at_impact_);
   for (const dynamics::SlidingContact& s : sliding) {
@@ -601,9 +606,7 @@ void Unilaterals::stick_for_impact(system::MultibodySystem& system, const Entry&
   stick.rate_before = slip_velocity(e, at).norm();
   impact_slips_.push_back(stick);
   stuck_in_impact_.push_back(&e);
-  hold_[slot(e)] = Hold::closed;
-  q_ = at.q.head(model_.nq());
-  system.hold_contact(e.index, q_, system::ContactHold::sticking);
+  set_contact_hold(system, e, at, Hold::closed);
 }
 
 void Unilaterals::begin_impact(const system::MultibodySystem& system, const integrate::State& at) {

@@ -244,9 +244,10 @@ class Unilaterals {
   // friction would push) sticks for the impact instead — it leaves sliding_at_impact_, its
   // tangent rows go on — if one does; says whether one did.
   bool stick_one_whose_slip_turns(system::MultibodySystem& system,
-                                  const dynamics::ImpulsiveMotion& motion, integrate::State& at);
+                                  const dynamics::ImpulsiveMotion& motion,
+                                  const integrate::State& at);
   // Every contact sliding through the impact sticks for it instead (its tangent rows go on).
-  void stick_all_sliding(system::MultibodySystem& system, integrate::State& at);
+  void stick_all_sliding(system::MultibodySystem& system, const integrate::State& at);
   // A contact sliding through the impact sticks for it: its tangent rows on, `at` as it is (the
   // impulses stop its slip); a stick event in the impact (in_impact) for take_impact_slips().
   void stick_for_impact(system::MultibodySystem& system, const Entry& e,
@@ -271,6 +272,9 @@ class Unilaterals {
                      const Entry& e, integrate::State& at, StopEvent& event);
   void hold_contact(system::MultibodySystem& system, const Entry& e, integrate::State& at, Hold how,
                     const Vec3& slip_W = Vec3::Zero());
+  // hold_contact() without putting `at` onto the rows (an impact's impulses do that).
+  void set_contact_hold(system::MultibodySystem& system, const Entry& e, const integrate::State& at,
+                        Hold how, const Vec3& slip_W = Vec3::Zero());
   // Projects `at` onto the constraints that hold now (MultibodySystem::project; a held joint's
   // coordinate stays).
   void project(system::MultibodySystem& system, integrate::State& at);
