@@ -82,6 +82,20 @@ void check_finite(const SecondOrderSystem& system, const Integrator& integrator,
       state.t, system.coordinate_name(i, !in_q), x[i], integrator.name(), h)});
 }
 
+// Throws for a run whose last kCrawlingSteps steps each advanced it by less than kCrawlingStep of
+// its span.
+[[noreturn]] void throw_crawling(const Integrator& integrator, const State& state, double t_before,
+                                 double h, double t_end) {
+  throw NumericalError(OptionMessage{fmt::format(
+      "the run crawls at t = {:.12g} s of {:.6g} s: {}'s last {} steps each advanced it by less "
+      "than {:.0e} of its span (the last by {:.3g} s, the step it chose {:.3g} s), and at that "
+      "pace it would not end. Its right side is discontinuous or nearly singular there: a "
+      "friction switching direction faster than any step (a contact starting to slip at its "
+      "cone's edge, or sliding near Painlevé's paradox; docs/contacts.md), or a stiff model "
+      "(‹integrator=bdf›)",
+      state.t, t_end, integrator.name(), kCrawlingSteps, kCrawlingStep, state.t - t_before, h)});
+}
+
 }  // namespace
 
 void check_run(const SecondOrderSystem& system, const Integrator& integrator, const State& state,
@@ -111,6 +125,8 @@ RunSummary run(SecondOrderSystem& system, Integrator& integrator, State& state,
   };
   long k = 0;      // steps taken that end on the output grid (fixed steps) or anywhere (adaptive)
   long taken = 0;  // every step, those cut short on a discontinuity included
+  long crawling = 0;  // adaptive steps in a row that advanced less than kCrawlingStep of the span
+  const double crawling_step = kCrawlingStep * (options.t_end - t0);
   bool reported = true;
   while (state.t < options.t_end) {
     if (++taken > static_cast<long>(kMaxRunSteps)) {
@@ -139,6 +155,7 @@ RunSummary run(SecondOrderSystem& system, Integrator& integrator, State& state,
       t_target = t_break;
       grid_step = false;
     }
+    const double t_before = state.t;
     const double h = integrator.step(system, state, t_target - state.t);
     if (system.project(state.t, state.q, state.v)) integrator.state_changed();
     // Land exactly on the target when the step reached it; an interval h does not divide leaves
@@ -159,6 +176,8 @@ RunSummary run(SecondOrderSystem& system, Integrator& integrator, State& state,
       --k;
       reported = true;
     }
+    crawling = state.t - t_before < crawling_step ? crawling + 1 : 0;
+    if (crawling == kCrawlingSteps) throw_crawling(integrator, state, t_before, h, options.t_end);
   }
   if (!reported) observer(state);
   return finish();

@@ -73,6 +73,8 @@ std::vector<int> quaternion_offsets(const model::Model& model) {
 
 constexpr const char* kReactionSuffixes[6] = {"Fx", "Fy", "Fz", "Mx", "My", "Mz"};
 
+std::string stop_event_line(const StopEvent& e);  // (with the summary's text, below)
+
 }  // namespace
 
 Simulation::Simulation(const model::Model& model, std::vector<model::OutputSpec> outputs,
@@ -474,10 +476,17 @@ SimulationSummary Simulation::run(RowSink& sink) {
   } catch (const NumericalError& e) {
     // Keep what was recorded, and say how far it goes.
     sink.flush();
+    // What the stops and contacts did last, where they act: the run stopped where they do, often.
+    const std::string last_stop =
+        summary.stop_events.empty()
+            ? ""
+            : fmt::format("; the last of its stops' and contacts' events: {}",
+                          stop_event_line(summary.stop_events.back()));
     const std::string note = stiffness_note(summary);
-    throw NumericalError(OptionMessage{fmt::format(
-        "{} ({} row{} up to the failure were written){}{}", e.spelled(keep_option_marks),
-        recorder.rows(), recorder.rows() == 1 ? "" : "s", note.empty() ? "" : ". ", note)});
+    throw NumericalError(OptionMessage{
+        fmt::format("{} ({} row{} up to the failure were written{}){}{}",
+                    e.spelled(keep_option_marks), recorder.rows(), recorder.rows() == 1 ? "" : "s",
+                    last_stop, note.empty() ? "" : ". ", note)});
   } catch (const Interrupted& e) {
     sink.flush();
     throw Interrupted(fmt::format("{}; {} whole row{} written", e.what(), recorder.rows(),
@@ -571,70 +580,71 @@ std::string format_events(const std::vector<EventOccurrence>& events) {
   }
   return out;
 }
+
+// One line of the summary for a stop or contact event.
+std::string stop_event_line(const StopEvent& e) {
+  const bool contact = !e.contact.empty();
+  const std::string stop = contact
+                               ? fmt::format("contact {}", e.contact)
+                               : fmt::format("{} {} stop", e.joint, e.upper ? "upper" : "lower");
+  const char* const held = contact ? "the body" : "the joint";
+  const char* const rate = contact ? "normal speed" : "rate";
+  switch (e.kind) {
+    case StopEventKind::impact:
+      return fmt::format(
+          "{} impact at t = {:.12g} s: {} {:.6g} -> {:.6g}, impulse {:.6g}, "
+          "{:.6g} J lost",
+          stop, e.time, rate, e.rate_before, e.rate_after, e.impulse, e.energy_lost);
+    case StopEventKind::rest:
+      return fmt::format(
+          "{} holds {} from t = {:.12g} s{}{} ({} {:.6g} -> 0, {:.6g} J lost)", stop, held, e.time,
+          e.rest_time > e.time ? fmt::format(" (its bounces end at t = {:.12g} s)", e.rest_time)
+                               : "",
+          e.friction == FrictionState::none ? ""
+                                            : fmt::format(", {}", friction_state_name(e.friction)),
+          rate, e.rate_before + 0.0, e.energy_lost);  // −0 (n · 0) as 0
+    case StopEventKind::release:
+      return fmt::format("{} lets {} go at t = {:.12g} s (it would pull)", stop, held, e.time);
+    case StopEventKind::stick:
+      if (e.in_impact) {
+        return fmt::format(
+            "{} sticks at t = {:.12g} s, in the impact (its slip of {:.3g} m/s would have "
+            "turned to run with its friction)",
+            stop, e.time, e.rate_before);
+      }
+      return fmt::format(
+          "{} sticks at t = {:.12g} s (slip speed {:.3g} -> 0; friction {:.6g} N within "
+          "μs N = {:.6g} N)",
+          stop, e.time, e.rate_before, e.friction_needed, e.friction_limit);
+    case StopEventKind::slip:
+      if (e.in_impact) {
+        return fmt::format(
+            "{} slips at t = {:.12g} s, in the impact (sticking would need a friction impulse "
+            "of {:.6g} N·s, beyond μs P_n = {:.6g} N·s)",
+            stop, e.time, e.friction_needed, e.friction_limit);
+      }
+      // Where the friction sticking needs reached the cone (located there), or was beyond it
+      // where a slip stopped (it slides on the other way).
+      if (e.friction_needed <= e.friction_limit * (1.0 + 1e-9)) {
+        return fmt::format("{} slips at t = {:.12g} s (its friction reached μs N = {:.6g} N)", stop,
+                           e.time, e.friction_limit);
+      }
+      return fmt::format(
+          "{} slips at t = {:.12g} s (sticking would need {:.6g} N of friction, beyond "
+          "μs N = {:.6g} N)",
+          stop, e.time, e.friction_needed, e.friction_limit);
+  }
+  return std::string();
+}
+
 // The stops' impacts, rests and releases: the first few and the last, with their count.
 std::string format_stop_events(const std::vector<StopEvent>& events) {
   if (events.empty()) return "";
   constexpr std::size_t kListed = 6;
-  const auto line = [](const StopEvent& e) {
-    const bool contact = !e.contact.empty();
-    const std::string stop = contact
-                                 ? fmt::format("contact {}", e.contact)
-                                 : fmt::format("{} {} stop", e.joint, e.upper ? "upper" : "lower");
-    const char* const held = contact ? "the body" : "the joint";
-    const char* const rate = contact ? "normal speed" : "rate";
-    switch (e.kind) {
-      case StopEventKind::impact:
-        return fmt::format(
-            "{} impact at t = {:.12g} s: {} {:.6g} -> {:.6g}, impulse {:.6g}, "
-            "{:.6g} J lost",
-            stop, e.time, rate, e.rate_before, e.rate_after, e.impulse, e.energy_lost);
-      case StopEventKind::rest:
-        return fmt::format("{} holds {} from t = {:.12g} s{}{} ({} {:.6g} -> 0, {:.6g} J lost)",
-                           stop, held, e.time,
-                           e.rest_time > e.time
-                               ? fmt::format(" (its bounces end at t = {:.12g} s)", e.rest_time)
-                               : "",
-                           e.friction == FrictionState::none
-                               ? ""
-                               : fmt::format(", {}", friction_state_name(e.friction)),
-                           rate, e.rate_before + 0.0, e.energy_lost);  // −0 (n · 0) as 0
-      case StopEventKind::release:
-        return fmt::format("{} lets {} go at t = {:.12g} s (it would pull)", stop, held, e.time);
-      case StopEventKind::stick:
-        if (e.in_impact) {
-          return fmt::format(
-              "{} sticks at t = {:.12g} s, in the impact (its slip of {:.3g} m/s would have "
-              "turned to run with its friction)",
-              stop, e.time, e.rate_before);
-        }
-        return fmt::format(
-            "{} sticks at t = {:.12g} s (slip speed {:.3g} -> 0; friction {:.6g} N within "
-            "μs N = {:.6g} N)",
-            stop, e.time, e.rate_before, e.friction_needed, e.friction_limit);
-      case StopEventKind::slip:
-        if (e.in_impact) {
-          return fmt::format(
-              "{} slips at t = {:.12g} s, in the impact (sticking would need a friction impulse "
-              "of {:.6g} N·s, beyond μs P_n = {:.6g} N·s)",
-              stop, e.time, e.friction_needed, e.friction_limit);
-        }
-        // Where the friction sticking needs reached the cone (located there), or was beyond it
-        // where a slip stopped (it slides on the other way).
-        if (e.friction_needed <= e.friction_limit * (1.0 + 1e-9)) {
-          return fmt::format("{} slips at t = {:.12g} s (its friction reached μs N = {:.6g} N)",
-                             stop, e.time, e.friction_limit);
-        }
-        return fmt::format(
-            "{} slips at t = {:.12g} s (sticking would need {:.6g} N of friction, beyond "
-            "μs N = {:.6g} N)",
-            stop, e.time, e.friction_needed, e.friction_limit);
-    }
-    return std::string();
-  };
   std::string out;
   const std::size_t listed = events.size() <= kListed ? events.size() : kListed - 2;
   for (std::size_t i = 0; i < listed; ++i) {
-    out += fmt::format("{:<13}{}\n", i == 0 ? "stops" : "", line(events[i]));
+    out += fmt::format("{:<13}{}\n", i == 0 ? "stops" : "", stop_event_line(events[i]));
   }
   if (listed < events.size()) {
     long impacts = 0;
@@ -645,7 +655,7 @@ std::string format_stop_events(const std::vector<StopEvent>& events) {
       lost += e.energy_lost;
     }
     out += fmt::format("{:<13}... {} in all ({} impacts, {:.6g} J lost), the last: {}\n", "",
-                       events.size(), impacts, lost, line(events.back()));
+                       events.size(), impacts, lost, stop_event_line(events.back()));
   }
   return out;
 }

@@ -30,8 +30,9 @@ constexpr int kActsAtOneInstant = 64;
 
 // A run whose unilaterals act this often within kCrowdedSpan (s) of the first of them makes no
 // progress either: a contact that slips and stops slipping at once, again and again (its friction
-// agrees with no slip direction near its cone's edge), would crawl on for ever. No bouncing
-// sequence comes near it (one cut short rests instead).
+// agrees with no slip direction near its cone's edge), or a rattle between stops a nanometre
+// apart, would crawl on for ever. No bouncing sequence comes near it (one cut short rests
+// instead); a rattle between stops a micrometre apart acts 100 times in the span.
 constexpr int kActsInSpan = 10000;
 constexpr double kCrowdedSpan = 1e-4;
 
@@ -917,9 +918,10 @@ void Unilaterals::act(system::MultibodySystem& system, integrate::SecondOrderSys
   if (++acts_in_span_ > kActsInSpan) {
     throw NumericalError(fmt::format(
         "the unilaterals make no progress at t = {:.12g} s: they acted {} times since t = {:.12g} "
-        "s, the last {} — a contact whose friction agrees with no slip direction at its cone's "
-        "edge slips and stops slipping again at once (docs/contacts.md). A smaller friction, or "
-        "a little damping, is the way through for now",
+        "s, the last {} — faster than a run can follow them: a rattle between stops or contacts "
+        "nearer than the motion resolves, or a contact whose friction agrees with no slip "
+        "direction at its cone's edge, slipping and sticking again at once (docs/contacts.md). "
+        "Widen the clearance, or give a smaller friction or a little damping",
         state.t, kActsInSpan, span_start_, what()));
   }
   switch (pending_action_) {

@@ -13,6 +13,13 @@ namespace momenta::integrate {
 /// it can be foreseen (run), stopped with NumericalError when not.
 inline constexpr double kMaxRunSteps = 1e9;
 
+/// An adaptive run whose steps, this many in a row, each advance it by less than
+/// kCrawlingStep of its span crawls: together they cover a millionth of it at most, and at that
+/// pace the run would not end (a step size held down by a discontinuous or nearly singular right
+/// side, not by the motion). It is stopped with NumericalError naming the time and the step.
+inline constexpr long kCrawlingSteps = 10000;
+inline constexpr double kCrawlingStep = 1e-10;
+
 struct RunOptions {
   double t_end = 0.0;  ///< final time, s (> state.t)
   double h = 0.0;      ///< fixed step, or the largest step of an adaptive method, s (> 0)

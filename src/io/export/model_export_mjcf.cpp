@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "export/mjcf_contact_geoms.hpp"
 #include "export/model_export_common.hpp"
 #include "momenta/common/error.hpp"
 #include "momenta/io/model_export.hpp"
@@ -67,7 +68,10 @@ Transform factor_motion(const Factor& f, double value) {
 class MjcfWriter {
  public:
   MjcfWriter(const ModelFile& file, const VecX& q)
-      : file_(file), model_(file.model), q_(q), planes_(ground_planes_of(file.model)) {}
+      : file_(file),
+        model_(file.model),
+        q_(q),
+        contact_geoms_(detail::mjcf_contact_geoms(file.model, part_geom_names(file))) {}
 
   ExportedModel write() {
     check_representable();
@@ -280,74 +284,79 @@ class MjcfWriter {
   }
 
   // --- contacts -------------------------------------------------------------------------------
-  // A sphere on a ground plane is written as MuJoCo poses it: a sphere geom on the body against a
-  // plane geom of the world, plane k's pairs alone colliding (the geom's contype and the plane's
-  // conaffinity the bit 1 << k; the plane's friction 0 and condim 1, so that MuJoCo's mixing —
-  // the larger of each — gives the geom's). momenta's MJCF reader reads them back as contacts
-  // `<name>_ground<k>`. MuJoCo's contacts are soft: a restitution, or a kinetic friction below
-  // the static one, is not written.
+  // A contact with a ground plane is written as the geom momenta's MJCF reader poses as it
+  // (mjcf_contact_geoms.hpp: a sphere's; a cylinder for two rims, a box for eight corners) on the
+  // body, against a plane geom of the world, plane k's pairs alone colliding (the geom's contype
+  // and the plane's conaffinity the bit 1 << k; the plane's friction 0 and condim 1, so that
+  // MuJoCo's mixing — the larger of each — gives the geom's). The reader reads them back as
+  // contacts `<geom>_ground<k>` (`<geom>_rim1_ground<k>`, `<geom>_corner1_ground<k>`, …).
+  // MuJoCo's contacts are soft: a restitution, or a kinetic friction below the static one, is
+  // not written.
 
-  static bool written(const model::Contact& c) {
-    return c.on_ground() && c.shape == model::ContactShape::sphere && c.radius > 0.0;
-  }
-
-  // The distinct ground planes of the contacts written, as (normal, point), in first use.
-  static std::vector<std::pair<Vec3, Vec3>> ground_planes_of(const model::Model& model) {
-    std::vector<std::pair<Vec3, Vec3>> out;
-    for (const model::Constraint& constraint : model.constraints()) {
-      const auto* c = std::get_if<model::Contact>(&constraint);
-      if (c == nullptr || !written(*c)) continue;
-      const std::pair<Vec3, Vec3> plane(c->plane_normal.normalized(), c->plane_point);
-      if (std::find(out.begin(), out.end(), plane) == out.end()) out.push_back(plane);
+  // The names the bodies' drawn parts take as geoms.
+  static std::vector<std::string> part_geom_names(const ModelFile& file) {
+    std::vector<std::string> names;
+    for (int b = 0; b < file.model.num_bodies(); ++b) {
+      for (const PartSummary& part : file.parts_of(b)) names.push_back(part.name);
     }
-    return out;
+    return names;
   }
 
   std::string ground_planes() const {
     std::string out;
-    for (std::size_t k = 0; k < planes_.size(); ++k) {
+    for (std::size_t k = 0; k < contact_geoms_.planes.size(); ++k) {
+      const auto& [normal, point] = contact_geoms_.planes[k];
       out += fmt::format(
           "    <geom name=\"ground{}\" type=\"plane\" size=\"0 0 1\" pos=\"{}\" zaxis=\"{}\" "
           "friction=\"0\" condim=\"1\" contype=\"0\" conaffinity=\"{}\"/>\n",
-          k, vector_text(planes_[k].second), vector_text(planes_[k].first), 1u << k);
+          k, vector_text(point), vector_text(normal), 1u << k);
     }
     return out;
   }
 
   std::string contact_geoms(int body, const std::string& pad) const {
     std::string out;
-    for (const model::Constraint& constraint : model_.constraints()) {
-      const auto* c = std::get_if<model::Contact>(&constraint);
-      if (c == nullptr || !written(*c) || c->frame.body_index != body) continue;
-      const std::pair<Vec3, Vec3> plane(c->plane_normal.normalized(), c->plane_point);
-      const auto k = static_cast<std::size_t>(std::find(planes_.begin(), planes_.end(), plane) -
-                                              planes_.begin());
+    for (const detail::MjcfContactGeom& g : contact_geoms_.geoms) {
+      if (g.body != body) continue;
+      const std::string size =
+          g.type == "sphere" ? number_text(g.size.x())
+          : g.type == "cylinder"
+              ? fmt::format("{} {}", number_text(g.size.x()), number_text(g.size.y()))
+              : vector_text(g.size);
+      const std::string quat =
+          g.type == "sphere" ? "" : fmt::format(" quat=\"{}\"", quaternion_text(g.X_BG.R));
       out += fmt::format(
-          "{}<geom name=\"{}\" type=\"sphere\" size=\"{}\" pos=\"{}\" mass=\"0\" "
+          "{}<geom name=\"{}\" type=\"{}\" size=\"{}\" pos=\"{}\"{} mass=\"0\" "
           "friction=\"{}\" condim=\"{}\" contype=\"{}\" conaffinity=\"0\"/>\n",
-          pad, c->name, number_text(c->radius), vector_text(c->frame.X_BF.p),
-          number_text(c->static_friction), c->has_friction() ? 3 : 1, 1u << k);
+          pad, g.name, g.type, size, vector_text(g.X_BG.p), quat, number_text(g.friction),
+          g.friction > 0.0 ? 3 : 1, 1u << g.plane);
     }
     return out;
   }
 
   std::vector<std::string> contacts_not_written() const {
-    if (planes_.size() > 31) {
+    if (contact_geoms_.planes.size() > 31) {
       throw InvalidArgument(
           "MJCF export: contacts on more than 31 ground planes (MuJoCo's contype has 31 bits)");
     }
+    std::vector<bool> written(model_.constraints().size(), false);
+    for (const detail::MjcfContactGeom& g : contact_geoms_.geoms) {
+      for (std::size_t i : g.contacts) written[i] = true;
+    }
     std::vector<std::string> lost;
-    for (const model::Constraint& constraint : model_.constraints()) {
-      const auto* c = std::get_if<model::Contact>(&constraint);
+    for (std::size_t i = 0; i < model_.constraints().size(); ++i) {
+      const auto* c = std::get_if<model::Contact>(&model_.constraints()[i]);
       if (c == nullptr) continue;
-      if (!written(*c)) {
-        const char* what = c->shape == model::ContactShape::disk ? "a disk's"
-                           : c->radius == 0.0                    ? "a point's"
-                           : c->other_plane ? "a sphere's, with another body's plane"
-                                            : "a sphere's, with another body's sphere";
+      if (!written[i]) {
+        const char* what =
+            !c->on_ground()
+                ? (c->other_plane ? "with another body's plane" : "with another body's sphere")
+            : c->shape == model::ContactShape::disk ? "a disk's rim with no coaxial partner"
+            : c->radius == 0.0 ? "a point that is not one of eight corners of a box"
+                               : "not one MuJoCo has";
         lost.push_back(
-            fmt::format("contact '{}' (momenta writes a sphere's contact with a ground "
-                        "plane; this one is {})",
+            fmt::format("contact '{}' (momenta writes a ground plane's contacts with a sphere, a "
+                        "cylinder's two rims and a box's eight corners; this one is {})",
                         c->name, what));
         continue;
       }
@@ -457,7 +466,7 @@ class MjcfWriter {
   const model::Model& model_;
   const VecX& q_;
   VecX qvel_;  // the initial velocities in MuJoCo's order (the file's, depth first)
-  std::vector<std::pair<Vec3, Vec3>> planes_;  // the ground planes of the contacts written
+  detail::MjcfContactGeoms contact_geoms_;  // the geoms standing for its ground contacts
 };
 
 }  // namespace

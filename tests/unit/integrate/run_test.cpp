@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -128,6 +129,42 @@ TEST(Run, NonFiniteStateStopsWithTheTimeAndTheCoordinate) {
         << message;
     EXPECT_EQ(error.options(), (std::vector<std::string>{"step", "integrator", "integrator"}));
   }
+}
+
+// q̈ = −sign(q̇): Coulomb friction with nothing to hold the mass still. From q̇ = 1 it stops at
+// t = 1; after that no step is accurate (the right side turns round within any step) and
+// dopri5's steps shrink to round-off, advancing nothing.
+class CoulombSlider final : public SecondOrderSystem {
+ public:
+  int nq() const override { return 1; }
+  int nv() const override { return 1; }
+  void acceleration(double, const VecX&, const VecX& v, VecX& vdot) override {
+    vdot[0] = v[0] > 0.0 ? -1.0 : 1.0;
+  }
+  void integrate(const VecX& q, const VecX& dq, VecX& q_out) const override { q_out = q + dq; }
+};
+
+TEST(Run, ACrawlingAdaptiveRunStopsWithTheTimeAndTheStep) {
+  CoulombSlider system;
+  DormandPrince5 dopri(Tolerances{1e-12, 1e-14});
+  State state{0.0, VecX::Zero(1), VecX::Constant(1, 1.0)};
+  long reported = 0;
+  try {
+    run(system, dopri, state, {2.0, 0.1, 1}, [&](const State&) { ++reported; });
+    FAIL() << "the run ended";
+  } catch (const NumericalError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("the run crawls at t = 1"), std::string::npos) << message;
+    EXPECT_NE(message.find("dopri5's last 10000 steps each advanced it by less than 1e-10 of its "
+                           "span"),
+              std::string::npos)
+        << message;
+    EXPECT_EQ(error.options(), (std::vector<std::string>{"integrator"}));
+  }
+  // Stopped where it stalled, at the stop, after the 10 000 steps that crawled.
+  EXPECT_NEAR(state.t, 1.0, 1e-6);
+  EXPECT_GE(reported, kCrawlingSteps);
+  EXPECT_LT(reported, kCrawlingSteps + 1000);
 }
 
 TEST(Run, RejectsBadOptions) {

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "momenta/common/error.hpp"
@@ -80,6 +81,55 @@ double body_difference(const model::Model& original, const VecX& q, const model:
   return worst;
 }
 
+// Whether `written` lists contact `name` as not written.
+bool listed_as_not_written(const ExportedModel& written, const std::string& name) {
+  return std::any_of(written.not_written.begin(), written.not_written.end(),
+                     [&](const std::string& l) { return l.starts_with("contact '" + name + "'"); });
+}
+
+// The contacts of `original` with ground planes that `written` does not list as lost come back in
+// `back`, read by momenta's MJCF reader from MuJoCo's geoms (spheres, cylinders' rims, boxes'
+// corners), each once: on the same body, of the same shape and radius, at the same point (a
+// disk's axis along the same line), on the same plane, with the same friction — and nothing else
+// comes back. Returns how many.
+int expect_ground_contacts_come_back(const model::Model& original, const ExportedModel& written,
+                                     const model::Model& back) {
+  std::vector<const model::Contact*> read;
+  for (const model::Constraint& constraint : back.constraints()) {
+    const auto* r = std::get_if<model::Contact>(&constraint);
+    EXPECT_TRUE(r != nullptr || !model::is_unilateral(constraint));
+    if (r != nullptr) read.push_back(r);
+  }
+  int come_back = 0;
+  for (const model::Constraint& constraint : original.constraints()) {
+    const auto* c = std::get_if<model::Contact>(&constraint);
+    if (c == nullptr || listed_as_not_written(written, c->name)) continue;
+    SCOPED_TRACE(c->name);
+    EXPECT_TRUE(c->on_ground());
+    const auto same = std::find_if(read.begin(), read.end(), [&](const model::Contact* r) {
+      return r->frame.body == c->frame.body && r->shape == c->shape &&
+             (r->frame.X_BF.p - c->frame.X_BF.p).norm() < 1e-9;
+    });
+    if (same == read.end()) {
+      ADD_FAILURE() << "not read back";
+      continue;
+    }
+    const model::Contact& r = **same;
+    EXPECT_NEAR(r.radius, c->radius, 1e-15 * c->radius);
+    EXPECT_MATRIX_NEAR(r.frame.X_BF.p, c->frame.X_BF.p, 1e-15);
+    if (c->shape == model::ContactShape::disk) {
+      EXPECT_LT(r.frame.X_BF.R.col(2).cross(c->frame.X_BF.R.col(2)).norm(), 1e-15);
+    }
+    EXPECT_MATRIX_NEAR(r.plane_normal, c->plane_normal.normalized(), 1e-15);
+    EXPECT_MATRIX_NEAR(r.plane_point, c->plane_point, 1e-15);
+    EXPECT_EQ(r.static_friction, c->static_friction);
+    read.erase(same);
+    ++come_back;
+  }
+  EXPECT_TRUE(read.empty()) << read.size() << " more, the first " << read.front()->name;
+  return come_back;
+}
+
 // v_back = P v for the MJCF written from `model`: its joints by name (a chain's by suffix), a
 // ball's rate turned into the body's axes, a free joint's linear rate into the world's.
 MatX velocity_map(const model::Model& model, const model::Model& back) {
@@ -139,33 +189,7 @@ TEST(ModelExport, EveryExampleThroughMjcfAndBack) {
     const double mass_matrix = relative(MatX(P.transpose() * M_back * P), M);
     EXPECT_LT(mass_matrix, 1e-15);
     worst_mass_matrix = std::max(worst_mass_matrix, mass_matrix);
-    // Its spheres' contacts with the ground, written as MuJoCo's geoms, read back as contacts
-    // (named after their plane) on the same body, of the same radius, centre, plane and friction.
-    int spheres_on_ground = 0;
-    for (const model::Constraint& constraint : original.model.constraints()) {
-      const auto* c = std::get_if<model::Contact>(&constraint);
-      if (c == nullptr || !c->on_ground() || c->shape != model::ContactShape::sphere ||
-          c->radius == 0.0) {
-        continue;
-      }
-      ++spheres_on_ground;
-      const auto read = std::find_if(
-          back.model.constraints().begin(), back.model.constraints().end(), [&](const auto& other) {
-            return model::constraint_name(other).rfind(c->name + "_ground", 0) == 0;
-          });
-      ASSERT_NE(read, back.model.constraints().end()) << c->name;
-      const auto& r = std::get<model::Contact>(*read);
-      EXPECT_EQ(r.frame.body, c->frame.body);
-      EXPECT_EQ(r.radius, c->radius);
-      EXPECT_MATRIX_NEAR(r.frame.X_BF.p, c->frame.X_BF.p, 1e-15);
-      EXPECT_MATRIX_NEAR(r.plane_normal, c->plane_normal.normalized(), 1e-15);
-      EXPECT_MATRIX_NEAR(r.plane_point, c->plane_point, 1e-15);
-      EXPECT_EQ(r.static_friction, c->static_friction);
-    }
-    // No other contact comes back (each written geom meets its own plane only).
-    EXPECT_EQ(std::count_if(back.model.constraints().begin(), back.model.constraints().end(),
-                            [](const auto& other) { return model::is_unilateral(other); }),
-              spheres_on_ground);
+    expect_ground_contacts_come_back(original.model, written, back.model);
     // The loads MJCF does not keep are said.
     EXPECT_EQ(written.text.find("Not written") != std::string::npos, !written.not_written.empty());
   }
@@ -299,6 +323,103 @@ TEST(ModelExport, InitialVelocitiesComeBackThroughTheInitialKey) {
     EXPECT_LT((back.model.initial_v() - file.model.initial_v()).cwiseAbs().maxCoeff(), 1e-15)
         << name;
   }
+}
+
+// MuJoCo's shapes on a floor — a tilted box, a cylinder on its side, a capsule and a sphere, with
+// their own friction — read as momenta's contacts (eight corners, two rims, two end spheres, a
+// sphere), written back as MuJoCo's geoms, and read again: the same contacts.
+TEST(ModelExport, ContactsTravelAsMuJoCosSpheresCylindersAndBoxes) {
+  const ModelFile original = parse_mjcf(R"(<mujoco model="touching">
+  <worldbody>
+    <geom name="floor" type="plane" size="0 0 1" pos="0 0 -0.5" friction="0.6"/>
+    <body name="crate" pos="0 0 1" quat="0.95 0.2 0.15 0.05">
+      <freejoint/>
+      <geom name="crate" type="box" size="0.3 0.2 0.1" pos="0.01 0.02 0.03" quat="0.9 0.1 0.3 0.2"
+            mass="2"/>
+    </body>
+    <body name="drum" pos="1 0 1">
+      <freejoint/>
+      <geom name="drum" type="cylinder" size="0.2 0.15" quat="0.7 0.7 0 0" friction="0.8" mass="1"/>
+    </body>
+    <body name="rod" pos="2 0 1">
+      <freejoint/>
+      <geom name="rod" type="capsule" size="0.05 0.3" mass="1"/>
+      <geom name="knob" type="sphere" size="0.1" pos="0 0 0.5" mass="1" condim="1"/>
+    </body>
+  </worldbody>
+</mujoco>
+)",
+                                        "touching.xml");
+  ASSERT_EQ(original.model.constraints().size(), 13u);
+  const ExportedModel written = write_mjcf(original, original.model.initial_q());
+  EXPECT_TRUE(written.not_written.empty()) << written.not_written.front();
+  const ModelFile back = parse_mjcf(written.text, "touching_back.xml");
+  EXPECT_EQ(expect_ground_contacts_come_back(original.model, written, back.model), 13);
+  // A box and a cylinder, named after their geoms (the drawn parts have those names); a sphere
+  // each for the capsule's ends and the knob, named after its contact.
+  for (const char* geom :
+       {R"(name="crate_contact" type="box")", R"(name="drum_contact" type="cylinder")",
+        R"(name="rod_end1_floor" type="sphere")", R"(name="rod_end2_floor" type="sphere")",
+        R"(name="knob_floor" type="sphere")"}) {
+    EXPECT_NE(written.text.find(geom), std::string::npos) << geom << "\n" << written.text;
+  }
+}
+
+// Eight points on a body, a box's corners but for the last one's height `last_z` (m; square at
+// 0.05), with a coin whose rim alone touches the ground.
+ModelFile eight_points_and_a_rim(double last_z) {
+  std::string corners;
+  for (int k = 0; k < 8; ++k) {
+    corners += fmt::format(
+        "  - {{name: c{}, type: contact, body: b, point: [{}, {}, {}], friction: 0.5}}\n", k,
+        (k & 1) ? 0.2 : -0.2, (k & 2) ? 0.1 : -0.1,
+        k == 7    ? last_z
+        : (k & 4) ? 0.05
+                  : -0.05);
+  }
+  return parse_model_file(
+      "gravity: [0, 0, -9.81]\n"
+      "bodies: [{name: b, shape: box, mass: 1, size: [0.4, 0.2, 0.1], position: [0, 0, 1]},\n"
+      "         {name: coin, shape: cylinder, mass: 1, radius: 0.1, length: 0.01, "
+      "position: [1, 0, 1]}]\n"
+      "joints:\n"
+      "  - {name: free, type: free, parent: world, child: b}\n"
+      "  - {name: coin_free, type: free, parent: world, child: coin}\n"
+      "constraints:\n" +
+          corners + "  - {name: rim, type: contact, body: coin, shape: disk, radius: 0.1}\n",
+      "points.yaml", ".");
+}
+
+// Contacts MuJoCo has no geom for are listed by name, saying why: eight points one of which is a
+// millimetre off the box the other seven are corners of, and a disk's rim alone. Squared, the
+// eight are a box's corners: written as it, they come back.
+TEST(ModelExport, ContactsWithNoMuJoCoGeomAreListedAsNotWritten) {
+  const ModelFile off = eight_points_and_a_rim(0.051);
+  const ExportedModel written = write_mjcf(off, off.model.initial_q());
+  ASSERT_EQ(written.not_written.size(), 9u);
+  for (int k = 0; k < 8; ++k) {
+    const std::string& lost = written.not_written[static_cast<std::size_t>(k)];
+    EXPECT_TRUE(listed_as_not_written(written, fmt::format("c{}", k))) << k;
+    EXPECT_NE(lost.find("a point that is not one of eight corners of a box"), std::string::npos)
+        << lost;
+  }
+  EXPECT_TRUE(listed_as_not_written(written, "rim"));
+  EXPECT_NE(written.not_written[8].find("a disk's rim with no coaxial partner"), std::string::npos)
+      << written.not_written[8];
+  EXPECT_EQ(expect_ground_contacts_come_back(off.model, written,
+                                             parse_mjcf(written.text, "off.xml").model),
+            0);
+
+  const ModelFile square = eight_points_and_a_rim(0.05);
+  const ExportedModel box = write_mjcf(square, square.model.initial_q());
+  ASSERT_EQ(box.not_written.size(), 1u);
+  EXPECT_TRUE(listed_as_not_written(box, "rim"));
+  EXPECT_NE(box.text.find(R"(<geom name="c" type="box" size="0.2 0.1 0.05" pos="0 0 0")"),
+            std::string::npos)
+      << box.text;
+  EXPECT_EQ(
+      expect_ground_contacts_come_back(square.model, box, parse_mjcf(box.text, "square.xml").model),
+      8);
 }
 
 TEST(ModelExport, WhatAFormatCannotKeepIsRefusedByName) {

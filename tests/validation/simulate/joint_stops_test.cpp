@@ -7,6 +7,8 @@
 // - a pendulum swinging into a stop: its rate there from energy, the rebound −e times it, the
 //   angle never past the stop;
 // - elastic stops (e = 1): the energy audit holds across every impact;
+// - a slider rattling between elastic stops: 1 µm apart, followed impact by impact; 1 nm apart
+//   (10 000 impacts within 10 µs), stopped with an error naming the stop;
 // - a pendulum held on a stop by gravity and pulled off by a torque ramp: released when the torque
 //   equals the weight's moment, the stop's force until then m g (l/2) sin θ − c t;
 // - a robot's limits (URDF's <limit>, MJCF's range): a rod falling into one is held there; a
@@ -23,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "momenta/common/error.hpp"
@@ -138,6 +141,53 @@ TEST(JointStops, ElasticStopsKeepTheEnergy) {
   ASSERT_FALSE(run.summary.audit.empty());
   EXPECT_EQ(run.summary.audit[0].name, "energy");
   EXPECT_LT(run.summary.audit[0].max_drift, 1e-10);
+}
+
+// A slider rattling between elastic stops `clearance` m apart at 1 m/s, no gravity: it strikes
+// every `clearance` seconds, one stop then the other.
+std::string rattling_slider(double clearance) {
+  return fmt::format(
+      "bodies: [{{name: b, shape: sphere, mass: 1, radius: 0.01}}]\n"
+      "joints:\n"
+      "  - {{name: slider, type: prismatic, parent: world, child: b, axis: [1, 0, 0], v0: 1,\n"
+      "     limits: {{lower: 0, upper: {}, restitution: 1}}}}\n",
+      clearance);
+}
+
+// A rattle the run follows: stops 1 µm apart, 2 000 impacts in 2 ms (a hundred within any
+// 0.1 ms), each elastic and 1 µs after the last.
+TEST(JointStops, ARattleBetweenNearStopsIsFollowedImpactByImpact) {
+  const double clearance = 1e-6;
+  const UnilateralRun run =
+      run_unilaterals(load(rattling_slider(clearance)), "dopri5", 1e-2, 2e-3 + 0.5e-6);
+  const std::vector<StopEvent>& events = run.summary.stop_events;
+  ASSERT_EQ(events.size(), 2000u);
+  for (std::size_t k = 0; k < events.size(); ++k) {
+    const StopEvent& s = events[k];
+    ASSERT_EQ(s.kind, StopEventKind::impact) << k;
+    EXPECT_EQ(s.upper, k % 2 == 0) << k;
+    // Each at (k + 1) µs, the crossings' times adding up: each located to 1e-14 relative in
+    // time (2e-17 s at 2 ms), 2 000 of them at most 4e-14 s.
+    EXPECT_NEAR(s.time, static_cast<double>(k + 1) * clearance, 4e-14) << k;
+    EXPECT_EQ(s.rate_after, -s.rate_before) << k;
+    EXPECT_NEAR(std::abs(s.rate_before), 1.0, 1e-12) << k;
+  }
+}
+
+// Stops 1 nm apart: 10 000 impacts within 10 µs is a sequence no run can follow to its end (a
+// rattle at 1 GHz). After 10 000 acts within 0.1 ms the run stops, naming the stop and the span,
+// instead of crawling on an impact at a time.
+TEST(JointStops, ARattleTooFineToFollowStopsTheRunWithAnError) {
+  const model::Model model = load(rattling_slider(1e-9));
+  try {
+    run_unilaterals(model, "dopri5", 1e-2, 1.0);
+    FAIL() << "the run went on";
+  } catch (const NumericalError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("acted 10000 times since t = 1e-09 s"), std::string::npos) << message;
+    EXPECT_NE(message.find("joint 'slider''s"), std::string::npos) << message;
+    EXPECT_NE(message.find("at t = 1.0001e-05 s"), std::string::npos) << message;
+  }
 }
 
 TEST(JointStops, HeldOnAStopUntilATorqueRampPullsItOff) {
