@@ -77,8 +77,8 @@ std::optional<MjcfContactGeom> box_of(const std::array<Vec3, 8>& corners) {
   }
   const double tolerance = kSameShape * diagonal;
   if (!(tolerance > 0.0)) return std::nullopt;
-  std::vector<Vec3> edges;  // unit directions found so far, then their vectors
-  std::vector<Vec3> edge_vectors;
+  std::vector<Vec3> edges;         // the edges found so far: their directions
+  std::vector<Vec3> edge_vectors;  // and the edges themselves
   for (int n = 0; n < 3; ++n) {
     const Vec3* shortest = nullptr;
     for (const Vec3& v : to_others) {
