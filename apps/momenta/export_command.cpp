@@ -53,7 +53,8 @@ void add_export_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "export",
       "Write a model as MJCF (MuJoCo) or URDF (ROS, Pinocchio): its bodies' masses, inertias and "
-      "frames exactly, its joints, damping, springs (MJCF), loops (MJCF), couplers and the ground's "
+      "frames exactly, its joints, damping, springs (MJCF), loops (MJCF), couplers and the "
+      "ground's "
       "contacts with spheres, cylinders and boxes (MJCF)");
   add_model_argument(command, options->model);
   auto* mjcf = command->add_option("--mjcf", options->mjcf, "Write MJCF to this file")
