@@ -77,20 +77,18 @@ std::optional<MjcfContactGeom> box_of(const std::array<Vec3, 8>& corners) {
   }
   const double tolerance = kSameShape * diagonal;
   if (!(tolerance > 0.0)) return std::nullopt;
-  std::vector<Vec3> edges;         // the edges found so far: their directions
-  std::vector<Vec3> edge_vectors;  // and the edges themselves
+  std::vector<Vec3> edge_vectors;  // the edges found so far
   for (int n = 0; n < 3; ++n) {
     const Vec3* shortest = nullptr;
     for (const Vec3& v : to_others) {
-      const bool square = std::all_of(edges.begin(), edges.end(), [&](const Vec3& e) {
-        return std::abs(v.dot(e)) <= tolerance;
+      const bool square = std::all_of(edge_vectors.begin(), edge_vectors.end(), [&](const Vec3& e) {
+        return std::abs(v.dot(e.normalized())) <= tolerance;
       });
       if (v.norm() > tolerance && square && (shortest == nullptr || v.norm() < shortest->norm())) {
         shortest = &v;
       }
     }
     if (shortest == nullptr) return std::nullopt;
-    edges.push_back(shortest->normalized());
     edge_vectors.push_back(*shortest);
   }
   std::array<bool, 8> matched{};
@@ -114,6 +112,8 @@ std::optional<MjcfContactGeom> box_of(const std::array<Vec3, 8>& corners) {
   g.type = "box";
   Mat3 R;
   std::array<bool, 3> placed{};
+  std::array<Vec3, 3> edges;  // their directions
+  for (std::size_t n = 0; n < 3; ++n) edges[n] = edge_vectors[n].normalized();
   for (int axis = 0; axis < 2; ++axis) {
     std::size_t best = 0;
     for (std::size_t n = 0; n < 3; ++n) {
