@@ -47,15 +47,61 @@ function mathml(latex) {
   return katex.renderToString(latex, { output: 'mathml', throwOnError: false });
 }
 
-// One equation, its continuation lines indented (the browser's MathML sets each line; it does
-// not align the columns of a multi-line block).
-function math(latex) {
-  const holder = element('div', { class: 'equation' });
+// An equation's lines set into `holder`, continuation lines indented (the browser's MathML sets
+// each line; it does not align the columns of a multi-line block).
+function setLines(holder, latex) {
   for (const [k, line] of equationLines(latex).entries()) {
     const row = element('div', { class: k === 0 ? 'line' : 'line continued' });
     row.innerHTML = mathml(line);
     holder.append(row);
   }
+}
+
+function math(latex) {
+  const holder = element('div', { class: 'equation' });
+  setLines(holder, latex);
+  return holder;
+}
+
+// An equation in symbols longer than this many LaTeX characters (some 90 lines of LINE) is
+// folded: set when the reader opens it. The flyball governor's longest is 142 040 characters and
+// 64 000 MathML elements; laying out three such took Chromium 4 s of its page's 9 s opening.
+export const kFoldedLatex = 20000;
+
+// The braced group that opens at latex[open] ('{'), with its braces; '' if it is not closed.
+function bracedGroup(latex, open) {
+  let depth = 0;
+  for (let i = open; i < latex.length; i++) {
+    if (latex[i] === '{') depth++;
+    else if (latex[i] === '}' && --depth === 0) return latex.slice(open, i + 1);
+  }
+  return '';
+}
+
+// The acceleration an equation is led by — its first \ddot{…} with the subscript after it — as
+// LaTeX; '' if it has none.
+export function leadingAcceleration(latex) {
+  const start = latex.indexOf('\\ddot{');
+  if (start < 0) return '';
+  const argument = bracedGroup(latex, start + 5);
+  if (!argument) return '';
+  const end = start + 5 + argument.length;
+  const subscript = latex.startsWith('_{', end) ? bracedGroup(latex, end + 1) : '';
+  return latex.slice(start, end) + (subscript ? `_${subscript}` : '');
+}
+
+// An equation in symbols: set, or folded where it is longer than kFoldedLatex — a summary naming
+// its acceleration and its length, the lines set the first time it is opened.
+function symbolicEquation(latex) {
+  if (latex.length <= kFoldedLatex) return math(latex);
+  const lead = leadingAcceleration(latex);
+  const summary = element('summary', {}, lead ? 'The equation led by ' : 'An equation ',
+    lead ? inlineMath(lead) : null, `: ${latex.length.toLocaleString('en')} characters of LaTeX, `
+    + 'set when opened (momenta equations MODEL --all-symbols prints it)');
+  const holder = element('details', { class: 'equation folded' }, summary);
+  holder.addEventListener('toggle', () => {
+    if (holder.open && !holder.querySelector('.line')) setLines(holder, latex);
+  });
   return holder;
 }
 
@@ -123,7 +169,7 @@ export function equationsSection(equations, { head = true } = {}) {
       'one equation per free coordinate, led by its own acceleration',
       equations.constraints.length ? ', with the constraint forces Gᵀλ on the right, then the constraints' : '', '.'));
     for (const e of equations.equations) {
-      const shown = math(e.latex);
+      const shown = symbolicEquation(e.latex);
       shown.classList.add('in-symbols');
       section.append(shown);
     }

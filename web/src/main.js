@@ -134,11 +134,16 @@ function simulationPage(app, data, { from = null, keep = [] } = {}) {
     // symbols, and with the numbers), the symbols' table as it reads.
     equations: () => ({
       data: data.equations,
-      shown: Array.from(document.querySelectorAll('#equations > .equation')).map((e) => {
+      shown: Array.from(document.querySelectorAll('#equations > .equation:not(.folded)')).map((e) => {
         const lines = Array.from(e.querySelectorAll('math'));
         return { text: lines.map((m) => m.textContent).join(' '), lines: lines.length,
           width: Math.max(...lines.map((m) => m.getBoundingClientRect().width)) };
       }),
+      // Equations too long to set on opening: each summary's text and the lines set once opened.
+      folded: Array.from(document.querySelectorAll('#equations > .equation.folded')).map((e) => ({
+        summary: e.querySelector('summary').textContent, open: e.open,
+        lines: e.querySelectorAll('.line').length, elements: e.getElementsByTagName('*').length })),
+      elements: document.querySelector('#equations')?.getElementsByTagName('*').length ?? 0,
       withNumbers: Array.from(document.querySelectorAll('#equations .with-numbers .equation'))
         .map((e) => Array.from(e.querySelectorAll('math')).map((m) => m.textContent).join(' ')),
       symbols: Array.from(document.querySelectorAll('#equations table.symbols tbody tr')).map((r) => ({
