@@ -1,5 +1,6 @@
 #include "momenta/dynamics/contact_geometry.hpp"
 
+#include <cassert>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -108,6 +109,24 @@ double contact_gap_acceleration(const model::Contact& contact, const Data& data)
                                  first = false;
                                });
   return gap_acceleration;
+}
+
+Vec2 contact_slip_acceleration(const model::Contact& contact, const Data& data) {
+  assert(contact.has_friction());
+  const detail::FrameMotionOf<double> ma =
+      frame_motion(data, contact.other.body_index, contact.other.X_BF, true);
+  const detail::FrameMotionOf<double> mb =
+      frame_motion(data, contact.frame.body_index, contact.frame.X_BF, true);
+  // The gap's row, then the tangents' two.
+  Vec2 slip = Vec2::Zero();
+  int row = 0;
+  detail::contact_rows<double>(contact, ma, mb,
+                               [&](double, bool, const Vec6& w, const Vec6& w_rate) {
+                                 if (row > 0)
+                                   slip[row - 1] = w_rate.dot(mb.V - ma.V) + w.dot(mb.A - ma.A);
+                                 ++row;
+                               });
+  return slip;
 }
 
 bool disk_lies_flat(const model::Contact& contact, const Data& data, double tolerance) {

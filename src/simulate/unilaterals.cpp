@@ -283,9 +283,11 @@ void Unilaterals::stick_or_slip(system::MultibodySystem& system,
     event.friction = FrictionState::sticking;
     return;
   }
-  // It slips the way the friction it needed held it from.
+  // It slips the way the friction it needed held it from, or where the mechanism turns a slip
+  // from there, its stable direction nearest it (system/slip_direction.hpp).
   event.friction = FrictionState::sliding;
   hold_contact(system, e, at, Hold::sliding, -friction);
+  follow_friction(system, advanced, e, at);
 }
 
 void Unilaterals::open(system::MultibodySystem& system, const Entry& e,
@@ -329,14 +331,35 @@ double Unilaterals::cone_round_off(const system::MultibodySystem& system) {
 }
 
 void Unilaterals::set_slip_references(system::MultibodySystem& system,
+                                      integrate::SecondOrderSystem& advanced,
                                       const integrate::State& state) {
+  bool evaluated = false;
   for (const Entry& e : entries_) {
     if (hold_[slot(e)] != Hold::sliding) continue;
     const Vec3 slip = slip_velocity(e, state);
-    if (!(slip.norm() > kSlipAtRest)) continue;  // too slow to say: the last one stands
-    slip_reference_[slot(e)] = slip;
-    system.set_slip_reference(e.index, slip);
+    if (slip.norm() > system::kStartingSlip) system.end_slip_start(e.index);
+    if (slip.norm() > kSlipAtRest) {
+      slip_reference_[slot(e)] = slip;
+      system.set_slip_reference(e.index, slip);
+      continue;
+    }
+    if (!evaluated) solve_forces(advanced, state);
+    evaluated = true;
+    const Vec3 against = -system.contact_friction(e.index);
+    if (!(against.norm() > 0.0)) continue;  // no friction to say: the last one stands
+    slip_reference_[slot(e)] = against;
+    system.set_slip_reference(e.index, against);
   }
+}
+
+void Unilaterals::follow_friction(system::MultibodySystem& system,
+                                  integrate::SecondOrderSystem& advanced, const Entry& e,
+                                  const integrate::State& state) {
+  solve_forces(advanced, state);
+  const Vec3 against = -system.contact_friction(e.index);
+  if (!(against.norm() > 0.0)) return;
+  slip_reference_[slot(e)] = against;
+  system.set_slip_reference(e.index, against);
 }
 
 dynamics::PointContact Unilaterals::touch_of(const Entry& e, const integrate::State& at) {
@@ -789,6 +812,7 @@ void Unilaterals::settle(system::MultibodySystem& system, integrate::SecondOrder
       open(system, *pulling, at);
     } else if (beyond != nullptr) {
       hold_contact(system, *beyond, at, Hold::sliding, -sticking_friction(system, *beyond, at));
+      follow_friction(system, advanced, *beyond, at);
     } else {
       return;
     }
@@ -865,7 +889,7 @@ bool Unilaterals::check(system::MultibodySystem& system, integrate::SecondOrderS
     }
   }
   if (acting == nullptr) {
-    set_slip_references(system, end);
+    set_slip_references(system, advanced, end);
     return false;
   }
   if (first == start.t) {
@@ -949,6 +973,7 @@ void Unilaterals::act(system::MultibodySystem& system, integrate::SecondOrderSys
       event.friction_needed = friction.norm();
       event.friction = FrictionState::sliding;
       hold_contact(system, e, state, Hold::sliding, -friction);
+      follow_friction(system, advanced, e, state);
       return;
     }
     case Pending::stop_slipping:

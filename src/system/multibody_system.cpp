@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -15,6 +16,7 @@
 #include "momenta/dynamics/kinematics.hpp"
 #include "momenta/dynamics/rnea.hpp"
 #include "momenta/model/prescribed_motion.hpp"
+#include "slip_direction.hpp"
 
 namespace momenta::system {
 
@@ -154,22 +156,20 @@ constexpr double kPainleve = 1e-9;
 const VecX& MultibodySystem::compute(double t, const VecX& q, const VecX& v, model::Limit limit) {
   if (sliding_.empty()) return solve(t, q, v, limit);
   // N = N₀ + R N (R_ij: contact i's normal force per newton of contact j's normal force, through
-  // j's friction), so (I − R) N = N₀: one solve without friction and one per sliding contact at
-  // unit N give N₀ and R, and the last solve applies the friction at N.
+  // j's friction), so (I − R) N = N₀: a solve without friction gives N₀, more solves R, and the
+  // last solve applies the friction at N.
   const int m = static_cast<int>(sliding_.size());
-  for (SlidingContact& s : sliding_) s.normal = 0.0;
+  for (SlidingContact& s : sliding_) {
+    s.normal = 0.0;
+    s.directed = false;
+  }
   solve(t, q, v, limit);
   for (int i = 0; i < m; ++i)
     sliding_base_[i] = constraints_->multipliers()[sliding_[i].normal_row];
-  for (int j = 0; j < m; ++j) {
-    sliding_[j].normal = 1.0;
-    solve(t, q, v, limit);
-    sliding_[j].normal = 0.0;
-    for (int i = 0; i < m; ++i) {
-      const double response =
-          constraints_->multipliers()[sliding_[i].normal_row] - sliding_base_[i];
-      sliding_response_(i, j) = (i == j ? 1.0 : 0.0) - response;
-    }
+  if (const int j = lone_starting_slip(); j >= 0) {
+    respond_with_starting_slip(j, t, q, v, limit);
+  } else {
+    respond_to_unit_normals(t, q, v, limit);
   }
   sliding_lu_.compute(sliding_response_);
   const double determinant = sliding_lu_.determinant();
@@ -187,13 +187,119 @@ const VecX& MultibodySystem::compute(double t, const VecX& q, const VecX& v, mod
   solve(t, q, v, limit);
   // The friction reported by the tangent rows, which are off (data_ holds the poses).
   for (const SlidingContact& s : sliding_) {
-    const auto& c = std::get<model::Contact>(model_.constraints()[s.constraint]);
-    const dynamics::ContactGeometry g = dynamics::contact_geometry(c, data_);
     const Vec3 friction = -s.mu * s.normal * s.slip_W;
-    constraints_->report_off_row_force(s.normal_row + 1, friction.dot(g.tangent_1_W));
-    constraints_->report_off_row_force(s.normal_row + 2, friction.dot(g.tangent_2_W));
+    constraints_->report_off_row_force(s.normal_row + 1, friction.dot(s.tangent_1_W));
+    constraints_->report_off_row_force(s.normal_row + 2, friction.dot(s.tangent_2_W));
   }
   return data_.vdot;
+}
+
+void MultibodySystem::respond_to_unit_normals(double t, const VecX& q, const VecX& v,
+                                              model::Limit limit) {
+  const int m = static_cast<int>(sliding_.size());
+  for (int j = 0; j < m; ++j) {
+    sliding_[j].normal = 1.0;
+    solve(t, q, v, limit);
+    sliding_[j].normal = 0.0;
+    for (int i = 0; i < m; ++i) {
+      const double response =
+          constraints_->multipliers()[sliding_[i].normal_row] - sliding_base_[i];
+      sliding_response_(i, j) = (i == j ? 1.0 : 0.0) - response;
+    }
+  }
+}
+
+int MultibodySystem::lone_starting_slip() const {
+  int starting = -1;
+  for (int j = 0; j < static_cast<int>(sliding_.size()); ++j) {
+    if (sliding_[j].slip_velocity_W.norm() > kStartingSlip) continue;
+    if (starting >= 0 || !sliding_[j].starting) return -1;  // several slow, or one stopping
+    starting = j;
+  }
+  return starting;
+}
+
+void MultibodySystem::respond_with_starting_slip(int starting, double t, const VecX& q,
+                                                 const VecX& v, model::Limit limit) {
+  const int m = static_cast<int>(sliding_.size());
+  // The slips' accelerations without friction, and each contact's direction as it slides now
+  // (against its slip, or its reference), in its tangent basis.
+  slip_accelerations(slip_rate_base_);
+  for (int j = 0; j < m; ++j) {
+    const SlidingContact& s = sliding_[j];
+    slip_directions_.segment<2>(2 * j) << s.slip_W.dot(s.tangent_1_W), s.slip_W.dot(s.tangent_2_W);
+  }
+  // A unit force along each tangent of each contact in turn: the normal forces' and the slips'
+  // accelerations' responses, linear in the forces (every sliding contact's N held at 0).
+  for (int j = 0; j < m; ++j) {
+    SlidingContact& s = sliding_[j];
+    const Vec3 slip_W = s.slip_W;
+    for (int axis = 0; axis < 2; ++axis) {
+      s.directed = true;
+      s.slip_W = -(axis == 0 ? s.tangent_1_W : s.tangent_2_W);  // −μk N ŝ = the tangent
+      s.normal = 1.0 / s.mu;
+      solve(t, q, v, limit);
+      const int column = 2 * j + axis;
+      for (int i = 0; i < m; ++i) {
+        slip_normals_(i, column) =
+            constraints_->multipliers()[sliding_[i].normal_row] - sliding_base_[i];
+      }
+      slip_accelerations(slip_rate_trial_);
+      slip_rates_.col(column) = slip_rate_trial_ - slip_rate_base_;
+    }
+    s.normal = 0.0;
+    s.directed = false;
+    s.slip_W = slip_W;
+  }
+  // The starting slip takes its stable direction, the others' held.
+  SlidingContact& s = sliding_[starting];
+  const auto acceleration_of = [&](const Vec2& d) -> std::optional<Vec2> {
+    slip_directions_.segment<2>(2 * starting) = d;
+    response_for(slip_directions_, trial_response_);
+    trial_lu_.compute(trial_response_);
+    if (!(trial_lu_.determinant() > kPainleve)) return std::nullopt;
+    trial_normals_ = trial_lu_.solve(sliding_base_);
+    Vec2 a = slip_rate_base_.segment<2>(2 * starting);
+    for (int k = 0; k < m; ++k) {
+      const Vec2 force = -sliding_[k].mu * trial_normals_[k] * slip_directions_.segment<2>(2 * k);
+      a += slip_rates_.block<2, 2>(2 * starting, 2 * k) * force;
+    }
+    return a;
+  };
+  const Vec2 current = slip_directions_.segment<2>(2 * starting);
+  const Vec2 projected(s.reference_W.dot(s.tangent_1_W), s.reference_W.dot(s.tangent_2_W));
+  const Vec2 reference = projected.norm() > 0.5 ? Vec2(projected.normalized()) : current;
+  const std::optional<Vec2> stable = detail::stable_slip_direction(reference, acceleration_of);
+  const Vec3 along =
+      stable ? Vec3(stable->x() * s.tangent_1_W + stable->y() * s.tangent_2_W) : Vec3::Zero();
+  // Taken where the slip has no direction of its own or runs within 90° of it.
+  const double speed = s.slip_velocity_W.norm();
+  if (stable && (!(speed > kSlipDirectionSpeed) || s.slip_velocity_W.dot(along) > 0.0)) {
+    slip_directions_.segment<2>(2 * starting) = *stable;
+    s.slip_W = along;
+    s.directed = true;
+  } else {
+    slip_directions_.segment<2>(2 * starting) = current;
+  }
+  response_for(slip_directions_, sliding_response_);
+}
+
+void MultibodySystem::slip_accelerations(VecX& rates) {
+  dynamics::forward_kinematics(model_, data_, q_, v_, data_.vdot);
+  for (std::size_t j = 0; j < sliding_.size(); ++j) {
+    const auto& c = std::get<model::Contact>(model_.constraints()[sliding_[j].constraint]);
+    rates.segment<2>(2 * static_cast<int>(j)) = dynamics::contact_slip_acceleration(c, data_);
+  }
+}
+
+void MultibodySystem::response_for(const VecX& directions, MatX& response) const {
+  // Column k: −∂N/∂N_k = −(∂N/∂f_k)(−μk d_k), f_k = −μk N_k d_k contact k's friction.
+  const int m = static_cast<int>(sliding_.size());
+  for (int k = 0; k < m; ++k) {
+    response.col(k) =
+        sliding_[k].mu * (slip_normals_.middleCols<2>(2 * k) * directions.segment<2>(2 * k));
+    response(k, k) += 1.0;
+  }
 }
 
 const VecX& MultibodySystem::solve(double t, const VecX& q, const VecX& v, model::Limit limit) {
@@ -281,9 +387,14 @@ void MultibodySystem::add_sliding_friction() {
     const dynamics::ContactGeometry g = dynamics::contact_geometry(c, data_);
     Vec3 slip = dynamics::contact_point_velocity(c, data_, g.point_W);
     slip -= g.normal_W * g.normal_W.dot(slip);
+    s.slip_velocity_W = slip;
+    s.tangent_1_W = g.tangent_1_W;
+    s.tangent_2_W = g.tangent_2_W;
     const double speed = slip.norm();
-    s.slip_W = speed > kSlipDirectionSpeed && slip.dot(s.reference_W) > 0.0 ? Vec3(slip / speed)
-                                                                            : s.reference_W;
+    if (!s.directed) {
+      s.slip_W = speed > kSlipDirectionSpeed && slip.dot(s.reference_W) > 0.0 ? Vec3(slip / speed)
+                                                                              : s.reference_W;
+    }
     const Vec3 force = -s.mu * s.normal * s.slip_W;
     Vec6 wrench;  // in W about Wo
     wrench << g.point_W.cross(force), force;
@@ -475,9 +586,23 @@ void MultibodySystem::hold_contact(int k, VecRef q, ContactHold how, const Vec3&
   sliding_base_.resize(m);
   sliding_response_.resize(m, m);
   sliding_lu_ = Eigen::PartialPivLU<MatX>(m);
+  slip_normals_.resize(m, 2 * m);
+  slip_rates_.resize(2 * m, 2 * m);
+  slip_rate_base_.resize(2 * m);
+  slip_rate_trial_.resize(2 * m);
+  slip_directions_.resize(2 * m);
+  trial_response_.resize(m, m);
+  trial_lu_ = Eigen::PartialPivLU<MatX>(m);
+  trial_normals_.resize(m);
   constraints_->enable_rows(data_, q, first, 1, how != ContactHold::open);
   if (tangents > 0)
     constraints_->enable_rows(data_, q, first + 1, tangents, how == ContactHold::sticking);
+}
+
+void MultibodySystem::end_slip_start(int k) {
+  for (SlidingContact& s : sliding_) {
+    if (s.constraint == k) s.starting = false;
+  }
 }
 
 void MultibodySystem::set_slip_reference(int k, const Vec3& slip_W) {

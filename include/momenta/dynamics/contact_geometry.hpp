@@ -45,6 +45,12 @@ Vec3 contact_point_velocity(const model::Contact& contact, const Data& data, con
 /// (dynamics/constraints.hpp). No allocation.
 double contact_gap_acceleration(const model::Contact& contact, const Data& data);
 
+/// The slip's acceleration (m/s²) at data's poses, velocities and accelerations
+/// (forward_kinematics(q, v, v̇)): the rates of the material points' relative velocity along the
+/// contact's tangents t₁ and t₂ (its friction rows, which turn with the plane or the normal) —
+/// each row's ẇ · (V_b − V_a) + w · (A_b − A_a). A contact with friction. No allocation.
+Vec2 contact_slip_acceleration(const model::Contact& contact, const Data& data);
+
 /// Whether a disk contact's axis is within `tolerance` rad of its plane's normal at data's
 /// poses: the disk lies flat, touching with its face (not modelled). False for a sphere, and for a
 /// disk against a sphere (whose face is modelled).

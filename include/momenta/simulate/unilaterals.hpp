@@ -297,8 +297,14 @@ class Unilaterals {
   double cone_margin(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
                      const Entry& e, const integrate::State& state);
   // Sets each sliding contact's reference slip direction from `state` (see
-  // MultibodySystem::set_slip_reference).
-  void set_slip_references(system::MultibodySystem& system, const integrate::State& state);
+  // MultibodySystem::set_slip_reference): its slip's, or where that is too slow to say, the way
+  // the system's friction takes it there (a slow slip's stable direction: evaluates `advanced`).
+  void set_slip_references(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+                           const integrate::State& state);
+  // A sliding contact's reference: the way its friction acts against at `state` (evaluates
+  // `advanced`) — where a slip starts, its stable direction (system/slip_direction.hpp).
+  void follow_friction(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
+                       const Entry& e, const integrate::State& state);
   std::size_t slot(const Entry& e) const { return static_cast<std::size_t>(&e - entries_.data()); }
 
   const model::Model& model_;

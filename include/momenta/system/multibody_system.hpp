@@ -43,6 +43,10 @@ enum class ContactHold {
   sticking,  ///< every row on (the normal alone where the contact has no friction)
 };
 
+/// A slip that starts from rest (hold_contact sliding) runs along its stable direction until it
+/// is this fast (m/s): see MultibodySystem::end_slip_start.
+inline constexpr double kStartingSlip = 1e-6;
+
 /// Energy of the system at one instant (J).
 struct Energy {
   double kinetic = 0.0;            ///< ½ vᵀ M v
@@ -177,11 +181,13 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   /// slides), off while open. Sliding with kinetic friction μk > 0, evaluations apply the force
   /// −μk N ŝ at the contact point, ŝ the direction of the contact point's slip velocity v_t —
   /// while v_t · ŝ_ref > 0 and |v_t| > 1e-12 m/s, else ŝ_ref (see set_slip_reference), which
-  /// `slip_W` (along the plane, not zero) sets first. The normal force N depends on the friction
-  /// and the friction on N: both are affine in the loads, so N comes exactly from the solves with
-  /// each sliding contact's friction at unit N and none (Painlevé's paradox — no N ≥ 0 or many
-  /// — is a NumericalError). The caller puts the state on the plane with no normal speed (and no
-  /// slip where it sticks) first. Overwrites data(). Allocates only when the set of sliding
+  /// `slip_W` (along the plane, not zero) sets first; but a slip held so starts from rest, and
+  /// while it is slower than kStartingSlip (the only sliding contact that slow) its ŝ is its
+  /// stable direction nearest ŝ_ref (see end_slip_start). The normal force N depends on the
+  /// friction and the friction on N: both are affine in the loads, so N comes exactly from the
+  /// solves with each sliding contact's friction at unit N and none (Painlevé's paradox — no N ≥ 0
+  /// or many — is a NumericalError). The caller puts the state on the plane with no normal speed
+  /// (and no slip where it sticks) first. Overwrites data(). Allocates only when the set of sliding
   /// contacts changes.
   void hold_contact(int k, VecRef q, ContactHold how, const Vec3& slip_W = Vec3::Zero());
   /// Sets sliding contact k's reference direction ŝ_ref (along the plane; normalized here, and
@@ -189,6 +195,12 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   /// speed passes zero inside a step (the run locates that instant; simulate/unilaterals.hpp sets
   /// the reference from the slip at each step's start). No allocation.
   void set_slip_reference(int k, const Vec3& slip_W);
+  /// Sliding contact k's slip, which started from rest (hold_contact), has run faster than
+  /// kStartingSlip: from now on its friction acts against the slip alone. Until then, while it
+  /// is slower than that, the friction acts against the direction in which the slip's
+  /// acceleration is along the slip (λ ≥ 0), the stable one nearest its reference
+  /// (src/system/slip_direction.hpp; docs/contacts.md, "Coulomb friction"). No allocation.
+  void end_slip_start(int k);
   /// The contacts that slide, in the order they began to.
   int sliding_contacts() const { return static_cast<int>(sliding_.size()); }
   /// After an evaluation: the normal force (N) closed contact k exerts on its body, > 0 pushing
@@ -219,6 +231,25 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   const VecX& solve(double t, const VecX& q, const VecX& v, model::Limit limit);
   // Adds each sliding contact's friction −μk N ŝ to f_ext_ (needs data_'s poses and velocities).
   void add_sliding_friction();
+  // sliding_response_ (I − ∂N_i/∂N_j through friction) from one solve per sliding contact at
+  // unit N, after the solve without friction.
+  void respond_to_unit_normals(double t, const VecX& q, const VecX& v, model::Limit limit);
+  // The sliding contact whose slip started from rest (hold_contact) and is slower than
+  // kStartingSlip, where it is the only one slower than that; −1 where there is none, or where
+  // several are that slow (a group sliding to rest together: each keeps its direction).
+  int lone_starting_slip() const;
+  // respond_to_unit_normals() where sliding contact `starting` is such a slip: two solves per
+  // sliding contact, a unit force along each tangent, give the normal forces and the slips'
+  // accelerations for any directions, and that slip takes its stable direction
+  // (src/system/slip_direction.hpp), the others theirs.
+  void respond_with_starting_slip(int starting, double t, const VecX& q, const VecX& v,
+                                  model::Limit limit);
+  // After a solve: each sliding contact's slip acceleration along its tangents into `rates`
+  // (two entries a contact).
+  void slip_accelerations(VecX& rates);
+  // I + ∂N/∂f · (μ d) for the sliding contacts' unit directions `directions` (two entries a
+  // contact, in its tangent basis) into `response`, from slip_normals_.
+  void response_for(const VecX& directions, MatX& response) const;
   // The side of a breakpoint the signals are sampled from at t: the left at the end of the
   // announced step (see begin_step), else the right.
   model::Limit limit_at(double t) const {
@@ -270,6 +301,9 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   // The contacts that slide (hold_contact): constraint index, its normal row, μk, the reference
   // slip direction, the normal force their friction is taken at, and the direction it acts
   // against at the last evaluation.
+  // `directed`: slip_W set by compute() (a slow slip's stable direction, or a unit force along
+  // a tangent), not from the slip velocity; the slip velocity and the tangents at the last
+  // evaluation.
   struct SlidingContact {
     int constraint = 0;
     int normal_row = 0;
@@ -277,11 +311,24 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
     Vec3 reference_W = Vec3::UnitX();
     double normal = 0.0;
     Vec3 slip_W = Vec3::UnitX();
+    bool directed = false;
+    bool starting = true;  // from rest, until end_slip_start
+    Vec3 slip_velocity_W = Vec3::Zero();
+    Vec3 tangent_1_W = Vec3::UnitX(), tangent_2_W = Vec3::UnitY();
   };
   std::vector<SlidingContact> sliding_;
   VecX sliding_base_;      // their normal forces with no friction
   MatX sliding_response_;  // I − ∂N_i/∂N_j through friction
   Eigen::PartialPivLU<MatX> sliding_lu_;
+  // respond_with_starting_slip's workspace: per unit force along each contact's tangents (columns
+  // 2j, 2j + 1), the normal forces' response (m × 2m) and the slips' accelerations' (2m × 2m);
+  // the slips' accelerations with no friction; the directions (two entries a contact); a trial
+  // response, its factors and normal forces.
+  MatX slip_normals_, slip_rates_;
+  VecX slip_rate_base_, slip_rate_trial_, slip_directions_;
+  MatX trial_response_;
+  Eigen::PartialPivLU<MatX> trial_lu_;
+  VecX trial_normals_;
   bool body_loads_ = false;  // some element acts on bodies (needs poses; f_ext is not zero)
   bool conserves_energy_ = false;
   bool conserves_angular_momentum_ = false;

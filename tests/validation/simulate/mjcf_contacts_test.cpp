@@ -1,12 +1,13 @@
 // MJCF's geoms on the world's plane (io/mjcf/mjcf_contacts.cpp) run as the textbook's rigid
 // contacts: a MuJoCo ball launched skidding starts rolling at the closed form's instant and speed
 // (Beer & Johnston ch. 16); a MuJoCo box slides to Coulomb's stop on its four bottom corners; one
-// dropped tumbling comes to rest on its face with no energy made; a heavier one whose slip starts
-// at its cone's edge stops a dopri5 run that would crawl, with an error naming the contact.
+// dropped tumbling comes to rest on its face with no energy made, and so does a heavier one whose
+// corner starts to slip from its cone's edge, along the direction Coulomb's law gives there.
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include <fmt/format.h>
@@ -14,6 +15,8 @@
 
 #include "momenta/common/error.hpp"
 #include "momenta/io/mjcf_file.hpp"
+#include "momenta/system/constraint_solver.hpp"
+#include "momenta/system/multibody_system.hpp"
 #include "unilateral_runs.hpp"
 
 namespace momenta::simulate {
@@ -101,6 +104,37 @@ TEST(MjcfContacts, AMuJoCoCrateSlidesToAStopOnItsBottomCorners) {
   EXPECT_NEAR(last[std::size_t(x)], x_stop, 1e-12 * x_stop);
 }
 
+// No energy made: the total never rises by more than dopri5's drift in flight between rows (1e-12
+// of it per step, a run's few thousand steps under 1e-9 J).
+void expect_no_energy_made(const UnilateralRun& run) {
+  const int energy = run.table.column("energy_total");
+  for (std::size_t k = 1; k < run.table.rows.size(); ++k) {
+    EXPECT_LE(run.table.rows[k][std::size_t(energy)],
+              run.table.rows[k - 1][std::size_t(energy)] + 1e-9)
+        << run.table.rows[k][0];
+  }
+}
+
+// A box of mass m on its free joint `joint`, its corners' contacts `<geom>_corner<k>_floor`, at
+// rest on a face at the run's end `t_end`: level at its half height c, every speed round-off, its
+// weight on the bottom corners.
+void expect_at_rest_on_its_face(const UnilateralRun& run, const std::string& joint,
+                                const std::string& geom, double c, double m, double t_end) {
+  const auto& last = run.table.rows.back();
+  const auto at = [&](const std::string& column) {
+    return last[std::size_t(run.table.column(column))];
+  };
+  EXPECT_EQ(last[0], t_end);
+  EXPECT_NEAR(at(joint + ".z"), c, 1e-12);
+  for (const char* tilt : {".qx", ".qy"}) EXPECT_NEAR(at(joint + tilt), 0.0, 1e-12) << tilt;
+  for (const char* speed : {".vx", ".vy", ".vz", ".wx", ".wy", ".wz"}) {
+    EXPECT_NEAR(at(joint + speed), 0.0, 1e-12) << speed;
+  }
+  double weight = 0.0;
+  for (int k = 1; k <= 8; ++k) weight += at(fmt::format("{}_corner{}_floor.normal", geom, k));
+  EXPECT_NEAR(weight, m * kG, 1e-12 * m * kG);
+}
+
 // The crate dropped tumbling — tilted about all three axes, 0.4 m up, μ = 1, plastic — lands on
 // one corner, slides on it, and strikes with its others while that one slides through each
 // impact. It comes to rest on its bottom face with no energy made on the way: the total
@@ -139,60 +173,119 @@ TEST(MjcfContacts, ACrateDroppedTumblingComesToRestOnItsFace) {
       EXPECT_EQ(e.kind, StopEventKind::release) << e.contact << " at t = " << e.time;
     }
   }
-  const int energy = run.table.column("energy_total");
-  for (std::size_t k = 1; k < run.table.rows.size(); ++k) {
-    EXPECT_LE(run.table.rows[k][std::size_t(energy)],
-              run.table.rows[k - 1][std::size_t(energy)] + 1e-9)
-        << run.table.rows[k][0];
-  }
-  // At rest on its face: level at its half height, every speed round-off, its weight on the
-  // bottom corners.
-  const auto& last = run.table.rows.back();
-  EXPECT_EQ(last[0], 2.0);
-  EXPECT_NEAR(last[std::size_t(run.table.column("free.z"))], c, 1e-12);
-  for (const char* tilt : {"free.qx", "free.qy"}) {
-    EXPECT_NEAR(last[std::size_t(run.table.column(tilt))], 0.0, 1e-12) << tilt;
-  }
-  for (const char* speed : {"free.vx", "free.vy", "free.vz", "free.wx", "free.wy", "free.wz"}) {
-    EXPECT_NEAR(last[std::size_t(run.table.column(speed))], 0.0, 1e-12) << speed;
-  }
-  double weight = 0.0;
-  for (int k = 1; k <= 8; ++k) {
-    weight += last[std::size_t(run.table.column(fmt::format("box_corner{}_floor.normal", k)))];
-  }
-  EXPECT_NEAR(weight, m * kG, 1e-12 * m * kG);
+  expect_no_energy_made(run);
+  expect_at_rest_on_its_face(run, "free", "box", c, m, 2.0);
 }
 
-// A heavier crate dropped the same way: its first corner lands and sticks at 0.2004 s, and at
-// 0.2402 s its friction reaches the cone's edge and it starts to slip from rest — where its
-// friction agrees with no slip direction near the edge (docs/contacts.md, "Not yet"): the slip
-// hovers at 1e-11 m/s, its direction turning within every step, and dopri5's steps shrink to
-// 6e-12 s. The run stops after 10 000 such steps (integrate::kCrawlingSteps) with an error naming
-// the time and the contact's last event, in a fraction of a second, where it used to crawl on
-// (1.5 GB of rows in a minute).
-TEST(MjcfContacts, ACrawlAtASlipFromTheConesEdgeStopsTheRunNamingTheContact) {
-  const model::Model crate = io::parse_mjcf(R"(<mujoco model="crate">
+// A heavier crate dropped the same way. Its first corner lands and sticks at 0.2004 s; at
+// 0.2402 s its friction reaches the cone's edge and the corner starts to slip from rest. The
+// crate pivots on that corner, so the slip's acceleration is not along the friction it feels
+// (docs/contacts.md, "Coulomb friction"): started against the friction sticking needed, the
+// slip turned at 1e11 rad/s at 1e-11 m/s, and dopri5 crawled at 6e-12 s steps until the run
+// stopped with an error (integrate::kCrawlingSteps) — where it once wrote 1.5 GB of rows a
+// minute. Started along its stable direction, where its acceleration is along it, the slip
+// grows, and the crate comes to rest on a face with no energy made.
+model::Model heavier_crate(double mu) {
+  return io::parse_mjcf(fmt::format(R"(<mujoco model="crate">
   <worldbody>
-    <geom name="floor" type="plane" size="0 0 1" friction="1"/>
+    <geom name="floor" type="plane" size="0 0 1" friction="{}"/>
     <body name="crate" pos="0 0 0.4" quat="0.95 0.2 0.15 0.05">
       <freejoint/>
-      <geom name="crate" type="box" size="0.2 0.15 0.1" mass="3"/>
+      <geom name="crate" type="box" size="0.2 0.15 0.1" mass="3" friction="{}"/>
     </body>
   </worldbody>
 </mujoco>)",
-                                            "crate.xml")
-                                 .model;
-  try {
-    run_unilaterals(crate, "dopri5", 1e-2, 1.0);
-    FAIL() << "the run went on";
-  } catch (const NumericalError& e) {
-    const std::string message = e.what();
-    EXPECT_NE(message.find("the run crawls at t = 0.2402"), std::string::npos) << message;
-    EXPECT_NE(message.find("the last of its stops' and contacts' events: contact "
-                           "crate_corner2_floor slips at t = 0.2402"),
-              std::string::npos)
-        << message;
+                                    mu, mu),
+                        "crate.xml")
+      .model;
+}
+
+TEST(MjcfContacts, ASlipFromTheConesEdgeRunsOnAndTheCrateComesToRest) {
+  const double c = 0.1, m = 3.0;
+  const UnilateralRun run = run_unilaterals(heavier_crate(1.0), "dopri5", 1e-2, 1.0, true);
+  const std::vector<StopEvent>& events = run.summary.stop_events;
+  // Its corner sticks on landing, slips from its cone's edge, and the crate settles by 0.35 s
+  // (19 events, 13 of them impacts).
+  ASSERT_GE(events.size(), 2u);
+  EXPECT_EQ(events[1].contact, "crate_corner2_floor");
+  EXPECT_EQ(events[1].kind, StopEventKind::slip);
+  EXPECT_NEAR(events[1].time, 0.2402252588, 1e-9);
+  EXPECT_LT(events.size(), 100u);
+  for (const StopEvent& e : events) {
+    EXPECT_LT(e.time, 0.35) << e.contact;
   }
+  expect_no_energy_made(run);
+  expect_at_rest_on_its_face(run, "joint0", "crate", c, m, 1.0);
+}
+
+// The law the slip above starts by, checked at one instant by whole evaluations: the crate as it
+// was when its corner's friction reached the cone's edge (t = 0.2402 s above), on a floor of
+// μ = 0.9, so that sticking there needs 1.1 times what the cone holds. The direction the slip
+// takes is one where its acceleration, found with the friction against it, is along it and away
+// from rest (λ > 0), and a slip turned 1 mrad from it turns back.
+TEST(MjcfContacts, ASlipStartsWhereItsAccelerationIsAlongIt) {
+  const model::Model crate = heavier_crate(0.9);
+  system::MultibodySystem system(crate);
+  int k = -1;
+  Vec3 corner = Vec3::Zero();  // in the crate
+  for (std::size_t i = 0; i < crate.constraints().size(); ++i) {
+    const auto* c = std::get_if<model::Contact>(&crate.constraints()[i]);
+    if (c != nullptr && c->name == "crate_corner2_floor") {
+      k = static_cast<int>(i);
+      corner = c->frame.X_BF.p;
+    }
+  }
+  ASSERT_GE(k, 0);
+  const double t = 0.24022525879447776;
+  VecX q(7), v(6), vdot(6);
+  q << -0.029717163794790946, 0.013594090022746969, 0.16922619066754566, 0.9820966743303651,
+      0.15693788529957006, 0.08083070537779373, 0.06574967296545756;
+  v << -2.9730415568391604, -3.693541398759955, 1.1001925590506056, -0.743332002650041,
+      0.3428092570541837, -1.0123756970176645;
+  // What sticking needs there: the tangent rows' forces along the floor's x and y.
+  system.hold_contact(k, q, system::ContactHold::sticking);
+  system.acceleration(t, q, v, vdot);
+  const int first = system.constraints()->rows().first_row[static_cast<std::size_t>(k)];
+  const VecX& lambda = system.constraints()->multipliers();
+  const Vec2 needed(lambda[first + 1], lambda[first + 2]);
+  ASSERT_GT(needed.norm(), 1.05 * 0.9 * lambda[first]);
+  // The slip's acceleration with the friction against unit direction d alone (end_slip_start:
+  // against its reference, the slip being round-off), from the crate's: the corner's
+  // a = a_O + R (ω̇ × r + ω × (ω × r)), ω and ω̇ in the crate, a_O in the world.
+  const Mat3 R = Eigen::Quaterniond(q[3], q[4], q[5], q[6]).normalized().toRotationMatrix();
+  const Vec3 w = v.head<3>();
+  const auto slip_acceleration = [&](const Vec2& d) {
+    system.hold_contact(k, q, system::ContactHold::sliding, Vec3(d.x(), d.y(), 0.0));
+    system.end_slip_start(k);
+    system.acceleration(t, q, v, vdot);
+    const Vec3 a =
+        vdot.tail<3>() + R * (Vec3(vdot.head<3>()).cross(corner) + w.cross(w.cross(corner)));
+    EXPECT_NEAR(a.z(), 0.0, 1e-12) << "the corner leaves the floor";
+    return Vec2(a.head<2>());
+  };
+  const auto across = [](const Vec2& d, const Vec2& a) { return d.x() * a.y() - d.y() * a.x(); };
+  const auto turned = [](const Vec2& d, double angle) {
+    return Vec2(std::cos(angle) * d.x() - std::sin(angle) * d.y(),
+                std::sin(angle) * d.x() + std::cos(angle) * d.y());
+  };
+  // The way it slides, started against the friction sticking needed.
+  system.hold_contact(k, q, system::ContactHold::sliding, Vec3(-needed.x(), -needed.y(), 0.0));
+  system.acceleration(t, q, v, vdot);
+  const Vec2 taken = -system.contact_friction(k).head<2>().normalized();
+  // Along it, to the round-off of accelerations of up to 10 m/s² summed (1e-15 of them a hundred
+  // times over; measured 1e-15), and away from rest (measured λ = 0.0899 m/s²).
+  const Vec2 a = slip_acceleration(taken);
+  EXPECT_NEAR(across(taken, a), 0.0, 1e-12);
+  EXPECT_GT(a.dot(taken), 0.05);
+  // Stable: turned 1 mrad either way, the slip's acceleration turns it back (measured ±4.4e-3).
+  EXPECT_LT(across(turned(taken, 1e-3), slip_acceleration(turned(taken, 1e-3))), -1e-3);
+  EXPECT_GT(across(turned(taken, -1e-3), slip_acceleration(turned(taken, -1e-3))), 1e-3);
+  // Not the way the friction sticking needed pointed (0.33° from it): a slip started there
+  // accelerates across itself at 27 % of its rate along (0.025 m/s² of 0.093), turning without
+  // bound as it leaves rest.
+  const Vec2 naive = -needed.normalized();
+  const Vec2 a_naive = slip_acceleration(naive);
+  EXPECT_GT(std::abs(across(naive, a_naive)), 0.2 * a_naive.dot(naive));
 }
 
 }  // namespace
