@@ -345,10 +345,7 @@ void Unilaterals::set_slip_references(system::MultibodySystem& system,
     }
     if (!evaluated) solve_forces(advanced, state);
     evaluated = true;
-    const Vec3 against = -system.contact_friction(e.index);
-    if (!(against.norm() > 0.0)) continue;  // no friction to say: the last one stands
-    slip_reference_[slot(e)] = against;
-    system.set_slip_reference(e.index, against);
+    take_friction_as_reference(system, e);
   }
 }
 
@@ -356,8 +353,12 @@ void Unilaterals::follow_friction(system::MultibodySystem& system,
                                   integrate::SecondOrderSystem& advanced, const Entry& e,
                                   const integrate::State& state) {
   solve_forces(advanced, state);
+  take_friction_as_reference(system, e);
+}
+
+void Unilaterals::take_friction_as_reference(system::MultibodySystem& system, const Entry& e) {
   const Vec3 against = -system.contact_friction(e.index);
-  if (!(against.norm() > 0.0)) return;
+  if (!(against.norm() > 0.0)) return;  // no friction to say: the last one stands
   slip_reference_[slot(e)] = against;
   system.set_slip_reference(e.index, against);
 }

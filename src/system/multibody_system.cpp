@@ -296,8 +296,8 @@ void MultibodySystem::response_for(const VecX& directions, MatX& response) const
   // Column k: −∂N/∂N_k = −(∂N/∂f_k)(−μk d_k), f_k = −μk N_k d_k contact k's friction.
   const int m = static_cast<int>(sliding_.size());
   for (int k = 0; k < m; ++k) {
-    response.col(k) =
-        sliding_[k].mu * (slip_normals_.middleCols<2>(2 * k) * directions.segment<2>(2 * k));
+    const Vec2 scaled = sliding_[k].mu * directions.segment<2>(2 * k);
+    response.col(k).noalias() = slip_normals_.middleCols<2>(2 * k) * scaled;
     response(k, k) += 1.0;
   }
 }

@@ -10,8 +10,8 @@
 // pivoting on a corner, an arm), the two differ, and a slip started the other way turns within
 // a few microseconds — turning at 1e11 rad/s at 1e-11 m/s, faster than an explicit integrator
 // can follow (docs/contacts.md, "Coulomb friction"). MultibodySystem takes this direction while
-// the slip is slower than kQuasiStaticSlip and runs along it: its slow manifold, on which the
-// turning has settled.
+// the slip is slower than kStartingSlip (multibody_system.hpp) and runs along it: its slow
+// manifold, on which the turning has settled.
 //
 // A direction d is stable where the turning brings a slip near it back: its acceleration's
 // part across it, a × d (positive turning it towards +θ), passes from positive to negative
@@ -25,17 +25,8 @@
 #include <optional>
 
 #include "momenta/math/types.hpp"
-#include "momenta/system/multibody_system.hpp"
 
 namespace momenta::system::detail {
-
-// A slip started from rest and slower than this (m/s) runs along its stable direction (above)
-// where it has one and the slip is within 90° of it (a slip slowing to a stop keeps its own). At
-// 1e-6 m/s the direction's turning (rate |∂(a × d)/∂θ| / |v_t|, ~1e6–1e7 /s for accelerations of
-// 1–10 m/s²) settles within a microsecond, the direction this leaves out is ~1e-6 rad (its own
-// turning, ~10 rad/s, over that time), and an explicit integrator's steps past it stay above ~1e-7
-// s.
-inline constexpr double kQuasiStaticSlip = kStartingSlip;
 
 // Directions tried round the plane (every 5°) before the stable ones are refined by bisection.
 inline constexpr int kSlipDirectionsTried = 72;

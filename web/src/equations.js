@@ -66,7 +66,7 @@ function math(latex) {
 // An equation in symbols longer than this many LaTeX characters (some 90 lines of LINE) is
 // folded: set when the reader opens it. The flyball governor's longest is 142 040 characters and
 // 64 000 MathML elements; laying out three such took Chromium 4 s of its page's 9 s opening.
-export const kFoldedLatex = 20000;
+const kFoldedLatex = 20000;
 
 // The braced group that opens at latex[open] ('{'), with its braces; '' if it is not closed.
 function bracedGroup(latex, open) {
@@ -80,7 +80,7 @@ function bracedGroup(latex, open) {
 
 // The acceleration an equation is led by — its first \ddot{…} with the subscript after it — as
 // LaTeX; '' if it has none.
-export function leadingAcceleration(latex) {
+function leadingAcceleration(latex) {
   const start = latex.indexOf('\\ddot{');
   if (start < 0) return '';
   const argument = bracedGroup(latex, start + 5);

@@ -305,6 +305,8 @@ class Unilaterals {
   // `advanced`) — where a slip starts, its stable direction (system/slip_direction.hpp).
   void follow_friction(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
                        const Entry& e, const integrate::State& state);
+  // After an evaluation: sliding contact e's reference is the way its friction acts against.
+  void take_friction_as_reference(system::MultibodySystem& system, const Entry& e);
   std::size_t slot(const Entry& e) const { return static_cast<std::size_t>(&e - entries_.data()); }
 
   const model::Model& model_;
