@@ -339,6 +339,14 @@ Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointCon
       impulsive_motion(model, q, at_rest, unit, enabled_rows, held_joints, sliding);
   const double w = normal_speed(model, data, q, response.v_after, contact);
   const double scale = std::max(1.0, w);
+  if (!(w > 1e-12 * scale) && !sliding.empty()) {
+    throw NumericalError(fmt::format(
+        "restitution_impact: with the friction of the {} contacts sliding through it, a unit "
+        "normal impulse gives the points a separation speed of {:.3g} m/s, not a positive one "
+        "(Painlevé's paradox at impact, or the sliding contacts hold them): they cannot slide "
+        "through it",
+        sliding.size(), w));
+  }
   if (!(w > 1e-12 * scale)) {
     throw InvalidArgument(
         "restitution_impact: the mechanism cannot move the two points apart along the normal "
@@ -357,7 +365,7 @@ FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
                                    double static_friction, double kinetic_friction,
                                    std::span<const char> enabled_rows,
                                    std::span<const char> held_joints,
-                                   std::span<const SlidingContact> sliding) {
+                                   std::span<const SlidingContact> sliding, EnergyGuard guard) {
   if (!(static_friction >= 0.0 && std::isfinite(static_friction) && kinetic_friction >= 0.0 &&
         kinetic_friction <= static_friction)) {
     throw InvalidArgument(fmt::format(
@@ -410,16 +418,23 @@ FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
   const Vec3 u_after = relative_velocity(model, data, q, impact.motion.v_after, contact);
   impact.separation_speed = n.dot(u_after);
   impact.slip_after_W = u_after - n * impact.separation_speed;
-  // A guard: the course above takes energy or none.
-  const double kinetic_before = impact.motion.kinetic_before;
-  if (impact.motion.kinetic_after > kinetic_before + 1e-12 * std::max(1.0, kinetic_before)) {
-    throw NumericalError(fmt::format(
-        "frictional_impact: with e = {} and μk = {} this impact would create energy ({:.6g} J "
-        "→ {:.6g} J, {:.3g} J more)",
-        restitution, kinetic_friction, kinetic_before, impact.motion.kinetic_after,
-        impact.motion.kinetic_after - kinetic_before));
-  }
+  if (guard == EnergyGuard::refuse) check_energy_kept(impact, restitution, kinetic_friction);
   return impact;
+}
+
+bool creates_energy(const ImpulsiveMotion& motion) {
+  return motion.kinetic_after >
+         motion.kinetic_before + 1e-12 * std::max(1.0, motion.kinetic_before);
+}
+
+void check_energy_kept(const FrictionalImpact& impact, double restitution,
+                       double kinetic_friction) {
+  if (!creates_energy(impact.motion)) return;
+  const double before = impact.motion.kinetic_before, after = impact.motion.kinetic_after;
+  throw NumericalError(fmt::format(
+      "frictional_impact: with e = {} and μk = {} this impact would create energy ({:.6g} J "
+      "→ {:.6g} J, {:.3g} J more)",
+      restitution, kinetic_friction, before, after, after - before));
 }
 
 StopImpact stop_impact(const Model& model, VecRef q, VecRef v, int coordinate, double restitution,

@@ -109,6 +109,7 @@ Unilaterals::Unilaterals(const model::Model& model, double step)
   }
   hold_.assign(entries_.size(), Hold::open);
   slip_reference_.assign(entries_.size(), Vec3::UnitX());
+  slip_run_.assign(entries_.size(), 0);
   q_ = VecX::Zero(model.nq());
   v_ = VecX::Zero(model.nv());
 }
@@ -248,7 +249,9 @@ void Unilaterals::set_contact_hold(system::MultibodySystem& system, const Entry&
                                    : how == Hold::sliding ? system::ContactHold::sliding
                                                           : system::ContactHold::sticking;
   system.hold_contact(e.index, q_, hold, slip_W);
-  if (how == Hold::sliding) slip_reference_[slot(e)] = slip_W;
+  if (how != Hold::sliding) return;
+  slip_reference_[slot(e)] = slip_W;
+  slip_run_[slot(e)] = slip_velocity(e, at).norm() > kSlipAtRest;
 }
 
 void Unilaterals::project(system::MultibodySystem& system, integrate::State& at) {
@@ -339,6 +342,7 @@ void Unilaterals::set_slip_references(system::MultibodySystem& system,
     const Vec3 slip = slip_velocity(e, state);
     if (slip.norm() > system::kStartingSlip) system.end_slip_start(e.index);
     if (slip.norm() > kSlipAtRest) {
+      slip_run_[slot(e)] = 1;
       slip_reference_[slot(e)] = slip;
       system.set_slip_reference(e.index, slip);
       continue;
@@ -391,28 +395,39 @@ double Unilaterals::contact_impact(system::MultibodySystem& system, const Entry&
   // would pull lets go, one whose cone cannot hold it slides, and the impact is solved again.
   begin_impact(system, at);
   bool all_stuck = false;
+  // Contacts sliding through the impact against directions held from before it can jam it
+  // (Painlevé) or make energy with it: those contacts stick for the impact instead (constraints
+  // with no rebound take energy only), once; a failure then stands.
+  const auto stick_them_once = [&] {
+    if (all_stuck || sliding_at_impact_.empty()) return false;
+    stick_all_sliding(system, at);
+    all_stuck = true;
+    return true;
+  };
   for (;;) {
     // Newton's restitution and Coulomb's law at impact (none without friction).
     dynamics::FrictionalImpact impact;
     try {
-      impact = dynamics::frictional_impact(
-          model_, at.q.head(nq), at.v.head(nv), touch, e.restitution, c.static_friction,
-          c.kinetic_friction, enabled_rows(system), system.held_joints(), sliding_at_impact_);
+      impact = dynamics::frictional_impact(model_, at.q.head(nq), at.v.head(nv), touch,
+                                           e.restitution, c.static_friction, c.kinetic_friction,
+                                           enabled_rows(system), system.held_joints(),
+                                           sliding_at_impact_, dynamics::EnergyGuard::caller);
     } catch (const NumericalError&) {
-      // Energy created, or a jam, with contacts sliding through the impact against directions
-      // held from before it: those contacts stick for the impact instead (constraints with no
-      // rebound take energy only), once; a failure then stands.
-      if (all_stuck || sliding_at_impact_.empty()) throw;
-      stick_all_sliding(system, at);
-      all_stuck = true;
+      if (stick_them_once()) continue;
+      throw;
+    }
+    // One that pulls lets go, one beyond its cone slides, one whose slip the impact turns sticks,
+    // and the impact is solved again; only the one kept must take energy or none (one that pulls
+    // takes its share of the impulse back with it).
+    if (let_go_one_that_pulls(system, impact.motion, at) ||
+        slide_one_beyond_its_cone(system, impact.motion, at) ||
+        stick_one_whose_slip_turns(system, impact.motion, at)) {
       continue;
     }
-    if (!let_go_one_that_pulls(system, impact.motion, at) &&
-        !slide_one_beyond_its_cone(system, impact.motion, at) &&
-        !stick_one_whose_slip_turns(system, impact.motion, at)) {
-      at.v.head(nv) = impact.motion.v_after;
-      return impact.normal_impulse;
-    }
+    if (dynamics::creates_energy(impact.motion) && stick_them_once()) continue;
+    dynamics::check_energy_kept(impact, e.restitution, c.kinetic_friction);
+    at.v.head(nv) = impact.motion.v_after;
+    return impact.normal_impulse;
   }
 }
 
@@ -881,9 +896,13 @@ bool Unilaterals::check(system::MultibodySystem& system, integrate::SecondOrderS
       };
       consider(e, zero_of(margin, margin_end), Pending::slip);
     } else if (hold_[k] == Hold::sliding) {
+      // A slip held from rest that has not yet run (at its cone's edge its acceleration starts
+      // from zero) is round-off along its reference at first, either sign: it stops where it
+      // runs back faster than kSlipAtRest, not at once.
       const Vec3 reference = slip_reference_[k].normalized();
+      const double allowance = slip_run_[k] ? 0.0 : kSlipAtRest;
       const auto along = [&](const integrate::State& x) {
-        return slip_velocity(e, x).dot(reference);
+        return slip_velocity(e, x).dot(reference) + allowance;
       };
       const double along_end = along(end);
       if (along_end < 0.0) consider(e, zero_of(along, along_end), Pending::stop_slipping);

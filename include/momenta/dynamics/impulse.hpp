@@ -110,7 +110,10 @@ struct Impact {
 /// so P = −(1 + e) v_n⁻ / w. Throws InvalidArgument where the points do not approach (v_n⁻ ≥ 0:
 /// no impact), e is outside [0, 1], the normal is not a unit vector, both points are on one body,
 /// or the mechanism cannot move them apart (w = 0: a contact the constraints hold still).
-/// `enabled_rows`, `held_joints` and `sliding` as impulsive_motion's.
+/// `enabled_rows`, `held_joints` and `sliding` as impulsive_motion's; where contacts slide
+/// through the impact and w ≤ 0 (their friction, taken with their normal impulses, turns the
+/// pair's push back on itself: Painlevé's paradox at impact), NumericalError instead — the caller
+/// may stick them and solve again.
 Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointContact& contact,
                           double restitution, std::span<const char> enabled_rows = {},
                           std::span<const char> held_joints = {},
@@ -156,6 +159,16 @@ struct FrictionalImpact {
   ImpulsiveMotion motion;
 };
 
+/// Who refuses an impact that creates kinetic energy. The course cannot, but the other contacts'
+/// impulses taken with it can: a held one in `enabled_rows` that pulls, or one in `sliding`
+/// whose friction acts against a direction held from before the impact while its normal
+/// impulse pulls. A caller that lets such a contact go, or sticks it, and solves again
+/// (simulate::Unilaterals) judges only the impact it keeps (check_energy_kept).
+enum class EnergyGuard {
+  refuse,  ///< frictional_impact throws NumericalError (check_energy_kept)
+  caller,  ///< frictional_impact returns it; the caller checks what it keeps
+};
+
 /// The impact at `contact` with restitution e, static and kinetic friction μs ≥ μk ≥ 0 at
 /// (q, v); arguments checked as restitution_impact's. `enabled_rows`, `held_joints` and
 /// `sliding` as impulsive_motion's. With μs = 0 it is restitution_impact's (its slips left zero,
@@ -165,7 +178,16 @@ FrictionalImpact frictional_impact(const Model& model, VecRef q, VecRef v,
                                    double static_friction, double kinetic_friction,
                                    std::span<const char> enabled_rows = {},
                                    std::span<const char> held_joints = {},
-                                   std::span<const SlidingContact> sliding = {});
+                                   std::span<const SlidingContact> sliding = {},
+                                   EnergyGuard guard = EnergyGuard::refuse);
+
+/// Whether `motion` leaves more kinetic energy than it found, by more than 1e-12 of it (of 1 J
+/// below 1 J: round-off).
+bool creates_energy(const ImpulsiveMotion& motion);
+
+/// Throws NumericalError, naming e and μk and the energies, where `impact` creates energy
+/// (creates_energy).
+void check_energy_kept(const FrictionalImpact& impact, double restitution, double kinetic_friction);
 
 /// A stop striking a joint's coordinate (a revolute or prismatic joint at its limit,
 /// model::JointLimits): the generalized impulse P on coordinate i alone, M Δv = e_i P (+ the

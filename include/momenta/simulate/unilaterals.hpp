@@ -315,7 +315,10 @@ class Unilaterals {
                                       // the contacts in constraint order
   std::vector<Hold> hold_;            // per entry
   std::vector<Vec3> slip_reference_;  // per entry: a sliding contact's reference slip direction
-  int pending_ = -1;                  // the one check() found acting
+  // Per entry: a sliding contact whose slip has run faster than kSlipAtRest since it was held
+  // sliding (one held from rest has not, until it does).
+  std::vector<char> slip_run_;
+  int pending_ = -1;  // the one check() found acting
   Pending pending_action_ = Pending::reach;
   double last_act_ = -std::numeric_limits<double>::infinity();  // when act() last acted
   int acts_at_last_ = 0;  // how often it acted then: a run that makes no progress stops

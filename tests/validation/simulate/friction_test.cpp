@@ -6,6 +6,8 @@
 // - a crate thrown up a rough ramp (examples/block_on_incline.yaml): it decelerates at
 //   g (sin θ + μk cos θ), stops at v₀ / that, and with tan θ < μs sticks there, held by m g sin θ;
 //   with tan θ > μs it slides back at g (sin θ − μk cos θ);
+// - a block on a level floor pushed by a force growing from zero (μs = μk): it sticks until the
+//   push reaches μ m g and then slides with s = c (t − t₀)³ / (6 m) along the push;
 // - a crate set down at rest on a ramp with tan θ < μs moves less than 1e-12 m in 100 s (no
 //   creep), and with tan θ > μs slides at g (sin θ − μk cos θ) from the start;
 // - a block on a moving belt held by a spring (examples/belt_stick_slip.yaml: a contact with
@@ -195,6 +197,49 @@ TEST(Friction, CrateAtRestOnASteepRampSlidesFromTheStart) {
     EXPECT_NEAR(up_the_ramp(run, row, true), -a * t, 1e-12) << t;
     EXPECT_NEAR(up_the_ramp(run, row, false), -0.5 * a * t * t, 1e-12) << t;
   }
+}
+
+// A 2 kg block on a level floor, free to slide in x and y (two prismatic joints, a third lifts
+// it), pushed along (0.6, 0.8) by a force growing from zero, F = c t, with μs = μk = μ = 0.5 (as
+// MuJoCo's one friction gives). It sticks until c t₀ = μ m g, t₀ = 0.981 s, and then slides along
+// the push with m s̈ = c (t − t₀): s = c (t − t₀)³ / (6 m). Its slip starts from its cone's edge
+// with no acceleration at all (μk = μs) — the case where the arm of mjcf_contacts_test once took
+// the slip's round-off as its stop (here the steps after the slip are long enough that it never
+// did: this is the closed form, the arm the regression).
+TEST(Friction, BlockPushedByAGrowingForceSlipsAtMuMgAndRunsOnTheCubic) {
+  const double m = 2.0, mu = 0.5, c = 10.0, ux = 0.6, uy = 0.8;
+  const model::Model block = load(fmt::format(
+      "gravity: [0, 0, -9.81]\n"
+      "bodies: [{{name: x_carriage, mass: 0}}, {{name: y_carriage, mass: 0}},\n"
+      "         {{name: block, shape: box, mass: {}, size: [0.4, 0.3, 0.2]}}]\n"
+      "joints:\n"
+      "  - {{name: x, type: prismatic, parent: world, child: x_carriage, axis: [1, 0, 0]}}\n"
+      "  - {{name: y, type: prismatic, parent: x_carriage, child: y_carriage, axis: [0, 1, 0]}}\n"
+      "  - {{name: lift, type: prismatic, parent: y_carriage, child: block, axis: [0, 0, 1], "
+      "q0: 0.1}}\n"
+      "inputs: [{{name: push, type: ramp, slope: {}}}]\n"
+      "forces: [{{name: push, type: force, body: block, point: [0, 0, 0], vector: [{}, {}, 0], "
+      "signal: push}}]\n"
+      "constraints: [{{name: floor, type: contact, body: block, point: [0, 0, -0.1], normal: "
+      "[0, 0, 1], friction: {{static: {}, kinetic: {}}}}}]\n",
+      m, c, ux, uy, mu, mu));
+  const UnilateralRun run = run_unilaterals(block, "dopri5", 1e-3, 2.0);
+  const std::vector<StopEvent>& events = run.summary.stop_events;
+  const double t0 = mu * m * kG / c;
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[0].friction, FrictionState::sticking);
+  EXPECT_EQ(events[1].kind, StopEventKind::slip);
+  // The margin μ m g − c t is linear in t: the locator's 1e-12 relative.
+  EXPECT_NEAR(events[1].time, t0, 1e-12 * t0);
+  const int x = run.table.column("x.position"), y = run.table.column("y.position");
+  for (const std::vector<double>& row : run.table.rows) {
+    const double t = row[0];
+    // dopri5 is exact on a cubic; the slip's start to 1e-12 s moves s by far less.
+    const double s = t > t0 ? c * std::pow(t - t0, 3) / (6.0 * m) : 0.0;
+    EXPECT_NEAR(row[std::size_t(x)], ux * s, 1e-12) << t;
+    EXPECT_NEAR(row[std::size_t(y)], uy * s, 1e-12) << t;
+  }
+  EXPECT_EQ(run.table.rows.back()[0], 2.0);
 }
 
 // The block on the belt of examples/belt_stick_slip.yaml (m = 1 kg, k = 100 N/m, V = 0.1 m/s,
