@@ -182,8 +182,10 @@ const VecX& MultibodySystem::compute(double t, const VecX& q, const VecX& v, mod
         "Lower the friction coefficient",
         c.name, t, sliding_[0].mu, determinant));
   }
-  sliding_base_ = sliding_lu_.solve(sliding_base_);
-  for (int i = 0; i < m; ++i) sliding_[i].normal = sliding_base_[i];
+  // N, into the trial workspace (free again here): solved in place over N₀, the LU's row
+  // permutation would be applied in place, which allocates a mask.
+  trial_normals_ = sliding_lu_.solve(sliding_base_);
+  for (int i = 0; i < m; ++i) sliding_[i].normal = trial_normals_[i];
   solve(t, q, v, limit);
   // The friction reported by the tangent rows, which are off (data_ holds the poses).
   for (const SlidingContact& s : sliding_) {

@@ -277,11 +277,17 @@ TEST(MjcfContacts, ASlipStartsWhereItsAccelerationIsAlongIt) {
   system.acceleration(t, q, v, vdot);
   const Vec2 taken = -system.contact_friction(k).head<2>().normalized();
   // Its workspace made by that first evaluation, the starting slip's evaluation (two solves per
-  // tangent and the search of the plane's directions) allocates nothing, and takes the same way.
-  const long before = test::allocation_count();
+  // tangent and the search of the plane's directions) allocates nothing, and takes the same way;
+  // nor does a sliding evaluation once the slip has started (one solve per sliding contact). Both
+  // once allocated a byte: the normal forces solved in place over those without friction.
+  long before = test::allocation_count();
   system.acceleration(t, q, v, vdot);
   EXPECT_EQ(test::allocation_count() - before, 0);
   EXPECT_EQ(-system.contact_friction(k).head<2>().normalized(), taken);
+  system.end_slip_start(k);
+  before = test::allocation_count();
+  system.acceleration(t, q, v, vdot);
+  EXPECT_EQ(test::allocation_count() - before, 0);
   // Along it, to the round-off of accelerations of up to 10 m/s² summed (1e-15 of them a hundred
   // times over; measured 1e-15), and away from rest (measured λ = 0.0899 m/s²).
   const Vec2 a = slip_acceleration(taken);
