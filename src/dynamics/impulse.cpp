@@ -339,15 +339,15 @@ Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointCon
       impulsive_motion(model, q, at_rest, unit, enabled_rows, held_joints, sliding);
   const double w = normal_speed(model, data, q, response.v_after, contact);
   const double scale = std::max(1.0, w);
-  if (!(w > 1e-12 * scale) && !sliding.empty()) {
-    throw NumericalError(fmt::format(
-        "restitution_impact: with the friction of the {} contacts sliding through it, a unit "
-        "normal impulse gives the points a separation speed of {:.3g} m/s, not a positive one "
-        "(Painlevé's paradox at impact, or the sliding contacts hold them): they cannot slide "
-        "through it",
-        sliding.size(), w));
-  }
   if (!(w > 1e-12 * scale)) {
+    if (!sliding.empty()) {
+      throw NumericalError(fmt::format(
+          "restitution_impact: with the friction of the {} contacts sliding through it, a unit "
+          "normal impulse gives the points a separation speed of {:.3g} m/s, not a positive one "
+          "(Painlevé's paradox at impact, or the sliding contacts hold them): they cannot slide "
+          "through it",
+          sliding.size(), w));
+    }
     throw InvalidArgument(
         "restitution_impact: the mechanism cannot move the two points apart along the normal "
         "(its joints and constraints hold them): no impulse changes their approach");

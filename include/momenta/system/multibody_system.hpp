@@ -326,7 +326,7 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   // respond_with_starting_slip's workspace: per unit force along each contact's tangents (columns
   // 2j, 2j + 1), the normal forces' response (m × 2m) and the slips' accelerations' (2m × 2m);
   // the slips' accelerations with no friction; the directions (two entries a contact); a trial
-  // response, its factors and normal forces.
+  // response, its factors and normal forces (compute()'s final normal forces are solved there).
   MatX slip_normals_, slip_rates_;
   VecX slip_rate_base_, slip_rate_trial_, slip_directions_;
   MatX trial_response_;
