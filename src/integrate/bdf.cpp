@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <exception>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -57,7 +58,8 @@ struct Bdf::Solver {
   long* evaluations = nullptr;          // Bdf::statistics_.evaluations
   bool restart_pending = false;         // a chart change or an input discontinuity was reached
   std::exception_ptr error;             // what the system threw inside a callback
-  std::string message;                  // CVODE's last error message
+  std::optional<UndefinedAcceleration> undefined;  // the last trial point with no acceleration
+  std::string message;                             // CVODE's last error message
 
   ~Solver() {
     if (cvode != nullptr) CVodeFree(&cvode);
@@ -85,6 +87,10 @@ struct Bdf::Solver {
       s.delta_of(y_rate) = s.delta_rate;
       s.v_of(y_rate) = s.vdot;
       return 0;
+    } catch (const UndefinedAcceleration& e) {
+      // Past a point where it has no value: recoverable too, kept to say if CVODE gives up.
+      s.undefined = e;
+      return 1;
     } catch (...) {
       s.error = std::current_exception();
       return -1;
@@ -147,7 +153,10 @@ struct Bdf::Solver {
       }
       *s.evaluations += 2L * n;
       const Eigen::Map<VecX> entries(SUNDenseMatrix_Data(matrix), 4 * n * n);
-      return entries.allFinite() ? 0 : 1;  // non-finite: CVODE retries with a smaller step
+      return entries.allFinite() ? 0 : 1;       // non-finite: CVODE retries with a smaller step
+    } catch (const UndefinedAcceleration& e) {  // a probe past it: as in rates()
+      s.undefined = e;
+      return 1;
     } catch (...) {
       s.error = std::current_exception();
       return -1;
@@ -315,9 +324,29 @@ double Bdf::step(SecondOrderSystem& system, State& state, double h_max) {
   const double smallest_step =
       16.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(t_out));
   s.check(CVodeSetMinStep(s.cvode, smallest_step), "CVodeSetMinStep");
+  // Where CVODE gives up on trial points with no acceleration (Painlevé's point of a sliding
+  // contact, say) short of them, it integrates again from the start to halfway to the last point it
+  // reached and hands that back: the caller looks there for an event before them (a slip that
+  // stops), with the step's interpolant sound away from the point, and the next step goes on from
+  // there. Where no step gets on from the start, the motion reaches the point: it throws.
+  double t_target = stops_on_break ? t_break : t_out;
   double t_reached = state.t;
-  const int flag = CVode(s.cvode, stops_on_break ? t_break : t_out, s.y, &t_reached, CV_NORMAL);
+  int flag = CVode(s.cvode, t_target, s.y, &t_reached, CV_NORMAL);
+  while (flag < 0 && s.undefined && !s.error && t_reached > t_start) {
+    s.undefined.reset();
+    t_target = t_start + 0.5 * (t_reached - t_start);
+    s.restart_at(state);
+    ++restarts_;
+    s.check(CVodeSetStopTime(s.cvode, t_target), "CVodeSetStopTime");
+    flag = CVode(s.cvode, t_target, s.y, &t_reached, CV_NORMAL);
+  }
   if (s.error) std::rethrow_exception(std::exchange(s.error, nullptr));
+  if (flag < 0 && s.undefined) {
+    throw UndefinedAcceleration(
+        fmt::format("{} (the motion reaches it: bdf's steps from t = {:.9g} s all met it, {})",
+                    std::exchange(s.undefined, std::nullopt)->what(), t_reached, flag_name(flag)));
+  }
+  s.undefined.reset();
   if (flag < 0) {
     throw NumericalError(fmt::format(
         "bdf: CVODE stopped at t = {:.9g} s ({}): {}. The model may be singular there, or the "
@@ -325,13 +354,14 @@ double Bdf::step(SecondOrderSystem& system, State& state, double h_max) {
         t_reached, flag_name(flag), s.message, tolerances_.relative, tolerances_.absolute));
   }
 
-  s.read(s.y, stops_on_break ? t_break : t_out, state);
+  s.read(s.y, t_target, state);
   const IntegratorStatistics now = s.counters();
   statistics_.steps = s.before_restart.steps + now.steps;
   statistics_.rejected_steps = s.before_restart.rejected_steps + now.rejected_steps;
   s.returned = state;
-  s.restart_pending = stops_on_break || (system.nq() != s.nv &&
-                                         s.delta.cwiseAbs().maxCoeff() > kLargestLocalCoordinate);
+  s.restart_pending =
+      (stops_on_break && t_target == t_break) ||
+      (system.nq() != s.nv && s.delta.cwiseAbs().maxCoeff() > kLargestLocalCoordinate);
   return state.t - t_start;
 }
 

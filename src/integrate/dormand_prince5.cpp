@@ -1,6 +1,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -137,6 +139,22 @@ double DormandPrince5::error_norm(const State& start, const VecX& v1) const {
   return std::sqrt(sum / (2 * n));
 }
 
+bool DormandPrince5::evaluate_stages(SecondOrderSystem& system, const State& state, double h) {
+  for (int i = 1; i < 7; ++i) {
+    try {
+      stages_.evaluate(system, state, h, i, kDopriA[i], kDopriC[i], statistics_.evaluations);
+    } catch (const UndefinedAcceleration& e) {
+      undefined_ = e;
+      return false;
+    }
+    if (i == 5) {
+      delta6_ = stages_.delta;
+      v6_ = stages_.v;
+    }
+  }
+  return true;
+}
+
 double DormandPrince5::step(SecondOrderSystem& system, State& state, double h_max) {
   if (!(h_max > 0.0)) {
     throw InvalidArgument(fmt::format("dopri5: the step limit must be positive, got {}", h_max));
@@ -154,6 +172,12 @@ double DormandPrince5::step(SecondOrderSystem& system, State& state, double h_ma
     const double h = std::min(h_, h_max);
     // (Written so that a NaN step fails it too.)
     if (!(h >= 16.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(state.t)))) {
+      if (undefined_) {  // every smaller step still met it: the motion reaches it
+        throw UndefinedAcceleration(fmt::format(
+            "{} (the motion reaches it: dopri5 shrank its step to {:.3g} s at t = {:.9g} s and "
+            "still met it)",
+            std::exchange(undefined_, std::nullopt)->what(), h, state.t));
+      }
       throw NumericalError(fmt::format(
           "dopri5: the step size fell to {:.3g} s at t = {:.9g} s, below the resolution of time; "
           "the largest error is in the rate {}. The system may be stiff or singular there, or "
@@ -164,13 +188,14 @@ double DormandPrince5::step(SecondOrderSystem& system, State& state, double h_ma
     // Stages 1..6; stage 0 is the last step's final acceleration.
     system.begin_step(state.t, state.t + h);
     stages_.kq[0] = state.v;
-    for (int i = 1; i < 7; ++i) {
-      stages_.evaluate(system, state, h, i, kDopriA[i], kDopriC[i], statistics_.evaluations);
-      if (i == 5) {
-        delta6_ = stages_.delta;
-        v6_ = stages_.v;
-      }
+    if (!evaluate_stages(system, state, h)) {
+      // A stage past a point where the acceleration has no value: retry much smaller.
+      h_ = h * kMinFactor;
+      ++statistics_.rejected_steps;
+      last_rejected_ = true;
+      continue;
     }
+    undefined_.reset();
     // The fifth-order solution is the last stage's point; the error estimate is Σ e_i k_i.
     delta1_ = stages_.delta;
     v1_ = stages_.v;

@@ -13,7 +13,9 @@
 #include "momenta/dynamics/kinematics.hpp"
 #include "momenta/dynamics/momentum.hpp"
 #include "momenta/dynamics/reactions.hpp"
+#include "momenta/integrate/integrator.hpp"
 #include "momenta/integrate/run.hpp"
+#include "momenta/integrate/second_order_system.hpp"
 #include "momenta/model/integrators.hpp"
 #include "momenta/model/units.hpp"
 #include "momenta/system/closed_loop_system.hpp"
@@ -74,6 +76,20 @@ std::vector<int> quaternion_offsets(const model::Model& model) {
 constexpr const char* kReactionSuffixes[6] = {"Fx", "Fy", "Fz", "Mx", "My", "Mz"};
 
 std::string stop_event_line(const StopEvent& e);  // (with the summary's text, below)
+
+// Where a fixed-step method met a point with no acceleration: it may be only a trial point of a
+// step, past where the motion turns away from it; an adaptive method retries smaller steps.
+std::string fixed_step_note(const NumericalError& e, const integrate::Integrator& integrator) {
+  if (dynamic_cast<const integrate::UndefinedAcceleration*>(&e) == nullptr ||
+      integrator.adaptive()) {
+    return "";
+  }
+  return fmt::format(
+      "{} takes fixed steps, and a point it tries within one may lie past where the motion "
+      "turns away (a slip that stops first): ‹integrator=dopri5› or ‹integrator=bdf› retries "
+      "smaller steps there and goes on if the motion does",
+      integrator.name());
+}
 
 }  // namespace
 
@@ -482,7 +498,10 @@ SimulationSummary Simulation::run(RowSink& sink) {
             ? ""
             : fmt::format("; the last of its stops' and contacts' events: {}",
                           stop_event_line(summary.stop_events.back()));
-    const std::string note = stiffness_note(summary);
+    std::string note = stiffness_note(summary);
+    if (const std::string fixed = fixed_step_note(e, *integrator_); !fixed.empty()) {
+      note += (note.empty() ? "" : ". ") + fixed;
+    }
     throw NumericalError(OptionMessage{
         fmt::format("{} ({} row{} up to the failure were written{}){}{}",
                     e.spelled(keep_option_marks), recorder.rows(), recorder.rows() == 1 ? "" : "s",

@@ -175,7 +175,7 @@ const VecX& MultibodySystem::compute(double t, const VecX& q, const VecX& v, mod
   const double determinant = sliding_lu_.determinant();
   if (!(determinant > kPainleve)) {
     const auto& c = std::get<model::Contact>(model_.constraints()[sliding_[0].constraint]);
-    throw NumericalError(fmt::format(
+    throw integrate::UndefinedAcceleration(fmt::format(
         "contact '{}' at t = {:.12g} s: sliding with kinetic friction μk = {} has no single "
         "normal force (Painlevé's paradox: the friction presses the body into the plane as fast "
         "as the normal force lifts it, det(I − ∂N/∂N) = {:.3g}); momenta does not resolve it. "

@@ -6,10 +6,12 @@
 // (Runge–Kutta–Munthe-Kaas, Munthe-Kaas 1998): quaternions advance by the exponential map, never
 // by adding to the quaternion and renormalizing, and the methods keep their classical order.
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "momenta/integrate/integrator.hpp"
+#include "momenta/integrate/second_order_system.hpp"
 
 namespace momenta::integrate {
 
@@ -69,6 +71,9 @@ class DormandPrince5 final : public Integrator {
 
  private:
   double initial_step(SecondOrderSystem& system, const State& state);
+  // Stages 1..6 of a step of h from `state`; false where one met a point where the acceleration
+  // has no value (kept in undefined_).
+  bool evaluate_stages(SecondOrderSystem& system, const State& state, double h);
   double error_norm(const State& start, const VecX& v1) const;
   void estimate_stiffness(double h, double t);
   // The coordinate whose last error estimate is largest, "name = value", for messages.
@@ -86,6 +91,8 @@ class DormandPrince5 final : public Integrator {
   double previous_error_ = 1e-4;         // for the PI controller
   bool have_last_acceleration_ = false;  // first-same-as-last
   bool last_rejected_ = false;
+  // What a stage of the steps rejected since the last accepted one met (UndefinedAcceleration).
+  std::optional<UndefinedAcceleration> undefined_;
   int controlled_ = 0;  // SecondOrderSystem::error_controlled()
 };
 

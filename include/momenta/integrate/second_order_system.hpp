@@ -6,9 +6,21 @@
 #include <limits>
 #include <string>
 
+#include "momenta/common/error.hpp"
 #include "momenta/math/types.hpp"
 
 namespace momenta::integrate {
+
+/// The acceleration has no value at the state asked about: a point past a singular one, such as
+/// a sliding contact whose normal force has no solution there (Painlevé's paradox). An adaptive
+/// integrator that meets it at a trial point of a step it has not accepted retries smaller steps
+/// (the true motion may leave that way before it gets there: a slip that stops), and throws it on
+/// where its step falls below the resolution of time; a fixed-step one, and any at the start of a
+/// step, throws it on.
+class UndefinedAcceleration : public NumericalError {
+ public:
+  using NumericalError::NumericalError;
+};
 
 class SecondOrderSystem {
  public:
