@@ -28,13 +28,16 @@ constexpr int kSamples = 16;
 // strikes, closes or lets go there once or twice in a real sequence.
 constexpr int kActsAtOneInstant = 64;
 
-// A run whose unilaterals act this often within kCrowdedSpan (s) of the first of them makes no
-// progress either: a contact that slips and stops slipping at once, again and again (its friction
-// agrees with no slip direction near its cone's edge), or a rattle between stops a nanometre
-// apart, would crawl on for ever. No bouncing sequence comes near it (one cut short rests
-// instead); a rattle between stops a micrometre apart acts 100 times in the span.
+// A run whose unilaterals act this often within kCrowdedSpan (s) of the first of them, or within
+// ten of the run's steps where that is longer, makes no progress either: a contact that slips and
+// stops slipping at once, again and again (its friction agrees with no slip direction near its
+// cone's edge), or a rattle between stops a nanometre apart, would crawl on for ever, as would
+// a thousand acts in every step (the MuJoCo arm's third link at its cone's edge, sticking and
+// slipping every 8 µs at 6 ms steps: an hour to its end). No bouncing sequence comes near it (one
+// cut short rests instead); a rattle between stops a micrometre apart acts 100 times in 0.1 ms.
 constexpr int kActsInSpan = 10000;
 constexpr double kCrowdedSpan = 1e-4;
+constexpr double kCrowdedSteps = 10.0;
 
 // A contact's gap below zero by this much (m, times its radius where that is above 1 m) is
 // round-off: above the constraint projection's 1e-14, far below any motion a run resolves.
@@ -87,7 +90,10 @@ std::string_view friction_state_name(FrictionState state) {
 }
 
 Unilaterals::Unilaterals(const model::Model& model, double step)
-    : model_(model), rest_flight_(1e-6 * step), data_(model) {
+    : model_(model),
+      rest_flight_(1e-6 * step),
+      crowded_span_(std::max(kCrowdedSpan, kCrowdedSteps * step)),
+      data_(model) {
   for (const model::Joint& j : model.joints()) {
     if (!j.limits) continue;
     const model::JointLimits& l = *j.limits;
@@ -941,7 +947,7 @@ void Unilaterals::act(system::MultibodySystem& system, integrate::SecondOrderSys
   pending_ = -1;
   acts_at_last_ = state.t == last_act_ ? acts_at_last_ + 1 : 1;
   last_act_ = state.t;
-  if (!(state.t - span_start_ < kCrowdedSpan)) {
+  if (!(state.t - span_start_ < crowded_span_)) {
     span_start_ = state.t;
     acts_in_span_ = 0;
   }
@@ -965,7 +971,7 @@ void Unilaterals::act(system::MultibodySystem& system, integrate::SecondOrderSys
         "s, the last {} — faster than a run can follow them: a rattle between stops or contacts "
         "nearer than the motion resolves, or a contact whose friction agrees with no slip "
         "direction at its cone's edge, slipping and sticking again at once (docs/contacts.md). "
-        "Widen the clearance, or give a smaller friction or a little damping",
+        "Widen the clearance, or give a smaller friction (or μs above μk) or a little damping",
         state.t, kActsInSpan, span_start_, what()));
   }
   switch (pending_action_) {

@@ -311,6 +311,7 @@ class Unilaterals {
 
   const model::Model& model_;
   double rest_flight_;                // s: a rebound flight shorter than this closes it
+  double crowded_span_;               // s: kActsInSpan acts within it stop the run
   std::vector<Entry> entries_;        // every finite stop, lower before upper, in joint order; then
                                       // the contacts in constraint order
   std::vector<Hold> hold_;            // per entry
@@ -323,7 +324,7 @@ class Unilaterals {
   double last_act_ = -std::numeric_limits<double>::infinity();  // when act() last acted
   int acts_at_last_ = 0;  // how often it acted then: a run that makes no progress stops
   double span_start_ = -std::numeric_limits<double>::infinity();  // the first act of a span
-  int acts_in_span_ = 0;     // acts within kCrowdedSpan of span_start_
+  int acts_in_span_ = 0;     // acts within crowded_span_ of span_start_
   double start_rate_ = 0.0;  // first_contact: the rate at the step's start
   integrate::StepInterpolant interpolant_;
   integrate::State trial_;
