@@ -188,11 +188,15 @@ double DormandPrince5::step(SecondOrderSystem& system, State& state, double h_ma
     // Stages 1..6; stage 0 is the last step's final acceleration.
     system.begin_step(state.t, state.t + h);
     stages_.kq[0] = state.v;
-    if (!evaluate_stages(system, state, h)) {
-      // A stage past a point where the acceleration has no value: retry much smaller.
-      h_ = h * kMinFactor;
+    // A rejected step: the next try's length, and no growth after it.
+    const auto reject = [&](double h_next) {
+      h_ = h_next;
       ++statistics_.rejected_steps;
       last_rejected_ = true;
+    };
+    if (!evaluate_stages(system, state, h)) {
+      // A stage past a point where the acceleration has no value: retry much smaller.
+      reject(h * kMinFactor);
       continue;
     }
     undefined_.reset();
@@ -211,16 +215,12 @@ double DormandPrince5::step(SecondOrderSystem& system, State& state, double h_ma
     const double factor11 = math::portable_pow(error, kExponent);
     if (!std::isfinite(error)) {
       // A non-finite stage: retry much smaller; the caller sees the failure if it persists.
-      h_ = h * kMinFactor;
-      ++statistics_.rejected_steps;
-      last_rejected_ = true;
+      reject(h * kMinFactor);
       continue;
     }
     if (error > 1.0) {
       // Reject: shrink, at most by kMinFactor.
-      h_ = h / std::min(1.0 / kMinFactor, factor11 / kSafety);
-      ++statistics_.rejected_steps;
-      last_rejected_ = true;
+      reject(h / std::min(1.0 / kMinFactor, factor11 / kSafety));
       continue;
     }
     // Accept: keep the dense-output coefficients over (δ, v) in the start's local coordinates.

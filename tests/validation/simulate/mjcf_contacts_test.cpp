@@ -354,14 +354,7 @@ TEST(MjcfContacts, TheArmRunsOnPastASlipFromItsConesEdgeAndAnImpactWhereASliding
 // (implicit_test.cpp's jump in the acceleration) and runs on.
 TEST(MjcfContacts, TheArmUnderBdfsLongStepsCrossesItsRocking) {
   const model::Model arm = arm_with_contacts();
-  SimulationOptions options;
-  options.duration = 2.4;
-  options.step = 0.006;
-  options.integrator = "bdf";
-  options.tolerances = {1e-8, 1e-10};
-  Simulation simulation(arm, {}, options);
-  UnilateralRun run;
-  run.summary = simulation.run(run.table);
+  const UnilateralRun run = run_unilaterals(arm, "bdf", 0.006, 2.4, false, {1e-8, 1e-10});
   EXPECT_EQ(run.table.rows.back()[0], 2.4);
   const std::vector<StopEvent>& events = run.summary.stop_events;
   const auto strikes = [&](const std::string& contact) {

@@ -33,15 +33,16 @@ struct UnilateralRun {
   TableSink table;
 };
 
-/// A run of `duration` s at `step` (rtol 1e-12, atol 1e-14 for the adaptive integrators), every
-/// row kept, with the reactions' columns where `reactions`.
+/// A run of `duration` s at `step` (the adaptive integrators at `tolerances`, rtol 1e-12 and
+/// atol 1e-14 unless told), every row kept, with the reactions' columns where `reactions`.
 inline UnilateralRun run_unilaterals(const model::Model& model, const std::string& integrator,
-                                     double step, double duration, bool reactions = false) {
+                                     double step, double duration, bool reactions = false,
+                                     integrate::Tolerances tolerances = {1e-12, 1e-14}) {
   SimulationOptions options;
   options.duration = duration;
   options.step = step;
   options.integrator = integrator;
-  options.tolerances = {1e-12, 1e-14};
+  options.tolerances = tolerances;
   options.reactions = reactions;
   Simulation simulation(model, {}, options);
   UnilateralRun run;
