@@ -614,14 +614,18 @@ std::string stop_event_line(const StopEvent& e) {
           "{} impact at t = {:.12g} s: {} {:.6g} -> {:.6g}, impulse {:.6g}, "
           "{:.6g} J lost",
           stop, e.time, rate, e.rate_before, e.rate_after, e.impulse, e.energy_lost);
-    case StopEventKind::rest:
+    case StopEventKind::rest: {
+      // Bounces that end later than the time says (a rebound's round-off tail says nothing).
+      const std::string rest_time = fmt::format("{:.12g}", e.rest_time);
       return fmt::format(
           "{} holds {} from t = {:.12g} s{}{} ({} {:.6g} -> 0, {:.6g} J lost)", stop, held, e.time,
-          e.rest_time > e.time ? fmt::format(" (its bounces end at t = {:.12g} s)", e.rest_time)
-                               : "",
+          e.rest_time > e.time && rest_time != fmt::format("{:.12g}", e.time)
+              ? fmt::format(" (its bounces end at t = {} s)", rest_time)
+              : "",
           e.friction == FrictionState::none ? ""
                                             : fmt::format(", {}", friction_state_name(e.friction)),
           rate, e.rate_before + 0.0, e.energy_lost);  // −0 (n · 0) as 0
+    }
     case StopEventKind::release:
       return fmt::format("{} lets {} go at t = {:.12g} s (it would pull)", stop, held, e.time);
     case StopEventKind::stick:

@@ -462,7 +462,7 @@ bool Unilaterals::strike_together(system::MultibodySystem& system,
     for (const Entry* e : group) {
       const model::Contact& c = contact_of(*e);
       contacts.push_back({touch_of(*e, at), first_row[static_cast<std::size_t>(e->index)],
-                          c.restitution, c.static_friction});
+                          c.restitution, c.static_friction, c.kinetic_friction});
     }
     impact = dynamics::simultaneous_impact(model_, at.q.head(nq), at.v.head(nv), contacts,
                                            enabled_rows(system), system.held_joints(),
@@ -485,6 +485,7 @@ bool Unilaterals::strike_together(system::MultibodySystem& system,
     s.impulse = impact->normal_impulses[k];
     struck.push_back(s);
   }
+  std::vector<StopEvent> group_slips = slips_in_group_impact(group, *impact, at.t);
   at.v.head(nv) = impact->motion.v_after;
   // The group's energy lost is said once, with the first (the contacts' shares of it are not
   // apart: each one's impulse works against the others' too).
@@ -518,8 +519,35 @@ bool Unilaterals::strike_together(system::MultibodySystem& system,
   std::vector<StopEvent> slips;
   slips.swap(impact_slips_);
   impact_slips_.assign(struck.begin() + 1, struck.end());
+  for (StopEvent& slip : group_slips) impact_slips_.push_back(std::move(slip));
   for (StopEvent& slip : slips) impact_slips_.push_back(std::move(slip));
   return true;
+}
+
+std::vector<StopEvent> Unilaterals::slips_in_group_impact(
+    const std::vector<const Entry*>& group, const dynamics::SimultaneousImpact& impact,
+    double t) const {
+  std::vector<StopEvent> events;
+  for (std::size_t k = 0; k < group.size(); ++k) {
+    const dynamics::GroupContactFriction& f = impact.friction[k];
+    if (f.state != dynamics::GroupFriction::sliding &&
+        f.state != dynamics::GroupFriction::sliding_then_sticking) {
+      continue;
+    }
+    StopEvent slip = event_at(*group[k], t, StopEventKind::slip);
+    slip.in_impact = true;
+    slip.friction = FrictionState::sliding;
+    slip.friction_needed = f.needed;
+    slip.friction_limit = f.limit;
+    events.push_back(slip);
+    if (f.state != dynamics::GroupFriction::sliding_then_sticking) continue;
+    StopEvent stick = event_at(*group[k], t, StopEventKind::stick);
+    stick.in_impact = true;
+    stick.friction = FrictionState::sticking;
+    stick.rate_before = f.slip_before;
+    events.push_back(stick);
+  }
+  return events;
 }
 
 double Unilaterals::stop_strike(system::MultibodySystem& system, const Entry& e,

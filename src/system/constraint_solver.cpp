@@ -157,7 +157,11 @@ void ConstraintSolver::find_redundant_rows(dynamics::Data& data, VecRef q) {
   gather_free_columns();
   factor_mass_matrix(data, q);
   factor_rows(all_rows_);
-  reference_rank_ = cholesky_->rank();
+  // No more rows are independent than there are free coordinates: where nearly parallel rows
+  // (two sticking corners of a box turned a little about the normal) leave round-off above the
+  // factorization's tolerance, the count would say more, and every configuration near it would
+  // look singular.
+  reference_rank_ = std::min(cholesky_->rank(), static_cast<int>(free_.size()));
   redundant_.clear();
   for (int i = 0; i < rows_.count; ++i)
     if (cholesky_->dependent(i) && rows_.enabled[i]) redundant_.push_back(rows_.names[i]);

@@ -408,7 +408,10 @@ void MultibodySystem::add_sliding_friction() {
 
 void MultibodySystem::accelerations_at_singular_configuration(double t, model::Limit limit) {
   const double speed = v_.cwiseAbs().maxCoeff();
-  if (probing_ || !(speed > 0.0)) throw constraints_->singular_configuration_error(t);
+  // A probe's state singular again names the singular state's time, not the probe's.
+  if (probing_) throw constraints_->singular_configuration_error(singular_t_);
+  if (!(speed > 0.0)) throw constraints_->singular_configuration_error(t);
+  singular_t_ = t;
   singular_q_ = q_;
   singular_v_ = v_;
   vdot_mean_.setZero();

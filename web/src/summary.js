@@ -52,7 +52,11 @@ function stopWhat(e) {
   }
   if (e.kind !== 'rest') return e.kind;
   const notes = [];
-  if (e.rest_time > e.time) notes.push(`its bounces end at ${formatNumber(e.rest_time, 12)} s`);
+  // Bounces that end later than the time says (a rebound's round-off tail says nothing).
+  const restTime = formatNumber(e.rest_time, 12);
+  if (e.rest_time > e.time && restTime !== formatNumber(e.time, 12)) {
+    notes.push(`its bounces end at ${restTime} s`);
+  }
   if (e.friction) notes.push(e.friction);
   return notes.length ? `rest (${notes.join('; ')})` : 'rest';
 }

@@ -61,6 +61,7 @@
 
 #include "momenta/dynamics/data.hpp"
 #include "momenta/dynamics/impulse.hpp"
+#include "momenta/dynamics/simultaneous_impact.hpp"
 #include "momenta/integrate/integrator.hpp"
 #include "momenta/integrate/step_interpolant.hpp"
 #include "momenta/model/model.hpp"
@@ -220,6 +221,11 @@ class Unilaterals {
   // for the others; false, having changed nothing of theirs, where that law cannot hold them.
   bool strike_together(system::MultibodySystem& system, integrate::SecondOrderSystem& advanced,
                        std::vector<const Entry*> group, integrate::State& at, StopEvent& event);
+  // The slip events of a group's impact at t: each contact that slid through it, and a stick
+  // after the slip for each that stuck through restitution.
+  std::vector<StopEvent> slips_in_group_impact(const std::vector<const Entry*>& group,
+                                               const dynamics::SimultaneousImpact& impact,
+                                               double t) const;
   // A contact's impact: the state just after, its normal impulse returned; closed contacts that
   // would pull are opened.
   double contact_impact(system::MultibodySystem& system, const Entry& e, integrate::State& at);

@@ -293,6 +293,7 @@ class MultibodySystem final : public integrate::SecondOrderSystem {
   double step_end_ = std::numeric_limits<double>::infinity();  // see begin_step
   std::unique_ptr<ConstraintSolver> constraints_;              // null without constraints
   // accelerations_at_singular_configuration's workspace, and whether it is running.
+  double singular_t_ = 0.0;  // the singular state's time, while it is probed
   VecX singular_q_, singular_v_, probe_q_, probe_v_, vdot_mean_, lambda_mean_;
   bool probing_ = false;
   // Joints a stop holds (see hold()): per joint, whether held and at what value; the hybrid

@@ -1,8 +1,8 @@
 // dynamics::simultaneous_impact: contacts struck at one instant, by Poisson's hypothesis over the
 // group. Against closed forms: a box landing flat on four corner contacts (each a quarter of
 // m (1 + e) V, the box leaving level at e V); one frictionless contact is Newton's impact
-// (restitution_impact); a group whose compression would pull one contact names it; one whose
-// sticking needs more than the cone holds is refused.
+// (restitution_impact); a group whose compression would pull one contact names it; landing while
+// sliding, it sticks, slides, or slides and then sticks, as its cones say.
 
 #include "momenta/dynamics/simultaneous_impact.hpp"
 
@@ -122,20 +122,82 @@ TEST(SimultaneousImpact, AContactItsCompressionWouldPullIsNamed) {
   EXPECT_EQ(impact->pulling, 0);
 }
 
-// Landing flat while sliding at u along x: sticking at once needs a friction impulse m u / 4 at
-// each corner against μ m V / 4 of normal impulse in compression — beyond the cone where u > μ V.
-TEST(SimultaneousImpact, WhereStickingNeedsMoreThanTheConeItIsRefused) {
+// Landing flat at V while sliding at u along x (e = 0.5, μs = 0.25, μk = 0.2): where the cone
+// holds what sticking needs in compression (u ≤ μs V), it sticks — the corners' compression
+// impulses balance the friction's moment m u c, and restitution's e times them, unbalanced by
+// friction, pitch the box, the corners held along x: (I_y + m c²) ω_y = −e m u c, v_x = c ω_y.
+// Beyond it, each corner slides, its friction μk P_n against the slip in both phases: all four
+// normal rows hold the box level through compression, so the friction's moment about the centre
+// (c below it) is taken by the leading corners' larger share, P_c = m V (1 ± μk c / a) / 4, and
+// restitution's e P_c in the same proportion leaves it level, at u − μk (1 + e) V. Where that
+// would turn the slip back (u < μk (1 + e) V) the corners slide through compression only and stick
+// through restitution: after compression at u_c = u − μk V, restitution's normal impulses
+// e P_c (the same shares) pitch the box by their moment −e μk c m V, and the corners holding
+// still along x make v_x = c ω_y: (I_y + m c²) ω_y = m c (u_c − e μk V).
+TEST(SimultaneousImpact, ABoxLandingFlatWhileSlidingSticksSlidesOrSlidesThenSticks) {
   const std::vector<Vec3> points = corners();
   const Model model = box_with_contacts(points);
   const VecX q = resting_q(model);
-  const double V = 1.0, mu = 0.2;
-  for (const double u : {0.1, 0.5}) {
-    SCOPED_TRACE(u);
-    const VecX v = (VecX(6) << 0, 0, 0, u, 0, -V).finished();
-    const auto impact =
-        simultaneous_impact(model, q, v, ground_group(model, points, 0.0, mu), no_rows(model));
-    EXPECT_EQ(impact.has_value(), u < mu * V);
+  const double V = 1.0, e = 0.5, mu_s = 0.25, mu_k = 0.2, m = kMass, a = kHalfLength,
+               c = kHalfHeight;
+  const double I_y = m * (4 * a * a + 4 * c * c) / 12.0;
+  std::vector<GroupContact> group = ground_group(model, points, e, mu_s);
+  for (GroupContact& contact : group) contact.kinetic_friction = mu_k;
+  struct Case {
+    double u;
+    GroupFriction state;
+  };
+  for (const Case& x : {Case{0.2, GroupFriction::sticking}, Case{0.4, GroupFriction::sliding},
+                        Case{0.28, GroupFriction::sliding_then_sticking}}) {
+    SCOPED_TRACE(x.u);
+    const VecX v = (VecX(6) << 0, 0, 0, x.u, 0, -V).finished();
+    const auto impact = simultaneous_impact(model, q, v, group, no_rows(model));
+    ASSERT_TRUE(impact.has_value());
+    ASSERT_EQ(impact->friction.size(), 4u);
+    for (const GroupContactFriction& f : impact->friction) {
+      EXPECT_EQ(f.state, x.state) << group_friction_name(f.state);
+      EXPECT_NEAR(f.slip_before, x.u, 1e-15);
+    }
+    VecX expected(6);
+    if (x.state == GroupFriction::sticking) {
+      const double w_y = -e * m * x.u * c / (I_y + m * c * c);
+      expected << 0, w_y, 0, c * w_y, 0, e * V;
+      EXPECT_LT((impact->motion.v_after - expected).norm(), 1e-14);
+      continue;
+    }
+    for (int k = 0; k < 4; ++k) {
+      const double leading = (k % 2 == 1) ? 1.0 : -1.0;
+      EXPECT_NEAR(impact->normal_impulses[static_cast<std::size_t>(k)],
+                  (1.0 + e) * m * V * (1.0 + leading * mu_k * c / a) / 4.0, 1e-14)
+          << "corner " << k;
+      // Sliding from a slip of u along x: sticking needed more than the cone held.
+      const GroupContactFriction& f = impact->friction[static_cast<std::size_t>(k)];
+      EXPECT_GT(f.needed, f.limit);
+    }
+    if (x.state == GroupFriction::sliding) {
+      expected << 0, 0, 0, x.u - mu_k * (1.0 + e) * V, 0, e * V;
+    } else {
+      const double u_c = x.u - mu_k * V;
+      const double w_y = m * c * (u_c - e * mu_k * V) / (I_y + m * c * c);
+      expected << 0, w_y, 0, c * w_y, 0, e * V;
+    }
+    EXPECT_LT((impact->motion.v_after - expected).norm(), 1e-14);
+    EXPECT_LT(impact->motion.kinetic_after, impact->motion.kinetic_before);
   }
+}
+
+// Landing flat at V = 1 while sliding at u = 0.5 (e = 0, μs = 0.2, μk = 0): the cone of μs P
+// cannot hold it, and sliding without kinetic friction the box keeps its slip.
+TEST(SimultaneousImpact, ACornerSlidingWithoutKineticFrictionKeepsItsSlip) {
+  const std::vector<Vec3> points = corners();
+  const Model model = box_with_contacts(points);
+  const VecX q = resting_q(model);
+  const VecX v = (VecX(6) << 0, 0, 0, 0.5, 0, -1.0).finished();
+  const auto impact =
+      simultaneous_impact(model, q, v, ground_group(model, points, 0.0, 0.2), no_rows(model));
+  ASSERT_TRUE(impact.has_value());
+  const VecX expected = (VecX(6) << 0, 0, 0, 0.5, 0, 0).finished();
+  EXPECT_LT((impact->motion.v_after - expected).norm(), 1e-14);
 }
 
 }  // namespace
