@@ -297,6 +297,18 @@ const char* slip_course_name(SlipCourse course) {
   return "sliding";
 }
 
+double normal_mobility(const Model& model, VecRef q, const PointContact& contact,
+                       std::span<const char> enabled_rows, std::span<const char> held_joints,
+                       std::span<const SlidingContact> sliding) {
+  // A unit pair at rest: the separation speed it alone makes.
+  Data data(model);
+  const VecX at_rest = VecX::Zero(model.nv());
+  const ImpulsiveMotion response =
+      impulsive_motion(model, q, at_rest, impulse_pair(contact, contact.normal_W), enabled_rows,
+                       held_joints, sliding);
+  return normal_speed(model, data, q, response.v_after, contact);
+}
+
 Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointContact& contact,
                           double restitution, std::span<const char> enabled_rows,
                           std::span<const char> held_joints,
@@ -332,14 +344,8 @@ Impact restitution_impact(const Model& model, VecRef q, VecRef v, const PointCon
         "m/s ≥ 0): no impact (the normal points the way B is pushed, from A towards B)",
         impact.approach_speed));
   }
-  // w from a unit pair at rest: the separation speed it alone would make.
-  const VecX at_rest = VecX::Zero(model.nv());
-  const std::vector<PointImpulse> unit = impulse_pair(contact, contact.normal_W);
-  const ImpulsiveMotion response =
-      impulsive_motion(model, q, at_rest, unit, enabled_rows, held_joints, sliding);
-  const double w = normal_speed(model, data, q, response.v_after, contact);
-  const double scale = std::max(1.0, w);
-  if (!(w > 1e-12 * scale)) {
+  const double w = normal_mobility(model, q, contact, enabled_rows, held_joints, sliding);
+  if (held_still(w)) {
     if (!sliding.empty()) {
       throw NumericalError(fmt::format(
           "restitution_impact: with the friction of the {} contacts sliding through it, a unit "

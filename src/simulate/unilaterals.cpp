@@ -411,6 +411,17 @@ double Unilaterals::contact_impact(system::MultibodySystem& system, const Entry&
     return true;
   };
   for (;;) {
+    if (sliding_at_impact_.empty() && held_by_others(system, e, at)) {
+      // What holds now (the others stuck for the impact) holds its points still along the
+      // normal: their impulses stop its approach, plastically, and it takes none of its own.
+      const dynamics::ImpulsiveMotion held = dynamics::impulsive_motion(
+          model_, at.q.head(nq), at.v.head(nv), {}, enabled_rows(system), system.held_joints());
+      if (let_go_one_that_pulls(system, held, at) || slide_one_beyond_its_cone(system, held, at)) {
+        continue;
+      }
+      at.v.head(nv) = held.v_after;
+      return 0.0;
+    }
     // Newton's restitution and Coulomb's law at impact (none without friction).
     dynamics::FrictionalImpact impact;
     try {
@@ -435,6 +446,13 @@ double Unilaterals::contact_impact(system::MultibodySystem& system, const Entry&
     at.v.head(nv) = impact.motion.v_after;
     return impact.normal_impulse;
   }
+}
+
+bool Unilaterals::held_by_others(const system::MultibodySystem& system, const Entry& e,
+                                 const integrate::State& at) {
+  if (!e.contact) return false;
+  return dynamics::held_still(dynamics::normal_mobility(
+      model_, at.q.head(model_.nq()), touch_of(e, at), enabled_rows(system), system.held_joints()));
 }
 
 std::vector<const Unilaterals::Entry*> Unilaterals::struck_with(const Entry& first,
@@ -716,7 +734,9 @@ void Unilaterals::strike(system::MultibodySystem& system, integrate::SecondOrder
   event.rate_before = reported_rate();
   const double approach = rate(e, at);
   const double kinetic_before = system.energy(at.q.head(nq), at.v.head(nv)).kinetic;
-  if (approach < -kGrazingSpeed) {  // approaching: it strikes
+  // Approaching, it strikes — unless what holds already holds it still along its normal (a
+  // foot's fourth corner where three are held): then its approach is their round-off.
+  if (approach < -kGrazingSpeed && !held_by_others(system, e, at)) {
     if (e.contact) {
       event.impulse = contact_impact(system, e, at);
     } else {

@@ -18,6 +18,7 @@
 // the drives' impulses at their joints' (unchanged) speeds; the constraints' impulses do none on
 // a state that satisfies them.
 
+#include <algorithm>
 #include <span>
 #include <vector>
 
@@ -104,6 +105,19 @@ struct Impact {
   double separation_speed = 0.0;  ///< v_n⁺ = −e v_n⁻ (m/s)
   ImpulsiveMotion motion;         ///< the mechanism's response to the pair ±P n
 };
+
+/// The separation speed a unit normal pair ±n at `contact`'s points gives them from rest, w (m/s
+/// per N·s; restitution_impact's), the rows in `enabled_rows` and the joints in `held_joints`
+/// holding and the `sliding` contacts sliding. Round-off (≤ 1e-12 of max(1, w)) where the joints
+/// and rows hold the points still along the normal — a box's fourth corner where three are held:
+/// such a contact has no impact of its own.
+double normal_mobility(const Model& model, VecRef q, const PointContact& contact,
+                       std::span<const char> enabled_rows = {},
+                       std::span<const char> held_joints = {},
+                       std::span<const SlidingContact> sliding = {});
+
+/// Whether a normal_mobility w is round-off: the points are held still along the normal.
+inline bool held_still(double w) { return !(w > 1e-12 * std::max(1.0, w)); }
 
 /// The impact at `contact` with restitution e ∈ [0, 1] at (q, v). The separation speed is linear
 /// in P: v_n(P) = v_n⁻ + P w, w = n · (J_Pb − J_Pa) M⁻¹ (J_Pb − J_Pa)ᵀ n > 0 found by a unit pair,

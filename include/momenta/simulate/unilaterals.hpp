@@ -226,6 +226,10 @@ class Unilaterals {
   std::vector<StopEvent> slips_in_group_impact(const std::vector<const Entry*>& group,
                                                const dynamics::SimultaneousImpact& impact,
                                                double t) const;
+  // Whether the contacts held and the joints held keep contact e's points still along its normal
+  // (it has no impact of its own).
+  bool held_by_others(const system::MultibodySystem& system, const Entry& e,
+                      const integrate::State& at);
   // A contact's impact: the state just after, its normal impulse returned; closed contacts that
   // would pull are opened.
   double contact_impact(system::MultibodySystem& system, const Entry& e, integrate::State& at);

@@ -200,5 +200,29 @@ TEST(SimultaneousImpact, ACornerSlidingWithoutKineticFrictionKeepsItsSlip) {
   EXPECT_LT((impact->motion.v_after - expected).norm(), 1e-14);
 }
 
+// normal_mobility: a corner of the box resting on the other three held along their normals is
+// held still along its own (the four are coplanar: its row is the others' combination), so it
+// has no impact of its own. On corners 1 and 2 (y = −b) the box tips about their edge: a unit
+// pair at corner 3 (y = +b) has the lever 2 b about it, the box's inertia about the edge for
+// that turn is I_x + m b² (its centre free along y, no friction), and the corner rises at
+// w = (2 b)² / (I_x + m b²).
+TEST(SimultaneousImpact, ACornerHeldStillByTheOthersHasNoMobility) {
+  const std::vector<Vec3> points = corners();
+  const Model model = box_with_contacts(points);
+  const VecX q = resting_q(model);
+  const std::vector<GroupContact> group = ground_group(model, points, 0.0, 1.0);
+  std::vector<char> rows = no_rows(model);
+  for (int k = 0; k < 2; ++k) rows[static_cast<std::size_t>(group[k].first_row)] = 1;
+  const double tipping = normal_mobility(model, q, group[2].touch, rows);
+  const double b = kHalfWidth, c = kHalfHeight;
+  const double I_x = kMass * (4 * b * b + 4 * c * c) / 12.0;
+  EXPECT_NEAR(tipping, 4 * b * b / (I_x + kMass * b * b), 1e-13);
+  EXPECT_FALSE(held_still(tipping));
+  rows[static_cast<std::size_t>(group[2].first_row)] = 1;
+  const double fourth = normal_mobility(model, q, group[3].touch, rows);
+  EXPECT_TRUE(held_still(fourth)) << fourth;
+  EXPECT_LT(std::abs(fourth), 1e-13);
+}
+
 }  // namespace
 }  // namespace momenta::dynamics::simultaneous_impact_test
